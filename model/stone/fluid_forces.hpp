@@ -1,0 +1,39 @@
+#pragma once
+// Forces of the water and the air on the stone, as functions of a state (spec §1.4–1.6). Both the
+// real-time stepper and the CVODE reference call these.
+#include "model/stone/environment.hpp"
+#include "model/stone/rigid_state.hpp"
+#include "model/stone/water_surface.hpp"
+
+namespace stoneskip {
+
+struct WaterLoads {
+  Vec3 force_N = Vec3::Zero();
+  Vec3 torque_N_m = Vec3::Zero();   // about the centre of mass
+  double wetted_area_m2 = 0;        // Σ S_i
+  int wet_triangles = 0;            // triangles with S_i > 0
+  int submerged_vertices = 0;       // vertices with d_j > 0
+  int vertex_count = 0;
+  double deepest_depth_m = 0;       // max_j d_j (> 0: in contact); −(clearance) when above
+  bool in_contact() const { return deepest_depth_m > 0; }
+  bool fully_submerged() const { return submerged_vertices == vertex_count && vertex_count > 0; }
+};
+
+struct AirLoads {
+  Vec3 force_N = Vec3::Zero();  // torque is zero in both conventions (spec §1.6, Eq. 7)
+};
+
+// Σ over triangles of the Newtonian impact force (spec §1.4; Lee & Baek 2013 Eq. 1–5).
+// physical: v_i = v + ω × r_i, only faces with u_i = v_i·n_i > 0 push, F_i = −C_w ρ_w u_i² S_i n_i,
+//           τ_i = r_i × F_i.
+// paper:    v_i = v + r_i × ω (Eq. 1 as printed), every submerged face pushes (Eq. 2),
+//           τ_i = F_i × r_i (Eq. 3 as printed).
+// surface == nullptr: still water η = 0. Below the stone's bounding sphere nothing is evaluated.
+WaterLoads water_loads(const Stone& stone, const Environment& env, const RigidState& s,
+                       const WaterSurface* surface = nullptr);
+
+// Disk air model (spec §1.5; Eq. 6): u = v·n_d;
+// physical: F = −C_a ρ_a u|u| S_d n_d;  paper: F = −C_a ρ_a u² S_d n_d (always along −n_d).
+AirLoads air_loads(const Stone& stone, const Environment& env, const RigidState& s);
+
+}  // namespace stoneskip

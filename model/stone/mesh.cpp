@@ -1,0 +1,102 @@
+#include "model/stone/mesh.hpp"
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <utility>
+
+namespace stoneskip {
+
+Mesh make_prism(double radius_m, double thickness_m, int segments) {
+  // Spec §1.1: face centres (0, 0, ±h/2), rim vertices (R cos θk, R sin θk, ±h/2), θk = 2πk/N;
+  // a fan on each face (N + N triangles) and two triangles per rim segment (2N): 4N in all.
+  Mesh m;
+  const int n = segments;
+  const double hz = 0.5 * thickness_m;
+  m.vertices.push_back(Vec3(0, 0, hz));   // 0: top centre
+  m.vertices.push_back(Vec3(0, 0, -hz));  // 1: bottom centre
+  for (int k = 0; k < n; ++k) {
+    const double th = 2.0 * std::numbers::pi * k / n;
+    m.vertices.push_back(Vec3(radius_m * std::cos(th), radius_m * std::sin(th), hz));   // 2 + 2k
+    m.vertices.push_back(Vec3(radius_m * std::cos(th), radius_m * std::sin(th), -hz));  // 3 + 2k
+  }
+  auto top = [&](int k) { return 2 + 2 * (k % n); };
+  auto bot = [&](int k) { return 3 + 2 * (k % n); };
+  for (int k = 0; k < n; ++k) {
+    m.triangles.push_back({0, top(k), top(k + 1)});             // top face, normal +z
+    m.triangles.push_back({1, bot(k + 1), bot(k)});             // bottom face, normal −z
+    m.triangles.push_back({bot(k), bot(k + 1), top(k + 1)});    // rim, normal outward
+    m.triangles.push_back({bot(k), top(k + 1), top(k)});
+  }
+  return m;
+}
+
+Mesh make_lens(double radius_m, double thickness_m, int segments) {
+  // Spec §1.1: rim ring of N vertices at z = 0, apexes (0, 0, ±h/2): 2N triangles.
+  Mesh m;
+  const int n = segments;
+  m.vertices.push_back(Vec3(0, 0, 0.5 * thickness_m));   // 0: upper apex
+  m.vertices.push_back(Vec3(0, 0, -0.5 * thickness_m));  // 1: lower apex
+  for (int k = 0; k < n; ++k) {
+    const double th = 2.0 * std::numbers::pi * k / n;
+    m.vertices.push_back(Vec3(radius_m * std::cos(th), radius_m * std::sin(th), 0));
+  }
+  auto rim = [&](int k) { return 2 + (k % n); };
+  for (int k = 0; k < n; ++k) {
+    m.triangles.push_back({0, rim(k), rim(k + 1)});
+    m.triangles.push_back({1, rim(k + 1), rim(k)});
+  }
+  return m;
+}
+
+MeshCheck check_mesh(const Mesh& mesh) {
+  MeshCheck c;
+  const int nv = static_cast<int>(mesh.vertices.size());
+  // Directed edge counts: a closed, consistently oriented 2-manifold uses every edge exactly
+  // once in each direction.
+  std::map<std::pair<int, int>, int> directed;
+  double scale = 0;
+  for (const auto& v : mesh.vertices) scale = std::max(scale, v.norm());
+  for (const auto& t : mesh.triangles) {
+    if (t[0] < 0 || t[1] < 0 || t[2] < 0 || t[0] >= nv || t[1] >= nv || t[2] >= nv) {
+      ++c.bad_indices;
+      continue;
+    }
+    const Vec3& a = mesh.vertices[t[0]];
+    const Vec3& b = mesh.vertices[t[1]];
+    const Vec3& d = mesh.vertices[t[2]];
+    const Vec3 cr = (b - a).cross(d - a);
+    if (cr.norm() <= 1e-14 * scale * scale) ++c.degenerate_triangles;
+    c.signed_volume_m3 += a.dot(b.cross(d)) / 6.0;  // divergence theorem, tetrahedra from the origin
+    for (int e = 0; e < 3; ++e) ++directed[{t[e], t[(e + 1) % 3]}];
+  }
+  for (const auto& [edge, count] : directed) {
+    const auto rev = directed.find({edge.second, edge.first});
+    const int back = rev == directed.end() ? 0 : rev->second;
+    if (count > 1) ++c.misoriented_edges;
+    if (edge.first < edge.second || back == 0) {
+      const int uses = count + back;
+      if (uses == 1) ++c.boundary_edges;
+      if (uses > 2) ++c.nonmanifold_edges;
+    }
+  }
+  if (mesh.triangles.empty() || nv < 4)
+    c.problem = "the mesh has fewer than 4 vertices or no triangles";
+  else if (c.bad_indices)
+    c.problem = std::to_string(c.bad_indices) + " triangles index vertices that do not exist";
+  else if (c.boundary_edges)
+    c.problem = "the mesh is open: " + std::to_string(c.boundary_edges) + " edges belong to one triangle only";
+  else if (c.nonmanifold_edges)
+    c.problem = std::to_string(c.nonmanifold_edges) + " edges are shared by more than two triangles";
+  else if (c.misoriented_edges)
+    c.problem = "inconsistent orientation: " + std::to_string(c.misoriented_edges) +
+                " edges are traversed twice in the same direction";
+  else if (c.degenerate_triangles)
+    c.problem = std::to_string(c.degenerate_triangles) + " triangles have zero area";
+  else if (!(c.signed_volume_m3 > 0))
+    c.problem = "the mesh is oriented inward (negative signed volume)";
+  c.ok = c.problem.empty();
+  return c;
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,40 @@
+#pragma once
+// A stone is a closed, outward-oriented triangle mesh (spec §1.1). Two parametric families:
+//   prism: regular N-gon prism, 4N triangles (N = 11 gives Lee & Baek's 44);
+//   lens:  biconvex stone, one rim ring and two apexes, 2N triangles (N = 22 gives 44).
+// A mesh may also come from a Wavefront OBJ file (tools/io/obj_reader.hpp); check_mesh() says
+// whether it is closed and outward-oriented.
+#include <Eigen/Dense>  // Core + Geometry (cross products, quaternions)
+#include <array>
+#include <string>
+#include <vector>
+
+namespace stoneskip {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+
+struct Mesh {
+  std::vector<Vec3> vertices;
+  std::vector<std::array<int, 3>> triangles;  // counter-clockwise seen from outside
+};
+
+// Flat cylinder approximated by a regular N-gon prism of circumradius R and thickness h (§1.1).
+Mesh make_prism(double radius_m, double thickness_m, int segments);
+// Biconvex lens: rim ring of N vertices at z = 0, apexes at z = ±h/2 (§1.1).
+Mesh make_lens(double radius_m, double thickness_m, int segments);
+
+struct MeshCheck {
+  bool ok = false;                 // closed, consistently and outward oriented, non-degenerate
+  int boundary_edges = 0;          // edges used by one triangle (holes)
+  int nonmanifold_edges = 0;       // edges used by more than two triangles
+  int misoriented_edges = 0;       // edges traversed twice in the same direction
+  int degenerate_triangles = 0;    // zero-area triangles
+  int bad_indices = 0;             // triangle indices outside the vertex list
+  double signed_volume_m3 = 0;     // > 0 for an outward-oriented closed mesh
+  std::string problem;             // first problem found, in words; empty when ok
+};
+
+MeshCheck check_mesh(const Mesh& mesh);
+
+}  // namespace stoneskip

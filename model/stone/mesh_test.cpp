@@ -1,0 +1,110 @@
+// Mesh construction, closure checks and mass properties against closed forms (spec §1.1–1.2).
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <numbers>
+
+#include "model/stone/mass_properties.hpp"
+#include "model/stone/mesh.hpp"
+
+using namespace stoneskip;
+
+namespace {
+// Mass properties are sums of O(N) terms of size O(1) in units of the result: a few hundred ulps.
+constexpr double kRoundoff = 1e-12;
+constexpr double kPi = std::numbers::pi;
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(stone_mesh)
+
+BOOST_AUTO_TEST_CASE(prism_and_lens_have_the_papers_44_triangles) {
+  // Oracle: spec §1.1 counts, 4N for the prism and 2N for the lens.
+  BOOST_TEST(make_prism(0.03, 0.008, 11).triangles.size() == 44u);
+  BOOST_TEST(make_lens(0.03, 0.008, 22).triangles.size() == 44u);
+  BOOST_TEST(make_prism(0.03, 0.008, 11).vertices.size() == 24u);
+}
+
+BOOST_AUTO_TEST_CASE(prism_volume_is_exact) {
+  // Oracle: regular N-gon prism volume (N/2) R² sin(2π/N) h (spec §1.2).
+  for (int n : {3, 5, 11, 64}) {
+    const double R = 0.031, h = 0.0073;
+    const MassProperties mp = mass_properties_from_density(make_prism(R, h, n), 1.0);
+    const double exact = 0.5 * n * R * R * std::sin(2 * kPi / n) * h;
+    BOOST_TEST(std::abs(mp.volume_m3 - exact) <= kRoundoff * exact, "N=" << n);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(lens_volume_is_two_pyramids) {
+  // Oracle: the lens is two N-gon pyramids of height h/2: V = 2 · (1/3) · A_polygon · h/2.
+  const double R = 0.02, h = 0.01;
+  const int n = 22;
+  const double area = 0.5 * n * R * R * std::sin(2 * kPi / n);
+  const MassProperties mp = mass_properties_from_density(make_lens(R, h, n), 1.0);
+  BOOST_TEST(std::abs(mp.volume_m3 - area * h / 3.0) <= kRoundoff * mp.volume_m3);
+}
+
+BOOST_AUTO_TEST_CASE(prism_inertia_matches_the_polygon_polar_moment_exactly) {
+  // Oracle: a regular N-gon of circumradius R has polar moment m R² (1 + 2 cos²(π/N)) / 6; by
+  // symmetry its in-plane moments are half of it, so I_xx = I_yy = m R²(1+2cos²(π/N))/12 + m h²/12.
+  for (int n : {3, 4, 7, 11, 50}) {
+    const double R = 0.03, h = 0.008, rho = 2500;
+    const MassProperties mp = mass_properties_from_density(make_prism(R, h, n), rho);
+    const double m = mp.mass_kg;
+    const double polar = m * R * R * (1 + 2 * std::pow(std::cos(kPi / n), 2)) / 6.0;
+    BOOST_TEST(std::abs(mp.inertia_kg_m2(2, 2) - polar) <= kRoundoff * polar, "N=" << n);
+    const double ixx = polar / 2 + m * h * h / 12.0;
+    BOOST_TEST(std::abs(mp.inertia_kg_m2(0, 0) - ixx) <= kRoundoff * ixx, "N=" << n);
+    BOOST_TEST(std::abs(mp.inertia_kg_m2(1, 1) - ixx) <= kRoundoff * ixx, "N=" << n);
+    BOOST_TEST(std::abs(mp.inertia_kg_m2(0, 1)) <= kRoundoff * polar);
+    BOOST_TEST(mp.center_of_mass_m.norm() <= kRoundoff * R);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(prism_inertia_tends_to_the_disk_as_n_grows) {
+  // Oracle: the solid disk, I_zz = m R²/2, I_xx = m R²/4 + m h²/12; the polygon's relative error
+  // is 1 − (1+2cos²(π/N))/3 = (2/3) sin²(π/N) ≈ (2/3)(π/N)², so it must fall 4× per doubling.
+  const double R = 0.025, h = 0.00275;
+  double previous = 0;
+  for (int n : {16, 32, 64, 128, 256}) {
+    const MassProperties mp = mass_properties_from_mass(make_prism(R, h, n), 0.0146);
+    const double m = mp.mass_kg;
+    const double err_zz = std::abs(mp.inertia_kg_m2(2, 2) - m * R * R / 2) / (m * R * R / 2);
+    const double err_xx = std::abs(mp.inertia_kg_m2(0, 0) - (m * R * R / 4 + m * h * h / 12)) / (m * R * R / 4);
+    BOOST_TEST(std::abs(err_zz - (2.0 / 3.0) * std::pow(std::sin(kPi / n), 2)) <= 1e-10);
+    BOOST_TEST(std::abs(err_xx - err_zz) <= 1e-10);  // in-plane moments are half the polar one
+    if (previous > 0) BOOST_TEST(previous / err_zz == 4.0, boost::test_tools::tolerance(0.01));
+    previous = err_zz;
+    BOOST_TEST(std::abs(m - 0.0146) <= kRoundoff * m);  // a mass was given: it is kept exactly
+  }
+}
+
+BOOST_AUTO_TEST_CASE(parametric_meshes_are_closed_and_outward) {
+  // Oracle: closure and orientation by construction (spec §1.1).
+  for (const Mesh& m : {make_prism(0.03, 0.008, 11), make_lens(0.03, 0.008, 22), make_prism(1, 1, 3)}) {
+    const MeshCheck c = check_mesh(m);
+    BOOST_TEST(c.ok, c.problem);
+    BOOST_TEST(c.signed_volume_m3 > 0);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(open_flipped_and_inward_meshes_are_rejected) {
+  // Oracle: edge counting; each defect planted by hand.
+  Mesh open = make_prism(0.03, 0.008, 11);
+  open.triangles.pop_back();
+  BOOST_TEST(!check_mesh(open).ok);
+  BOOST_TEST(check_mesh(open).boundary_edges == 3);
+
+  Mesh flipped = make_prism(0.03, 0.008, 11);
+  std::swap(flipped.triangles[0][1], flipped.triangles[0][2]);
+  BOOST_TEST(!check_mesh(flipped).ok);
+  BOOST_TEST(check_mesh(flipped).misoriented_edges > 0);
+
+  Mesh inward = make_lens(0.03, 0.008, 22);
+  for (auto& t : inward.triangles) std::swap(t[1], t[2]);
+  const MeshCheck c = check_mesh(inward);
+  BOOST_TEST(!c.ok);
+  BOOST_TEST(c.signed_volume_m3 < 0);
+  BOOST_TEST(c.problem.find("inward") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

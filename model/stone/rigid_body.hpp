@@ -1,0 +1,43 @@
+#pragma once
+// The stone's equations of motion (spec §1.3):
+//   m dv/dt = F_gravity + F_air + Σ F_i      dx/dt = v
+//   dL/dt   = τ_air + Σ τ_i                  dq/dt = ½ (0, ω) ⊗ q,  ω = R I_body⁻¹ Rᵀ L
+// as a function of a state, shared by every integrator.
+#include "model/stone/fluid_forces.hpp"
+
+namespace stoneskip {
+
+struct StateDerivative {
+  Vec3 dposition = Vec3::Zero();
+  Vec3 dvelocity = Vec3::Zero();
+  Eigen::Vector4d dquaternion = Eigen::Vector4d::Zero();  // (w, x, y, z)
+  Vec3 dangular_momentum = Vec3::Zero();
+};
+
+struct Loads {
+  WaterLoads water;
+  AirLoads air;
+  Vec3 gravity_N = Vec3::Zero();
+};
+
+// Right-hand side. `loads` (optional) receives the forces it used.
+StateDerivative rigid_body_rhs(const Stone& stone, const Environment& env, const RigidState& s,
+                               const WaterSurface* surface = nullptr, Loads* loads = nullptr);
+// The same on flat arrays (kStateSize doubles each), for generic integrators and CVODE.
+void rigid_body_rhs(const Stone& stone, const Environment& env, const double* y, double* dydt,
+                    const WaterSurface* surface = nullptr);
+
+// Rate at which water and air do work on the stone: P = F·v + τ·ω with the total fluid force and
+// torque as applied (spec §1.6). Never positive in the physical convention.
+double fluid_power_W(const Stone& stone, const Environment& env, const RigidState& s,
+                     const WaterSurface* surface = nullptr);
+
+struct Energy {
+  double translational_J = 0;
+  double rotational_J = 0;
+  double potential_J = 0;  // m g z
+  double total_J() const { return translational_J + rotational_J + potential_J; }
+};
+Energy mechanical_energy(const Stone& stone, const Environment& env, const RigidState& s);
+
+}  // namespace stoneskip

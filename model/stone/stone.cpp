@@ -1,0 +1,32 @@
+#include "model/stone/stone.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace stoneskip {
+
+Stone make_stone(const Mesh& mesh, const MassProperties& mp, double disk_radius_m, std::string description) {
+  Stone s;
+  s.body_mesh = mesh;
+  for (auto& v : s.body_mesh.vertices) v -= mp.center_of_mass_m;
+  s.mass = mp;
+  s.mass.center_of_mass_m = Vec3::Zero();
+  s.inertia_body_kg_m2 = mp.inertia_kg_m2;
+  s.inertia_body_inv = mp.inertia_kg_m2.inverse();
+  if (disk_radius_m <= 0) {
+    for (const auto& v : s.body_mesh.vertices) disk_radius_m = std::max(disk_radius_m, std::hypot(v.x(), v.y()));
+  }
+  for (const auto& v : s.body_mesh.vertices) s.bounding_radius_m = std::max(s.bounding_radius_m, v.norm());
+  s.disk_radius_m = disk_radius_m;
+  s.disk_area_m2 = std::numbers::pi * disk_radius_m * disk_radius_m;  // spec §1.5: S_d = π R²
+  for (const auto& t : s.body_mesh.triangles) {
+    const Vec3 cr = (s.body_mesh.vertices[t[1]] - s.body_mesh.vertices[t[0]])
+                        .cross(s.body_mesh.vertices[t[2]] - s.body_mesh.vertices[t[0]]);
+    s.face_areas_m2.push_back(0.5 * cr.norm());
+    s.face_normals_body.push_back(cr.normalized());
+  }
+  s.description = std::move(description);
+  return s;
+}
+
+}  // namespace stoneskip

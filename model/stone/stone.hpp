@@ -1,0 +1,31 @@
+#pragma once
+// A rigid stone ready for dynamics: its mesh in the body frame (origin at the centre of mass,
+// body z along the symmetry axis), mass properties, and per-triangle data precomputed once.
+#include <Eigen/Geometry>
+#include <string>
+
+#include "model/stone/mass_properties.hpp"
+#include "model/stone/mesh.hpp"
+
+namespace stoneskip {
+
+using Quat = Eigen::Quaterniond;
+
+struct Stone {
+  Mesh body_mesh;                 // vertices relative to the centre of mass
+  MassProperties mass;            // centre_of_mass_m is zero in the body frame
+  Mat3 inertia_body_kg_m2;        // = mass.inertia_kg_m2
+  Mat3 inertia_body_inv;          // its inverse
+  double disk_radius_m = 0;       // air model's disk radius (spec §1.5)
+  double disk_area_m2 = 0;        // π R²
+  double bounding_radius_m = 0;   // largest vertex distance from the centre of mass
+  std::vector<Vec3> face_normals_body;  // outward unit normals
+  std::vector<double> face_areas_m2;
+  std::string description;        // "prism R=... h=... N=..."
+};
+
+// Moves the mesh to its centre of mass and precomputes the rest. disk_radius_m <= 0 takes the
+// largest distance of a vertex from the body z axis.
+Stone make_stone(const Mesh& mesh, const MassProperties& mp, double disk_radius_m, std::string description);
+
+}  // namespace stoneskip

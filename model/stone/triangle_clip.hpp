@@ -1,0 +1,16 @@
+#pragma once
+// The part of a triangle below the water surface (spec §1.4 step 2): the polygon where the
+// signed depth d = η − z is ≥ 0, cut along the edges where d, interpolated linearly, crosses
+// zero. Exact for still water (d is then linear over the triangle).
+#include "model/stone/mesh.hpp"
+
+namespace stoneskip {
+
+struct ClippedArea {
+  double area_m2 = 0;
+  Vec3 centroid_m = Vec3::Zero();  // meaningful when area_m2 > 0
+};
+
+ClippedArea clip_submerged(const Vec3& p0, const Vec3& p1, const Vec3& p2, double d0, double d1, double d2);
+
+}  // namespace stoneskip

@@ -1,0 +1,43 @@
+#pragma once
+// A report figure is data first: named tables (units in the column names) plus a gnuplot script
+// that refers to them as '<table>.dat'. Both are stored in the report's HDF5 file under
+// /figures/<name>, so `stoneskip plot DIR` redraws every figure from the file without re-running
+// anything. Rendering writes DIR/figures/<name>.png and .svg (and the .gp/.dat it used).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tools/io/hdf5_file.hpp"
+
+namespace stoneskip {
+
+struct Figure {
+  std::string name;      // file stem, [a-z0-9_]
+  std::string title;     // caption in the Markdown
+  std::string script;    // gnuplot body: no 'set terminal'/'set output' (render adds them)
+  std::vector<std::pair<std::string, Table>> tables;  // referenced as "<name>.dat" in the script
+  int width_px = 900;
+  int height_px = 600;
+};
+
+// Stores the figure's tables and script under group /figures/<name> of a report file.
+void store_figure(const H5Group& figures_group, const Figure& fig);
+// Reads all figures back.
+std::vector<Figure> load_figures(const H5Group& figures_group);
+
+struct RenderSummary {
+  int rendered = 0;
+  std::vector<std::string> failures;  // "name: gnuplot said ..."
+};
+
+// Writes <dir>/figures/<name>.{gp,png,svg} and the .dat files; runs gnuplot (PNG via pngcairo,
+// and SVG). A figure that gnuplot rejects is listed in the summary, never silently dropped.
+RenderSummary render_figures(const std::filesystem::path& dir, const std::vector<Figure>& figs);
+
+// Markdown for a figure: ![title](figures/name.png) with a link to the SVG.
+std::string figure_markdown(const Figure& fig);
+
+// True if gnuplot can be run.
+bool gnuplot_available();
+
+}  // namespace stoneskip

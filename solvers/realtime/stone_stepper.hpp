@@ -1,0 +1,37 @@
+#pragma once
+// The real-time stepper: fixed steps, a finer step while the stone is in (or about to reach) the
+// water, quaternion renormalised after every step.
+//
+// Schemes (formal order in parentheses):
+//   semi_implicit_euler (1)  v, L from the forces at the start of the step, then x with the new v
+//                            and q rotated by the new ω: the usual game-engine integrator and
+//                            the default.
+//   midpoint (2), rk4 (4)    explicit Runge–Kutta on the flat state (spec §1.3 right-hand side).
+// The step switches to contact_dt_s when the lowest vertex could reach the surface within one
+// flight step (clearance < (|v| + |ω| r_bound) dt_s), so a flight step cannot carry it deep.
+#include "solvers/realtime/throw_result.hpp"
+
+namespace stoneskip {
+
+enum class Scheme { semi_implicit_euler, midpoint, rk4 };
+const char* to_string(Scheme s);
+bool parse_scheme(const std::string& s, Scheme& out);
+int formal_order(Scheme s);
+
+struct RealtimeOptions {
+  Scheme scheme = Scheme::semi_implicit_euler;
+  double dt_s = 1e-3;           // flight step
+  double contact_dt_s = 1e-4;   // step while in or near the water
+  double t_max_s = 10.0;
+  double output_dt_s = 1e-3;    // trajectory sampling (0: every step); contact transitions always
+  bool record_trajectory = true;
+};
+
+// One step of the scheme (no contact logic), for benchmarks and order studies.
+RigidState realtime_step(const Stone& stone, const Environment& env, const RigidState& s, double dt_s,
+                         Scheme scheme, const WaterSurface* surface = nullptr, long* rhs_evaluations = nullptr);
+
+ThrowResult run_realtime(const Stone& stone, const Environment& env, const RigidState& initial,
+                         const RealtimeOptions& options, const WaterSurface* surface = nullptr);
+
+}  // namespace stoneskip

@@ -1,0 +1,88 @@
+#include "solvers/realtime/throw_result.hpp"
+
+#include <cmath>
+
+#include "model/stone/throw.hpp"
+
+namespace stoneskip {
+
+const char* to_string(Outcome o) {
+  switch (o) {
+    case Outcome::sank: return "sank";
+    case Outcome::time_limit: return "time_limit";
+    case Outcome::failed: return "failed";
+  }
+  return "?";
+}
+
+void ContactLog::start(double t_s, const RigidState& s, const Vec3& first_touch_m, double energy_J) {
+  ContactRecord c;
+  c.start_s = t_s;
+  c.end_s = t_s;
+  c.entry_speed_m_s = s.velocity_m_s.norm();
+  const AttitudeAngles a = attitude_angles(s);
+  c.entry_path_angle_deg = a.path_angle_deg;
+  c.entry_attack_angle_deg = a.attack_angle_deg;
+  c.entry_energy_J = energy_J;
+  c.first_touch_m = first_touch_m;
+  contacts_.push_back(c);
+  open_ = true;
+}
+
+void ContactLog::end(double t_s, const RigidState& s, double energy_J, bool left_water) {
+  if (!open_) return;
+  ContactRecord& c = contacts_.back();
+  c.end_s = t_s;
+  c.exit_speed_m_s = s.velocity_m_s.norm();
+  const AttitudeAngles a = attitude_angles(s);
+  c.exit_path_angle_deg = a.path_angle_deg;
+  c.exit_attack_angle_deg = a.attack_angle_deg;
+  c.exit_energy_J = energy_J;
+  c.exit_position_m = s.position_m;
+  c.bounced = left_water;
+  open_ = false;
+}
+
+void ContactLog::observe_wetted_area(double area_m2) {
+  if (open_) contacts_.back().max_wetted_area_m2 = std::max(contacts_.back().max_wetted_area_m2, area_m2);
+}
+
+int ContactLog::bounces() const {
+  int n = 0;
+  for (const auto& c : contacts_) n += c.bounced ? 1 : 0;
+  return n;
+}
+
+void finish_result(ThrowResult& r, const ContactLog& log, const RigidState& final_state, double end_time_s) {
+  r.contacts = log.contacts();
+  r.bounces = log.bounces();
+  r.final_state = final_state;
+  r.end_time_s = end_time_s;
+  const Vec3 d = final_state.position_m - r.release_position_m;
+  r.distance_m = std::hypot(d.x(), d.y());
+  r.lateral_m = d.y();
+  r.max_energy_gain_J = 0;
+  for (const auto& c : r.contacts) {
+    if (c.end_s > c.start_s) r.max_energy_gain_J = std::max(r.max_energy_gain_J, c.exit_energy_J - c.entry_energy_J);
+  }
+}
+
+DeepestPoint deepest_point(const Stone& stone, const RigidState& s, const WaterSurface* surface) {
+  DeepestPoint p;
+  const Mat3 R = s.orientation.normalized().toRotationMatrix();
+  const int nv = static_cast<int>(stone.body_mesh.vertices.size());
+  p.vertex_count = nv;
+  for (int k = 0; k < nv; ++k) {
+    const Vec3 w = s.position_m + R * stone.body_mesh.vertices[k];
+    const double eta = surface ? surface->height_m(w.x(), w.y()) : 0.0;
+    const double d = eta - w.z();
+    if (d > 0) ++p.submerged_vertices;
+    if (d > p.depth_m) {
+      p.depth_m = d;
+      p.position_m = w;
+    }
+  }
+  return p;
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,71 @@
+// stoneskip: verification and validation of real-time stone-skipping simulation.
+//
+//   stoneskip run cases/paper_8ms_spin.toml            # one throw, readable summary
+//   stoneskip run cases/paper_8ms_spin.toml --json     # the same as one JSON object
+//   stoneskip mesh cases/paper_8ms_spin.toml           # the stone's mesh and mass properties
+//   stoneskip --help                                   # every command
+//
+// Exit status: 0 success, 1 a check failed (e.g. a regression), 2 bad input (one-line message
+// naming the file and the line or key), 3 an internal error.
+#include <cstdio>
+#include <exception>
+#include <vector>
+
+#include "tools/cli/command_registry.hpp"
+#include "tools/io/input_error.hpp"
+
+namespace stoneskip::cli {
+
+namespace {
+std::vector<CommandAdder>& registry() {
+  static std::vector<CommandAdder> r;
+  return r;
+}
+std::vector<CommandAdder>& report_registry() {
+  static std::vector<CommandAdder> r;
+  return r;
+}
+int g_exit_code = 0;
+}  // namespace
+
+bool register_command(CommandAdder adder) {
+  registry().push_back(std::move(adder));
+  return true;
+}
+const std::vector<CommandAdder>& registered_commands() { return registry(); }
+bool register_report_kind(CommandAdder adder) {
+  report_registry().push_back(std::move(adder));
+  return true;
+}
+const std::vector<CommandAdder>& registered_report_kinds() { return report_registry(); }
+void set_exit_code(int code) { g_exit_code = code; }
+int exit_code() { return g_exit_code; }
+
+}  // namespace stoneskip::cli
+
+int main(int argc, char** argv) {
+  CLI::App app{"stoneskip: verification and validation of real-time stone-skipping simulation"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "stoneskip 0.1.0");
+  for (const auto& add : stoneskip::cli::registered_commands()) add(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // Usage errors are bad input: one line, exit 2.
+    std::fprintf(stderr, "stoneskip: %s (see --help)\n", e.what());
+    return 2;
+  } catch (const stoneskip::InputError& e) {
+    std::fprintf(stderr, "stoneskip: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "stoneskip: internal error: %s\n", e.what());
+    return 3;
+  }
+  return stoneskip::cli::exit_code();
+}

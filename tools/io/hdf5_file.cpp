@@ -1,0 +1,286 @@
+#include "tools/io/hdf5_file.hpp"
+
+#include <chrono>
+#include <ctime>
+#include <stdexcept>
+
+#include "stoneskip_version.hpp"
+#include "tools/io/input_error.hpp"
+
+namespace stoneskip {
+
+namespace {
+
+// HDF5's own error stack printing is silenced: failures surface as exceptions with our message.
+struct SilenceHdf5 {
+  SilenceHdf5() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+};
+const SilenceHdf5 kSilence;
+
+void check(herr_t status, const std::string& what) {
+  if (status < 0) throw std::runtime_error("HDF5: " + what);
+}
+
+hid_t check_id(hid_t id, const std::string& what) {
+  if (id < 0) throw std::runtime_error("HDF5: " + what);
+  return id;
+}
+
+H5Id string_type() {
+  hid_t t = H5Tcopy(H5T_C_S1);
+  H5Tset_size(t, H5T_VARIABLE);
+  H5Tset_cset(t, H5T_CSET_UTF8);
+  return H5Id(t, H5Tclose);
+}
+
+H5Id scalar_space() { return H5Id(H5Screate(H5S_SCALAR), H5Sclose); }
+
+H5Id open_attr(hid_t obj, const std::string& name) {
+  return H5Id(check_id(H5Aopen(obj, name.c_str(), H5P_DEFAULT), "no attribute " + name), H5Aclose);
+}
+
+H5Id replace_attr(hid_t obj, const std::string& name, hid_t type, hid_t space) {
+  if (H5Aexists(obj, name.c_str()) > 0) H5Adelete(obj, name.c_str());
+  return H5Id(check_id(H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT),
+                       "cannot create attribute " + name),
+              H5Aclose);
+}
+
+void set_string_attr(hid_t obj, const std::string& name, const std::string& value) {
+  H5Id t = string_type();
+  H5Id s = scalar_space();
+  H5Id a = replace_attr(obj, name, t.get(), s.get());
+  const char* p = value.c_str();
+  check(H5Awrite(a.get(), t.get(), &p), "write attribute " + name);
+}
+
+std::string get_string_attr(hid_t obj, const std::string& name) {
+  H5Id a = open_attr(obj, name);
+  H5Id t = string_type();
+  char* p = nullptr;
+  check(H5Aread(a.get(), t.get(), &p), "read attribute " + name);
+  std::string s = p ? p : "";
+  H5free_memory(p);
+  return s;
+}
+
+H5Id create_dataset(hid_t loc, const std::string& name, hid_t type, const std::vector<hsize_t>& dims) {
+  H5Id space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
+  return H5Id(check_id(H5Dcreate2(loc, name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                       "cannot create dataset " + name),
+              H5Dclose);
+}
+
+std::vector<hsize_t> dataset_dims(hid_t ds) {
+  H5Id space(H5Dget_space(ds), H5Sclose);
+  int rank = H5Sget_simple_extent_ndims(space.get());
+  std::vector<hsize_t> dims(static_cast<std::size_t>(std::max(rank, 0)));
+  H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
+  return dims;
+}
+
+hsize_t element_count(const std::vector<hsize_t>& dims) {
+  hsize_t n = 1;
+  for (hsize_t d : dims) n *= d;
+  return n;
+}
+
+}  // namespace
+
+H5Id::H5Id(hid_t id, Closer closer) : id_(id), closer_(closer) {}
+H5Id::~H5Id() {
+  if (id_ >= 0 && closer_) closer_(id_);
+}
+H5Id::H5Id(H5Id&& o) noexcept : id_(o.id_), closer_(o.closer_) { o.id_ = -1; }
+H5Id& H5Id::operator=(H5Id&& o) noexcept {
+  if (this != &o) {
+    if (id_ >= 0 && closer_) closer_(id_);
+    id_ = o.id_;
+    closer_ = o.closer_;
+    o.id_ = -1;
+  }
+  return *this;
+}
+
+void Table::add_row(const std::vector<double>& row) {
+  if (row.size() != columns.size()) throw std::invalid_argument("Table::add_row: wrong column count");
+  values.insert(values.end(), row.begin(), row.end());
+}
+
+std::vector<double> Table::column(const std::string& name) const {
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    if (columns[c] == name) {
+      std::vector<double> out(rows());
+      for (std::size_t r = 0; r < out.size(); ++r) out[r] = values[r * columns.size() + c];
+      return out;
+    }
+  }
+  throw std::out_of_range("no column " + name);
+}
+
+H5Group H5Group::create_group(const std::string& name) const {
+  hid_t g = check_id(H5Gcreate2(id(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                     "cannot create group " + name);
+  return H5Group(H5Id(g, H5Gclose), path_ + "/" + name);
+}
+
+H5Group H5Group::open_group(const std::string& name) const {
+  hid_t g = check_id(H5Gopen2(id(), name.c_str(), H5P_DEFAULT), "no group " + path_ + "/" + name);
+  return H5Group(H5Id(g, H5Gclose), path_ + "/" + name);
+}
+
+bool H5Group::has(const std::string& name) const { return H5Lexists(id(), name.c_str(), H5P_DEFAULT) > 0; }
+
+std::vector<std::string> H5Group::children() const {
+  std::vector<std::string> names;
+  H5Literate(
+      id(), H5_INDEX_NAME, H5_ITER_INC, nullptr,
+      [](hid_t, const char* link_name, const H5L_info_t*, void* data) -> herr_t {
+        static_cast<std::vector<std::string>*>(data)->emplace_back(link_name);
+        return 0;
+      },
+      &names);
+  return names;
+}
+
+void H5Group::write_vector(const std::string& name, const std::vector<double>& v, const std::string& units) const {
+  H5Id ds = create_dataset(id(), name, H5T_NATIVE_DOUBLE, {static_cast<hsize_t>(v.size())});
+  if (!v.empty()) check(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), "write " + name);
+  if (!units.empty()) set_string_attr(ds.get(), "units", units);
+}
+
+void H5Group::write_ints(const std::string& name, const std::vector<long long>& v) const {
+  H5Id ds = create_dataset(id(), name, H5T_NATIVE_LLONG, {static_cast<hsize_t>(v.size())});
+  if (!v.empty()) check(H5Dwrite(ds.get(), H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), "write " + name);
+}
+
+void H5Group::write_table(const std::string& name, const Table& t) const {
+  H5Id ds = create_dataset(id(), name, H5T_NATIVE_DOUBLE,
+                           {static_cast<hsize_t>(t.rows()), static_cast<hsize_t>(t.columns.size())});
+  if (!t.values.empty())
+    check(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, t.values.data()), "write " + name);
+  std::string cols;
+  for (std::size_t i = 0; i < t.columns.size(); ++i) cols += (i ? "," : "") + t.columns[i];
+  set_string_attr(ds.get(), "columns", cols);
+}
+
+void H5Group::write_strings(const std::string& name, const std::vector<std::string>& v) const {
+  H5Id t = string_type();
+  H5Id ds = create_dataset(id(), name, t.get(), {static_cast<hsize_t>(v.size())});
+  std::vector<const char*> ptrs;
+  for (const auto& s : v) ptrs.push_back(s.c_str());
+  if (!v.empty()) check(H5Dwrite(ds.get(), t.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()), "write " + name);
+}
+
+std::vector<double> H5Group::read_vector(const std::string& name) const {
+  H5Id ds(check_id(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), "no dataset " + path_ + "/" + name), H5Dclose);
+  std::vector<double> v(element_count(dataset_dims(ds.get())));
+  if (!v.empty()) check(H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), "read " + name);
+  return v;
+}
+
+std::vector<long long> H5Group::read_ints(const std::string& name) const {
+  H5Id ds(check_id(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), "no dataset " + path_ + "/" + name), H5Dclose);
+  std::vector<long long> v(element_count(dataset_dims(ds.get())));
+  if (!v.empty()) check(H5Dread(ds.get(), H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), "read " + name);
+  return v;
+}
+
+Table H5Group::read_table(const std::string& name) const {
+  H5Id ds(check_id(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), "no dataset " + path_ + "/" + name), H5Dclose);
+  auto dims = dataset_dims(ds.get());
+  Table t;
+  std::string cols = get_string_attr(ds.get(), "columns");
+  std::size_t start = 0;
+  while (start <= cols.size() && !cols.empty()) {
+    std::size_t comma = cols.find(',', start);
+    t.columns.push_back(cols.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  t.values.resize(element_count(dims));
+  if (dims.size() != 2 || dims[1] != t.columns.size()) throw std::runtime_error("HDF5: " + name + " is not a table");
+  if (!t.values.empty())
+    check(H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, t.values.data()), "read " + name);
+  return t;
+}
+
+std::vector<std::string> H5Group::read_strings(const std::string& name) const {
+  H5Id ds(check_id(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), "no dataset " + path_ + "/" + name), H5Dclose);
+  std::vector<char*> ptrs(element_count(dataset_dims(ds.get())), nullptr);
+  H5Id t = string_type();
+  if (!ptrs.empty()) check(H5Dread(ds.get(), t.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()), "read " + name);
+  std::vector<std::string> out;
+  for (char* p : ptrs) {
+    out.emplace_back(p ? p : "");
+    H5free_memory(p);
+  }
+  return out;
+}
+
+void H5Group::set_attr(const std::string& name, const std::string& value) const { set_string_attr(id(), name, value); }
+
+void H5Group::set_attr(const std::string& name, double value) const {
+  H5Id s = scalar_space();
+  H5Id a = replace_attr(id(), name, H5T_NATIVE_DOUBLE, s.get());
+  check(H5Awrite(a.get(), H5T_NATIVE_DOUBLE, &value), "write attribute " + name);
+}
+
+void H5Group::set_attr(const std::string& name, long long value) const {
+  H5Id s = scalar_space();
+  H5Id a = replace_attr(id(), name, H5T_NATIVE_LLONG, s.get());
+  check(H5Awrite(a.get(), H5T_NATIVE_LLONG, &value), "write attribute " + name);
+}
+
+bool H5Group::has_attr(const std::string& name) const { return H5Aexists(id(), name.c_str()) > 0; }
+std::string H5Group::attr_string(const std::string& name) const { return get_string_attr(id(), name); }
+
+double H5Group::attr_double(const std::string& name) const {
+  H5Id a = open_attr(id(), name);
+  double v = 0;
+  check(H5Aread(a.get(), H5T_NATIVE_DOUBLE, &v), "read attribute " + name);
+  return v;
+}
+
+long long H5Group::attr_int(const std::string& name) const {
+  H5Id a = open_attr(id(), name);
+  long long v = 0;
+  check(H5Aread(a.get(), H5T_NATIVE_LLONG, &v), "read attribute " + name);
+  return v;
+}
+
+Hdf5Writer::Hdf5Writer(const std::filesystem::path& path) : out_(path) {
+  hid_t f = H5Fcreate(out_.temporary_path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (f < 0) throw_input_error(path.string(), 0, "", "cannot create HDF5 file");
+  H5Id file(f, H5Fclose);
+  hid_t g = H5Gopen2(file.get(), "/", H5P_DEFAULT);
+  // The root group keeps the file open until it is closed (HDF5 closes files when the last
+  // object handle goes); file's handle is released here.
+  root_ = std::make_unique<H5Group>(H5Id(g, H5Gclose), "");
+}
+
+void Hdf5Writer::commit() {
+  H5Fflush(root_->id(), H5F_SCOPE_GLOBAL);
+  root_.reset();
+  out_.commit();
+}
+
+Hdf5Reader::Hdf5Reader(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw_input_error(path.string(), 0, "", "cannot read: no such file");
+  if (H5Fis_hdf5(path.c_str()) <= 0) throw_input_error(path.string(), 0, "", "not an HDF5 file");
+  hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (f < 0) throw_input_error(path.string(), 0, "", "cannot open HDF5 file");
+  H5Id file(f, H5Fclose);
+  root_ = std::make_unique<H5Group>(H5Id(H5Gopen2(file.get(), "/", H5P_DEFAULT), H5Gclose), "");
+}
+
+void stamp_provenance(const H5Group& g) {
+  g.set_attr("code_version", std::string("stoneskip ") + kVersion + " (git " + kGitDescribe + ")");
+  std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  g.set_attr("created_utc", std::string(buf));
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,107 @@
+#pragma once
+// Small RAII handles over the HDF5 C API: files, groups, datasets of doubles (1-D and 2-D, with a
+// column-names attribute and a units attribute), integer and string attributes; reading back the
+// same. Everything a result file or a report's data needs, nothing more.
+//
+// Writing goes through AtomicOutput: Hdf5Writer creates "<path>.tmp-PID" and renames it over the
+// destination in commit(), so a failed run leaves no partial .h5 file.
+#include <hdf5.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tools/io/atomic_file.hpp"
+
+namespace stoneskip {
+
+// An owned hid_t with its matching close function.
+class H5Id {
+ public:
+  using Closer = herr_t (*)(hid_t);
+  H5Id() = default;
+  H5Id(hid_t id, Closer closer);
+  ~H5Id();
+  H5Id(H5Id&& o) noexcept;
+  H5Id& operator=(H5Id&& o) noexcept;
+  H5Id(const H5Id&) = delete;
+  H5Id& operator=(const H5Id&) = delete;
+  hid_t get() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+
+ private:
+  hid_t id_ = -1;
+  Closer closer_ = nullptr;
+};
+
+// A row-major table of doubles with named columns (units in the names: "t_s", "x_m", ...).
+struct Table {
+  std::vector<std::string> columns;
+  std::vector<double> values;  // rows × columns, row-major
+  std::size_t rows() const { return columns.empty() ? 0 : values.size() / columns.size(); }
+  void add_row(const std::vector<double>& row);
+  std::vector<double> column(const std::string& name) const;  // throws std::out_of_range
+};
+
+class H5Group {
+ public:
+  explicit H5Group(H5Id id, std::string path) : id_(std::move(id)), path_(std::move(path)) {}
+  hid_t id() const { return id_.get(); }
+  const std::string& path() const { return path_; }
+
+  H5Group create_group(const std::string& name) const;
+  H5Group open_group(const std::string& name) const;
+  bool has(const std::string& name) const;
+  std::vector<std::string> children() const;
+
+  // Datasets.
+  void write_vector(const std::string& name, const std::vector<double>& v, const std::string& units = "") const;
+  void write_ints(const std::string& name, const std::vector<long long>& v) const;
+  void write_table(const std::string& name, const Table& t) const;
+  void write_strings(const std::string& name, const std::vector<std::string>& v) const;
+  std::vector<double> read_vector(const std::string& name) const;
+  std::vector<long long> read_ints(const std::string& name) const;
+  Table read_table(const std::string& name) const;
+  std::vector<std::string> read_strings(const std::string& name) const;
+
+  // Attributes on this group.
+  void set_attr(const std::string& name, const std::string& value) const;
+  void set_attr(const std::string& name, double value) const;
+  void set_attr(const std::string& name, long long value) const;
+  bool has_attr(const std::string& name) const;
+  std::string attr_string(const std::string& name) const;
+  double attr_double(const std::string& name) const;
+  long long attr_int(const std::string& name) const;
+
+ private:
+  H5Id id_;
+  std::string path_;
+};
+
+// A new HDF5 file, written atomically.
+class Hdf5Writer {
+ public:
+  explicit Hdf5Writer(const std::filesystem::path& path);
+  H5Group& root() { return *root_; }
+  void commit();  // closes the file and renames it into place
+
+ private:
+  AtomicOutput out_;
+  std::unique_ptr<H5Group> root_;
+};
+
+// An existing HDF5 file, read only. Throws InputError naming the file if it cannot be opened.
+class Hdf5Reader {
+ public:
+  explicit Hdf5Reader(const std::filesystem::path& path);
+  const H5Group& root() const { return *root_; }
+
+ private:
+  std::unique_ptr<H5Group> root_;
+};
+
+// Attaches the code version ("stoneskip 0.1.0 (git ...)") and the creation time (UTC) to a group.
+void stamp_provenance(const H5Group& g);
+
+}  // namespace stoneskip

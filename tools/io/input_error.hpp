@@ -1,0 +1,21 @@
+#pragma once
+// The one exception type of the I/O edge: bad input (a case file, a capture, a command-line value,
+// an output path). Its message is a single line that names the file and the line or key, and what
+// is wrong. The command catches it, prints it, and exits with status 2.
+#include <stdexcept>
+#include <string>
+
+namespace stoneskip {
+
+class InputError : public std::runtime_error {
+ public:
+  explicit InputError(const std::string& one_line_message) : std::runtime_error(one_line_message) {}
+};
+
+// "FILE:LINE: KEY: WHAT" with the empty parts left out.
+std::string input_location(const std::string& file, long line, const std::string& key);
+
+[[noreturn]] void throw_input_error(const std::string& file, long line, const std::string& key,
+                                    const std::string& what);
+
+}  // namespace stoneskip

@@ -1,0 +1,72 @@
+#pragma once
+// Strict reading of TOML case files. Every key a reader asks for is recorded; finish() rejects any
+// key that was not asked for (a misspelt key is an error, never a silent default). Every error is
+// one line: "FILE:LINE: section.key: what is wrong".
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <toml.hpp>
+
+namespace stoneskip {
+
+class TomlTable {
+ public:
+  TomlTable(const toml::value* table, std::string file, std::string prefix);
+
+  bool has(const std::string& key) const;
+  // Numbers: integers are accepted where a real is asked for; NaN and infinities are rejected.
+  double number(const std::string& key);
+  double number_or(const std::string& key, double fallback);
+  std::optional<double> maybe_number(const std::string& key);
+  long long integer(const std::string& key);
+  long long integer_or(const std::string& key, long long fallback);
+  std::string string(const std::string& key);
+  std::string string_or(const std::string& key, const std::string& fallback);
+  bool boolean_or(const std::string& key, bool fallback);
+  std::vector<double> numbers(const std::string& key);  // an array of numbers
+  std::optional<std::vector<double>> maybe_numbers(const std::string& key);
+  TomlTable table(const std::string& key);             // a required sub-table
+  std::optional<TomlTable> maybe_table(const std::string& key);
+  std::vector<std::string> keys() const;
+
+  // Range checks with the standard message.
+  void require_positive(const std::string& key, double value) const;        // > 0
+  void require_non_negative(const std::string& key, double value) const;    // >= 0
+  void require_in(const std::string& key, double value, double lo, double hi) const;  // [lo, hi]
+  // Throws InputError naming this key: "FILE:LINE: prefix.key: what".
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const;
+
+  // Rejects keys that no reader asked for.
+  void finish() const;
+
+  const std::string& file() const { return file_; }
+  const std::string& prefix() const { return prefix_; }
+
+ private:
+  const toml::value& at(const std::string& key) const;
+  long line_of(const std::string& key) const;
+  std::string full(const std::string& key) const;
+
+  const toml::value* table_;
+  std::string file_;
+  std::string prefix_;
+  mutable std::set<std::string> used_;
+};
+
+// A parsed case file with its original text (attached to results) and any command-line overrides
+// ("section.key=value", value in TOML syntax; a bare word is taken as a string) applied.
+struct TomlDocument {
+  std::string file;
+  std::string text;
+  std::vector<std::string> overrides;
+  toml::value root;
+  TomlTable top() const { return TomlTable(&root, file, ""); }
+};
+
+TomlDocument load_toml(const std::string& path, const std::vector<std::string>& overrides = {});
+TomlDocument parse_toml_text(const std::string& text, const std::string& name,
+                             const std::vector<std::string>& overrides = {});
+
+}  // namespace stoneskip

@@ -1,0 +1,168 @@
+#include "tools/scene/throw_output.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace stoneskip {
+
+namespace {
+std::string num(double v, const char* f = "%.4g") {
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+}  // namespace
+
+std::string text_summary(const StoneCase& c, const ThrowResult& r) {
+  std::ostringstream s;
+  s << "case      " << c.title << " (" << c.file << ")\n";
+  s << "stone     " << c.stone.description << ", mass " << num(c.stone.mass.mass_kg * 1e3) << " g\n";
+  s << "model     " << to_string(c.environment.convention) << " convention, C_w = " << c.environment.water_coefficient << "\n";
+  s << "solver    " << r.solver << "\n";
+  s << "bounces   " << r.bounces << "\n";
+  s << "outcome   " << to_string(r.outcome) << ": " << r.outcome_detail << "\n";
+  s << "distance  " << num(r.distance_m) << " m, lateral deviation " << num(r.lateral_m) << " m (+y = thrower's left)\n";
+  if (r.max_energy_gain_J > 0) s << "energy    a contact gained " << num(r.max_energy_gain_J) << " J (the model created energy)\n";
+  if (!r.contacts.empty()) {
+    s << "contacts:\n";
+    s << "   #   start_s     end_s  duration_ms  entry_m_s  exit_m_s  entry_path_deg  entry_attack_deg  bounced\n";
+    int i = 0;
+    for (const auto& k : r.contacts) {
+      char line[256];
+      std::snprintf(line, sizeof line, "%4d %9.5f %9.5f %12.3f %10.3f %9.3f %15.2f %17.2f  %s\n", ++i, k.start_s, k.end_s,
+                    1e3 * k.duration_s(), k.entry_speed_m_s, k.exit_speed_m_s, k.entry_path_angle_deg,
+                    k.entry_attack_angle_deg, k.bounced ? "yes" : "no");
+      s << line;
+    }
+  }
+  s << "cost      " << r.stats.steps << " steps (" << r.stats.contact_steps << " in contact), " << r.stats.rhs_evaluations
+    << " right-hand sides";
+  if (r.stats.segments) s << ", " << r.stats.segments << " segments, " << r.stats.root_evaluations << " root evaluations";
+  s << ", " << num(r.stats.cpu_s * 1e3) << " ms\n";
+  return s.str();
+}
+
+nlohmann::json json_summary(const ThrowResult& r) {
+  nlohmann::json j;
+  j["solver"] = r.solver;
+  j["bounces"] = r.bounces;
+  j["outcome"] = to_string(r.outcome);
+  j["outcome_detail"] = r.outcome_detail;
+  j["end_time_s"] = r.end_time_s;
+  j["distance_m"] = r.distance_m;
+  j["lateral_m"] = r.lateral_m;
+  j["max_energy_gain_J"] = r.max_energy_gain_J;
+  j["final_position_m"] = {r.final_state.position_m.x(), r.final_state.position_m.y(), r.final_state.position_m.z()};
+  nlohmann::json contacts = nlohmann::json::array();
+  for (const auto& c : r.contacts) {
+    contacts.push_back({{"start_s", c.start_s},
+                        {"end_s", c.end_s},
+                        {"duration_s", c.duration_s()},
+                        {"entry_speed_m_s", c.entry_speed_m_s},
+                        {"exit_speed_m_s", c.exit_speed_m_s},
+                        {"entry_path_angle_deg", c.entry_path_angle_deg},
+                        {"exit_path_angle_deg", c.exit_path_angle_deg},
+                        {"entry_attack_angle_deg", c.entry_attack_angle_deg},
+                        {"exit_attack_angle_deg", c.exit_attack_angle_deg},
+                        {"entry_energy_J", c.entry_energy_J},
+                        {"exit_energy_J", c.exit_energy_J},
+                        {"first_touch_m", {c.first_touch_m.x(), c.first_touch_m.y(), c.first_touch_m.z()}},
+                        {"bounced", c.bounced}});
+  }
+  j["contacts"] = contacts;
+  j["stats"] = {{"steps", r.stats.steps},
+                {"contact_steps", r.stats.contact_steps},
+                {"rhs_evaluations", r.stats.rhs_evaluations},
+                {"root_evaluations", r.stats.root_evaluations},
+                {"error_test_failures", r.stats.error_test_failures},
+                {"nonlinear_iterations", r.stats.nonlinear_iterations},
+                {"segments", r.stats.segments},
+                {"cpu_s", r.stats.cpu_s}};
+  return j;
+}
+
+Table trajectory_table(const Stone& stone, const ThrowResult& r) {
+  Table t;
+  t.columns = {"t_s", "x_m", "y_m", "z_m", "vx_m_s", "vy_m_s", "vz_m_s", "qw", "qx", "qy", "qz",
+               "wx_rad_s", "wy_rad_s", "wz_rad_s", "energy_J", "momentum_kg_m_s", "wetted_area_m2"};
+  for (const auto& p : r.trajectory) {
+    const auto& s = p.state;
+    const auto& w = p.angular_velocity_rad_s;
+    t.add_row({p.t_s, s.position_m.x(), s.position_m.y(), s.position_m.z(), s.velocity_m_s.x(), s.velocity_m_s.y(),
+               s.velocity_m_s.z(), s.orientation.w(), s.orientation.x(), s.orientation.y(), s.orientation.z(), w.x(), w.y(),
+               w.z(), p.energy_J, stone.mass.mass_kg * s.velocity_m_s.norm(), p.wetted_area_m2});
+  }
+  return t;
+}
+
+Table contacts_table(const ThrowResult& r) {
+  Table t;
+  t.columns = {"start_s", "end_s", "duration_s", "entry_speed_m_s", "exit_speed_m_s", "entry_path_angle_deg",
+               "exit_path_angle_deg", "entry_attack_angle_deg", "exit_attack_angle_deg", "entry_energy_J",
+               "exit_energy_J", "first_touch_x_m", "first_touch_y_m", "exit_x_m", "exit_y_m", "max_wetted_area_m2",
+               "bounced"};
+  for (const auto& c : r.contacts) {
+    t.add_row({c.start_s, c.end_s, c.duration_s(), c.entry_speed_m_s, c.exit_speed_m_s, c.entry_path_angle_deg,
+               c.exit_path_angle_deg, c.entry_attack_angle_deg, c.exit_attack_angle_deg, c.entry_energy_J,
+               c.exit_energy_J, c.first_touch_m.x(), c.first_touch_m.y(), c.exit_position_m.x(), c.exit_position_m.y(),
+               c.max_wetted_area_m2, c.bounced ? 1.0 : 0.0});
+  }
+  return t;
+}
+
+void write_throw_file(const std::string& path, const StoneCase& c,
+                      const std::vector<std::pair<std::string, const ThrowResult*>>& results) {
+  Hdf5Writer w(path);
+  const H5Group& root = w.root();
+  stamp_provenance(root);
+  root.set_attr("title", c.title);
+  root.set_attr("case_file", c.file);
+  root.set_attr("case_text", c.text);
+  std::string ov;
+  for (const auto& o : c.overrides) ov += (ov.empty() ? "" : "\n") + o;
+  root.set_attr("overrides", ov);
+  root.set_attr("resolved_settings", c.resolved_settings());
+
+  H5Group stone = root.create_group("stone");
+  stone.set_attr("description", c.stone.description);
+  stone.set_attr("mass_kg", c.stone.mass.mass_kg);
+  stone.set_attr("volume_m3", c.stone.mass.volume_m3);
+  stone.set_attr("density_kg_m3", c.stone.mass.density_kg_m3);
+  stone.set_attr("disk_radius_m", c.stone.disk_radius_m);
+  std::vector<double> inertia;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) inertia.push_back(c.stone.inertia_body_kg_m2(i, j));
+  stone.write_vector("inertia_body_kg_m2", inertia, "kg m^2");
+  Table verts;
+  verts.columns = {"x_m", "y_m", "z_m"};
+  for (const auto& v : c.stone.body_mesh.vertices) verts.add_row({v.x(), v.y(), v.z()});
+  stone.write_table("vertices_m", verts);
+  std::vector<long long> tris;
+  for (const auto& t : c.stone.body_mesh.triangles) tris.insert(tris.end(), {t[0], t[1], t[2]});
+  stone.write_ints("triangles", tris);
+
+  for (const auto& [name, r] : results) {
+    H5Group g = root.create_group(name);
+    g.set_attr("solver", r->solver);
+    g.set_attr("outcome", std::string(to_string(r->outcome)));
+    g.set_attr("outcome_detail", r->outcome_detail);
+    g.set_attr("bounces", static_cast<long long>(r->bounces));
+    g.set_attr("distance_m", r->distance_m);
+    g.set_attr("lateral_m", r->lateral_m);
+    g.set_attr("end_time_s", r->end_time_s);
+    g.set_attr("max_energy_gain_J", r->max_energy_gain_J);
+    g.set_attr("stats_steps", static_cast<long long>(r->stats.steps));
+    g.set_attr("stats_contact_steps", static_cast<long long>(r->stats.contact_steps));
+    g.set_attr("stats_rhs_evaluations", static_cast<long long>(r->stats.rhs_evaluations));
+    g.set_attr("stats_root_evaluations", static_cast<long long>(r->stats.root_evaluations));
+    g.set_attr("stats_error_test_failures", static_cast<long long>(r->stats.error_test_failures));
+    g.set_attr("stats_segments", static_cast<long long>(r->stats.segments));
+    g.set_attr("stats_cpu_s", r->stats.cpu_s);
+    g.write_table("trajectory", trajectory_table(c.stone, *r));
+    g.write_table("contacts", contacts_table(*r));
+  }
+  w.commit();
+}
+
+}  // namespace stoneskip

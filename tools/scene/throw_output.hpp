@@ -1,0 +1,37 @@
+#pragma once
+// A throw's result as words (terminal summary), as JSON, and as an HDF5 result file.
+//
+// HDF5 schema (see README.md, "Result files"):
+//   /                 attributes: code_version, created_utc, case_file, case_text, overrides,
+//                     resolved_settings, title
+//   /stone            attributes: description, mass_kg, volume_m3, density_kg_m3, disk_radius_m;
+//                     datasets: inertia_body_kg_m2 (9, row-major), vertices_m (table x_m,y_m,z_m),
+//                     triangles (3 per triangle, flattened)
+//   /<solver>         one group per solver run ("realtime", "reference"), attributes: solver,
+//                     outcome, outcome_detail, bounces, distance_m, lateral_m, end_time_s,
+//                     max_energy_gain_J, stats_* (steps, rhs_evaluations, ..., cpu_s)
+//   /<solver>/trajectory  table: t_s, x_m, y_m, z_m, vx_m_s, vy_m_s, vz_m_s, qw, qx, qy, qz,
+//                     wx_rad_s, wy_rad_s, wz_rad_s (world), energy_J, momentum_kg_m_s, wetted_area_m2
+//   /<solver>/contacts    table: start_s, end_s, duration_s, entry_speed_m_s, exit_speed_m_s,
+//                     entry_path_angle_deg, exit_path_angle_deg, entry_attack_angle_deg,
+//                     exit_attack_angle_deg, entry_energy_J, exit_energy_J, first_touch_x_m,
+//                     first_touch_y_m, exit_x_m, exit_y_m, max_wetted_area_m2, bounced (1/0)
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "tools/io/hdf5_file.hpp"
+#include "tools/scene/stone_case.hpp"
+
+namespace stoneskip {
+
+std::string text_summary(const StoneCase& c, const ThrowResult& r);
+nlohmann::json json_summary(const ThrowResult& r);
+Table trajectory_table(const Stone& stone, const ThrowResult& r);
+Table contacts_table(const ThrowResult& r);
+
+// Writes the case and every (name, result) pair to a new HDF5 file, atomically.
+void write_throw_file(const std::string& path, const StoneCase& c,
+                      const std::vector<std::pair<std::string, const ThrowResult*>>& results);
+
+}  // namespace stoneskip
