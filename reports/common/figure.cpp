@@ -1,5 +1,6 @@
 #include "reports/common/figure.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>

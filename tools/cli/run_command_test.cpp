@@ -1,0 +1,219 @@
+// End-to-end tests of `stoneskip run` and `stoneskip mesh`: JSON output, the two conventions, the
+// HDF5 result file, and bad input (one-line error naming file and key, exit status 2, no output
+// file left behind). Oracles: the JSON schema promised in the README, the case's own values, and
+// the library run in-process (an independent path to the same numbers).
+#include <boost/test/unit_test.hpp>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tools/io/hdf5_file.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Run {
+  int status = -1;
+  std::string out;  // stdout
+  std::string err;  // stderr
+};
+
+Run run(const std::string& args) {
+  const fs::path dir = fs::temp_directory_path() / ("stoneskip_cli_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string cmd = std::string(STONESKIP_EXE) + " " + args + " >" + (dir / "o").string() + " 2>" + (dir / "e").string();
+  Run r;
+  const int raw = std::system(cmd.c_str());
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  auto slurp = [](const fs::path& p) {
+    std::ifstream f(p);
+    return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  };
+  r.out = slurp(dir / "o");
+  r.err = slurp(dir / "e");
+  fs::remove_all(dir);
+  return r;
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("stoneskip_scratch_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream f(p);
+  f << text;
+}
+
+const char* kGoodCase = R"([stone]
+shape = "prism"
+radius_m = 0.03
+thickness_m = 0.008
+segments = 11
+density_kg_m3 = 2500.0
+[throw]
+speed_m_s = 8.0
+path_angle_deg = 10.0
+attack_angle_deg = 10.0
+spin_rev_s = 10.0
+height_m = 0.1
+[solver]
+dt_s = 1.0e-3
+contact_dt_s = 1.0e-5
+t_max_s = 3.0
+)";
+
+// Asserts a bad-input run: exit 2, a single line on stderr that contains every fragment.
+void expect_bad_input(const Run& r, const std::vector<std::string>& fragments) {
+  BOOST_TEST(r.status == 2, "exit status " << r.status << ", stderr: " << r.err);
+  BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, "stderr must be one line: " << r.err);
+  for (const auto& f : fragments) BOOST_TEST(r.err.find(f) != std::string::npos, "'" << f << "' not in: " << r.err);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(run_command)
+
+BOOST_AUTO_TEST_CASE(json_summary_has_the_promised_fields_and_consistent_values) {
+  // Oracle: the README's JSON schema; bounces equals the number of contacts that bounced;
+  // contact times are ordered; distance is the horizontal distance to the final position.
+  const Run r = run("run cases/paper_8ms_spin.toml --set environment.convention=paper --json");
+  BOOST_REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* k : {"bounces", "contacts", "outcome", "distance_m", "lateral_m", "stats"}) BOOST_TEST(j.contains(k), k);
+  int bounced = 0;
+  double last_end = 0;
+  for (const auto& c : j["contacts"]) {
+    for (const char* k : {"start_s", "end_s", "entry_speed_m_s", "exit_speed_m_s"}) BOOST_TEST(c.contains(k), k);
+    BOOST_TEST(c["start_s"].get<double>() >= last_end);
+    BOOST_TEST(c["end_s"].get<double>() >= c["start_s"].get<double>());
+    last_end = c["end_s"].get<double>();
+    bounced += c["bounced"].get<bool>() ? 1 : 0;
+  }
+  BOOST_TEST(j["bounces"].get<int>() == bounced);
+  BOOST_TEST(j["bounces"].get<int>() >= 1);
+  const auto& p = j["final_position_m"];
+  BOOST_TEST(std::abs(std::hypot(p[0].get<double>(), p[1].get<double>()) - j["distance_m"].get<double>()) <= 1e-9);
+  const std::string outcome = j["outcome"];
+  BOOST_TEST((outcome == "sank" || outcome == "time_limit"));
+}
+
+BOOST_AUTO_TEST_CASE(the_two_conventions_give_different_throws) {
+  // Oracle: spec §1.6/§3 — the printed equations hold the attitude and create energy; the
+  // physical ones cannot create energy. The paper run must gain energy in a contact, the physical
+  // run must not, and their bounce counts or distances must differ.
+  const auto phys = nlohmann::json::parse(run("run cases/paper_8ms_spin.toml --json").out);
+  const auto paper = nlohmann::json::parse(run("run cases/paper_8ms_spin.toml --set environment.convention=paper --json").out);
+  BOOST_TEST(phys["max_energy_gain_J"].get<double>() <= 0.0);
+  BOOST_TEST(paper["max_energy_gain_J"].get<double>() > 0.0);
+  BOOST_TEST((phys["bounces"] != paper["bounces"] ||
+              std::abs(phys["distance_m"].get<double>() - paper["distance_m"].get<double>()) > 0.01));
+}
+
+BOOST_AUTO_TEST_CASE(the_result_file_holds_trajectory_contacts_case_and_version) {
+  // Oracle: the HDF5 schema in tools/scene/throw_output.hpp; the case text as written; the
+  // contact table agrees with the JSON printed by the same run.
+  const fs::path out = scratch("throw.h5");
+  const Run r = run("run cases/paper_8ms_spin.toml --json --out " + out.string());
+  BOOST_REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  stoneskip::Hdf5Reader f(out);
+  const auto& root = f.root();
+  BOOST_TEST(root.attr_string("code_version").find("stoneskip") == 0u);
+  std::ifstream cf("cases/paper_8ms_spin.toml");
+  const std::string text((std::istreambuf_iterator<char>(cf)), std::istreambuf_iterator<char>());
+  BOOST_TEST(root.attr_string("case_text") == text);
+  BOOST_TEST(root.attr_string("resolved_settings").find("contact_dt_s = 1e-05") != std::string::npos);
+  const auto g = root.open_group("realtime");
+  const auto traj = g.read_table("trajectory");
+  BOOST_TEST(traj.rows() > 10u);
+  const auto t = traj.column("t_s");
+  for (std::size_t i = 1; i < t.size(); ++i) BOOST_TEST(t[i] >= t[i - 1]);
+  const auto contacts = g.read_table("contacts");
+  BOOST_TEST(contacts.rows() == j["contacts"].size());
+  if (contacts.rows() > 0)
+    BOOST_TEST(contacts.column("start_s")[0] == j["contacts"][0]["start_s"].get<double>(), boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(g.attr_int("bounces") == j["bounces"].get<long long>());
+  fs::remove(out);
+}
+
+BOOST_AUTO_TEST_CASE(bad_input_gives_one_line_exit_2_and_no_output_file) {
+  // Oracle: the project's bad-input rule — each defect planted by hand and named in the message.
+  const fs::path c = scratch("bad.toml");
+  const fs::path out = scratch("never.h5");
+  struct Bad {
+    std::string from, to;
+    std::vector<std::string> fragments;
+  };
+  const std::vector<Bad> cases = {
+      {"radius_m = 0.03", "radius_m = -0.03", {"bad.toml:3", "stone.radius_m", "> 0"}},
+      {"radius_m = 0.03", "radius = 0.03", {"stone.radius_m", "missing"}},
+      {"segments = 11", "segments = 2", {"stone.segments", "at least 3"}},
+      {"segments = 11", "segmnets = 11", {"stone.segmnets", "unknown key"}},
+      {"density_kg_m3 = 2500.0", "density_kg_m3 = nan", {"stone.density_kg_m3", "finite"}},
+      {"density_kg_m3 = 2500.0", "density_kg_m3 = 0.0", {"stone.density_kg_m3", "> 0"}},
+      {"dt_s = 1.0e-3", "dt_s = 0.0", {"solver.dt_s", "> 0"}},
+      {"speed_m_s = 8.0", "speed_m_s = \"fast\"", {"throw.speed_m_s", "expected a number"}},
+      {"[solver]", "[solver\n", {"bad.toml", "TOML syntax error"}},
+      {"[stone]", "[stone]\nwobble = 1", {"stone.wobble", "unknown key"}},
+  };
+  for (const auto& b : cases) {
+    std::string text = kGoodCase;
+    text.replace(text.find(b.from), b.from.size(), b.to);
+    write(c, text);
+    const Run r = run("run " + c.string() + " --out " + out.string());
+    BOOST_TEST_CONTEXT(b.to) {
+      expect_bad_input(r, b.fragments);
+      BOOST_TEST(!fs::exists(out));
+    }
+  }
+  write(c, kGoodCase);
+  expect_bad_input(run("run " + c.string() + " --set stone.radius_m=-1"), {"--set", "stone.radius_m"});
+  expect_bad_input(run("run /nonexistent/case.toml"), {"/nonexistent/case.toml", "cannot read"});
+  expect_bad_input(run("run " + c.string() + " --out /nonexistent/dir/x.h5"), {"/nonexistent/dir/x.h5", "does not exist"});
+  // An open mesh file.
+  const fs::path obj = scratch("open.obj");
+  write(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\n");
+  std::string mesh_case = kGoodCase;
+  mesh_case.replace(mesh_case.find("shape = \"prism\""), 15, "shape = \"mesh\"\nmesh_file = \"open.obj\"");
+  const std::string dims = "radius_m = 0.03\nthickness_m = 0.008\nsegments = 11\n";
+  mesh_case.replace(mesh_case.find(dims), dims.size(), "");
+  write(c, mesh_case);
+  expect_bad_input(run("run " + c.string()), {"stone.mesh_file", "open.obj", "open"});
+  // A closed tetrahedron works.
+  write(obj, "v 0 0 0\nv 0.02 0 0\nv 0 0.02 0\nv 0 0 0.02\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
+  const Run ok = run("mesh " + c.string() + " --json");
+  BOOST_TEST(ok.status == 0, ok.err);
+  const auto j = nlohmann::json::parse(ok.out);
+  BOOST_TEST(j["volume_m3"].get<double>() == 0.02 * 0.02 * 0.02 / 6, boost::test_tools::tolerance(1e-12));
+  fs::remove_all(c.parent_path());
+}
+
+BOOST_AUTO_TEST_CASE(mesh_reports_the_closed_form_mass_properties) {
+  // Oracle: prism mass = ρ (N/2) R² sin(2π/N) h for the shipped 8 m/s case.
+  const Run r = run("mesh cases/paper_8ms_spin.toml --json");
+  BOOST_REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  const double m = 2500 * 5.5 * 0.03 * 0.03 * std::sin(2 * M_PI / 11) * 0.008;
+  BOOST_TEST(j["mass_kg"].get<double>() == m, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(j["triangles"].get<int>() == 44);
+  BOOST_TEST(j["closed_and_outward"].get<bool>());
+}
+
+BOOST_AUTO_TEST_CASE(every_command_has_help) {
+  // Oracle: CLI11 prints usage with exit 0 for --help on each command.
+  for (const char* c : {"--help", "run --help", "mesh --help", "plot --help", "report --help"}) {
+    const Run r = run(c);
+    BOOST_TEST(r.status == 0, c);
+    BOOST_TEST(r.out.find("Usage") != std::string::npos, c);
+  }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
