@@ -5,6 +5,17 @@
 // every vertex crossing the surface and every submerged triangle whose normal velocity changes
 // sign, and the integration restarts there (CVodeReInit); statistics are summed over segments.
 // Fills the same ThrowResult as the real-time stepper, with located contact times.
+//
+// Still water only (η = 0; there is no WaterSurface argument): the event functions and the claim
+// that the clipped area is smooth between vertex crossings hold for a flat surface.
+// Events (solvers/reference/stone_events.hpp): every vertex crossing z = 0 (contact starts when the
+// first vertex goes under, ends when the last comes out, the stone sinks when all are under); in
+// the physical convention also every wet face whose normal velocity changes sign (the switch of
+// Eq. 2) and the reversal of the air flow over the disk (Eq. 6), both C¹ kinks
+// (ReferenceOptions::locate_switches). In the paper convention the force ∝ u² is smooth in u.
+// BDF: Newton with a dense direct solver and CVODE's difference-quotient Jacobian; Adams:
+// fixed-point iteration. The quaternion is renormalised at every restart.
+// Statistics are summed over segments; rhs_evaluations includes those of the Jacobian.
 #include "solvers/realtime/throw_result.hpp"
 #include "solvers/reference/reference_options.hpp"
 

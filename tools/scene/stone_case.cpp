@@ -153,6 +153,12 @@ ReferenceOptions read_reference(std::optional<TomlTable> maybe, double t_max_s, 
   t.require_positive("atol", o.atol);
   o.max_steps = t.integer_or("max_steps", o.max_steps);
   if (o.max_steps < 1) t.fail("max_steps", "must be at least 1");
+  o.locate_switches = t.boolean_or("locate_switches", o.locate_switches);
+  o.max_step_s = t.number_or("max_step_s", o.max_step_s);
+  t.require_non_negative("max_step_s", o.max_step_s);
+  const long long events = t.integer_or("max_events_per_ms", o.max_events_per_ms);
+  if (events < 1 || events > 1000000) t.fail("max_events_per_ms", "must be in [1, 1000000]");
+  o.max_events_per_ms = static_cast<int>(events);
   t.finish();
   return o;
 }
@@ -240,7 +246,9 @@ std::string StoneCase::resolved_settings() const {
   s << "\n[solver]\nscheme = \"" << to_string(realtime.scheme) << "\"\ndt_s = " << realtime.dt_s << "\ncontact_dt_s = "
     << realtime.contact_dt_s << "\nt_max_s = " << realtime.t_max_s << "\noutput_dt_s = " << realtime.output_dt_s << "\n";
   s << "\n[reference]\nmethod = \"" << to_string(reference.method) << "\"\nrtol = " << reference.rtol << "\natol = "
-    << reference.atol << "\nmax_steps = " << reference.max_steps << "\n";
+    << reference.atol << "\nmax_steps = " << reference.max_steps
+    << "\nlocate_switches = " << (reference.locate_switches ? "true" : "false") << "\nmax_step_s = " << reference.max_step_s
+    << "\nmax_events_per_ms = " << reference.max_events_per_ms << "\n";
   return s.str();
 }
 

@@ -1,0 +1,448 @@
+#include "solvers/reference/cvode_stone.hpp"
+
+// The problem (spec §1.3): y = [x, v, q, L] ∈ R¹³,
+//   dx/dt = v,  m dv/dt = F_gravity + F_air + Σ F_i,  dq/dt = ½ (0, ω) ⊗ q,  dL/dt = Σ τ_i,
+// with the right-hand side of model/stone/rigid_body.hpp (still water). CVODE integrates each
+// smooth piece; root finding (solvers/reference/stone_events.hpp) locates the ends of the pieces,
+// and the integration restarts there with CVodeReInit, the quaternion renormalised.
+//
+// Linear algebra: BDF uses Newton iteration with SUNDIALS' dense direct solver and CVODE's internal
+// difference-quotient Jacobian (13 × 13: cheap, and no hand-written Jacobian of the clipped force
+// to get wrong). Adams uses the fixed-point (functional) iteration: the contact stiffness
+// (2 C_w ρ_w |u| S / m, ~10³ s⁻¹) is far below what the accuracy-limited steps resolve anyway.
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
+
+#include "solvers/reference/stone_events.hpp"
+
+namespace stoneskip {
+
+namespace {
+
+constexpr int kMaxEventsPerMs = 1000000;  // bounds the ring of event times below
+// |q| drifts between restarts by the accumulated integration error; above this (an attitude error
+// of ~1e-6 rad) the drift is named in outcome_detail.
+constexpr double kReportedQuaternionDrift = 1e-6;
+
+// A SUNDIALS call that returned an error: thrown by check(), caught in run_reference().
+struct CvodeFailure {
+  std::string message;
+};
+
+// Every SUNDIALS return code goes through here (the SUNDIALS examples' check_flag habit).
+void check(int flag, const char* call) {
+  if (flag >= 0) return;
+  char* name = CVodeGetReturnFlagName(flag);
+  std::string message = std::string(call) + " failed: " + (name ? name : "?");
+  std::free(name);
+  throw CvodeFailure{message};
+}
+
+template <class T>
+T* check_ptr(T* p, const char* call) {
+  if (!p) throw CvodeFailure{std::string(call) + " returned NULL (out of memory?)"};
+  return p;
+}
+
+std::string describe(const ReferenceOptions& o) {
+  std::ostringstream s;
+  s << "reference (CVODE " << (o.method == ReferenceMethod::bdf ? "BDF" : "Adams") << " rtol=" << o.rtol
+    << " atol=" << o.atol << ")";
+  return s.str();
+}
+
+// What the callbacks see.
+struct Problem {
+  const Stone& stone;
+  const Environment& env;
+  StoneEvents& events;
+  std::string nan_detail;  // the first non-finite value met in a callback
+};
+
+void note_nan(Problem& p, const char* where, double t) {
+  if (!p.nan_detail.empty()) return;
+  std::ostringstream m;
+  m << "NaN or infinity in the " << where << " at t = " << t << " s";
+  p.nan_detail = m.str();
+}
+
+int rhs_callback(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
+  auto& p = *static_cast<Problem*>(user);
+  const double* yy = N_VGetArrayPointer(y);
+  double* dy = N_VGetArrayPointer(ydot);
+  for (int k = 0; k < kStateSize; ++k) {
+    if (!std::isfinite(yy[k])) {
+      note_nan(p, "state", t);
+      return 1;  // recoverable: CVODE retries with a smaller step, and gives up after a few
+    }
+  }
+  rigid_body_rhs(p.stone, p.env, yy, dy);
+  for (int k = 0; k < kStateSize; ++k) {
+    if (!std::isfinite(dy[k])) {
+      note_nan(p, "right-hand side", t);
+      return 1;
+    }
+  }
+  return 0;
+}
+
+int root_callback(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
+  auto& p = *static_cast<Problem*>(user);
+  if (p.events.evaluate(N_VGetArrayPointer(y), g)) return 0;
+  note_nan(p, "state or a root function", t);
+  return -1;  // unrecoverable: CVode returns CV_RTFUNC_FAIL
+}
+
+// CVODE's messages are kept (the last one explains a failure) instead of printed.
+void error_callback(int code, const char* module, const char* function, char* msg, void* user) {
+  if (code == CV_WARNING) return;
+  auto* last = static_cast<std::string*>(user);
+  *last = std::string(module) + "::" + function + ": " + msg;
+}
+
+// The SUNDIALS objects of one solve, freed in reverse order.
+struct CvodeObjects {
+  SUNContext ctx = nullptr;
+  N_Vector y = nullptr;
+  SUNMatrix A = nullptr;
+  SUNLinearSolver LS = nullptr;
+  SUNNonlinearSolver NLS = nullptr;
+  void* mem = nullptr;
+  CvodeObjects() = default;
+  CvodeObjects(const CvodeObjects&) = delete;
+  CvodeObjects& operator=(const CvodeObjects&) = delete;
+  ~CvodeObjects() {
+    if (mem) CVodeFree(&mem);
+    if (NLS) SUNNonlinSolFree(NLS);
+    if (LS) SUNLinSolFree(LS);
+    if (A) SUNMatDestroy(A);
+    if (y) N_VDestroy(y);
+    if (ctx) SUNContext_Free(&ctx);
+  }
+};
+
+class ReferenceSolve {
+ public:
+  ReferenceSolve(const Stone& stone, const Environment& env, const ReferenceOptions& o, ThrowResult& r)
+      : stone_(stone), env_(env), o_(o), r_(r), events_(stone, env, o.locate_switches),
+        problem_{stone, env, events_, {}}, g_(events_.count()), found_(events_.count()),
+        event_times_(std::clamp(o.max_events_per_ms, 1, kMaxEventsPerMs), -1e300) {}
+
+  void run(const RigidState& initial);
+
+ private:
+  bool check_inputs(const RigidState& initial);
+  void setup(const RigidState& s0);
+  void restart(double t);
+  void add_segment_stats();
+  RigidState state() const;  // the current CVODE vector as a state, quaternion normalised
+  void renormalise();
+  void sample(double t, const RigidState& s);
+  bool handle_root(double t);  // false: the throw ended (sank) or failed
+  void fail(const std::string& why);
+  double energy(const RigidState& s) const { return mechanical_energy(stone_, env_, s).total_J(); }
+
+  const Stone& stone_;
+  const Environment& env_;
+  const ReferenceOptions& o_;
+  ThrowResult& r_;
+  StoneEvents events_;
+  Problem problem_;
+  CvodeObjects cv_;
+  std::string last_error_;
+  ContactLog log_;
+  std::vector<double> g_;
+  std::vector<int> found_;
+  std::vector<double> event_times_;  // ring of the last max_events_per_ms event times
+  long event_count_ = 0;
+  long resynced_ = 0;
+  double max_q_drift_ = 0;
+  bool segment_in_contact_ = false;
+  double t_ = 0;
+  bool done_ = false;
+};
+
+bool ReferenceSolve::check_inputs(const RigidState& initial) {
+  std::ostringstream bad;
+  if (!(o_.rtol > 0) || !(o_.atol > 0)) bad << "tolerances must be positive (rtol " << o_.rtol << ", atol " << o_.atol << ")";
+  else if (!(o_.t_max_s > 0) || !std::isfinite(o_.t_max_s)) bad << "t_max_s must be positive and finite";
+  else if (!(o_.output_dt_s >= 0)) bad << "output_dt_s must be >= 0";
+  else if (o_.max_steps <= 0) bad << "max_steps must be positive";
+  else if (o_.max_events_per_ms <= 0 || o_.max_events_per_ms > kMaxEventsPerMs)
+    bad << "max_events_per_ms must be in [1, " << kMaxEventsPerMs << "]";
+  else if (!(o_.max_step_s >= 0)) bad << "max_step_s must be >= 0";
+  if (!bad.str().empty()) {
+    fail("invalid reference options: " + bad.str());
+    return false;
+  }
+  const StateVector y = to_vector(initial);
+  for (int k = 0; k < kStateSize; ++k) {
+    if (!std::isfinite(y[k])) {
+      std::ostringstream m;
+      m << "the initial state is not finite (component " << k << " of [x, v, q, L] is " << y[k] << ")";
+      fail(m.str());
+      return false;
+    }
+  }
+  if (!(initial.orientation.norm() > 0)) {
+    fail("the initial quaternion is zero");
+    return false;
+  }
+  return true;
+}
+
+void ReferenceSolve::setup(const RigidState& s0) {
+  check(SUNContext_Create(nullptr, &cv_.ctx), "SUNContext_Create");
+  cv_.y = check_ptr(N_VNew_Serial(kStateSize, cv_.ctx), "N_VNew_Serial");
+  const StateVector y0 = to_vector(s0);
+  std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(cv_.y));
+  const bool bdf = o_.method == ReferenceMethod::bdf;
+  cv_.mem = check_ptr(CVodeCreate(bdf ? CV_BDF : CV_ADAMS, cv_.ctx), "CVodeCreate");
+  check(CVodeSetErrHandlerFn(cv_.mem, error_callback, &last_error_), "CVodeSetErrHandlerFn");
+  check(CVodeInit(cv_.mem, rhs_callback, 0.0, cv_.y), "CVodeInit");
+  check(CVodeSetUserData(cv_.mem, &problem_), "CVodeSetUserData");
+  check(CVodeSStolerances(cv_.mem, o_.rtol, o_.atol), "CVodeSStolerances");
+  if (bdf) {
+    cv_.A = check_ptr(SUNDenseMatrix(kStateSize, kStateSize, cv_.ctx), "SUNDenseMatrix");
+    cv_.LS = check_ptr(SUNLinSol_Dense(cv_.y, cv_.A, cv_.ctx), "SUNLinSol_Dense");
+    check(CVodeSetLinearSolver(cv_.mem, cv_.LS, cv_.A), "CVodeSetLinearSolver");  // no Jacobian: difference quotients
+  } else {
+    cv_.NLS = check_ptr(SUNNonlinSol_FixedPoint(cv_.y, 0, cv_.ctx), "SUNNonlinSol_FixedPoint");
+    check(CVodeSetNonlinearSolver(cv_.mem, cv_.NLS), "CVodeSetNonlinearSolver");
+  }
+  if (o_.max_step_s > 0) check(CVodeSetMaxStep(cv_.mem, o_.max_step_s), "CVodeSetMaxStep");
+  check(CVodeSetMaxHnilWarns(cv_.mem, -1), "CVodeSetMaxHnilWarns");
+  check(CVodeRootInit(cv_.mem, events_.count(), root_callback), "CVodeRootInit");
+  check(CVodeSetNoInactiveRootWarn(cv_.mem), "CVodeSetNoInactiveRootWarn");
+  check(CVodeSetRootDirection(cv_.mem, events_.directions()), "CVodeSetRootDirection");
+  check(CVodeSetStopTime(cv_.mem, o_.t_max_s), "CVodeSetStopTime");
+}
+
+// CVODE 6.4's CVodeReInit zeroes its counters: they are summed here, segment by segment.
+void ReferenceSolve::add_segment_stats() {
+  long nst = 0, nfe = 0, nfels = 0, nge = 0, netf = 0, nni = 0;
+  check(CVodeGetNumSteps(cv_.mem, &nst), "CVodeGetNumSteps");
+  check(CVodeGetNumRhsEvals(cv_.mem, &nfe), "CVodeGetNumRhsEvals");
+  if (o_.method == ReferenceMethod::bdf) check(CVodeGetNumLinRhsEvals(cv_.mem, &nfels), "CVodeGetNumLinRhsEvals");
+  check(CVodeGetNumGEvals(cv_.mem, &nge), "CVodeGetNumGEvals");
+  check(CVodeGetNumErrTestFails(cv_.mem, &netf), "CVodeGetNumErrTestFails");
+  check(CVodeGetNumNonlinSolvIters(cv_.mem, &nni), "CVodeGetNumNonlinSolvIters");
+  SolverStats& s = r_.stats;
+  s.steps += nst;
+  s.rhs_evaluations += nfe + nfels;  // right-hand sides for the difference-quotient Jacobian too
+  s.root_evaluations += nge;
+  s.error_test_failures += netf;
+  s.nonlinear_iterations += nni;
+  s.segments += 1;
+  if (segment_in_contact_) s.contact_steps += nst;  // steps taken with some vertex under water
+  segment_in_contact_ = events_.submerged_vertices() > 0;  // the mode of the next segment
+}
+
+void ReferenceSolve::restart(double t) {
+  add_segment_stats();
+  check(CVodeReInit(cv_.mem, t, cv_.y), "CVodeReInit");
+  check(CVodeSetRootDirection(cv_.mem, events_.directions()), "CVodeSetRootDirection");
+  check(CVodeSetStopTime(cv_.mem, o_.t_max_s), "CVodeSetStopTime");
+}
+
+RigidState ReferenceSolve::state() const {
+  RigidState s = from_vector(N_VGetArrayPointer(cv_.y));
+  s.orientation.normalize();
+  return s;
+}
+
+void ReferenceSolve::renormalise() {
+  double* y = N_VGetArrayPointer(cv_.y);
+  const double n = std::sqrt(y[6] * y[6] + y[7] * y[7] + y[8] * y[8] + y[9] * y[9]);
+  max_q_drift_ = std::max(max_q_drift_, std::abs(n - 1.0));
+  for (int k = 6; k < 10; ++k) y[k] /= n;
+}
+
+void ReferenceSolve::sample(double t, const RigidState& s) {
+  const bool wet = events_.submerged_vertices() > 0;
+  const double wetted = wet ? water_loads(stone_, env_, s).wetted_area_m2 : 0.0;
+  log_.observe_wetted_area(wetted);
+  if (!o_.record_trajectory) return;
+  TrajectorySample p;
+  p.t_s = t;
+  p.state = s;
+  p.angular_velocity_rad_s = angular_velocity(stone_, s);
+  p.energy_J = energy(s);
+  p.wetted_area_m2 = wetted;
+  r_.trajectory.push_back(p);
+}
+
+void ReferenceSolve::fail(const std::string& why) {
+  r_.outcome = Outcome::failed;
+  r_.outcome_detail = why;
+  done_ = true;
+}
+
+bool ReferenceSolve::handle_root(double t) {
+  // Chattering guard: more than max_events_per_ms events within 1 ms fails the solve.
+  const std::size_t slot = static_cast<std::size_t>(event_count_ % static_cast<long>(event_times_.size()));
+  if (t - event_times_[slot] < 1e-3) {
+    std::ostringstream m;
+    m << "more than " << o_.max_events_per_ms << " events within 1 ms before t = " << t
+      << " s (chattering at the surface; ReferenceOptions::max_events_per_ms)";
+    fail(m.str());
+    return false;
+  }
+  event_times_[slot] = t;
+  ++event_count_;
+
+  check(CVodeGetRootInfo(cv_.mem, found_.data()), "CVodeGetRootInfo");
+  renormalise();
+  const RigidState s = state();
+  const EventChange c = events_.apply(found_.data(), s);
+  resynced_ += c.resynced_vertices;
+  const int nv = events_.vertex_count();
+  // Spec §1.8: a contact starts when the first vertex goes under and ends when the last comes out.
+  if (c.submerged_before == 0 && c.submerged_after > 0) {
+    const Mat3 R = s.orientation.toRotationMatrix();
+    const int j = c.deepest_new_vertex >= 0 ? c.deepest_new_vertex : 0;
+    log_.start(t, s, world_vertex(stone_, s, R, j), energy(s));
+  }
+  sample(t, s);
+  if (c.submerged_before > 0 && c.submerged_after == 0) log_.end(t, s, energy(s), true);
+  if (c.submerged_after == nv) {
+    // Completely under water: nothing here lifts a submerged stone (spec §1.8).
+    log_.end(t, s, energy(s), false);
+    r_.outcome = Outcome::sank;
+    std::ostringstream m;
+    m << "completely under water at t = " << t << " s";
+    r_.outcome_detail = m.str();
+    return false;
+  }
+  restart(t);
+  return true;
+}
+
+void ReferenceSolve::run(const RigidState& initial) {
+  r_.release_position_m = initial.position_m;
+  r_.final_state = initial;
+  if (!check_inputs(initial)) return;
+
+  // 1. The discrete mode at t = 0 (a throw may start in the water).
+  RigidState s0 = initial;
+  s0.orientation.normalize();
+  events_.reset(s0);
+  const int nv = events_.vertex_count();
+  if (events_.submerged_vertices() > 0) {
+    const DeepestPoint deep = deepest_point(stone_, s0);
+    log_.start(0, s0, deep.position_m, energy(s0));
+  }
+  sample(0, s0);
+  r_.outcome = Outcome::time_limit;
+  r_.outcome_detail = "reached t_max";
+  t_ = 0;
+  if (events_.submerged_vertices() == nv) {
+    log_.end(0, s0, energy(s0), false);
+    r_.outcome = Outcome::sank;
+    r_.outcome_detail = "completely under water at t = 0 s";
+    finish_result(r_, log_, s0, 0);
+    return;
+  }
+
+  // 2. CVODE.
+  segment_in_contact_ = events_.submerged_vertices() > 0;
+  setup(s0);
+
+  // 3. Main loop: to the next output time, or to an event and a restart there.
+  const bool sampled = o_.record_trajectory && o_.output_dt_s > 0;
+  const double eps = std::numeric_limits<double>::epsilon();
+  long k_out = 1;
+  while (!done_) {
+    const double tout = sampled ? std::min(o_.t_max_s, k_out * o_.output_dt_s) : o_.t_max_s;
+    // An output time that an event has just reached: CVODE refuses a tout this close to t.
+    if (tout - t_ <= 16 * eps * std::max(std::abs(t_), std::abs(tout))) {
+      if (tout >= o_.t_max_s) break;
+      ++k_out;
+      continue;
+    }
+    long nst = 0;
+    check(CVodeGetNumSteps(cv_.mem, &nst), "CVodeGetNumSteps");
+    const long left = o_.max_steps - r_.stats.steps - nst;
+    if (left <= 0) {
+      std::ostringstream m;
+      m << "too many steps: " << o_.max_steps << " (ReferenceOptions::max_steps) used by t = " << t_ << " s";
+      fail(m.str());
+      break;
+    }
+    check(CVodeSetMaxNumSteps(cv_.mem, left), "CVodeSetMaxNumSteps");
+    double t_ret = t_;
+    const int flag = CVode(cv_.mem, tout, cv_.y, &t_ret, CV_NORMAL);
+    if (flag == CV_ROOT_RETURN) {
+      t_ = t_ret;
+      if (!handle_root(t_)) break;
+      continue;
+    }
+    if (flag == CV_SUCCESS || flag == CV_TSTOP_RETURN) {
+      t_ = t_ret;
+      sample(t_, state());
+      if (flag == CV_TSTOP_RETURN || t_ >= o_.t_max_s) break;
+      ++k_out;
+      continue;
+    }
+    // CVODE gave up.
+    std::ostringstream m;
+    if (flag == CV_TOO_MUCH_WORK) {
+      m << "too many steps: " << o_.max_steps << " (ReferenceOptions::max_steps) used by t = " << t_ret << " s";
+    } else {
+      char* name = CVodeGetReturnFlagName(flag);
+      m << "CVODE failed at t = " << t_ret << " s: " << (name ? name : "?");
+      std::free(name);
+      if (!problem_.nan_detail.empty()) m << "; " << problem_.nan_detail;
+      if (!last_error_.empty()) m << " (" << last_error_ << ")";
+    }
+    t_ = t_ret;
+    fail(m.str());
+  }
+  add_segment_stats();
+
+  // 4. The end of the throw.
+  renormalise();
+  const RigidState s_end = state();
+  if (log_.in_contact()) log_.end(t_, s_end, energy(s_end), false);
+  if (o_.record_trajectory && (r_.trajectory.empty() || r_.trajectory.back().t_s < t_)) sample(t_, s_end);
+  finish_result(r_, log_, s_end, t_);
+  std::ostringstream extra;
+  if (resynced_ > 0) extra << "; " << resynced_ << " vertex crossings missed by root finding (fixed from the state)";
+  if (max_q_drift_ > kReportedQuaternionDrift) extra << "; quaternion norm drifted by up to " << max_q_drift_ << " between restarts";
+  r_.outcome_detail += extra.str();
+}
+
+}  // namespace
+
+ThrowResult run_reference(const Stone& stone, const Environment& env, const RigidState& initial,
+                          const ReferenceOptions& options) {
+  const auto clock_start = std::chrono::steady_clock::now();
+  ThrowResult r;
+  r.solver = describe(options);
+  try {
+    ReferenceSolve solve(stone, env, options, r);
+    solve.run(initial);
+  } catch (const CvodeFailure& e) {
+    r.outcome = Outcome::failed;
+    r.outcome_detail = e.message;
+  }
+  r.stats.cpu_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  return r;
+}
+
+}  // namespace stoneskip

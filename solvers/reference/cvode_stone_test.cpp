@@ -1,0 +1,371 @@
+// The CVODE reference solution (solvers/reference/cvode_stone.hpp) against closed forms: a
+// ballistic torque-free symmetric top, a flat plate dropped flat onto still water (free fall, then
+// m dw/dt = m g − C_w ρ_w S w²), the located surface-crossing times of that plate; its own
+// convergence in rtol on a bouncing throw; agreement with an independent integrator (fine RK4 of
+// the real-time stepper); and clean failures (NaN, too many steps, chattering).
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <numbers>
+
+#include "model/stone/throw.hpp"
+#include "solvers/realtime/stone_stepper.hpp"
+#include "solvers/reference/cvode_stone.hpp"
+
+using namespace stoneskip;
+
+namespace {
+
+Stone prism_stone(double radius_m, double thickness_m, int segments, double density_kg_m3) {
+  const Mesh m = make_prism(radius_m, thickness_m, segments);
+  return make_stone(m, mass_properties_from_density(m, density_kg_m3), 0, "test prism");
+}
+
+// The typical throw of the benchmarks: 3 cm prism, 6 mm, 8 m/s, β = α = 10°, 10 rev/s, 10 cm.
+// In the paper convention it bounces twice (spec §3: the reversed torque holds the attitude).
+const Stone& typical_stone() {
+  static const Stone s = prism_stone(0.03, 0.006, 11, 2500);
+  return s;
+}
+RigidState typical_throw() {
+  ThrowParameters p;
+  p.speed_m_s = 8;
+  p.path_angle_deg = 10;
+  p.attack_angle_deg = 10;
+  p.spin_rev_s = 10;
+  p.height_m = 0.1;
+  return initial_state(typical_stone(), p);
+}
+
+// Exact solution with no fluid at all: the centre of mass falls ballistically and the stone, a
+// symmetric top (I_xx = I_yy = I1, I_zz = I3 in the body frame), precesses torque-free:
+//   R(t) = exp(t [L/I1]×) R0 exp(t μ [e3]×),   μ = (1/I3 − 1/I1) L·n,  L and L·n constant,
+// since then dR/dt = [L/I1 + μ R e3]× R = [ω]× R with ω = I_world⁻¹ L (spec §1.3).
+class BallisticSymmetricTop {
+ public:
+  BallisticSymmetricTop(const Stone& s, const RigidState& s0, double g) : s0_(s0), g_(g) {
+    i1_ = s.inertia_body_kg_m2(0, 0);
+    const double i3 = s.inertia_body_kg_m2(2, 2);
+    const Vec3 n0 = s0.orientation * Vec3::UnitZ();
+    mu_ = (1 / i3 - 1 / i1_) * s0.angular_momentum_kg_m2_s.dot(n0);
+  }
+  Vec3 position(double t) const { return s0_.position_m + t * s0_.velocity_m_s - 0.5 * g_ * t * t * Vec3::UnitZ(); }
+  Vec3 velocity(double t) const { return s0_.velocity_m_s - g_ * t * Vec3::UnitZ(); }
+  Mat3 rotation(double t) const {
+    const Vec3& L = s0_.angular_momentum_kg_m2_s;
+    const Mat3 A = Eigen::AngleAxisd(t * L.norm() / i1_, L.normalized()).toRotationMatrix();
+    const Mat3 B = Eigen::AngleAxisd(t * mu_, Vec3::UnitZ()).toRotationMatrix();
+    return A * s0_.orientation.toRotationMatrix() * B;
+  }
+
+ private:
+  RigidState s0_;
+  double g_, i1_ = 0, mu_ = 0;
+};
+
+// Exact solution of a flat plate (regular N-gon prism, bottom face area S = (N/2) R² sin(2π/N))
+// released at rest and level, bottom face a height H above still water, no air:
+//   free fall to the surface:  t1 = √(2H/g), w0 = g t1 (w = downward speed);
+//   bottom face wetted, top dry (rim faces move along themselves, u = 0, no load):
+//     m dw/dt = m g − k w²,  k = C_w ρ_w S,  terminal speed w_t = √(m g / k),  τ = t − t1:
+//     w0 > w_t:  w = w_t coth(g τ / w_t + c), c = artanh(w_t / w0); drop = (w_t²/g) ln(sinh(gτ/w_t + c)/sinh c)
+//     w0 < w_t:  w = w_t tanh(g τ / w_t + c), c = artanh(w0 / w_t); drop = (w_t²/g) ln(cosh(gτ/w_t + c)/cosh c)
+//   sinks (top face at the surface) when the drop since t1 reaches the thickness h.
+class FlatPlateDrop {
+ public:
+  FlatPlateDrop(double radius_m, int segments, double thickness_m, double mass_kg, double height_m, const Environment& env)
+      : h_(thickness_m), H_(height_m), g_(env.gravity_m_s2) {
+    const double S = 0.5 * segments * radius_m * radius_m * std::sin(2 * std::numbers::pi / segments);
+    const double k = env.water_coefficient * env.water_density_kg_m3 * S;
+    wt_ = std::sqrt(mass_kg * g_ / k);
+    t1_ = std::sqrt(2 * H_ / g_);
+    const double w0 = g_ * t1_;
+    decelerating_ = w0 > wt_;
+    c_ = decelerating_ ? std::atanh(wt_ / w0) : std::atanh(w0 / wt_);
+  }
+  bool decelerating() const { return decelerating_; }
+  double entry_time() const { return t1_; }
+  // Downward speed and distance fallen since release, valid until sink_time().
+  double speed(double t) const {
+    if (t <= t1_) return g_ * t;
+    const double a = g_ * (t - t1_) / wt_ + c_;
+    return decelerating_ ? wt_ / std::tanh(a) : wt_ * std::tanh(a);
+  }
+  double drop(double t) const {
+    if (t <= t1_) return 0.5 * g_ * t * t;
+    const double a = g_ * (t - t1_) / wt_ + c_;
+    const double scale = wt_ * wt_ / g_;
+    return H_ + scale * (decelerating_ ? std::log(std::sinh(a) / std::sinh(c_)) : std::log(std::cosh(a) / std::cosh(c_)));
+  }
+  double sink_time() const {
+    const double e = std::exp(g_ * h_ / (wt_ * wt_));
+    const double a = decelerating_ ? std::asinh(std::sinh(c_) * e) : std::acosh(std::cosh(c_) * e);
+    return t1_ + (a - c_) * wt_ / g_;
+  }
+
+ private:
+  double h_, H_, g_, wt_ = 0, t1_ = 0, c_ = 0;
+  bool decelerating_ = false;
+};
+
+std::string name(Outcome o) { return to_string(o); }
+
+// The sampled position at time t (the samples sit exactly on k·output_dt).
+Vec3 position_at(const ThrowResult& r, double t_s) {
+  for (const auto& p : r.trajectory) {
+    if (std::abs(p.t_s - t_s) < 1e-12) return p.state.position_m;
+  }
+  BOOST_FAIL("no trajectory sample at t = " << t_s);
+  return Vec3::Zero();
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(cvode_stone)
+
+BOOST_AUTO_TEST_CASE(free_flight_matches_the_ballistic_symmetric_top_closed_form) {
+  // Oracle: BallisticSymmetricTop (exact). The tolerance asked of the reference is 1e-8 relative;
+  // at rtol 1e-12 CVODE's global error over 60 rad of spin is ~1e-10.
+  constexpr double kRelative = 1e-8;
+  const Stone& stone = typical_stone();
+  BOOST_TEST_REQUIRE(std::abs(stone.inertia_body_kg_m2(0, 0) - stone.inertia_body_kg_m2(1, 1)) <=
+                     1e-12 * stone.inertia_body_kg_m2(0, 0));  // a regular prism is a symmetric top
+  Environment env;
+  env.air_density_kg_m3 = 0;
+  RigidState s0;
+  s0.position_m = Vec3(0.5, -0.2, 100);  // never reaches the water within t_max
+  s0.velocity_m_s = Vec3(8, 1, 3);
+  s0.orientation = Quat(Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()));
+  set_body_angular_velocity(stone, s0, Vec3(3, -2, 60));
+  ReferenceOptions o;
+  o.rtol = 1e-12;
+  o.atol = 1e-14;
+  o.t_max_s = 1;
+  o.output_dt_s = 0.01;
+  const ThrowResult r = run_reference(stone, env, s0, o);
+  BOOST_TEST_REQUIRE(name(r.outcome) == name(Outcome::time_limit));
+  BOOST_TEST(r.contacts.empty());
+  BOOST_TEST(std::abs(r.end_time_s - o.t_max_s) <= 1e-14);
+  BOOST_TEST_REQUIRE(r.trajectory.size() == 101u);
+  const BallisticSymmetricTop exact(stone, s0, env.gravity_m_s2);
+  double worst_x = 0, worst_v = 0, worst_R = 0, worst_L = 0;
+  for (const auto& p : r.trajectory) {
+    worst_x = std::max(worst_x, (p.state.position_m - exact.position(p.t_s)).norm() / exact.position(p.t_s).norm());
+    worst_v = std::max(worst_v, (p.state.velocity_m_s - exact.velocity(p.t_s)).norm() / exact.velocity(p.t_s).norm());
+    worst_R = std::max(worst_R, (p.state.orientation.toRotationMatrix() - exact.rotation(p.t_s)).cwiseAbs().maxCoeff());
+    worst_L = std::max(worst_L, (p.state.angular_momentum_kg_m2_s - s0.angular_momentum_kg_m2_s).norm() /
+                                    s0.angular_momentum_kg_m2_s.norm());
+  }
+  BOOST_TEST_MESSAGE("ballistic relative errors: x " << worst_x << ", v " << worst_v << ", R " << worst_R);
+  BOOST_TEST(worst_x <= kRelative);
+  BOOST_TEST(worst_v <= kRelative);
+  BOOST_TEST(worst_R <= kRelative);
+  BOOST_TEST(worst_L <= kRelative);
+}
+
+BOOST_AUTO_TEST_CASE(a_flat_plate_dropped_flat_follows_the_quadratic_drag_closed_form) {
+  // Oracle: FlatPlateDrop (exact, both the decelerating coth branch, H = 5 cm, and the
+  // accelerating tanh branch, H = 2 mm), in both conventions (the same law for a face advancing
+  // into the water without spin). Tolerance 1e-8 relative as asked; the solve gives ~1e-10.
+  // Event times: the located contact start (first vertex under) and sinking (last vertex under)
+  // against t1 and the closed-form sink time, to 1e-9 s (root location is at ~1e-13 s).
+  constexpr double kRelative = 1e-8;
+  constexpr double kEventTime_s = 1e-9;
+  const double R = 0.03, h = 0.006;
+  const int N = 64;
+  const Stone stone = prism_stone(R, h, N, 2500);
+  for (Convention convention : {Convention::physical, Convention::paper}) {
+    for (double H : {0.05, 0.002}) {
+      BOOST_TEST_CONTEXT(to_string(convention) << ", dropped from H = " << H << " m") {
+        Environment env;
+        env.convention = convention;
+        env.air_density_kg_m3 = 0;
+        RigidState s0;
+        s0.position_m = Vec3(0.1, -0.2, h / 2 + H);
+        ReferenceOptions o;
+        o.rtol = 1e-12;
+        o.atol = 1e-15;
+        o.t_max_s = 1;
+        o.output_dt_s = 2e-4;
+        const ThrowResult r = run_reference(stone, env, s0, o);
+        const FlatPlateDrop exact(R, N, h, stone.mass.mass_kg, H, env);
+        BOOST_TEST(exact.decelerating() == (H > 0.01));
+        BOOST_TEST_REQUIRE(name(r.outcome) == name(Outcome::sank));
+        BOOST_TEST_REQUIRE(r.contacts.size() == 1u);
+        BOOST_TEST(std::abs(r.contacts[0].start_s - exact.entry_time()) <= kEventTime_s);
+        BOOST_TEST(std::abs(r.contacts[0].end_s - exact.sink_time()) <= kEventTime_s);
+        BOOST_TEST(!r.contacts[0].bounced);
+        int wetted_samples = 0;
+        double worst_w = 0, worst_drop = 0;
+        for (const auto& p : r.trajectory) {
+          if (p.t_s > exact.entry_time()) ++wetted_samples;
+          worst_w = std::max(worst_w, std::abs(-p.state.velocity_m_s.z() - exact.speed(p.t_s)) / std::max(exact.speed(p.t_s), 1e-3));
+          const double drop = s0.position_m.z() - p.state.position_m.z();
+          // Relative to the drop, or to H during the first instants of the fall (where the drop is
+          // a few ulps of the height and only its absolute error means anything).
+          worst_drop = std::max(worst_drop, std::abs(drop - exact.drop(p.t_s)) / std::max(exact.drop(p.t_s), H));
+        }
+        BOOST_TEST(wetted_samples >= 20);
+        BOOST_TEST_MESSAGE("worst relative errors: speed " << worst_w << ", drop " << worst_drop << "; event times "
+                           << r.contacts[0].start_s - exact.entry_time() << " s, " << r.contacts[0].end_s - exact.sink_time() << " s");
+        BOOST_TEST(worst_w <= kRelative);
+        BOOST_TEST(worst_drop <= kRelative);
+      }
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(the_error_falls_at_least_a_hundredfold_from_rtol_1e6_to_1e10_on_a_bouncing_throw) {
+  // Oracle: the same solver at rtol = 1e-12 (tolerance proportionality). The throw bounces in the
+  // paper convention; the error is the position 0.5 s after release, in flight after the first
+  // bounce, so it carries the located contact. atol scales with rtol (atol = 1e-3 rtol).
+  // Measured ratios are ~10⁴ (BDF) and ~10³ (Adams); 100 is the bar.
+  constexpr double kMinimumGain = 100;
+  Environment env;
+  env.convention = Convention::paper;
+  const RigidState s0 = typical_throw();
+  const double T = 0.5;
+  for (ReferenceMethod method : {ReferenceMethod::bdf, ReferenceMethod::adams}) {
+    BOOST_TEST_CONTEXT(to_string(method)) {
+      auto run = [&](double rtol) {
+        ReferenceOptions o;
+        o.method = method;
+        o.rtol = rtol;
+        o.atol = 1e-3 * rtol;
+        o.t_max_s = T;
+        return run_reference(typical_stone(), env, s0, o);
+      };
+      const ThrowResult fine = run(1e-12), loose = run(1e-6), tight = run(1e-10);
+      BOOST_TEST_REQUIRE(fine.bounces == 1);  // the first bounce lies before T
+      BOOST_TEST_REQUIRE(loose.bounces == 1);
+      BOOST_TEST_REQUIRE(tight.bounces == 1);
+      const double e_loose = (position_at(loose, T) - position_at(fine, T)).norm();
+      const double e_tight = (position_at(tight, T) - position_at(fine, T)).norm();
+      BOOST_TEST_MESSAGE(to_string(method) << ": position error " << e_loose << " m at rtol 1e-6, " << e_tight
+                                           << " m at rtol 1e-10");
+      BOOST_TEST(e_loose >= kMinimumGain * e_tight);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(the_first_contact_agrees_with_a_fine_rk4_run_of_the_realtime_stepper) {
+  // Oracle: an independent integration of the same right-hand side: the real-time stepper's RK4 at
+  // dt = 3 µs (global error ~dt⁴), which locates a crossing by linear interpolation of the deepest
+  // depth within a step (error ~ a dt² / |ḋ| ≲ 1e-9 s). Sinking is reported by the stepper at the
+  // end of its step, so the sink time is compared to within one step.
+  constexpr double kStartTime_s = 1e-8;
+  constexpr double kSpeedRelative = 1e-7;
+  const double dt = 3e-6;
+  for (Convention convention : {Convention::paper, Convention::physical}) {
+    BOOST_TEST_CONTEXT(to_string(convention)) {
+      Environment env;
+      env.convention = convention;
+      ReferenceOptions o;
+      o.rtol = 1e-12;
+      o.atol = 1e-15;
+      o.t_max_s = 0.08;
+      const ThrowResult ref = run_reference(typical_stone(), env, typical_throw(), o);
+      RealtimeOptions ro;
+      ro.scheme = Scheme::rk4;
+      ro.dt_s = dt;
+      ro.contact_dt_s = dt;
+      ro.t_max_s = 0.08;
+      ro.record_trajectory = false;
+      const ThrowResult rk4 = run_realtime(typical_stone(), env, typical_throw(), ro);
+      BOOST_TEST_REQUIRE(!ref.contacts.empty());
+      BOOST_TEST_REQUIRE(!rk4.contacts.empty());
+      const ContactRecord &a = ref.contacts[0], &b = rk4.contacts[0];
+      BOOST_TEST(std::abs(a.start_s - b.start_s) <= kStartTime_s);
+      BOOST_TEST(a.bounced == b.bounced);
+      if (a.bounced) {  // paper convention: a bounce, both ends located by interpolation
+        BOOST_TEST(std::abs(a.end_s - b.end_s) <= kStartTime_s);
+        BOOST_TEST(std::abs(a.exit_speed_m_s - b.exit_speed_m_s) <= kSpeedRelative * a.exit_speed_m_s);
+      } else {  // physical convention: sinks during the first contact
+        BOOST_TEST(name(ref.outcome) == name(Outcome::sank));
+        BOOST_TEST(name(rk4.outcome) == name(Outcome::sank));
+        BOOST_TEST(b.end_s - a.end_s >= -1e-12);
+        BOOST_TEST(b.end_s - a.end_s <= dt);
+      }
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(locating_the_face_switches_adds_restarts_but_does_not_move_the_solution) {
+  // Oracle: the same solve without the switch events (locate_switches = false): both integrate
+  // the same ODE, so at rtol 1e-12 they agree far below the 1e-9 s event-time bar; the located
+  // run must have restarted at some switches (more segments), which shows they are found.
+  constexpr double kEventTime_s = 1e-9;
+  Environment env;  // physical: the face switch of Eq. 2 exists
+  ReferenceOptions o;
+  o.rtol = 1e-12;
+  o.atol = 1e-15;
+  o.t_max_s = 1;
+  const ThrowResult located = run_reference(typical_stone(), env, typical_throw(), o);
+  o.locate_switches = false;
+  const ThrowResult plain = run_reference(typical_stone(), env, typical_throw(), o);
+  BOOST_TEST_REQUIRE(name(located.outcome) == name(Outcome::sank));
+  BOOST_TEST_REQUIRE(name(plain.outcome) == name(Outcome::sank));
+  BOOST_TEST(located.stats.segments > plain.stats.segments);
+  BOOST_TEST(std::abs(located.end_time_s - plain.end_time_s) <= kEventTime_s);
+  BOOST_TEST(std::abs(located.contacts[0].start_s - plain.contacts[0].start_s) <= kEventTime_s);
+}
+
+BOOST_AUTO_TEST_CASE(a_nan_initial_state_fails_cleanly) {
+  // Oracle: the contract of run_reference: outcome failed with a reason, no contacts, no hang.
+  RigidState s0 = typical_throw();
+  s0.velocity_m_s.y() = std::nan("");
+  const ThrowResult r = run_reference(typical_stone(), Environment{}, s0, ReferenceOptions{});
+  BOOST_TEST(name(r.outcome) == name(Outcome::failed));
+  BOOST_TEST(r.outcome_detail.find("not finite") != std::string::npos, r.outcome_detail);
+  BOOST_TEST(r.contacts.empty());
+}
+
+BOOST_AUTO_TEST_CASE(a_nan_force_at_the_first_contact_fails_cleanly_there) {
+  // Oracle: with a NaN water density the right-hand side turns NaN exactly when the first vertex
+  // goes under, which the free-flight closed form dates: the solve must stop there, saying why.
+  Environment env;
+  env.water_density_kg_m3 = std::nan("");
+  ReferenceOptions o;
+  o.t_max_s = 1;
+  const ThrowResult r = run_reference(typical_stone(), env, typical_throw(), o);
+  BOOST_TEST(name(r.outcome) == name(Outcome::failed));
+  BOOST_TEST(r.outcome_detail.find("NaN") != std::string::npos, r.outcome_detail);
+  BOOST_TEST(r.end_time_s < 0.06);  // the first contact starts at ~0.0559 s (no bounce before)
+}
+
+BOOST_AUTO_TEST_CASE(too_many_steps_fail_clearly) {
+  // Oracle: the contract: max_steps bounds the whole throw (summed over segments).
+  ReferenceOptions o;
+  o.max_steps = 200;
+  o.t_max_s = 1;
+  const ThrowResult r = run_reference(typical_stone(), Environment{}, typical_throw(), o);
+  BOOST_TEST(name(r.outcome) == name(Outcome::failed));
+  BOOST_TEST(r.outcome_detail.find("too many steps") != std::string::npos, r.outcome_detail);
+  BOOST_TEST(r.stats.steps <= o.max_steps);
+}
+
+BOOST_AUTO_TEST_CASE(an_event_burst_beyond_the_cap_fails_instead_of_looping) {
+  // Oracle: the contract of max_events_per_ms: with a cap of 2 events per ms, the first contact
+  // of the typical throw (dozens of vertex crossings within ~18 ms) must fail, naming the cap.
+  ReferenceOptions o;
+  o.max_events_per_ms = 2;
+  o.t_max_s = 1;
+  Environment env;
+  env.convention = Convention::paper;
+  const ThrowResult r = run_reference(typical_stone(), env, typical_throw(), o);
+  BOOST_TEST(name(r.outcome) == name(Outcome::failed));
+  BOOST_TEST(r.outcome_detail.find("max_events_per_ms") != std::string::npos, r.outcome_detail);
+}
+
+BOOST_AUTO_TEST_CASE(reference_methods_round_trip_through_their_names) {
+  // Oracle: to_string and parse_reference_method are inverse; unknown names are refused.
+  for (ReferenceMethod m : {ReferenceMethod::bdf, ReferenceMethod::adams}) {
+    ReferenceMethod back = m == ReferenceMethod::bdf ? ReferenceMethod::adams : ReferenceMethod::bdf;
+    BOOST_TEST(parse_reference_method(to_string(m), back));
+    BOOST_TEST((back == m));
+  }
+  ReferenceMethod out;
+  BOOST_TEST(!parse_reference_method("rk45", out));
+}
+
+BOOST_AUTO_TEST_SUITE_END()

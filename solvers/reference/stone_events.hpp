@@ -1,0 +1,79 @@
+#pragma once
+// The event (root) functions that split a throw into smooth segments for the CVODE reference
+// (still water η = 0 only: a moving height field would make every root function time-dependent
+// through the surface, which this reference does not support).
+//
+// The right-hand side of spec §1.3–1.6 is smooth except where
+//   (a) a vertex crosses the surface: the clipped polygons change shape (§1.4 step 2), so the
+//       force is continuous but its derivative jumps (for a flat face reaching the water, the
+//       wetted area itself jumps). Root function g_j = z_j, vertex j's world height.
+//   (b) physical convention only: a wet face's normal velocity u_i = v_i·n_i changes sign; the
+//       face force −C_w ρ_w max(u_i, 0)² S_i n_i (§1.4 step 4, the switch of Eq. 2) is C¹ with
+//       a jump in its second derivative. Root function g = u_i at the clipped centroid, live
+//       only while the face has a vertex under water. In the paper convention every wet face
+//       pushes with u_i² whatever its sign — smooth in u_i — so there is nothing to locate.
+//   (c) physical convention with air: the disk's normal velocity u = v·n_d changes sign; the
+//       air force −C_a ρ_a u|u| S_d n_d (§1.5) is C¹ there. In the paper convention u² is smooth.
+// Between events the set of submerged vertices is fixed, so each live root function is smooth.
+//
+// Which vertices are under water is kept as a discrete mode, updated from the directions CVODE
+// reports at a root, not from the sign of z at the restart point (which sits at ~0): this is what
+// keeps a restart from finding the same root again. Each root function is watched in one
+// direction only (CVodeSetRootDirection): a submerged vertex for rising z, a dry one for falling.
+#include <vector>
+
+#include "model/stone/rigid_body.hpp"
+
+namespace stoneskip {
+
+struct EventChange {
+  int submerged_before = 0, submerged_after = 0;
+  int vertices_under = 0, vertices_out = 0;  // crossings in this event
+  int face_switches = 0;                     // (b) events
+  int air_switches = 0;                      // (c) events
+  int resynced_vertices = 0;  // mode corrected from the state: a crossing root finding missed
+  int deepest_new_vertex = -1;               // the deepest vertex that went under, or −1
+};
+
+class StoneEvents {
+ public:
+  StoneEvents(const Stone& stone, const Environment& env, bool locate_switches);
+
+  int count() const { return static_cast<int>(directions_.size()); }
+  int vertex_count() const { return nv_; }
+
+  // Sets the mode from a state: vertex j is under water where z_j < 0 (the start of a throw).
+  void reset(const RigidState& s);
+  // Root functions at y (kStateSize doubles) into g (count() doubles). False when a value is not
+  // finite (the caller fails the solve).
+  bool evaluate(const double* y, double* g) const;
+  // Updates the mode at a root: found[k] = +1 / −1 where root k was crossed rising / falling.
+  // s is the (renormalised) state at the root.
+  EventChange apply(const int* found, const RigidState& s);
+  // Directions to watch for the next segment (for CVodeSetRootDirection).
+  int* directions() { return directions_.data(); }
+
+  int submerged_vertices() const;
+  bool vertex_under(int j) const { return under_[j] != 0; }
+
+  // Which root function is which: [0, nv) vertices, then faces (b), then the air switch (c).
+  enum class Kind { vertex, face, air };
+  Kind kind(int k) const;
+
+ private:
+  double face_normal_velocity(int i, const RigidState& s, const Mat3& R, const Vec3& omega) const;
+  double air_normal_velocity(const RigidState& s, const Mat3& R) const;
+  double velocity_scale(const RigidState& s, const Vec3& omega) const;
+  bool face_live(int i) const;
+  void refresh_directions(const RigidState& s, const std::vector<int>& sign_hint);
+
+  const Stone& stone_;
+  const Environment& env_;
+  int nv_ = 0, nf_ = 0;  // nf_ = 0 when face switches are not located
+  bool air_ = false;
+  std::vector<char> under_;      // mode: vertex under water
+  std::vector<int> sign_;        // faces then air: +1 / −1 the sign in this segment, 0 unknown
+  std::vector<int> directions_;  // per root function
+};
+
+}  // namespace stoneskip
