@@ -30,7 +30,7 @@ double richardson_extrapolate(double phi_fine, double phi_coarse, double ratio, 
 enum class OrderVerdict {
   converges_at_expected_order,  // the fit's interval lies within tolerance of the expected order
   converges_at_other_order,     // the error falls, but not at the expected order
-  does_not_converge,            // the error does not fall with h (slope ≤ minimum_order)
+  does_not_converge,            // the error does not fall with h (slope ≤ minimum_order, or interval reaches 0)
   insufficient_data,            // fewer than 2 usable points
 };
 const char* to_string(OrderVerdict v);

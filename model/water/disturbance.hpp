@@ -1,0 +1,30 @@
+#pragma once
+// Initial disturbances of a water surface, sampled at the cell points x_i = i d, y_j = j d
+// (i < nx, j < ny) of a grid whose periodic copies tile the plane with period nx d × ny d.
+// A Gaussian and a ring are summed over the neighbouring periodic images, so on a periodic grid
+// they are smooth and periodic; on other boundaries the images are negligible when the bump is
+// well inside the domain.
+#include <string>
+#include <vector>
+
+namespace stoneskip {
+
+enum class DisturbanceKind { gaussian, plane_wave, ring, impulse };
+const char* to_string(DisturbanceKind k);
+bool parse_disturbance_kind(const std::string& s, DisturbanceKind& out);
+
+struct Disturbance {
+  DisturbanceKind kind = DisturbanceKind::gaussian;
+  double amplitude_m = 0.01;
+  double width_m = 0.1;        // gaussian: e-folding radius, z = A exp(−r²/w²); ring: half-width
+  double x_m = 0, y_m = 0;     // centre (gaussian, ring, impulse)
+  double radius_m = 0.2;       // ring: z = A exp(−(r − R)²/w²)
+  double angle_deg = 0;        // plane_wave: direction of k from the x axis
+  double wavelength_m = 0.25;  // plane_wave: z = A cos(k·x), |k| = 2π/λ
+};
+
+// Fills z (size nx·ny, row-major with x fastest) with the disturbance. The initial velocity of
+// every kind is zero (a plane wave therefore starts as a standing wave).
+void sample_disturbance(const Disturbance& d, int nx, int ny, double cell_m, std::vector<double>& z);
+
+}  // namespace stoneskip

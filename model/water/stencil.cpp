@@ -1,0 +1,39 @@
+#include "model/water/stencil.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace stoneskip {
+
+double Stencil::symbol(double a, double b) const {
+  const double ca = std::cos(a), cb = std::cos(b);
+  return centre + 2 * orth * (ca + cb) + 4 * diag * ca * cb;
+}
+
+Stencil stencil_family(double gamma, std::string name) {
+  // spec §2.2: weights centre −4(1 − γ) − 2γ, orth 1 − γ, diag γ/2.
+  return Stencil{std::move(name), -4 * (1 - gamma) - 2 * gamma, 1 - gamma, gamma / 2};
+}
+
+const std::vector<std::string>& stencil_names() {
+  static const std::vector<std::string> names{"five_point", "nine_point_half", "nine_point_isotropic", "paper_eq11"};
+  return names;
+}
+
+bool is_stencil_name(const std::string& name) {
+  for (const auto& n : stencil_names())
+    if (n == name) return true;
+  return false;
+}
+
+Stencil named_stencil(const std::string& name) {
+  if (name == "five_point") return stencil_family(0.0, name);                // Lee & Baek 2013, Fig. 4(a)
+  if (name == "nine_point_half") return stencil_family(0.5, name);           // Eq. 10 divided by 2
+  if (name == "nine_point_isotropic") return stencil_family(1.0 / 3, name);  // Patra & Karttunen 2006
+  // Lee & Baek 2013, Eq. 11 exactly as printed: centre −10/3, edges 1/2, corners 1/4. Kept as
+  // printed (not repaired): its weights sum to −1/3, which the consistency analysis reports.
+  if (name == "paper_eq11") return Stencil{name, -10.0 / 3, 0.5, 0.25};
+  throw std::invalid_argument("unknown stencil '" + name + "'");
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,31 @@
+#pragma once
+// A 3×3 Laplacian stencil as data: L[z] = (1/d²)[centre·z + orth·Σ_orth + diag·Σ_diag]
+// (spec §2.2), Σ_orth the four edge neighbours, Σ_diag the four corner neighbours. The four
+// named stencils of the spec are built from their weights; a case file may define its own.
+#include <string>
+#include <vector>
+
+namespace stoneskip {
+
+struct Stencil {
+  std::string name;
+  double centre = -4;  // weights × 1/d²
+  double orth = 1;
+  double diag = 0;
+
+  double weight_sum() const { return centre + 4 * orth + 4 * diag; }
+  // d² × the stencil's eigenvalue on the Fourier mode e^{i(a x + b y)/d}, a = kx d, b = ky d:
+  // centre + 2 orth (cos a + cos b) + 4 diag cos a cos b. (The continuum's is −(a² + b²).)
+  double symbol(double a, double b) const;
+};
+
+// The family of spec §2.2: (1 − γ)(Σ_orth − 4z) + (γ/2)(Σ_diag − 4z).
+Stencil stencil_family(double gamma, std::string name);
+
+// "five_point" (γ = 0, Figure 4a), "nine_point_half" (γ = 1/2, half of Eq. 10),
+// "nine_point_isotropic" (γ = 1/3, Patra & Karttunen 2006), "paper_eq11" (Eq. 11 as printed).
+const std::vector<std::string>& stencil_names();
+bool is_stencil_name(const std::string& name);
+Stencil named_stencil(const std::string& name);  // throws std::invalid_argument for other names
+
+}  // namespace stoneskip

@@ -1,0 +1,84 @@
+#include "solvers/spectral/spectral_wave.hpp"
+
+#include <fftw3.h>
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include "solvers/spectral/damped_mode.hpp"
+
+namespace stoneskip {
+
+struct SpectralWave::Plans {
+  double* real = nullptr;
+  fftw_complex* spec = nullptr;
+  fftw_plan forward = nullptr, backward = nullptr;
+  Plans(int nx, int ny) {
+    const int nxc = nx / 2 + 1;
+    real = fftw_alloc_real(static_cast<std::size_t>(nx) * ny);
+    spec = fftw_alloc_complex(static_cast<std::size_t>(nxc) * ny);
+    // FFTW's 2-D arrays are row-major with the last index fastest: n0 = ny, n1 = nx.
+    forward = fftw_plan_dft_r2c_2d(ny, nx, real, spec, FFTW_ESTIMATE);
+    backward = fftw_plan_dft_c2r_2d(ny, nx, spec, real, FFTW_ESTIMATE);
+    if (!real || !spec || !forward || !backward) throw std::runtime_error("FFTW: could not create plans");
+  }
+  ~Plans() {
+    if (forward) fftw_destroy_plan(forward);
+    if (backward) fftw_destroy_plan(backward);
+    fftw_free(real);
+    fftw_free(spec);
+  }
+};
+
+SpectralWave::SpectralWave(const SpectralWaveOptions& options)
+    : options_(options), nxc_(options.nx / 2 + 1), plans_(std::make_unique<Plans>(options.nx, options.ny)) {
+  const int nx = options.nx, ny = options.ny;
+  const double d = options.cell_m, c2 = options.wave_speed_m_s * options.wave_speed_m_s;
+  lambda_.resize(static_cast<std::size_t>(nxc_) * ny);
+  for (int j = 0; j < ny; ++j) {
+    const int mj = j <= ny / 2 ? j : j - ny;  // signed wave number index
+    for (int i = 0; i < nxc_; ++i) {
+      const double kx = 2 * M_PI * i / (nx * d), ky = 2 * M_PI * mj / (ny * d);
+      double lam = options.symbol == SpectralSymbol::continuum ? c2 * (kx * kx + ky * ky)
+                                                               : -c2 * options.stencil.symbol(kx * d, ky * d) / (d * d);
+      lambda_[static_cast<std::size_t>(j) * nxc_ + i] = lam;
+    }
+  }
+  z0_hat_.assign(lambda_.size(), 0.0);
+  v0_hat_.assign(lambda_.size(), 0.0);
+}
+
+SpectralWave::~SpectralWave() = default;
+
+double SpectralWave::lambda(int i, int j) const { return lambda_[static_cast<std::size_t>(j) * nxc_ + i]; }
+
+void SpectralWave::set_initial(const std::vector<double>& z0, const std::vector<double>& v0) {
+  const std::size_t n = static_cast<std::size_t>(options_.nx) * options_.ny;
+  if (z0.size() != n || (!v0.empty() && v0.size() != n)) throw std::invalid_argument("SpectralWave: wrong field size");
+  auto transform = [&](const std::vector<double>& in, std::vector<std::complex<double>>& out) {
+    std::memcpy(plans_->real, in.data(), n * sizeof(double));
+    fftw_execute(plans_->forward);
+    std::memcpy(reinterpret_cast<void*>(out.data()), plans_->spec, out.size() * sizeof(fftw_complex));
+  };
+  transform(z0, z0_hat_);
+  if (v0.empty())
+    std::fill(v0_hat_.begin(), v0_hat_.end(), 0.0);
+  else
+    transform(v0, v0_hat_);
+}
+
+void SpectralWave::evaluate(double t_s, std::vector<double>& z) {
+  const std::size_t n = static_cast<std::size_t>(options_.nx) * options_.ny;
+  auto* spec = reinterpret_cast<std::complex<double>*>(plans_->spec);
+  for (std::size_t k = 0; k < lambda_.size(); ++k) {
+    DampedModeFactors f = damped_mode(lambda_[k], options_.damping_per_s, t_s);
+    spec[k] = f.gz * z0_hat_[k] + f.gv * v0_hat_[k];
+  }
+  fftw_execute(plans_->backward);  // unnormalised: divide by nx·ny
+  z.resize(n);
+  const double scale = 1.0 / static_cast<double>(n);
+  for (std::size_t k = 0; k < n; ++k) z[k] = plans_->real[k] * scale;
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,109 @@
+#include "tools/capture/capture_format.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+#include "tools/capture/capture_text.hpp"
+#include "tools/capture/evemu_reader.hpp"
+#include "tools/capture/gesture_reader.hpp"
+#include "tools/capture/report_log.hpp"
+#include "tools/capture/trace_csv.hpp"
+#include "tools/io/atomic_file.hpp"
+#include "tools/io/input_error.hpp"
+
+namespace stoneskip {
+
+const std::vector<std::string>& capture_format_names() {
+  static const std::vector<std::string> names{"trace_csv", "report_log", "evemu", "gesture"};
+  return names;
+}
+
+namespace {
+bool is_hex(std::string_view f) {
+  if (f.empty()) return false;
+  for (char c : f)
+    if (!std::isxdigit(static_cast<unsigned char>(c))) return false;
+  return true;
+}
+
+// Looks at up to the first 50 meaningful lines.
+std::string detect(const std::string& text) {
+  std::size_t begin = 0;
+  int looked = 0;
+  while (begin < text.size() && looked < 50) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string::npos) end = text.size();
+    const std::string_view line = trim(std::string_view(text).substr(begin, end - begin));
+    begin = end + 1;
+    if (line.empty()) continue;
+    if (line.rfind("# stoneskip trace", 0) == 0 || line.rfind("t_s,", 0) == 0) return "trace_csv";
+    if (line.rfind("# EVEMU", 0) == 0 || line.rfind("N: ", 0) == 0 || line.rfind("E: ", 0) == 0) return "evemu";
+    if (line.front() == '#') continue;
+    ++looked;
+    const auto f = split_fields(line, false);
+    if (f.size() == 6) {
+      bool numbers = true;
+      for (auto x : f) numbers = numbers && parse_real(x).has_value();
+      if (numbers) return "gesture";
+    }
+    if (f.size() >= 2 && parse_real(f[0])) {
+      bool hex = true;
+      for (std::size_t i = 1; i < f.size(); ++i) hex = hex && is_hex(f[i]) && f[i].size() % 2 == 0;
+      if (hex) {
+        std::string_view first = f[1];
+        if (first.size() >= 2 && (first.substr(0, 2) == "a1" || first.substr(0, 2) == "A1")) {
+          first = first.size() > 2 ? first.substr(2) : (f.size() > 2 ? f[2] : std::string_view());
+        }
+        if (first.size() >= 2 && (first[0] == '2' || first[0] == '3')) return "report_log";
+      }
+    }
+    return "";
+  }
+  return "";
+}
+
+void check_sane(const Trace& t) {
+  constexpr double kMaxDuration_s = 1e6, kMaxAccel_g = 1e3, kMaxRate_deg_s = 1e6;
+  for (std::size_t k = 0; k < t.samples.size(); ++k) {
+    const TraceSample& x = t.samples[k];
+    const bool ok = std::isfinite(x.t_s) && std::abs(x.t_s) <= kMaxDuration_s && x.accel_g.allFinite() &&
+                    x.accel_g.cwiseAbs().maxCoeff() <= kMaxAccel_g && x.rate_deg_s.allFinite() &&
+                    x.rate_deg_s.cwiseAbs().maxCoeff() <= kMaxRate_deg_s;
+    if (!ok) {
+      char what[200];
+      std::snprintf(what, sizeof what,
+                    "sample %zu is out of range (time within %g s of the first, |a| <= %g g, |rate| <= %g deg/s)", k + 1,
+                    kMaxDuration_s, kMaxAccel_g, kMaxRate_deg_s);
+      throw_input_error(t.source, 0, "", what);
+    }
+  }
+}
+}  // namespace
+
+std::string detect_capture_format(const std::string& text) { return detect(text); }
+
+Trace parse_capture(const std::string& text, const std::string& file, const std::string& format_in) {
+  std::string format = format_in;
+  if (format.empty() || format == "auto") {
+    split_capture_lines(text, file);  // binary data is reported as such, not as an unknown format
+    format = detect(text);
+    if (format.empty())
+      throw_input_error(file, 0, "",
+                        "unrecognised capture format (trace_csv, report_log, evemu, gesture); use --format NAME");
+  }
+  Trace t;
+  if (format == "trace_csv") t = read_trace_csv(text, file);
+  else if (format == "report_log") t = read_report_log(text, file);
+  else if (format == "evemu") t = read_evemu(text, file);
+  else if (format == "gesture") t = read_gesture(text, file);
+  else throw_input_error(file, 0, "--format", "unknown format '" + format + "' (trace_csv, report_log, evemu, gesture)");
+  check_sane(t);
+  return t;
+}
+
+Trace read_capture(const std::string& path, const std::string& format) {
+  return parse_capture(read_text_file(path), path, format);
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,135 @@
+#include "tools/capture/capture_header.hpp"
+
+#include <cstdio>
+#include <vector>
+
+#include "tools/capture/capture_text.hpp"
+#include "tools/capture/mounting.hpp"
+#include "tools/capture/wiimote_report.hpp"
+#include "tools/io/input_error.hpp"
+
+namespace stoneskip {
+
+namespace {
+std::array<double, 3> three(const std::string& value, const std::string& file, long line, const std::string& key) {
+  const auto f = split_fields(value, true);
+  if (f.size() != 3) throw_input_error(file, line, key, "expected three numbers x,y,z, got '" + value + "'");
+  std::array<double, 3> out{};
+  for (int i = 0; i < 3; ++i) {
+    const auto x = parse_real(f[i]);
+    if (!x) throw_input_error(file, line, key, "not a number: '" + std::string(f[i]) + "'");
+    out[i] = *x;
+  }
+  return out;
+}
+
+std::array<int, 3> signs(const std::string& value, const std::string& file, long line, const std::string& key) {
+  const auto v = three(value, file, line, key);
+  std::array<int, 3> s{};
+  for (int i = 0; i < 3; ++i) {
+    if (v[i] != 1 && v[i] != -1) throw_input_error(file, line, key, "each sign must be 1 or -1");
+    s[i] = int(v[i]);
+  }
+  return s;
+}
+
+double positive(const std::string& value, const std::string& file, long line, const std::string& key) {
+  const auto x = parse_real(value);
+  if (!x || *x <= 0 || *x > 1e6) throw_input_error(file, line, key, "expected a positive number, got '" + value + "'");
+  return *x;
+}
+
+std::string join3(const std::array<double, 3>& v) {
+  char b[160];
+  std::snprintf(b, sizeof b, "%.10g,%.10g,%.10g", v[0], v[1], v[2]);
+  return b;
+}
+std::string join3(const std::array<int, 3>& v) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%d,%d,%d", v[0], v[1], v[2]);
+  return b;
+}
+}  // namespace
+
+bool apply_header_key(Trace& t, const std::string& key, const std::string& value, const std::string& file,
+                      long line) {
+  CaptureCalibration& c = t.calibration;
+  if (key == "nominal_rate_hz") {
+    t.nominal_rate_hz = positive(value, file, line, key);
+    return true;
+  }
+  if (key.rfind("mounting.", 0) == 0) {
+    Mounting probe;  // validate now, so the error names the line
+    const std::string setting = key.substr(9) + "=" + value;
+    apply_mounting_setting(probe, setting, input_location(file, line, ""));
+    t.mounting.push_back(setting);
+    return true;
+  }
+  if (key.rfind("calibration.", 0) != 0) return false;
+  const std::string k = key.substr(12);
+  if (k == "block") {
+    std::vector<std::uint8_t> bytes;
+    for (auto f : split_fields(value, false)) {
+      const auto b = parse_integer(f, 16);
+      if (!b || *b < 0 || *b > 255 || f.size() > 2) throw_input_error(file, line, key, "expected 10 hex bytes");
+      bytes.push_back(std::uint8_t(*b));
+    }
+    const auto block = decode_calibration_block(bytes.data(), bytes.size());
+    if (bytes.size() != 10 || !block) throw_input_error(file, line, key, "expected 10 hex bytes (EEPROM 0x16-0x1f)");
+    if (!block->checksum_ok)
+      t.warnings.push_back(input_location(file, line, key) + ": calibration block checksum does not match; used anyway");
+    for (int i = 0; i < 3; ++i) {
+      c.accel_zero_counts[i] = block->zero_counts[i];
+      c.accel_one_g_counts[i] = block->one_g_counts[i];
+    }
+    c.accel_from_device = true;
+  } else if (k == "accel_zero_counts") {
+    c.accel_zero_counts = three(value, file, line, key);
+    c.accel_from_device = true;
+  } else if (k == "accel_one_g_counts") {
+    c.accel_one_g_counts = three(value, file, line, key);
+    c.accel_from_device = true;
+  } else if (k == "accel_sign") {
+    c.accel_sign = signs(value, file, line, key);
+  } else if (k == "gyro_zero_counts") {
+    c.gyro_zero_counts = three(value, file, line, key);
+  } else if (k == "gyro_slow_counts_per_deg_s") {
+    c.gyro_slow_counts_per_deg_s = positive(value, file, line, key);
+  } else if (k == "gyro_fast_factor") {
+    c.gyro_fast_factor = positive(value, file, line, key);
+  } else if (k == "gyro_sign") {
+    c.gyro_sign = signs(value, file, line, key);
+  } else {
+    throw_input_error(file, line, key, "unknown calibration key");
+  }
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(c.accel_one_g_counts[i] - c.accel_zero_counts[i]) < 1)
+      throw_input_error(file, line, key, "one-g and zero-g counts must differ");
+  return true;
+}
+
+std::string header_lines(const Trace& t) {
+  const CaptureCalibration& c = t.calibration;
+  std::string s;
+  char b[64];
+  std::snprintf(b, sizeof b, "%.10g", t.nominal_rate_hz);
+  s += std::string("# nominal_rate_hz: ") + b + "\n";
+  if (c.accel_from_device) {  // the nominal calibration is not written: it would read back as measured
+    s += "# calibration.accel_zero_counts: " + join3(c.accel_zero_counts) + "\n";
+    s += "# calibration.accel_one_g_counts: " + join3(c.accel_one_g_counts) + "\n";
+  }
+  s += "# calibration.accel_sign: " + join3(c.accel_sign) + "\n";
+  s += "# calibration.gyro_zero_counts: " + join3(c.gyro_zero_counts) + "\n";
+  std::snprintf(b, sizeof b, "%.10g", c.gyro_slow_counts_per_deg_s);
+  s += std::string("# calibration.gyro_slow_counts_per_deg_s: ") + b + "\n";
+  std::snprintf(b, sizeof b, "%.10g", c.gyro_fast_factor);
+  s += std::string("# calibration.gyro_fast_factor: ") + b + "\n";
+  s += "# calibration.gyro_sign: " + join3(c.gyro_sign) + "\n";
+  for (const auto& m : t.mounting) {
+    const auto eq = m.find('=');
+    s += "# mounting." + m.substr(0, eq) + ": " + m.substr(eq + 1) + "\n";
+  }
+  return s;
+}
+
+}  // namespace stoneskip

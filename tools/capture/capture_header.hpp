@@ -1,0 +1,26 @@
+#pragma once
+// Metadata comments shared by the text formats ("# key: value" lines, documented in
+// tools/capture/README.md): the device calibration, the nominal report rate and the mounting.
+//
+//   # calibration.block: 80 80 80 00 9a 9a 9a 00 00 c5     EEPROM 0x16–0x1f, hex
+//   # calibration.accel_zero_counts: 512,512,512          (and accel_one_g_counts, accel_sign)
+//   # calibration.gyro_zero_counts: 8192,8192,8192        (and gyro_slow_counts_per_deg_s,
+//                                                           gyro_fast_factor, gyro_sign)
+//   # nominal_rate_hz: 100
+//   # mounting.lever_arm_m: 0,0.6,0                        (any key of mounting.hpp)
+// Other comments are ignored; an unknown calibration.* or mounting.* key is an error.
+#include <string>
+
+#include "tools/capture/capture_trace.hpp"
+
+namespace stoneskip {
+
+// Applies a header key to the trace. Returns false if the key is not one of ours (the caller
+// ignores it); throws InputError naming FILE:LINE and the key for a bad value.
+bool apply_header_key(Trace& trace, const std::string& key, const std::string& value, const std::string& file,
+                      long line);
+
+// The header lines (with "# ") describing a trace's calibration, rate and mounting.
+std::string header_lines(const Trace& trace);
+
+}  // namespace stoneskip

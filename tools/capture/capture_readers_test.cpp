@@ -1,0 +1,134 @@
+// Readers on good and bad input: the oracle is the input itself (what was written must be read
+// back; a defect planted on a known line must be reported with that file and line).
+#include <boost/test/unit_test.hpp>
+
+#include <string>
+
+#include "tools/capture/capture_analysis.hpp"
+#include "tools/capture/capture_format.hpp"
+#include "tools/capture/synthetic_capture.hpp"
+#include "tools/capture/trace_csv.hpp"
+#include "tools/io/input_error.hpp"
+
+using namespace stoneskip;
+
+namespace {
+// The error message of parsing `text`, or "" if it parsed.
+std::string error_of(const std::string& text, const std::string& format = "") {
+  try {
+    parse_capture(text, "bad.cap", format);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+std::string gentle_log() {
+  SyntheticThrow th;
+  th.swing_rate_rad_s = 7.0;
+  SyntheticTruth truth;
+  return synthetic_report_log(th, SyntheticSensor{}, truth);
+}
+
+const std::string kCsvHead = std::string(kTraceCsvMagic) + "\n" + kTraceCsvColumns + "\n";
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(capture_readers)
+
+BOOST_AUTO_TEST_CASE(each_format_is_recognised_from_its_content) {
+  SyntheticThrow th;
+  SyntheticTruth t;
+  BOOST_TEST(detect_capture_format(synthetic_report_log(th, {}, t)) == "report_log");
+  BOOST_TEST(detect_capture_format(synthetic_evemu(th, {}, t)) == "evemu");
+  BOOST_TEST(detect_capture_format(synthetic_gesture(th, {}, t)) == "gesture");
+  BOOST_TEST(detect_capture_format(kCsvHead + "0,0,0,1,0,0,0,0,0,0,0,-\n") == "trace_csv");
+  BOOST_TEST(contains(error_of("hello world\n"), "--format"));
+}
+
+BOOST_AUTO_TEST_CASE(a_trace_written_as_csv_reads_back_sample_for_sample) {
+  // Oracle: the trace the report-log reader produced, written with 9 significant digits.
+  const Trace t = parse_capture(gentle_log(), "gentle.log");
+  const Trace back = parse_capture(trace_csv_text(t), "gentle.csv");
+  BOOST_TEST(back.format == "trace_csv");
+  BOOST_REQUIRE(back.samples.size() == t.samples.size());
+  constexpr double kPrintRel = 1e-8;  // %.9g
+  for (std::size_t k = 0; k < t.samples.size(); ++k) {
+    BOOST_TEST(std::abs(back.samples[k].t_s - t.samples[k].t_s) < 1e-9);
+    BOOST_TEST((back.samples[k].accel_g - t.samples[k].accel_g).norm() <= kPrintRel * (1 + t.samples[k].accel_g.norm()));
+    BOOST_TEST((back.samples[k].rate_deg_s - t.samples[k].rate_deg_s).norm() <= kPrintRel * (1 + t.samples[k].rate_deg_s.norm()));
+    BOOST_TEST(back.samples[k].buttons == t.samples[k].buttons);
+    BOOST_TEST(back.samples[k].flags == t.samples[k].flags);
+    BOOST_TEST(back.samples[k].gyro_fast == t.samples[k].gyro_fast);
+  }
+  BOOST_TEST(back.calibration.accel_one_g_counts == t.calibration.accel_one_g_counts);
+  BOOST_TEST(back.has_gyro);
+}
+
+BOOST_AUTO_TEST_CASE(binary_data_is_refused_with_the_file_name) {
+  const std::string e = error_of(std::string("12.0 31 00\0\x01\x02", 13));
+  BOOST_TEST(contains(e, "bad.cap:1"));
+  BOOST_TEST(contains(e, "binary"));
+}
+
+BOOST_AUTO_TEST_CASE(wrong_column_counts_and_non_numeric_fields_name_their_line) {
+  BOOST_TEST(contains(error_of(kCsvHead + "0,0,0,1,0,0,0,0,0,0,0,-\n0,0,1\n"), "bad.cap:4"));
+  BOOST_TEST(contains(error_of(kCsvHead + "0,0,zero,1,0,0,0,0,0,0,0,-\n"), "bad.cap:3"));
+  BOOST_TEST(contains(error_of("0.1 0.2 0.3 8192 8192\n0.1 0.2 0.3 8192 8192 8192\n", "gesture"), "bad.cap:1"));
+  BOOST_TEST(contains(error_of("1.0 0.0 1.0 8192 8192 99999\n", "gesture"), "14-bit"));
+  BOOST_TEST(contains(error_of("10.0 31 00 00 80 80 9a\n10.1 31 0g 00 80 80 9a\n", "report_log"), "bad.cap:2"));
+}
+
+BOOST_AUTO_TEST_CASE(a_cut_short_last_line_is_a_warning_not_an_error) {
+  const Trace t = parse_capture(kCsvHead + "0,0,0,1,0,0,0,0,0,0,0,-\n0.01,0,0,1,0,0,0,0,0,0,0,-\n0.02,0,0", "cut.csv");
+  BOOST_TEST(t.samples.size() == 2u);
+  BOOST_REQUIRE(t.warnings.size() == 1u);
+  BOOST_TEST(contains(t.warnings[0], "cut.csv:5"));
+}
+
+BOOST_AUTO_TEST_CASE(time_going_backwards_names_the_line) {
+  BOOST_TEST(contains(error_of("10.0 31 00 00 80 80 9a\n9.9 31 00 00 80 80 9a\n"), "bad.cap:2"));
+  BOOST_TEST(contains(error_of(kCsvHead + "1,0,0,1,0,0,0,0,0,0,0,-\n0.5,0,0,1,0,0,0,0,0,0,0,-\n"), "backwards"));
+  BOOST_TEST(contains(error_of("N: Nintendo Wii Remote Accelerometer\nE: 1.0 0003 0003 1\nE: 0.5 0003 0003 2\n"), "bad.cap:3"));
+}
+
+BOOST_AUTO_TEST_CASE(unknown_and_truncated_reports_are_skipped_with_a_warning_naming_the_line) {
+  const Trace t = parse_capture("10.00 31 00 00 80 80 9a\n10.01 99 00 00\n10.02 35 00 00 80\n10.03 31 00 00 80 80 9a\n",
+                                "odd.log");
+  BOOST_TEST(t.samples.size() == 2u);
+  BOOST_REQUIRE(t.warnings.size() >= 2u);
+  BOOST_TEST(contains(t.warnings[0], "odd.log:2: unknown report type 0x99"));
+  BOOST_TEST(contains(t.warnings[1], "odd.log:3: truncated report 0x35"));
+}
+
+BOOST_AUTO_TEST_CASE(a_capture_without_a_button_press_or_still_part_is_unusable_with_the_reason) {
+  // Oracle: a log whose button bits were all cleared has no press; a throw that starts 0.1 s
+  // into the recording has no still part.
+  std::string log = gentle_log();
+  for (std::size_t p = log.find('\n'); p != std::string::npos && p + 1 < log.size(); p = log.find('\n', p + 1)) {
+    const std::size_t bytes = log.find(' ', p + 1) + 1;  // "35 00 b1 ..." → clear B (0x04) in b1
+    const int b1 = std::stoi(log.substr(bytes + 6, 2), nullptr, 16) & ~0x04;
+    const char* hex = "0123456789abcdef";
+    log[bytes + 6] = hex[b1 >> 4];
+    log[bytes + 7] = hex[b1 & 15];
+  }
+  CaptureOptions o;
+  o.members = 0;
+  const CaptureAnalysis a = analyse_capture(parse_capture(log, "nopress.log"), o);
+  BOOST_TEST(std::string(to_string(a.verdict)) == "unusable");
+  BOOST_REQUIRE(!a.reasons.empty());
+  BOOST_TEST(contains(a.reasons.front(), "no press"), a.reasons.front());
+
+  SyntheticThrow th;
+  th.swing_rate_rad_s = 7.0;
+  th.still_s = 0.1;
+  th.press_at_s = 0.0;
+  SyntheticTruth truth;
+  const CaptureAnalysis b = analyse_capture(parse_capture(synthetic_report_log(th, {}, truth), "nostill.log"), o);
+  BOOST_TEST(std::string(to_string(b.verdict)) == "unusable");
+  BOOST_REQUIRE(!b.reasons.empty());
+  BOOST_TEST(contains(b.reasons.front(), "no still part"), b.reasons.front());
+}
+
+BOOST_AUTO_TEST_SUITE_END()

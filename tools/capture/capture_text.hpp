@@ -1,0 +1,40 @@
+#pragma once
+// What every text capture reader shares: splitting into numbered lines, refusing binary data,
+// parsing numbers strictly, and the truncation rule: a malformed LAST line without a final newline
+// is taken as a recording cut short (a warning, the line dropped); anywhere else a malformed line
+// is an InputError naming the file and the line.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace stoneskip {
+
+struct TextLine {
+  long number = 0;         // 1-based
+  std::string_view text;   // without the newline and a trailing '\r'
+  bool last_unterminated = false;  // the file's last line, with no newline after it
+};
+
+// Splits text into lines. Throws InputError "FILE: binary data (byte 0x.. at line N)" when the text
+// holds a NUL or other control byte (tab, CR, LF excepted).
+std::vector<TextLine> split_capture_lines(const std::string& text, const std::string& file);
+
+// Whitespace- (or, with comma = true, comma-) separated fields.
+std::vector<std::string_view> split_fields(std::string_view line, bool comma);
+std::string_view trim(std::string_view s);
+
+// Strict numbers: the whole field must parse and be finite.
+std::optional<double> parse_real(std::string_view field);
+std::optional<long long> parse_integer(std::string_view field, int base = 10);
+
+// Reports a malformed line: a warning (recorded in warnings) when it is the unterminated last line,
+// an InputError otherwise.
+void malformed_line(const std::string& file, const TextLine& line, const std::string& what,
+                    std::vector<std::string>& warnings);
+
+// "# key: value" header comments: returns key and value (trimmed) when the line has that form.
+bool header_comment(std::string_view line, std::string& key, std::string& value);
+
+}  // namespace stoneskip

@@ -1,0 +1,149 @@
+#include "tools/capture/evemu_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "tools/capture/capture_header.hpp"
+#include "tools/capture/capture_text.hpp"
+#include "tools/io/input_error.hpp"
+
+namespace stoneskip {
+
+namespace {
+enum class Device { none, keys, accel, gyro, other };
+
+constexpr int kEvSyn = 0x00, kEvKey = 0x01, kEvAbs = 0x03;
+constexpr int kSynReport = 0x00;
+constexpr int kAbsRx = 0x03, kAbsRy = 0x04, kAbsRz = 0x05;
+constexpr int kBtnA = 0x130, kBtnB = 0x131;
+
+struct Frame {
+  double t_s;
+  std::array<double, 3> v;
+};
+struct KeyEvent {
+  double t_s;
+  unsigned mask;
+  bool down;
+};
+
+Device classify(std::string_view name) {
+  if (name.find("Motion Plus") != std::string_view::npos) return Device::gyro;
+  if (name.find("Accelerometer") != std::string_view::npos) return Device::accel;
+  if (name == "Nintendo Wii Remote") return Device::keys;
+  return Device::other;
+}
+}  // namespace
+
+Trace read_evemu(const std::string& text, const std::string& file) {
+  Trace t;
+  t.source = file;
+  t.format = "evemu";
+  Device device = Device::none;
+  bool saw_keys = false;
+  std::array<double, 3> accel{}, gyro{};
+  bool accel_changed = false, gyro_changed = false;
+  double last_time = -1e300;
+  std::vector<Frame> accel_frames, gyro_frames;
+  std::vector<KeyEvent> keys;
+  for (const TextLine& line : split_capture_lines(text, file)) {
+    std::string_view s = trim(line.text);
+    if (s.empty()) continue;
+    if (s.front() == '#') {
+      std::string key, value;
+      if (header_comment(s, key, value)) apply_header_key(t, key, value, file, line.number);
+      continue;
+    }
+    if (s.size() < 2 || s[1] != ':') {
+      malformed_line(file, line, "not an evemu line (expected 'X: ...')", t.warnings);
+      continue;
+    }
+    const char tag = s[0];
+    std::string_view rest = trim(s.substr(2));
+    if (tag == 'N') {
+      device = classify(rest);
+      if (device == Device::keys) saw_keys = true;
+      if (device == Device::other)
+        t.warnings.push_back(input_location(file, line.number, "") + ": device '" + std::string(rest) + "' ignored");
+      last_time = -1e300;
+      accel_changed = gyro_changed = false;
+      continue;
+    }
+    if (tag != 'E') continue;  // I:, P:, B:, A:, L:, S: describe the device
+    if (device == Device::none) throw_input_error(file, line.number, "", "event before any device ('N:') line");
+    const auto comment = rest.find('#');
+    if (comment != std::string_view::npos) rest = rest.substr(0, comment);
+    const auto f = split_fields(rest, false);
+    if (f.size() != 4) {
+      malformed_line(file, line, "an event needs 4 fields (time type code value), found " + std::to_string(f.size()),
+                     t.warnings);
+      continue;
+    }
+    const auto time = parse_real(f[0]);
+    const auto type = parse_integer(f[1], 16), code = parse_integer(f[2], 16), value = parse_integer(f[3], 10);
+    if (!time || !type || !code || !value) {
+      malformed_line(file, line, "an event is 'E: seconds type(hex) code(hex) value'", t.warnings);
+      continue;
+    }
+    if (*time < last_time) {
+      char what[128];
+      std::snprintf(what, sizeof what, "time goes backwards (%.6f s after %.6f s)", *time, last_time);
+      throw_input_error(file, line.number, "", what);
+    }
+    last_time = *time;
+    if (device == Device::other) continue;
+    if (*type == kEvAbs && (device == Device::accel || device == Device::gyro)) {
+      const int axis = *code == kAbsRx ? 0 : *code == kAbsRy ? 1 : *code == kAbsRz ? 2 : -1;
+      if (axis < 0) continue;
+      if (std::llabs(*value) > 1000000) throw_input_error(file, line.number, "", "value out of range for this device");
+      if (device == Device::accel) {
+        accel[axis] = double(*value);
+        accel_changed = true;
+      } else {
+        // ABS_RX yaw → Z, ABS_RY roll → Y, ABS_RZ pitch → X.
+        gyro[2 - axis] = double(*value);
+        gyro_changed = true;
+      }
+    } else if (*type == kEvKey && device == Device::keys) {
+      if (*code == kBtnA || *code == kBtnB) keys.push_back({*time, *code == kBtnA ? kButtonA : kButtonB, *value != 0});
+    } else if (*type == kEvSyn && *code == kSynReport) {
+      if (device == Device::accel && accel_changed) accel_frames.push_back({*time, accel});
+      if (device == Device::gyro && gyro_changed) gyro_frames.push_back({*time, gyro});
+    }
+  }
+  if (accel_frames.empty())
+    throw_input_error(file, 0, "", "no events from a 'Nintendo Wii Remote Accelerometer' device");
+  if (!saw_keys)
+    t.warnings.push_back(file + ": no 'Nintendo Wii Remote' key device recorded: the button (release) is unknown");
+  std::stable_sort(keys.begin(), keys.end(), [](const KeyEvent& a, const KeyEvent& b) { return a.t_s < b.t_s; });
+  t.has_gyro = !gyro_frames.empty();
+  const CaptureCalibration& c = t.calibration;
+  const double t0 = accel_frames.front().t_s;
+  std::size_t g = 0, k = 0;
+  unsigned buttons = 0;
+  constexpr double kSameReport_s = 2e-3;  // accelerometer and MotionPlus events of one HID report
+  for (const Frame& a : accel_frames) {
+    TraceSample x;
+    x.t_s = a.t_s - t0;
+    for (int i = 0; i < 3; ++i) x.accel_g[i] = c.accel_g(i, a.v[i] + 0x200);
+    while (g + 1 < gyro_frames.size() && gyro_frames[g + 1].t_s <= a.t_s + kSameReport_s) ++g;
+    if (t.has_gyro && gyro_frames[g].t_s <= a.t_s + kSameReport_s) {
+      for (int i = 0; i < 3; ++i) {
+        const double counts = gyro_frames[g].v[i] / 9.0;  // slow-mode counts from zero
+        x.rate_deg_s[i] = c.gyro_sign[i] * counts / c.gyro_slow_counts_per_deg_s;
+        x.gyro_fast[i] = std::abs(counts) > 8192.0;
+        if (std::abs(counts) >= 8191.0 * c.gyro_fast_factor) x.flags |= kGyroSaturated;
+      }
+    }
+    while (k < keys.size() && keys[k].t_s <= a.t_s) {
+      buttons = keys[k].down ? (buttons | keys[k].mask) : (buttons & ~keys[k].mask);
+      ++k;
+    }
+    x.buttons = buttons;
+    t.samples.push_back(x);
+  }
+  return t;
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,159 @@
+#include "tools/capture/report_log.hpp"
+
+#include <cstdio>
+
+#include "tools/capture/capture_header.hpp"
+#include "tools/capture/capture_text.hpp"
+#include "tools/capture/wiimote_report.hpp"
+#include "tools/io/input_error.hpp"
+
+namespace stoneskip {
+
+namespace {
+int hex_digit(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+
+// Hex tokens → bytes; false if a token is not an even-length run of hex digits.
+bool parse_hex_bytes(const std::vector<std::string_view>& fields, std::size_t first, std::vector<std::uint8_t>& out) {
+  out.clear();
+  for (std::size_t k = first; k < fields.size(); ++k) {
+    const std::string_view f = fields[k];
+    if (f.size() % 2 != 0) return false;
+    for (std::size_t i = 0; i < f.size(); i += 2) {
+      const int hi = hex_digit(f[i]), lo = hex_digit(f[i + 1]);
+      if (hi < 0 || lo < 0) return false;
+      out.push_back(std::uint8_t(hi * 16 + lo));
+    }
+  }
+  return true;
+}
+
+char hex_id(std::uint8_t id, char* buf) {
+  std::snprintf(buf, 8, "0x%02x", id);
+  return 0;
+}
+}  // namespace
+
+Trace read_report_log(const std::string& text, const std::string& file) {
+  Trace t;
+  t.source = file;
+  t.format = "report_log";
+  std::vector<std::uint8_t> bytes, previous;
+  double previous_time = 0, first_time = 0;
+  bool have_time = false;
+  long without_accel = 0, without_gyro = 0;
+  std::vector<char> sample_has_gyro;
+  for (const TextLine& line : split_capture_lines(text, file)) {
+    const std::string_view s = trim(line.text);
+    if (s.empty()) continue;
+    if (s.front() == '#') {
+      std::string key, value;
+      if (header_comment(s, key, value)) apply_header_key(t, key, value, file, line.number);
+      continue;
+    }
+    const auto fields = split_fields(s, false);
+    const auto time = parse_real(fields[0]);
+    if (!time) {
+      malformed_line(file, line, "the first field must be the host time in seconds, got '" + std::string(fields[0]) + "'",
+                     t.warnings);
+      continue;
+    }
+    if (!parse_hex_bytes(fields, 1, bytes)) {
+      malformed_line(file, line, "report bytes must be hex (pairs of digits 0-9a-f)", t.warnings);
+      continue;
+    }
+    if (bytes.empty()) {
+      malformed_line(file, line, "no report bytes after the time", t.warnings);
+      continue;
+    }
+    if (have_time && *time < previous_time) {
+      char what[128];
+      std::snprintf(what, sizeof what, "time goes backwards (%.6f s after %.6f s)", *time, previous_time);
+      throw_input_error(file, line.number, "", what);
+    }
+    const DecodedReport r = decode_report(bytes.data(), bytes.size());
+    char id[8];
+    hex_id(r.id, id);
+    if (!r.length_ok) {
+      t.warnings.push_back(input_location(file, line.number, "") + ": truncated report " + id + " (" +
+                           std::to_string(bytes.size()) + " bytes, needs " + std::to_string(r.needed_bytes) +
+                           "): skipped");
+      continue;
+    }
+    if (r.kind == ReportKind::unknown) {
+      t.warnings.push_back(input_location(file, line.number, "") + ": unknown report type " + id + ": skipped");
+      continue;
+    }
+    if (r.kind == ReportKind::memory_read) {
+      if (r.read_error == 0 && (r.read_address == 0x0016 || r.read_address == 0x0020) && r.read_data.size() >= 10) {
+        const auto block = decode_calibration_block(r.read_data.data(), r.read_data.size());
+        if (!block->checksum_ok)
+          t.warnings.push_back(input_location(file, line.number, "") + ": calibration block checksum does not match; used anyway");
+        for (int i = 0; i < 3; ++i) {
+          t.calibration.accel_zero_counts[i] = block->zero_counts[i];
+          t.calibration.accel_one_g_counts[i] = block->one_g_counts[i];
+          if (block->one_g_counts[i] == block->zero_counts[i]) {
+            throw_input_error(file, line.number, "", "calibration block has one-g equal to zero-g");
+          }
+        }
+        t.calibration.accel_from_device = true;
+      }
+      continue;
+    }
+    if (r.kind != ReportKind::data) continue;  // status, acknowledge
+    if (!r.has_accel) {
+      ++without_accel;
+      continue;
+    }
+    if (!have_time) first_time = *time;
+    TraceSample x;
+    x.t_s = *time - first_time;
+    x.buttons = r.buttons;
+    for (int i = 0; i < 3; ++i) x.accel_g[i] = r.accel_raw[i];  // calibrated below (the block may come later)
+    if (r.has_motionplus) {
+      t.has_gyro = true;
+      for (int i = 0; i < 3; ++i) {
+        x.gyro_fast[i] = !r.gyro_slow[i];
+        x.rate_deg_s[i] = r.gyro_raw[i];  // scaled below
+        if (r.gyro_raw[i] == 0 || r.gyro_raw[i] == 0x3fff) x.flags |= kGyroSaturated;
+      }
+    }
+    if (have_time && bytes == previous && *time - previous_time < 0.5 / t.nominal_rate_hz) x.flags |= kRepeated;
+    previous = bytes;
+    previous_time = *time;
+    have_time = true;
+    t.samples.push_back(x);
+    sample_has_gyro.push_back(r.has_motionplus);
+  }
+  if (t.samples.empty()) throw_input_error(file, 0, "", "no accelerometer reports (0x31, 0x33, 0x35, 0x37) found");
+  // Calibrate: counts → g and deg/s. Samples without MotionPlus data hold the previous rate.
+  const CaptureCalibration& c = t.calibration;
+  Eigen::Vector3d last_rate = Eigen::Vector3d::Zero();
+  std::array<bool, 3> last_fast{};
+  for (std::size_t k = 0; k < t.samples.size(); ++k) {
+    TraceSample& x = t.samples[k];
+    for (int i = 0; i < 3; ++i) x.accel_g[i] = c.accel_g(i, x.accel_g[i]);
+    if (!t.has_gyro) continue;
+    if (sample_has_gyro[k]) {
+      for (int i = 0; i < 3; ++i) x.rate_deg_s[i] = c.gyro_deg_s(i, x.rate_deg_s[i], x.gyro_fast[i]);
+      last_rate = x.rate_deg_s;
+      last_fast = x.gyro_fast;
+    } else {
+      ++without_gyro;
+      x.rate_deg_s = last_rate;
+      x.gyro_fast = last_fast;
+    }
+  }
+  if (without_accel > 0)
+    t.warnings.push_back(file + ": " + std::to_string(without_accel) + " reports without accelerometer data skipped");
+  if (without_gyro > 0)
+    t.warnings.push_back(file + ": " + std::to_string(without_gyro) +
+                         " accelerometer reports without MotionPlus data: the previous rate was held");
+  return t;
+}
+
+}  // namespace stoneskip

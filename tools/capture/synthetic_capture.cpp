@@ -1,0 +1,277 @@
+#include "tools/capture/synthetic_capture.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <random>
+
+#include "model/stone/throw.hpp"
+#include "tools/capture/wiimote_report.hpp"
+
+namespace stoneskip {
+
+namespace {
+constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kG = 9.81;
+
+// s(τ) = 3τ² − 2τ³ and its integral and derivative.
+double ramp(double x) { return x * x * (3 - 2 * x); }
+double ramp_integral(double x) { return x * x * x - 0.5 * x * x * x * x; }
+double ramp_slope(double x) { return 6 * x * (1 - x); }
+
+// A quantity that rises as peak·s(τ) over the swing and falls back over the follow-through:
+// value (displacement from release), rate, and its derivative.
+struct Profile {
+  double pos, rate, accel;
+};
+Profile profile(const SyntheticThrow& th, double peak, double t) {
+  const double t_sw = th.still_s, T = th.swing_duration_s, t_r = t_sw + T, Tf = th.follow_through_s;
+  if (t < t_sw) return {peak * T * (0 - 0.5), 0, 0};
+  if (t <= t_r) {
+    const double x = (t - t_sw) / T;
+    return {peak * T * (ramp_integral(x) - 0.5), peak * ramp(x), peak * ramp_slope(x) / T};
+  }
+  if (t <= t_r + Tf) {
+    const double x = (t - t_r) / Tf;
+    return {peak * Tf * (x - ramp_integral(x)), peak * (1 - ramp(x)), -peak * ramp_slope(x) / Tf};
+  }
+  return {peak * Tf * 0.5, 0, 0};
+}
+
+struct Geometry {
+  Vec3 k, d;
+  Mat3 R_stone_r, R_remote_r, M;
+  Vec3 lever_world_r;
+};
+Geometry geometry(const SyntheticThrow& th) {
+  Geometry g;
+  const double b = th.path_angle_deg * kDeg, a = th.attack_angle_deg * kDeg;
+  g.k = Vec3(std::sin(b), 0, std::cos(b));
+  g.d = Vec3(std::cos(b), 0, -std::sin(b));
+  g.R_stone_r = Eigen::AngleAxisd(-a, Vec3::UnitY()).toRotationMatrix();  // spec §1.7
+  g.M = th.mounting.stone_axes();
+  g.R_remote_r = g.R_stone_r * g.M.transpose();
+  g.lever_world_r = g.R_remote_r * th.mounting.lever_arm_m;
+  return g;
+}
+
+std::string hex(const std::vector<std::uint8_t>& b) {
+  std::string s;
+  char x[4];
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    std::snprintf(x, sizeof x, i ? " %02x" : "%02x", b[i]);
+    s += x;
+  }
+  return s;
+}
+
+// The sensor chain shared by the three writers: one reading per report of the remote.
+struct Reading {
+  double t_s;          // remote clock
+  double stamp_s;      // host clock
+  bool dropped, repeated;
+  std::array<int, 3> accel_raw;
+  std::array<int, 3> gyro_raw;
+  std::array<bool, 3> slow;
+  bool button;
+};
+
+std::vector<Reading> record(const SyntheticThrow& th, const SyntheticSensor& s, SyntheticTruth& truth, bool allow_loss) {
+  std::mt19937_64 rng(s.seed);
+  std::normal_distribution<double> gauss(0, 1);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<Reading> out;
+  std::array<bool, 3> fast{false, false, false};
+  const double end = synthetic_duration_s(th);
+  truth.reports_sent = truth.dropped_reports = truth.repeated_reports = 0;
+  truth.range_switches = truth.clipped_samples = 0;
+  truth.received_stamps_s.clear();
+  truth.written_fast.clear();
+  const long reports = long(std::floor(end * s.rate_hz)) + 1;
+  for (long n = 0; n < reports; ++n) {
+    const double t = double(n) / s.rate_hz;
+    const SyntheticSample x = synthetic_sample(th, t);
+    Reading r{};
+    r.t_s = t;
+    r.stamp_s = 12.5 + t + s.latency_s + s.jitter_s * (2 * unit(rng) - 1);
+    r.button = x.button;
+    bool clipped = false;
+    for (int i = 0; i < 3; ++i) {
+      double a = x.accel_g[i];
+      if (std::abs(a) > s.clip_g) clipped = true;
+      a = std::clamp(a, -s.clip_g, s.clip_g) + s.accel_noise_g * gauss(rng);
+      const double counts = s.accel_zero_counts[i] + a * (s.accel_one_g_counts[i] - s.accel_zero_counts[i]);
+      r.accel_raw[i] = int(std::clamp(std::lround(counts), 0L, 1023L));
+      const double w = x.rate_deg_s[i];
+      const bool was = fast[i];
+      if (!fast[i] && std::abs(w) > s.fast_above_deg_s) fast[i] = true;
+      else if (fast[i] && std::abs(w) < s.slow_below_deg_s) fast[i] = false;
+      if (fast[i] != was) ++truth.range_switches;
+      r.slow[i] = !fast[i];
+      const double scale = s.gyro_slow_counts_per_deg_s / (fast[i] ? s.gyro_fast_factor : 1.0);
+      const double g = s.gyro_zero_counts[i] + (w + s.gyro_noise_deg_s * gauss(rng)) * scale;
+      r.gyro_raw[i] = int(std::clamp(std::lround(g), 0L, 16383L));
+    }
+    truth.clipped_samples += clipped;
+    ++truth.reports_sent;
+    // Loss and repeats are drawn for every report so the same seed gives the same motion noise.
+    const bool drop = unit(rng) < s.drop_probability && allow_loss && n > 0 && n + 1 < reports;  // a lost first or last report leaves no trace
+    const bool repeat = unit(rng) < s.repeat_probability && allow_loss;
+    const double repeat_delay_s = 2e-4 + 8e-4 * unit(rng);
+    if (drop) {
+      ++truth.dropped_reports;
+      continue;
+    }
+    out.push_back(r);
+    truth.received_stamps_s.push_back(r.stamp_s);
+    if (repeat) {
+      Reading again = r;
+      again.repeated = true;
+      again.stamp_s += repeat_delay_s;
+      out.push_back(again);
+      ++truth.repeated_reports;
+    }
+  }
+  // The truth at the release.
+  const Geometry g = geometry(th);
+  const double t_r = synthetic_release_time_s(th);
+  truth.release_t_s = t_r;
+  const Profile turn = profile(th, th.swing_rate_rad_s, t_r), pivot = profile(th, th.pivot_speed_m_s, t_r);
+  RigidState st;
+  st.velocity_m_s = pivot.rate * g.d + turn.rate * g.k.cross(g.lever_world_r);
+  st.orientation = Quat(g.R_stone_r);
+  const AttitudeAngles ang = attitude_angles(st);
+  truth.speed_m_s = st.velocity_m_s.norm();
+  truth.path_angle_deg = ang.path_angle_deg;
+  truth.attack_angle_deg = ang.attack_angle_deg;
+  truth.spin_rev_s = (g.R_stone_r.transpose() * (turn.rate * g.k)).z() / (2 * std::numbers::pi);
+  truth.height_m = th.release_height_m;
+  return out;
+}
+}  // namespace
+
+double synthetic_release_time_s(const SyntheticThrow& th) { return th.still_s + th.swing_duration_s; }
+double synthetic_duration_s(const SyntheticThrow& th) {
+  return th.still_s + th.swing_duration_s + th.follow_through_s + th.after_s;
+}
+
+SyntheticSample synthetic_sample(const SyntheticThrow& th, double t) {
+  const Geometry g = geometry(th);
+  const Profile turn = profile(th, th.swing_rate_rad_s, t), pivot = profile(th, th.pivot_speed_m_s, t);
+  const Mat3 rot = Eigen::AngleAxisd(turn.pos, g.k).toRotationMatrix();
+  const Mat3 R_remote = rot * g.R_remote_r;
+  const Vec3 rho = R_remote * (th.mounting.lever_arm_m - th.mounting.stone_offset_m);  // pivot → remote
+  const Vec3 a = pivot.accel * g.d + turn.accel * g.k.cross(rho) + turn.rate * turn.rate * g.k.cross(g.k.cross(rho));
+  SyntheticSample s;
+  s.accel_g = R_remote.transpose() * (a + kG * Vec3::UnitZ()) / kG;  // specific force, in g
+  s.rate_deg_s = R_remote.transpose() * (turn.rate * g.k) / kDeg;
+  s.button = t >= th.press_at_s && t < synthetic_release_time_s(th);
+  return s;
+}
+
+std::string synthetic_report_log(const SyntheticThrow& th, const SyntheticSensor& s, SyntheticTruth& truth) {
+  const auto readings = record(th, s, truth, true);
+  std::string out = "# stoneskip synthetic capture: raw report log (tools/capture/synthetic_capture.cpp)\n";
+  // The calibration block as the remote returns it: a 0x21 reply to a 16-byte read at 0x0016.
+  std::vector<std::uint8_t> reply{0x21, 0x00, 0x00, 0xf0, 0x00, 0x16};
+  const auto block = encode_calibration_block(s.accel_zero_counts, s.accel_one_g_counts);
+  reply.insert(reply.end(), block.begin(), block.end());
+  reply.insert(reply.end(), {0x40, 0x00, 0x00, 0x00, 0x00, 0x00});
+  char line[256];
+  std::snprintf(line, sizeof line, "%.6f ", readings.front().stamp_s - 0.05);
+  out += line + hex(reply) + "\n";
+  for (const Reading& r : readings) {
+    const auto bytes = encode_report(s.report_id, r.button ? kButtonB : 0u, r.accel_raw, r.gyro_raw, r.slow);
+    std::snprintf(line, sizeof line, "%.6f ", r.stamp_s);
+    out += line + hex(bytes) + "\n";
+  }
+  return out;
+}
+
+std::string synthetic_gesture(const SyntheticThrow& th, const SyntheticSensor& s, SyntheticTruth& truth) {
+  const auto readings = record(th, s, truth, false);
+  std::string out;
+  char line[160];
+  for (const Reading& r : readings) {
+    if (!r.button) continue;
+    truth.written_fast.push_back({!r.slow[0], !r.slow[1], !r.slow[2]});
+    double a[3];
+    for (int i = 0; i < 3; ++i)
+      a[i] = double(r.accel_raw[i] - s.accel_zero_counts[i]) / double(s.accel_one_g_counts[i] - s.accel_zero_counts[i]);
+    std::snprintf(line, sizeof line, "%.4f %.4f %.4f %d %d %d\n", a[0], a[1], a[2], r.gyro_raw[0], r.gyro_raw[1],
+                  r.gyro_raw[2]);
+    out += line;
+  }
+  return out;
+}
+
+std::string synthetic_evemu(const SyntheticThrow& th, const SyntheticSensor& s, SyntheticTruth& truth) {
+  const auto readings = record(th, s, truth, true);
+  char line[200];
+  auto device = [&](const char* name, const char* product) {
+    std::string h = std::string("# EVEMU 1.3\n# Input device name: \"") + name + "\"\nN: " + name + "\nI: 0005 057e " +
+                    product + " 8001\n";
+    return h;
+  };
+  auto event = [&](double t, int type, int code, long value) {
+    const long us = std::lround(t * 1e6);
+    std::snprintf(line, sizeof line, "E: %ld.%06ld %04x %04x %ld\n", us / 1000000, us % 1000000, type, code, value);
+    return std::string(line);
+  };
+  std::string out = "# stoneskip synthetic capture: evemu-record of the three hid-wiimote devices, concatenated\n";
+  std::snprintf(line, sizeof line, "# calibration.accel_zero_counts: %d,%d,%d\n# calibration.accel_one_g_counts: %d,%d,%d\n",
+                s.accel_zero_counts[0], s.accel_zero_counts[1], s.accel_zero_counts[2], s.accel_one_g_counts[0],
+                s.accel_one_g_counts[1], s.accel_one_g_counts[2]);
+  out += line;
+  out += device("Nintendo Wii Remote", "0306");
+  bool down = false;
+  for (const Reading& r : readings) {
+    if (r.repeated || r.button == down) continue;
+    down = r.button;
+    out += event(r.stamp_s, 1, 0x131, down ? 1 : 0) + event(r.stamp_s, 0, 0, 0);
+  }
+  out += device("Nintendo Wii Remote Accelerometer", "0306");
+  std::array<long, 3> last{-99999, -99999, -99999};
+  for (const Reading& r : readings) {
+    if (r.repeated) continue;  // a repeated report changes no value: the input core emits nothing
+    std::string frame;
+    for (int i = 0; i < 3; ++i) {
+      const long v = r.accel_raw[i] - 0x200;
+      if (v != last[i]) frame += event(r.stamp_s, 3, 3 + i, v);
+      last[i] = v;
+    }
+    if (!frame.empty()) out += frame + event(r.stamp_s, 0, 0, 0);
+  }
+  out += device("Nintendo Wii Remote Motion Plus", "0306");
+  last = {-99999999, -99999999, -99999999};
+  for (const Reading& r : readings) {
+    if (r.repeated) continue;
+    std::string frame;
+    // hid-wiimote-modules.c: ABS_RX yaw, ABS_RY roll, ABS_RZ pitch; x9 slow, x(2000*9)/440 fast.
+    const int order[3] = {2, 1, 0};
+    for (int c = 0; c < 3; ++c) {
+      const int i = order[c];
+      long v = r.gyro_raw[i] - 8192;
+      v = r.slow[i] ? v * 9 : (v * 2000 * 9) / 440;
+      if (v != last[c]) frame += event(r.stamp_s + 1e-6, 3, 3 + c, v);
+      last[c] = v;
+    }
+    if (!frame.empty()) out += frame + event(r.stamp_s + 1e-6, 0, 0, 0);
+  }
+  return out;
+}
+
+std::string SyntheticTruth::toml() const {
+  char b[1024];
+  std::snprintf(b, sizeof b,
+                "# The truth behind a synthetic capture (tools/capture/synthetic_capture.cpp).\n"
+                "[throw]\nspeed_m_s = %.9g\npath_angle_deg = %.9g\nattack_angle_deg = %.9g\nspin_rev_s = %.9g\n"
+                "height_m = %.9g\nrelease_t_s = %.9g\n\n[recording]\nreports_sent = %ld\ndropped_reports = %ld\n"
+                "repeated_reports = %ld\nrange_switches = %d\nclipped_samples = %d\n",
+                speed_m_s, path_angle_deg, attack_angle_deg, spin_rev_s, height_m, release_t_s, reports_sent,
+                dropped_reports, repeated_reports, range_switches, clipped_samples);
+  return b;
+}
+
+}  // namespace stoneskip

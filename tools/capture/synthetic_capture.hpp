@@ -1,0 +1,85 @@
+#pragma once
+// Synthetic captures with a known truth: a side-arm throw about a moving pivot, recorded as a real
+// Wii Remote with MotionPlus would record it (spec §4): the accelerometer clips at ±clip_g and is
+// quantised to 10 bits (Y and Z lose their lowest bit in the report), the MotionPlus switches to
+// fast mode above fast_above_deg_s (back below slow_below_deg_s), reports come at ≈ rate_hz with
+// host-clock jitter, some are lost and some repeated.
+//
+// The motion (world frame, z up): the arm, the remote and the stone turn together about the axis
+// k = (sin β, 0, cos β) through a pivot that itself moves along the release direction
+// d = (cos β, 0, −sin β). The turn rate rises as Ω s(τ) (s = 3τ² − 2τ³, τ = (t − t_swing)/T) and
+// the pivot speed as V s(τ), so both peak at the release; then both fall back over the
+// follow-through. At the release the stone moves along d with speed V + Ω|lever|, its normal is
+// tilted by the attack angle, and it spins at Ω cos(α + β) about its normal (what a remote on the
+// wrist can see; a finger flick it cannot). Everything a sensor reads follows analytically.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "tools/capture/mounting.hpp"
+
+namespace stoneskip {
+
+struct SyntheticThrow {
+  double swing_rate_rad_s = 14.0;   // Ω at release
+  double swing_duration_s = 0.25;   // T
+  double pivot_speed_m_s = 1.5;     // V at release
+  double path_angle_deg = 10.0;     // β
+  double attack_angle_deg = 15.0;   // α
+  double release_height_m = 0.9;    // the stone's centre at release
+  double still_s = 0.8;             // before the swing
+  double press_at_s = 0.3;          // the button goes down
+  double follow_through_s = 0.25;
+  double after_s = 0.2;             // still again at the end
+  Mounting mounting;                // the truth (the lever arm is exact)
+};
+
+struct SyntheticSensor {
+  double rate_hz = 100.0;
+  double jitter_s = 0.002;          // host stamps: ± uniform
+  double latency_s = 0.004;
+  double drop_probability = 0.015;
+  double repeat_probability = 0.01;
+  double clip_g = 3.6;
+  double accel_noise_g = 0.005;
+  double gyro_noise_deg_s = 0.2;
+  std::array<int, 3> accel_zero_counts{506, 513, 518};
+  std::array<int, 3> accel_one_g_counts{610, 617, 621};
+  std::array<double, 3> gyro_zero_counts{8050, 8120, 7995};
+  double gyro_slow_counts_per_deg_s = 20.0;
+  double gyro_fast_factor = 2000.0 / 440.0;
+  double fast_above_deg_s = 350.0;
+  double slow_below_deg_s = 250.0;
+  std::uint8_t report_id = 0x35;    // 0x35 or 0x37
+  std::uint64_t seed = 1;
+};
+
+struct SyntheticTruth {
+  double release_t_s = 0;           // remote clock
+  double speed_m_s = 0, path_angle_deg = 0, attack_angle_deg = 0, spin_rev_s = 0, height_m = 0;
+  long reports_sent = 0, dropped_reports = 0, repeated_reports = 0;
+  int range_switches = 0;
+  int clipped_samples = 0;          // samples with an axis beyond clip_g
+  std::vector<double> received_stamps_s;  // host stamps of the kept (non-repeated) reports
+  std::vector<std::array<bool, 3>> written_fast;  // MotionPlus fast mode of each sample written (gesture rows)
+  std::string toml() const;         // the sidecar .truth.toml
+};
+
+// The throw and what each sensor sees at time t (remote clock).
+struct SyntheticSample {
+  Vec3 accel_g = Vec3::Zero();       // specific force in the remote frame, unclipped
+  Vec3 rate_deg_s = Vec3::Zero();    // remote frame
+  bool button = false;
+};
+SyntheticSample synthetic_sample(const SyntheticThrow& th, double t_s);
+double synthetic_duration_s(const SyntheticThrow& th);
+double synthetic_release_time_s(const SyntheticThrow& th);
+
+// A raw report log (report_log.hpp) and its truth.
+std::string synthetic_report_log(const SyntheticThrow& th, const SyntheticSensor& sensor, SyntheticTruth& truth);
+// The same throw in the wiiuse gesture format (press to release, no drops) and as evemu-record text.
+std::string synthetic_gesture(const SyntheticThrow& th, const SyntheticSensor& sensor, SyntheticTruth& truth);
+std::string synthetic_evemu(const SyntheticThrow& th, const SyntheticSensor& sensor, SyntheticTruth& truth);
+
+}  // namespace stoneskip

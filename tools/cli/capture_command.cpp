@@ -1,0 +1,321 @@
+// stoneskip capture: Wii Remote captures (tools/capture/README.md, spec §4).
+//
+//   stoneskip capture validate FILE... [--json] [--out DIR]    verdict + report page per capture
+//   stoneskip capture throw FILE --solver realtime|reference|both [--json] [--out FILE.h5]
+//   stoneskip capture convert FILE --out TRACE.csv               any format → stoneskip trace CSV
+//   stoneskip capture synthesize --out DIR                       the shipped synthetic captures + truth
+//
+// Examples (regression runs):
+//   stoneskip capture validate cases/captures/*.log cases/captures/*.evemu --out out/captures
+//   stoneskip capture validate cases/captures/hard_sidearm_clipped.log --json --no-reference
+//   stoneskip capture throw cases/captures/gentle_sidearm.log --solver both
+// Common options: --format NAME (force a reader), --case FILE (stone and water, default
+// cases/paper_8ms_spin.toml), --mount key=value (mounting.hpp), --button A|B, --start-height M,
+// --saturation-g G, --max-accel-g G, --members N, --seed S.
+// Exit status: 0 done (whatever the verdicts, unless --strict and one is unusable), 1 --strict
+// with an unusable capture or a failed solve, 2 bad input.
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <iostream>
+#include <memory>
+
+#include "reports/capture/capture_json.hpp"
+#include "reports/capture/capture_report.hpp"
+#include "tools/capture/capture_format.hpp"
+#include "tools/capture/capture_throw.hpp"
+#include "tools/capture/synthetic_capture.hpp"
+#include "tools/capture/trace_csv.hpp"
+#include "tools/cli/command_registry.hpp"
+#include "tools/io/atomic_file.hpp"
+#include "tools/io/input_error.hpp"
+#include "tools/scene/stone_case.hpp"
+#include "tools/scene/throw_output.hpp"
+
+namespace stoneskip::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CaptureArgs {
+  std::vector<std::string> files;
+  std::string format;
+  std::string case_file = "cases/paper_8ms_spin.toml";
+  std::vector<std::string> sets;
+  std::vector<std::string> mounts;
+  std::string button = "B";
+  double start_height_m = 1.0;
+  double saturation_g = 3.4;
+  double max_accel_g = 20.0;
+  int members = 64;
+  unsigned seed = 20130101;
+  bool json = false;
+  std::string out;
+  std::string solver = "both";
+  bool no_reference = false;
+  bool no_simulate = false;
+  bool strict = false;
+  bool progress = false;
+};
+
+void add_common(CLI::App* cmd, CaptureArgs& a) {
+  cmd->add_option("--format", a.format, "Force a reader: trace_csv, report_log, evemu, gesture (default: recognised from the content)")
+      ->check(CLI::IsMember({"auto", "trace_csv", "report_log", "evemu", "gesture"}));
+  cmd->add_option("--mount", a.mounts, "Mounting setting key=value (stone_normal, stone_forward, stone_offset_m, lever_arm_m, lever_arm_rel_uncertainty), repeatable");
+  cmd->add_option("--button", a.button, "The action button held through the swing (default B)")->check(CLI::IsMember({"A", "B"}));
+  cmd->add_option("--start-height", a.start_height_m, "Height of the stone's centre during the still part, m (default 1.0)");
+  cmd->add_option("--saturation-g", a.saturation_g, "An axis at or beyond this |a| is clipped, g (default 3.4)");
+  cmd->add_option("--max-accel-g", a.max_accel_g, "Largest acceleration a clipped span may hide, g (default 20)");
+  cmd->add_option("--members", a.members, "Ensemble size for the intervals and the bounce distribution (default 64)");
+  cmd->add_option("--seed", a.seed, "Seed of the ensemble's random draws");
+}
+
+void add_case(CLI::App* cmd, CaptureArgs& a) {
+  cmd->add_option("--case", a.case_file, "Stone case giving the stone, water and solver settings (default cases/paper_8ms_spin.toml)");
+  cmd->add_option("--set", a.sets, "Override a case key: section.key=value (repeatable)");
+}
+
+CaptureOptions capture_options(const CaptureArgs& a, const Trace& t) {
+  if (!(a.saturation_g > 0 && a.saturation_g < 1000)) throw_input_error("--saturation-g", 0, "", "must be in (0, 1000)");
+  if (!(a.max_accel_g >= a.saturation_g && a.max_accel_g < 1000))
+    throw_input_error("--max-accel-g", 0, "", "must be at least --saturation-g and below 1000");
+  if (a.members < 0 || a.members > 100000) throw_input_error("--members", 0, "", "must be in [0, 100000]");
+  if (!(a.start_height_m > -100 && a.start_height_m < 100)) throw_input_error("--start-height", 0, "", "must be in (-100, 100) m");
+  CaptureOptions o;
+  o.mounting = resolve_mounting(t, a.mounts);
+  o.release_button = a.button == "A" ? kButtonA : kButtonB;
+  o.start_height_m = a.start_height_m;
+  o.saturation_g = a.saturation_g;
+  o.max_accel_g = a.max_accel_g;
+  o.members = a.members;
+  o.seed = a.seed;
+  return o;
+}
+
+std::string folder_name(const std::string& file, std::vector<std::string>& used) {
+  std::string stem = fs::path(file).filename().string();
+  for (char& c : stem)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+  std::string name = stem;
+  for (int k = 2; std::find(used.begin(), used.end(), name) != used.end(); ++k) name = stem + "_" + std::to_string(k);
+  used.push_back(name);
+  return name;
+}
+
+void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
+  std::printf("%s: %s\n", an.source.c_str(), to_string(an.verdict));
+  for (const auto& r : an.reasons) std::printf("  - %s\n", r.c_str());
+  if (!an.can_throw()) return;
+  const auto show = [](const char* name, const Interval& v, const char* unit) {
+    std::printf("  %-22s %8.3f  [%.3f, %.3f] %s\n", name, v.nominal, v.low, v.high, unit);
+  };
+  const TimingStats& t = an.timing.stats;
+  std::printf("  rate %.1f Hz, jitter %.2f ms, %d gaps (%ld reports lost), %zu repeats, saturated fraction %.3f\n",
+              t.rate_hz, 1e3 * t.jitter_s, t.gaps, t.dropped_reports, t.repeated, an.saturated_fraction);
+  show("release speed", an.speed_m_s, an.clipped ? "m/s (accelerometer clipped: lower bound from it)" : "m/s");
+  show("  accelerometer", an.accel_speed_m_s, "m/s");
+  show("  angular rate x lever", an.lever_speed_m_s, "m/s");
+  show("attack angle", an.attack_angle_deg, "deg");
+  show("path angle", an.path_angle_deg, "deg");
+  show("spin", an.spin_rev_s, "rev/s");
+  show("release height", an.height_m, "m");
+  if (sim) {
+    if (sim->realtime) std::printf("  bounces: real-time %d", sim->realtime->bounces);
+    if (sim->reference) std::printf(", reference %d", sim->reference->bounces);
+    if (!sim->ensemble_bounces.empty())
+      std::printf(", ensemble median %d [%d, %d] of %zu", sim->bounces_median, sim->bounces_low, sim->bounces_high,
+                  sim->ensemble_bounces.size());
+    std::printf("\n");
+  }
+}
+
+void validate(const CaptureArgs& a) {
+  std::optional<StoneCase> c;
+  if (!a.no_simulate) c = load_stone_case(a.case_file, a.sets);
+  if (!a.out.empty()) fs::create_directories(a.out);
+  std::vector<std::unique_ptr<CaptureAnalysis>> analyses;
+  std::vector<std::unique_ptr<CaptureSimulation>> sims;
+  std::vector<CaptureIndexEntry> index;
+  std::vector<std::string> used;
+  CaptureReportContext ctx;
+  ctx.case_file = a.case_file;
+  ctx.command_line = "stoneskip capture validate";
+  for (const auto& f : a.files) ctx.command_line += " " + f;
+  if (!a.out.empty()) ctx.command_line += " --out " + a.out;
+  if (a.case_file != "cases/paper_8ms_spin.toml") ctx.command_line += " --case " + a.case_file;
+  for (const auto& m : a.mounts) ctx.command_line += " --mount " + m;
+  if (c) {
+    ctx.case_text = c->text;
+    ctx.stone_description = c->stone.description;
+  }
+  bool unreadable = false, unusable = false;
+  for (const auto& file : a.files) {
+    Trace trace;
+    try {
+      trace = read_capture(file, a.format);
+    } catch (const InputError& e) {
+      // One bad file does not stop the others; it is reported and the exit status says so.
+      unreadable = true;
+      if (a.json) {
+        nlohmann::json j{{"file", file}, {"verdict", "unusable"}, {"reasons", {e.what()}}, {"error", e.what()}};
+        std::cout << j.dump() << std::endl;
+      } else {
+        std::fprintf(stderr, "stoneskip: %s\n", e.what());
+      }
+      continue;
+    }
+    auto an = std::make_unique<CaptureAnalysis>(analyse_capture(trace, capture_options(a, trace)));
+    auto sim = std::make_unique<CaptureSimulation>();
+    if (c && an->can_throw()) {
+      CaptureSimulationOptions so;
+      so.reference = !a.no_reference;
+      so.realtime_options = c->realtime;
+      so.reference_options = c->reference;
+      so.progress = a.progress;
+      *sim = simulate_capture(c->stone, c->environment, *an, so);
+    }
+    unusable = unusable || !an->can_throw();
+    if (a.json) std::cout << capture_json(*an, c ? sim.get() : nullptr).dump() << std::endl;
+    else print_verdict(*an, c ? sim.get() : nullptr);
+    if (!a.out.empty()) {
+      const std::string folder = folder_name(file, used);
+      const auto r = write_capture_report(fs::path(a.out) / folder, *an, *sim, ctx);
+      for (const auto& f : r.figures.failures) std::fprintf(stderr, "figure failed: %s\n", f.c_str());
+      if (!r.gnuplot) std::fprintf(stderr, "gnuplot not found: figures stored in data.h5 but not drawn\n");
+      if (!a.json) std::printf("  report: %s\n", r.index_md.c_str());
+      index.push_back({folder, an.get(), sim.get()});
+    }
+    analyses.push_back(std::move(an));
+    sims.push_back(std::move(sim));
+  }
+  if (!a.out.empty() && !index.empty()) write_capture_index(a.out, index, ctx);
+  if (unreadable) throw InputError("capture validate: at least one capture could not be read (see above)");
+  if (a.strict && unusable) set_exit_code(1);
+}
+
+void throw_capture(const CaptureArgs& a) {
+  StoneCase c = load_stone_case(a.case_file, a.sets);
+  if (!a.out.empty()) AtomicOutput check(a.out);
+  const Trace trace = read_capture(a.files.front(), a.format);
+  CaptureOptions o = capture_options(a, trace);
+  o.members = 0;  // the intervals are validate's business; the throw is the nominal one
+  const CaptureAnalysis an = analyse_capture(trace, o);
+  if (!an.can_throw())
+    throw_input_error(a.files.front(), 0, "", std::string("unusable capture: ") + (an.reasons.empty() ? "" : an.reasons.front()));
+  c.initial = capture_initial_state(c.stone, an.nominal);
+  c.throw_from_parameters = false;
+  c.title = "capture " + a.files.front();
+  std::vector<std::pair<std::string, ThrowResult>> results;
+  if (a.solver == "realtime" || a.solver == "both")
+    results.emplace_back("realtime", run_realtime(c.stone, c.environment, c.initial, c.realtime));
+  if (a.solver == "reference" || a.solver == "both")
+    results.emplace_back("reference", run_reference(c.stone, c.environment, c.initial, c.reference));
+  if (a.json) {
+    nlohmann::json j = capture_json(an, nullptr);
+    for (const auto& [name, r] : results) j[name] = json_summary(r);
+    std::cout << j.dump(2) << std::endl;
+  } else {
+    print_verdict(an, nullptr);
+    for (const auto& [name, r] : results) std::cout << text_summary(c, r) << "\n";
+  }
+  if (!a.out.empty()) {
+    std::vector<std::pair<std::string, const ThrowResult*>> refs;
+    for (const auto& [name, r] : results) refs.emplace_back(name, &r);
+    write_throw_file(a.out, c, refs);
+  }
+  for (const auto& [name, r] : results)
+    if (r.outcome == Outcome::failed) set_exit_code(1);
+}
+
+void convert(const CaptureArgs& a) {
+  Trace t = read_capture(a.files.front(), a.format);
+  for (const auto& w : t.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  write_text_file(a.out, trace_csv_text(t));
+  std::printf("wrote %s (%zu samples from %s)\n", a.out.c_str(), t.samples.size(), t.format.c_str());
+}
+
+// The shipped synthetic captures (cases/captures/): each with its .truth.toml.
+void synthesize(const CaptureArgs& a) {
+  fs::create_directories(a.out);
+  struct Item {
+    std::string name;
+    SyntheticThrow th;
+    SyntheticSensor s;
+    int kind;  // 0 log, 1 evemu, 2 gesture
+  };
+  SyntheticThrow gentle;
+  gentle.swing_rate_rad_s = 7.0;
+  gentle.pivot_speed_m_s = 1.0;
+  SyntheticThrow hard;  // Ω = 14 rad/s: clips a real remote
+  SyntheticSensor lossy;
+  lossy.drop_probability = 0.06;
+  lossy.jitter_s = 0.0045;
+  lossy.seed = 7;
+  SyntheticThrow no_still = gentle;
+  no_still.still_s = 0.1;
+  no_still.press_at_s = 0.0;
+  SyntheticSensor s37;
+  s37.report_id = 0x37;
+  s37.seed = 3;
+  const std::vector<Item> items{{"gentle_sidearm.log", gentle, {}, 0},
+                                {"hard_sidearm_clipped.log", hard, s37, 0},
+                                {"gentle_sidearm.evemu", gentle, {}, 1},
+                                {"gentle_sidearm_gesture.txt", gentle, {}, 2},
+                                {"lossy_sidearm.log", gentle, lossy, 0},
+                                {"no_still_part.log", no_still, {}, 0}};
+  for (const auto& it : items) {
+    SyntheticTruth truth;
+    const std::string text = it.kind == 0 ? synthetic_report_log(it.th, it.s, truth)
+                             : it.kind == 1 ? synthetic_evemu(it.th, it.s, truth)
+                                            : synthetic_gesture(it.th, it.s, truth);
+    write_text_file(fs::path(a.out) / it.name, text);
+    write_text_file(fs::path(a.out) / (fs::path(it.name).stem().string() + (it.kind == 2 ? "" : fs::path(it.name).extension().string()) + ".truth.toml"),
+                    truth.toml());
+    std::printf("wrote %s (truth: %.3f m/s, attack %.2f deg, path %.2f deg)\n", it.name.c_str(), truth.speed_m_s,
+                truth.attack_angle_deg, truth.path_angle_deg);
+  }
+}
+
+void add_capture(CLI::App& app) {
+  auto* cmd = app.add_subcommand("capture", "Wii Remote captures: validate them, convert them, throw them");
+  cmd->require_subcommand(1);
+  auto a = std::make_shared<CaptureArgs>();
+
+  auto* v = cmd->add_subcommand("validate", "Judge captures (verdict, timing, clipping, still part, release, throw with intervals, bounce counts)");
+  v->add_option("FILE", a->files, "Capture files (any format)")->required();
+  v->add_flag("--json", a->json, "One JSON object per capture (one per line)");
+  v->add_option("--out", a->out, "Write a report page per capture into DIR/<capture>/ and DIR/index.md");
+  v->add_flag("--no-reference", a->no_reference, "Skip the CVODE reference run of the nominal throw");
+  v->add_flag("--no-simulate", a->no_simulate, "Skip the solvers (no case file needed)");
+  v->add_flag("--strict", a->strict, "Exit with status 1 if a capture is unusable");
+  v->add_flag("--progress", a->progress, "Show the ensemble's progress on stderr");
+  add_common(v, *a);
+  add_case(v, *a);
+  v->callback([a] { validate(*a); });
+
+  auto* t = cmd->add_subcommand("throw", "Run the throw a capture records through the solvers");
+  t->add_option("FILE", a->files, "Capture file")->required()->expected(1);
+  t->add_option("--solver", a->solver, "realtime, reference or both (default)")->check(CLI::IsMember({"realtime", "reference", "both"}));
+  t->add_flag("--json", a->json, "Print one JSON object");
+  t->add_option("--out", a->out, "Write the trajectories and the case to this HDF5 file");
+  add_common(t, *a);
+  add_case(t, *a);
+  t->callback([a] { throw_capture(*a); });
+
+  auto* c = cmd->add_subcommand("convert", "Write any capture as a stoneskip trace CSV");
+  c->add_option("FILE", a->files, "Capture file")->required()->expected(1);
+  c->add_option("--out", a->out, "Trace CSV to write")->required();
+  c->add_option("--format", a->format, "Force a reader")->check(CLI::IsMember({"auto", "trace_csv", "report_log", "evemu", "gesture"}));
+  c->callback([a] { convert(*a); });
+
+  auto* s = cmd->add_subcommand("synthesize", "Write the shipped synthetic captures and their truth files");
+  s->add_option("--out", a->out, "Folder (e.g. cases/captures)")->required();
+  s->callback([a] { synthesize(*a); });
+}
+
+const bool kRegistered = register_command(add_capture);
+
+}  // namespace
+}  // namespace stoneskip::cli

@@ -1,0 +1,77 @@
+// End-to-end tests of `stoneskip wave`: the built executable run on the shipped wave cases.
+#include <boost/test/unit_test.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+struct Ran {
+  int status = -1;
+  std::string out;
+};
+
+// Runs the executable with arguments (stderr folded into stdout, or dropped) and returns its exit status.
+Ran run_stoneskip(const std::string& args, bool keep_stderr = true) {
+  Ran r;
+  std::string cmd = std::string(STONESKIP_EXE) + " " + args + (keep_stderr ? " 2>&1" : " 2>/dev/null");
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buf{};
+  while (std::fgets(buf.data(), buf.size(), p)) r.out += buf.data();
+  int st = pclose(p);
+  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return r;
+}
+
+nlohmann::json run_json(const std::string& args) {
+  Ran r = run_stoneskip(args + " --json", false);  // stderr may carry notes; stdout is the JSON
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
+  return nlohmann::json::parse(r.out);
+}
+
+BOOST_AUTO_TEST_SUITE(wave_command_)
+
+BOOST_AUTO_TEST_CASE(leapfrog_time_error_falls_fourfold_when_the_step_is_halved) {
+  // Oracle: the leapfrog is second order in time, so against the stencil's exact semi-discrete
+  // solution ([reference] symbol = "stencil") halving dt divides the error by 4; 3.6–4.4 allows
+  // the O(dt⁴) remainder at sigma = 0.25.
+  const std::string base = "wave cases/wave_gaussian_five_point.toml --set reference.symbol=stencil";
+  nlohmann::json a = run_json(base + " --set water.dt_s=0.001953125");
+  nlohmann::json b = run_json(base + " --set water.dt_s=0.0009765625");
+  BOOST_TEST(a["steps"].get<long>() == 256);
+  BOOST_TEST(b["steps"].get<long>() == 512);
+  BOOST_TEST(a["stencil"].get<std::string>() == "five_point");
+  const double ratio = a["l2_error"].get<double>() / b["l2_error"].get<double>();
+  BOOST_TEST(ratio >= 3.6);
+  BOOST_TEST(ratio <= 4.4);
+  const double ratio_max = a["max_error"].get<double>() / b["max_error"].get<double>();
+  BOOST_TEST(ratio_max >= 3.6);
+  BOOST_TEST(ratio_max <= 4.4);
+}
+
+BOOST_AUTO_TEST_CASE(lengyel_counterexample_grows_by_the_predicted_factor) {
+  // Oracle: spec §2.2 — five-point, μΔt = 0.5, σ = 0.75: the checkerboard grows by
+  // (5 + √10)/5 ≈ 1.632 per step; after 60 steps from a 1 cm impulse the RMS is ~1.63^60 × the
+  // impulse's share of that mode, far above any physical height (we ask for > 1e6 m).
+  nlohmann::json j = run_json("wave cases/wave_lengyel_counterexample.toml");
+  BOOST_TEST(j["courant"].get<double>() > j["stability_limit"].get<double>());
+  BOOST_TEST(j["solution_rms_m"].get<double>() > 1e6);
+}
+
+BOOST_AUTO_TEST_CASE(misspelt_key_is_rejected_with_its_name_and_status_2) {
+  // Oracle: cases/README.md — an unknown key is an error naming the key, exit status 2.
+  Ran r = run_stoneskip("wave cases/wave_gaussian_five_point.toml --set water.wave_sped_m_s=2");
+  BOOST_TEST(r.status == 2);
+  BOOST_TEST(r.out.find("water.wave_sped_m_s") != std::string::npos, r.out);
+  Ran k = run_stoneskip("wave cases/wave_gaussian_five_point.toml --set initial.wavelength_m=0.2");
+  BOOST_TEST(k.status == 2);  // a key the gaussian does not use
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace

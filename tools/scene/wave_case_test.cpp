@@ -1,0 +1,80 @@
+#include "tools/scene/wave_case.hpp"
+
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+
+#include "tools/io/input_error.hpp"
+
+namespace stoneskip {
+namespace {
+
+const char* kBase = R"(
+[water]
+stencil = "custom"
+nx = 40
+ny = 30
+cell_m = 0.02
+wave_speed_m_s = 0.8
+dt_s = 0.01
+t_end_s = 0.105
+[stencil]
+centre = -3.5
+orth = 0.75
+diag = 0.125
+[initial]
+kind = "ring"
+amplitude_m = 0.01
+width_m = 0.05
+radius_m = 0.2
+x_m = 0.4
+y_m = 0.3
+)";
+
+std::string error_of(const std::string& text, const std::vector<std::string>& sets = {}) {
+  try {
+    wave_case_from_document(parse_toml_text(text, "case.toml", sets));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+BOOST_AUTO_TEST_SUITE(wave_case_)
+
+BOOST_AUTO_TEST_CASE(custom_stencil_and_ring_are_read_as_written) {
+  // Oracle: the values in kBase; steps = ⌈0.105/0.01⌉ = 11; defaults periodic, μ = 0.
+  WaveCase c = wave_case_from_document(parse_toml_text(kBase, "case.toml"));
+  BOOST_TEST(c.water.stencil.name == "custom");
+  BOOST_TEST(c.water.stencil.centre == -3.5);
+  BOOST_TEST(c.water.stencil.orth == 0.75);
+  BOOST_TEST(c.water.stencil.diag == 0.125);
+  BOOST_TEST(c.water.nx == 40);
+  BOOST_TEST(c.water.ny == 30);
+  BOOST_TEST(c.steps() == 11);
+  BOOST_TEST(c.water.damping_per_s == 0.0);
+  BOOST_TEST((c.water.boundary == Boundary::periodic));
+  BOOST_TEST((c.initial.kind == DisturbanceKind::ring));
+  BOOST_TEST(c.initial.radius_m == 0.2);
+}
+
+BOOST_AUTO_TEST_CASE(named_stencil_replaces_the_custom_weights_only_without_a_stencil_table) {
+  // Oracle: cases/README.md — [stencil] is allowed only with stencil = "custom".
+  const std::string e = error_of(kBase, {"water.stencil=five_point"});
+  BOOST_TEST(e.find("stencil") != std::string::npos, e);
+}
+
+BOOST_AUTO_TEST_CASE(keys_the_kind_does_not_use_and_bad_values_are_rejected_by_name) {
+  // Oracle: cases/README.md — only the keys a kind uses are allowed; ranges as documented.
+  BOOST_TEST(error_of(kBase, {"initial.wavelength_m=0.1"}).find("initial.wavelength_m") != std::string::npos);
+  BOOST_TEST(error_of(kBase, {"water.nx=2"}).find("water.nx") != std::string::npos);
+  BOOST_TEST(error_of(kBase, {"water.boundary=open"}).find("water.boundary") != std::string::npos);
+  BOOST_TEST(error_of(kBase, {"initial.kind=square"}).find("initial.kind") != std::string::npos);
+  BOOST_TEST(error_of(kBase, {"water.dt_s=-1"}).find("water.dt_s") != std::string::npos);
+  BOOST_TEST(error_of(kBase, {"reference.symbol=exact"}).find("reference.symbol") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace
+}  // namespace stoneskip

@@ -1,0 +1,67 @@
+#pragma once
+// Convergence of a stencil on the fixed wave problem (verification/waves/wave_problem.hpp),
+// with the error split three ways (spec §2.3):
+//   space: the exact semi-discrete solution of the stencil vs the exact continuum solution,
+//          on grids n = 32, 64, ... (no time error at all);
+//   time:  the leapfrog vs the exact semi-discrete solution on one grid, Δt halved (no space error);
+//   both:  the leapfrog vs the exact continuum solution, grid and Δt refined together at fixed σ.
+// Each sequence gets a least-squares order with its 95 % interval (verification/convergence/
+// order_fit.hpp), fitted on its finest points (the asymptotic range), and the "both" sequence a
+// Grid Convergence Index on a point value (verification/convergence/gci.hpp).
+#include <string>
+#include <vector>
+
+#include "model/water/stencil.hpp"
+#include "verification/convergence/gci.hpp"
+#include "verification/convergence/order_fit.hpp"
+#include "verification/waves/wave_problem.hpp"
+
+namespace stoneskip {
+
+class Progress;
+
+struct ConvergencePoint {
+  int n = 0;
+  long steps = 0;
+  double h = 0;        // the refined size: d (space, both) or Δt (time)
+  double sigma = 0;    // cΔt/d (NaN for space: no time stepping)
+  double l2_m = 0, max_m = 0;
+  double cpu_s = 0;    // leapfrog stepping (0 for space)
+  double point_m = 0;  // the height at (3/4, 1/2) L at t_end (GCI functional)
+};
+
+struct ConvergenceSequence {
+  std::string kind;  // "space", "time", "both"
+  std::vector<ConvergencePoint> points;
+  OrderFit fit;             // on the finest `fit_points` points, l2 norm
+  OrderFit fit_max;         // same, max norm
+  OrderVerdict verdict = OrderVerdict::insufficient_data;
+  GciResult gci;            // "both" only: three finest point values
+  double point_exact_m = 0; // "both" only: the continuum value at the finest grid
+};
+
+struct ConvergenceStudyOptions {
+  WaveProblem problem;
+  std::vector<int> space_grids{32, 64, 128, 256, 512};
+  int time_grid = 64;
+  std::vector<long> time_steps{64, 128, 256, 512, 1024};  // σ = 0.5 … 0.03 at n = 64
+  std::vector<int> both_grids{32, 64, 128, 256};
+  double both_sigma = 0.5;
+  int fit_points = 3;
+  OrderJudgement judgement;  // expected order 2 ± 0.1
+};
+
+struct ConvergenceStudy {
+  std::string stencil;
+  ConvergenceSequence space, time, both;
+};
+
+ConvergenceStudy run_convergence_study(const Stencil& stencil, const ConvergenceStudyOptions& options,
+                                       Progress* progress = nullptr);
+// Work units (≈ cell updates) the study will do, for progress reporting.
+std::size_t convergence_study_work(const ConvergenceStudyOptions& options);
+
+// The order fit of the finest `fit_points` of a sequence (both norms) and its verdict.
+void fit_sequence(ConvergenceSequence& s, int fit_points, const OrderJudgement& judgement);
+
+}  // namespace stoneskip

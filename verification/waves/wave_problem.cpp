@@ -1,0 +1,65 @@
+#include "verification/waves/wave_problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "verification/waves/cpu_timer.hpp"
+
+namespace stoneskip {
+
+FieldError field_error(const std::vector<double>& a, const std::vector<double>& b) {
+  FieldError e;
+  double s = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const double d = a[k] - b[k];
+    s += d * d;
+    e.max_m = std::max(e.max_m, std::abs(d));
+  }
+  e.l2_m = std::sqrt(s / static_cast<double>(a.size()));
+  return e;
+}
+
+std::vector<double> initial_surface(const WaveProblem& p, int n) {
+  std::vector<double> z;
+  sample_disturbance(p.initial, n, n, p.length_m / n, z);
+  return z;
+}
+
+LeapfrogResult solve_leapfrog(const WaveProblem& p, const Stencil& stencil, int n, long steps) {
+  HeightFieldOptions o;
+  o.nx = o.ny = n;
+  o.cell_m = p.length_m / n;
+  o.wave_speed_m_s = p.wave_speed_m_s;
+  o.damping_per_s = p.damping_per_s;
+  o.dt_s = p.t_end_s / steps;
+  o.stencil = stencil;
+  o.boundary = Boundary::periodic;
+  HeightField f(o);
+  f.set_state(initial_surface(p, n));
+  LeapfrogResult r;
+  CpuTimer timer;
+  f.advance(steps);
+  r.cpu_s = timer.seconds();
+  r.steps = steps;
+  r.dt_s = o.dt_s;
+  r.t_s = f.time_s();
+  f.heights(r.z);
+  return r;
+}
+
+std::vector<double> solve_spectral(const WaveProblem& p, int n, SpectralSymbol symbol, const Stencil& stencil) {
+  SpectralWaveOptions o;
+  o.nx = o.ny = n;
+  o.cell_m = p.length_m / n;
+  o.wave_speed_m_s = p.wave_speed_m_s;
+  o.damping_per_s = p.damping_per_s;
+  o.symbol = symbol;
+  o.stencil = stencil;
+  SpectralWave w(o);
+  w.set_initial(initial_surface(p, n));
+  std::vector<double> z;
+  w.evaluate(p.t_end_s, z);
+  return z;
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,46 @@
+#pragma once
+// The fixed physical problem of the wave studies and the two ways of solving it that the studies
+// compare: the leapfrog height field and the spectral reference (continuum or semi-discrete).
+//   Unit periodic square, c = 1 m/s, μ = 0.5 /s, a Gaussian bump of amplitude 1 cm and width
+//   0.1 m at the centre, at rest; the surface at t_end = 0.5 s.
+// Errors are RMS over the domain (the discrete L2 norm divided by √area) and the max norm.
+#include <string>
+#include <vector>
+
+#include "model/water/disturbance.hpp"
+#include "model/water/height_field.hpp"
+#include "solvers/spectral/spectral_wave.hpp"
+
+namespace stoneskip {
+
+struct WaveProblem {
+  double length_m = 1;
+  double wave_speed_m_s = 1;
+  double damping_per_s = 0.5;
+  double t_end_s = 0.5;
+  Disturbance initial{DisturbanceKind::gaussian, 0.01, 0.1, 0.5, 0.5, 0.2, 0, 0.25};
+};
+
+struct FieldError {
+  double l2_m = 0;   // RMS of the difference over the domain
+  double max_m = 0;  // largest absolute difference
+};
+FieldError field_error(const std::vector<double>& a, const std::vector<double>& b);
+
+// The problem's initial surface on an n × n grid.
+std::vector<double> initial_surface(const WaveProblem& p, int n);
+
+struct LeapfrogResult {
+  std::vector<double> z;  // the surface at the end
+  long steps = 0;
+  double dt_s = 0;
+  double t_s = 0;     // steps · dt
+  double cpu_s = 0;   // stepping only
+};
+// Leapfrog with `steps` equal steps to t_end on an n × n periodic grid.
+LeapfrogResult solve_leapfrog(const WaveProblem& p, const Stencil& stencil, int n, long steps);
+
+// The spectral reference at t_end: continuum symbol, or the stencil's (semi-discrete exact).
+std::vector<double> solve_spectral(const WaveProblem& p, int n, SpectralSymbol symbol, const Stencil& stencil = {});
+
+}  // namespace stoneskip
