@@ -1,6 +1,7 @@
 #include "tools/io/toml_table.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "tools/io/atomic_file.hpp"
@@ -239,6 +240,16 @@ TomlDocument parse_toml_text(const std::string& text, const std::string& name,
   }
   for (const auto& o : overrides) apply_override(doc.root, name, o);
   return doc;
+}
+
+std::string read_case_title(TomlTable& top) {
+  std::string title = std::filesystem::path(top.file()).stem().string();
+  if (auto meta = top.maybe_table("case")) {
+    title = meta->string_or("title", title);
+    meta->string_or("description", "");
+    meta->finish();
+  }
+  return title;
 }
 
 TomlDocument load_toml(const std::string& path, const std::vector<std::string>& overrides) {

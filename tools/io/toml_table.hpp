@@ -65,6 +65,10 @@ struct TomlDocument {
   TomlTable top() const { return TomlTable(&root, file, ""); }
 };
 
+// The optional [case] table every case file may open with (title, description); returns the
+// title, or the file's stem when none is given.
+std::string read_case_title(TomlTable& top);
+
 TomlDocument load_toml(const std::string& path, const std::vector<std::string>& overrides = {});
 TomlDocument parse_toml_text(const std::string& text, const std::string& name,
                              const std::vector<std::string>& overrides = {});

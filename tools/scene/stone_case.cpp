@@ -199,12 +199,7 @@ StoneCase stone_case_from_document(const TomlDocument& doc) {
   c.text = doc.text;
   c.overrides = doc.overrides;
   TomlTable top = doc.top();
-  c.title = std::filesystem::path(doc.file).stem().string();
-  if (auto meta = top.maybe_table("case")) {
-    c.title = meta->string_or("title", c.title);
-    meta->string_or("description", "");
-    meta->finish();
-  }
+  c.title = read_case_title(top);
   c.spec = read_stone(top.table("stone"), doc.file);
   c.stone = build_stone(c.spec, doc.file);
   if (auto env = top.maybe_table("environment"))

@@ -100,12 +100,7 @@ WaveCase wave_case_from_document(const TomlDocument& doc) {
   c.text = doc.text;
   c.overrides = doc.overrides;
   TomlTable top = doc.top();
-  c.title = std::filesystem::path(doc.file).stem().string();
-  if (auto meta = top.maybe_table("case")) {
-    c.title = meta->string_or("title", c.title);
-    meta->string_or("description", "");
-    meta->finish();
-  }
+  c.title = read_case_title(top);
   read_water(top.table("water"), top, c);
   read_initial(top.table("initial"), c);
   if (auto ref = top.maybe_table("reference")) {
