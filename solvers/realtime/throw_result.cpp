@@ -25,6 +25,7 @@ void ContactLog::start(double t_s, const RigidState& s, const Vec3& first_touch_
   c.entry_attack_angle_deg = a.attack_angle_deg;
   c.entry_energy_J = energy_J;
   c.first_touch_m = first_touch_m;
+  c.entry_position_m = s.position_m;
   contacts_.push_back(c);
   open_ = true;
 }

@@ -25,6 +25,7 @@ struct ContactRecord {
   double entry_attack_angle_deg = 0, exit_attack_angle_deg = 0;
   double entry_energy_J = 0, exit_energy_J = 0;
   Vec3 first_touch_m = Vec3::Zero();  // the first vertex to go under
+  Vec3 entry_position_m = Vec3::Zero();  // centre of mass when the contact started
   Vec3 exit_position_m = Vec3::Zero();  // centre of mass when the contact ended
   double max_wetted_area_m2 = 0;
   bool bounced = false;  // ended with the stone leaving the water

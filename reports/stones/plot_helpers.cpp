@@ -1,0 +1,54 @@
+#include "reports/stones/plot_helpers.hpp"
+
+#include <limits>
+#include <sstream>
+
+namespace stoneskip {
+
+std::string gnuplot_quote(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '\'') out += "''";
+    else if (c == '_') out += ' ';  // enhanced text would make the next letter a subscript
+    else out += c;
+  }
+  return "'" + out + "'";
+}
+
+Figure line_figure(const std::string& name, const std::string& title, const PlotAxes& axes,
+                   const std::vector<PlotSeries>& series, const std::string& x_column, const std::string& y_column) {
+  Figure f;
+  f.name = name;
+  f.title = title;
+  std::ostringstream s;
+  s << "set title " << gnuplot_quote(title) << "\n";
+  s << "set xlabel " << gnuplot_quote(axes.x_label) << "\nset ylabel " << gnuplot_quote(axes.y_label) << "\n";
+  if (axes.log_x) s << "set logscale x\nset format x '10^{%L}'\n";
+  if (axes.log_y) s << "set logscale y\nset format y '10^{%L}'\n";
+  s << "set grid\nset key below maxrows 4 width -2\n";
+  s << axes.extra << "\n";
+  std::vector<std::string> clauses;
+  for (std::size_t i = 0; i < series.size(); ++i) {
+    const PlotSeries& p = series[i];
+    Table t;
+    t.columns = {x_column, y_column};
+    bool any = false;
+    for (std::size_t k = 0; k < p.x.size() && k < p.y.size(); ++k) {
+      t.add_row({p.x[k], p.y[k]});
+      any = true;
+    }
+    if (!any) t.add_row({std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()});  // an empty series still has a legend entry
+    const std::string tname = name + "_" + std::to_string(i);
+    f.tables.emplace_back(tname, t);
+    clauses.push_back("'" + tname + ".dat' using 1:2 with " + p.style + " title " + gnuplot_quote(p.title));
+  }
+  s << "plot ";
+  for (std::size_t i = 0; i < clauses.size(); ++i) s << (i ? ", \\\n     " : "") << clauses[i];
+  s << "\n";
+  f.script = s.str();
+  f.width_px = 1000;
+  f.height_px = 560;
+  return f;
+}
+
+}  // namespace stoneskip

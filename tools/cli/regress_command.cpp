@@ -1,0 +1,97 @@
+// stoneskip regress [--baseline FILE...] [--update] [--workers N]
+//
+// Recomputes the golden bounce-count curves stored in cases/baselines/*.toml (or the files given)
+// and prints a difference report: counts must match exactly away from thresholds, thresholds
+// (bisected) must match within each baseline's compare_tolerance. Exit status 1 on a regression,
+// 2 on bad input. --update rewrites each baseline's [result] from the recomputed curve (its
+// settings are kept), for when a change of the model is intended.
+//
+//   stoneskip regress                                     # all stored baselines (< 1 min)
+//   stoneskip regress --baseline cases/baselines/spin_paper_realtime.toml
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "stoneskip_version.hpp"
+#include "tools/cli/command_registry.hpp"
+#include "tools/io/atomic_file.hpp"
+#include "tools/io/input_error.hpp"
+#include "verification/stones/bounce_baseline.hpp"
+
+namespace stoneskip::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> default_baselines() {
+  std::vector<std::string> files;
+  const fs::path dir = "cases/baselines";
+  if (!fs::is_directory(dir))
+    throw_input_error(dir.string(), 0, "", "no baseline folder here (run from the repository root, or give --baseline FILE)");
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".toml") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  if (files.empty()) throw_input_error(dir.string(), 0, "", "no *.toml baselines in this folder");
+  return files;
+}
+
+std::string today_utc() {
+  const std::time_t t = std::time(nullptr);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d", std::gmtime(&t));
+  return buf;
+}
+
+void add_regress(CLI::App& app) {
+  auto* cmd = app.add_subcommand("regress", "Recompute the stored bounce-count baselines and report differences (exit 1 on a regression)");
+  auto files = std::make_shared<std::vector<std::string>>();
+  auto update = std::make_shared<bool>(false);
+  auto workers = std::make_shared<int>(2);
+  cmd->add_option("--baseline", *files, "Baseline files (default: cases/baselines/*.toml)");
+  cmd->add_flag("--update", *update, "Rewrite each baseline's [result] from the recomputed curve");
+  cmd->add_option("--workers", *workers, "Worker threads")->capture_default_str()->check(CLI::Range(1, 64));
+  cmd->callback([files, update, workers] {
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::vector<std::string> paths = files->empty() ? default_baselines() : *files;
+    // Read everything first: bad input is reported before any work.
+    std::vector<BounceBaseline> stored;
+    std::vector<BounceSweepSpec> specs;
+    for (const auto& p : paths) {
+      stored.push_back(read_baseline(p));
+      specs.push_back(sweep_of(stored.back()));
+    }
+    std::printf("regress: %zu baseline%s\n", paths.size(), paths.size() == 1 ? "" : "s");
+    const auto results = run_bounce_sweeps(specs, ParallelOptions{*workers, "regress"});
+    int failed = 0;
+    for (std::size_t i = 0; i < stored.size(); ++i) {
+      const BounceBaseline& b = stored[i];
+      if (*update) {
+        write_text_file(b.file, baseline_text(b, results[i], std::string("stoneskip ") + kVersion + " (git " + kGitDescribe + "), " + today_utc()));
+        std::printf("  %-34s UPDATED  %zu grid values, %zu thresholds (%s)\n", b.name.c_str(), results[i].counts.size(),
+                    results[i].thresholds.size(), b.file.c_str());
+        continue;
+      }
+      const BaselineComparison c = compare_with_baseline(b, results[i]);
+      std::printf("  %-34s %s  %d grid values, %d thresholds; %s, %s  (%s)\n", b.name.c_str(), c.passed ? "PASS" : "FAIL",
+                  c.grid_points, c.thresholds, to_string(b.parameter), specs[i].solver.label().c_str(), b.file.c_str());
+      for (const auto& r : c.regressions) std::printf("      REGRESSION: %s\n", r.c_str());
+      for (const auto& r : c.tolerated) std::printf("      tolerated:  %s\n", r.c_str());
+      if (!c.passed) ++failed;
+    }
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (*update) {
+      std::printf("regress: %zu baselines rewritten in %.1f s\n", stored.size(), wall);
+      return;
+    }
+    std::printf("regress: %zu passed, %d failed (%.1f s)\n", stored.size() - failed, failed, wall);
+    if (failed) set_exit_code(1);
+  });
+}
+
+const bool kRegistered = register_command(add_regress);
+
+}  // namespace
+}  // namespace stoneskip::cli

@@ -1,0 +1,148 @@
+// End-to-end tests of `stoneskip regress`: the stored golden baselines (cases/baselines/*.toml)
+// pass; a copy with its counts deliberately changed fails with exit status 1 and names the
+// difference; bad input (missing file, misspelt key) exits 2 with a one-line message naming the
+// file and key. Oracles: the stored baselines themselves (made by `regress --update`), and a
+// perturbation that no correct run can reproduce (every count shifted by 7).
+#include <boost/test/unit_test.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <functional>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Run {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+fs::path scratch_dir() {
+  const fs::path dir = fs::temp_directory_path() / ("stoneskip_regress_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream f(p);
+  return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+}
+
+Run run(const std::string& args) {
+  const fs::path dir = scratch_dir();
+  const std::string cmd = std::string(STONESKIP_EXE) + " " + args + " >" + (dir / "o").string() + " 2>" + (dir / "e").string();
+  Run r;
+  const int raw = std::system(cmd.c_str());
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.out = slurp(dir / "o");
+  r.err = slurp(dir / "e");
+  return r;
+}
+
+// A copy of a stored baseline in a temporary folder, its case path made absolute (the tests run
+// in the repository root, as ctest's WORKING_DIRECTORY), with `edit` applied to its text.
+fs::path copy_baseline(const std::string& stored, const std::string& name,
+                       const std::function<std::string(const std::string&)>& edit) {
+  std::string text = slurp(stored);
+  text = std::regex_replace(text, std::regex("case = \"cases/"), "case = \"" + (fs::current_path() / "cases").string() + "/");
+  const fs::path out = scratch_dir() / name;
+  std::ofstream(out) << edit(text);
+  return out;
+}
+
+constexpr const char* kStored = "cases/baselines/spin_paper_realtime.toml";
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(regress_command)
+
+BOOST_AUTO_TEST_CASE(stored_baselines_pass) {
+  // Oracle: the stored curves, made by `stoneskip regress --update` from the same settings.
+  const Run r = run("regress");
+  BOOST_TEST_INFO("stdout:\n" << r.out << "\nstderr:\n" << r.err);
+  BOOST_TEST(r.status == 0);
+  BOOST_TEST(r.out.find(" 0 failed") != std::string::npos);
+  BOOST_TEST(r.out.find("REGRESSION") == std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(a_baseline_with_changed_counts_fails_and_names_the_difference) {
+  // Oracle: every stored count shifted by 7 — no run of the stored settings can give all of them,
+  // and a grid spacing (5 rev/s) far wider than compare_tolerance leaves values away from thresholds.
+  BOOST_REQUIRE(fs::exists(kStored));
+  const fs::path perturbed = copy_baseline(kStored, "perturbed.toml", [](const std::string& text) {
+    const std::regex counts_line("counts = \\[([^\\]]*)\\]");
+    std::smatch m;
+    std::string out = text;
+    if (std::regex_search(text, m, counts_line)) {
+      std::stringstream in(m[1].str()), shifted;
+      std::string item;
+      bool first = true;
+      while (std::getline(in, item, ',')) {
+        shifted << (first ? "" : ", ") << std::stoi(item) + 7;
+        first = false;
+      }
+      out = m.prefix().str() + "counts = [" + shifted.str() + "]" + m.suffix().str();
+    }
+    return out;
+  });
+  const Run r = run("regress --baseline " + perturbed.string());
+  BOOST_TEST_INFO("stdout:\n" << r.out << "\nstderr:\n" << r.err);
+  BOOST_TEST(r.status == 1);
+  BOOST_TEST(r.out.find("FAIL") != std::string::npos);
+  BOOST_TEST(r.out.find("REGRESSION: count at spin_rev_s = ") != std::string::npos);
+  BOOST_TEST(r.out.find("1 failed") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(a_moved_threshold_fails) {
+  // Oracle: the first stored threshold moved by 10 compare tolerances; a correct run puts it back.
+  BOOST_REQUIRE(fs::exists(kStored));
+  const std::string text = slurp(kStored);
+  if (text.find("threshold_lo = []") != std::string::npos) return;  // no threshold stored: nothing to move
+  const fs::path moved = copy_baseline(kStored, "moved.toml", [](const std::string& t) {
+    std::string out = t;
+    for (const char* key : {"threshold_lo = [", "threshold_hi = ["}) {
+      const std::size_t at = out.find(key);
+      const std::size_t start = at + std::string(key).size();
+      const std::size_t end = out.find_first_of(",]", start);
+      const double v = std::stod(out.substr(start, end - start)) + 5.0;  // 10 × compare_tolerance 0.5
+      out = out.substr(0, start) + std::to_string(v) + out.substr(end);
+    }
+    return out;
+  });
+  const Run r = run("regress --baseline " + moved.string());
+  BOOST_TEST_INFO("stdout:\n" << r.out << "\nstderr:\n" << r.err);
+  BOOST_TEST(r.status == 1);
+  BOOST_TEST(r.out.find("REGRESSION: threshold") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(a_missing_baseline_file_is_bad_input) {
+  // Oracle: the command-line contract (exit 2, one line naming the file).
+  const Run r = run("regress --baseline /nonexistent/baseline.toml");
+  BOOST_TEST(r.status == 2);
+  BOOST_TEST(r.err.find("/nonexistent/baseline.toml") != std::string::npos);
+  BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+}
+
+BOOST_AUTO_TEST_CASE(a_misspelt_key_is_bad_input_naming_the_key) {
+  // Oracle: strict case files — an unknown key is an error naming it, never a silent default.
+  BOOST_REQUIRE(fs::exists(kStored));
+  const fs::path bad = copy_baseline(kStored, "misspelt.toml", [](const std::string& t) {
+    return std::regex_replace(t, std::regex("compare_tolerance ="), "compare_tolerence =");
+  });
+  const Run r = run("regress --baseline " + bad.string());
+  BOOST_TEST(r.status == 2);
+  BOOST_TEST(r.err.find("compare_tolerence") != std::string::npos);
+  BOOST_TEST(r.err.find(bad.string()) != std::string::npos);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

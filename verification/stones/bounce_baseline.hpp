@@ -1,0 +1,72 @@
+#pragma once
+// Golden baselines of bounce-count curves (cases/baselines/*.toml) and the comparison that
+// `stoneskip regress` prints. A baseline file holds the settings that made it ([baseline]: the
+// case, swept parameter and grid, convention, solver, tolerances) and the result
+// ([result]: the count at each grid value and every bisected threshold).
+//
+// What counts as a regression:
+//  * a count at a grid value differs, unless a stored threshold lies within compare_tolerance of
+//    that value (there the count may legitimately fall either side);
+//  * a stored threshold has no recomputed threshold with the same counts on both sides within
+//    compare_tolerance of it, or a recomputed threshold has no stored one.
+// Bisection brackets a threshold to threshold_tolerance, so two runs of correct code agree to
+// within that; compare_tolerance (default 2 × threshold_tolerance) leaves room for round-off
+// moving a threshold across a bisection point.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "verification/stones/bounce_sweep.hpp"
+
+namespace stoneskip {
+
+struct BounceBaseline {
+  std::string file;              // as read
+  std::string name;
+  std::string description;
+  std::string case_file;         // as written in the baseline (relative to the repository root)
+  SweepParameter parameter = SweepParameter::spin_rev_s;
+  std::vector<double> values;
+  Convention convention = Convention::physical;
+  SolverKind solver = SolverKind::realtime;
+  // Solver settings given in the file (else the case's own [solver] / [reference]).
+  std::string scheme;            // realtime
+  double dt_s = 0, contact_dt_s = 0;
+  std::string method;            // reference
+  double rtol = 0, atol = 0;
+  double t_max_s = 0;            // 0: the case's
+  double threshold_tolerance = 0.1;
+  double compare_tolerance = 0.2;
+  // The stored result.
+  bool has_result = false;
+  std::string generated;         // code version and date of the run that made it
+  std::vector<int> counts;
+  std::vector<CountThreshold> thresholds;
+};
+
+// Reads a baseline file; InputError ("FILE:LINE: key: what") on anything malformed. A file
+// without [result] is accepted (has_result = false) so that `regress --update` can fill it.
+BounceBaseline read_baseline(const std::string& path);
+
+// The case file of a baseline: as written if it exists relative to the working directory, else
+// relative to the repository root two folders above the baseline (cases/baselines/X.toml).
+std::filesystem::path resolve_case_file(const BounceBaseline& b);
+
+// The sweep a baseline describes (loads the case; InputError on a bad case).
+BounceSweepSpec sweep_of(const BounceBaseline& b);
+
+// The baseline file's text with the result of a new run.
+std::string baseline_text(const BounceBaseline& settings, const BounceSweepResult& result, const std::string& generated);
+
+struct BaselineComparison {
+  std::string name;
+  bool passed = true;
+  std::vector<std::string> regressions;  // one line each
+  std::vector<std::string> tolerated;    // differences within the rules (near a threshold)
+  int grid_points = 0;
+  int thresholds = 0;
+};
+
+BaselineComparison compare_with_baseline(const BounceBaseline& stored, const BounceSweepResult& now);
+
+}  // namespace stoneskip

@@ -1,0 +1,50 @@
+#pragma once
+// Bounce count against one throw parameter (spin — the paper's Fig. 8 —, speed, attack angle,
+// path angle), with every change of the count located by bisection (issue 4, item 4): between two
+// neighbouring grid values whose counts differ, the parameter is halved down to a stated
+// tolerance, so a threshold is reported as a value ± tolerance/2, not only as counts on a grid.
+#include <string>
+#include <vector>
+
+#include "verification/stones/parallel_runs.hpp"
+#include "verification/stones/throw_problem.hpp"
+
+namespace stoneskip {
+
+enum class SweepParameter { spin_rev_s, speed_m_s, attack_angle_deg, path_angle_deg };
+const char* to_string(SweepParameter p);          // the [throw] key: "spin_rev_s", ...
+bool parse_sweep_parameter(const std::string& s, SweepParameter& out);
+double& parameter_of(ThrowParameters& tp, SweepParameter p);
+
+struct BounceSweepSpec {
+  std::string name;                 // [a-z0-9_], e.g. "spin_physical_realtime"
+  ThrowProblem base;                // the throw whose parameter is varied
+  SweepParameter parameter = SweepParameter::spin_rev_s;
+  std::vector<double> values;       // ascending grid
+  Convention convention = Convention::physical;
+  SolverChoice solver;
+  double threshold_tolerance = 0.1; // bisection stops when the bracket is narrower (parameter units)
+  int max_thresholds = 12;          // changes beyond this many are listed but not bisected
+};
+
+struct CountThreshold {
+  double lo = 0, hi = 0;            // count_below at lo, count_above at hi, hi − lo ≤ tolerance
+  int count_below = 0, count_above = 0;
+  bool bisected = false;            // false: only bracketed by the grid
+  double value() const { return 0.5 * (lo + hi); }
+};
+
+struct BounceSweepResult {
+  BounceSweepSpec spec;
+  std::vector<int> counts;          // per grid value; −1: the solver failed
+  std::vector<std::string> failures;  // per grid value: empty, or the reason
+  std::vector<CountThreshold> thresholds;
+  long runs = 0;                    // throws solved (grid + bisection)
+  double cpu_s = 0;                 // summed over the runs
+};
+
+// Runs every sweep's grid, then every bisection, sharing the workers.
+std::vector<BounceSweepResult> run_bounce_sweeps(const std::vector<BounceSweepSpec>& specs,
+                                                 const ParallelOptions& options);
+
+}  // namespace stoneskip

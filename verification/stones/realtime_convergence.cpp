@@ -1,0 +1,301 @@
+#include "verification/stones/realtime_convergence.hpp"
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <sstream>
+
+#include "verification/stones/contact_comparison.hpp"
+#include "verification/stones/parallel_runs.hpp"
+#include "verification/stones/state_error.hpp"
+
+namespace stoneskip {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// One run of the whole stepper at one step size.
+struct StepperPoint {
+  bool ok = false;
+  std::string problem;
+  ThrowResult full;
+  StateAt at_free_flight;
+};
+
+// Fills in_fit/notes from the errors and the reference's own error, then fits the order and (for
+// scalar quantities) the GCI of the three finest runs.
+void finish_series(ConvergenceSeries& s, double floor_factor) {
+  const std::size_t n = s.h_s.size();
+  s.in_fit.assign(n, false);
+  s.notes.resize(n);
+  std::vector<double> h, e;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(s.error[i])) {
+      if (s.notes[i].empty()) s.notes[i] = "failed";
+      continue;
+    }
+    if (s.error[i] <= floor_factor * s.reference_error) {
+      s.notes[i] = "below the reference's error bound";
+      continue;
+    }
+    s.in_fit[i] = true;
+    h.push_back(s.h_s[i]);
+    e.push_back(s.error[i]);
+  }
+  s.fit = fit_order(h, e);
+  // GCI (Celik et al. 2008) from the three finest steps with finite values; h_s is descending.
+  std::vector<std::size_t> idx;
+  for (std::size_t i = n; i-- > 0 && idx.size() < 3;)
+    if (std::isfinite(s.value[i])) idx.push_back(i);
+  if (idx.size() == 3) {
+    s.has_gci = true;
+    s.gci = grid_convergence_index(s.value[idx[0]], s.value[idx[1]], s.value[idx[2]], s.h_s[idx[0]], s.h_s[idx[1]],
+                                   s.h_s[idx[2]]);
+  }
+}
+
+ConvergenceSeries make_series(const std::string& quantity, const std::string& description, const std::string& unit,
+                              Scheme scheme) {
+  ConvergenceSeries s;
+  s.quantity = quantity;
+  s.description = description;
+  s.unit = unit;
+  s.scheme = to_string(scheme);
+  s.formal_order = formal_order(scheme);
+  return s;
+}
+
+}  // namespace
+
+RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const RealtimeConvergenceOptions& o) {
+  RealtimeConvergenceResult res;
+  res.case_label = p.label;
+  const ParallelOptions par{o.workers, ""};
+
+  // 1. Two references: the one we compare with and one 100x looser (the check), whose difference
+  //    bounds the reference's own error (the floor below which an observed error means nothing).
+  ReferenceOptions ref = p.reference;
+  ref.rtol = o.reference_rtol;
+  ref.atol = o.reference_atol;
+  ref.record_trajectory = false;
+  ReferenceOptions fine = ref;  // the check run
+  fine.rtol = ref.rtol * o.check_factor;
+  fine.atol = ref.atol * o.check_factor;
+  res.reference_rtol = ref.rtol;
+  res.check_rtol = fine.rtol;
+  ThrowResult r_ref, r_fine;
+  run_jobs({[&] { r_ref = solve(p, reference_choice(ref)); }, [&] { r_fine = solve(p, reference_choice(fine)); }}, par);
+  res.reference = r_ref;
+  if (r_ref.outcome == Outcome::failed) {
+    res.problems.push_back("the reference failed: " + r_ref.outcome_detail);
+    return res;
+  }
+  if (r_ref.contacts.empty()) {
+    res.problems.push_back("the throw never touches the water: no contact interval");
+    return res;
+  }
+
+  // 2. The intervals. Free flight: release to 80 % of the way to the first touch. Contact: the
+  //    first contact with a quarter of its duration of flight on each side.
+  const ContactRecord& c1 = r_ref.contacts[0];
+  const double dur = c1.end_s - c1.start_s;
+  res.flight_interval_start_s = 0;
+  res.flight_interval_end_s = 0.8 * c1.start_s;
+  res.contact_interval_start_s = c1.start_s - 0.25 * dur;
+  res.contact_interval_end_s = c1.bounced ? c1.end_s + 0.25 * dur : c1.end_s;
+  res.free_flight_time_s = kNaN;
+  if (c1.bounced) {
+    const double next = r_ref.contacts.size() > 1 ? r_ref.contacts[1].start_s : r_ref.end_time_s;
+    res.free_flight_time_s = 0.5 * (c1.end_s + next);
+  } else {
+    res.problems.push_back("the stone does not bounce at its first contact: no free flight after it to compare");
+  }
+  if (!c1.bounced) res.problems.push_back("the contact interval ends when the stone sinks (no flight after it)");
+
+  // Reference states at the interval ends (both references).
+  const std::vector<double> times{res.flight_interval_end_s, res.contact_interval_start_s, res.contact_interval_end_s,
+                                  res.free_flight_time_s};
+  std::vector<StateAt> at_ref(times.size()), at_fine(times.size());
+  {
+    std::vector<std::function<void()>> jobs;
+    for (std::size_t k = 0; k < times.size(); ++k) {
+      if (!std::isfinite(times[k])) continue;
+      jobs.push_back([&, k] { at_ref[k] = state_at(p, reference_choice(ref), times[k]); });
+      jobs.push_back([&, k] { at_fine[k] = state_at(p, reference_choice(fine), times[k]); });
+    }
+    run_jobs(jobs, par);
+  }
+  for (std::size_t k = 0; k < times.size(); ++k)
+    if (std::isfinite(times[k]) && !at_ref[k].ok)
+      res.problems.push_back("reference state at t = " + std::to_string(times[k]) + " s: " + at_ref[k].problem);
+
+  // 3. The scheme alone over the two intervals.
+  const std::size_t ns = o.schemes.size(), nN = o.interval_steps.size(), nd = o.dt_s.size();
+  std::vector<RigidState> flight_end(ns * nN), contact_end(ns * nN);
+  // 4. The whole stepper.
+  std::vector<StepperPoint> points(ns * nd);
+  {
+    std::vector<std::function<void()>> jobs;
+    for (std::size_t a = 0; a < ns; ++a) {
+      for (std::size_t b = 0; b < nN; ++b) {
+        if (at_ref[0].ok)
+          jobs.push_back([&, a, b] {
+            flight_end[a * nN + b] =
+                integrate_fixed(p.stone, p.environment, p.initial, times[0], o.interval_steps[b], o.schemes[a]);
+          });
+        if (at_ref[1].ok && at_ref[2].ok)
+          jobs.push_back([&, a, b] {
+            contact_end[a * nN + b] = integrate_fixed(p.stone, p.environment, at_ref[1].state, times[2] - times[1],
+                                                      o.interval_steps[b], o.schemes[a]);
+          });
+      }
+      for (std::size_t b = 0; b < nd; ++b) {
+        jobs.push_back([&, a, b] {
+          RealtimeOptions ro = p.realtime;
+          ro.scheme = o.schemes[a];
+          ro.dt_s = o.dt_s[b];
+          ro.contact_dt_s = o.contact_ratio * o.dt_s[b];
+          ro.record_trajectory = false;
+          StepperPoint& pt = points[a * nd + b];
+          pt.full = solve(p, realtime_choice(ro));
+          if (std::isfinite(times[3])) pt.at_free_flight = state_at(p, realtime_choice(ro), times[3]);
+          pt.ok = pt.full.outcome != Outcome::failed;
+          if (!pt.ok) pt.problem = pt.full.outcome_detail;
+        });
+      }
+    }
+    run_jobs(jobs, ParallelOptions{o.workers, o.progress ? "stones: convergence of the real-time stepper" : ""});
+  }
+
+  // 5. Series.
+  for (std::size_t a = 0; a < ns; ++a) {
+    const Scheme sc = o.schemes[a];
+    if (at_ref[0].ok) {
+      auto s = make_series("flight_interval_state",
+                           "state after a free-flight interval (scheme alone, N equal steps)", "1 (relative)", sc);
+      s.reference_error = at_fine[0].ok ? state_error(p.stone, at_ref[0].state, at_fine[0].state) : 0;
+      for (std::size_t b = 0; b < nN; ++b) {
+        s.h_s.push_back(times[0] / o.interval_steps[b]);
+        s.value.push_back(kNaN);
+        s.error.push_back(state_error(p.stone, flight_end[a * nN + b], at_ref[0].state));
+      }
+      finish_series(s, o.floor_factor);
+      res.series.push_back(s);
+    }
+    if (at_ref[1].ok && at_ref[2].ok) {
+      auto s = make_series("contact_interval_state",
+                           "state after an interval holding the whole first contact (scheme alone, N equal steps)",
+                           "1 (relative)", sc);
+      s.reference_error = at_fine[2].ok ? state_error(p.stone, at_ref[2].state, at_fine[2].state) : 0;
+      for (std::size_t b = 0; b < nN; ++b) {
+        s.h_s.push_back((times[2] - times[1]) / o.interval_steps[b]);
+        s.value.push_back(kNaN);
+        const RigidState& e = contact_end[a * nN + b];
+        const bool finite = e.position_m.allFinite() && e.velocity_m_s.allFinite();
+        s.error.push_back(finite ? state_error(p.stone, e, at_ref[2].state) : kNaN);
+      }
+      finish_series(s, o.floor_factor);
+      res.series.push_back(s);
+    }
+    // Whole stepper.
+    const ContactRecord* f1 = r_fine.contacts.empty() ? nullptr : &r_fine.contacts[0];
+    struct Scalar {
+      const char* quantity;
+      const char* description;
+      const char* unit;
+      std::function<double(const ThrowResult&)> get;
+    };
+    const std::vector<Scalar> scalars{
+        {"contact1_start_time", "start time of the first contact (whole stepper)", "s",
+         [](const ThrowResult& r) { return r.contacts.empty() ? kNaN : r.contacts[0].start_s; }},
+        {"contact1_end_time", "end time of the first contact (whole stepper)", "s",
+         [](const ThrowResult& r) { return r.contacts.empty() ? kNaN : r.contacts[0].end_s; }},
+        {"contact1_exit_speed", "speed at the end of the first contact (whole stepper)", "m/s",
+         [](const ThrowResult& r) { return r.contacts.empty() ? kNaN : r.contacts[0].exit_speed_m_s; }},
+    };
+    for (const auto& q : scalars) {
+      auto s = make_series(q.quantity, q.description, q.unit, sc);
+      s.reference_error = f1 ? std::abs(q.get(r_fine) - q.get(r_ref)) : 0;
+      for (std::size_t b = 0; b < nd; ++b) {
+        const StepperPoint& pt = points[a * nd + b];
+        s.h_s.push_back(o.dt_s[b]);
+        const double v = pt.ok ? q.get(pt.full) : kNaN;
+        s.value.push_back(v);
+        s.error.push_back(std::abs(v - q.get(r_ref)));
+        s.notes.push_back(pt.ok ? "" : pt.problem);
+      }
+      finish_series(s, o.floor_factor);
+      res.series.push_back(s);
+    }
+    {
+      auto s = make_series("contact1_exit_position", "centre of mass at the end of the first contact (whole stepper)",
+                           "m", sc);
+      s.reference_error = f1 ? (f1->exit_position_m - c1.exit_position_m).norm() : 0;
+      for (std::size_t b = 0; b < nd; ++b) {
+        const StepperPoint& pt = points[a * nd + b];
+        s.h_s.push_back(o.dt_s[b]);
+        s.value.push_back(kNaN);
+        s.error.push_back(pt.ok && !pt.full.contacts.empty()
+                              ? (pt.full.contacts[0].exit_position_m - c1.exit_position_m).norm()
+                              : kNaN);
+        s.notes.push_back(pt.ok ? "" : pt.problem);
+      }
+      finish_series(s, o.floor_factor);
+      res.series.push_back(s);
+    }
+    {
+      auto s = make_series("bounce_positions", "largest error of the bounce positions (centre of mass where each contact ends; whole stepper)",
+                           "m", sc);
+      const ContactComparison cf = compare_contacts(r_fine, r_ref);
+      s.reference_error = cf.same_contacts() ? cf.max_exit_position_error_m : 0;
+      for (std::size_t b = 0; b < nd; ++b) {
+        const StepperPoint& pt = points[a * nd + b];
+        s.h_s.push_back(o.dt_s[b]);
+        s.value.push_back(kNaN);
+        const ContactComparison c = compare_contacts(pt.full, r_ref);
+        std::string note = pt.ok ? "" : pt.problem;
+        if (pt.ok && !c.same_contacts()) note = "contact lists differ: " + c.brief();
+        s.error.push_back(pt.ok && c.same_contacts() ? c.max_exit_position_error_m : kNaN);
+        s.notes.push_back(note);
+      }
+      finish_series(s, o.floor_factor);
+      res.series.push_back(s);
+    }
+    {
+      auto s = make_series("touch_points", "largest error of the first-touch points of all contacts (whole stepper)",
+                           "m", sc);
+      const ContactComparison cf = compare_contacts(r_fine, r_ref);
+      s.reference_error = cf.same_contacts() ? cf.max_touch_error_m : 0;
+      for (std::size_t b = 0; b < nd; ++b) {
+        const StepperPoint& pt = points[a * nd + b];
+        s.h_s.push_back(o.dt_s[b]);
+        s.value.push_back(kNaN);
+        const ContactComparison c = compare_contacts(pt.full, r_ref);
+        std::string note = pt.ok ? "" : pt.problem;
+        if (pt.ok && !c.same_contacts()) note = "contact lists differ: " + c.brief();
+        s.error.push_back(pt.ok && c.same_contacts() ? c.max_touch_error_m : kNaN);
+        s.notes.push_back(note);
+      }
+      finish_series(s, o.floor_factor);
+      res.series.push_back(s);
+    }
+    if (at_ref[3].ok) {
+      auto s = make_series("free_flight_state", "state in free flight after the first bounce (whole stepper)",
+                           "1 (relative)", sc);
+      s.reference_error = at_fine[3].ok ? state_error(p.stone, at_ref[3].state, at_fine[3].state) : 0;
+      for (std::size_t b = 0; b < nd; ++b) {
+        const StepperPoint& pt = points[a * nd + b];
+        s.h_s.push_back(o.dt_s[b]);
+        s.value.push_back(kNaN);
+        s.error.push_back(pt.at_free_flight.ok ? state_error(p.stone, pt.at_free_flight.state, at_ref[3].state) : kNaN);
+        s.notes.push_back(pt.at_free_flight.ok ? "" : pt.at_free_flight.problem);
+      }
+      finish_series(s, o.floor_factor);
+      res.series.push_back(s);
+    }
+  }
+  return res;
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,145 @@
+#include "verification/stones/work_precision.hpp"
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+
+#include "verification/stones/contact_comparison.hpp"
+#include "verification/stones/parallel_runs.hpp"
+
+namespace stoneskip {
+
+namespace {
+
+struct Job {
+  std::size_t throw_index;
+  WorkPoint point;
+  SolverChoice choice;
+};
+
+}  // namespace
+
+WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& throws, const WorkPrecisionOptions& o) {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  WorkPrecisionResult res;
+  res.throws.resize(throws.size());
+
+  // 1. The truth for every throw, and a tighter check of it.
+  {
+    std::vector<ThrowResult> checks(throws.size());
+    std::vector<std::function<void()>> jobs;
+    for (std::size_t k = 0; k < throws.size(); ++k) {
+      for (int c = 0; c < 2; ++c)
+        jobs.push_back([&, k, c] {
+          ReferenceOptions r = throws[k].reference;
+          r.rtol = o.truth_rtol * (c ? o.truth_check_factor : 1.0);
+          r.atol = o.atol_ratio * r.rtol;
+          r.record_trajectory = false;
+          res.throws[k].label = throws[k].label;
+          (c ? checks[k] : res.throws[k].truth) = solve(throws[k], reference_choice(r));
+        });
+    }
+    run_jobs(jobs, ParallelOptions{o.workers, ""});
+    for (std::size_t k = 0; k < throws.size(); ++k) {
+      const ContactComparison c = compare_contacts(res.throws[k].truth, checks[k]);
+      res.throws[k].truth_uncertainty_m = c.same_contacts() ? c.max_exit_position_error_m : kNaN;
+      if (!c.same_contacts()) res.throws[k].truth_check_problem = "the truth and its check differ: " + c.brief();
+    }
+  }
+
+  // 2. Every setting of every family on every throw.
+  std::vector<Job> jobs;
+  for (std::size_t k = 0; k < throws.size(); ++k) {
+    for (const auto& fam : o.realtime) {
+      const Scheme sc = fam.scheme;
+      for (double dt : o.dt_s) {
+        Job j;
+        j.throw_index = k;
+        j.point.family = std::string("realtime ") + to_string(sc) + " (contact dt/" +
+                         std::to_string(static_cast<int>(std::lround(1 / fam.contact_ratio))) + ")";
+        j.point.realtime = true;
+        j.point.setting = dt;
+        RealtimeOptions ro = throws[k].realtime;
+        ro.scheme = sc;
+        ro.dt_s = dt;
+        ro.contact_dt_s = fam.contact_ratio * dt;
+        ro.record_trajectory = false;
+        j.choice = realtime_choice(ro);
+        jobs.push_back(j);
+      }
+    }
+    for (ReferenceMethod m : o.methods) {
+      for (double rtol : o.rtol) {
+        Job j;
+        j.throw_index = k;
+        j.point.family = std::string("CVODE ") + to_string(m);
+        j.point.realtime = false;
+        j.point.setting = rtol;
+        ReferenceOptions r = throws[k].reference;
+        r.method = m;
+        r.rtol = rtol;
+        r.atol = o.atol_ratio * rtol;
+        r.record_trajectory = false;
+        j.choice = reference_choice(r);
+        jobs.push_back(j);
+      }
+    }
+  }
+  parallel_for(
+      jobs.size(),
+      [&](std::size_t i) {
+        Job& j = jobs[i];
+        const ThrowResult& truth = res.throws[j.throw_index].truth;
+        const ThrowResult r = solve_min_cpu(throws[j.throw_index], j.choice, o.repeats);
+        WorkPoint& p = j.point;
+        p.bounces = r.bounces;
+        p.cpu_s = r.stats.cpu_s;
+        p.rhs_evaluations = r.stats.rhs_evaluations;
+        p.steps = r.stats.steps;
+        const ContactComparison c = compare_contacts(r, truth);
+        if (r.outcome == Outcome::failed) {
+          p.problem = r.outcome_detail;
+        } else if (truth.outcome == Outcome::failed) {
+          p.problem = "the tight reference failed: " + truth.outcome_detail;
+        } else if (!c.same_contacts()) {
+          p.problem = "contact list differs: " + c.brief();
+        } else {
+          p.ok = true;
+          p.bounce_position_error_m = c.max_exit_position_error_m;
+          p.touch_error_m = c.max_touch_error_m;
+          p.contact_time_error_s = std::max(c.max_start_error_s, c.max_end_error_s);
+        }
+        if (!p.ok) p.bounce_position_error_m = p.touch_error_m = p.contact_time_error_s = kNaN;
+      },
+      ParallelOptions{o.workers, o.progress ? "stones: work-precision runs" : ""});
+  for (const Job& j : jobs) res.throws[j.throw_index].points.push_back(j.point);
+
+  // 3. The cheapest setting of each family for each target error.
+  for (auto& t : res.throws) {
+    std::vector<std::string> families;
+    for (const auto& p : t.points)
+      if (families.empty() || families.back() != p.family) families.push_back(p.family);
+    for (double target : o.target_errors_m) {
+      for (const auto& fam : families) {
+        CheapestSetting best;
+        best.target_error_m = target;
+        best.family = fam;
+        for (const auto& p : t.points) {
+          if (p.family != fam || !p.ok || !(p.bounce_position_error_m <= target)) continue;
+          if (!best.found || p.cpu_s < best.cpu_s) {
+            best.found = true;
+            best.setting = p.setting;
+            best.cpu_s = p.cpu_s;
+            best.rhs_evaluations = p.rhs_evaluations;
+            best.error_m = p.bounce_position_error_m;
+          }
+        }
+        t.cheapest.push_back(best);
+      }
+    }
+  }
+  return res;
+}
+
+}  // namespace stoneskip
