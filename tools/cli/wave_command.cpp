@@ -92,7 +92,7 @@ void run_wave(const WaveArgs& a) {
     j["stability_limit"] = limit;
     j["boundary"] = to_string(w.boundary);
     j["initial"] = to_string(c.initial.kind);
-    j["reference"] = periodic ? (c.reference_semi_discrete ? "stencil" : "continuum") : nullptr;
+    j["reference"] = periodic ? nlohmann::json(c.reference_semi_discrete ? "stencil" : "continuum") : nlohmann::json(nullptr);
     auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
     j["l2_error"] = num(err.l2_m);
     j["max_error"] = num(err.max_m);

@@ -63,6 +63,17 @@ BOOST_AUTO_TEST_CASE(lengyel_counterexample_grows_by_the_predicted_factor) {
   BOOST_TEST(j["solution_rms_m"].get<double>() > 1e6);
 }
 
+BOOST_AUTO_TEST_CASE(a_walled_pool_has_no_reference_and_says_so_in_json) {
+  // Oracle: spec §2.3 — the spectral reference exists on the periodic domain only; a reflecting
+  // pool must report null errors (not a number, not a crash) and still step: RMS > 0. The
+  // reflecting boundary conserves the mean height, so the RMS stays below the bump's amplitude.
+  nlohmann::json j = run_json("wave cases/wave_custom_stencil_pool.toml");
+  BOOST_TEST(j["l2_error"].is_null());
+  BOOST_TEST(j["reference"].is_null());
+  BOOST_TEST(j["solution_rms_m"].get<double>() > 0.0);
+  BOOST_TEST(j["solution_rms_m"].get<double>() < 0.02);
+}
+
 BOOST_AUTO_TEST_CASE(misspelt_key_is_rejected_with_its_name_and_status_2) {
   // Oracle: cases/README.md — an unknown key is an error naming the key, exit status 2.
   Ran r = run_stoneskip("wave cases/wave_gaussian_five_point.toml --set water.wave_sped_m_s=2");
