@@ -244,11 +244,12 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
       finish_series(s, o.floor_factor);
       res.series.push_back(s);
     }
-    {
-      auto s = make_series("bounce_positions", "largest error of the bounce positions (centre of mass where each contact ends; whole stepper)",
-                           "m", sc);
+    // Errors of a contact-list quantity (bounce positions, touch points) against the reference;
+    // a run whose contact list differs from the reference's has no error to compare.
+    auto contact_series = [&](const char* name, const char* title, double ContactComparison::*field) {
+      auto s = make_series(name, title, "m", sc);
       const ContactComparison cf = compare_contacts(r_fine, r_ref);
-      s.reference_error = cf.same_contacts() ? cf.max_exit_position_error_m : 0;
+      s.reference_error = cf.same_contacts() ? cf.*field : 0;
       for (std::size_t b = 0; b < nd; ++b) {
         const StepperPoint& pt = points[a * nd + b];
         s.h_s.push_back(o.dt_s[b]);
@@ -256,30 +257,17 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
         const ContactComparison c = compare_contacts(pt.full, r_ref);
         std::string note = pt.ok ? "" : pt.problem;
         if (pt.ok && !c.same_contacts()) note = "contact lists differ: " + c.brief();
-        s.error.push_back(pt.ok && c.same_contacts() ? c.max_exit_position_error_m : kNaN);
+        s.error.push_back(pt.ok && c.same_contacts() ? c.*field : kNaN);
         s.notes.push_back(note);
       }
       finish_series(s, o.floor_factor);
       res.series.push_back(s);
-    }
-    {
-      auto s = make_series("touch_points", "largest error of the first-touch points of all contacts (whole stepper)",
-                           "m", sc);
-      const ContactComparison cf = compare_contacts(r_fine, r_ref);
-      s.reference_error = cf.same_contacts() ? cf.max_touch_error_m : 0;
-      for (std::size_t b = 0; b < nd; ++b) {
-        const StepperPoint& pt = points[a * nd + b];
-        s.h_s.push_back(o.dt_s[b]);
-        s.value.push_back(kNaN);
-        const ContactComparison c = compare_contacts(pt.full, r_ref);
-        std::string note = pt.ok ? "" : pt.problem;
-        if (pt.ok && !c.same_contacts()) note = "contact lists differ: " + c.brief();
-        s.error.push_back(pt.ok && c.same_contacts() ? c.max_touch_error_m : kNaN);
-        s.notes.push_back(note);
-      }
-      finish_series(s, o.floor_factor);
-      res.series.push_back(s);
-    }
+    };
+    contact_series("bounce_positions",
+                   "largest error of the bounce positions (centre of mass where each contact ends; whole stepper)",
+                   &ContactComparison::max_exit_position_error_m);
+    contact_series("touch_points", "largest error of the first-touch points of all contacts (whole stepper)",
+                   &ContactComparison::max_touch_error_m);
     if (at_ref[3].ok) {
       auto s = make_series("free_flight_state", "state in free flight after the first bounce (whole stepper)",
                            "1 (relative)", sc);
