@@ -25,7 +25,7 @@ Figure line_figure(const std::string& name, const std::string& title, const Plot
   s << "set xlabel " << gnuplot_quote(axes.x_label) << "\nset ylabel " << gnuplot_quote(axes.y_label) << "\n";
   if (axes.log_x) s << "set logscale x\nset format x '10^{%L}'\n";
   if (axes.log_y) s << "set logscale y\nset format y '10^{%L}'\n";
-  s << "set grid\nset key below maxrows 4 width -2\n";
+  s << "set grid\nset key below maxrows 4 width -2 height 1.5\n";
   s << axes.extra << "\n";
   std::vector<std::string> clauses;
   for (std::size_t i = 0; i < series.size(); ++i) {
