@@ -127,7 +127,8 @@ TrajectorySample sample(const Stone& stone, const Environment& env, double t, co
 }  // namespace
 
 ThrowResult run_realtime(const Stone& stone, const Environment& env, const RigidState& initial,
-                         const RealtimeOptions& o, const WaterSurface* surface) {
+                         const RealtimeOptions& o, const WaterSurface* surface,
+                         const std::function<void(double t_s)>& before_step) {
   const auto clock_start = std::chrono::steady_clock::now();
   ThrowResult r;
   {
@@ -152,6 +153,10 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
   r.outcome_detail = "reached t_max";
 
   while (t < o.t_max_s - 1e-12 * o.t_max_s) {
+    if (before_step) {
+      before_step(t);
+      deep = deepest_point(stone, s, surface);  // the surface under the stone may have moved
+    }
     // Step size: fine while in the water or while the lowest vertex could reach it in one flight
     // step (clearance < max vertex speed × dt).
     const double omega = angular_velocity(stone, s).norm();

@@ -9,6 +9,8 @@
 //   midpoint (2), rk4 (4)    explicit Runge–Kutta on the flat state (spec §1.3 right-hand side).
 // The step switches to contact_dt_s when the lowest vertex could reach the surface within one
 // flight step (clearance < (|v| + |ω| r_bound) dt_s), so a flight step cannot carry it deep.
+#include <functional>
+
 #include "solvers/realtime/throw_result.hpp"
 
 namespace stoneskip {
@@ -31,7 +33,10 @@ struct RealtimeOptions {
 RigidState realtime_step(const Stone& stone, const Environment& env, const RigidState& s, double dt_s,
                          Scheme scheme, const WaterSurface* surface = nullptr, long* rhs_evaluations = nullptr);
 
+// before_step (optional) is called with the time at the start of every step: a scene uses it to
+// advance a live water surface to that time.
 ThrowResult run_realtime(const Stone& stone, const Environment& env, const RigidState& initial,
-                         const RealtimeOptions& options, const WaterSurface* surface = nullptr);
+                         const RealtimeOptions& options, const WaterSurface* surface = nullptr,
+                         const std::function<void(double t_s)>& before_step = {});
 
 }  // namespace stoneskip

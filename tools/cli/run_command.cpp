@@ -14,6 +14,7 @@
 #include "tools/cli/command_registry.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/scene/scene_throw.hpp"
 #include "tools/scene/throw_output.hpp"
 
 namespace stoneskip::cli {
@@ -35,10 +36,12 @@ void run(const RunArgs& a) {
     c.reference.rtol = a.rtol;
   }
   if (!a.out.empty()) AtomicOutput check(a.out);  // fail on an unwritable path before computing
+  if (c.water && a.solver != "realtime")
+    throw_input_error(c.file, 0, "water", "the CVODE reference supports still water only: use --solver realtime with [water]");
 
   std::vector<std::pair<std::string, ThrowResult>> results;
   if (a.solver == "realtime" || a.solver == "both")
-    results.emplace_back("realtime", run_realtime(c.stone, c.environment, c.initial, c.realtime));
+    results.emplace_back("realtime", run_scene_realtime(c).result);
   if (a.solver == "reference" || a.solver == "both")
     results.emplace_back("reference", run_reference(c.stone, c.environment, c.initial, c.reference));
 

@@ -7,10 +7,8 @@
 
 namespace stoneskip {
 
-namespace {
-
-void read_water(TomlTable t, TomlTable& top, WaveCase& c) {
-  HeightFieldOptions& w = c.water;
+HeightFieldOptions read_height_field(TomlTable t, TomlTable& top, double* t_end_s) {
+  HeightFieldOptions w;
   const long long nx = t.integer("nx"), ny = t.integer("ny");
   if (nx < 4 || nx > 16384) t.fail("nx", "must be in [4, 16384]");
   if (ny < 4 || ny > 16384) t.fail("ny", "must be in [4, 16384]");
@@ -24,9 +22,11 @@ void read_water(TomlTable t, TomlTable& top, WaveCase& c) {
   t.require_non_negative("damping_per_s", w.damping_per_s);
   w.dt_s = t.number("dt_s");
   t.require_positive("dt_s", w.dt_s);
-  c.t_end_s = t.number("t_end_s");
-  t.require_positive("t_end_s", c.t_end_s);
-  if (c.t_end_s / w.dt_s > 1e8) t.fail("t_end_s", "more than 1e8 steps of dt_s");
+  if (t_end_s) {
+    *t_end_s = t.number("t_end_s");
+    t.require_positive("t_end_s", *t_end_s);
+    if (*t_end_s / w.dt_s > 1e8) t.fail("t_end_s", "more than 1e8 steps of dt_s");
+  }
   const std::string boundary = t.string_or("boundary", "periodic");
   if (!parse_boundary(boundary, w.boundary)) t.fail("boundary", "'" + boundary + "' is not one of periodic, reflecting, fixed");
   const std::string stencil = t.string("stencil");
@@ -44,10 +44,11 @@ void read_water(TomlTable t, TomlTable& top, WaveCase& c) {
     t.fail("stencil", "'" + stencil + "' is not one of five_point, nine_point_half, nine_point_isotropic, paper_eq11, custom");
   }
   t.finish();
+  return w;
 }
 
-void read_initial(TomlTable t, WaveCase& c) {
-  Disturbance& d = c.initial;
+Disturbance read_disturbance(TomlTable t) {
+  Disturbance d;
   const std::string kind = t.string("kind");
   if (!parse_disturbance_kind(kind, d.kind)) t.fail("kind", "'" + kind + "' is not one of gaussian, plane_wave, ring, impulse");
   d.amplitude_m = t.number("amplitude_m");
@@ -72,9 +73,8 @@ void read_initial(TomlTable t, WaveCase& c) {
       break;
   }
   t.finish();  // a key the kind does not use is an error, not silently ignored
+  return d;
 }
-
-}  // namespace
 
 long WaveCase::steps() const { return std::max(1L, static_cast<long>(std::ceil(t_end_s / water.dt_s - 1e-9))); }
 
@@ -101,8 +101,8 @@ WaveCase wave_case_from_document(const TomlDocument& doc) {
   c.overrides = doc.overrides;
   TomlTable top = doc.top();
   c.title = read_case_title(top);
-  read_water(top.table("water"), top, c);
-  read_initial(top.table("initial"), c);
+  c.water = read_height_field(top.table("water"), top, &c.t_end_s);
+  c.initial = read_disturbance(top.table("initial"));
   if (auto ref = top.maybe_table("reference")) {
     const std::string sym = ref->string_or("symbol", "continuum");
     if (sym != "continuum" && sym != "stencil") ref->fail("symbol", "'" + sym + "' is not one of continuum, stencil");

@@ -26,6 +26,12 @@ struct WaveCase {
   std::string resolved_settings() const; // every setting as TOML, after defaults and overrides
 };
 
+// The pieces, shared with stone cases that put the stone on a live water surface:
+// [water] (t_end_s read only when t_end_s != nullptr; [stencil] from `top` for custom weights)
+// and a disturbance table ([initial] here, [water.initial] in a stone case).
+HeightFieldOptions read_height_field(TomlTable t, TomlTable& top, double* t_end_s);
+Disturbance read_disturbance(TomlTable t);
+
 WaveCase load_wave_case(const std::string& path, const std::vector<std::string>& overrides = {});
 WaveCase wave_case_from_document(const TomlDocument& doc);
 

@@ -18,6 +18,12 @@ for c in cases/*.toml; do
   "$exe" run "$c" --solver both --out "$out/throws/$(basename "${c%.toml}").h5"
 done
 
+echo "== Stones on live water (one-way coupling; real-time model only) =="
+for c in cases/scenes/*.toml; do
+  echo "-- $c"
+  "$exe" run "$c" --out "$out/throws/$(basename "${c%.toml}").h5"
+done
+
 echo "== The built-in wave cases: height field against the spectral reference =="
 mkdir -p "$out/wave_cases"
 for c in cases/wave_*.toml; do
