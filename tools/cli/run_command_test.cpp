@@ -177,6 +177,7 @@ BOOST_AUTO_TEST_CASE(bad_input_gives_one_line_exit_2_and_no_output_file) {
   write(c, kGoodCase);
   expect_bad_input(run("run " + c.string() + " --set stone.radius_m=-1"), {"--set", "stone.radius_m"});
   expect_bad_input(run("run /nonexistent/case.toml"), {"/nonexistent/case.toml", "cannot read"});
+  expect_bad_input(run("run cases/scenes/swell_8ms.toml --solver both"), {"swell_8ms.toml", "water", "still water only"});
   expect_bad_input(run("run " + c.string() + " --out /nonexistent/dir/x.h5"), {"/nonexistent/dir/x.h5", "does not exist"});
   // An open mesh file.
   const fs::path obj = scratch("open.obj");
