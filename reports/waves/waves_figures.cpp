@@ -27,6 +27,23 @@ std::string title_of(const std::string& stencil) {
 
 Table table(std::vector<std::string> columns) { return Table{std::move(columns), {}}; }
 
+// Adds a stencil's curve: its table, and its clause in the plot command (comma-separated).
+void add_stencil_curve(Figure& f, std::ostringstream& p, bool& first, const std::string& name, Table t,
+                       const std::string& stencil, const char* with) {
+  f.tables.emplace_back(name, std::move(t));
+  p << (first ? "" : ", ") << "'" << name << ".dat' u 1:2 w " << with << " lw 2 " << style(stencil) << " t '"
+    << title_of(stencil) << "'";
+  first = false;
+}
+
+// The distinct values of a list, in order of first appearance.
+std::vector<double> distinct(const std::vector<double>& values) {
+  std::vector<double> out;
+  for (double v : values)
+    if (std::find(out.begin(), out.end(), v) == out.end()) out.push_back(v);
+  return out;
+}
+
 const char* kLogLog = "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset grid\nset key outside right\n";
 
 }  // namespace
@@ -43,10 +60,7 @@ Figure consistency_figure(const WaveStudies& s) {
     if (!c.consistent) continue;
     Table t = table({"theta_deg", "leading_error"});
     for (std::size_t i = 0; i < c.theta_rad.size(); ++i) t.add_row({c.theta_rad[i] * kDeg, c.leading_error[i]});
-    const std::string name = f.name + "_" + c.stencil;
-    f.tables.emplace_back(name, t);
-    p << (first ? "" : ", ") << "'" << name << ".dat' u 1:2 w l lw 2 " << style(c.stencil) << " t '" << title_of(c.stencil) << "'";
-    first = false;
+    add_stencil_curve(f, p, first, f.name + "_" + c.stencil, std::move(t), c.stencil, "l");
   }
   f.script = p.str();
   return f;
@@ -78,11 +92,7 @@ Figure convergence_figure(const WaveStudies& s, const std::string& kind) {
       anchor_h = seq.points.back().h;
       anchor_e = seq.points.back().l2_m;
     }
-    const std::string name = f.name + "_" + c.stencil;
-    f.tables.emplace_back(name, t);
-    p << (first ? "" : ", ") << "'" << name << ".dat' u 1:2 w lp lw 2 " << style(c.stencil) << " t '" << title_of(c.stencil)
-      << "'";
-    first = false;
+    add_stencil_curve(f, p, first, f.name + "_" + c.stencil, std::move(t), c.stencil, "lp");
   }
   if (anchor_h > 0) {  // a slope-2 guide through the five-point stencil's finest point, shifted down
     Table g = table({"h", "guide"});
@@ -104,9 +114,9 @@ Figure isotropy_polar_figure(const WaveStudies& s) {
   std::ostringstream p;
   p << "set multiplot layout 1,3\nset polar\nset angles degrees\nset size ratio -1\nunset border\nunset xtics\nunset ytics\n"
        "set grid polar 45\nset key bottom center horizontal\nset rtics format '%.3f' scale 0.3\n";
-  std::vector<double> kds;
-  for (const auto& c : s.isotropy_curves)
-    if (std::find(kds.begin(), kds.end(), c.kd) == kds.end()) kds.push_back(c.kd);
+  std::vector<double> all_kd;
+  for (const auto& c : s.isotropy_curves) all_kd.push_back(c.kd);
+  const std::vector<double> kds = distinct(all_kd);
   for (std::size_t k = 0; k < kds.size(); ++k) {
     double lo = 1e300, hi = -1e300;
     for (const auto& c : s.isotropy_curves)
@@ -123,11 +133,7 @@ Figure isotropy_polar_figure(const WaveStudies& s) {
       if (c.kd != kds[k]) continue;
       Table t = table({"theta_deg", "speed_ratio"});
       for (std::size_t i = 0; i < c.theta_rad.size(); ++i) t.add_row({c.theta_rad[i] * kDeg, 1 + c.error[i]});
-      const std::string name = f.name + "_" + c.stencil + "_" + std::to_string(k);
-      f.tables.emplace_back(name, t);
-      p << (first ? "" : ", ") << "'" << name << ".dat' u 1:2 w l lw 2 " << style(c.stencil) << " t '" << title_of(c.stencil)
-        << "'";
-      first = false;
+      add_stencil_curve(f, p, first, f.name + "_" + c.stencil + "_" + std::to_string(k), std::move(t), c.stencil, "l");
     }
     p << ", 1 w l lc rgb 'black' dt 3 t 'exact'\n";
   }
@@ -147,10 +153,7 @@ Figure isotropy_spread_figure(const WaveStudies& s) {
   for (const auto& c : s.spread_curves) {
     Table t = table({"kd", "spread"});
     for (std::size_t i = 0; i < c.kd.size(); ++i) t.add_row({c.kd[i], std::max(c.spread[i], 1e-17)});
-    const std::string name = f.name + "_" + c.stencil;
-    f.tables.emplace_back(name, t);
-    p << (first ? "" : ", ") << "'" << name << ".dat' u 1:2 w l lw 2 " << style(c.stencil) << " t '" << title_of(c.stencil) << "'";
-    first = false;
+    add_stencil_curve(f, p, first, f.name + "_" + c.stencil, std::move(t), c.stencil, "l");
   }
   f.script = p.str();
   return f;
@@ -166,9 +169,9 @@ Figure isotropy_measured_figure(const WaveStudies& s) {
   std::ostringstream p;
   p << "set multiplot layout 1,2\nset grid\nset key below maxrows 3\nset xlabel 'direction θ (degrees)'\n"
        "set ylabel '(c_h − c)/c  ÷ (kd)^2'\nset xrange [0:45]\n";
-  std::vector<double> kds;
-  for (const auto& m : s.measured_isotropy)
-    if (std::find(kds.begin(), kds.end(), m.kd_target) == kds.end()) kds.push_back(m.kd_target);
+  std::vector<double> all_kd;
+  for (const auto& m : s.measured_isotropy) all_kd.push_back(m.kd_target);
+  const std::vector<double> kds = distinct(all_kd);
   for (std::size_t k = 0; k < kds.size(); ++k) {
     const int denom = static_cast<int>(std::lround(M_PI / kds[k]));
     p << "set title 'kd ≈ π/" << denom << ", σ = " << s.measured_sigma << ", " << s.measured_grid << "^2 grid'\nplot ";
