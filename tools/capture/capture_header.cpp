@@ -132,4 +132,12 @@ std::string header_lines(const Trace& t) {
   return s;
 }
 
+bool skip_blank_or_header(Trace& trace, std::string_view trimmed_line, const std::string& file, long line) {
+  if (trimmed_line.empty()) return true;
+  if (trimmed_line.front() != '#') return false;
+  std::string key, value;
+  if (header_comment(trimmed_line, key, value)) apply_header_key(trace, key, value, file, line);
+  return true;
+}
+
 }  // namespace stoneskip

@@ -10,6 +10,7 @@
 //   # mounting.lever_arm_m: 0,0.6,0                        (any key of mounting.hpp)
 // Other comments are ignored; an unknown calibration.* or mounting.* key is an error.
 #include <string>
+#include <string_view>
 
 #include "tools/capture/capture_trace.hpp"
 
@@ -19,6 +20,10 @@ namespace stoneskip {
 // ignores it); throws InputError naming FILE:LINE and the key for a bad value.
 bool apply_header_key(Trace& trace, const std::string& key, const std::string& value, const std::string& file,
                       long line);
+
+// For the line-by-line readers: true when the (trimmed) line is blank or a comment, which the
+// reader then skips; a "# key: value" comment is applied to the trace on the way.
+bool skip_blank_or_header(Trace& trace, std::string_view trimmed_line, const std::string& file, long line);
 
 // The header lines (with "# ") describing a trace's calibration, rate and mounting.
 std::string header_lines(const Trace& trace);

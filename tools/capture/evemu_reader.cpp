@@ -49,12 +49,7 @@ Trace read_evemu(const std::string& text, const std::string& file) {
   std::vector<KeyEvent> keys;
   for (const TextLine& line : split_capture_lines(text, file)) {
     std::string_view s = trim(line.text);
-    if (s.empty()) continue;
-    if (s.front() == '#') {
-      std::string key, value;
-      if (header_comment(s, key, value)) apply_header_key(t, key, value, file, line.number);
-      continue;
-    }
+    if (skip_blank_or_header(t, s, file, line.number)) continue;
     if (s.size() < 2 || s[1] != ':') {
       malformed_line(file, line, "not an evemu line (expected 'X: ...')", t.warnings);
       continue;

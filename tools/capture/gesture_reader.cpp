@@ -19,12 +19,7 @@ Trace read_gesture(const std::string& text, const std::string& file) {
   std::vector<std::array<double, 3>> counts;
   for (const TextLine& line : split_capture_lines(text, file)) {
     const std::string_view s = trim(line.text);
-    if (s.empty()) continue;
-    if (s.front() == '#') {
-      std::string key, value;
-      if (header_comment(s, key, value)) apply_header_key(t, key, value, file, line.number);
-      continue;
-    }
+    if (skip_blank_or_header(t, s, file, line.number)) continue;
     const auto f = split_fields(s, false);
     if (f.size() != 6) {
       malformed_line(file, line, "expected 6 numbers 'ax ay az pitch roll yaw', found " + std::to_string(f.size()) + " fields",

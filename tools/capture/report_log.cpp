@@ -49,12 +49,7 @@ Trace read_report_log(const std::string& text, const std::string& file) {
   std::vector<char> sample_has_gyro;
   for (const TextLine& line : split_capture_lines(text, file)) {
     const std::string_view s = trim(line.text);
-    if (s.empty()) continue;
-    if (s.front() == '#') {
-      std::string key, value;
-      if (header_comment(s, key, value)) apply_header_key(t, key, value, file, line.number);
-      continue;
-    }
+    if (skip_blank_or_header(t, s, file, line.number)) continue;
     const auto fields = split_fields(s, false);
     const auto time = parse_real(fields[0]);
     if (!time) {
