@@ -13,6 +13,7 @@ namespace stoneskip {
 
 namespace fs = std::filesystem;
 
+// Legacy storage of whole figures (the capture pages, until they render from their records).
 void store_figure(const H5Group& figures_group, const Figure& fig) {
   H5Group g = figures_group.create_group(fig.name);
   g.set_attr("title", fig.title);
@@ -112,8 +113,9 @@ RenderSummary render_figures(const fs::path& dir, const std::vector<Figure>& fig
 }
 
 std::string figure_markdown(const Figure& fig) {
+  std::string data = fig.data_path.empty() ? "" : ", data: `data.h5:" + fig.data_path + "`";
   return "![" + fig.title + "](figures/" + fig.name + ".png)\n\n*Figure: " + fig.title + "* ([SVG](figures/" +
-         fig.name + ".svg), data: `data.h5:/figures/" + fig.name + "`)\n\n";
+         fig.name + ".svg)" + data + ")\n\n";
 }
 
 }  // namespace stoneskip

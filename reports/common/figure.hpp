@@ -1,8 +1,8 @@
 #pragma once
-// A report figure is data first: named tables (units in the column names) plus a gnuplot script
-// that refers to them as '<table>.dat'. Both are stored in the report's HDF5 file under
-// /figures/<name>, so `stoneskip plot DIR` redraws every figure from the file without re-running
-// anything. Rendering writes DIR/figures/<name>.png and .svg (and the .gp/.dat it used).
+// A report figure: named tables (units in the column names) plus a gnuplot script that refers to
+// them as '<table>.dat'. Figures are built by a report's renderer from the tables stored in its
+// data.h5 (the data come first; `stoneskip report render DIR` draws them again from the file).
+// Rendering writes DIR/figures/<name>.png and .svg (and the .gp/.dat it used).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -18,11 +18,11 @@ struct Figure {
   std::vector<std::pair<std::string, Table>> tables;  // referenced as "<name>.dat" in the script
   int width_px = 900;
   int height_px = 600;
+  std::string data_path;  // where its data lie in data.h5 (e.g. "/sections/convergence"), for the caption
 };
 
-// Stores the figure's tables and script under group /figures/<name> of a report file.
+// Legacy: whole figures stored under /figures/<name> (the capture pages still use it).
 void store_figure(const H5Group& figures_group, const Figure& fig);
-// Reads all figures back.
 std::vector<Figure> load_figures(const H5Group& figures_group);
 
 struct RenderSummary {

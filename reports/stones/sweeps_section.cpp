@@ -1,137 +1,70 @@
 // Section 3 of the stones report: bounce count against spin (the paper's Fig. 8), speed, attack
-// angle and path angle, with bisected thresholds; momentum against time (the paper's Fig. 9).
+// angle and path angle, with bisected thresholds; momentum against time (the paper's Fig. 9) —
+// formatted from the stored records.
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <sstream>
 
 #include "reports/common/markdown.hpp"
-#include "reports/stones/plot_helpers.hpp"
+#include "reports/common/plot.hpp"
 #include "reports/stones/report_sections.hpp"
 
 namespace stoneskip {
 
-std::string fmt_or_dash(double v, int significant) { return std::isfinite(v) ? fmt(v, significant) : "–"; }
-
-std::string history_group_name(const std::string& label) {
-  std::string s;
-  for (char c : label) {
-    if (std::isalnum(static_cast<unsigned char>(c)))
-      s += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    else if (!s.empty() && s.back() != '_')
-      s += '_';
-  }
-  while (!s.empty() && s.back() == '_') s.pop_back();
-  return s;
-}
-
-void write_history(const H5Group& parent, const std::string& name, const ThrowHistory& h) {
-  H5Group g = parent.create_group(name);
-  g.set_attr("label", h.label);
-  g.set_attr("solver", h.solver);
-  g.set_attr("convention", std::string(to_string(h.convention)));
-  g.set_attr("bounces", static_cast<long long>(h.result.bounces));
-  g.set_attr("outcome", std::string(to_string(h.result.outcome)));
-  g.write_table("history", h.table);
-  Table c;
-  c.columns = {"start_s", "end_s", "entry_speed_m_s", "exit_speed_m_s", "entry_energy_J", "exit_energy_J",
-               "first_touch_x_m", "first_touch_y_m", "bounced"};
-  for (const auto& k : h.result.contacts)
-    c.add_row({k.start_s, k.end_s, k.entry_speed_m_s, k.exit_speed_m_s, k.entry_energy_J, k.exit_energy_J,
-               k.first_touch_m.x(), k.first_touch_m.y(), k.bounced ? 1.0 : 0.0});
-  g.write_table("contacts", c);
-}
-
 namespace {
 
-std::string unit_of(SweepParameter p) {
-  switch (p) {
-    case SweepParameter::spin_rev_s: return "rev/s";
-    case SweepParameter::speed_m_s: return "m/s";
-    default: return "°";
-  }
+std::string axis_of(const std::string& p) {
+  if (p == "spin_rev_s") return "spin (rev/s)";
+  if (p == "speed_m_s") return "speed (m/s)";
+  if (p == "attack_angle_deg") return "attack angle (deg)";
+  if (p == "path_angle_deg") return "path angle (deg)";
+  return p;
 }
 
-std::string axis_of(SweepParameter p) {
-  switch (p) {
-    case SweepParameter::spin_rev_s: return "spin (rev/s)";
-    case SweepParameter::speed_m_s: return "speed (m/s)";
-    case SweepParameter::attack_angle_deg: return "attack angle (deg)";
-    case SweepParameter::path_angle_deg: return "path angle (deg)";
-  }
-  return "";
-}
+std::string who(const Record& s) { return s.text("convention") + ", " + (s.text("solver") == "realtime" ? "real-time" : "reference"); }
 
-std::string solver_word(const SolverChoice& s) { return s.kind == SolverKind::realtime ? "real-time" : "reference"; }
+std::string count_text(double c) { return c < 0 ? std::string("failed") : fmt(c); }
 
 }  // namespace
 
-SectionOutput sweeps_section(const std::vector<BounceSweepResult>& sweeps, const std::vector<ThrowHistory>& fig9,
-                             const H5Group& data) {
-  SectionOutput out;
-  H5Group g = data.create_group("sweeps");
-  std::ostringstream md;
-  md << "## 3. Bounce-count curves\n\n"
-     << "**What is measured.** The bounce count (contacts that end with the stone leaving the water, spec §1.8) "
-        "of one base throw as one parameter varies, from the CVODE reference and from the real-time stepper with "
-        "the case's settings, in both conventions (`physical`: the corrected force laws; `paper`: Lee & Baek's "
-        "Eq. 1–3 and 6 as printed). Where the count changes between two grid values, the parameter is bisected "
-        "until the bracket is narrower than the tolerance given, so thresholds are values, not grid cells.\n\n";
-  if (!sweeps.empty())
-    md << "Base throw: **" << sweeps.front().spec.base.label << "** (" << sweeps.front().spec.base.stone.description
-       << ", " << fmt(sweeps.front().spec.base.stone.mass.mass_kg * 1000, 3) << " g; U = "
-       << fmt(sweeps.front().spec.base.parameters.speed_m_s, 3) << " m/s, β = "
-       << fmt(sweeps.front().spec.base.parameters.path_angle_deg, 3) << "°, α = "
-       << fmt(sweeps.front().spec.base.parameters.attack_angle_deg, 3) << "°, spin "
-       << fmt(sweeps.front().spec.base.parameters.spin_rev_s, 3) << " rev/s unless swept). Real-time settings: "
-       << sweeps.front().spec.base.realtime.dt_s << " s flight step, " << sweeps.front().spec.base.realtime.contact_dt_s
-       << " s contact step.\n\n";
-  // Group by parameter.
-  std::map<int, std::vector<const BounceSweepResult*>> by_param;
-  for (const auto& s : sweeps) by_param[static_cast<int>(s.spec.parameter)].push_back(&s);
-  for (const auto& [pi, list] : by_param) {
-    const SweepParameter param = static_cast<SweepParameter>(pi);
+SectionOutput sweeps_section(const Record& c, const Record& fig9) {
+  SectionWriter w(c, "3. Bounce-count curves");
+  w.lead("What is measured.",
+         "The bounce count (contacts that end with the stone leaving the water, spec §1.8) of one base throw as one "
+         "parameter varies, from the CVODE reference and from the real-time stepper with the case's settings, in both "
+         "conventions (`physical`: the corrected force laws; `paper`: Lee & Baek's Eq. 1–3 and 6 as printed). Where the "
+         "count changes between two grid values, the parameter is bisected until the bracket is narrower than the "
+         "tolerance given, so thresholds are values, not grid cells.");
+  if (c.has_child("base")) {
+    const Record& b = c.at("base");
+    w.text("Base throw: **" + b.text("label") + "** (" + b.text("stone") + ", " + fmt(1000 * b.number("mass_kg"), 3) +
+           " g; U = " + fmt(b.number("speed_m_s"), 3) + " m/s, β = " + fmt(b.number("path_angle_deg"), 3) + "°, α = " +
+           fmt(b.number("attack_angle_deg"), 3) + "°, spin " + fmt(b.number("spin_rev_s"), 3) +
+           " rev/s unless swept). Real-time settings: " + fmt(b.number("dt_s"), 3) + " s flight step, " +
+           fmt(b.number("contact_dt_s"), 3) + " s contact step.");
+  }
+  for (const auto& param : c.strings("parameters")) {
+    const Record& pr = c.at(param);
+    const auto names = pr.strings("sweeps");
+    w.subheading("Bounce count against " + axis_of(param));
     std::vector<PlotSeries> ps;
-    MarkdownTable counts([&] {
-      std::vector<std::string> h{axis_of(param)};
-      for (const auto* s : list) h.push_back(std::string(to_string(s->spec.convention)) + ", " + solver_word(s->spec.solver));
-      return h;
-    }());
-    const auto& values = list.front()->spec.values;
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      std::vector<std::string> row{fmt(values[i], 3)};
-      for (const auto* s : list) row.push_back(s->counts[i] < 0 ? "failed" : std::to_string(s->counts[i]));
-      counts.row(row);
-    }
-    for (const auto* s : list) {
-      H5Group sg = g.create_group(s->spec.name);
-      sg.set_attr("parameter", std::string(to_string(param)));
-      sg.set_attr("convention", std::string(to_string(s->spec.convention)));
-      sg.set_attr("solver", s->spec.solver.label());
-      sg.set_attr("threshold_tolerance", s->spec.threshold_tolerance);
-      sg.set_attr("runs", static_cast<long long>(s->runs));
-      sg.set_attr("cpu_s", s->cpu_s);
-      Table t;
-      t.columns = {"value", "bounces"};
-      for (std::size_t i = 0; i < s->spec.values.size(); ++i) t.add_row({s->spec.values[i], static_cast<double>(s->counts[i])});
-      sg.write_table("counts", t);
-      Table th;
-      th.columns = {"lo", "hi", "count_below", "count_above", "bisected"};
-      for (const auto& x : s->thresholds)
-        th.add_row({x.lo, x.hi, static_cast<double>(x.count_below), static_cast<double>(x.count_above), x.bisected ? 1.0 : 0.0});
-      sg.write_table("thresholds", th);
+    for (const auto& n : names) {
+      const Record& s = pr.at(n);
       // The curve: grid counts merged with both ends of every bisected bracket (sharp steps).
       std::vector<std::pair<double, double>> pts;
-      for (std::size_t i = 0; i < s->spec.values.size(); ++i)
-        if (s->counts[i] >= 0) pts.emplace_back(s->spec.values[i], s->counts[i]);
-      for (const auto& x : s->thresholds)
-        if (x.bisected) {
-          if (x.count_below >= 0) pts.emplace_back(x.lo, x.count_below);
-          if (x.count_above >= 0) pts.emplace_back(x.hi, x.count_above);  // −1: a failed run, not a count
+      const Table& counts = s.table("counts");
+      const auto v = counts.column("value"), b = counts.column("bounces");
+      for (std::size_t i = 0; i < v.size(); ++i)
+        if (b[i] >= 0) pts.emplace_back(v[i], b[i]);
+      const Table& th = s.table("thresholds");
+      for (std::size_t i = 0; i < th.rows(); ++i)
+        if (th.column("bisected")[i] != 0) {
+          if (th.column("count_below")[i] >= 0) pts.emplace_back(th.column("lo")[i], th.column("count_below")[i]);
+          if (th.column("count_above")[i] >= 0) pts.emplace_back(th.column("hi")[i], th.column("count_above")[i]);
         }
       std::sort(pts.begin(), pts.end());
       PlotSeries p;
-      p.title = std::string(to_string(s->spec.convention)) + ", " + solver_word(s->spec.solver);
+      p.title = who(s);
       p.style = "steps";
       for (const auto& [x, y] : pts) {
         p.x.push_back(x);
@@ -143,86 +76,63 @@ SectionOutput sweeps_section(const std::vector<BounceSweepResult>& sweeps, const
     ax.x_label = axis_of(param);
     ax.y_label = "bounces";
     ax.extra = "set yrange [-0.5:*]\nset offsets 0, 0, 1, 0";
-    Figure f = line_figure(std::string("sweep_") + to_string(param), "Bounce count against " + axis_of(param), ax, ps,
-                           to_string(param), "bounces");
-    md << "### Bounce count against " << axis_of(param) << "\n\n" << figure_markdown(f);
-    out.figures.push_back(f);
-    md << counts.str() << "\n";
-    md << "Thresholds (bisected to the tolerance; the value is the middle of the final bracket):\n\n";
+    w.figure(line_figure("sweep_" + param, "Bounce count against " + axis_of(param), ax, ps, param, "bounces"));
+    std::vector<std::string> headers{axis_of(param)};
+    for (const auto& n : names) headers.push_back(who(pr.at(n)));
+    MarkdownTable counts(headers);
+    const auto values = pr.table("values").column("value");
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      std::vector<std::string> row{fmt(values[i], 3)};
+      for (const auto& n : names) row.push_back(count_text(pr.at(n).table("counts").column("bounces")[i]));
+      counts.row(row);
+    }
+    w.table(counts);
+    w.text("Thresholds (bisected to the tolerance; the value is the middle of the final bracket):");
     MarkdownTable th({"convention, solver", "thresholds: value (bounces below → above)", "runs", "CPU (s)"});
-    for (const auto* s : list) {
+    for (const auto& n : names) {
+      const Record& s = pr.at(n);
+      const Table& t = s.table("thresholds");
       std::ostringstream txt;
-      int shown = 0;
-      for (const auto& x : s->thresholds) {
-        if (shown++) txt << "; ";
-        auto cnt = [](int c) { return c < 0 ? std::string("failed") : std::to_string(c); };
-        txt << fmt(x.value(), 4) << (x.bisected ? " ± " + fmt(0.5 * (x.hi - x.lo), 2) : " (not bisected)") << " ("
-            << cnt(x.count_below) << "→" << cnt(x.count_above) << ")";
+      for (std::size_t i = 0; i < t.rows(); ++i) {
+        const double lo = t.column("lo")[i], hi = t.column("hi")[i];
+        txt << (i ? "; " : "") << fmt(0.5 * (lo + hi), 4)
+            << (t.column("bisected")[i] != 0 ? " ± " + fmt(0.5 * (hi - lo), 2) : std::string(" (not bisected)")) << " ("
+            << count_text(t.column("count_below")[i]) << "→" << count_text(t.column("count_above")[i]) << ")";
       }
-      if (s->thresholds.empty()) txt << "none: the count does not change";
-      th.row({std::string(to_string(s->spec.convention)) + ", " + solver_word(s->spec.solver), txt.str(),
-              std::to_string(s->runs), fmt(s->cpu_s, 3)});
+      if (t.rows() == 0) txt << "none: the count does not change";
+      th.row({who(s), txt.str(), fmt(s.number("runs"), 8), fmt(s.number("cpu_s"), 3)});
     }
-    md << th.str() << "\n";
-    // What it finds: agreement of the solvers per convention, and how many changes of the count sit
-    // right next to a grid value (the count flips as soon as the parameter moves: sensitive dependence).
-    md << "*What it finds:* ";
-    for (Convention conv : {Convention::physical, Convention::paper}) {
-      const BounceSweepResult* ref = nullptr;
-      const BounceSweepResult* rt = nullptr;
-      for (const auto* s : list)
-        if (s->spec.convention == conv) (s->spec.solver.kind == SolverKind::reference ? ref : rt) = s;
-      if (!ref || !rt) continue;
-      int agree = 0, n = static_cast<int>(ref->counts.size()), lo = 1 << 30, hi = -1, failed = 0;
-      for (int i = 0; i < n; ++i) {
-        agree += ref->counts[i] == rt->counts[i] ? 1 : 0;
-        if (ref->counts[i] < 0) ++failed;
-        else {
-          lo = std::min(lo, ref->counts[i]);
-          hi = std::max(hi, ref->counts[i]);
-        }
-      }
-      int hugging = 0, bisected = 0;
-      for (const auto& x : ref->thresholds) {
-        if (!x.bisected) continue;
-        ++bisected;
-        for (double v : ref->spec.values)
-          if (std::abs(x.value() - v) <= 2 * ref->spec.threshold_tolerance) {
-            ++hugging;
-            break;
-          }
-      }
-      md << to_string(conv) << " convention: the reference counts " << (hi < 0 ? std::string("nothing") : std::to_string(lo) + "–" + std::to_string(hi))
-         << " bounces";
-      if (failed) md << " (" << failed << " reference runs failed)";
-      md << ", the real-time stepper agrees at " << agree << " of " << n << " grid values; " << ref->thresholds.size()
-         << " changes of the reference count";
-      if (bisected >= 3 && hugging * 2 >= bisected)
-        md << ", " << hugging << " of the " << bisected << " bisected ones within two tolerances of a grid value — "
-           << "the count changes as soon as the parameter moves off the grid value, i.e. it depends sensitively on "
-              "the throw (not a curve with a few clean steps)";
-      md << ". ";
+    w.table(th);
+    const Record& cmp = pr.at("comparison");
+    for (const auto& conv : cmp.child_names()) {
+      const Record& k = cmp.at(conv);
+      std::string counts_range = std::isnan(k.number("reference_max_bounces"))
+                                     ? std::string("nothing")
+                                     : fmt(k.number("reference_min_bounces")) + "–" + fmt(k.number("reference_max_bounces"));
+      std::string line = conv + " convention: the reference counts " + counts_range + " bounces";
+      if (k.number("reference_failed") > 0) line += " (" + fmt(k.number("reference_failed")) + " reference runs failed)";
+      line += "; the real-time stepper agrees at " + fmt(k.number("agree")) + " of " + fmt(k.number("grid_points")) +
+              " grid values; " + fmt(k.number("reference_thresholds")) + " changes of the reference count — " +
+              verdict_markdown(k.at("character"));
+      w.bullet(line + ".");
     }
-    md << "\n\n";
-    (void)unit_of;
+    w.end_list();
   }
 
   // Fig. 9: momentum against time.
-  H5Group hg = data.create_group("fig9");
-  for (const auto& h : fig9) write_history(hg, history_group_name(h.label), h);
-  md << "### Momentum against time (the paper's Fig. 9)\n\n"
-     << "The seed's 8 m/s throw without spin and with spin, both solvers, both conventions. Lee & Baek report "
-        "for their model: without spin three bounces with momentum falling fast at each; with spin, more bounces "
-        "and a gradual fall.\n\n";
+  w.subheading("Momentum against time (the paper's Fig. 9)");
+  w.text("The seed's 8 m/s throw without spin and with spin, both solvers, both conventions (the numbers beside the "
+         "seed's claims are in section 5).");
   for (const char* conv : {"physical", "paper"}) {
     std::vector<PlotSeries> ps;
-    for (const auto& h : fig9) {
-      if (std::string(to_string(h.convention)) != conv) continue;
+    for (const auto& key : fig9.strings("histories")) {
+      const Record& h = fig9.at(key);
+      if (h.text("convention") != conv) continue;
       PlotSeries p;
-      p.title = h.label + " (" + std::to_string(h.result.bounces) + " bounces)";
-      p.style = h.label.find("real-time") != std::string::npos ? "lines dt 2" : "lines";
-      p.x = h.table.column("t_s");
-      p.y = h.table.column("momentum_kg_m_s");
+      p.title = h.text("label") + " (" + fmt(h.number("bounces")) + " bounces)";
+      p.style = h.text("solver").rfind("realtime", 0) == 0 ? "lines dt 2" : "lines";
+      p.x = h.table("history").column("t_s");
+      p.y = h.table("history").column("momentum_kg_m_s");
       ps.push_back(p);
     }
     PlotAxes ax;
@@ -230,11 +140,10 @@ SectionOutput sweeps_section(const std::vector<BounceSweepResult>& sweeps, const
     ax.y_label = "momentum |p| (kg m/s)";
     Figure f = line_figure(std::string("fig9_momentum_") + conv, std::string("Momentum against time, ") + conv + " convention",
                            ax, ps, "t_s", "momentum_kg_m_s");
-    md << figure_markdown(f);
-    out.figures.push_back(f);
+    f.data_path = fig9.path();
+    w.figure(f);
   }
-  out.markdown = md.str();
-  return out;
+  return w.finish();
 }
 
 }  // namespace stoneskip

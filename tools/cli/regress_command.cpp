@@ -17,6 +17,7 @@
 
 #include "stoneskip_version.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "tools/cli/terminal_progress.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
 #include "verification/stones/bounce_baseline.hpp"
@@ -64,7 +65,7 @@ void add_regress(CLI::App& app) {
       specs.push_back(sweep_of(stored.back()));
     }
     std::printf("regress: %zu baseline%s\n", paths.size(), paths.size() == 1 ? "" : "s");
-    const auto results = run_bounce_sweeps(specs, ParallelOptions{*workers, "regress"});
+    const auto results = run_bounce_sweeps(specs, ParallelOptions{*workers, "regress", terminal_progress()});
     int failed = 0;
     for (std::size_t i = 0; i < stored.size(); ++i) {
       const BounceBaseline& b = stored[i];

@@ -1,49 +1,46 @@
-// stoneskip report waves --out DIR [--quick]
+// stoneskip report waves --out DIR [--quick | --study FILE] [--cases DIR]
 //
 // Runs the wave studies (consistency, convergence, isotropy, stability, speed against error of
-// the four stencils of spec §2.2) and writes DIR/index.md, DIR/data.h5 and DIR/figures/.
-//   stoneskip report waves --out out/waves          # the full report, a few minutes on 2 cores
-//   stoneskip report waves --out /tmp/w --quick     # reduced grids, seconds (a smoke run)
-//   stoneskip plot out/waves                        # redraw the figures from data.h5
-// Progress goes to stderr. Exit 1 if a figure could not be drawn.
-#include <chrono>
-#include <cstdio>
-#include <filesystem>
+// the stencils of spec §2.2) with the settings of a study file, stores each section in
+// DIR/data.h5 as it finishes, and renders DIR/index.md and DIR/figures/ from that file alone.
+//   stoneskip report waves --out out/waves          # cases/studies/waves.toml: a few minutes on 2 cores
+//   stoneskip report waves --out /tmp/w --quick     # cases/studies/waves_quick.toml: seconds
+//   stoneskip report render out/waves               # rebuild index.md and the figures from data.h5
+// A run killed late resumes its finished sections when started again with the same settings.
 #include <memory>
 
-#include "reports/waves/waves_report.hpp"
 #include "tools/cli/command_registry.hpp"
-#include "tools/io/atomic_file.hpp"
-#include "tools/io/input_error.hpp"
+#include "tools/cli/report_render.hpp"
+#include "tools/scene/wave_study_file.hpp"
 
 namespace stoneskip::cli {
 namespace {
 
 struct ReportWavesArgs {
   std::string out;
+  std::string cases = "cases";
+  std::string study;
   bool quick = false;
 };
 
 void report_waves(const ReportWavesArgs& a) {
-  std::filesystem::create_directories(a.out);
-  { AtomicOutput check(std::filesystem::path(a.out) / "index.md"); }  // an unwritable folder fails now, not later
-  const auto start = std::chrono::steady_clock::now();
-  WaveStudiesOptions options;
-  options.quick = a.quick;
-  WaveStudies studies = run_wave_studies(options);
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::string command = "stoneskip report waves --out " + a.out + (a.quick ? " --quick" : "");
-  WavesReportSummary s = write_waves_report(studies, a.out, command, wall_s);
-  std::printf("wrote %s (%d figures, studies took %.1f s)\n", s.index.c_str(), s.figures_rendered, wall_s);
-  for (const auto& f : s.figure_failures) std::fprintf(stderr, "figure failed: %s\n", f.c_str());
-  if (!s.figure_failures.empty()) set_exit_code(1);
+  const std::string study =
+      !a.study.empty() ? a.study : a.cases + (a.quick ? "/studies/waves_quick.toml" : "/studies/waves.toml");
+  const WaveStudyFile f = load_wave_study_file(study);
+  ReportBuild build({a.out, "waves", "# " + study + "\n" + f.text,
+                     "stoneskip report waves --out " + a.out + (a.study.empty() ? (a.quick ? " --quick" : "") : " --study " + a.study),
+                     terminal_progress()});
+  const Record root = run_wave_studies(f.options, build);
+  finish_report(build, root, a.out);
 }
 
 void add_report_waves(CLI::App& report) {
   auto a = std::make_shared<ReportWavesArgs>();
-  auto* cmd = report.add_subcommand("waves", "Water-surface verification: consistency, convergence, isotropy, stability, speed vs error of the four stencils");
-  cmd->add_option("--out", a->out, "Report folder (created)")->required();
-  cmd->add_flag("--quick", a->quick, "Reduced grids and sequences (seconds; for smoke tests)");
+  auto* cmd = report.add_subcommand("waves", "Water-surface verification: consistency, convergence, isotropy, stability, speed vs error of the stencils");
+  cmd->add_option("--out", a->out, "Report folder (made whole at the end; an existing report folder is replaced)")->required();
+  cmd->add_option("--cases", a->cases, "Folder of the shipped cases (holds studies/)")->capture_default_str();
+  auto* q = cmd->add_flag("--quick", a->quick, "The quick preset (cases/studies/waves_quick.toml): seconds, for smoke tests");
+  cmd->add_option("--study", a->study, "A waves study file instead of the shipped presets")->excludes(q);
   cmd->callback([a] { report_waves(*a); });
 }
 

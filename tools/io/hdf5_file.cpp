@@ -143,6 +143,22 @@ std::vector<std::string> H5Group::children() const {
   return names;
 }
 
+H5Group::ChildKind H5Group::child_kind(const std::string& name) const {
+  H5O_info_t info;  // HDF5 1.10 (Debian 12)
+  if (H5Oget_info_by_name2(id(), name.c_str(), &info, H5O_INFO_BASIC, H5P_DEFAULT) < 0)
+    throw std::runtime_error("HDF5: no object " + path_ + "/" + name);
+  if (info.type == H5O_TYPE_GROUP) return ChildKind::group;
+  if (info.type != H5O_TYPE_DATASET) return ChildKind::other;
+  H5Id ds(check_id(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), "no dataset " + path_ + "/" + name), H5Dclose);
+  H5Id type(H5Dget_type(ds.get()), H5Tclose);
+  const auto dims = dataset_dims(ds.get());
+  if (H5Tget_class(type.get()) == H5T_STRING) return dims.size() == 1 ? ChildKind::strings : ChildKind::other;
+  if (H5Tget_class(type.get()) != H5T_FLOAT) return ChildKind::other;
+  if (dims.size() == 2 && H5Aexists(ds.get(), "columns") > 0) return ChildKind::table;
+  if (dims.size() == 1) return ChildKind::vector;
+  return ChildKind::other;
+}
+
 void H5Group::write_vector(const std::string& name, const std::vector<double>& v, const std::string& units) const {
   H5Id ds = create_dataset(id(), name, H5T_NATIVE_DOUBLE, {static_cast<hsize_t>(v.size())});
   if (!v.empty()) check(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), "write " + name);
@@ -233,6 +249,25 @@ void H5Group::set_attr(const std::string& name, long long value) const {
 }
 
 bool H5Group::has_attr(const std::string& name) const { return H5Aexists(id(), name.c_str()) > 0; }
+
+std::vector<std::string> H5Group::attr_names() const {
+  std::vector<std::string> names;
+  hsize_t idx = 0;
+  H5Aiterate2(
+      id(), H5_INDEX_NAME, H5_ITER_INC, &idx,
+      [](hid_t, const char* attr_name, const H5A_info_t*, void* data) -> herr_t {
+        static_cast<std::vector<std::string>*>(data)->emplace_back(attr_name);
+        return 0;
+      },
+      &names);
+  return names;
+}
+
+bool H5Group::attr_is_string(const std::string& name) const {
+  H5Id a = open_attr(id(), name);
+  H5Id t(H5Aget_type(a.get()), H5Tclose);
+  return H5Tget_class(t.get()) == H5T_STRING;
+}
 std::string H5Group::attr_string(const std::string& name) const { return get_string_attr(id(), name); }
 
 double H5Group::attr_double(const std::string& name) const {

@@ -53,7 +53,11 @@ class H5Group {
   H5Group create_group(const std::string& name) const;
   H5Group open_group(const std::string& name) const;
   bool has(const std::string& name) const;
-  std::vector<std::string> children() const;
+  std::vector<std::string> children() const;  // links, in name order
+  // What a child link is: a group, a 2-D table with a `columns` attribute, a list of strings, a
+  // 1-D vector of doubles, or something else.
+  enum class ChildKind { group, table, strings, vector, other };
+  ChildKind child_kind(const std::string& name) const;
 
   // Datasets.
   void write_vector(const std::string& name, const std::vector<double>& v, const std::string& units = "") const;
@@ -70,6 +74,8 @@ class H5Group {
   void set_attr(const std::string& name, double value) const;
   void set_attr(const std::string& name, long long value) const;
   bool has_attr(const std::string& name) const;
+  std::vector<std::string> attr_names() const;  // in name order
+  bool attr_is_string(const std::string& name) const;
   std::string attr_string(const std::string& name) const;
   double attr_double(const std::string& name) const;
   long long attr_int(const std::string& name) const;

@@ -158,10 +158,39 @@ std::optional<std::vector<double>> TomlTable::maybe_numbers(const std::string& k
   return numbers(key);
 }
 
+std::vector<std::string> TomlTable::strings(const std::string& key) {
+  const toml::value& v = at(key);
+  if (!v.is_array()) fail(key, "expected an array of strings, got " + short_type(v));
+  std::vector<std::string> out;
+  for (const auto& e : v.as_array()) {
+    if (!e.is_string()) fail(key, "expected an array of strings, found " + short_type(e));
+    out.push_back(e.as_string().str);
+  }
+  return out;
+}
+
+std::optional<std::vector<std::string>> TomlTable::maybe_strings(const std::string& key) {
+  used_.insert(key);
+  if (!has(key)) return std::nullopt;
+  return strings(key);
+}
+
 TomlTable TomlTable::table(const std::string& key) {
   const toml::value& v = at(key);
   if (!v.is_table()) fail(key, "expected a table [" + full(key) + "], got " + short_type(v));
   return TomlTable(&v, file_, full(key));
+}
+
+std::vector<TomlTable> TomlTable::tables(const std::string& key) {
+  const toml::value& v = at(key);
+  if (!v.is_array()) fail(key, "expected an array of tables [[" + full(key) + "]], got " + short_type(v));
+  std::vector<TomlTable> out;
+  const auto& a = v.as_array();
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (!a[i].is_table()) fail(key, "expected an array of tables [[" + full(key) + "]], found " + short_type(a[i]));
+    out.emplace_back(&a[i], file_, full(key) + "[" + std::to_string(i) + "]");
+  }
+  return out;
 }
 
 std::optional<TomlTable> TomlTable::maybe_table(const std::string& key) {

@@ -27,8 +27,11 @@ class TomlTable {
   bool boolean_or(const std::string& key, bool fallback);
   std::vector<double> numbers(const std::string& key);  // an array of numbers
   std::optional<std::vector<double>> maybe_numbers(const std::string& key);
+  std::vector<std::string> strings(const std::string& key);  // an array of strings
+  std::optional<std::vector<std::string>> maybe_strings(const std::string& key);
   TomlTable table(const std::string& key);             // a required sub-table
   std::optional<TomlTable> maybe_table(const std::string& key);
+  std::vector<TomlTable> tables(const std::string& key);  // an array of tables [[key]]
   std::vector<std::string> keys() const;
 
   // Range checks with the standard message.

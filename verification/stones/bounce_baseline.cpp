@@ -7,7 +7,7 @@
 
 #include "tools/io/input_error.hpp"
 #include "tools/io/toml_table.hpp"
-#include "tools/scene/stone_case.hpp"
+#include "tools/scene/case_problem.hpp"
 
 namespace stoneskip {
 

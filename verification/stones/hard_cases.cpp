@@ -79,7 +79,7 @@ std::vector<HardCaseResult> run_hard_cases(const std::vector<std::pair<std::stri
         r.result = solve(cases[k].second, realtime_choice(ro));
       });
   }
-  run_jobs(jobs, ParallelOptions{o.workers, o.progress ? "stones: hard cases" : ""});
+  run_jobs(jobs, ParallelOptions{o.workers, "stones: hard cases", o.progress});
   for (auto& h : out) {
     const ThrowResult& ref = h.reference;
     if (ref.outcome == Outcome::failed) {
@@ -128,7 +128,7 @@ std::vector<StableStepRow> run_stable_step(const ThrowProblem& base, const Stabl
         runs[k][i] = solve(problems[k], realtime_choice(ro));
       });
   }
-  run_jobs(jobs, ParallelOptions{o.workers, o.progress ? "stones: largest stable step" : ""});
+  run_jobs(jobs, ParallelOptions{o.workers, "stones: largest stable step", o.progress});
   for (std::size_t k = 0; k < problems.size(); ++k) {
     StableStepRow& row = rows[k];
     row.speed_m_s = o.speeds_m_s[k];

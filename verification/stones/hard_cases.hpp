@@ -8,6 +8,8 @@
 // convention: the fluids can only take energy out, spec §1.6). And, over throw speed, the largest
 // step that stays stable.
 #include <string>
+
+#include "verification/study/progress.hpp"
 #include <vector>
 
 #include "verification/stones/contact_comparison.hpp"
@@ -23,7 +25,7 @@ struct HardCaseOptions {
   // energy (the reference's own drift is ~rtol of it; a real-time scheme's is far larger).
   double energy_tolerance_fraction = 1e-4;
   int workers = 2;
-  bool progress = true;
+  ProgressFactory progress;  // how long runs are shown; empty: silently
 };
 
 struct HardRun {
@@ -58,7 +60,7 @@ struct StableStepOptions {
   double energy_tolerance_fraction = 1e-4;
   Scheme scheme = Scheme::semi_implicit_euler;
   int workers = 2;
-  bool progress = true;
+  ProgressFactory progress;  // how long runs are shown; empty: silently
 };
 
 struct StableStepRow {

@@ -8,14 +8,12 @@
 #include <thread>
 #include <vector>
 
-#include "tools/io/progress.hpp"
 
 namespace stoneskip {
 
 void parallel_for(std::size_t count, const std::function<void(std::size_t)>& job, const ParallelOptions& options) {
   if (count == 0) return;
-  std::unique_ptr<Progress> progress;
-  if (!options.label.empty()) progress = std::make_unique<Progress>(options.label, count);
+  const std::unique_ptr<ProgressTicker> progress = start_progress(options.progress, options.label, count);
   std::atomic<std::size_t> next{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
@@ -33,7 +31,7 @@ void parallel_for(std::size_t count, const std::function<void(std::size_t)>& job
         std::lock_guard<std::mutex> lock(failure_mutex);
         if (!failure) failure = std::current_exception();
       }
-      if (progress) progress->tick();
+      progress->tick();
     }
   };
   const int n = std::max(1, std::min<int>(options.workers, static_cast<int>(count)));
@@ -41,7 +39,6 @@ void parallel_for(std::size_t count, const std::function<void(std::size_t)>& job
   for (int k = 1; k < n; ++k) threads.emplace_back(worker);
   worker();
   for (auto& t : threads) t.join();
-  if (progress) progress->done();
   if (failure) std::rethrow_exception(failure);
 }
 

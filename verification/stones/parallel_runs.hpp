@@ -6,11 +6,14 @@
 #include <functional>
 #include <string>
 
+#include "verification/study/progress.hpp"
+
 namespace stoneskip {
 
 struct ParallelOptions {
   int workers = 2;          // 2: both cores of the reference machine
-  std::string label;        // progress label; empty: no progress line
+  std::string label;        // progress label
+  ProgressFactory progress; // empty: no progress shown
 };
 
 void parallel_for(std::size_t count, const std::function<void(std::size_t)>& job, const ParallelOptions& options);

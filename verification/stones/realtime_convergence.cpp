@@ -165,7 +165,7 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
         });
       }
     }
-    run_jobs(jobs, ParallelOptions{o.workers, o.progress ? "stones: convergence of the real-time stepper" : ""});
+    run_jobs(jobs, ParallelOptions{o.workers, "stones: convergence of the real-time stepper", o.progress});
   }
 
   // 5. Series.

@@ -14,6 +14,8 @@
 // error from above (|check − reference| ≈ the check's error ≫ the reference's). Points whose
 // error is below that bound are kept in the tables but left out of the fit.
 #include <string>
+
+#include "verification/study/progress.hpp"
 #include <vector>
 
 #include "verification/convergence/gci.hpp"
@@ -32,7 +34,7 @@ struct RealtimeConvergenceOptions {
   double check_factor = 100;                     // the check run: rtol × check_factor
   double floor_factor = 1;                       // fit only errors > floor_factor × |check − reference|
   int workers = 2;
-  bool progress = true;
+  ProgressFactory progress;  // how long runs are shown; empty: silently
 };
 
 struct ConvergenceSeries {

@@ -27,7 +27,7 @@ ReferenceToleranceResult run_reference_tolerance(const ThrowProblem& p, const Re
   jobs.push_back([&] { res.truth = solve(p, reference_choice(options_for(o.truth_rtol))); });
   for (std::size_t i = 0; i < o.rtol.size(); ++i)
     jobs.push_back([&, i] { runs[i] = solve(p, reference_choice(options_for(o.rtol[i]))); });
-  run_jobs(jobs, ParallelOptions{o.workers, o.progress ? "stones: reference tolerance proportionality" : ""});
+  run_jobs(jobs, ParallelOptions{o.workers, "stones: reference tolerance proportionality", o.progress});
 
   std::vector<double> h, e_pos, h_t, e_t;
   double at_1e6 = kNaN, at_1e10 = kNaN;

@@ -3,6 +3,8 @@
 // at tolerance rtol, measured against a much tighter run, should fall in proportion to rtol
 // (slope ≈ 1 on a log–log plot) if its error control works through the located contact events.
 #include <string>
+
+#include "verification/study/progress.hpp"
 #include <vector>
 
 #include "verification/convergence/order_fit.hpp"
@@ -16,7 +18,7 @@ struct ReferenceToleranceOptions {
   double atol_ratio = 1e-2;         // atol = atol_ratio · rtol (SI units, positions ~ 1 m)
   ReferenceMethod method = ReferenceMethod::bdf;
   int workers = 2;
-  bool progress = true;
+  ProgressFactory progress;  // how long runs are shown; empty: silently
 };
 
 struct ReferenceTolerancePoint {

@@ -5,22 +5,8 @@
 #include <sstream>
 
 #include "solvers/reference/cvode_stone.hpp"
-#include "tools/scene/stone_case.hpp"
 
 namespace stoneskip {
-
-ThrowProblem problem_from_case(const StoneCase& c) {
-  ThrowProblem p;
-  p.label = c.title;
-  p.stone = c.stone;
-  p.environment = c.environment;
-  p.from_parameters = c.throw_from_parameters;
-  p.parameters = c.throw_parameters;
-  p.initial = c.initial;
-  p.realtime = c.realtime;
-  p.reference = c.reference;
-  return p;
-}
 
 ThrowProblem with_parameters(const ThrowProblem& p, const ThrowParameters& tp) {
   ThrowProblem q = p;

@@ -10,8 +10,6 @@
 
 namespace stoneskip {
 
-struct StoneCase;
-
 struct ThrowProblem {
   std::string label;               // the case title, plus what a study changed
   Stone stone;
@@ -23,7 +21,6 @@ struct ThrowProblem {
   ReferenceOptions reference;      // the case's [reference] settings
 };
 
-ThrowProblem problem_from_case(const StoneCase& c);
 // The same problem thrown with other parameters (the initial state is rebuilt, spec §1.7).
 ThrowProblem with_parameters(const ThrowProblem& p, const ThrowParameters& tp);
 ThrowProblem with_convention(const ThrowProblem& p, Convention c);

@@ -167,12 +167,12 @@ ValidationResult run_validation(const ThrowProblem& clanet, const ThrowProblem& 
     });
   }
   // The three spin regimes at α = 35°, β = 20° (Clanet et al.: tumbles / dips and recovers / held).
-  const std::vector<double> regimes{0, 10, 65};
+  const std::vector<double>& regimes = o.regime_spins_rev_s;
   C.spin_regimes.resize(2 * regimes.size());
   for (std::size_t i = 0; i < regimes.size(); ++i) {
     for (int c = 0; c < 2; ++c) {
       jobs.push_back([&, i, c] {
-        ThrowProblem q = vary(c ? clanet_paper : clanet, SweepParameter::attack_angle_deg, 35.0);
+        ThrowProblem q = vary(c ? clanet_paper : clanet, SweepParameter::attack_angle_deg, o.regime_attack_deg);
         q = vary(q, SweepParameter::spin_rev_s, regimes[i]);
         ThrowResult r = solve(q, reference_of(q, o.reference_rtol, true));
         C.spin_regimes[2 * i + c] =
@@ -218,7 +218,7 @@ ValidationResult run_validation(const ThrowProblem& clanet, const ThrowProblem& 
               spin_label(q.parameters.speed_m_s, q.parameters.spin_rev_s, q.environment.convention, s ? "real-time" : "reference"));
         });
 
-  run_jobs(jobs, ParallelOptions{o.workers, o.progress ? "stones: validation" : ""});
+  run_jobs(jobs, ParallelOptions{o.workers, "stones: validation", o.progress});
 
   // Fits and predictions.
   {

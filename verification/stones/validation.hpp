@@ -9,12 +9,24 @@
 //  * Bocquet 2003: bounce count against V² and against Ω².
 //  * Lee & Baek 2013 (the seed): 3 bounces without spin at 8 m/s, more with spin, a curved path.
 #include <string>
+
+#include "verification/study/progress.hpp"
 #include <vector>
 
 #include "verification/stones/throw_history.hpp"
 #include "verification/stones/throw_problem.hpp"
 
 namespace stoneskip {
+
+// A measured (or otherwise expected) value the model is set beside (spec §3), as its source states
+// it; from the study file, stored with the findings, never typed into a report.
+struct MeasuredValue {
+  std::string key;        // the validation row: "clanet_min_speed", "bocquet_speed_exponent", ...
+  std::string quantity;   // the row's words
+  std::string measured;   // "≈ 2.5–2.6 m/s"
+  std::string expected;   // the spec's independent 2-D reduction, or "–"
+  std::string source;     // "Clanet, Hersen & Bocquet 2004"
+};
 
 struct ValidationOptions {
   double reference_rtol = 1e-7;     // the model's value: accurate to far better than it matters here
@@ -25,8 +37,13 @@ struct ValidationOptions {
   std::vector<double> clanet_contact_speeds_m_s{2.5, 3.0, 3.5, 4.0, 5.0, 6.0, 7.0, 8.0};
   std::vector<double> bocquet_speeds_m_s{4, 6, 8, 10, 12, 14, 16, 18};
   std::vector<double> bocquet_spins_rev_s{0, 5, 9, 14, 20, 30};
+  std::vector<double> regime_spins_rev_s{0, 10, 65};  // Clanet's three spin regimes, at α = regime_attack_deg
+  double regime_attack_deg = 35;
+  double contact_time_speed_m_s = 3.5;                // where a contact time is compared
+  double min_speed_attack_deg = 20;                   // where a minimum speed is compared
+  std::vector<MeasuredValue> measured;
   int workers = 2;
-  bool progress = true;
+  ProgressFactory progress;  // how long runs are shown; empty: silently
 };
 
 // A value found by bisection on one throw parameter, for one solver and convention.

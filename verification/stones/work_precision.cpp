@@ -112,7 +112,7 @@ WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& throws, 
         }
         if (!p.ok) p.bounce_position_error_m = p.touch_error_m = p.contact_time_error_s = kNaN;
       },
-      ParallelOptions{o.workers, o.progress ? "stones: work-precision runs" : ""});
+      ParallelOptions{o.workers, "stones: work-precision runs", o.progress});
   for (const Job& j : jobs) res.throws[j.throw_index].points.push_back(j.point);
 
   // 3. The cheapest setting of each family for each target error.

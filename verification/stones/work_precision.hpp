@@ -10,6 +10,8 @@
 // missed, extra or merged contact) or that fails is listed as a failure with the reason, never
 // dropped.
 #include <string>
+
+#include "verification/study/progress.hpp"
 #include <vector>
 
 #include "verification/stones/throw_problem.hpp"
@@ -34,7 +36,7 @@ struct WorkPrecisionOptions {
   int repeats = 3;             // CPU time: minimum over this many runs
   std::vector<double> target_errors_m{1e-2, 1e-3, 1e-4};
   int workers = 2;
-  bool progress = true;
+  ProgressFactory progress;  // how long runs are shown; empty: silently
 };
 
 struct WorkPoint {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "tools/io/progress.hpp"
+#include "verification/study/progress.hpp"
 
 namespace stoneskip {
 
@@ -36,7 +36,7 @@ std::size_t convergence_study_work(const ConvergenceStudyOptions& o) {
   return w;
 }
 
-ConvergenceStudy run_convergence_study(const Stencil& stencil, const ConvergenceStudyOptions& o, Progress* progress) {
+ConvergenceStudy run_convergence_study(const Stencil& stencil, const ConvergenceStudyOptions& o, ProgressTicker* progress) {
   const WaveProblem& p = o.problem;
   ConvergenceStudy study;
   study.stencil = stencil.name;

@@ -12,13 +12,14 @@
 #include <vector>
 
 #include "model/water/stencil.hpp"
+#include "verification/study/progress.hpp"
 #include "verification/convergence/gci.hpp"
 #include "verification/convergence/order_fit.hpp"
 #include "verification/waves/wave_problem.hpp"
 
 namespace stoneskip {
 
-class Progress;
+
 
 struct ConvergencePoint {
   int n = 0;
@@ -57,7 +58,7 @@ struct ConvergenceStudy {
 };
 
 ConvergenceStudy run_convergence_study(const Stencil& stencil, const ConvergenceStudyOptions& options,
-                                       Progress* progress = nullptr);
+                                       ProgressTicker* progress = nullptr);
 // Work units (≈ cell updates) the study will do, for progress reporting.
 std::size_t convergence_study_work(const ConvergenceStudyOptions& options);
 

@@ -1,12 +1,15 @@
 #pragma once
-// All the wave studies of the waves report (issue 3), run in one call and returned as plain
-// result structs; reports/waves/ turns them into HDF5, figures and Markdown (reports never
-// integrate). Sections: consistency, convergence (space / time / both), isotropy (symbol,
-// simulation, ring), stability (computed, measured, Lengyel's bound), speed against error.
+// The wave studies (issue 3): every question the waves report answers, as a function from
+// settings (cases/studies/waves*.toml) to findings (verification/study/record.hpp), section by
+// section: consistency, convergence (space / time / both), isotropy (symbol, simulation, ring),
+// stability (computed, measured, Lengyel's bound), speed against error. Each section's record
+// holds the numbers, tables, verdicts and computed reasons the report formats (reports/waves/);
+// nothing in a report decides a verdict.
 #include <string>
 #include <vector>
 
 #include "model/water/stencil.hpp"
+#include "verification/study/study_sink.hpp"
 #include "verification/waves/convergence_study.hpp"
 #include "verification/waves/isotropy.hpp"
 #include "verification/waves/stability.hpp"
@@ -15,71 +18,67 @@
 
 namespace stoneskip {
 
-struct WaveStudiesOptions {
-  bool quick = false;  // smaller grids and fewer points: a smoke run in a few seconds
-  std::vector<std::string> stencils{"five_point", "nine_point_half", "nine_point_isotropic", "paper_eq11"};
-};
-
-struct IsotropyCurve {  // phase-speed error from the symbol against angle, one stencil, one kd
-  std::string stencil;
-  double kd = 0;
-  std::vector<double> theta_rad, error;
-};
-struct SpreadCurve {  // max − min over angle of the phase-speed error, against kd
-  std::string stencil;
-  std::vector<double> kd, spread;
-};
-struct MeasuredIsotropy {
-  std::string stencil;
-  double kd_target = 0;
-  std::vector<MeasuredPhaseSpeed> points;
-};
-
-struct StabilityCurve {  // computed σ limit against μΔt
-  std::string stencil;
-  std::vector<double> mu_dt, limit;
-};
-struct StabilityCheck {  // the limit checked by running
-  std::string stencil;
-  double mu_dt = 0;
-  double computed_limit = 0;
-  double measured_limit = 0;    // bisection on runs
-  double lengyel_bound = 0;
-  GrowthRun below, above;       // at 0.98 and 1.02 × computed limit
-};
-
-struct WaveStudies {
-  WaveStudiesOptions options;
-  std::vector<Stencil> stencils;
-  WaveProblem problem;
-  // Consistency
-  std::vector<ConsistencyResult> consistency;
-  // Convergence
-  ConvergenceStudyOptions convergence_options;
-  std::vector<ConvergenceStudy> convergence;
-  // Isotropy
-  std::vector<IsotropyCurve> isotropy_curves;
-  std::vector<SpreadCurve> spread_curves;
-  std::vector<MeasuredIsotropy> measured_isotropy;
+struct WaveIsotropyOptions {
+  std::vector<double> polar_kd{M_PI / 8, M_PI / 4, M_PI / 2};  // polar plots of c_h/c
+  int polar_angles = 181;                                     // over [0, 2π]
+  double spread_kd_min = 0.02, spread_kd_max = M_PI;          // spread against kd (log-spaced)
+  int spread_points = 41;
+  double table_kd = M_PI / 8;                                 // where stencils are compared
+  std::string baseline_stencil = "five_point";               // spreads are shown as ratios to it
+  std::vector<double> measured_kd{M_PI / 8, M_PI / 4};        // single-mode simulations
+  int measured_angles = 10;                                   // over [0, π/4]
   int measured_grid = 256;
   double measured_sigma = 0.1;
   long measured_steps = 400;
-  RingTestOptions ring_options;
-  std::vector<std::pair<std::string, RingTest>> rings;
-  // Stability
-  std::vector<StabilityCurve> stability_curves;
-  std::vector<StabilityCheck> stability_checks;
-  GrowthRun lengyel_counterexample;  // five-point, μΔt = 0.5, σ = 0.75
-  double lengyel_counterexample_predicted = 0;
-  // Speed against error
-  WorkPrecisionOptions work_options;
-  std::vector<std::pair<std::string, std::vector<WorkPoint>>> work;
-  std::vector<std::pair<std::string, double>> work_sigma_limit;
-  // Cost of each section (CPU seconds)
-  double cpu_consistency_s = 0, cpu_convergence_s = 0, cpu_isotropy_s = 0, cpu_stability_s = 0, cpu_work_s = 0;
+  RingTestOptions ring;
 };
 
-// Runs every study; progress (if given) is ticked per unit of work, shown on stderr by the caller.
-WaveStudies run_wave_studies(const WaveStudiesOptions& options);
+struct WaveStabilityOptions {
+  double mu_dt_max = 1.9;     // the computed limit against μΔt on [0, mu_dt_max]
+  int mu_dt_points = 39;
+  std::vector<double> check_mu_dt{0.0, 0.5, 1.0, 1.5};  // the limit measured by running
+  double check_factor = 0.02;         // runs at (1 ∓ factor) × the computed limit
+  double measured_tolerance = 1e-4;   // relative width of the bisection on runs
+  long measured_steps = 2000;
+  double damping_independence_tolerance = 1e-6;  // limit range over μΔt below this: "independent"
+  double lengyel_sigma = 0.75, lengyel_mu_dt = 0.5;  // Lengyel's bound's counter-example (five-point)
+  long lengyel_steps = 200;
+};
+
+struct WaveSpeedOptions {
+  WorkPrecisionOptions work;             // problem, grids, σ fractions (the limit is set per stencil)
+  std::vector<double> targets_m{1e-4, 1e-5, 1e-6};  // errors whose cost is compared
+  std::string baseline_stencil = "five_point";
+  double material_gain = 1.5;            // a speed-up below this is "not material" (timing noise on a shared machine)
+};
+
+struct WaveStudiesOptions {
+  std::string preset = "full";   // what the settings file called it ("full", "quick", …)
+  std::vector<std::string> stencils{"five_point", "nine_point_half", "nine_point_isotropic", "paper_eq11"};
+  WaveProblem problem;
+  ConsistencyOptions consistency;
+  ConvergenceStudyOptions convergence;  // its problem is `problem`
+  WaveIsotropyOptions isotropy;
+  WaveStabilityOptions stability;
+  WaveSpeedOptions speed;
+  // Checks itself (Ceres' Options::IsValid): false with the first problem in words.
+  bool valid(std::string* why) const;
+};
+
+// The sections in order, each stored in the sink as it finishes (names: "settings",
+// "consistency", "convergence", "isotropy", "stability", "speed"), and the summary record of the
+// whole report (the headline findings, one per stencil).
+Record run_wave_studies(const WaveStudiesOptions& options, StudySink& sink);
+
+// The sections one by one (each a function of the options alone).
+Record wave_settings_findings(const WaveStudiesOptions& o);
+Record wave_consistency_findings(const WaveStudiesOptions& o);
+Record wave_convergence_findings(const WaveStudiesOptions& o, const ProgressFactory& progress);
+Record wave_isotropy_findings(const WaveStudiesOptions& o, const ProgressFactory& progress);
+Record wave_stability_findings(const WaveStudiesOptions& o, const ProgressFactory& progress);
+Record wave_speed_findings(const WaveStudiesOptions& o, const ProgressFactory& progress);
+
+// The verdict of an order fit, stored with its inputs (rule "order_fit") so it can be decided again.
+Record& store_order_verdict(Record& parent, const std::string& key, const OrderFit& fit, const OrderJudgement& j);
 
 }  // namespace stoneskip

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "tools/io/progress.hpp"
+#include "verification/study/progress.hpp"
 
 namespace stoneskip {
 
@@ -21,7 +21,7 @@ std::size_t work_precision_work(const WorkPrecisionOptions& o) {
   return w;
 }
 
-std::vector<WorkPoint> run_work_precision(const Stencil& stencil, const WorkPrecisionOptions& o, Progress* progress) {
+std::vector<WorkPoint> run_work_precision(const Stencil& stencil, const WorkPrecisionOptions& o, ProgressTicker* progress) {
   std::vector<WorkPoint> out;
   for (int n : o.grids) {
     auto cont = solve_spectral(o.problem, n, SpectralSymbol::continuum);

@@ -6,11 +6,12 @@
 #include <vector>
 
 #include "model/water/stencil.hpp"
+#include "verification/study/progress.hpp"
 #include "verification/waves/wave_problem.hpp"
 
 namespace stoneskip {
 
-class Progress;
+
 
 struct WorkPoint {
   int n = 0;
@@ -29,7 +30,7 @@ struct WorkPrecisionOptions {
 };
 
 std::vector<WorkPoint> run_work_precision(const Stencil& stencil, const WorkPrecisionOptions& options,
-                                          Progress* progress = nullptr);
+                                          ProgressTicker* progress = nullptr);
 std::size_t work_precision_work(const WorkPrecisionOptions& options);
 
 // The least CPU time among points whose RMS error is at most `target_m` (NaN if none reaches it).

@@ -1,4 +1,4 @@
-#include "reports/stones/plot_helpers.hpp"
+#include "reports/common/plot.hpp"
 
 #include <limits>
 #include <sstream>

@@ -1,5 +1,5 @@
 #pragma once
-// Small builders for the stones report's gnuplot figures: x–y line plots of several series, each
+// Builders for report figures: x–y line plots of several series, each
 // series a table stored with the figure (so `stoneskip plot DIR` redraws it from data.h5).
 #include <string>
 #include <vector>

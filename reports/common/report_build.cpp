@@ -1,0 +1,167 @@
+#include "reports/common/report_build.hpp"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <functional>
+
+#include "stoneskip_version.hpp"
+#include "tools/io/atomic_file.hpp"
+#include "tools/io/hdf5_file.hpp"
+#include "tools/io/input_error.hpp"
+
+namespace stoneskip {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kManifest = "manifest";
+constexpr const char* kLock = "lock";
+
+std::string manifest_text(const std::string& kind, const std::string& key) {
+  return "stoneskip report build\nkind " + kind + "\nkey " + key + "\n";
+}
+
+// The settings key: what a finished section was computed from. A hash keeps the manifest short;
+// the settings themselves are stored in data.h5.
+std::string settings_key(const ReportBuildOptions& o) {
+  const std::string all = o.kind + "\n" + kGitDescribe + "\n" + o.settings_text;
+  return std::to_string(std::hash<std::string>{}(all));
+}
+
+fs::path section_file(const fs::path& work, const std::string& section) { return work / "sections" / (section + ".h5"); }
+
+}  // namespace
+
+bool is_report_folder(const fs::path& dir) {
+  std::error_code ec;
+  const fs::path data = dir / "data.h5";
+  if (!fs::is_regular_file(data, ec)) return false;
+  try {
+    Hdf5Reader r(data);
+    return r.root().has_attr("report");
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+ReportBuild::ReportBuild(ReportBuildOptions options) : options_(std::move(options)) {
+  const fs::path& out = options_.out_dir;
+  if (out.empty()) throw_input_error("--out", 0, "", "an output folder is required");
+  std::error_code ec;
+  fs::path parent = out.parent_path();
+  if (parent.empty()) parent = ".";
+  if (!fs::is_directory(parent, ec))
+    throw_input_error(out.string(), 0, "", "cannot write: folder '" + parent.string() + "' does not exist");
+  if (::access(parent.c_str(), W_OK) != 0)
+    throw_input_error(out.string(), 0, "", "cannot write: folder '" + parent.string() + "' is not writable");
+  if (fs::exists(fs::symlink_status(out, ec))) {
+    if (fs::is_symlink(fs::symlink_status(out, ec)) || !fs::is_directory(out, ec))
+      throw_input_error(out.string(), 0, "", "exists and is not a folder: refusing to replace it");
+    if (!fs::is_empty(out, ec) && !is_report_folder(out))
+      throw_input_error(out.string(), 0, "", "exists and is not a stoneskip report folder: refusing to replace it");
+  }
+  work_ = out;
+  work_ += ".partial";
+  key_ = settings_key(options_);
+
+  // A work folder left by an earlier run: resume it if it was built with these settings.
+  if (fs::exists(fs::symlink_status(work_, ec))) {
+    if (!fs::is_directory(fs::symlink_status(work_, ec)) || !fs::is_regular_file(work_ / kManifest, ec))
+      throw_input_error(work_.string(), 0, "", "exists and is not a stoneskip work folder: remove it first");
+  }
+  fs::create_directories(work_ / "sections", ec);
+  if (ec) throw_input_error(work_.string(), 0, "", "cannot create the work folder: " + ec.message());
+  lock_fd_ = ::open((work_ / kLock).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (lock_fd_ < 0 || ::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0)
+    throw_input_error(out.string(), 0, "", "another stoneskip process is building this report");
+  std::string old;
+  if (fs::is_regular_file(work_ / kManifest, ec)) old = read_text_file(work_ / kManifest);
+  if (old != manifest_text(options_.kind, key_)) {
+    // Other settings or another kind: nothing in it can be reused.
+    for (const auto& e : fs::directory_iterator(work_ / "sections", ec)) fs::remove_all(e.path(), ec);
+    fs::remove(work_ / "data.h5", ec);
+    fs::remove_all(work_ / "figures", ec);
+    fs::remove(work_ / "index.md", ec);
+    write_text_file(work_ / kManifest, manifest_text(options_.kind, key_));
+  }
+}
+
+ReportBuild::~ReportBuild() {
+  if (lock_fd_ >= 0) ::close(lock_fd_);
+}
+
+std::optional<Record> ReportBuild::resume(const std::string& section) {
+  std::error_code ec;
+  const fs::path f = section_file(work_, section);
+  if (!fs::is_regular_file(f, ec)) return std::nullopt;
+  try {
+    Hdf5Reader r(f);
+    if (!r.root().has_attr("key") || r.root().attr_string("key") != key_) return std::nullopt;
+    Record rec = load_record(r.root().open_group("record"));
+    if (std::find(order_.begin(), order_.end(), section) == order_.end()) order_.push_back(section);
+    ++resumed_;
+    return rec;
+  } catch (const std::exception&) {
+    return std::nullopt;  // unreadable (killed while written, before the rename): compute it again
+  }
+}
+
+void ReportBuild::store(const std::string& section, const Record& record) {
+  Hdf5Writer w(section_file(work_, section));
+  w.root().set_attr("key", key_);
+  w.root().set_attr("section", section);
+  store_record(w.root().create_group("record"), record);
+  w.commit();
+  if (std::find(order_.begin(), order_.end(), section) == order_.end()) order_.push_back(section);
+}
+
+fs::path ReportBuild::assemble(const Record& root) {
+  Hdf5Writer w(work_ / "data.h5");
+  H5Group& g = w.root();
+  stamp_provenance(g);
+  g.set_attr("report", options_.kind);
+  g.set_attr("settings", options_.settings_text);
+  g.set_attr("command", options_.command_line);
+  store_record(g.create_group("report"), root);
+  H5Group sections = g.create_group("sections");
+  for (const auto& s : order_) {
+    Hdf5Reader r(section_file(work_, s));
+    store_record(sections.create_group(s), load_record(r.root().open_group("record")));
+  }
+  std::string list;
+  for (const auto& s : order_) list += (list.empty() ? "" : "\n") + s;
+  sections.set_attr("_children", list);
+  w.commit();
+  return work_;
+}
+
+void ReportBuild::commit() {
+  std::error_code ec;
+  fs::remove_all(work_ / "sections", ec);
+  fs::remove(work_ / kManifest, ec);
+  fs::remove(work_ / kLock, ec);
+  const fs::path& out = options_.out_dir;
+  fs::path old;
+  if (fs::exists(fs::symlink_status(out, ec))) {
+    // Checked in the constructor; checked again, since time has passed.
+    if (!fs::is_directory(fs::symlink_status(out, ec)) || (!fs::is_empty(out, ec) && !is_report_folder(out)))
+      throw_input_error(out.string(), 0, "", "exists and is not a stoneskip report folder: refusing to replace it");
+    old = out;
+    old += ".old-" + std::to_string(::getpid());
+    fs::rename(out, old, ec);
+    if (ec) throw_input_error(out.string(), 0, "", "cannot replace: " + ec.message());
+  }
+  fs::rename(work_, out, ec);
+  if (ec) {
+    if (!old.empty()) fs::rename(old, out, ec);
+    throw_input_error(out.string(), 0, "", "cannot move the finished report into place");
+  }
+  if (!old.empty()) fs::remove_all(old, ec);
+  committed_ = true;
+}
+
+}  // namespace stoneskip

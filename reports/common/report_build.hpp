@@ -1,0 +1,67 @@
+#pragma once
+// A report folder being built. Everything goes into a work folder beside the destination,
+// `<DIR>.partial/`; the destination appears only when the report is whole (rename at commit()),
+// so a report folder is never half written.
+//
+//   <DIR>.partial/manifest         kind and settings key of the build (text)
+//   <DIR>.partial/sections/<s>.h5  one file per finished section, written atomically
+//   <DIR>.partial/data.h5          assembled at the end: root attributes + /sections/<s>
+//
+// Sections are stored as each finishes (StudySink), so a run that dies late (a crash, SIGKILL, a
+// node lost) keeps them: the next run with the same report kind, settings and code version
+// finds `<DIR>.partial` and reuses every finished section. A work folder built with other
+// settings is discarded. Only one process may build a folder at a time (a lock file).
+// An existing <DIR> is replaced only if it is a report folder stoneskip made (it holds a data.h5
+// with a `report` attribute) or an empty folder; anything else is refused with an InputError.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "verification/study/study_sink.hpp"
+
+namespace stoneskip {
+
+struct ReportBuildOptions {
+  std::filesystem::path out_dir;
+  std::string kind;           // "waves", "stones", "captures", "scene"
+  std::string settings_text;  // what the sections were computed from (study files, options)
+  std::string command_line;   // stored with the data
+  ProgressFactory progress;
+};
+
+class ReportBuild : public StudySink {
+ public:
+  explicit ReportBuild(ReportBuildOptions options);
+  ~ReportBuild() override;
+  ReportBuild(const ReportBuild&) = delete;
+  ReportBuild& operator=(const ReportBuild&) = delete;
+
+  std::optional<Record> resume(const std::string& section) override;
+  void store(const std::string& section, const Record& record) override;
+  const ProgressFactory& progress() const override { return options_.progress; }
+
+  // Writes <DIR>.partial/data.h5: provenance, kind, settings and command as root attributes,
+  // `root` (numbers and texts of the whole report) beside them, and every stored section under
+  // /sections in the order stored. Returns the work folder, where the caller renders.
+  std::filesystem::path assemble(const Record& root);
+  // Moves the work folder into place (the sections' files and the lock are removed first).
+  void commit();
+
+  const std::filesystem::path& work_dir() const { return work_; }
+  int resumed_sections() const { return resumed_; }
+
+ private:
+  ReportBuildOptions options_;
+  std::filesystem::path work_;
+  std::string key_;
+  std::vector<std::string> order_;
+  int lock_fd_ = -1;
+  int resumed_ = 0;
+  bool committed_ = false;
+};
+
+// True if `dir` is a folder this program made: it holds data.h5 with a `report` attribute.
+bool is_report_folder(const std::filesystem::path& dir);
+
+}  // namespace stoneskip

@@ -1,0 +1,71 @@
+#include "reports/common/section.hpp"
+
+namespace stoneskip {
+
+std::string verdict_markdown(const Record& v) { return "**" + v.text("verdict") + "** — " + v.text("reason"); }
+
+std::string code(const std::string& s) { return "`" + s + "`"; }
+
+std::string fmt_or_dash(double v, int significant) { return fmt(v, significant); }
+
+SectionWriter::SectionWriter(const Record& section, const std::string& heading) : section_(section) {
+  md_ = "## " + heading + "\n\n";
+}
+
+SectionWriter& SectionWriter::end_list() {
+  if (in_list_) md_ += "\n";
+  in_list_ = false;
+  return *this;
+}
+
+SectionWriter& SectionWriter::text(const std::string& markdown) {
+  end_list();
+  md_ += markdown + "\n\n";
+  return *this;
+}
+
+SectionWriter& SectionWriter::lead(const std::string& lead, const std::string& markdown) {
+  return text("**" + lead + "** " + markdown);
+}
+
+SectionWriter& SectionWriter::subheading(const std::string& title) {
+  end_list();
+  md_ += "### " + title + "\n\n";
+  return *this;
+}
+
+SectionWriter& SectionWriter::bullet(const std::string& markdown) {
+  md_ += "* " + markdown + "\n";
+  in_list_ = true;
+  return *this;
+}
+
+SectionWriter& SectionWriter::verdict(const std::string& subject, const Record& v) {
+  return bullet(subject + ": " + verdict_markdown(v));
+}
+
+SectionWriter& SectionWriter::table(const MarkdownTable& t) {
+  end_list();
+  md_ += t.str() + "\n";
+  return *this;
+}
+
+SectionWriter& SectionWriter::figure(Figure f) {
+  end_list();
+  if (f.data_path.empty()) f.data_path = section_.path();
+  md_ += figure_markdown(f);
+  figures_.push_back(std::move(f));
+  return *this;
+}
+
+SectionOutput SectionWriter::finish() {
+  end_list();
+  if (section_.has_child("cost")) {
+    const Record& c = section_.at("cost");
+    md_ += "*Cost of this section: " + fmt(c.number("wall_s"), 3) + " s wall, " + fmt(c.number("cpu_s"), 3) +
+           " s CPU (all threads).*\n\n";
+  }
+  return SectionOutput{md_, figures_};
+}
+
+}  // namespace stoneskip

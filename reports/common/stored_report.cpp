@@ -1,0 +1,55 @@
+#include "reports/common/stored_report.hpp"
+
+#include "tools/io/atomic_file.hpp"
+#include "tools/io/hdf5_file.hpp"
+#include "tools/io/input_error.hpp"
+
+namespace stoneskip {
+
+StoredReport load_stored_report(const std::filesystem::path& data_h5) {
+  Hdf5Reader in(data_h5);
+  const H5Group& root = in.root();
+  if (!root.has_attr("report") || !root.has("sections") || !root.has("report"))
+    throw_input_error(data_h5.string(), 0, "", "not the data file of a stoneskip report (no /report and /sections)");
+  StoredReport s;
+  s.file = data_h5;
+  try {
+    s.kind = root.attr_string("report");
+    s.code_version = root.attr_string("code_version");
+    s.created_utc = root.attr_string("created_utc");
+    s.settings = root.has_attr("settings") ? root.attr_string("settings") : "";
+    s.command = root.has_attr("command") ? root.attr_string("command") : "";
+    s.report = load_record(root.open_group("report"));
+    s.sections = load_record(root.open_group("sections"));
+  } catch (const std::exception& e) {
+    throw_input_error(data_h5.string(), 0, "", std::string("unreadable report data: ") + e.what());
+  }
+  return s;
+}
+
+void append(RenderedReport& r, const SectionOutput& s) {
+  r.markdown += s.markdown;
+  r.figures.insert(r.figures.end(), s.figures.begin(), s.figures.end());
+}
+
+std::string provenance_markdown(const StoredReport& s) {
+  std::string md = "## Provenance\n\n";
+  md += "* Code: " + s.code_version + "; data written " + s.created_utc + ".\n";
+  if (!s.command.empty()) md += "* Made by: `" + s.command + "`.\n";
+  md += "* Everything above is formatted from `data.h5` (settings under its root attribute `settings`, findings "
+        "under `/sections`); `stoneskip report render DIR` rebuilds this page and the figures from it.\n";
+  return md;
+}
+
+RenderSummary write_rendered_report(const std::filesystem::path& dir, const RenderedReport& r) {
+  RenderSummary summary;
+  if (gnuplot_available()) {
+    summary = render_figures(dir, r.figures);
+  } else {
+    for (const auto& f : r.figures) summary.failures.push_back(f.name + ": gnuplot not found (apt-get install gnuplot-nox)");
+  }
+  write_text_file(dir / "index.md", r.markdown);
+  return summary;
+}
+
+}  // namespace stoneskip

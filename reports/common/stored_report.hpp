@@ -1,0 +1,43 @@
+#pragma once
+// A report as stored in its data.h5 (reports/common/report_build.hpp writes it): the provenance,
+// the settings it was computed from, the report-wide record and the section records in order.
+// Every renderer takes this and nothing else, so `stoneskip report render DIR` rebuilds index.md
+// and the figures from the file alone, byte for byte.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "reports/common/figure.hpp"
+#include "reports/common/section.hpp"
+#include "verification/study/record.hpp"
+
+namespace stoneskip {
+
+struct StoredReport {
+  std::filesystem::path file;
+  std::string kind;          // "waves", "stones", …
+  std::string code_version, created_utc, settings, command;
+  Record report;             // /report
+  Record sections;           // /sections, children in the order the study stored them
+};
+
+// InputError naming the file when it is not a stoneskip report's data.h5.
+StoredReport load_stored_report(const std::filesystem::path& data_h5);
+
+struct RenderedReport {
+  std::string markdown;
+  std::vector<Figure> figures;
+};
+
+// Appends a section's output to a rendered report.
+void append(RenderedReport& r, const SectionOutput& s);
+
+// The closing block every report ends with: code version, creation time, the command and where
+// the settings are.
+std::string provenance_markdown(const StoredReport& s);
+
+// Writes dir/index.md (atomically) and draws the figures into dir/figures/. Figures gnuplot
+// rejects (or all of them, without gnuplot) are listed in the summary, never silently dropped.
+RenderSummary write_rendered_report(const std::filesystem::path& dir, const RenderedReport& r);
+
+}  // namespace stoneskip

@@ -1,0 +1,42 @@
+#include "tools/cli/report_render.hpp"
+
+#include <cstdio>
+
+#include "reports/stones/stones_report.hpp"
+#include "reports/waves/waves_report.hpp"
+#include "tools/cli/command_registry.hpp"
+#include "tools/io/input_error.hpp"
+
+namespace stoneskip::cli {
+
+RenderedReport render_stored_report(const StoredReport& s) {
+  if (s.kind == "waves") return render_waves_report(s);
+  if (s.kind == "stones") return render_stones_report(s);
+  throw_input_error(s.file.string(), 0, "report", "unknown report kind '" + s.kind + "'");
+}
+
+std::pair<int, std::size_t> render_folder(const std::filesystem::path& dir) {
+  const StoredReport stored = load_stored_report(dir / "data.h5");
+  RenderedReport r;
+  try {
+    r = render_stored_report(stored);
+  } catch (const RecordError& e) {
+    throw_input_error((dir / "data.h5").string(), 0, "", std::string("incomplete report data: ") + e.what());
+  }
+  const RenderSummary s = write_rendered_report(dir, r);
+  for (const auto& f : s.failures) std::fprintf(stderr, "figure failed: %s\n", f.c_str());
+  if (!s.failures.empty()) set_exit_code(1);
+  return {s.rendered, r.figures.size()};
+}
+
+void finish_report(ReportBuild& build, const Record& root, const std::filesystem::path& out_dir) {
+  const std::filesystem::path work = build.assemble(root);
+  const auto [drawn, figures] = render_folder(work);
+  build.commit();
+  std::printf("report: %s/index.md, %d of %zu figures drawn%s\n", out_dir.c_str(), drawn, figures,
+              build.resumed_sections() > 0
+                  ? (" (" + std::to_string(build.resumed_sections()) + " sections resumed from an earlier run)").c_str()
+                  : "");
+}
+
+}  // namespace stoneskip::cli

@@ -1,0 +1,287 @@
+#include "tools/scene/stone_study_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "tools/io/atomic_file.hpp"
+#include "tools/io/input_error.hpp"
+#include "tools/scene/case_problem.hpp"
+
+namespace stoneskip {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<double> positive_list(TomlTable& t, const std::string& key, const std::vector<double>& fallback) {
+  auto v = t.maybe_numbers(key);
+  if (!v) return fallback;
+  if (v->empty()) t.fail(key, "must not be empty");
+  for (double x : *v)
+    if (!(x > 0)) t.fail(key, "every value must be > 0");
+  return *v;
+}
+
+std::vector<double> any_list(TomlTable& t, const std::string& key, const std::vector<double>& fallback) {
+  auto v = t.maybe_numbers(key);
+  if (!v) return fallback;
+  if (v->empty()) t.fail(key, "must not be empty");
+  return *v;
+}
+
+double positive(TomlTable& t, const std::string& key, double fallback) {
+  const double v = t.number_or(key, fallback);
+  t.require_positive(key, v);
+  return v;
+}
+
+int count(TomlTable& t, const std::string& key, long long fallback, long long lo, long long hi) {
+  const long long v = t.integer_or(key, fallback);
+  if (v < lo || v > hi) t.fail(key, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return static_cast<int>(v);
+}
+
+Scheme scheme_of(TomlTable& t, const std::string& key, const std::string& name) {
+  Scheme s;
+  if (!parse_scheme(name, s)) t.fail(key, "'" + name + "' is not one of semi_implicit_euler, midpoint, rk4");
+  return s;
+}
+
+StudyThrow load_throw(const fs::path& study_dir, TomlTable& t, const std::string& key) {
+  StudyThrow st;
+  st.file = t.string(key);
+  const fs::path path = study_dir / st.file;
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) t.fail(key, "no case file '" + path.string() + "'");
+  const StoneCase c = load_stone_case(path.string());
+  if (c.water) t.fail(key, "the stone studies run on still water; '" + path.string() + "' has a [water] table");
+  st.case_text = c.text;
+  st.problem = problem_from_case(c);
+  return st;
+}
+
+void read_throws(const fs::path& dir, TomlTable t, StoneStudiesOptions& o) {
+  o.convergence_throw = load_throw(dir, t, "convergence");
+  o.spin_throw = load_throw(dir, t, "spin");
+  o.nospin_throw = load_throw(dir, t, "nospin");
+  o.sweep_base = load_throw(dir, t, "sweep_base");
+  o.clanet = load_throw(dir, t, "clanet");
+  o.bocquet = load_throw(dir, t, "bocquet");
+  o.stable_step_base = load_throw(dir, t, "stable_step_base");
+  const std::string hard = t.string("hard");
+  const int limit = count(t, "hard_limit", 0, 0, 1000);
+  const fs::path hard_dir = dir / hard;
+  std::error_code ec;
+  if (!fs::is_directory(hard_dir, ec)) t.fail("hard", "no folder '" + hard_dir.string() + "'");
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(hard_dir, ec))
+    if (e.path().extension() == ".toml") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  if (limit > 0 && static_cast<int>(files.size()) > limit) files.resize(limit);
+  for (const auto& f : files) {
+    StudyThrow st;
+    st.file = f.filename().string();
+    const StoneCase c = load_stone_case(f.string());
+    st.case_text = c.text;
+    st.problem = problem_from_case(c);
+    o.hard.push_back(st);
+  }
+  t.finish();
+}
+
+void read_convergence(TomlTable t, StoneStudiesOptions& o) {
+  RealtimeConvergenceOptions& c = o.convergence;
+  if (auto s = t.maybe_strings("schemes")) {
+    c.schemes.clear();
+    for (const auto& n : *s) c.schemes.push_back(scheme_of(t, "schemes", n));
+    if (c.schemes.empty()) t.fail("schemes", "must not be empty");
+  }
+  c.dt_s = positive_list(t, "dt_s", c.dt_s);
+  c.contact_ratio = t.number_or("contact_ratio", c.contact_ratio);
+  t.require_in("contact_ratio", c.contact_ratio, 1e-4, 1.0);
+  if (auto n = t.maybe_numbers("interval_steps")) {
+    c.interval_steps.clear();
+    for (double x : *n) {
+      if (x != std::floor(x) || x < 1 || x > 1e7) t.fail("interval_steps", "step counts must be whole numbers in [1, 1e7]");
+      c.interval_steps.push_back(static_cast<int>(x));
+    }
+    if (c.interval_steps.empty()) t.fail("interval_steps", "must not be empty");
+  }
+  c.reference_rtol = positive(t, "reference_rtol", c.reference_rtol);
+  c.reference_atol = positive(t, "reference_atol", c.reference_atol);
+  c.check_factor = positive(t, "check_factor", c.check_factor);
+  c.floor_factor = t.number_or("floor_factor", c.floor_factor);
+  t.require_non_negative("floor_factor", c.floor_factor);
+  o.convergence_judgement.tolerance = positive(t, "order_tolerance", o.convergence_judgement.tolerance);
+  o.convergence_judgement.minimum_order = t.number_or("minimum_order", o.convergence_judgement.minimum_order);
+  t.require_non_negative("minimum_order", o.convergence_judgement.minimum_order);
+  t.finish();
+}
+
+void read_reference_tolerance(TomlTable t, StoneStudiesOptions& o) {
+  ReferenceToleranceOptions& r = o.reference_tolerance;
+  r.rtol = positive_list(t, "rtol", r.rtol);
+  r.truth_rtol = positive(t, "truth_rtol", r.truth_rtol);
+  r.atol_ratio = positive(t, "atol_ratio", r.atol_ratio);
+  const std::string m = t.string_or("method", to_string(r.method));
+  if (!parse_reference_method(m, r.method)) t.fail("method", "'" + m + "' is not one of bdf, adams");
+  o.required_tolerance_drop = positive(t, "required_drop", o.required_tolerance_drop);
+  t.finish();
+}
+
+void read_work_precision(TomlTable t, StoneStudiesOptions& o) {
+  WorkPrecisionOptions& w = o.work_precision;
+  if (auto s = t.maybe_strings("throws")) o.work_precision_throws = *s;
+  if (t.has("realtime")) {
+    w.realtime.clear();
+    for (TomlTable f : t.tables("realtime")) {
+      WorkPrecisionOptions::RealtimeFamily fam{scheme_of(f, "scheme", f.string("scheme")), f.number("contact_ratio")};
+      f.require_in("contact_ratio", fam.contact_ratio, 1e-4, 1.0);
+      f.finish();
+      w.realtime.push_back(fam);
+    }
+  } else {
+    t.maybe_table("realtime");  // mark as read
+  }
+  w.dt_s = positive_list(t, "dt_s", w.dt_s);
+  if (auto s = t.maybe_strings("methods")) {
+    w.methods.clear();
+    for (const auto& n : *s) {
+      ReferenceMethod m;
+      if (!parse_reference_method(n, m)) t.fail("methods", "'" + n + "' is not one of bdf, adams");
+      w.methods.push_back(m);
+    }
+  }
+  w.rtol = positive_list(t, "rtol", w.rtol);
+  w.atol_ratio = positive(t, "atol_ratio", w.atol_ratio);
+  w.truth_rtol = positive(t, "truth_rtol", w.truth_rtol);
+  w.truth_check_factor = positive(t, "truth_check_factor", w.truth_check_factor);
+  w.repeats = count(t, "repeats", w.repeats, 1, 100);
+  w.target_errors_m = positive_list(t, "target_errors_m", w.target_errors_m);
+  t.finish();
+}
+
+void read_sweeps(TomlTable t, StoneStudiesOptions& o) {
+  o.max_thresholds = count(t, "max_thresholds", o.max_thresholds, 0, 1000);
+  o.sweep_reference_rtol = positive(t, "reference_rtol", o.sweep_reference_rtol);
+  o.sweep_reference_atol = positive(t, "reference_atol", o.sweep_reference_atol);
+  o.sweep_axes.clear();
+  for (TomlTable a : t.tables("axis")) {
+    SweepAxisOptions ax;
+    const std::string p = a.string("parameter");
+    if (!parse_sweep_parameter(p, ax.parameter))
+      a.fail("parameter", "'" + p + "' is not one of spin_rev_s, speed_m_s, attack_angle_deg, path_angle_deg");
+    if (auto v = a.maybe_numbers("values")) {
+      if (a.has("from") || a.has("to") || a.has("step")) a.fail("values", "give values or from/to/step, not both");
+      ax.values = *v;
+    } else {
+      const double from = a.number("from"), to = a.number("to"), step = a.number("step");
+      a.require_positive("step", step);
+      if (!(to >= from)) a.fail("to", "must be >= from");
+      if ((to - from) / step > 10000) a.fail("step", "more than 10000 grid values");
+      for (double x = from; x <= to + 1e-9 * step; x += step) ax.values.push_back(x);
+    }
+    if (ax.values.size() < 2) a.fail("values", "a sweep needs at least 2 values");
+    if (!std::is_sorted(ax.values.begin(), ax.values.end())) a.fail("values", "values must ascend");
+    ax.threshold_tolerance = positive(a, "tolerance", ax.threshold_tolerance);
+    a.finish();
+    o.sweep_axes.push_back(ax);
+  }
+  t.finish();
+}
+
+void read_validation(TomlTable t, StoneStudiesOptions& o) {
+  ValidationOptions& v = o.validation;
+  v.reference_rtol = positive(t, "reference_rtol", v.reference_rtol);
+  v.speed_tolerance_m_s = positive(t, "speed_tolerance_m_s", v.speed_tolerance_m_s);
+  v.angle_tolerance_deg = positive(t, "angle_tolerance_deg", v.angle_tolerance_deg);
+  v.clanet_attack_deg = any_list(t, "clanet_attack_deg", v.clanet_attack_deg);
+  v.clanet_speed_low_m_s = positive(t, "clanet_speed_low_m_s", v.clanet_speed_low_m_s);
+  v.clanet_speed_high_m_s = positive(t, "clanet_speed_high_m_s", v.clanet_speed_high_m_s);
+  if (!(v.clanet_speed_high_m_s > v.clanet_speed_low_m_s)) t.fail("clanet_speed_high_m_s", "must exceed clanet_speed_low_m_s");
+  v.clanet_contact_speeds_m_s = positive_list(t, "clanet_contact_speeds_m_s", v.clanet_contact_speeds_m_s);
+  v.bocquet_speeds_m_s = positive_list(t, "bocquet_speeds_m_s", v.bocquet_speeds_m_s);
+  v.bocquet_spins_rev_s = any_list(t, "bocquet_spins_rev_s", v.bocquet_spins_rev_s);
+  v.regime_spins_rev_s = any_list(t, "regime_spins_rev_s", v.regime_spins_rev_s);
+  v.regime_attack_deg = t.number_or("regime_attack_deg", v.regime_attack_deg);
+  v.contact_time_speed_m_s = positive(t, "contact_time_speed_m_s", v.contact_time_speed_m_s);
+  v.min_speed_attack_deg = t.number_or("min_speed_attack_deg", v.min_speed_attack_deg);
+  v.measured.clear();
+  if (t.has("measured")) {
+    for (TomlTable m : t.tables("measured")) {
+      MeasuredValue x;
+      x.key = m.string("key");
+      x.quantity = m.string("quantity");
+      x.measured = m.string("measured");
+      x.expected = m.string_or("expected", "–");
+      x.source = m.string("source");
+      m.finish();
+      v.measured.push_back(x);
+    }
+  } else {
+    t.maybe_table("measured");
+  }
+  t.finish();
+}
+
+void read_hard_cases(TomlTable t, StoneStudiesOptions& o) {
+  HardCaseOptions& h = o.hard_cases;
+  h.single_steps_s = positive_list(t, "single_steps_s", h.single_steps_s);
+  if (!std::is_sorted(h.single_steps_s.begin(), h.single_steps_s.end())) t.fail("single_steps_s", "steps must ascend");
+  h.reference_rtol = positive(t, "reference_rtol", h.reference_rtol);
+  h.reference_atol = positive(t, "reference_atol", h.reference_atol);
+  h.energy_tolerance_fraction = positive(t, "energy_tolerance_fraction", h.energy_tolerance_fraction);
+  t.finish();
+}
+
+void read_stable_step(TomlTable t, StoneStudiesOptions& o) {
+  StableStepOptions& s = o.stable_step;
+  s.speeds_m_s = positive_list(t, "speeds_m_s", s.speeds_m_s);
+  s.steps_s = positive_list(t, "steps_s", s.steps_s);
+  if (!std::is_sorted(s.steps_s.begin(), s.steps_s.end())) t.fail("steps_s", "steps must ascend");
+  s.reference_rtol = positive(t, "reference_rtol", s.reference_rtol);
+  s.energy_tolerance_fraction = positive(t, "energy_tolerance_fraction", s.energy_tolerance_fraction);
+  s.scheme = scheme_of(t, "scheme", t.string_or("scheme", to_string(s.scheme)));
+  t.finish();
+}
+
+}  // namespace
+
+StoneStudyFile load_stone_study_file(const std::string& path) {
+  const TomlDocument doc = load_toml(path);
+  StoneStudyFile f;
+  f.file = doc.file;
+  f.text = doc.text;
+  TomlTable top = doc.top();
+  f.title = read_case_title(top);
+  StoneStudiesOptions& o = f.options;
+  {
+    TomlTable s = top.table("study");
+    const std::string kind = s.string("kind");
+    if (kind != "stones") s.fail("kind", "'" + kind + "' is not a stones study (kind = \"stones\")");
+    o.preset = s.string("preset");
+    s.finish();
+  }
+  const fs::path dir = fs::path(path).parent_path();
+  read_throws(dir, top.table("throws"), o);
+  if (auto t = top.maybe_table("convergence")) read_convergence(*t, o);
+  if (auto t = top.maybe_table("reference_tolerance")) read_reference_tolerance(*t, o);
+  if (auto t = top.maybe_table("work_precision")) read_work_precision(*t, o);
+  read_sweeps(top.table("sweeps"), o);
+  if (auto t = top.maybe_table("validation")) read_validation(*t, o);
+  if (auto t = top.maybe_table("hard_cases")) read_hard_cases(*t, o);
+  if (auto t = top.maybe_table("stable_step")) read_stable_step(*t, o);
+  top.finish();
+  // Everything the findings depend on: the study file and the text of every case it names.
+  f.settings_text = "# " + f.file + "\n" + f.text;
+  for (const StudyThrow* t : {&o.convergence_throw, &o.spin_throw, &o.nospin_throw, &o.sweep_base, &o.clanet, &o.bocquet,
+                              &o.stable_step_base})
+    f.settings_text += "\n# case " + t->file + "\n" + t->case_text;
+  for (const auto& h : o.hard) f.settings_text += "\n# hard case " + h.file + "\n" + h.case_text;
+  std::string why;
+  if (!o.valid(&why)) throw_input_error(f.file, 0, "", why);
+  return f;
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,96 @@
+// Findings of the convergence study (section "convergence" of the stones report): every series
+// of errors against step with its order fit and verdict (interval-based, verification/study/
+// order_record.hpp), the GCI of scalar series, the reference's own error against its tolerance.
+#include <cmath>
+#include <sstream>
+
+#include "verification/stones/stone_studies.hpp"
+#include "verification/study/order_record.hpp"
+#include "verification/study/verdict_rules.hpp"
+#include "verification/study/words.hpp"
+
+namespace stoneskip {
+
+namespace {
+
+void store_series(Record& parent, const ConvergenceSeries& s, OrderJudgement j) {
+  Record& r = parent.child(s.quantity + "." + s.scheme);
+  r.set("quantity", s.quantity);
+  r.set("description", s.description);
+  r.set("unit", s.unit);
+  r.set("scheme", s.scheme);
+  r.set("formal_order", s.formal_order);
+  r.set("reference_error", s.reference_error);
+  Table t{{"h_s", "value", "error", "in_fit"}, {}};
+  for (std::size_t i = 0; i < s.h_s.size(); ++i) t.add_row({s.h_s[i], s.value[i], s.error[i], s.in_fit[i] ? 1.0 : 0.0});
+  r.set_table("points", t);
+  r.set_strings("notes", s.notes);
+  j.expected_order = s.formal_order;
+  store_order_fit(r, "fit", s.fit, j);
+  if (s.has_gci) {
+    Record& g = r.child("gci");
+    g.set("kind", std::string(to_string(s.gci.kind)));
+    g.set("order", s.gci.order);
+    g.set("gci_fine", s.gci.gci_fine);
+    g.set("extrapolated", s.gci.extrapolated);
+  }
+}
+
+}  // namespace
+
+Record convergence_findings(const RealtimeConvergenceResult& c, const ReferenceToleranceResult& tol,
+                            const OrderJudgement& judgement, double required_drop) {
+  Record r;
+  r.set("case", c.case_label);
+  r.set("reference_rtol", c.reference_rtol);
+  r.set("check_rtol", c.check_rtol);
+  r.set("reference_contacts", c.reference.contacts.size());
+  r.set("reference_bounces", c.reference.bounces);
+  r.set("reference_outcome", std::string(to_string(c.reference.outcome)));
+  r.set("reference_end_time_s", c.reference.end_time_s);
+  r.set("flight_interval_end_s", c.flight_interval_end_s);
+  r.set("contact_interval_start_s", c.contact_interval_start_s);
+  r.set("contact_interval_end_s", c.contact_interval_end_s);
+  r.set("free_flight_time_s", c.free_flight_time_s);
+  r.set("order_tolerance", judgement.tolerance);
+  r.set("minimum_order", judgement.minimum_order);
+  r.set_strings("problems", c.problems);
+  std::vector<std::string> keys;
+  Record& series = r.child("series");
+  for (const auto& s : c.series) {
+    store_series(series, s, judgement);
+    keys.push_back(s.quantity + "." + s.scheme);
+  }
+  r.set_strings("series_keys", keys);
+
+  // The reference's own error against its tolerance (tolerance proportionality: slope 1).
+  Record& t = r.child("reference_tolerance");
+  t.set("case", tol.case_label);
+  t.set("method", tol.method);
+  Table pts{{"rtol", "ok", "bounces", "bounce_position_error_m", "contact_time_error_s", "rhs_evaluations", "cpu_s"}, {}};
+  std::vector<std::string> problems;
+  for (const auto& p : tol.points) {
+    pts.add_row({p.rtol, p.ok ? 1.0 : 0.0, double(p.bounces), p.bounce_position_error_m, p.contact_time_error_s,
+                 double(p.rhs_evaluations), p.cpu_s});
+    problems.push_back(p.problem);
+  }
+  t.set_table("points", pts);
+  t.set_strings("problems", problems);
+  OrderJudgement proportional{1.0, judgement.tolerance, judgement.minimum_order};
+  store_order_fit(t, "bounce_position_fit", tol.bounce_position_fit, proportional);
+  store_order_fit(t, "contact_time_fit", tol.contact_time_fit, proportional);
+  t.set("error_drop_1e6_to_1e10", tol.error_drop_1e6_to_1e10);
+  t.set("required_drop", required_drop);
+  const double drop = tol.error_drop_1e6_to_1e10;
+  Record in;
+  in.set("ratio", drop);
+  in.set("required", required_drop);
+  decide_verdict(
+      t, "drop", "minimum_ratio", in,
+      std::isnan(drop) ? "rtol 1e-6 or 1e-10 was not run or failed"
+                       : "the bounce-position error falls " + num(drop) + "× from rtol 1e-6 to 1e-10 (at least " +
+                             num(required_drop) + "× required)");
+  return r;
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,172 @@
+#include "verification/stones/stone_studies.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "verification/study/order_record.hpp"
+
+namespace stoneskip {
+
+namespace {
+
+std::vector<const StudyThrow*> named_throws(const StoneStudiesOptions& o) {
+  return {&o.convergence_throw, &o.spin_throw, &o.nospin_throw, &o.sweep_base, &o.clanet, &o.bocquet, &o.stable_step_base};
+}
+const char* kThrowNames[] = {"convergence", "spin", "nospin", "sweep_base", "clanet", "bocquet", "stable_step_base"};
+
+// The throws of the work-precision study, by name; "spin_paper" is the spinning throw in the
+// paper convention.
+ThrowProblem work_throw(const StoneStudiesOptions& o, const std::string& name) {
+  if (name == "spin_paper") {
+    ThrowProblem p = with_convention(o.spin_throw.problem, Convention::paper);
+    p.label += " (paper convention)";
+    return p;
+  }
+  const auto all = named_throws(o);
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (name == kThrowNames[i]) return all[i]->problem;
+  throw std::invalid_argument("no study throw named '" + name + "'");
+}
+
+Record settings_findings(const StoneStudiesOptions& o) {
+  Record r;
+  r.set("preset", o.preset);
+  r.set("workers", o.workers);
+  const auto all = named_throws(o);
+  std::vector<std::string> names;
+  auto store = [&](const std::string& key, const StudyThrow& t) {
+    names.push_back(key);
+    Record& c = r.child(key);
+    c.set("file", t.file);
+    c.set("case_text", t.case_text);
+    c.set("label", t.problem.label);
+    c.set("stone", t.problem.stone.description);
+    c.set("mass_kg", t.problem.stone.mass.mass_kg);
+    c.set("convention", std::string(to_string(t.problem.environment.convention)));
+  };
+  for (std::size_t i = 0; i < all.size(); ++i) store(kThrowNames[i], *all[i]);
+  for (const auto& h : o.hard) store("hard_" + record_key(h.file), h);
+  r.set_strings("throws", names);
+  return r;
+}
+
+}  // namespace
+
+bool StoneStudiesOptions::valid(std::string* why) const {
+  auto fail = [&](const std::string& w) {
+    if (why) *why = w;
+    return false;
+  };
+  if (workers < 1) return fail("workers must be >= 1");
+  if (convergence.dt_s.empty() || convergence.interval_steps.empty()) return fail("convergence needs steps");
+  if (work_precision.dt_s.empty() || work_precision.rtol.empty()) return fail("work_precision needs steps and tolerances");
+  for (const auto& n : work_precision_throws) {
+    if (n == "spin_paper") continue;
+    if (std::find(std::begin(kThrowNames), std::end(kThrowNames), n) == std::end(kThrowNames))
+      return fail("work_precision throw '" + n + "' is not one of the study's throws");
+  }
+  for (const auto& a : sweep_axes) {
+    if (a.values.size() < 2) return fail(std::string("sweep over ") + to_string(a.parameter) + " needs at least 2 values");
+    if (!std::is_sorted(a.values.begin(), a.values.end())) return fail("sweep values must ascend");
+    if (!(a.threshold_tolerance > 0)) return fail("sweep threshold tolerance must be > 0");
+  }
+  return true;
+}
+
+Record run_stone_studies(const StoneStudiesOptions& o, StudySink& sink) {
+  std::string why;
+  if (!o.valid(&why)) throw std::invalid_argument("stone study settings: " + why);
+  const ProgressFactory& progress = sink.progress();
+  run_section(sink, "settings", [&] { return settings_findings(o); });
+
+  run_section(sink, "convergence", [&] {
+    RealtimeConvergenceOptions co = o.convergence;
+    co.workers = o.workers;
+    co.progress = progress;
+    ReferenceToleranceOptions to = o.reference_tolerance;
+    to.workers = o.workers;
+    to.progress = progress;
+    const RealtimeConvergenceResult conv = run_realtime_convergence(o.convergence_throw.problem, co);
+    const ReferenceToleranceResult tol = run_reference_tolerance(o.convergence_throw.problem, to);
+    Record r = convergence_findings(conv, tol, o.convergence_judgement, o.required_tolerance_drop);
+    r.child("reference_tolerance").set("truth_rtol", to.truth_rtol);
+    r.child("reference_tolerance").set("atol_ratio", to.atol_ratio);
+    r.set("contact_ratio", co.contact_ratio);
+    return r;
+  });
+
+  run_section(sink, "work_precision", [&] {
+    WorkPrecisionOptions wo = o.work_precision;
+    wo.workers = o.workers;
+    wo.progress = progress;
+    std::vector<ThrowProblem> throws;
+    for (const auto& n : o.work_precision_throws) throws.push_back(work_throw(o, n));
+    return work_precision_findings(run_work_precision(throws, wo), wo);
+  });
+
+  run_section(sink, "validation", [&] {
+    ValidationOptions vo = o.validation;
+    vo.workers = o.workers;
+    vo.progress = progress;
+    const ValidationResult v =
+        run_validation(o.clanet.problem, o.bocquet.problem, o.nospin_throw.problem, o.spin_throw.problem, vo);
+    Record r = validation_findings(v, vo);
+    // The paper's Fig. 9 histories (shown with the sweeps).
+    Record& f = r.child("fig9");
+    std::vector<std::string> keys;
+    for (const auto& h : v.fig9) {
+      keys.push_back(record_key(h.label));
+      f.add_child(keys.back(), history_record(h));
+    }
+    f.set_strings("histories", keys);
+    return r;
+  });
+
+  run_section(sink, "sweeps", [&] {
+    std::vector<BounceSweepSpec> specs;
+    for (const auto& a : o.sweep_axes)
+      for (Convention c : {Convention::physical, Convention::paper})
+        for (SolverKind k : {SolverKind::reference, SolverKind::realtime}) {
+          BounceSweepSpec s;
+          s.base = o.sweep_base.problem;
+          s.parameter = a.parameter;
+          s.values = a.values;
+          s.convention = c;
+          s.threshold_tolerance = a.threshold_tolerance;
+          s.max_thresholds = o.max_thresholds;
+          if (k == SolverKind::realtime) {
+            s.solver = realtime_choice(o.sweep_base.problem.realtime);
+          } else {
+            ReferenceOptions r = o.sweep_base.problem.reference;
+            r.rtol = o.sweep_reference_rtol;
+            r.atol = o.sweep_reference_atol;
+            s.solver = reference_choice(r);
+          }
+          s.name = std::string(to_string(a.parameter)) + "_" + to_string(c) + "_" +
+                   (k == SolverKind::realtime ? "realtime" : "reference");
+          specs.push_back(s);
+        }
+    const auto sweeps = run_bounce_sweeps(specs, ParallelOptions{o.workers, "stones: bounce-count sweeps", progress});
+    return sweeps_findings(sweeps);
+  });
+
+  run_section(sink, "hard_cases", [&] {
+    HardCaseOptions ho = o.hard_cases;
+    ho.workers = o.workers;
+    ho.progress = progress;
+    StableStepOptions so = o.stable_step;
+    so.workers = o.workers;
+    so.progress = progress;
+    std::vector<std::pair<std::string, ThrowProblem>> problems;
+    for (const auto& h : o.hard) problems.emplace_back(h.file, h.problem);
+    const auto hard = run_hard_cases(problems, ho);
+    const auto stable = run_stable_step(o.stable_step_base.problem, so);
+    return hard_cases_findings(hard, stable, ho, so);
+  });
+
+  Record root;
+  root.set("preset", o.preset);
+  return root;
+}
+
+}  // namespace stoneskip

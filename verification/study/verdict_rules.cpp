@@ -1,0 +1,129 @@
+#include "verification/study/verdict_rules.hpp"
+
+#include <cmath>
+#include <functional>
+#include <map>
+
+#include "verification/convergence/order_fit.hpp"
+
+namespace stoneskip {
+
+namespace {
+
+using Rule = std::function<std::string(const Record&)>;
+
+const std::map<std::string, Rule>& rules() {
+  static const std::map<std::string, Rule> r{
+      {"order_fit",
+       [](const Record& in) {
+         OrderFit f;
+         f.valid = in.flag("valid");
+         f.order = in.number("order");
+         f.order_low = in.number("order_low");
+         f.order_high = in.number("order_high");
+         f.points = static_cast<int>(in.number("points"));
+         OrderJudgement j;
+         j.expected_order = in.number("expected_order");
+         j.tolerance = in.number("tolerance");
+         j.minimum_order = in.number("minimum_order");
+         return std::string(to_string(judge_order(f, j)));
+       }},
+      {"consistency",
+       [](const Record& in) {
+         const double tol = in.number("tolerance");
+         const bool ok = std::abs(in.number("constant_term")) <= tol &&
+                         std::abs(in.number("laplacian_coefficient") - 1) <= tol;
+         return std::string(ok ? "consistent" : "inconsistent");
+       }},
+      {"gci_band",
+       [](const Record& in) {
+         if (!in.flag("usable")) return std::string("no estimate");
+         if (in.flag("order_does_not_converge")) return std::string("misleading");
+         return std::string(in.number("actual_relative_error") <= in.number("gci_fine") ? "contains the exact value"
+                                                                                       : "misses the exact value");
+       }},
+      {"limit_range",
+       [](const Record& in) {
+         return std::string(in.number("limit_max") - in.number("limit_min") < in.number("tolerance")
+                                ? "independent of the damping"
+                                : "depends on the damping");
+       }},
+      {"counterexample",
+       [](const Record& in) {
+         const bool inside = in.number("sigma") < in.number("bound");
+         const bool grows = in.number("predicted_growth_per_step") > 1 && in.number("measured_growth_per_step") > 1;
+         return std::string(inside && grows ? "not sufficient"
+                                            : (inside ? "not refuted by this example" : "example outside the bound"));
+       }},
+      {"work_gain",
+       [](const Record& in) {
+         const double g = in.number("gain");
+         if (std::isnan(g)) return std::string("not established");
+         return std::string(g < in.number("material_gain") ? "no other stencil is materially faster"
+                                                           : "another stencil is faster");
+       }},
+      {"minimum_ratio",
+       [](const Record& in) {
+         const double r = in.number("ratio");
+         if (std::isnan(r)) return std::string("not measured");
+         return std::string(r >= in.number("required") ? "error control works" : "error control falls short");
+       }},
+      {"thresholds_near_grid",
+       [](const Record& in) {
+         const double near = in.number("near_grid"), n = in.number("bisected");
+         if (n < 3) return std::string("too few thresholds to tell");
+         return std::string(2 * near >= n ? "sensitive dependence" : "clean steps");
+       }},
+      {"attack_change",
+       [](const Record& in) {
+         const double d = in.number("change_deg");
+         return std::string(d < 0 ? "nose-down" : (d > 0 ? "nose-up" : "unchanged"));
+       }},
+      {"max_fluid_power",
+       [](const Record& in) {
+         return std::string(in.number("max_fluid_power_W") <= in.number("round_off_W") ? "passive" : "creates energy");
+       }},
+      {"error_split",
+       [](const Record& in) {
+         if (in.flag("space_converges")) return std::string("converges in space");
+         return std::string(in.flag("time_at_expected")
+                                ? "does not converge: the stencil is at fault, not the time stepping"
+                                : "does not converge in space; the time stepping is not at its expected order either");
+       }},
+  };
+  return r;
+}
+
+void collect(const Record& r, std::vector<std::string>& out) {
+  if (r.has_text("rule") && r.has_text("verdict")) {
+    const std::string now = decide(r.text("rule"), r);
+    if (now != r.text("verdict")) out.push_back(r.path() + ": stored '" + r.text("verdict") + "', rule says '" + now + "'");
+  }
+  for (const auto& c : r.child_names()) collect(r.at(c), out);
+}
+
+}  // namespace
+
+std::string decide(const std::string& rule, const Record& inputs) {
+  const auto it = rules().find(rule);
+  if (it == rules().end()) throw RecordError(inputs.path() + ": unknown verdict rule '" + rule + "'");
+  return it->second(inputs);
+}
+
+Record& decide_verdict(Record& parent, const std::string& key, const std::string& rule, const Record& inputs,
+                       const std::string& reason) {
+  Record& v = parent.child(key);
+  for (const auto& [k, x] : inputs.numbers()) v.set(k, x);
+  v.set("rule", rule);
+  v.set("verdict", decide(rule, v));
+  v.set("reason", reason);
+  return v;
+}
+
+std::vector<std::string> contradicted_verdicts(const Record& r) {
+  std::vector<std::string> out;
+  collect(r, out);
+  return out;
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,42 @@
+#pragma once
+// Every rule that turns numbers into a verdict, in one place. A verdict record (a child of a
+// finding) holds the rule's name, its inputs as numbers, the verdict phrase and a computed reason;
+// decide() gives the phrase from the inputs alone, so a verdict can be decided again from data.h5
+// (the reports' consistency test does, for every verdict stored).
+//
+// Rules (inputs → phrases):
+//   order_fit            valid, order, order_low, order_high, points, expected_order, tolerance,
+//                        minimum_order → verification/convergence/order_fit.hpp judge_order()
+//   consistency          constant_term, laplacian_coefficient, tolerance → consistent | inconsistent
+//   gci_band             usable, order_does_not_converge, gci_fine, actual_relative_error →
+//                        no estimate | misleading | contains the exact value | misses the exact value
+//   limit_range          limit_min, limit_max, tolerance → independent of the damping | depends on the damping
+//   counterexample       sigma, bound, predicted_growth_per_step, measured_growth_per_step →
+//                        not sufficient | not refuted by this example | example outside the bound
+//   work_gain            gain, material_gain → not established | no other stencil is materially faster |
+//                        another stencil is faster
+//   minimum_ratio        ratio, required → not measured | error control works | error control falls short
+//   thresholds_near_grid near_grid, bisected → too few thresholds to tell | sensitive dependence | clean steps
+//   attack_change        change_deg → nose-down | nose-up | unchanged
+//   max_fluid_power      max_fluid_power_W, round_off_W → passive | creates energy
+//   error_split          space_converges (0/1), time_at_expected (0/1) → (see verdict_rules.cpp)
+#include <string>
+
+#include "verification/study/record.hpp"
+
+namespace stoneskip {
+
+// The verdict phrase of `rule` for the inputs in `inputs` (its numbers). RecordError for an
+// unknown rule or a missing input.
+std::string decide(const std::string& rule, const Record& inputs);
+
+// Child `key` of `parent`: the inputs' numbers, `rule`, `verdict` = decide(rule, inputs) and
+// `reason`. Returns the child.
+Record& decide_verdict(Record& parent, const std::string& key, const std::string& rule, const Record& inputs,
+                       const std::string& reason);
+
+// Every verdict record under `r` (at any depth) whose stored phrase differs from what its rule
+// decides from its stored inputs, as "path: stored 'x', rule says 'y'" lines. Empty: consistent.
+std::vector<std::string> contradicted_verdicts(const Record& r);
+
+}  // namespace stoneskip
