@@ -3,8 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "solvers/realtime/clocks.hpp"
 #include "tools/io/progress.hpp"
-#include "verification/waves/cpu_timer.hpp"
 
 namespace stoneskip {
 
