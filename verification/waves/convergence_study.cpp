@@ -22,7 +22,7 @@ void fit_sequence(ConvergenceSequence& s, int fit_points, const OrderJudgement& 
   }
   s.fit = fit_order(h, e);
   s.fit_max = fit_order(h, em);
-  s.verdict = judge_order(s.fit, judgement);
+  s.verdict = judge_order(s.fit, judgement).verdict;
 }
 
 std::size_t convergence_study_work(const ConvergenceStudyOptions& o) {
