@@ -144,6 +144,7 @@ Crossing going_under(const Waterline& w0, const Waterline& w1, bool latest) {
     const double f = d0 / (d0 - d1);
     if (c.vertex < 0 || (latest ? f > c.fraction : f < c.fraction)) c = {f, static_cast<int>(j)};
   }
+  if (c.vertex < 0) c = {0.0, w1.deepest};  // none crossed in the step: it was already so at its start
   return c;
 }
 
@@ -156,6 +157,7 @@ Crossing last_out(const Waterline& w0, const Waterline& w1) {
     const double f = d0 / (d0 - d1);
     if (c.vertex < 0 || f > c.fraction) c = {f, static_cast<int>(j)};
   }
+  if (c.vertex < 0) c = {0.0, w0.deepest};  // none crossed in the step: it was already so at its start
   return c;
 }
 
@@ -215,15 +217,17 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
       ok = logged(log.end(tt, s, energy(s), true), tt);
       changed = true;
     }
-    const double wetted = now.wet() ? wetted_area(s) : 0.0;
-    log.observe_wetted_area(wetted);
-    if (ok && now.sunk()) {
-      // Spec §1.8: completely below the surface: nothing here lifts a submerged stone.
-      ok = logged(log.end(tt, s, energy(s), false), tt);
-      if (ok) sank_at(tt);
-      changed = true;
+    const bool sinks = ok && now.sunk();
+    if (changed || sinks) {  // the wetted area only where something happened (it costs a force evaluation)
+      const double wetted = now.wet() ? wetted_area(s) : 0.0;
+      log.observe_wetted_area(wetted);
+      if (sinks) {
+        // Spec §1.8: completely below the surface: nothing here lifts a submerged stone.
+        ok = logged(log.end(tt, s, energy(s), false), tt);
+        if (ok) sank_at(tt);
+      }
+      if (tt > 0) record(tt, s, wetted);
     }
-    if (changed && tt > 0) record(tt, s, wetted);
     return ok && r.outcome != Outcome::sank;
   };
 
