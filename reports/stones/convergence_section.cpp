@@ -114,6 +114,19 @@ SectionOutput convergence_section(const Record& c) {
                          xl, "error (s)"));
   w.figure(series_figure("conv_free_flight", "Whole stepper: state error in free flight after the first bounce", c,
                          "free_flight_state", xl, "relative state error"));
+  {
+    const Record& ev = c.at("events");
+    const Table& cr = ev.table("crowding");
+    std::string steps;
+    for (std::size_t i = 0; i < cr.rows(); ++i)
+      steps += (i ? ", " : "") + fmt(cr.column("h_s")[i], 2) + " s: " + fmt(100 * cr.column("fraction")[i], 2) + " %";
+    w.lead("Events inside the first contact.",
+           "The reference locates " + fmt(ev.number("count"), 6) + " events (vertex crossings, face switches) between " +
+               fmt(ev.number("contact_start_s"), 4) + " and " + fmt(ev.number("contact_end_s"), 4) +
+               " s: consecutive events are " + fmt(ev.number("min_spacing_s"), 2) + " s apart at the least and " +
+               fmt(ev.number("median_spacing_s"), 2) + " s at the median. Share of the scheme-alone steps inside the contact "
+               "that hold two or more events: " + steps + ".");
+  }
   w.lead("How to read it.",
          "In free flight the forces are smooth and every scheme should show its formal order. Through a contact the "
          "water force is only piecewise smooth in time: the wetted area of a triangle grows like depth² when a vertex goes "

@@ -26,8 +26,10 @@ SectionOutput work_precision_section(const Record& c) {
              range_text(c.table("realtime_dt_s").column("dt_s")) +
              " s, each family with its contact step) and by CVODE over rtol " + range_text(c.table("rtol").column("rtol")) +
              " (atol = rtol × " + fmt(c.number("atol_ratio"), 2) +
-             "). The error is the largest distance between a run's bounce positions (the centre of mass where a contact "
-             "ends in a take-off) and those of a CVODE run at rtol " + fmt(c.number("truth_rtol"), 2) +
+             "). The error (the *headline* of each throw) is the largest distance between a run's bounce positions (the "
+             "centre of mass where a contact ends in a take-off) and those of a CVODE run at rtol " +
+             fmt(c.number("truth_rtol"), 2) + " — or, for a throw whose reference never bounces, the distance between "
+             "the points where the two sank" +
              " (the *truth*; a second run at " + fmt(c.number("truth_check_rtol"), 2) +
              " says how far the truth itself can be trusted). The cost is " + c.text("clock") + " (" +
              fmt(c.number("repeats")) +
@@ -38,6 +40,7 @@ SectionOutput work_precision_section(const Record& c) {
     const Record& t = c.at(key);
     const auto& families = t.strings("families");
     w.subheading("Throw: " + t.text("label"));
+    const std::string what = t.text("headline") + " error (m)";
     const double unc = t.number("truth_uncertainty_m");
     w.text("Reference (rtol " + fmt(c.number("truth_rtol"), 2) + "): " + fmt(t.number("truth_contacts")) + " contacts, " +
            fmt(t.number("truth_bounces")) + " bounces, " + t.text("truth_outcome") + " at " +
@@ -50,7 +53,7 @@ SectionOutput work_precision_section(const Record& c) {
                                      "error, so no solver can be judged on them."));
     const Table& pts = t.table("points");
     const auto fam = pts.column("family"), cpu = pts.column("cpu_s"), rhs = pts.column("rhs_evaluations"),
-               err = pts.column("bounce_position_error_m");
+               err = pts.column("headline_error_m");
     std::vector<PlotSeries> by_cpu, by_rhs;
     for (std::size_t f = 0; f < families.size(); ++f) {
       PlotSeries a, b;
@@ -67,13 +70,13 @@ SectionOutput work_precision_section(const Record& c) {
     }
     PlotAxes ax;
     ax.x_label = "CPU time per throw (s)";
-    ax.y_label = "bounce-position error (m)";
+    ax.y_label = what;
     ax.log_x = ax.log_y = true;
     w.figure(line_figure("wp_" + key + "_cpu", "Work-precision (CPU time): " + t.text("label"), ax, by_cpu, "cpu_s", "error_m"));
     ax.x_label = "right-hand-side evaluations per throw";
     w.figure(line_figure("wp_" + key + "_rhs", "Work-precision (RHS evaluations): " + t.text("label"), ax, by_rhs,
                          "rhs_evaluations", "error_m"));
-    w.lead("The cheapest setting of each solver that reaches a bounce-position error", "");
+    w.lead("The cheapest setting of each solver that reaches a " + t.text("headline") + " error", "");
     MarkdownTable ans({"target error (m)", "solver", "setting (dt s / rtol)", "error (m)", "CPU (s)", "RHS evaluations"});
     const Table& ch = t.table("cheapest");
     for (std::size_t i = 0; i < ch.rows(); ++i) {
@@ -86,7 +89,7 @@ SectionOutput work_precision_section(const Record& c) {
     const Table& a = t.table("answer");
     for (std::size_t i = 0; i < a.rows(); ++i) {
       auto col = [&](const char* k) { return a.column(k)[i]; };
-      std::string line = "Bounce positions within " + fmt(col("target_m"), 2) + " m: ";
+      std::string line = t.text("headline") + " within " + fmt(col("target_m"), 2) + " m: ";
       if (col("realtime_family") >= 0)
         line += "the cheapest real-time setting is " + families.at(static_cast<std::size_t>(col("realtime_family"))) +
                 " with a flight step of " + fmt(col("realtime_setting"), 3) + " s (" + fmt(1000 * col("realtime_cpu_s"), 3) +

@@ -121,11 +121,14 @@ SectionOutput convergence_section(const Record& c) {
   w.bullet("**both**: the leapfrog minus the continuum exact solution, grid and step refined together at σ = cΔt/d = " +
            fmt(c.number("both_sigma")) + ", grids " + grids_text(c.table("both_grids")) + ".");
   w.end_list();
+  const double fp = c.number("fit_points");
   w.text("Errors are RMS over the domain (m). The observed order is the slope of a least-squares fit of log(error) "
-         "against log(h) over the finest " + fmt(c.number("fit_points")) + " points, with its 95 % confidence interval "
-         "(Student t); the pairwise orders use every pair of neighbouring grids. The verdict asks for the whole interval "
-         "within " + fmt(c.number("tolerance")) + " of " + fmt(c.number("expected_order")) + "; an interval too wide to "
-         "decide says so, and a slope at or below " + fmt(c.number("minimum_order")) + " is *does not converge*.");
+         "against log(h) over " + (fp > 0 ? "the finest " + fmt(fp) + " points" : std::string("every point")) +
+         ", with its 95 % confidence interval (Student t); the pairwise orders use every pair of neighbouring grids. "
+         "The verdict asks for the whole interval within " + fmt(c.number("tolerance")) + " of " +
+         fmt(c.number("expected_order")) + "; an interval too wide to decide (or a fit on fewer than 3 points) says "
+         "*order not established*, and *does not converge* needs the whole interval at or below " +
+         fmt(c.number("minimum_order")) + ".");
   MarkdownTable t({"stencil", "sequence", "finest h", "RMS error at finest (m)", "max error at finest (m)",
                    "order (95 % interval)", "pairwise orders", "verdict", "CPU of the runs (s)"});
   const auto names = c.strings("stencils");

@@ -1,8 +1,10 @@
 #include "solvers/realtime/stone_stepper.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <sstream>
+#include <utility>
+
+#include "solvers/realtime/clocks.hpp"
 
 namespace stoneskip {
 
@@ -124,12 +126,48 @@ TrajectorySample sample(const Stone& stone, const Environment& env, double t, co
   return p;
 }
 
+// A vertex crossing the surface inside a step: the fraction f ∈ [0, 1] of the step at which its
+// depth, interpolated linearly between the step's ends (d0 at the start, d1 at the end), is zero.
+struct Crossing {
+  double fraction = 0;
+  int vertex = -1;
+};
+
+// Among the vertices that go under in the step (d0 ≤ 0 < d1): the first (latest = false) or the
+// last (latest = true) to cross. The first is where a contact starts; the last to go under while
+// every vertex ends the step under water is where the stone sinks.
+Crossing going_under(const Waterline& w0, const Waterline& w1, bool latest) {
+  Crossing c;
+  for (std::size_t j = 0; j < w0.depth_m.size(); ++j) {
+    const double d0 = w0.depth_m[j], d1 = w1.depth_m[j];
+    if (!(d0 <= 0 && d1 > 0)) continue;
+    const double f = d0 / (d0 - d1);
+    if (c.vertex < 0 || (latest ? f > c.fraction : f < c.fraction)) c = {f, static_cast<int>(j)};
+  }
+  if (c.vertex < 0) c = {0.0, w1.deepest};  // none crossed in the step: it was already so at its start
+  return c;
+}
+
+// The last vertex to come out in the step (d0 > 0 ≥ d1): where a contact ends with every vertex dry.
+Crossing last_out(const Waterline& w0, const Waterline& w1) {
+  Crossing c;
+  for (std::size_t j = 0; j < w0.depth_m.size(); ++j) {
+    const double d0 = w0.depth_m[j], d1 = w1.depth_m[j];
+    if (!(d0 > 0 && d1 <= 0)) continue;
+    const double f = d0 / (d0 - d1);
+    if (c.vertex < 0 || f > c.fraction) c = {f, static_cast<int>(j)};
+  }
+  if (c.vertex < 0) c = {0.0, w0.deepest};  // none crossed in the step: it was already so at its start
+  return c;
+}
+
 }  // namespace
 
 ThrowResult run_realtime(const Stone& stone, const Environment& env, const RigidState& initial,
                          const RealtimeOptions& o, const WaterSurface* surface,
                          const std::function<void(double t_s)>& before_step) {
-  const auto clock_start = std::chrono::steady_clock::now();
+  const CpuTimer cpu;
+  const WallTimer wall;
   ThrowResult r;
   {
     std::ostringstream name;
@@ -137,31 +175,75 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
     r.solver = name.str();
   }
   r.release_position_m = initial.position_m;
+  r.outcome = Outcome::time_limit;
+  r.outcome_detail = "reached t_max";
   ContactLog log;
   RigidState s = initial;
   s.orientation.normalize();
   double t = 0;
-  double next_output = 0;
-  DeepestPoint deep = deepest_point(stone, s, surface);
+  Waterline now, next;  // vertex depths at the start and at the end of a step
   auto record = [&](double tt, const RigidState& st, double wetted) {
     if (o.record_trajectory) r.trajectory.push_back(sample(stone, env, tt, st, wetted));
   };
-  if (deep.depth_m > 0) log.start(0, s, deep.position_m, mechanical_energy(stone, env, s).total_J());
-  record(0, s, 0);
-  next_output = o.output_dt_s;
-  r.outcome = Outcome::time_limit;
-  r.outcome_detail = "reached t_max";
+  auto wetted_area = [&](const RigidState& st) { return water_loads(stone, env, st, surface).wetted_area_m2; };
+  auto energy = [&](const RigidState& st) { return mechanical_energy(stone, env, st).total_J(); };
+  // Every transition goes through the log, which refuses one that would make contacts overlap;
+  // the logic below keeps the log in step with the wet state, so a refusal is a bug, reported.
+  auto logged = [&](ContactLog::Status status, double tt) {
+    if (status == ContactLog::Status::ok) return true;
+    r.outcome = Outcome::failed;
+    std::ostringstream m;
+    m << "contact log at t = " << tt << " s: " << to_string(status);
+    r.outcome_detail = m.str();
+    return false;
+  };
+  auto sank_at = [&](double tt) {
+    r.outcome = Outcome::sank;
+    std::ostringstream m;
+    m << "completely under water at t = " << tt << " s";
+    r.outcome_detail = m.str();
+  };
+  // Brings the log in line with the wet state of s at time tt after a jump of the surface (the
+  // start of the throw, or the water moved by before_step): a contact that the water starts or
+  // ends, or a stone that the water covers, happens at tt. False when the throw ends here.
+  auto settle = [&](double tt) {
+    measure_waterline(stone, s, surface, now);
+    bool changed = false, ok = true;
+    if (now.wet() && !log.in_contact()) {
+      const Vec3 touch = world_vertex(stone, s, s.orientation.toRotationMatrix(), now.deepest);
+      ok = logged(log.start(tt, s, touch, energy(s)), tt);
+      changed = true;
+    } else if (!now.wet() && log.in_contact()) {
+      ok = logged(log.end(tt, s, energy(s), true), tt);
+      changed = true;
+    }
+    const bool sinks = ok && now.sunk();
+    if (changed || sinks) {  // the wetted area only where something happened (it costs a force evaluation)
+      const double wetted = now.wet() ? wetted_area(s) : 0.0;
+      log.observe_wetted_area(wetted);
+      if (sinks) {
+        // Spec §1.8: completely below the surface: nothing here lifts a submerged stone.
+        ok = logged(log.end(tt, s, energy(s), false), tt);
+        if (ok) sank_at(tt);
+      }
+      if (tt > 0) record(tt, s, wetted);
+    }
+    return ok && r.outcome != Outcome::sank;
+  };
 
-  while (t < o.t_max_s - 1e-12 * o.t_max_s) {
+  bool going = settle(0);
+  record(0, s, now.wet() ? wetted_area(s) : 0.0);
+  double next_output = o.output_dt_s;
+  while (going && t < o.t_max_s - 1e-12 * o.t_max_s) {
     if (before_step) {
       before_step(t);
-      deep = deepest_point(stone, s, surface);  // the surface under the stone may have moved
+      if (!settle(t)) break;  // the surface under the stone may have moved
     }
     // Step size: fine while in the water or while the lowest vertex could reach it in one flight
     // step (clearance < max vertex speed × dt).
     const double omega = angular_velocity(stone, s).norm();
     const double reach = (s.velocity_m_s.norm() + omega * stone.bounding_radius_m) * o.dt_s;
-    const bool near = deep.depth_m > -reach;
+    const bool near = now.deepest_m() > -reach;
     double dt = near ? o.contact_dt_s : o.dt_s;
     if (t + dt > o.t_max_s) dt = o.t_max_s - t;
     const RigidState s_new = realtime_step(stone, env, s, dt, o.scheme, surface, &r.stats.rhs_evaluations);
@@ -177,45 +259,54 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
       t = t_new;
       break;
     }
-    const DeepestPoint deep_new = deepest_point(stone, s_new, surface);
-    const bool was_wet = deep.depth_m > 0, is_wet = deep_new.depth_m > 0;
-    if (was_wet != is_wet) {
-      // The deepest depth crosses zero inside the step: locate it by linear interpolation.
-      const double f = deep.depth_m / (deep.depth_m - deep_new.depth_m);
-      const double tc = t + f * dt;
-      const RigidState sc = lerp(s, s_new, f);
-      const double ec = mechanical_energy(stone, env, sc).total_J();
-      if (is_wet)
-        log.start(tc, sc, deep_new.position_m, ec);
-      else
-        log.end(tc, sc, ec, true);
+    measure_waterline(stone, s_new, surface, next);
+    // Transitions inside the step, located by linear interpolation of the vertex depths (the
+    // surface is fixed during a step): a contact starts where the first vertex goes under, ends
+    // where the last comes out, and the stone sinks where the last goes under.
+    if (!log.in_contact() && next.wet()) {
+      const Crossing c = going_under(now, next, false);
+      const RigidState sc = lerp(s, s_new, c.fraction);
+      const double tc = t + c.fraction * dt;
+      const Vec3 touch = world_vertex(stone, sc, sc.orientation.toRotationMatrix(), c.vertex);
+      if (!logged(log.start(tc, sc, touch, energy(sc)), tc)) break;
+      record(tc, sc, 0);
+    } else if (log.in_contact() && !next.wet()) {
+      const Crossing c = last_out(now, next);
+      const RigidState sc = lerp(s, s_new, c.fraction);
+      const double tc = t + c.fraction * dt;
+      if (!logged(log.end(tc, sc, energy(sc), true), tc)) break;
       record(tc, sc, 0);
     }
+    if (next.sunk()) {
+      const Crossing c = going_under(now, next, true);
+      s = lerp(s, s_new, c.fraction);
+      t += c.fraction * dt;
+      const double wetted = wetted_area(s);
+      log.observe_wetted_area(wetted);
+      if (!logged(log.end(t, s, energy(s), false), t)) break;
+      record(t, s, wetted);
+      sank_at(t);
+      break;
+    }
     double wetted = 0;
-    if (is_wet) {
-      wetted = water_loads(stone, env, s_new, surface).wetted_area_m2;
+    if (next.wet()) {
+      wetted = wetted_area(s_new);
       log.observe_wetted_area(wetted);
     }
     s = s_new;
     t = t_new;
-    deep = deep_new;
+    std::swap(now, next);
     if (o.output_dt_s <= 0 || t >= next_output - 1e-12) {
       record(t, s, wetted);
       while (o.output_dt_s > 0 && next_output <= t + 1e-12) next_output += o.output_dt_s;
     }
-    if (deep.submerged_vertices == deep.vertex_count) {
-      // Spec §1.8: completely below the surface: nothing here lifts a submerged stone.
-      r.outcome = Outcome::sank;
-      std::ostringstream m;
-      m << "completely under water at t = " << t << " s";
-      r.outcome_detail = m.str();
-      break;
-    }
   }
-  if (log.in_contact()) log.end(t, s, mechanical_energy(stone, env, s).total_J(), false);
-  if (o.record_trajectory && (r.trajectory.empty() || r.trajectory.back().t_s < t)) record(t, s, 0);
+  if (log.in_contact()) log.end(t, s, energy(s), false);
+  if (o.record_trajectory && (r.trajectory.empty() || r.trajectory.back().t_s < t))
+    record(t, s, r.outcome != Outcome::failed && now.wet() ? wetted_area(s) : 0.0);
   finish_result(r, log, s, t);
-  r.stats.cpu_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  r.stats.cpu_s = cpu.seconds();
+  r.stats.wall_s = wall.seconds();
   return r;
 }
 

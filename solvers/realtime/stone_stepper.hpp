@@ -9,6 +9,17 @@
 //   midpoint (2), rk4 (4)    explicit Runge–Kutta on the flat state (spec §1.3 right-hand side).
 // The step switches to contact_dt_s when the lowest vertex could reach the surface within one
 // flight step (clearance < (|v| + |ω| r_bound) dt_s), so a flight step cannot carry it deep.
+//
+// Contacts (spec §1.8) are located inside the step by linear interpolation of each vertex's depth
+// between the step's ends (an O(dt²) location): a contact starts where the first vertex goes
+// under (the first-touch point is that vertex there), ends where the last comes out, and the stone
+// sinks where the last goes under; the state there is interpolated (position, velocity, angular
+// momentum linearly, orientation by slerp), and a throw that sinks ends at that time and state.
+// A live surface (before_step) is piecewise constant in time: it changes at the start of the
+// steps where before_step moves it. A contact that the water starts or ends, or a stone that the
+// water covers, is logged at that step start — exactly when the modelled surface changed; against
+// a surface moving continuously between its own levels that is within one water step (plus the
+// stone step in which the change is applied).
 #include <functional>
 
 #include "solvers/realtime/throw_result.hpp"

@@ -1,13 +1,24 @@
 // The real-time stepper against closed forms: the ballistic parabola, torque-free tumbling of an
-// asymmetric stone (angular momentum and rotational energy), and a flat plate dropped onto still
-// water (m dw/dt = m g − C_w ρ_w S w²).
+// asymmetric stone (angular momentum and rotational energy), a flat plate dropped onto still
+// water (m dw/dt = m g − C_w ρ_w S w²) and the time it sinks, the first-touch point of a stone in
+// free flight, and contacts started and ended by a moving water surface.
 #include <boost/test/unit_test.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <numbers>
+#include <ostream>
+#include <thread>
 
 #include "model/stone/throw.hpp"
+#include "model/stone/water_surface.hpp"
 #include "solvers/realtime/stone_stepper.hpp"
+
+namespace stoneskip {
+// Lets Boost.Test print the enum in a failure message.
+inline std::ostream& operator<<(std::ostream& o, Outcome x) { return o << to_string(x); }
+inline std::ostream& operator<<(std::ostream& o, ContactLog::Status x) { return o << to_string(x); }
+}  // namespace stoneskip
 
 using namespace stoneskip;
 
@@ -30,6 +41,46 @@ Environment vacuum() {
   e.air_density_kg_m3 = 0;
   return e;
 }
+
+// A flat water surface whose level a test moves between steps (a stand-in for a live field).
+class FlatLevel : public WaterSurface {
+ public:
+  double level_m = 0;
+  double height_m(double, double) const override { return level_m; }
+};
+
+// The plate of the dropped-plate tests: R = 5 cm, h = 1 cm, C_w = 0.7, no air, released with its
+// bottom face just wet at 2 m/s downwards. While only the bottom face pushes (the rim faces are
+// vertical: u = v·n = 0 exactly), m dw/dt = m g − C ρ S w², so with k = C ρ S / m,
+// w_t = √(g/k), a = atanh(w_t/w0), rate = √(g k): w(t) = w_t coth(a + rate t) and the depth
+// fallen is (1/k) ln(sinh(a + rate t)/sinh(a)).
+struct DroppedPlate {
+  double R = 0.05, h = 0.01, rho = 2500, w0 = 2.0;
+  Stone stone = prism_stone(R, h, 11, rho);
+  Environment env = [] {
+    Environment e = vacuum();
+    e.water_coefficient = 0.7;
+    return e;
+  }();
+  RigidState initial() const {
+    RigidState s0;
+    s0.position_m = Vec3(0, 0, h / 2 - 1e-9);  // bottom face just wet
+    s0.velocity_m_s = Vec3(0, 0, -w0);
+    return s0;
+  }
+  double k() const {
+    const double S = 0.5 * 11 * R * R * std::sin(2 * std::numbers::pi / 11);
+    return env.water_coefficient * env.water_density_kg_m3 * S / stone.mass.mass_kg;
+  }
+  double wt() const { return std::sqrt(env.gravity_m_s2 / k()); }
+  double a() const { return std::atanh(wt() / w0); }
+  double rate() const { return std::sqrt(env.gravity_m_s2 * k()); }
+  double speed(double t) const { return wt() / std::tanh(a() + rate() * t); }
+  // The time at which the plate has fallen `fallen` metres.
+  double time_to_fall(double fallen) const {
+    return (std::asinh(std::sinh(a()) * std::exp(k() * fallen)) - a()) / rate();
+  }
+};
 
 }  // namespace
 
@@ -157,6 +208,220 @@ BOOST_AUTO_TEST_CASE(contact_start_is_located_between_steps) {
   // (1e-3 s steps until the stone is near the water) → time error ≈ (g t dt/2)/(g t) = dt/2.
   BOOST_TEST(std::abs(r.contacts[0].start_s - exact) <= 0.5 * o.dt_s + 1e-8);
   BOOST_TEST(r.stats.contact_steps > 0);
+}
+
+BOOST_AUTO_TEST_CASE(a_dropped_plate_sinks_at_the_closed_form_time_and_place) {
+  // Oracle: the dropped plate's closed form (DroppedPlate): it sinks when its top face reaches the
+  // surface, i.e. after falling h − 1e-9 m, at t_s = time_to_fall(h − 1e-9), with its centre at
+  // z = −h/2 (the top face, h/2 above the centre, at z = 0). The stepper locates the crossing of
+  // the last vertex inside the step by linear interpolation of its depth: for a depth z(t) with
+  // |z''| = |k w² − g| and |z'| = w at the crossing, that errs by at most |z''| dt²/(8 w). rk4's own
+  // error ((dt·rate)⁴ ≈ 1e-11 relative at 1e-4 s) is far below it, so the sinking time must be
+  // within that bound (× 2 for the step's cubic term) at every contact step, i.e. fall like dt².
+  // The position is on the same line as the time: the interpolated centre is at −h/2 to round-off.
+  const DroppedPlate p;
+  const double t_exact = p.time_to_fall(p.h - 1e-9);
+  const double w = p.speed(t_exact), accel = std::abs(p.k() * w * w - p.env.gravity_m_s2);
+  constexpr double kCubicMargin = 2;       // the bound is for a quadratic depth over the step
+  constexpr double kRoundoff_s = 1e-15;    // a few ulps of a 6 ms time
+  constexpr double kRoundoff_m = 1e-15;    // a few ulps of a 5 mm height
+  for (double dt : {1e-4, 5e-5, 2.5e-5}) {
+    RealtimeOptions o;
+    o.scheme = Scheme::rk4;
+    o.dt_s = dt;
+    o.contact_dt_s = dt;
+    o.t_max_s = 0.05;
+    o.output_dt_s = 0;
+    const ThrowResult r = run_realtime(p.stone, p.env, p.initial(), o);
+    BOOST_REQUIRE(r.outcome == Outcome::sank);
+    BOOST_REQUIRE(r.contacts.size() == 1u);
+    const ContactRecord& c = r.contacts.back();
+    const double bound = kCubicMargin * accel * dt * dt / (8 * w) + kRoundoff_s;
+    BOOST_TEST(std::abs(r.end_time_s - t_exact) <= bound, "dt " << dt << ": sank at " << r.end_time_s << " s, exact "
+                                                           << t_exact << " s, error " << r.end_time_s - t_exact
+                                                           << " s, bound " << bound << " s");
+    // The outcome, the end of the last contact, the final state and the last sample agree.
+    BOOST_TEST(c.end_s == r.end_time_s);
+    BOOST_TEST(!c.bounced);
+    BOOST_TEST((c.exit_position_m - r.final_state.position_m).norm() == 0.0);
+    BOOST_TEST(r.trajectory.back().t_s == r.end_time_s);
+    BOOST_TEST(std::abs(r.final_state.position_m.z() + p.h / 2) <= kRoundoff_m,
+               "dt " << dt << ": centre at " << r.final_state.position_m.z() << " m when it sank");
+  }
+}
+
+namespace {
+
+// The exact first touch of a stone in free flight without air: the centre follows the parabola
+// x0 + v0 t − g t²/2 ẑ, and a symmetric stone (I_xx = I_yy) spun about its symmetry axis turns
+// at constant ω about that fixed axis, R(t) = AngleAxis(|ω| t, n) R0. Each vertex's height is then
+// a closed form in t; its first zero is bracketed on a 1e-6 s grid and bisected to round-off.
+struct ExactTouch {
+  double t_s = 0;
+  Vec3 point_m = Vec3::Zero();
+  double vertex_speed_m_s = 0, vertex_vertical_speed_m_s = 0;
+};
+
+ExactTouch exact_first_touch(const Stone& stone, const RigidState& s0, const Vec3& omega, double g) {
+  const double w = omega.norm();
+  const Vec3 axis = w > 0 ? Vec3(omega / w) : Vec3::UnitZ();
+  auto vertex = [&](int j, double t) {
+    const Quat q = Quat(Eigen::AngleAxisd(w * t, axis)) * s0.orientation;
+    return Vec3(s0.position_m + s0.velocity_m_s * t + Vec3(0, 0, -0.5 * g * t * t) + q * stone.body_mesh.vertices[j]);
+  };
+  ExactTouch best;
+  best.t_s = 1e300;
+  for (int j = 0; j < static_cast<int>(stone.body_mesh.vertices.size()); ++j) {
+    double lo = 0, hi = -1;
+    for (double t = 1e-6; t < 1.0; t += 1e-6)
+      if (vertex(j, t).z() <= 0) {
+        lo = t - 1e-6;
+        hi = t;
+        break;
+      }
+    if (hi < 0 || lo >= best.t_s) continue;
+    for (int it = 0; it < 200 && hi - lo > 1e-16; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (vertex(j, mid).z() > 0 ? lo : hi) = mid;
+    }
+    if (hi < best.t_s) {
+      best.t_s = hi;
+      best.point_m = vertex(j, hi);
+      const double e = 1e-7;
+      const Vec3 v = (vertex(j, hi + e) - vertex(j, hi - e)) / (2 * e);
+      best.vertex_speed_m_s = v.norm();
+      best.vertex_vertical_speed_m_s = std::abs(v.z());
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(the_first_touch_is_the_vertex_that_crosses_first_at_the_located_time) {
+  // Oracle: exact_first_touch (closed-form flight: parabola, rotation at constant ω about the
+  // symmetry axis), for a stone without spin (yawed 7° so that one vertex is the lowest) and one
+  // spun at 40 rev/s. rk4 in 1e-4 s flight steps integrates the parabola exactly and the rotation
+  // to ~1e-9 rad; the touch is located inside a 1e-5 s contact step by linear interpolation of the
+  // vertex depths, which errs in time by at most a dt²/(8 |ż|), a = g + ω² R the largest vertex
+  // acceleration, ż the vertex's vertical speed at the touch; the point then errs by the vertex
+  // speed times that, plus a dt²/8 (× 2 for the step's cubic term). The deepest vertex at the end
+  // of the first wet step (what a solver that does not interpolate reports) is off by up to
+  // |v| dt ≈ 8e-5 m.
+  const Stone stone = prism_stone();
+  const Environment env = vacuum();
+  constexpr double kCubicMargin = 2;
+  constexpr double kIntegration_m = 1e-9;  // rk4's attitude error (~1e-9 rad) times R, generously
+  for (double spin_rev_s : {0.0, 40.0}) {
+    RigidState s0;
+    s0.position_m = Vec3(0, 0, 0.1);
+    s0.velocity_m_s = Vec3(8 * std::cos(0.17), 0, -8 * std::sin(0.17));
+    s0.orientation = Quat(Eigen::AngleAxisd(-0.26, Vec3::UnitY())) * Quat(Eigen::AngleAxisd(0.12, Vec3::UnitZ()));
+    const Vec3 omega = s0.orientation * Vec3(0, 0, 2 * std::numbers::pi * spin_rev_s);
+    set_body_angular_velocity(stone, s0, Vec3(0, 0, 2 * std::numbers::pi * spin_rev_s));
+    const ExactTouch exact = exact_first_touch(stone, s0, omega, env.gravity_m_s2);
+    RealtimeOptions o;
+    o.scheme = Scheme::rk4;
+    o.dt_s = 1e-4;
+    o.contact_dt_s = 1e-5;
+    o.t_max_s = exact.t_s + 2e-3;
+    o.record_trajectory = false;
+    const ThrowResult r = run_realtime(stone, env, s0, o);
+    BOOST_REQUIRE(!r.contacts.empty());
+    const double dt = o.contact_dt_s;
+    const double a = env.gravity_m_s2 + omega.squaredNorm() * stone.bounding_radius_m;
+    const double bound_t = kCubicMargin * a * dt * dt / (8 * exact.vertex_vertical_speed_m_s);
+    const double bound_x = exact.vertex_speed_m_s * bound_t + kCubicMargin * a * dt * dt / 8 + kIntegration_m;
+    BOOST_TEST(std::abs(r.contacts[0].start_s - exact.t_s) <= bound_t,
+               spin_rev_s << " rev/s: start " << r.contacts[0].start_s << " s, exact " << exact.t_s << " s");
+    const double miss = (r.contacts[0].first_touch_m - exact.point_m).norm();
+    BOOST_TEST(miss <= bound_x, spin_rev_s << " rev/s: first touch " << miss << " m from the exact point, bound "
+                                           << bound_x << " m");
+  }
+}
+
+BOOST_AUTO_TEST_CASE(contacts_that_the_water_starts_and_ends_are_logged_when_the_water_moves) {
+  // Oracle: a stone at rest with no gravity (nothing moves it: u = 0 on every face) under a flat
+  // surface that a before_step callback raises and lowers, as a scene moves its height field
+  // between stone steps. The surface is piecewise constant in time: it changes at the first step
+  // that starts at or after each of its jump times, so the contacts must start and end exactly
+  // there: the level rises over the bottom face at 50.55 ms (first step start 51 ms: flight steps
+  // of 1 ms), falls back at 80.55 ms (first step start 80.6 ms: contact steps of 0.1 ms from 51 ms),
+  // and rises over the whole stone at 100.55 ms (100.6 ms: flight steps again from 80.6 ms), where
+  // it sinks. Times are sums of steps: 1e-12 s of round-off allowed.
+  constexpr double kRoundoff_s = 1e-12;
+  const double h = 0.008;
+  const Stone s = prism_stone(0.03, h);
+  Environment env = vacuum();
+  env.gravity_m_s2 = 0;
+  RigidState s0;
+  s0.position_m = Vec3(0, 0, 0.01);  // bottom face at 6 mm, top at 14 mm
+  FlatLevel water;
+  auto move_water = [&](double t) { water.level_m = t < 0.05055 ? 0.0 : t < 0.08055 ? 0.008 : t < 0.10055 ? 0.0 : 0.02; };
+  RealtimeOptions o;
+  o.dt_s = 1e-3;
+  o.contact_dt_s = 1e-4;
+  o.t_max_s = 0.2;
+  o.output_dt_s = 0;
+  const ThrowResult r = run_realtime(s, env, s0, o, &water, move_water);
+  BOOST_TEST_INFO("outcome " << to_string(r.outcome) << " at " << r.end_time_s << " s, " << r.contacts.size() << " contacts");
+  BOOST_REQUIRE(r.contacts.size() == 2u);
+  BOOST_TEST(std::abs(r.contacts[0].start_s - 0.051) <= kRoundoff_s);
+  BOOST_TEST(std::abs(r.contacts[0].end_s - 0.0806) <= kRoundoff_s);
+  BOOST_TEST(r.contacts[0].bounced);  // the water left the stone: free flight follows
+  BOOST_TEST(std::abs(r.contacts[1].start_s - 0.1006) <= kRoundoff_s);
+  BOOST_TEST(r.outcome == Outcome::sank);
+  BOOST_TEST(r.contacts[1].end_s == r.end_time_s);
+  BOOST_TEST(std::abs(r.end_time_s - 0.1006) <= kRoundoff_s);
+  // Every sample that is wet lies inside a logged contact.
+  for (const auto& p : r.trajectory) {
+    if (p.wetted_area_m2 <= 0) continue;
+    bool inside = false;
+    for (const auto& c : r.contacts) inside = inside || (p.t_s >= c.start_s && p.t_s <= c.end_s);
+    BOOST_TEST(inside, "wet sample at t = " << p.t_s << " s outside every contact");
+  }
+}
+
+BOOST_AUTO_TEST_CASE(the_contact_log_refuses_a_start_while_open_and_an_end_while_closed) {
+  // Oracle: spec §1.8 — contacts are disjoint intervals, each started once and ended once. A
+  // second start while a contact is open, or an end with none open, is refused and leaves the
+  // list as it was.
+  ContactLog log;
+  RigidState s;
+  s.velocity_m_s = Vec3(1, 0, -1);
+  BOOST_TEST(log.end(0.5, s, 1.0, true) == ContactLog::Status::refused_end_while_closed);
+  BOOST_TEST(log.contacts().empty());
+  BOOST_TEST(log.start(1.0, s, Vec3(1, 2, 3), 1.0) == ContactLog::Status::ok);
+  BOOST_TEST(log.start(2.0, s, Vec3(4, 5, 6), 1.0) == ContactLog::Status::refused_start_while_open);
+  BOOST_TEST(log.contacts().size() == 1u);
+  BOOST_TEST(log.contacts()[0].start_s == 1.0);
+  BOOST_TEST(log.contacts()[0].first_touch_m == Vec3(1, 2, 3));
+  BOOST_TEST(log.end(3.0, s, 1.0, true) == ContactLog::Status::ok);
+  BOOST_TEST(log.end(4.0, s, 1.0, false) == ContactLog::Status::refused_end_while_closed);
+  BOOST_TEST(log.contacts().size() == 1u);
+  BOOST_TEST(log.contacts()[0].end_s == 3.0);
+  BOOST_TEST(log.contacts()[0].bounced);
+}
+
+BOOST_AUTO_TEST_CASE(cpu_time_is_the_thread_s_own_and_wall_time_includes_waiting) {
+  // Oracle: a thread that sleeps uses no CPU. A before_step callback sleeps 50 ms once inside a
+  // 10-step flight (microseconds of work): the wall time includes the 50 ms, the CPU time must
+  // not (allowed 20 ms: the work itself plus scheduling noise on a loaded machine, still well
+  // below the sleep).
+  const Stone s = prism_stone();
+  RigidState s0;
+  s0.position_m = Vec3(0, 0, 10);
+  RealtimeOptions o;
+  o.dt_s = 1e-3;
+  o.t_max_s = 0.01;
+  bool slept = false;
+  auto sleep_once = [&](double) {
+    if (!slept) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    slept = true;
+  };
+  const ThrowResult r = run_realtime(s, vacuum(), s0, o, nullptr, sleep_once);
+  BOOST_TEST(r.stats.wall_s >= 0.05);
+  BOOST_TEST(r.stats.cpu_s <= 0.02, "cpu_s " << r.stats.cpu_s << " s for 10 flight steps and a 50 ms sleep");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -15,7 +15,17 @@ const char* to_string(Outcome o) {
   return "?";
 }
 
-void ContactLog::start(double t_s, const RigidState& s, const Vec3& first_touch_m, double energy_J) {
+const char* to_string(ContactLog::Status s) {
+  switch (s) {
+    case ContactLog::Status::ok: return "ok";
+    case ContactLog::Status::refused_start_while_open: return "refused: a contact start while a contact is open";
+    case ContactLog::Status::refused_end_while_closed: return "refused: a contact end while no contact is open";
+  }
+  return "?";
+}
+
+ContactLog::Status ContactLog::start(double t_s, const RigidState& s, const Vec3& first_touch_m, double energy_J) {
+  if (open_) return Status::refused_start_while_open;
   ContactRecord c;
   c.start_s = t_s;
   c.end_s = t_s;
@@ -28,10 +38,11 @@ void ContactLog::start(double t_s, const RigidState& s, const Vec3& first_touch_
   c.entry_position_m = s.position_m;
   contacts_.push_back(c);
   open_ = true;
+  return Status::ok;
 }
 
-void ContactLog::end(double t_s, const RigidState& s, double energy_J, bool left_water) {
-  if (!open_) return;
+ContactLog::Status ContactLog::end(double t_s, const RigidState& s, double energy_J, bool left_water) {
+  if (!open_) return Status::refused_end_while_closed;
   ContactRecord& c = contacts_.back();
   c.end_s = t_s;
   c.exit_speed_m_s = s.velocity_m_s.norm();
@@ -42,6 +53,7 @@ void ContactLog::end(double t_s, const RigidState& s, double energy_J, bool left
   c.exit_position_m = s.position_m;
   c.bounced = left_water;
   open_ = false;
+  return Status::ok;
 }
 
 void ContactLog::observe_wetted_area(double area_m2) {
@@ -68,20 +80,32 @@ void finish_result(ThrowResult& r, const ContactLog& log, const RigidState& fina
   }
 }
 
-DeepestPoint deepest_point(const Stone& stone, const RigidState& s, const WaterSurface* surface) {
-  DeepestPoint p;
+void measure_waterline(const Stone& stone, const RigidState& s, const WaterSurface* surface, Waterline& out) {
   const Mat3 R = s.orientation.normalized().toRotationMatrix();
   const int nv = static_cast<int>(stone.body_mesh.vertices.size());
-  p.vertex_count = nv;
+  out.depth_m.resize(nv);
+  out.deepest = out.shallowest = -1;
+  out.submerged = 0;
   for (int k = 0; k < nv; ++k) {
     const Vec3 w = s.position_m + R * stone.body_mesh.vertices[k];
     const double eta = surface ? surface->height_m(w.x(), w.y()) : 0.0;
     const double d = eta - w.z();
-    if (d > 0) ++p.submerged_vertices;
-    if (d > p.depth_m) {
-      p.depth_m = d;
-      p.position_m = w;
-    }
+    out.depth_m[k] = d;
+    if (d > 0) ++out.submerged;
+    if (out.deepest < 0 || d > out.depth_m[out.deepest]) out.deepest = k;
+    if (out.shallowest < 0 || d < out.depth_m[out.shallowest]) out.shallowest = k;
+  }
+}
+
+DeepestPoint deepest_point(const Stone& stone, const RigidState& s, const WaterSurface* surface) {
+  Waterline w;
+  measure_waterline(stone, s, surface, w);
+  DeepestPoint p;
+  p.vertex_count = static_cast<int>(w.depth_m.size());
+  p.submerged_vertices = w.submerged;
+  if (w.deepest >= 0) {
+    p.depth_m = w.deepest_m();
+    p.position_m = world_vertex(stone, s, s.orientation.normalized().toRotationMatrix(), w.deepest);
   }
   return p;
 }

@@ -24,7 +24,7 @@ struct ContactRecord {
   double entry_path_angle_deg = 0, exit_path_angle_deg = 0;
   double entry_attack_angle_deg = 0, exit_attack_angle_deg = 0;
   double entry_energy_J = 0, exit_energy_J = 0;
-  Vec3 first_touch_m = Vec3::Zero();  // the first vertex to go under
+  Vec3 first_touch_m = Vec3::Zero();  // the vertex that crossed first, where it crossed
   Vec3 entry_position_m = Vec3::Zero();  // centre of mass when the contact started
   Vec3 exit_position_m = Vec3::Zero();  // centre of mass when the contact ended
   double max_wetted_area_m2 = 0;
@@ -43,7 +43,8 @@ struct SolverStats {
   long error_test_failures = 0;  // reference only
   long nonlinear_iterations = 0;  // reference only
   long segments = 0;           // reference: integrations between located events
-  double cpu_s = 0;            // wall time of the solve on one thread
+  double cpu_s = 0;            // CPU time of the solve: its own thread's (solvers/realtime/clocks.hpp)
+  double wall_s = 0;           // wall-clock time of the solve (longer than cpu_s when cores are shared)
 };
 
 struct ThrowResult {
@@ -59,14 +60,20 @@ struct ThrowResult {
   double distance_m = 0;       // horizontal distance from release to the end point
   double lateral_m = 0;        // final y − release y (y to the thrower's left)
   double max_energy_gain_J = 0;  // largest rise of total energy over any contact (> 0: energy created)
+  // Reference only: the times of the located events (a vertex crossing the surface, a wet face's
+  // or the air flow's switch), one per root return: where the right-hand side is not smooth.
+  std::vector<double> event_times_s;
   SolverStats stats;
 };
 
-// Builds the contact list as a solver reports transitions; shared by both solvers.
+// Builds the contact list as a solver reports transitions; shared by both solvers. Contacts are
+// disjoint intervals (spec §1.8): a start while a contact is open, or an end while none is, is
+// refused (the list is left as it was) and said so in the returned status.
 class ContactLog {
  public:
-  void start(double t_s, const RigidState& s, const Vec3& first_touch_m, double energy_J);
-  void end(double t_s, const RigidState& s, double energy_J, bool left_water);
+  enum class Status { ok, refused_start_while_open, refused_end_while_closed };
+  Status start(double t_s, const RigidState& s, const Vec3& first_touch_m, double energy_J);
+  Status end(double t_s, const RigidState& s, double energy_J, bool left_water);
   void observe_wetted_area(double area_m2);
   bool in_contact() const { return open_; }
   const std::vector<ContactRecord>& contacts() const { return contacts_; }
@@ -76,9 +83,23 @@ class ContactLog {
   std::vector<ContactRecord> contacts_;
   bool open_ = false;
 };
+const char* to_string(ContactLog::Status s);
 
 // Fills distance, lateral deviation, bounces, energy gain from the contacts and final state.
 void finish_result(ThrowResult& r, const ContactLog& log, const RigidState& final_state, double end_time_s);
+
+// Every vertex's depth below the surface at one state (d = η − z; > 0 under water), and which
+// vertices are the deepest and the shallowest. measure_waterline reuses out's storage (no
+// allocation in a step loop once it has the stone's size).
+struct Waterline {
+  std::vector<double> depth_m;  // per vertex of stone.body_mesh
+  int deepest = -1, shallowest = -1;
+  int submerged = 0;            // vertices with d > 0
+  bool wet() const { return submerged > 0; }
+  bool sunk() const { return !depth_m.empty() && submerged == static_cast<int>(depth_m.size()); }
+  double deepest_m() const { return depth_m[deepest]; }
+};
+void measure_waterline(const Stone& stone, const RigidState& s, const WaterSurface* surface, Waterline& out);
 
 // The point of the stone deepest below the surface and its depth (d = η − z; > 0 under water).
 struct DeepestPoint {

@@ -12,7 +12,6 @@
 // (2 C_w ρ_w |u| S / m, ~10³ s⁻¹) is far below what the accuracy-limited steps resolve anyway.
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -28,6 +27,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
+#include "solvers/realtime/clocks.hpp"
 #include "solvers/reference/stone_events.hpp"
 
 namespace stoneskip {
@@ -305,6 +305,7 @@ bool ReferenceSolve::handle_root(double t) {
   }
   event_times_[slot] = t;
   ++event_count_;
+  r_.event_times_s.push_back(t);
 
   check(CVodeGetRootInfo(cv_.mem, found_.data()), "CVodeGetRootInfo");
   renormalise();
@@ -431,7 +432,8 @@ void ReferenceSolve::run(const RigidState& initial) {
 
 ThrowResult run_reference(const Stone& stone, const Environment& env, const RigidState& initial,
                           const ReferenceOptions& options) {
-  const auto clock_start = std::chrono::steady_clock::now();
+  const CpuTimer cpu;
+  const WallTimer wall;
   ThrowResult r;
   r.solver = describe(options);
   try {
@@ -441,7 +443,8 @@ ThrowResult run_reference(const Stone& stone, const Environment& env, const Rigi
     r.outcome = Outcome::failed;
     r.outcome_detail = e.message;
   }
-  r.stats.cpu_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  r.stats.cpu_s = cpu.seconds();
+  r.stats.wall_s = wall.seconds();
   return r;
 }
 

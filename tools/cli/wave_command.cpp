@@ -17,10 +17,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "solvers/realtime/clocks.hpp"
 #include "solvers/spectral/spectral_wave.hpp"
 #include "tools/cli/command_registry.hpp"
 #include "tools/scene/wave_case.hpp"
-#include "verification/waves/cpu_timer.hpp"
 #include "verification/waves/stability.hpp"
 #include "verification/waves/wave_problem.hpp"
 

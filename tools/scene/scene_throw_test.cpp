@@ -1,5 +1,6 @@
 // A stone on a live water surface ([water] in a stone case). Oracles: still water (a flat field
-// must give exactly the still-water throw), and the closed-form fall onto a frozen crest.
+// must give exactly the still-water throw), the closed-form fall onto a frozen crest, and the
+// definition of a contact (spec §1.8) on the swell scene, where the water moves under the stone.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -105,6 +106,40 @@ BOOST_AUTO_TEST_CASE(water_keys_are_checked_like_any_other) {
   text.replace(text.find("origin_y_m"), 10, "origin_z_m");
   BOOST_CHECK_EXCEPTION(stone_case_from_document(parse_toml_text(text, "drop.toml")), InputError,
                         [](const InputError& e) { return std::string(e.what()).find("water.origin_z_m") != std::string::npos; });
+}
+
+BOOST_AUTO_TEST_CASE(on_the_swell_every_wet_moment_lies_inside_a_logged_contact) {
+  // Oracle: spec §1.8 — a contact is a maximal interval during which some S_i > 0, so every
+  // sample with a wetted area lies inside a logged contact, and a stone that sinks ends a logged
+  // contact at the time it sank. Regression for issue 9: `stoneskip run cases/scenes/swell_8ms.toml
+  // --set environment.convention=paper --set throw.height_m=0.121 --set throw.spin_rev_s=20`
+  // printed 0 bounces, "sank at 0.08279 s" and no contacts although the stone is wet from
+  // 0.0725 s: the water, not the stone, had crossed. Every step is sampled (output_dt_s = 0); the
+  // 500 × 500 field is stepped for 83 ms (about 0.2 s of CPU).
+  const StoneCase c = load_stone_case("cases/scenes/swell_8ms.toml",
+                                      {"environment.convention=paper", "throw.height_m=0.121",
+                                       "throw.spin_rev_s=20", "solver.output_dt_s=0.0"});
+  const ThrowResult r = run_scene_realtime(c).result;
+  BOOST_TEST_INFO(to_string(r.outcome) << " at " << r.end_time_s << " s, " << r.contacts.size() << " contacts");
+  BOOST_REQUIRE(!r.contacts.empty());
+  int wet_samples = 0;
+  for (const auto& p : r.trajectory) {
+    if (p.wetted_area_m2 <= 0) continue;
+    ++wet_samples;
+    bool inside = false;
+    for (const auto& k : r.contacts) inside = inside || (p.t_s >= k.start_s && p.t_s <= k.end_s);
+    BOOST_TEST(inside, "wet sample at t = " << p.t_s << " s (area " << p.wetted_area_m2 << " m²) outside every contact");
+  }
+  BOOST_TEST(wet_samples > 0);
+  if (r.outcome == Outcome::sank) {
+    BOOST_TEST(!r.contacts.back().bounced);
+    BOOST_TEST(r.contacts.back().end_s == r.end_time_s);
+  }
+  // Contacts are disjoint and ordered: each starts after the previous one ended.
+  for (std::size_t k = 0; k < r.contacts.size(); ++k) {
+    BOOST_TEST(r.contacts[k].end_s >= r.contacts[k].start_s);
+    if (k > 0) BOOST_TEST(r.contacts[k].start_s >= r.contacts[k - 1].end_s);
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -113,7 +113,8 @@ WaveStudyFile load_wave_study_file(const std::string& path, const std::vector<st
     v.both_grids = grid_list(*c, "both_grids", v.both_grids);
     v.both_sigma = c->number_or("both_sigma", v.both_sigma);
     c->require_in("both_sigma", v.both_sigma, 1e-3, 1.0);
-    v.fit_points = static_cast<int>(count(*c, "fit_points", v.fit_points, 2, 100));
+    v.fit_points = static_cast<int>(count(*c, "fit_points", v.fit_points, 0, 100));
+    if (v.fit_points == 1) c->fail("fit_points", "a fit needs at least 2 points (0: all)");
     v.judgement.expected_order = c->number_or("expected_order", v.judgement.expected_order);
     c->require_positive("expected_order", v.judgement.expected_order);
     v.judgement.tolerance = c->number_or("order_tolerance", v.judgement.tolerance);

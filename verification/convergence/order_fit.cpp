@@ -2,10 +2,55 @@
 
 #include <boost/math/distributions/students_t.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace stoneskip {
+
+LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y) {
+  LineFit f;
+  f.points = static_cast<int>(std::min(x.size(), y.size()));
+  if (f.points < 2) return f;
+  // Ordinary least squares y = a + b x (e.g. Montgomery & Runger, Applied Statistics, §11.2).
+  const double n = f.points;
+  double mx = 0, my = 0;
+  for (int i = 0; i < f.points; ++i) {
+    mx += x[i];
+    my += y[i];
+  }
+  mx /= n;
+  my /= n;
+  double sxx = 0, sxy = 0, syy = 0;
+  for (int i = 0; i < f.points; ++i) {
+    sxx += (x[i] - mx) * (x[i] - mx);
+    sxy += (x[i] - mx) * (y[i] - my);
+    syy += (y[i] - my) * (y[i] - my);
+  }
+  if (sxx <= 0) return f;
+  f.slope = sxy / sxx;
+  f.intercept = my - f.slope * mx;
+  double sse = 0;
+  for (int i = 0; i < f.points; ++i) {
+    const double r = y[i] - (my + f.slope * (x[i] - mx));
+    sse += r * r;
+    f.residual_min = i == 0 ? r : std::min(f.residual_min, r);
+    f.residual_max = i == 0 ? r : std::max(f.residual_max, r);
+  }
+  f.r_squared = syy > 0 ? 1 - sse / syy : 1;
+  f.slope_low = f.slope_high = f.slope;
+  if (f.points > 2) {
+    // 95 % two-sided interval of the slope: b ± t_{0.975, n−2} · sqrt(SSE/(n−2)/Sxx).
+    boost::math::students_t dist(n - 2);
+    const double t = boost::math::quantile(boost::math::complement(dist, 0.025));
+    const double se = std::sqrt(sse / (n - 2) / sxx);
+    f.slope_low = f.slope - t * se;
+    f.slope_high = f.slope + t * se;
+  }
+  f.valid = true;
+  return f;
+}
 
 OrderFit fit_order(const std::vector<double>& h, const std::vector<double>& error) {
   OrderFit fit;
@@ -25,43 +70,16 @@ OrderFit fit_order(const std::vector<double>& h, const std::vector<double>& erro
     fit.problem = "fewer than 2 points with h > 0 and error > 0";
     return fit;
   }
-  // Ordinary least squares y = a + p x (e.g. Montgomery & Runger, Applied Statistics, §11.2).
-  const double n = static_cast<double>(x.size());
-  double mx = 0, my = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    mx += x[i];
-    my += y[i];
-  }
-  mx /= n;
-  my /= n;
-  double sxx = 0, sxy = 0, syy = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    sxx += (x[i] - mx) * (x[i] - mx);
-    sxy += (x[i] - mx) * (y[i] - my);
-    syy += (y[i] - my) * (y[i] - my);
-  }
-  if (sxx <= 0) {
+  const LineFit line = fit_line(x, y);
+  if (!line.valid) {
     fit.problem = "all h are equal";
-    fit.points = static_cast<int>(x.size());
     return fit;
   }
-  fit.order = sxy / sxx;
-  fit.constant = std::exp(my - fit.order * mx);
-  double sse = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    double r = y[i] - (my + fit.order * (x[i] - mx));
-    sse += r * r;
-  }
-  fit.r_squared = syy > 0 ? 1 - sse / syy : 1;
-  fit.order_low = fit.order_high = fit.order;
-  if (x.size() > 2) {
-    // 95 % two-sided interval of the slope: p ± t_{0.975, n−2} · sqrt(SSE/(n−2)/Sxx).
-    boost::math::students_t dist(n - 2);
-    double t = boost::math::quantile(boost::math::complement(dist, 0.025));
-    double se = std::sqrt(sse / (n - 2) / sxx);
-    fit.order_low = fit.order - t * se;
-    fit.order_high = fit.order + t * se;
-  }
+  fit.order = line.slope;
+  fit.constant = std::exp(line.intercept);
+  fit.order_low = line.slope_low;
+  fit.order_high = line.slope_high;
+  fit.r_squared = line.r_squared;
   for (std::size_t i = 0; i + 1 < x.size(); ++i) fit.pairwise.push_back((y[i] - y[i + 1]) / (x[i] - x[i + 1]));
   fit.valid = true;
   return fit;
@@ -84,21 +102,49 @@ const char* to_string(OrderVerdict v) {
     case OrderVerdict::converges_at_expected_order: return "converges at the expected order";
     case OrderVerdict::converges_at_other_order: return "converges, not at the expected order";
     case OrderVerdict::does_not_converge: return "does not converge";
-    case OrderVerdict::insufficient_data: return "insufficient data";
+    case OrderVerdict::insufficient_data: return "order not established (fewer than 3 points)";
+    case OrderVerdict::order_not_established: return "order not established";
   }
   return "?";
 }
 
-OrderVerdict judge_order(const OrderFit& fit, const OrderJudgement& j) {
-  if (!fit.valid) return OrderVerdict::insufficient_data;
-  // No convergence when the slope is (nearly) flat or negative, or when the interval cannot
-  // exclude a flat error (the data are consistent with no convergence at all).
-  if (fit.order <= j.minimum_order || fit.order_low <= 0) return OrderVerdict::does_not_converge;
-  if (std::abs(fit.order - j.expected_order) <= j.tolerance &&
-      std::abs(fit.order_low - j.expected_order) <= j.tolerance &&
-      std::abs(fit.order_high - j.expected_order) <= j.tolerance)
-    return OrderVerdict::converges_at_expected_order;
-  return OrderVerdict::converges_at_other_order;
+OrderDecision judge_order(const OrderFit& fit, const OrderJudgement& j) {
+  OrderDecision d;
+  if (!fit.valid) {
+    d.reason = "no fit: " + fit.problem;
+    return d;
+  }
+  if (fit.points < 3) {
+    d.reason = "only " + std::to_string(fit.points) + " points: a fit needs 3 for a confidence interval";
+    return d;
+  }
+  auto num = [](double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", x);
+    return std::string(buf);
+  };
+  const std::string interval = "p = " + num(fit.order) + " [" + num(fit.order_low) + ", " + num(fit.order_high) + "]";
+  const std::string expected = "the " + j.expected_name + " " + num(j.expected_order);
+  const double band_low = j.expected_order - j.tolerance, band_high = j.expected_order + j.tolerance;
+  const bool within = fit.order_low >= band_low && fit.order_high <= band_high;
+  const bool misses_band = fit.order_high < band_low || fit.order_low > band_high;
+  if (within) {
+    d.verdict = OrderVerdict::converges_at_expected_order;
+    d.reason = interval + " lies within " + num(j.tolerance) + " of " + expected;
+  } else if (fit.order_high <= j.minimum_order) {
+    d.verdict = OrderVerdict::does_not_converge;
+    d.reason = interval + " lies at or below " + num(j.minimum_order) + ": the error does not fall as h shrinks";
+  } else if (misses_band && fit.order_low > j.minimum_order) {
+    d.verdict = OrderVerdict::converges_at_other_order;
+    d.reason = interval + " excludes " + expected;
+  } else {
+    d.verdict = OrderVerdict::order_not_established;
+    d.reason = interval + (misses_band ? " excludes " + expected + " but reaches " + num(j.minimum_order) +
+                                             " (no convergence): too wide to decide"
+                                       : " overlaps " + expected + " ± " + num(j.tolerance) +
+                                             " without lying within it: too wide to decide");
+  }
+  return d;
 }
 
 }  // namespace stoneskip

@@ -7,6 +7,19 @@
 
 namespace stoneskip {
 
+// Ordinary least squares y = a + b x with the 95 % confidence interval of the slope (Student t,
+// n − 2 degrees of freedom; the interval is the point itself with 2 points). The one fit behind
+// the observed orders below and the growth rates of verification/waves/stability.hpp.
+struct LineFit {
+  bool valid = false;   // false with fewer than 2 points or all x equal
+  int points = 0;
+  double slope = 0, intercept = 0;
+  double slope_low = 0, slope_high = 0;
+  double r_squared = 0;
+  double residual_min = 0, residual_max = 0;  // the scatter of y about the line
+};
+LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y);
+
 struct OrderFit {
   bool valid = false;            // false with fewer than 2 usable points (error > 0, h > 0)
   std::string problem;           // why not valid
@@ -27,22 +40,38 @@ OrderFit fit_order(const std::vector<double>& h, const std::vector<double>& erro
 double richardson_extrapolate(double phi_fine, double phi_coarse, double ratio, double order);
 
 // What a sequence of errors says about convergence to the quantity it was measured against.
+// The rule reads the fit's 95 % confidence interval [low, high], never the point estimate alone:
+//   converges_at_expected_order  the whole interval lies within `tolerance` of the expected order;
+//   converges_at_other_order     the interval misses the band expected ± tolerance entirely and
+//                                lies above minimum_order (it excludes no convergence too);
+//   does_not_converge            the whole interval lies at or below minimum_order: the data show
+//                                that the error does not fall (a wide interval shows nothing);
+//   order_not_established        anything else: the interval is too wide to decide;
+//   insufficient_data            fewer than 3 points in the fit (a two-point fit has no residual,
+//                                so its "interval" is the point itself), or no fit at all.
 enum class OrderVerdict {
-  converges_at_expected_order,  // the fit's interval lies within tolerance of the expected order
-  converges_at_other_order,     // the error falls, but not at the expected order
-  does_not_converge,            // the error does not fall with h (slope ≤ minimum_order, or interval reaches 0)
-  insufficient_data,            // fewer than 2 usable points
+  converges_at_expected_order,
+  converges_at_other_order,
+  does_not_converge,
+  insufficient_data,
+  order_not_established,
 };
 const char* to_string(OrderVerdict v);
 
 struct OrderJudgement {
   double expected_order = 2;
-  double tolerance = 0.1;        // |p − expected| allowed
-  double minimum_order = 0.25;   // below this slope the error is said not to converge
+  double tolerance = 0.1;        // the interval must lie within expected ± tolerance
+  double minimum_order = 0.25;   // at or below this slope the error is said not to fall
+  std::string expected_name = "expected";  // how the reason names the expected order ("formal")
 };
 
-// Judges a fit: uses the fit's point estimate and its confidence interval (both must be within
-// tolerance for "at expected order").
-OrderVerdict judge_order(const OrderFit& fit, const OrderJudgement& judgement = {});
+// A verdict and its reason in one line, computed from the numbers:
+// "p = 2.41 [1.74, 3.08] excludes the formal 4".
+struct OrderDecision {
+  OrderVerdict verdict = OrderVerdict::insufficient_data;
+  std::string reason;
+};
+
+OrderDecision judge_order(const OrderFit& fit, const OrderJudgement& judgement = {});
 
 }  // namespace stoneskip

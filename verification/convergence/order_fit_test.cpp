@@ -28,30 +28,94 @@ BOOST_AUTO_TEST_CASE(exact_power_law_is_recovered) {
   BOOST_TEST(std::abs(f.order_high - f.order_low) <= kRoundoff);
   BOOST_TEST(f.pairwise.size() == 3u);
   for (double p : f.pairwise) BOOST_TEST(std::abs(p - 2) <= kRoundoff);
-  BOOST_TEST(judge_order(f) == OrderVerdict::converges_at_expected_order);
+  BOOST_TEST(judge_order(f).verdict == OrderVerdict::converges_at_expected_order);
 }
 
 BOOST_AUTO_TEST_CASE(first_order_data_is_not_judged_second_order) {
-  // Oracle: e = h exactly has slope 1; a judgement expecting 2 ± 0.1 must say "other order".
+  // Oracle: e = h exactly has slope 1 with a zero-width interval; a judgement expecting 2 ± 0.1
+  // must say "other order": the interval excludes both 2 and no convergence.
   std::vector<double> h{0.1, 0.05, 0.025}, e{0.1, 0.05, 0.025};
   OrderFit f = fit_order(h, e);
   BOOST_TEST(std::abs(f.order - 1) <= 1e-12);
-  BOOST_TEST(judge_order(f) == OrderVerdict::converges_at_other_order);
+  BOOST_TEST(judge_order(f).verdict == OrderVerdict::converges_at_other_order);
 }
 
 BOOST_AUTO_TEST_CASE(error_growing_under_refinement_does_not_converge) {
-  // Oracle: e = 1/h has slope −1 < 0: the error grows as h shrinks.
+  // Oracle: e = 1/h has slope −1 < 0: the error grows as h shrinks, and the interval (zero width)
+  // lies entirely below the minimum slope.
   std::vector<double> h{0.1, 0.05, 0.025}, e{10, 20, 40};
   OrderFit f = fit_order(h, e);
   BOOST_TEST(std::abs(f.order + 1) <= 1e-12);
-  BOOST_TEST(judge_order(f) == OrderVerdict::does_not_converge);
+  BOOST_TEST(judge_order(f).verdict == OrderVerdict::does_not_converge);
+}
+
+BOOST_AUTO_TEST_CASE(a_flat_error_with_a_narrow_interval_does_not_converge) {
+  // Oracle: e = 0.01 (1 ± 1 %) over a factor 8 in h: slope ≈ 0 with an interval well inside
+  // (−0.25, 0.25): the data show that the error does not fall.
+  std::vector<double> h{0.1, 0.05, 0.025, 0.0125}, e{0.0101, 0.0099, 0.0101, 0.0099};
+  OrderFit f = fit_order(h, e);
+  BOOST_TEST(f.order_high <= 0.25);
+  BOOST_TEST(judge_order(f).verdict == OrderVerdict::does_not_converge);
 }
 
 BOOST_AUTO_TEST_CASE(too_few_points_give_no_fit) {
   // Oracle: one usable point (the zero error is dropped) cannot define a slope.
   OrderFit f = fit_order({0.1, 0.05}, {0.01, 0.0});
   BOOST_TEST(!f.valid);
-  BOOST_TEST(judge_order(f) == OrderVerdict::insufficient_data);
+  BOOST_TEST(judge_order(f).verdict == OrderVerdict::insufficient_data);
+}
+
+BOOST_AUTO_TEST_CASE(two_points_never_establish_an_order) {
+  // Oracle: a two-point fit has no residual, hence no confidence interval (its "interval" is the
+  // point itself): e = 3 h² at two steps is exactly second order, yet the order is not established.
+  OrderFit f = fit_order({0.1, 0.05}, {0.03, 0.0075});
+  BOOST_TEST(f.valid);
+  BOOST_TEST(std::abs(f.order - 2) <= 1e-12);
+  const OrderDecision d = judge_order(f);
+  BOOST_TEST(d.verdict == OrderVerdict::insufficient_data);
+  BOOST_TEST(d.reason == "only 2 points: a fit needs 3 for a confidence interval");
+}
+
+BOOST_AUTO_TEST_CASE(an_interval_too_wide_to_decide_establishes_nothing) {
+  // Oracle: the intervals, computed by hand from the Student t of 2 degrees of freedom (4.303):
+  // p = 1.80 [0.84, 2.76] holds the expected 2 and much else; p = 0.297 [−1.44, 2.04] holds 2 and
+  // no convergence; p = 0.312 [−0.87, 1.49] excludes 2 but holds no convergence. None decides.
+  const std::vector<double> h{0.1, 0.05, 0.025, 0.0125};
+  for (const std::vector<double>& e : {std::vector<double>{1e-2, 2.0e-3, 1.1e-3, 1.9e-4},
+                                       std::vector<double>{1e-2, 1.6e-2, 4e-3, 8e-3},
+                                       std::vector<double>{1e-2, 5e-3, 9e-3, 4e-3}}) {
+    const OrderFit f = fit_order(h, e);
+    const OrderDecision d = judge_order(f, OrderJudgement{2, 0.2, 0.25});
+    BOOST_TEST(d.verdict == OrderVerdict::order_not_established, f.brief() << ": " << d.reason);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(another_order_needs_an_interval_that_excludes_both_the_expected_order_and_zero) {
+  // Oracle: p = 1.58 [1.28, 1.88] (by hand, as above) lies wholly below 2 − 0.1 and above 0.25.
+  const OrderFit f = fit_order({0.1, 0.05, 0.025, 0.0125}, {1e-2, 4e-3, 1.1e-3, 4e-4});
+  const OrderDecision d = judge_order(f);
+  BOOST_TEST(d.verdict == OrderVerdict::converges_at_other_order, f.brief());
+  BOOST_TEST(d.reason == "p = 1.58 [1.28, 1.88] excludes the expected 2");
+}
+
+BOOST_AUTO_TEST_CASE(the_reason_names_the_interval_and_what_it_excludes) {
+  // Oracle: the issue's own numbers — RK4 through a contact, p = 2.41 [1.74, 3.08] over 6 points,
+  // judged against its formal order 4 ± 0.2.
+  OrderFit f;
+  f.valid = true;
+  f.points = 6;
+  f.order = 2.41;
+  f.order_low = 1.74;
+  f.order_high = 3.08;
+  OrderJudgement j{4, 0.2, 0.25};
+  j.expected_name = "formal";
+  const OrderDecision d = judge_order(f, j);
+  BOOST_TEST(d.verdict == OrderVerdict::converges_at_other_order);
+  BOOST_TEST(d.reason == "p = 2.41 [1.74, 3.08] excludes the formal 4");
+  f.order = 3.98;
+  f.order_low = 3.9;
+  f.order_high = 4.1;
+  BOOST_TEST(judge_order(f, j).reason == "p = 3.98 [3.9, 4.1] lies within 0.2 of the formal 4");
 }
 
 BOOST_AUTO_TEST_CASE(confidence_interval_covers_the_true_order_about_95_percent_of_the_time) {

@@ -63,6 +63,19 @@ Record convergence_findings(const RealtimeConvergenceResult& c, const ReferenceT
   }
   r.set_strings("series_keys", keys);
 
+  // Why an order may not show through a contact: the reference's located events in the first
+  // contact and how crowded the scheme-alone steps are with them.
+  Record& ev = r.child("events");
+  ev.set("contact_start_s", c.events.start_s);
+  ev.set("contact_end_s", c.events.end_s);
+  ev.set("count", c.events.times_s.size());
+  ev.set("min_spacing_s", c.events.min_spacing_s);
+  ev.set("median_spacing_s", c.events.median_spacing_s);
+  Table crowd{{"h_s", "steps_in_contact", "steps_with_two_or_more_events", "fraction"}, {}};
+  for (const auto& k : c.events.scheme_alone)
+    crowd.add_row({k.h_s, double(k.steps_in_window), double(k.steps_with_two_or_more), k.fraction()});
+  ev.set_table("crowding", crowd);
+
   // The reference's own error against its tolerance (tolerance proportionality: slope 1).
   Record& t = r.child("reference_tolerance");
   t.set("case", tol.case_label);

@@ -1,5 +1,6 @@
 #include "verification/stones/realtime_convergence.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -23,9 +24,10 @@ struct StepperPoint {
   StateAt at_free_flight;
 };
 
-// Fills in_fit/notes from the errors and the reference's own error, then fits the order and (for
-// scalar quantities) the GCI of the three finest runs.
-void finish_series(ConvergenceSeries& s, double floor_factor) {
+// Fills in_fit/notes from the errors and the reference's own error, then fits the order, judges it
+// and (for scalar quantities) computes the GCI of the three finest runs.
+void finish_series(ConvergenceSeries& s, const RealtimeConvergenceOptions& o) {
+  const double floor_factor = o.floor_factor;
   const std::size_t n = s.h_s.size();
   s.in_fit.assign(n, false);
   s.notes.resize(n);
@@ -44,6 +46,11 @@ void finish_series(ConvergenceSeries& s, double floor_factor) {
     e.push_back(s.error[i]);
   }
   s.fit = fit_order(h, e);
+  OrderJudgement j;
+  j.expected_order = s.formal_order;
+  j.tolerance = o.order_tolerance;
+  j.expected_name = "formal";
+  s.decision = judge_order(s.fit, j);
   // GCI (Celik et al. 2008) from the three finest steps with finite values; h_s is descending.
   std::vector<std::size_t> idx;
   for (std::size_t i = n; i-- > 0 && idx.size() < 3;)
@@ -66,7 +73,40 @@ ConvergenceSeries make_series(const std::string& quantity, const std::string& de
   return s;
 }
 
+// The located events of the reference inside [start, end], their spacing.
+ContactEvents contact_events(const ThrowResult& ref, const ContactRecord& c) {
+  ContactEvents ev;
+  ev.start_s = c.start_s;
+  ev.end_s = c.end_s;
+  for (double t : ref.event_times_s)
+    if (t >= c.start_s && t <= c.end_s) ev.times_s.push_back(t);
+  std::vector<double> gaps;
+  for (std::size_t k = 1; k < ev.times_s.size(); ++k) gaps.push_back(ev.times_s[k] - ev.times_s[k - 1]);
+  if (gaps.empty()) {
+    ev.min_spacing_s = ev.median_spacing_s = kNaN;
+  } else {
+    std::sort(gaps.begin(), gaps.end());
+    ev.min_spacing_s = gaps.front();
+    ev.median_spacing_s = gaps.size() % 2 ? gaps[gaps.size() / 2] : 0.5 * (gaps[gaps.size() / 2 - 1] + gaps[gaps.size() / 2]);
+  }
+  return ev;
+}
+
 }  // namespace
+
+EventCrowding crowding(const std::vector<double>& events, double t0, double h, long steps, double a, double b) {
+  EventCrowding c;
+  c.h_s = h;
+  for (long k = 0; k < steps; ++k) {
+    const double lo = t0 + static_cast<double>(k) * h, hi = lo + h;
+    if (hi <= a || lo >= b) continue;  // overlaps the window over a positive length
+    ++c.steps_in_window;
+    int n = 0;
+    for (double t : events) n += (t > lo && t <= hi) || (k == 0 && t == lo) ? 1 : 0;
+    if (n >= 2) ++c.steps_with_two_or_more;
+  }
+  return c;
+}
 
 RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const RealtimeConvergenceOptions& o) {
   RealtimeConvergenceResult res;
@@ -112,6 +152,15 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
     res.problems.push_back("the stone does not bounce at its first contact: no free flight after it to compare");
   }
   if (!c1.bounced) res.problems.push_back("the contact interval ends when the stone sinks (no flight after it)");
+
+  // The events diagnostic: the reference's kinks inside the first contact, and how crowded the
+  // scheme-alone steps over the contact interval are with them.
+  res.events = contact_events(r_ref, c1);
+  for (int n : o.interval_steps) {
+    const double h = (res.contact_interval_end_s - res.contact_interval_start_s) / n;
+    res.events.scheme_alone.push_back(
+        crowding(res.events.times_s, res.contact_interval_start_s, h, n, c1.start_s, c1.end_s));
+  }
 
   // Reference states at the interval ends (both references).
   const std::vector<double> times{res.flight_interval_end_s, res.contact_interval_start_s, res.contact_interval_end_s,
@@ -180,7 +229,7 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
         s.value.push_back(kNaN);
         s.error.push_back(state_error(p.stone, flight_end[a * nN + b], at_ref[0].state));
       }
-      finish_series(s, o.floor_factor);
+      finish_series(s, o);
       res.series.push_back(s);
     }
     if (at_ref[1].ok && at_ref[2].ok) {
@@ -195,7 +244,7 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
         const bool finite = e.position_m.allFinite() && e.velocity_m_s.allFinite();
         s.error.push_back(finite ? state_error(p.stone, e, at_ref[2].state) : kNaN);
       }
-      finish_series(s, o.floor_factor);
+      finish_series(s, o);
       res.series.push_back(s);
     }
     // Whole stepper.
@@ -225,7 +274,7 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
         s.error.push_back(std::abs(v - q.get(r_ref)));
         s.notes.push_back(pt.ok ? "" : pt.problem);
       }
-      finish_series(s, o.floor_factor);
+      finish_series(s, o);
       res.series.push_back(s);
     }
     {
@@ -241,15 +290,15 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
                               : kNaN);
         s.notes.push_back(pt.ok ? "" : pt.problem);
       }
-      finish_series(s, o.floor_factor);
+      finish_series(s, o);
       res.series.push_back(s);
     }
     // Errors of a contact-list quantity (bounce positions, touch points) against the reference;
     // a run whose contact list differs from the reference's has no error to compare.
-    auto contact_series = [&](const char* name, const char* title, double ContactComparison::*field) {
-      auto s = make_series(name, title, "m", sc);
+    auto contact_series = [&](const char* name, const char* title, const char* unit, double ContactComparison::*field) {
+      auto s = make_series(name, title, unit, sc);
       const ContactComparison cf = compare_contacts(r_fine, r_ref);
-      s.reference_error = cf.same_contacts() ? cf.*field : 0;
+      s.reference_error = cf.same_contacts() && std::isfinite(cf.*field) ? cf.*field : 0;
       for (std::size_t b = 0; b < nd; ++b) {
         const StepperPoint& pt = points[a * nd + b];
         s.h_s.push_back(o.dt_s[b]);
@@ -260,14 +309,21 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
         s.error.push_back(pt.ok && c.same_contacts() ? c.*field : kNaN);
         s.notes.push_back(note);
       }
-      finish_series(s, o.floor_factor);
+      finish_series(s, o);
       res.series.push_back(s);
     };
     contact_series("bounce_positions",
-                   "largest error of the bounce positions (centre of mass where each contact ends; whole stepper)",
-                   &ContactComparison::max_exit_position_error_m);
-    contact_series("touch_points", "largest error of the first-touch points of all contacts (whole stepper)",
+                   "largest error of the bounce positions (centre of mass where a contact ends in a bounce; whole "
+                   "stepper)",
+                   "m", &ContactComparison::max_exit_position_error_m);
+    contact_series("touch_points", "largest error of the first-touch points of all contacts (whole stepper)", "m",
                    &ContactComparison::max_touch_error_m);
+    if (r_ref.outcome == Outcome::sank) {
+      contact_series("sink_position", "centre of mass where the stone sank (whole stepper)", "m",
+                     &ContactComparison::max_sink_position_error_m);
+      contact_series("sink_time", "time at which the stone sank (whole stepper)", "s",
+                     &ContactComparison::sink_time_error_s);
+    }
     if (at_ref[3].ok) {
       auto s = make_series("free_flight_state", "state in free flight after the first bounce (whole stepper)",
                            "1 (relative)", sc);
@@ -279,7 +335,7 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
         s.error.push_back(pt.at_free_flight.ok ? state_error(p.stone, pt.at_free_flight.state, at_ref[3].state) : kNaN);
         s.notes.push_back(pt.at_free_flight.ok ? "" : pt.at_free_flight.problem);
       }
-      finish_series(s, o.floor_factor);
+      finish_series(s, o);
       res.series.push_back(s);
     }
   }

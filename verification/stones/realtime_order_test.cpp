@@ -1,120 +1,191 @@
-// The real-time stepper's observed order of convergence against its formal order (issue 4):
-// N equal steps of each scheme over (a) a free-flight interval and (b) an interval holding a whole
-// contact with the water, compared with the CVODE reference at rtol 1e-12 (not with a finer run of
-// the same scheme: self-convergence would also "converge" to a wrong answer, while the reference
-// is an independent integration of the same right-hand side with located contact events, whose
-// own error is ~1e-10 — far below the smallest error fitted here).
+// The real-time stepper's observed order of convergence, judged by the verdict rule of
+// verification/convergence/order_fit.hpp (the 95 % interval decides): the theory behind the order
+// loss through a contact on a small ODE with a closed-form solution, the stones study itself over
+// its own default steps (verification/stones/realtime_convergence.hpp, against the CVODE
+// reference at rtol 1e-12 — not a finer run of the same scheme, which would also "converge" to a
+// wrong answer), with the events diagnostic that explains its pre-asymptotic range, and the point
+// where the stone sinks.
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
+#include <ostream>
+#include <string>
+#include <utility>
 
-#include "model/stone/mass_properties.hpp"
-#include "model/stone/throw.hpp"
-#include "solvers/reference/cvode_stone.hpp"
 #include "verification/convergence/order_fit.hpp"
-#include "verification/stones/state_error.hpp"
-#include "verification/stones/throw_problem.hpp"
+#include "verification/stones/contact_comparison.hpp"
+#include "verification/stones/convergence_throw.hpp"
+#include "verification/stones/realtime_convergence.hpp"
 
 namespace stoneskip {
+
+// Lets Boost.Test print the enum in a failure message.
+inline std::ostream& operator<<(std::ostream& o, OrderVerdict v) { return o << to_string(v); }
+
 namespace {
 
-// The order fits of a scheme are accepted within this of its formal order (issue 4).
-constexpr double kOrderTolerance = 0.2;
-
-// The convergence throw of the stones report (cases/studies/convergence_bounce.toml): the seed's
-// 3 cm 44-triangle stone, 8 m/s, β = 10°, α = 20°, 40 rev/s, physical convention. Its first
-// contact lasts from ≈ 53 ms to ≈ 96 ms and ends with a bounce.
-ThrowProblem convergence_throw() {
-  ThrowProblem p;
-  const Mesh mesh = make_prism(0.03, 0.008, 11);
-  p.stone = make_stone(mesh, mass_properties_from_density(mesh, 2500.0), 0.0, "prism R=0.03 h=0.008 N=11");
-  p.parameters.speed_m_s = 8.0;
-  p.parameters.path_angle_deg = 10.0;
-  p.parameters.attack_angle_deg = 20.0;
-  p.parameters.spin_rev_s = 40.0;
-  p.parameters.height_m = 0.1;
-  p.initial = initial_state(p.stone, p.parameters);
-  p.reference.rtol = 1e-12;
-  p.reference.atol = 1e-14;
-  p.reference.t_max_s = 3.0;
-  return p;
+// The classical fourth-order Runge–Kutta scheme (the tableau of realtime_step's rk4) on a scalar
+// autonomous ODE y' = f(y), N equal steps over [0, T].
+double rk4(const std::function<double(double)>& f, double y0, double T, int steps) {
+  const double h = T / steps;
+  double y = y0;
+  for (int n = 0; n < steps; ++n) {
+    const double k1 = f(y), k2 = f(y + 0.5 * h * k1), k3 = f(y + 0.5 * h * k2), k4 = f(y + h * k3);
+    y += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+  }
+  return y;
 }
 
-SolverChoice reference() { return reference_choice(convergence_throw().reference); }
-
-// Observed order of `scheme` over [t0, t1], starting from the reference state at t0.
-OrderFit order_over(Scheme scheme, double t0, double t1, const std::vector<int>& steps) {
-  const ThrowProblem p = convergence_throw();
-  const StateAt a = t0 > 0 ? state_at(p, reference(), t0) : StateAt{true, "", p.initial};
-  const StateAt b = state_at(p, reference(), t1);
-  BOOST_REQUIRE_MESSAGE(a.ok && b.ok, a.problem + b.problem);
+OrderFit rk4_order(const std::function<double(double)>& f, double y0, double T, double exact) {
   std::vector<double> h, e;
-  for (int n : steps) {
-    const RigidState end = integrate_fixed(p.stone, p.environment, a.state, t1 - t0, n, scheme);
-    h.push_back((t1 - t0) / n);
-    e.push_back(state_error(p.stone, end, b.state));
+  for (int n = 8; n <= 512; n *= 2) {
+    h.push_back(T / n);
+    e.push_back(std::abs(rk4(f, y0, T, n) - exact));
   }
   return fit_order(h, e);
 }
 
-struct Interval {
-  double t0, t1;
-};
+const ConvergenceSeries* find(const RealtimeConvergenceResult& r, const std::string& quantity, Scheme s) {
+  for (const auto& x : r.series)
+    if (x.quantity == quantity && x.scheme == to_string(s)) return &x;
+  return nullptr;
+}
 
-// The first contact of the reference with a quarter of its duration of flight on each side.
-Interval contact_interval() {
-  const ThrowProblem p = convergence_throw();
-  SolverChoice s = reference();
-  s.reference.record_trajectory = false;
-  const ThrowResult r = solve(p, s);
-  BOOST_REQUIRE(!r.contacts.empty());
-  const ContactRecord& c = r.contacts[0];
-  BOOST_REQUIRE(c.bounced);
-  const double d = c.end_s - c.start_s;
-  return {c.start_s - 0.25 * d, c.end_s + 0.25 * d};
+// The stones study on the convergence throw with its default settings (RealtimeConvergenceOptions:
+// every scheme, the default flight steps and steps per interval), run once for the cases below
+// (about 2.5 s of CPU on two workers).
+const RealtimeConvergenceResult& default_study() {
+  static const RealtimeConvergenceResult r = [] {
+    RealtimeConvergenceOptions o;
+    return run_realtime_convergence(convergence_throw(), o);
+  }();
+  return r;
 }
 
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(realtime_order)
 
+BOOST_AUTO_TEST_CASE(rk4_is_third_order_across_a_kink_in_the_second_derivative) {
+  // Oracle: y' = 1 + max(y, 0)², y(0) = −1/3: y = t − 1/3 until t0 = 1/3, then tan(t − 1/3), so
+  // y(1) = tan(2/3). The right-hand side is C¹ (f' = 2 max(y, 0)) but f'' jumps at y = 0, as the
+  // water force does when a vertex crosses the surface (wetted area ∝ depth²) or a face's normal
+  // velocity changes sign (force ∝ max(u, 0)²). The one step across t0 makes a local error O(h³)
+  // whose constant depends on where t0 falls in the step: with N = 8 … 512 steps the kink sits at
+  // 1/3 or 2/3 of its step, alternately, so the constant takes two values and the global error is
+  // C h³ cleanly. (At exactly 1/2 the h³ term cancels by symmetry — Simpson's rule integrates
+  // max(s, 0)² exactly over a symmetric step — which is why that placement is not used.) Control:
+  // the same RK4 on the smooth y' = y, y(1) = e, is fourth order. Judged as everywhere: the whole
+  // 95 % interval within 0.2 of the order.
+  const OrderFit kink = rk4_order([](double y) { return 1 + std::pow(std::max(y, 0.0), 2); }, -1.0 / 3, 1.0,
+                                  std::tan(2.0 / 3));
+  const OrderDecision k = judge_order(kink, OrderJudgement{3, 0.2, 0.25, "expected"});
+  BOOST_TEST(k.verdict == OrderVerdict::converges_at_expected_order, "kink: " << k.reason);
+  const OrderFit smooth = rk4_order([](double y) { return y; }, 1.0, 1.0, std::exp(1.0));
+  const OrderDecision s = judge_order(smooth, OrderJudgement{4, 0.2, 0.25, "expected"});
+  BOOST_TEST(s.verdict == OrderVerdict::converges_at_expected_order, "smooth: " << s.reason);
+}
+
 BOOST_AUTO_TEST_CASE(every_scheme_shows_its_formal_order_in_free_flight) {
-  // Oracle: formal orders 1, 2, 4 against the CVODE reference (rtol 1e-12) after 40 ms of flight
-  // with spin and air drag (not an exactly integrable parabola).
-  for (Scheme s : {Scheme::semi_implicit_euler, Scheme::midpoint, Scheme::rk4}) {
-    const OrderFit f = order_over(s, 0.0, 0.04, {16, 32, 64, 128});
-    BOOST_TEST_INFO(to_string(s) << ": " << f.brief());
-    BOOST_TEST(f.valid);
-    BOOST_TEST(std::abs(f.order - formal_order(s)) <= kOrderTolerance);
+  // Oracle: formal orders 1, 2, 4 against the CVODE reference over the study's free-flight
+  // interval (release to 80 % of the way to the first touch; spin and air drag: not an exactly
+  // integrable parabola), over the study's default steps per interval.
+  const RealtimeConvergenceResult& r = default_study();
+  BOOST_REQUIRE(r.problems.empty());
+  for (Scheme sc : {Scheme::semi_implicit_euler, Scheme::midpoint, Scheme::rk4}) {
+    const ConvergenceSeries* s = find(r, "flight_interval_state", sc);
+    BOOST_REQUIRE(s);
+    BOOST_TEST(s->decision.verdict == OrderVerdict::converges_at_expected_order, to_string(sc) << ": " << s->decision.reason);
   }
 }
 
-BOOST_AUTO_TEST_CASE(low_order_schemes_keep_their_order_through_a_whole_contact) {
-  // Oracle: formal orders 1 and 2 against the CVODE reference over an interval holding the whole
-  // first contact (entry, planing, exit into flight). The water force is only piecewise smooth in
-  // time, which limits every fixed-step method to about order 2 here (see the stones report,
-  // section 1, where RK4 is measured): orders 1 and 2 are not affected.
-  const Interval iv = contact_interval();
-  for (Scheme s : {Scheme::semi_implicit_euler, Scheme::midpoint}) {
-    const OrderFit f = order_over(s, iv.t0, iv.t1, {256, 512, 1024, 2048});
-    BOOST_TEST_INFO(to_string(s) << ": " << f.brief());
-    BOOST_TEST(f.valid);
-    BOOST_TEST(std::abs(f.order - formal_order(s)) <= kOrderTolerance);
-  }
+BOOST_AUTO_TEST_CASE(through_a_contact_rk4_shows_neither_its_formal_order_nor_an_established_third) {
+  // Oracle: the verdict rule on the study's own default range (steps per interval 64 … 8192 over
+  // the first contact with a quarter of its duration of flight on each side; no subset chosen).
+  // The theory above caps RK4 at order 3 through a contact, but only once the steps are shorter
+  // than the spacing of the kinks; over the default range the fit (issue 8: p = 2.41
+  // [1.74, 3.08], pairwise 1.87 … 4.90) excludes the formal 4 and cannot establish 3 either.
+  // Midpoint, whose formal order 2 is below the cap, keeps it over the same range.
+  const RealtimeConvergenceResult& r = default_study();
+  const ConvergenceSeries* rk = find(r, "contact_interval_state", Scheme::rk4);
+  BOOST_REQUIRE(rk);
+  BOOST_TEST_MESSAGE("rk4 through a contact: " << rk->decision.reason);
+  BOOST_TEST(rk->decision.verdict == OrderVerdict::converges_at_other_order, rk->decision.reason);
+  BOOST_TEST(rk->fit.order_high < 4 - 0.2);
+  const OrderDecision third = judge_order(rk->fit, OrderJudgement{3, 0.2, 0.25, "capped"});
+  BOOST_TEST(third.verdict == OrderVerdict::order_not_established, third.reason);
+  const ConvergenceSeries* mid = find(r, "contact_interval_state", Scheme::midpoint);
+  BOOST_REQUIRE(mid);
+  BOOST_TEST(mid->decision.verdict == OrderVerdict::converges_at_expected_order, mid->decision.reason);
 }
 
-BOOST_AUTO_TEST_CASE(rk4_falls_to_third_order_through_a_contact) {
-  // Oracle: the water force is continuous with a continuous first time derivative, but its second
-  // derivative jumps whenever a vertex crosses the surface (wetted area ∝ depth²) or a face's
-  // normal velocity changes sign (force ∝ u² for u > 0): a step across such an event makes a local
-  // error O(h³), which caps the global order of any fixed-step method at 3. RK4 (formal 4) must show
-  // that cap — not 4, and not less — once its steps are fine enough to separate the events.
-  constexpr double kContactCapOrder = 3;
-  const Interval iv = contact_interval();
-  const OrderFit f = order_over(Scheme::rk4, iv.t0, iv.t1, {2048, 4096, 8192});
-  BOOST_TEST_INFO("rk4: " << f.brief());
-  BOOST_TEST(f.valid);
-  BOOST_TEST(std::abs(f.order - kContactCapOrder) <= kOrderTolerance);
+BOOST_AUTO_TEST_CASE(the_events_diagnostic_shows_why_the_default_range_is_pre_asymptotic) {
+  // Oracle: the reference's own located events (ThrowResult::event_times_s) and the crowding
+  // count (tested by hand below). An asymptotic order needs at most one kink per step; the
+  // explanation offered for the rk4 verdict above holds only if the default range starts where
+  // most contact steps hold two or more events and reaches steps below the median spacing of the
+  // events, where almost none do.
+  const RealtimeConvergenceResult& r = default_study();
+  const ContactEvents& ev = r.events;
+  BOOST_TEST_MESSAGE(ev.times_s.size() << " events in the first contact, spacing min " << ev.min_spacing_s
+                                       << " s, median " << ev.median_spacing_s << " s");
+  for (const auto& c : ev.scheme_alone)
+    BOOST_TEST_MESSAGE("  h = " << c.h_s << " s: " << c.steps_with_two_or_more << " of " << c.steps_in_window
+                                << " contact steps hold two or more events");
+  BOOST_REQUIRE(ev.times_s.size() >= 2u);
+  BOOST_REQUIRE(ev.scheme_alone.size() == RealtimeConvergenceOptions{}.interval_steps.size());
+  BOOST_TEST(ev.times_s.front() == ev.start_s);  // the first vertex crossing starts the contact
+  BOOST_TEST(ev.times_s.back() == ev.end_s);
+  BOOST_TEST(ev.scheme_alone.front().h_s > ev.median_spacing_s);
+  BOOST_TEST(ev.scheme_alone.front().fraction() > 0.5);
+  BOOST_TEST(ev.scheme_alone.back().h_s < ev.median_spacing_s);
+  BOOST_TEST(ev.scheme_alone.back().fraction() < 0.05);
+}
+
+BOOST_AUTO_TEST_CASE(crowding_counts_the_steps_that_hold_two_or_more_events) {
+  // Oracle: counted by hand. Steps of 1 from t = 0: [0,1] [1,2] [2,3] [3,4] [4,5]; window [1.5, 4]
+  // overlaps steps 2 … 4 (k = 1, 2, 3). Events 1.2, 1.7 (step k = 1: two), 2.5 (k = 2: one), 3.0
+  // (ends k = 2: two there now), 4.5 (outside the window).
+  const EventCrowding c = crowding({1.2, 1.7, 2.5, 3.0, 4.5}, 0.0, 1.0, 5, 1.5, 4.0);
+  BOOST_TEST(c.steps_in_window == 3);
+  BOOST_TEST(c.steps_with_two_or_more == 2);
+  BOOST_TEST(std::abs(c.fraction() - 2.0 / 3) <= 1e-15);
+}
+
+BOOST_AUTO_TEST_CASE(the_sinking_point_converges_faster_than_one_step) {
+  // Oracle: the CVODE reference (rtol 1e-12) of the convergence throw, which sinks at ≈ 0.614 s at
+  // the end of a 0.43 s planing contact. rk4 with a flight step of 1e-4 s (its flight error is
+  // then far below what is measured) and contact steps halved from 1e-4 to 6.25e-6 s. The sinking
+  // is located inside the step by linear interpolation of the last vertex's depth, an O(dt²)
+  // location; declared at the end of the step instead, it would err by up to one step, O(dt). The
+  // fitted order's whole 95 % interval must lie above 1 + 0.2, the study's order tolerance: the
+  // sinking time and place fall faster than first order (measured: about 2, the interpolation's
+  // order, with pairwise orders between 1.2 and 2.8).
+  constexpr double kOrderTolerance = 0.2;
+  const ThrowProblem p = convergence_throw();
+  const ThrowResult& ref = default_study().reference;  // CVODE at rtol 1e-12, atol 1e-14
+  BOOST_REQUIRE(ref.outcome == Outcome::sank);
+  std::vector<double> h, e_time, e_place;
+  for (double dt : {1e-4, 5e-5, 2.5e-5, 1.25e-5, 6.25e-6}) {
+    RealtimeOptions o = p.realtime;
+    o.scheme = Scheme::rk4;
+    o.dt_s = 1e-4;
+    o.contact_dt_s = dt;
+    o.record_trajectory = false;
+    const ThrowResult r = solve(p, realtime_choice(o));
+    const ContactComparison c = compare_contacts(r, ref);
+    BOOST_REQUIRE_MESSAGE(c.same_contacts(), "contact dt " << dt << ": " << c.brief());
+    h.push_back(dt);
+    e_time.push_back(c.sink_time_error_s);
+    e_place.push_back(c.max_sink_position_error_m);
+  }
+  for (const auto& [name, e] : {std::pair{"time", e_time}, std::pair{"place", e_place}}) {
+    const OrderFit f = fit_order(h, e);
+    BOOST_TEST_MESSAGE("sinking " << name << ": " << f.brief());
+    BOOST_TEST(f.order_low > 1 + kOrderTolerance, "sinking " << name << ": " << f.brief());
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -83,6 +83,7 @@ Record run_stone_studies(const StoneStudiesOptions& o, StudySink& sink) {
     RealtimeConvergenceOptions co = o.convergence;
     co.workers = o.workers;
     co.progress = progress;
+    co.order_tolerance = o.convergence_judgement.tolerance;  // one judgement for the series and their stored verdicts
     ReferenceToleranceOptions to = o.reference_tolerance;
     to.workers = o.workers;
     to.progress = progress;

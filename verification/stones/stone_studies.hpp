@@ -45,7 +45,7 @@ struct StoneStudiesOptions {
   std::vector<StudyThrow> hard;
   // The studies.
   RealtimeConvergenceOptions convergence;
-  OrderJudgement convergence_judgement{1, 0.25, 0.3};  // expected order set per scheme; tolerance, minimum slope
+  OrderJudgement convergence_judgement{1, 0.25, 0.25, "formal"};  // expected order set per scheme; tolerance, minimum slope
   ReferenceToleranceOptions reference_tolerance;
   double required_tolerance_drop = 100;  // CVODE's bounce-position error should fall this much from rtol 1e-6 to 1e-10
   WorkPrecisionOptions work_precision;

@@ -18,7 +18,19 @@ struct Job {
   SolverChoice choice;
 };
 
+double headline_of(const ContactComparison& c, HeadlineError h) {
+  return h == HeadlineError::bounce_position ? c.max_exit_position_error_m : c.max_sink_position_error_m;
+}
+
 }  // namespace
+
+const char* to_string(HeadlineError h) {
+  switch (h) {
+    case HeadlineError::bounce_position: return "bounce position";
+    case HeadlineError::sink_position: return "sinking position";
+  }
+  return "?";
+}
 
 WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& throws, const WorkPrecisionOptions& o) {
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -42,8 +54,10 @@ WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& throws, 
     }
     run_jobs(jobs, ParallelOptions{o.workers, ""});
     for (std::size_t k = 0; k < throws.size(); ++k) {
-      const ContactComparison c = compare_contacts(res.throws[k].truth, checks[k]);
-      res.throws[k].truth_uncertainty_m = c.same_contacts() ? c.max_exit_position_error_m : kNaN;
+      WorkPrecisionThrow& t = res.throws[k];
+      t.headline = t.truth.bounces > 0 ? HeadlineError::bounce_position : HeadlineError::sink_position;
+      const ContactComparison c = compare_contacts(t.truth, checks[k]);
+      t.truth_uncertainty_m = c.same_contacts() ? headline_of(c, t.headline) : kNaN;
       if (!c.same_contacts()) res.throws[k].truth_check_problem = "the truth and its check differ: " + c.brief();
     }
   }
@@ -91,6 +105,7 @@ WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& throws, 
       [&](std::size_t i) {
         Job& j = jobs[i];
         const ThrowResult& truth = res.throws[j.throw_index].truth;
+        const HeadlineError headline = res.throws[j.throw_index].headline;
         const ThrowResult r = solve_min_cpu(throws[j.throw_index], j.choice, o.repeats);
         WorkPoint& p = j.point;
         p.bounces = r.bounces;
@@ -106,11 +121,15 @@ WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& throws, 
           p.problem = "contact list differs: " + c.brief();
         } else {
           p.ok = true;
+          p.headline_error_m = headline_of(c, headline);
           p.bounce_position_error_m = c.max_exit_position_error_m;
+          p.sink_position_error_m = c.max_sink_position_error_m;
           p.touch_error_m = c.max_touch_error_m;
           p.contact_time_error_s = std::max(c.max_start_error_s, c.max_end_error_s);
         }
-        if (!p.ok) p.bounce_position_error_m = p.touch_error_m = p.contact_time_error_s = kNaN;
+        if (!p.ok)
+          p.headline_error_m = p.bounce_position_error_m = p.sink_position_error_m = p.touch_error_m =
+              p.contact_time_error_s = kNaN;
       },
       ParallelOptions{o.workers, "stones: work-precision runs", o.progress});
   for (const Job& j : jobs) res.throws[j.throw_index].points.push_back(j.point);
@@ -126,13 +145,13 @@ WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& throws, 
         best.target_error_m = target;
         best.family = fam;
         for (const auto& p : t.points) {
-          if (p.family != fam || !p.ok || !(p.bounce_position_error_m <= target)) continue;
+          if (p.family != fam || !p.ok || !(p.headline_error_m <= target)) continue;
           if (!best.found || p.cpu_s < best.cpu_s) {
             best.found = true;
             best.setting = p.setting;
             best.cpu_s = p.cpu_s;
             best.rhs_evaluations = p.rhs_evaluations;
-            best.error_m = p.bounce_position_error_m;
+            best.error_m = p.headline_error_m;
           }
         }
         t.cheapest.push_back(best);

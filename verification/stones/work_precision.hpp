@@ -1,9 +1,13 @@
 #pragma once
 // Speed against error (issue 4, item 3): work-precision data for the real-time stepper over a
 // range of steps and for CVODE (BDF and Adams) over a range of tolerances, on several throws.
-// Error: the largest distance between a solver's bounce positions (the centre of mass where each
-// contact ends: where the stone takes off again, or where it sank) and those of a tight reference;
-// also the first-touch and contact-time errors. The first-touch point is not used as the headline:
+// Error (the headline): the largest distance between a solver's bounce positions (the centre of
+// mass where a contact ends with the stone taking off again) and those of a tight reference; for a
+// throw whose reference never bounces, the distance between the points where the two sank
+// (`headline` says which). The sinking point's error is always kept apart from the bounce
+// positions (it is located differently and was, before it was located at all, the whole of the
+// "bounce" error); also the first-touch and contact-time errors. The first-touch point is not
+// used as the headline:
 // when an edge of the polygon lands parallel to the water (a spin-free prism does), two vertices
 // touch at once and "the first" is decided by round-off. Work: CPU time (minimum of repeated runs)
 // and right-hand-side evaluations. A run whose contact list differs from the reference's (a
@@ -46,7 +50,9 @@ struct WorkPoint {
   bool ok = false;
   std::string problem;       // why it failed
   int bounces = 0;
-  double bounce_position_error_m = 0;   // NaN on failure
+  double headline_error_m = 0;          // the throw's headline error (WorkPrecisionThrow::headline); NaN on failure
+  double bounce_position_error_m = 0;   // bounces only; NaN on failure or without a bounce
+  double sink_position_error_m = 0;     // where it sank; NaN on failure or when the reference does not sink
   double touch_error_m = 0;
   double contact_time_error_s = 0;
   double cpu_s = 0;
@@ -54,7 +60,7 @@ struct WorkPoint {
   long steps = 0;
 };
 
-// The cheapest setting of a family that reaches a target error.
+// The cheapest setting of a family that reaches a target (headline) error.
 struct CheapestSetting {
   double target_error_m = 0;
   std::string family;
@@ -65,10 +71,16 @@ struct CheapestSetting {
   double error_m = 0;
 };
 
+// What a throw's headline error measures: the bounce positions when its reference bounces at all,
+// otherwise the point where it sank.
+enum class HeadlineError { bounce_position, sink_position };
+const char* to_string(HeadlineError h);  // "bounce position", "sinking position"
+
 struct WorkPrecisionThrow {
   std::string label;
   ThrowResult truth;
-  double truth_uncertainty_m = 0;   // bounce-position difference between truth and truth check (NaN: lists differ)
+  HeadlineError headline = HeadlineError::bounce_position;
+  double truth_uncertainty_m = 0;   // headline difference between truth and truth check (NaN: lists differ)
   std::string truth_check_problem;
   std::vector<WorkPoint> points;
   std::vector<CheapestSetting> cheapest;  // per target and family

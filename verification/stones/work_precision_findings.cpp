@@ -33,6 +33,7 @@ Record work_precision_findings(const WorkPrecisionResult& wp, const WorkPrecisio
     throws.push_back(key);
     Record& g = r.child(key);
     g.set("label", t.label);
+    g.set("headline", std::string(to_string(t.headline)));
     g.set("truth_contacts", t.truth.contacts.size());
     g.set("truth_bounces", t.truth.bounces);
     g.set("truth_outcome", std::string(to_string(t.truth.outcome)));
@@ -50,13 +51,13 @@ Record work_precision_findings(const WorkPrecisionResult& wp, const WorkPrecisio
       families.push_back(f);
       return static_cast<double>(families.size() - 1);
     };
-    Table pts{{"family", "realtime", "setting", "ok", "bounces", "bounce_position_error_m", "touch_error_m",
-               "contact_time_error_s", "cpu_s", "rhs_evaluations", "steps"},
+    Table pts{{"family", "realtime", "setting", "ok", "bounces", "headline_error_m", "bounce_position_error_m",
+               "sink_position_error_m", "touch_error_m", "contact_time_error_s", "cpu_s", "rhs_evaluations", "steps"},
               {}};
     for (const auto& p : t.points) {
       pts.add_row({family_index(p.family), p.realtime ? 1.0 : 0.0, p.setting, p.ok ? 1.0 : 0.0, double(p.bounces),
-                   p.bounce_position_error_m, p.touch_error_m, p.contact_time_error_s, p.cpu_s,
-                   double(p.rhs_evaluations), double(p.steps)});
+                   p.headline_error_m, p.bounce_position_error_m, p.sink_position_error_m, p.touch_error_m,
+                   p.contact_time_error_s, p.cpu_s, double(p.rhs_evaluations), double(p.steps)});
       if (!p.ok) failures.push_back(p.family + " at " + num(p.setting) + ": " + p.problem);
     }
     g.set_table("points", pts);

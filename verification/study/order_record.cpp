@@ -3,19 +3,8 @@
 #include "verification/study/verdict_rules.hpp"
 #include "verification/study/words.hpp"
 
-#include <cmath>
-#include <cstdio>
-
 namespace stoneskip {
 
-namespace {
-// TEMPORARY until the interval-based rule lands in order_fit: words for the verdict.
-std::string order_verdict_reason(const OrderFit& f, const OrderJudgement& j) {
-  if (!f.valid) return "no fit: " + f.problem;
-  return "p = " + num(f.order) + " [" + num(f.order_low) + ", " + num(f.order_high) + "] from " +
-         std::to_string(f.points) + " points, expected " + num(j.expected_order) + " ± " + num(j.tolerance);
-}
-}  // namespace
 
 Record& store_order_fit(Record& parent, const std::string& key, const OrderFit& fit, const OrderJudgement& j) {
   Record& r = parent.child(key);
@@ -37,7 +26,7 @@ Record& store_order_fit(Record& parent, const std::string& key, const OrderFit& 
   in.set("expected_order", j.expected_order);
   in.set("tolerance", j.tolerance);
   in.set("minimum_order", j.minimum_order);
-  decide_verdict(r, "verdict", "order_fit", in, order_verdict_reason(fit, j));
+  decide_verdict(r, "verdict", "order_fit", in, judge_order(fit, j).reason);
   return r;
 }
 

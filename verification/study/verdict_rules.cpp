@@ -26,7 +26,7 @@ const std::map<std::string, Rule>& rules() {
          j.expected_order = in.number("expected_order");
          j.tolerance = in.number("tolerance");
          j.minimum_order = in.number("minimum_order");
-         return std::string(to_string(judge_order(f, j)));
+         return std::string(to_string(judge_order(f, j).verdict));
        }},
       {"consistency",
        [](const Record& in) {

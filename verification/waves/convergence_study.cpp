@@ -14,7 +14,8 @@ double point_value(const std::vector<double>& z, int n) { return z[static_cast<s
 
 void fit_sequence(ConvergenceSequence& s, int fit_points, const OrderJudgement& judgement) {
   std::vector<double> h, e, em;
-  const std::size_t first = s.points.size() > static_cast<std::size_t>(fit_points) ? s.points.size() - fit_points : 0;
+  const std::size_t first =
+      fit_points > 0 && s.points.size() > static_cast<std::size_t>(fit_points) ? s.points.size() - fit_points : 0;
   for (std::size_t i = first; i < s.points.size(); ++i) {
     h.push_back(s.points[i].h);
     e.push_back(s.points[i].l2_m);
@@ -22,7 +23,7 @@ void fit_sequence(ConvergenceSequence& s, int fit_points, const OrderJudgement& 
   }
   s.fit = fit_order(h, e);
   s.fit_max = fit_order(h, em);
-  s.verdict = judge_order(s.fit, judgement);
+  s.verdict = judge_order(s.fit, judgement).verdict;
 }
 
 std::size_t convergence_study_work(const ConvergenceStudyOptions& o) {

@@ -48,7 +48,7 @@ struct ConvergenceStudyOptions {
   std::vector<long> time_steps{64, 128, 256, 512, 1024};  // σ = 0.5 … 0.03 at n = 64
   std::vector<int> both_grids{32, 64, 128, 256};
   double both_sigma = 0.5;
-  int fit_points = 3;
+  int fit_points = 0;  // fit the finest this many points; 0: every point (no range to choose)
   OrderJudgement judgement;  // expected order 2 ± 0.1
 };
 
@@ -62,7 +62,7 @@ ConvergenceStudy run_convergence_study(const Stencil& stencil, const Convergence
 // Work units (≈ cell updates) the study will do, for progress reporting.
 std::size_t convergence_study_work(const ConvergenceStudyOptions& options);
 
-// The order fit of the finest `fit_points` of a sequence (both norms) and its verdict.
+// The order fit of the finest `fit_points` of a sequence (0: all; both norms) and its verdict.
 void fit_sequence(ConvergenceSequence& s, int fit_points, const OrderJudgement& judgement);
 
 }  // namespace stoneskip

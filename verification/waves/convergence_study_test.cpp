@@ -38,8 +38,15 @@ BOOST_AUTO_TEST_CASE(consistent_stencils_converge_at_second_order_in_space_and_i
 
 BOOST_AUTO_TEST_CASE(paper_eq11_does_not_converge_to_the_wave_equation) {
   // Oracle: spec §2.2 — Eq. 11 adds a restoring term c²z/(3d²) that grows as d → 0, so the
-  // error against the continuum solution does not fall under refinement.
-  ConvergenceStudy s = run_convergence_study(named_stencil("paper_eq11"), quick_options());
+  // error against the continuum solution does not fall under refinement. "Does not converge"
+  // needs the whole interval at or below the minimum slope: the flat error scatters by ±15 %
+  // from grid to grid, so three points leave the interval too wide to say so; five space grids
+  // and four combined ones (all fitted) make it narrow enough.
+  ConvergenceStudyOptions o = quick_options();
+  o.space_grids = {32, 64, 128, 256, 512};
+  o.both_grids = {16, 32, 64, 128};
+  o.fit_points = 5;
+  ConvergenceStudy s = run_convergence_study(named_stencil("paper_eq11"), o);
   BOOST_TEST_MESSAGE("paper_eq11: space " << s.space.fit.brief() << ", both " << s.both.fit.brief());
   BOOST_TEST(s.space.verdict == OrderVerdict::does_not_converge, s.space.fit.brief());
   BOOST_TEST(s.both.verdict == OrderVerdict::does_not_converge, s.both.fit.brief());

@@ -6,8 +6,8 @@
 
 #include "model/water/disturbance.hpp"
 #include "model/water/height_field.hpp"
+#include "solvers/realtime/clocks.hpp"
 #include "solvers/spectral/spectral_wave.hpp"
-#include "verification/waves/cpu_timer.hpp"
 
 namespace stoneskip {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "verification/waves/cpu_timer.hpp"
+#include "solvers/realtime/clocks.hpp"
 
 namespace stoneskip {
 

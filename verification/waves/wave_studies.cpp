@@ -5,10 +5,10 @@
 #include <limits>
 #include <sstream>
 
+#include "solvers/realtime/clocks.hpp"
 #include "verification/study/order_record.hpp"
 #include "verification/study/verdict_rules.hpp"
 #include "verification/study/words.hpp"
-#include "verification/waves/cpu_timer.hpp"
 
 namespace stoneskip {
 
@@ -60,7 +60,8 @@ bool WaveStudiesOptions::valid(std::string* why) const {
   if (convergence.time_steps.empty() ||
       std::any_of(convergence.time_steps.begin(), convergence.time_steps.end(), [](long s) { return s < 1; }))
     return fail("convergence time steps must be >= 1");
-  if (!(convergence.both_sigma > 0) || convergence.fit_points < 2) return fail("both_sigma > 0 and fit_points >= 2 needed");
+  if (!(convergence.both_sigma > 0) || convergence.fit_points == 1 || convergence.fit_points < 0)
+    return fail("both_sigma > 0 and fit_points = 0 (all) or >= 2 needed");
   if (speed.work.grids.empty() || speed.work.sigma_fractions.empty() || speed.targets_m.empty())
     return fail("speed needs grids, sigma fractions and targets");
   if (std::find(stencils.begin(), stencils.end(), speed.baseline_stencil) == stencils.end())
@@ -158,7 +159,7 @@ void store_sequence(Record& parent, const ConvergenceSequence& seq, const OrderJ
     const double actual = std::abs(seq.point_exact_m - fine) / std::abs(fine);
     g.set("actual_relative_error", actual);
     // Does the GCI band (a relative uncertainty of the fine value) contain the exact value?
-    const bool order_says_no = judge_order(seq.fit, j) == OrderVerdict::does_not_converge;
+    const bool order_says_no = judge_order(seq.fit, j).verdict == OrderVerdict::does_not_converge;
     std::string reason;
     if (!usable) {
       reason = "the three finest values are " + std::string(to_string(seq.gci.kind)) + ", so Celik's procedure gives no GCI";
@@ -201,7 +202,7 @@ Record wave_convergence_findings(const WaveStudiesOptions& o, const ProgressFact
     Record& s = r.child(st.name);
     for (const ConvergenceSequence* seq : {&c.space, &c.time, &c.both}) store_sequence(s, *seq, co.judgement);
     // What the split says about where an error comes from (computed from the verdicts above).
-    const OrderVerdict vs = judge_order(c.space.fit, co.judgement), vt = judge_order(c.time.fit, co.judgement);
+    const OrderVerdict vs = judge_order(c.space.fit, co.judgement).verdict, vt = judge_order(c.time.fit, co.judgement).verdict;
     if (vs == OrderVerdict::does_not_converge) {
       const auto& sp = c.space.points;
       std::string reason = "its space error is " + num(sp.back().l2_m, 3) + " m RMS on the finest grid against " +
