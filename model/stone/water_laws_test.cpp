@@ -124,6 +124,18 @@ BOOST_AUTO_TEST_CASE(fluid_power_is_never_positive_for_any_law_in_the_physical_c
   }
 }
 
+BOOST_AUTO_TEST_CASE(the_paper_convention_can_create_energy) {
+  // Oracle: spec §1.6 — with Eq. 1–3 as printed, P > 0 occurs (receding faces pushed, reversed
+  // spin contribution and torque). Independent: the same states under every physical law never do (above).
+  const Stone s = test_stone();
+  Environment paper;
+  paper.convention = Convention::paper;
+  std::mt19937 rng(2);
+  int positive = 0;
+  for (int k = 0; k < 5000; ++k) positive += fluid_power_W(s, paper, random_state(s, rng)) > 0 ? 1 : 0;
+  BOOST_TEST(positive > 100);
+}
+
 BOOST_AUTO_TEST_CASE(the_paper_convention_keeps_the_printed_law_and_refuses_the_others) {
   // Oracle: spec §1.6 — the paper convention is Eq. 2 as printed (−C_w ρ u² S n on every wet
   // face); environment_problem() refuses another law there and accepts every physical pairing.
