@@ -37,6 +37,12 @@ ThrowProblem convergence_throw() {
   p.reference.rtol = 1e-12;
   p.reference.atol = 1e-14;
   p.reference.t_max_s = 3.0;
+  // The settings this file's fits were established with (before issue 11). The RK4 fit through a
+  // contact runs at this reference's error floor (issue 8, defect 3): with the newer defaults
+  // (restart at_jumps, per-component atol) or a tighter reference its 3-point fit moves by 0.3–0.9
+  // (p = 2.1–3.3). Pinned until that defect is fixed; the claim it tests is not established.
+  p.reference.restart = RestartStrategy::every_event;
+  p.reference.atol_scaling = ToleranceScaling::uniform;
   return p;
 }
 
