@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "model/stone/triangle_clip.hpp"
+#include "model/stone/water_laws.hpp"
 
 namespace stoneskip {
 
@@ -37,7 +38,6 @@ WaterLoads water_loads(const Stone& stone, const Environment& env, const RigidSt
   if (deepest <= 0) return out;
 
   const bool paper = env.convention == Convention::paper;
-  const double k_w = env.water_coefficient * env.water_density_kg_m3;
   const auto& tris = stone.body_mesh.triangles;
   for (std::size_t i = 0; i < tris.size(); ++i) {
     const auto& t = tris[i];
@@ -49,10 +49,10 @@ WaterLoads water_loads(const Stone& stone, const Environment& env, const RigidSt
     const Vec3 r = c.centroid_m - s.position_m;  // lever arm (spec §1.4 step 3)
     // Lee & Baek 2013 Eq. 1: printed v + r × ω; physical v + ω × r.
     const Vec3 vi = paper ? Vec3(s.velocity_m_s + r.cross(omega)) : Vec3(s.velocity_m_s + omega.cross(r));
-    const double u = vi.dot(n);
-    // Eq. 2: printed on every submerged face; physical only on faces advancing into the water.
-    if (!paper && u <= 0) continue;
-    const Vec3 F = -k_w * u * u * c.area_m2 * n;
+    // Eq. 2: printed on every submerged face; physical: the case's water law, zero unless the face
+    // advances into the water (model/stone/water_laws.hpp).
+    const Vec3 F = paper ? printed_face_force_N(env, n, vi, c.area_m2) : face_force_N(env, n, vi, c.area_m2);
+    if (F.isZero(0)) continue;
     out.force_N += F;
     // Eq. 3: printed F × r; physical r × F.
     out.torque_N_m += paper ? Vec3(F.cross(r)) : Vec3(r.cross(F));

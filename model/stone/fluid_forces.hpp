@@ -23,11 +23,14 @@ struct AirLoads {
   Vec3 force_N = Vec3::Zero();  // torque is zero in both conventions (spec §1.6, Eq. 7)
 };
 
-// Σ over triangles of the Newtonian impact force (spec §1.4; Lee & Baek 2013 Eq. 1–5).
-// physical: v_i = v + ω × r_i, only faces with u_i = v_i·n_i > 0 push, F_i = −C_w ρ_w u_i² S_i n_i,
+// Σ over triangles of the water force (spec §1.4; Lee & Baek 2013 Eq. 1–5) on the exactly clipped
+// wetted part of each triangle.
+// physical: v_i = v + ω × r_i, only faces with u_i = v_i·n_i > 0 push, with env.water_law
+//           (model/stone/water_laws.hpp: newtonian F_i = −C_w ρ_w u_i² S_i n_i, planing, lift_drag),
 //           τ_i = r_i × F_i.
-// paper:    v_i = v + r_i × ω (Eq. 1 as printed), every submerged face pushes (Eq. 2),
-//           τ_i = F_i × r_i (Eq. 3 as printed).
+// paper:    v_i = v + r_i × ω (Eq. 1 as printed), every submerged face pushes with −C_w ρ_w u_i² S_i n_i
+//           (Eq. 2 as printed, whatever env.water_law says: environment_problem() refuses another
+//           law with this convention), τ_i = F_i × r_i (Eq. 3 as printed).
 // surface == nullptr: still water η = 0. Below the stone's bounding sphere nothing is evaluated.
 WaterLoads water_loads(const Stone& stone, const Environment& env, const RigidState& s,
                        const WaterSurface* surface = nullptr);

@@ -29,11 +29,11 @@ void rigid_body_rhs(const Stone& stone, const Environment& env, const double* y,
                     const WaterSurface* surface) {
   const StateDerivative d = rigid_body_rhs(stone, env, from_vector(y), surface);
   for (int i = 0; i < 3; ++i) {
-    dydt[i] = d.dposition[i];
-    dydt[3 + i] = d.dvelocity[i];
-    dydt[10 + i] = d.dangular_momentum[i];
+    dydt[kPosition + i] = d.dposition[i];
+    dydt[kVelocity + i] = d.dvelocity[i];
+    dydt[kAngularMomentum + i] = d.dangular_momentum[i];
   }
-  for (int i = 0; i < 4; ++i) dydt[6 + i] = d.dquaternion[i];
+  for (int i = 0; i < 4; ++i) dydt[kQuaternion + i] = d.dquaternion[i];
 }
 
 double fluid_power_W(const Stone& stone, const Environment& env, const RigidState& s, const WaterSurface* surface) {

@@ -3,18 +3,25 @@
 namespace stoneskip {
 
 StateVector to_vector(const RigidState& s) {
-  return {s.position_m.x(), s.position_m.y(), s.position_m.z(),
-          s.velocity_m_s.x(), s.velocity_m_s.y(), s.velocity_m_s.z(),
-          s.orientation.w(), s.orientation.x(), s.orientation.y(), s.orientation.z(),
-          s.angular_momentum_kg_m2_s.x(), s.angular_momentum_kg_m2_s.y(), s.angular_momentum_kg_m2_s.z()};
+  StateVector y{};
+  for (int k = 0; k < 3; ++k) {
+    y[kPosition + k] = s.position_m[k];
+    y[kVelocity + k] = s.velocity_m_s[k];
+    y[kAngularMomentum + k] = s.angular_momentum_kg_m2_s[k];
+  }
+  y[kQuaternion + 0] = s.orientation.w();
+  y[kQuaternion + 1] = s.orientation.x();
+  y[kQuaternion + 2] = s.orientation.y();
+  y[kQuaternion + 3] = s.orientation.z();
+  return y;
 }
 
 RigidState from_vector(const double* y) {
   RigidState s;
-  s.position_m = Vec3(y[0], y[1], y[2]);
-  s.velocity_m_s = Vec3(y[3], y[4], y[5]);
-  s.orientation = Quat(y[6], y[7], y[8], y[9]);
-  s.angular_momentum_kg_m2_s = Vec3(y[10], y[11], y[12]);
+  s.position_m = Vec3(y[kPosition], y[kPosition + 1], y[kPosition + 2]);
+  s.velocity_m_s = Vec3(y[kVelocity], y[kVelocity + 1], y[kVelocity + 2]);
+  s.orientation = Quat(y[kQuaternion], y[kQuaternion + 1], y[kQuaternion + 2], y[kQuaternion + 3]);
+  s.angular_momentum_kg_m2_s = Vec3(y[kAngularMomentum], y[kAngularMomentum + 1], y[kAngularMomentum + 2]);
   return s;
 }
 

@@ -15,6 +15,12 @@ struct RigidState {
   Vec3 angular_momentum_kg_m2_s = Vec3::Zero();  // world frame
 };
 
+// Offsets into the flat state vector (the SUNDIALS examples' Ith(v, i) habit): y[kPosition + k],
+// y[kVelocity + k], y[kAngularMomentum + k] for k = 0..2 (x, y, z); y[kQuaternion + 0..3] = (w, x, y, z).
+constexpr int kPosition = 0;
+constexpr int kVelocity = 3;
+constexpr int kQuaternion = 6;
+constexpr int kAngularMomentum = 10;
 constexpr int kStateSize = 13;
 using StateVector = std::array<double, kStateSize>;
 

@@ -8,11 +8,22 @@ namespace stoneskip {
 Stone make_stone(const Mesh& mesh, const MassProperties& mp, double disk_radius_m, std::string description) {
   Stone s;
   s.body_mesh = mesh;
-  for (auto& v : s.body_mesh.vertices) v -= mp.center_of_mass_m;
+  s.mesh_center_of_mass_m = mp.center_of_mass_m;
+  s.body_axes_in_mesh = principal_frame(mesh, mp);
+  const Mat3& P = s.body_axes_in_mesh;
+  const bool rotated = P != Mat3::Identity();
+  for (auto& v : s.body_mesh.vertices) {
+    v -= mp.center_of_mass_m;
+    if (rotated) v = P.transpose() * v;  // mesh → body coordinates
+  }
   s.mass = mp;
   s.mass.center_of_mass_m = Vec3::Zero();
-  s.inertia_body_kg_m2 = mp.inertia_kg_m2;
-  s.inertia_body_inv = mp.inertia_kg_m2.inverse();
+  if (rotated) {
+    const Mat3 I = P.transpose() * mp.inertia_kg_m2 * P;
+    s.mass.inertia_kg_m2 = 0.5 * (I + I.transpose());
+  }
+  s.inertia_body_kg_m2 = s.mass.inertia_kg_m2;
+  s.inertia_body_inv = s.mass.inertia_kg_m2.inverse();
   if (disk_radius_m <= 0) {
     for (const auto& v : s.body_mesh.vertices) disk_radius_m = std::max(disk_radius_m, std::hypot(v.x(), v.y()));
   }

@@ -1,6 +1,7 @@
 #pragma once
-// A rigid stone ready for dynamics: its mesh in the body frame (origin at the centre of mass,
-// body z along the symmetry axis), mass properties, and per-triangle data precomputed once.
+// A rigid stone ready for dynamics: its mesh in the body frame (origin at the centre of mass, axes
+// along the principal axes of inertia with body z the axis of the largest moment: a flat stone's
+// normal, spec §1.1), mass properties, and per-triangle data precomputed once.
 #include <Eigen/Geometry>
 #include <string>
 
@@ -12,8 +13,10 @@ namespace stoneskip {
 using Quat = Eigen::Quaterniond;
 
 struct Stone {
-  Mesh body_mesh;                 // vertices relative to the centre of mass
-  MassProperties mass;            // centre_of_mass_m is zero in the body frame
+  Mesh body_mesh;                 // vertices relative to the centre of mass, on the principal axes
+  MassProperties mass;            // in the body frame: centre_of_mass_m zero, inertia diagonal
+  Mat3 body_axes_in_mesh = Mat3::Identity();  // columns: body x, y, z in the mesh's frame (principal_frame)
+  Vec3 mesh_center_of_mass_m = Vec3::Zero();  // the centre of mass in the mesh's frame
   Mat3 inertia_body_kg_m2;        // = mass.inertia_kg_m2
   Mat3 inertia_body_inv;          // its inverse
   double disk_radius_m = 0;       // air model's disk radius (spec §1.5)
@@ -24,8 +27,11 @@ struct Stone {
   std::string description;        // "prism R=... h=... N=..."
 };
 
-// Moves the mesh to its centre of mass and precomputes the rest. disk_radius_m <= 0 takes the
-// largest distance of a vertex from the body z axis.
+// Moves the mesh to its centre of mass, rotates it onto its principal axes (principal_frame in
+// model/stone/mass_properties.hpp: body z the largest moment, pointing to the mesh's up; body x the
+// smallest; right-handed) and precomputes the rest. A mesh rotated in its file, up kept up, gives
+// the same stone.
+// disk_radius_m <= 0 takes the largest distance of a vertex from the body z axis.
 Stone make_stone(const Mesh& mesh, const MassProperties& mp, double disk_radius_m, std::string description);
 
 }  // namespace stoneskip

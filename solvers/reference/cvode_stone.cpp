@@ -2,9 +2,16 @@
 
 // The problem (spec §1.3): y = [x, v, q, L] ∈ R¹³,
 //   dx/dt = v,  m dv/dt = F_gravity + F_air + Σ F_i,  dq/dt = ½ (0, ω) ⊗ q,  dL/dt = Σ τ_i,
-// with the right-hand side of model/stone/rigid_body.hpp (still water). CVODE integrates each
-// smooth piece; root finding (solvers/reference/stone_events.hpp) locates the ends of the pieces,
-// and the integration restarts there with CVodeReInit, the quaternion renormalised.
+// with the right-hand side of model/stone/rigid_body.hpp (still water). Root finding
+// (solvers/reference/stone_events.hpp) locates every vertex crossing (and, with
+// RestartStrategy::every_event, every face and air switch); at the events the strategy names, the
+// integration restarts with CVodeReInit, the quaternion renormalised. Elsewhere it continues: the
+// event is logged (contacts, sinking), the discrete mode and the watched root directions are
+// updated, and CVODE keeps its history across the kink — its Nordsieck history then interpolates
+// a right-hand side that is only C¹ (C⁰ in its derivative for planing) across the event, the local
+// error estimate of the step that straddles it grows, and the error test shrinks that step (and may
+// lower the order) until the local error is within tolerance again: accuracy is kept by error
+// control instead of by a restart. Absolute tolerances per component: absolute_tolerance.hpp.
 //
 // Linear algebra: BDF uses Newton iteration with SUNDIALS' dense direct solver and CVODE's internal
 // difference-quotient Jacobian (13 × 13: cheap, and no hand-written Jacobian of the clipped force
@@ -28,6 +35,7 @@
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include "solvers/realtime/clocks.hpp"
+#include "solvers/reference/absolute_tolerance.hpp"
 #include "solvers/reference/stone_events.hpp"
 
 namespace stoneskip {
@@ -62,7 +70,8 @@ T* check_ptr(T* p, const char* call) {
 std::string describe(const ReferenceOptions& o) {
   std::ostringstream s;
   s << "reference (CVODE " << (o.method == ReferenceMethod::bdf ? "BDF" : "Adams") << " rtol=" << o.rtol
-    << " atol=" << o.atol << ")";
+    << " atol=" << o.atol << (o.atol_scaling == ToleranceScaling::per_component ? " m per component" : " uniform")
+    << ", restart " << to_string(o.restart) << ")";
   return s.str();
 }
 
@@ -139,7 +148,7 @@ struct CvodeObjects {
 class ReferenceSolve {
  public:
   ReferenceSolve(const Stone& stone, const Environment& env, const ReferenceOptions& o, ThrowResult& r)
-      : stone_(stone), env_(env), o_(o), r_(r), events_(stone, env, o.locate_switches),
+      : stone_(stone), env_(env), o_(o), r_(r), events_(stone, env, o.restart),
         problem_{stone, env, events_, {}}, g_(events_.count()), found_(events_.count()),
         event_times_(std::clamp(o.max_events_per_ms, 1, kMaxEventsPerMs), -1e300) {}
 
@@ -148,7 +157,11 @@ class ReferenceSolve {
  private:
   bool check_inputs(const RigidState& initial);
   void setup(const RigidState& s0);
+  void integrate();
+  void finish(const RigidState& s0);
   void restart(double t);
+  void continue_after_event();
+  void count_steps_to_event();
   void add_segment_stats();
   RigidState state() const;  // the current CVODE vector as a state, quaternion normalised
   void renormalise();
@@ -172,7 +185,9 @@ class ReferenceSolve {
   long event_count_ = 0;
   long resynced_ = 0;
   double max_q_drift_ = 0;
-  bool segment_in_contact_ = false;
+  bool in_contact_mode_ = false;     // some vertex under water, per the event mode
+  long segment_steps_counted_ = 0;   // steps of this segment already attributed (contact or not)
+  long restarts_ = 0, continued_events_ = 0;
   double t_ = 0;
   bool done_ = false;
 };
@@ -186,8 +201,10 @@ bool ReferenceSolve::check_inputs(const RigidState& initial) {
   else if (o_.max_events_per_ms <= 0 || o_.max_events_per_ms > kMaxEventsPerMs)
     bad << "max_events_per_ms must be in [1, " << kMaxEventsPerMs << "]";
   else if (!(o_.max_step_s >= 0)) bad << "max_step_s must be >= 0";
+  else if (!(stone_.bounding_radius_m > 0)) bad << "the stone has no size (bounding radius 0)";
+  else if (const std::string e = environment_problem(env_); !e.empty()) bad << "environment: " << e;
   if (!bad.str().empty()) {
-    fail("invalid reference options: " + bad.str());
+    fail("invalid reference problem: " + bad.str());
     return false;
   }
   const StateVector y = to_vector(initial);
@@ -216,7 +233,14 @@ void ReferenceSolve::setup(const RigidState& s0) {
   check(CVodeSetErrHandlerFn(cv_.mem, error_callback, &last_error_), "CVodeSetErrHandlerFn");
   check(CVodeInit(cv_.mem, rhs_callback, 0.0, cv_.y), "CVodeInit");
   check(CVodeSetUserData(cv_.mem, &problem_), "CVodeSetUserData");
-  check(CVodeSStolerances(cv_.mem, o_.rtol, o_.atol), "CVodeSStolerances");
+  {
+    const StateVector atol = absolute_tolerances(o_, state_scales(stone_, s0, env_.gravity_m_s2));
+    N_Vector abstol = check_ptr(N_VNew_Serial(kStateSize, cv_.ctx), "N_VNew_Serial");
+    std::copy(atol.begin(), atol.end(), N_VGetArrayPointer(abstol));
+    const int flag = CVodeSVtolerances(cv_.mem, o_.rtol, abstol);  // CVODE keeps its own copy
+    N_VDestroy(abstol);
+    check(flag, "CVodeSVtolerances");
+  }
   if (bdf) {
     cv_.A = check_ptr(SUNDenseMatrix(kStateSize, kStateSize, cv_.ctx), "SUNDenseMatrix");
     cv_.LS = check_ptr(SUNLinSol_Dense(cv_.y, cv_.A, cv_.ctx), "SUNLinSol_Dense");
@@ -231,6 +255,15 @@ void ReferenceSolve::setup(const RigidState& s0) {
   check(CVodeSetNoInactiveRootWarn(cv_.mem), "CVodeSetNoInactiveRootWarn");
   check(CVodeSetRootDirection(cv_.mem, events_.directions()), "CVodeSetRootDirection");
   check(CVodeSetStopTime(cv_.mem, o_.t_max_s), "CVodeSetStopTime");
+}
+
+// Steps since the last event go to the mode they were taken in (contact: some vertex under water).
+void ReferenceSolve::count_steps_to_event() {
+  long nst = 0;
+  check(CVodeGetNumSteps(cv_.mem, &nst), "CVodeGetNumSteps");
+  if (in_contact_mode_) r_.stats.contact_steps += nst - segment_steps_counted_;
+  segment_steps_counted_ = nst;
+  in_contact_mode_ = events_.submerged_vertices() > 0;
 }
 
 // CVODE 6.4's CVodeReInit zeroes its counters: they are summed here, segment by segment.
@@ -249,15 +282,25 @@ void ReferenceSolve::add_segment_stats() {
   s.error_test_failures += netf;
   s.nonlinear_iterations += nni;
   s.segments += 1;
-  if (segment_in_contact_) s.contact_steps += nst;  // steps taken with some vertex under water
-  segment_in_contact_ = events_.submerged_vertices() > 0;  // the mode of the next segment
+  segment_steps_counted_ = 0;
 }
 
 void ReferenceSolve::restart(double t) {
+  count_steps_to_event();
   add_segment_stats();
+  ++restarts_;
   check(CVodeReInit(cv_.mem, t, cv_.y), "CVodeReInit");
   check(CVodeSetRootDirection(cv_.mem, events_.directions()), "CVodeSetRootDirection");
   check(CVodeSetStopTime(cv_.mem, o_.t_max_s), "CVodeSetStopTime");
+}
+
+// No restart: CVODE keeps its history; only the directions to watch change with the mode. CVODE
+// re-evaluates the root functions at the root before searching on (cvRcheck2), so the new mode is
+// seen from the event on.
+void ReferenceSolve::continue_after_event() {
+  count_steps_to_event();
+  ++continued_events_;
+  check(CVodeSetRootDirection(cv_.mem, events_.directions()), "CVodeSetRootDirection");
 }
 
 RigidState ReferenceSolve::state() const {
@@ -268,9 +311,10 @@ RigidState ReferenceSolve::state() const {
 
 void ReferenceSolve::renormalise() {
   double* y = N_VGetArrayPointer(cv_.y);
-  const double n = std::sqrt(y[6] * y[6] + y[7] * y[7] + y[8] * y[8] + y[9] * y[9]);
+  double* q = y + kQuaternion;
+  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
   max_q_drift_ = std::max(max_q_drift_, std::abs(n - 1.0));
-  for (int k = 6; k < 10; ++k) y[k] /= n;
+  for (int k = 0; k < 4; ++k) q[k] /= n;
 }
 
 void ReferenceSolve::sample(double t, const RigidState& s) {
@@ -308,6 +352,8 @@ bool ReferenceSolve::handle_root(double t) {
   r_.event_times_s.push_back(t);
 
   check(CVodeGetRootInfo(cv_.mem, found_.data()), "CVodeGetRootInfo");
+  // The returned vector is CVODE's output copy: renormalising it changes the integration only
+  // where a restart takes it as the new initial value.
   renormalise();
   const RigidState s = state();
   const EventChange c = events_.apply(found_.data(), s);
@@ -330,7 +376,16 @@ bool ReferenceSolve::handle_root(double t) {
     r_.outcome_detail = m.str();
     return false;
   }
-  restart(t);
+  // at_jumps also restarts where a contact starts: the step that found it may come from flight,
+  // long enough to hold a whole submersion whose end CVODE's error test cannot tell from flight
+  // (in the paper convention a fully submerged stone's opposite faces cancel).
+  const bool contact_starts = c.submerged_before == 0 && c.submerged_after > 0;
+  const bool restart_here = o_.restart == RestartStrategy::every_event || o_.restart == RestartStrategy::every_crossing ||
+                            (o_.restart == RestartStrategy::at_jumps && (c.force_jumps() || contact_starts));
+  if (restart_here)
+    restart(t);
+  else
+    continue_after_event();
   return true;
 }
 
@@ -360,11 +415,22 @@ void ReferenceSolve::run(const RigidState& initial) {
     return;
   }
 
-  // 2. CVODE.
-  segment_in_contact_ = events_.submerged_vertices() > 0;
-  setup(s0);
+  // 2. CVODE, 3. the main loop. Every failure, a CVODE return flag or a SUNDIALS call that throws,
+  // ends here with the contacts found so far kept (4.).
+  in_contact_mode_ = events_.submerged_vertices() > 0;
+  try {
+    setup(s0);
+    integrate();
+  } catch (const CvodeFailure& e) {
+    std::ostringstream m;
+    m << e.message << " at t = " << t_ << " s";
+    fail(m.str());
+  }
+  finish(s0);
+}
 
-  // 3. Main loop: to the next output time, or to an event and a restart there.
+// 3. To the next output time, or to an event (a restart there, or not, by the strategy).
+void ReferenceSolve::integrate() {
   const bool sampled = o_.record_trajectory && o_.output_dt_s > 0;
   const double eps = std::numeric_limits<double>::epsilon();
   long k_out = 1;
@@ -414,15 +480,28 @@ void ReferenceSolve::run(const RigidState& initial) {
     t_ = t_ret;
     fail(m.str());
   }
-  add_segment_stats();
+}
 
-  // 4. The end of the throw.
-  renormalise();
-  const RigidState s_end = state();
+// 4. The end of the throw, also after a failure: the statistics, the end state, the open contact
+// closed at the end time, and the result built from every contact logged.
+void ReferenceSolve::finish(const RigidState& s0) {
+  RigidState s_end = s0;
+  if (cv_.mem) {
+    try {
+      count_steps_to_event();
+      add_segment_stats();
+    } catch (const CvodeFailure& e) {
+      if (r_.outcome != Outcome::failed) fail(e.message);
+    }
+    renormalise();
+    s_end = state();
+  }
+  const bool cut = r_.outcome == Outcome::failed && log_.in_contact();
   if (log_.in_contact()) log_.end(t_, s_end, energy(s_end), false);
   if (o_.record_trajectory && (r_.trajectory.empty() || r_.trajectory.back().t_s < t_)) sample(t_, s_end);
   finish_result(r_, log_, s_end, t_);
   std::ostringstream extra;
+  if (cut) extra << "; contact " << r_.contacts.size() << " was still open: its end is the failure time";
   if (resynced_ > 0) extra << "; " << resynced_ << " vertex crossings missed by root finding (fixed from the state)";
   if (max_q_drift_ > kReportedQuaternionDrift) extra << "; quaternion norm drifted by up to " << max_q_drift_ << " between restarts";
   r_.outcome_detail += extra.str();

@@ -16,14 +16,22 @@ constexpr double kSwitchSnap = 1e-12;
 // within one step without a sign change for root finding to see; the mode is corrected from the
 // state. Far above the root location error (~1e-14 s × vertex speed).
 constexpr double kResyncTolerance_m = 1e-9;
+// A face whose three vertices are all this close to the surface when one of them crosses lies in
+// it: its wetted area goes from zero to whole (or back) within ~kFlatFace_m / |ż| ≲ 1e-9 s, a jump
+// for any step CVODE takes. Far above the root location error (~1e-13 m).
+constexpr double kFlatFace_m = 1e-9;
 
 int sign_of(double u) { return u > 0 ? 1 : (u < 0 ? -1 : 0); }
 }  // namespace
 
-StoneEvents::StoneEvents(const Stone& stone, const Environment& env, bool locate_switches)
+StoneEvents::StoneEvents(const Stone& stone, const Environment& env, RestartStrategy restart)
     : stone_(stone), env_(env) {
   nv_ = static_cast<int>(stone.body_mesh.vertices.size());
   const bool physical = env.convention == Convention::physical;
+  const bool locate_switches = restart == RestartStrategy::every_event;
+  faces_of_vertex_.assign(nv_, {});
+  for (int i = 0; i < static_cast<int>(stone.body_mesh.triangles.size()); ++i)
+    for (int j : stone.body_mesh.triangles[i]) faces_of_vertex_[j].push_back(i);
   nf_ = (locate_switches && physical) ? static_cast<int>(stone.body_mesh.triangles.size()) : 0;
   air_ = locate_switches && physical && env.air_density_kg_m3 > 0 && env.air_coefficient != 0;
   under_.assign(nv_, 0);
@@ -96,7 +104,7 @@ bool StoneEvents::evaluate(const double* y, double* g) const {
   // The quaternion is normalised here (as in the force law), so renormalising the state at a
   // restart moves no root function by more than round-off.
   const Mat3 R = s.orientation.normalized().toRotationMatrix();
-  for (int j = 0; j < nv_; ++j) g[j] = y[2] + R.row(2).dot(stone_.body_mesh.vertices[j]);  // z_j
+  for (int j = 0; j < nv_; ++j) g[j] = y[kPosition + 2] + R.row(2).dot(stone_.body_mesh.vertices[j]);  // z_j
   if (nf_ > 0 || air_) {
     const Vec3 omega = angular_velocity(stone_, s);
     const double snap = kSwitchSnap * velocity_scale(s, omega);
@@ -138,6 +146,18 @@ EventChange StoneEvents::apply(const int* found, const RigidState& s) {
       }
     } else {
       ++c.vertices_out;
+    }
+  }
+  // A face lying in the surface as one of its vertices crosses: its area jumps.
+  std::vector<char> counted(stone_.body_mesh.triangles.size(), 0);
+  for (int j = 0; j < nv_; ++j) {
+    if (found[j] == 0) continue;
+    for (int i : faces_of_vertex_[j]) {
+      if (counted[i]) continue;
+      counted[i] = 1;
+      bool flat = true;
+      for (int k : stone_.body_mesh.triangles[i]) flat = flat && std::abs(world_vertex(stone_, s, R, k).z()) <= kFlatFace_m;
+      if (flat) ++c.flat_faces;
     }
   }
   for (int j = 0; j < nv_; ++j) {

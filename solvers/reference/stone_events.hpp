@@ -4,25 +4,29 @@
 // through the surface, which this reference does not support).
 //
 // The right-hand side of spec §1.3–1.6 is smooth except where
-//   (a) a vertex crosses the surface: the clipped polygons change shape (§1.4 step 2), so the
-//       force is continuous but its derivative jumps (for a flat face reaching the water, the
-//       wetted area itself jumps). Root function g_j = z_j, vertex j's world height.
-//   (b) physical convention only: a wet face's normal velocity u_i = v_i·n_i changes sign; the
-//       face force −C_w ρ_w max(u_i, 0)² S_i n_i (§1.4 step 4, the switch of Eq. 2) is C¹ with
-//       a jump in its second derivative. Root function g = u_i at the clipped centroid, live
-//       only while the face has a vertex under water. In the paper convention every wet face
-//       pushes with u_i² whatever its sign — smooth in u_i — so there is nothing to locate.
+//   (a) a vertex crosses the surface: the clipped polygons change shape (§1.4 step 2). For a
+//       slanted face the wetted area is C¹ in the state (piecewise quadratic in the depths, its
+//       second derivative jumps), so the force is C¹ there; for a face lying in the surface (a flat
+//       face reaching or leaving the water: its three vertices cross together) the area itself
+//       jumps, and so does the force. Root function g_j = z_j, vertex j's world height.
+//   (b) physical convention only: a wet face's normal velocity u_i = v_i·n_i changes sign, the
+//       switch of Eq. 2 (model/stone/water_laws.hpp). Every law is zero at u_i = 0, so the force is
+//       continuous; newtonian and lift_drag (∝ max(u_i, 0)²) are C¹ with a jump in the second
+//       derivative, planing (∝ max(u_i, 0) |v_i|) is C⁰ with a jump in the first. No law has another
+//       non-smooth point: |v_i| = 0 implies u_i = 0, and lift_drag's C_L(θ), C_D(θ) are polynomials
+//       in sin θ, cos θ. Root function g = u_i at the clipped centroid, live only while the face has
+//       a vertex under water. In the paper convention every wet face pushes with u_i² whatever its
+//       sign — smooth in u_i — so there is nothing to locate.
 //   (c) physical convention with air: the disk's normal velocity u = v·n_d changes sign; the
 //       air force −C_a ρ_a u|u| S_d n_d (§1.5) is C¹ there. In the paper convention u² is smooth.
 // Between events the set of submerged vertices is fixed, so each live root function is smooth.
+// (b) and (c) are located only with RestartStrategy::every_event; (a) always (contacts and sinking
+// are defined by it, spec §1.8). EventChange::flat_faces says where (a) is a jump of the force.
 //
-// Which vertices are under water is kept as a discrete mode, updated from the directions CVODE
-// reports at a root, not from the sign of z at the restart point (which sits at ~0): this is what
-// keeps a restart from finding the same root again. Each root function is watched in one
-// direction only (CVodeSetRootDirection): a submerged vertex for rising z, a dry one for falling.
 #include <vector>
 
 #include "model/stone/rigid_body.hpp"
+#include "solvers/reference/reference_options.hpp"
 
 namespace stoneskip {
 
@@ -33,11 +37,16 @@ struct EventChange {
   int air_switches = 0;                      // (c) events
   int resynced_vertices = 0;  // mode corrected from the state: a crossing root finding missed
   int deepest_new_vertex = -1;               // the deepest vertex that went under, or −1
+  // Faces through a vertex crossed in this event whose three vertices all lie within
+  // kFlatFace_m of the surface: their wetted area jumps, and with it the force.
+  int flat_faces = 0;
+  bool force_jumps() const { return flat_faces > 0; }
 };
 
 class StoneEvents {
  public:
-  StoneEvents(const Stone& stone, const Environment& env, bool locate_switches);
+  // The face and air switches (b), (c) are located only for RestartStrategy::every_event.
+  StoneEvents(const Stone& stone, const Environment& env, RestartStrategy restart);
 
   int count() const { return static_cast<int>(directions_.size()); }
   int vertex_count() const { return nv_; }
@@ -74,6 +83,7 @@ class StoneEvents {
   std::vector<char> under_;      // mode: vertex under water
   std::vector<int> sign_;        // faces then air: +1 / −1 the sign in this segment, 0 unknown
   std::vector<int> directions_;  // per root function
+  std::vector<std::vector<int>> faces_of_vertex_;
 };
 
 }  // namespace stoneskip

@@ -69,6 +69,13 @@ Environment read_environment(TomlTable t) {
   t.require_non_negative("water_density_kg_m3", e.water_density_kg_m3);
   e.air_density_kg_m3 = t.number_or("air_density_kg_m3", e.air_density_kg_m3);
   t.require_non_negative("air_density_kg_m3", e.air_density_kg_m3);
+  const std::string law = t.string_or("water_law", to_string(e.water_law));
+  WaterLaw water_law = WaterLaw::newtonian;
+  if (!parse_water_law(law, water_law))
+    t.fail("water_law", "must be \"newtonian\", \"planing\" or \"lift_drag\" (got \"" + law + "\")");
+  set_water_law(e, water_law);  // the law's published C_w unless water_coefficient is given
+  if (e.convention == Convention::paper && water_law != WaterLaw::newtonian)
+    t.fail("water_law", environment_problem(e));
   e.water_coefficient = t.number_or("water_coefficient", e.water_coefficient);
   t.require_non_negative("water_coefficient", e.water_coefficient);
   e.air_coefficient = t.number_or("air_coefficient", e.air_coefficient);
@@ -154,7 +161,12 @@ ReferenceOptions read_reference(std::optional<TomlTable> maybe, double t_max_s, 
   t.require_positive("atol", o.atol);
   o.max_steps = t.integer_or("max_steps", o.max_steps);
   if (o.max_steps < 1) t.fail("max_steps", "must be at least 1");
-  o.locate_switches = t.boolean_or("locate_switches", o.locate_switches);
+  const std::string scaling = t.string_or("atol_scaling", to_string(o.atol_scaling));
+  if (!parse_tolerance_scaling(scaling, o.atol_scaling))
+    t.fail("atol_scaling", "must be \"per_component\" or \"uniform\" (got \"" + scaling + "\")");
+  const std::string restart = t.string_or("restart", to_string(o.restart));
+  if (!parse_restart_strategy(restart, o.restart))
+    t.fail("restart", "must be \"every_event\", \"every_crossing\", \"at_jumps\" or \"never\" (got \"" + restart + "\")");
   o.max_step_s = t.number_or("max_step_s", o.max_step_s);
   t.require_non_negative("max_step_s", o.max_step_s);
   const long long events = t.integer_or("max_events_per_ms", o.max_events_per_ms);
@@ -232,7 +244,8 @@ std::string StoneCase::resolved_settings() const {
   else s << "radius_m = " << spec.radius_m << "\nthickness_m = " << spec.thickness_m << "\nsegments = " << spec.segments << "\n";
   s << "density_kg_m3 = " << stone.mass.density_kg_m3 << "\nmass_kg = " << stone.mass.mass_kg << "\n";
   s << "disk_radius_m = " << stone.disk_radius_m << "\n";
-  s << "\n[environment]\nconvention = \"" << to_string(environment.convention) << "\"\n"
+  s << "\n[environment]\nconvention = \"" << to_string(environment.convention) << "\"\nwater_law = \""
+    << to_string(environment.water_law) << "\"\n"
     << "water_density_kg_m3 = " << environment.water_density_kg_m3 << "\nair_density_kg_m3 = " << environment.air_density_kg_m3
     << "\nwater_coefficient = " << environment.water_coefficient << "\nair_coefficient = " << environment.air_coefficient
     << "\ngravity_m_s2 = " << environment.gravity_m_s2 << "\n";
@@ -259,8 +272,8 @@ std::string StoneCase::resolved_settings() const {
       << "\"\namplitude_m = " << water->initial.amplitude_m << "\n";
   }
   s << "\n[reference]\nmethod = \"" << to_string(reference.method) << "\"\nrtol = " << reference.rtol << "\natol = "
-    << reference.atol << "\nmax_steps = " << reference.max_steps
-    << "\nlocate_switches = " << (reference.locate_switches ? "true" : "false") << "\nmax_step_s = " << reference.max_step_s
+    << reference.atol << "\natol_scaling = \"" << to_string(reference.atol_scaling) << "\"\nmax_steps = " << reference.max_steps
+    << "\nrestart = \"" << to_string(reference.restart) << "\"\nmax_step_s = " << reference.max_step_s
     << "\nmax_events_per_ms = " << reference.max_events_per_ms << "\n";
   return s.str();
 }

@@ -18,7 +18,8 @@ std::string text_summary(const StoneCase& c, const ThrowResult& r) {
   std::ostringstream s;
   s << "case      " << c.title << " (" << c.file << ")\n";
   s << "stone     " << c.stone.description << ", mass " << num(c.stone.mass.mass_kg * 1e3) << " g\n";
-  s << "model     " << to_string(c.environment.convention) << " convention, C_w = " << c.environment.water_coefficient << "\n";
+  s << "model     " << to_string(c.environment.convention) << " convention, " << to_string(c.environment.water_law)
+    << " water law, C_w = " << c.environment.water_coefficient << "\n";
   s << "solver    " << r.solver << "\n";
   s << "bounces   " << r.bounces << "\n";
   s << "outcome   " << to_string(r.outcome) << ": " << r.outcome_detail << "\n";

@@ -73,6 +73,10 @@ BounceBaseline read_baseline(const std::string& path) {
     if (!(b.values[i] > b.values[i - 1])) t.fail("values", "must be strictly ascending");
   const std::string conv = t.string("convention");
   if (!parse_convention(conv, b.convention)) t.fail("convention", "'" + conv + "' is not physical or paper");
+  const std::string law = t.string_or("water_law", to_string(b.water_law));
+  if (!parse_water_law(law, b.water_law)) t.fail("water_law", "'" + law + "' is not newtonian, planing or lift_drag");
+  if (b.convention == Convention::paper && b.water_law != WaterLaw::newtonian)
+    t.fail("water_law", "the paper convention has the printed (newtonian) law only");
   const std::string solver = t.string("solver");
   if (solver == "realtime") {
     b.solver = SolverKind::realtime;
@@ -93,6 +97,10 @@ BounceBaseline read_baseline(const std::string& path) {
     b.atol = t.number_or("atol", 0);
     t.require_non_negative("rtol", b.rtol);
     t.require_non_negative("atol", b.atol);
+    b.restart = t.string_or("restart", "");
+    RestartStrategy rs;
+    if (!b.restart.empty() && !parse_restart_strategy(b.restart, rs))
+      t.fail("restart", "'" + b.restart + "' is not every_event, every_crossing, at_jumps or never");
   } else {
     t.fail("solver", "'" + solver + "' is not realtime or reference");
   }
@@ -143,7 +151,9 @@ fs::path resolve_case_file(const BounceBaseline& b) {
 }
 
 BounceSweepSpec sweep_of(const BounceBaseline& b) {
-  const StoneCase c = load_stone_case(resolve_case_file(b).string());
+  std::vector<std::string> overrides;
+  if (b.water_law != WaterLaw::newtonian) overrides.push_back(std::string("environment.water_law=") + to_string(b.water_law));
+  const StoneCase c = load_stone_case(resolve_case_file(b).string(), overrides);
   BounceSweepSpec s;
   s.name = b.name;
   s.base = problem_from_case(c);
@@ -164,6 +174,7 @@ BounceSweepSpec sweep_of(const BounceBaseline& b) {
     if (!b.method.empty()) parse_reference_method(b.method, o.method);
     if (b.rtol > 0) o.rtol = b.rtol;
     if (b.atol > 0) o.atol = b.atol;
+    if (!b.restart.empty()) parse_restart_strategy(b.restart, o.restart);
     if (b.t_max_s > 0) o.t_max_s = b.t_max_s;
     s.solver = reference_choice(o);
   }
@@ -186,6 +197,7 @@ std::string baseline_text(const BounceBaseline& b, const BounceSweepResult& r, c
   s << "parameter = " << quoted(to_string(b.parameter)) << "\n";
   s << "values = " << array(b.values, num) << "\n";
   s << "convention = " << quoted(to_string(b.convention)) << "\n";
+  if (b.water_law != WaterLaw::newtonian) s << "water_law = " << quoted(to_string(b.water_law)) << "\n";
   if (b.solver == SolverKind::realtime) {
     s << "solver = \"realtime\"\n";
     if (!b.scheme.empty()) s << "scheme = " << quoted(b.scheme) << "\n";
@@ -196,6 +208,7 @@ std::string baseline_text(const BounceBaseline& b, const BounceSweepResult& r, c
     if (!b.method.empty()) s << "method = " << quoted(b.method) << "\n";
     if (b.rtol > 0) s << "rtol = " << num(b.rtol) << "\n";
     if (b.atol > 0) s << "atol = " << num(b.atol) << "\n";
+    if (!b.restart.empty()) s << "restart = " << quoted(b.restart) << "\n";
   }
   if (b.t_max_s > 0) s << "t_max_s = " << num(b.t_max_s) << "\n";
   s << "threshold_tolerance = " << num(b.threshold_tolerance) << "\n";

@@ -1,7 +1,7 @@
 #pragma once
 // Golden baselines of bounce-count curves (cases/baselines/*.toml) and the comparison that
 // `stoneskip regress` prints. A baseline file holds the settings that made it ([baseline]: the
-// case, swept parameter and grid, convention, solver, tolerances) and the result
+// case, swept parameter and grid, convention, water law, solver, tolerances) and the result
 // ([result]: the count at each grid value and every bisected threshold).
 //
 // What counts as a regression:
@@ -28,12 +28,16 @@ struct BounceBaseline {
   SweepParameter parameter = SweepParameter::spin_rev_s;
   std::vector<double> values;
   Convention convention = Convention::physical;
+  // Optional in the file (default newtonian): the case is loaded with environment.water_law set to
+  // it, so the law's published C_w applies unless the case gives water_coefficient.
+  WaterLaw water_law = WaterLaw::newtonian;
   SolverKind solver = SolverKind::realtime;
   // Solver settings given in the file (else the case's own [solver] / [reference]).
   std::string scheme;            // realtime
   double dt_s = 0, contact_dt_s = 0;
   std::string method;            // reference
   double rtol = 0, atol = 0;
+  std::string restart;           // reference: a RestartStrategy name, or empty for the case's
   double t_max_s = 0;            // 0: the case's
   double threshold_tolerance = 0.1;
   double compare_tolerance = 0.2;

@@ -4,6 +4,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <sstream>
 
 #include "verification/stones/contact_comparison.hpp"
 #include "verification/stones/parallel_runs.hpp"
@@ -22,6 +23,105 @@ double headline_of(const ContactComparison& c, HeadlineError h) {
   return h == HeadlineError::bounce_position ? c.max_exit_position_error_m : c.max_sink_position_error_m;
 }
 
+// Each throw under each law of the study (or as given).
+std::vector<ThrowProblem> studied_throws(const std::vector<ThrowProblem>& given, const WorkPrecisionOptions& o) {
+  if (o.laws.empty()) return given;
+  std::vector<ThrowProblem> out;
+  for (const auto& t : given) {
+    for (WaterLaw law : o.laws) {
+      ThrowProblem p = t;
+      set_water_law(p.environment, law);
+      p.label += std::string(" (") + to_string(law) + ")";
+      out.push_back(p);
+    }
+  }
+  return out;
+}
+
+void summarise_restarts(WorkPrecisionResult& res, const WorkPrecisionOptions& o) {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  std::vector<RestartSummary>& out = res.restarts;
+  for (ReferenceMethod m : o.methods) {
+    for (double rtol : o.rtol) {
+      const std::size_t first = out.size();
+      for (RestartStrategy rs : o.restarts) {
+        RestartSummary sum;
+        sum.method = m;
+        sum.rtol = rtol;
+        sum.restart = rs;
+        bool any_ok = false;
+        for (const auto& t : res.throws) {
+          for (const auto& p : t.points) {
+            if (p.realtime || p.method != m || p.restart != rs || p.setting != rtol) continue;
+            ++sum.throws;
+            sum.rhs_evaluations += p.rhs_evaluations;
+            sum.steps += p.steps;
+            sum.segments += p.segments;
+            sum.cpu_s += p.cpu_s;
+            if (!p.ok) {
+              ++sum.failed;
+              continue;
+            }
+            any_ok = true;
+            sum.worst_contact_time_error_s = std::max(sum.worst_contact_time_error_s, p.contact_time_error_s);
+          }
+        }
+        if (!any_ok) sum.worst_contact_time_error_s = kNaN;
+        out.push_back(sum);
+      }
+      // The tolerance at this method and rtol: every_event's own error sets the scale.
+      double every_event_worst = kNaN;
+      for (std::size_t k = first; k < out.size(); ++k)
+        if (out[k].restart == RestartStrategy::every_event) every_event_worst = out[k].worst_contact_time_error_s;
+      for (std::size_t k = first; k < out.size(); ++k) {
+        RestartSummary& sum = out[k];
+        sum.tolerance_s = std::isfinite(every_event_worst)
+                              ? std::max(o.restart_time_tolerance_s, o.restart_error_factor * every_event_worst)
+                              : o.restart_time_tolerance_s;
+        sum.keeps_contact_times = sum.failed == 0 && sum.throws > 0 && sum.worst_contact_time_error_s <= sum.tolerance_s;
+      }
+    }
+  }
+  // The verdict: the cheapest strategy (total right-hand sides) that keeps the contact times at
+  // every method and rtol; ties go to the strategy listed first.
+  RestartVerdict& v = res.restart_verdict;
+  std::ostringstream why;
+  for (RestartStrategy rs : o.restarts) {
+    long rhs = 0;
+    double cpu = 0;
+    bool keeps = true;
+    std::string first_miss;
+    for (const auto& sum : out) {
+      if (sum.restart != rs) continue;
+      rhs += sum.rhs_evaluations;
+      cpu += sum.cpu_s;
+      if (!sum.keeps_contact_times && keeps) {
+        keeps = false;
+        std::ostringstream m;
+        m << to_string(sum.method) << " rtol " << sum.rtol << ": "
+          << (sum.failed ? std::to_string(sum.failed) + " failed or changed contact lists"
+                         : "contact-time error " + std::to_string(sum.worst_contact_time_error_s) + " s > " +
+                               std::to_string(sum.tolerance_s) + " s");
+        first_miss = m.str();
+      }
+    }
+    if (rs == RestartStrategy::every_event) {
+      v.every_event_rhs_evaluations = rhs;
+      v.every_event_cpu_s = cpu;
+    }
+    why << to_string(rs) << ": " << rhs << " right-hand sides, " << (keeps ? "keeps the contact times" : "does not (" + first_miss + ")")
+        << "; ";
+    if (keeps && (!v.found || rhs < v.rhs_evaluations)) {
+      v.found = true;
+      v.restart = rs;
+      v.rhs_evaluations = rhs;
+      v.cpu_s = cpu;
+    }
+  }
+  v.reason = why.str();
+  if (v.reason.size() >= 2) v.reason.resize(v.reason.size() - 2);
+}
+
 }  // namespace
 
 const char* to_string(HeadlineError h) {
@@ -32,10 +132,15 @@ const char* to_string(HeadlineError h) {
   return "?";
 }
 
-WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& throws, const WorkPrecisionOptions& o) {
+WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& given, const WorkPrecisionOptions& o) {
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<ThrowProblem> throws = studied_throws(given, o);
   WorkPrecisionResult res;
   res.throws.resize(throws.size());
+  for (std::size_t k = 0; k < throws.size(); ++k) {
+    res.throws[k].label = throws[k].label;
+    res.throws[k].law = throws[k].environment.water_law;
+  }
 
   // 1. The truth for every throw, and a tighter check of it.
   {
@@ -48,7 +153,7 @@ WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& throws, 
           r.rtol = o.truth_rtol * (c ? o.truth_check_factor : 1.0);
           r.atol = o.atol_ratio * r.rtol;
           r.record_trajectory = false;
-          res.throws[k].label = throws[k].label;
+          r.restart = RestartStrategy::every_event;  // the truth restarts at every located event
           (c ? checks[k] : res.throws[k].truth) = solve(throws[k], reference_choice(r));
         });
     }
@@ -84,19 +189,24 @@ WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& throws, 
       }
     }
     for (ReferenceMethod m : o.methods) {
-      for (double rtol : o.rtol) {
-        Job j;
-        j.throw_index = k;
-        j.point.family = std::string("CVODE ") + to_string(m);
-        j.point.realtime = false;
-        j.point.setting = rtol;
-        ReferenceOptions r = throws[k].reference;
-        r.method = m;
-        r.rtol = rtol;
-        r.atol = o.atol_ratio * rtol;
-        r.record_trajectory = false;
-        j.choice = reference_choice(r);
-        jobs.push_back(j);
+      for (RestartStrategy rs : o.restarts) {
+        for (double rtol : o.rtol) {
+          Job j;
+          j.throw_index = k;
+          j.point.family = std::string("CVODE ") + to_string(m) + ", restart " + to_string(rs);
+          j.point.realtime = false;
+          j.point.method = m;
+          j.point.restart = rs;
+          j.point.setting = rtol;
+          ReferenceOptions r = throws[k].reference;
+          r.method = m;
+          r.restart = rs;
+          r.rtol = rtol;
+          r.atol = o.atol_ratio * rtol;
+          r.record_trajectory = false;
+          j.choice = reference_choice(r);
+          jobs.push_back(j);
+        }
       }
     }
   }
@@ -112,6 +222,7 @@ WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& throws, 
         p.cpu_s = r.stats.cpu_s;
         p.rhs_evaluations = r.stats.rhs_evaluations;
         p.steps = r.stats.steps;
+        p.segments = r.stats.segments;
         const ContactComparison c = compare_contacts(r, truth);
         if (r.outcome == Outcome::failed) {
           p.problem = r.outcome_detail;
@@ -158,6 +269,7 @@ WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& throws, 
       }
     }
   }
+  if (!o.restarts.empty()) summarise_restarts(res, o);
   return res;
 }
 

@@ -1,0 +1,34 @@
+#pragma once
+// Per-component absolute tolerances of the CVODE reference (CVodeSVtolerances; issue 8, defect 5).
+// One scalar atol on all 13 components of [x, v, q, L] asks for very different accuracies: 1e-12
+// is 1e-12 of a 1 m position but 1e-7 of the 1e-5 kg m²/s angular momentum of a slow stone. Here
+// ReferenceOptions::atol is the tolerance on positions (m), and every other component gets the
+// tolerance whose effect on the stone is the same displacement of its rim, from three scales of
+// the stone and the throw:
+//   ℓ  = the stone's bounding radius (m): how far the geometry of the contact reaches;
+//   V  = |v₀| + |ω₀| ℓ, at least √(g ℓ) (m/s): the fastest a point of the stone moves at release
+//        (√(g ℓ): the speed of a stone dropped from rest, falling one radius; ℓ per second for a
+//        stone at rest without gravity);
+//   L₀ = I_min V / ℓ (kg m²/s): the angular momentum that turns the rim at V about the principal
+//        axis of least inertia (the most sensitive one).
+// Tolerances: position atol; velocity atol·V/ℓ (over the time ℓ/V in which a contact develops, a
+// velocity error moves the stone by atol); quaternion atol/ℓ (an attitude error that moves the rim
+// by atol); angular momentum atol·L₀/ℓ (the angular-velocity error atol·V/ℓ² of the least-inertia
+// axis moves the rim at atol·V/ℓ, like the velocity tolerance).
+#include "model/stone/rigid_state.hpp"
+#include "solvers/reference/reference_options.hpp"
+
+namespace stoneskip {
+
+struct StateScales {
+  double length_m = 1;
+  double speed_m_s = 1;
+  double angular_momentum_kg_m2_s = 1;
+};
+
+StateScales state_scales(const Stone& stone, const RigidState& initial, double gravity_m_s2);
+
+// The 13 absolute tolerances (per_component as above; uniform: atol everywhere).
+StateVector absolute_tolerances(const ReferenceOptions& o, const StateScales& scales);
+
+}  // namespace stoneskip

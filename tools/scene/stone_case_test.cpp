@@ -1,0 +1,85 @@
+// The keys this module added to stone cases (cases/README.md): [environment] water_law with each
+// law's published C_w, [reference] restart and atol_scaling; strict one-line errors for bad values
+// and for a law the paper convention does not have; resolved settings that read back the same.
+#include <boost/test/unit_test.hpp>
+
+#include "tools/io/input_error.hpp"
+#include "tools/scene/stone_case.hpp"
+
+using namespace stoneskip;
+
+namespace {
+
+const char* kCase = R"([stone]
+shape = "prism"
+radius_m = 0.03
+thickness_m = 0.008
+density_kg_m3 = 2500.0
+[throw]
+speed_m_s = 8.0
+path_angle_deg = 10.0
+attack_angle_deg = 10.0
+height_m = 0.1
+[solver]
+dt_s = 1.0e-3
+contact_dt_s = 1.0e-5
+t_max_s = 1.0
+)";
+
+StoneCase parse(const std::vector<std::string>& overrides) {
+  return stone_case_from_document(parse_toml_text(kCase, "law.toml", overrides));
+}
+
+// The one-line message of the InputError thrown, or "" if none.
+std::string error_of(const std::vector<std::string>& overrides) {
+  try {
+    parse(overrides);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(stone_case_keys)
+
+BOOST_AUTO_TEST_CASE(a_water_law_takes_its_published_coefficient_unless_one_is_given) {
+  // Oracle: cases/README.md — water_law defaults to newtonian (C_w 1); planing takes ½, lift_drag
+  // 0.7 (environment.hpp's published values); an explicit water_coefficient wins.
+  BOOST_TEST((parse({}).environment.water_law == WaterLaw::newtonian));
+  BOOST_TEST(parse({}).environment.water_coefficient == 1.0);
+  BOOST_TEST((parse({"environment.water_law=planing"}).environment.water_law == WaterLaw::planing));
+  BOOST_TEST(parse({"environment.water_law=planing"}).environment.water_coefficient == 0.5);
+  BOOST_TEST(parse({"environment.water_law=lift_drag"}).environment.water_coefficient == 0.7);
+  BOOST_TEST(parse({"environment.water_law=planing", "environment.water_coefficient=0.8"}).environment.water_coefficient == 0.8);
+}
+
+BOOST_AUTO_TEST_CASE(bad_laws_and_strategies_are_one_line_errors_naming_the_key) {
+  // Oracle: the strict-parsing rule of cases/README.md: file, key and what is wrong, one line.
+  const std::string misspelt = error_of({"environment.water_law=planning"});
+  BOOST_TEST(misspelt.find("law.toml") != std::string::npos, misspelt);
+  BOOST_TEST(misspelt.find("environment.water_law") != std::string::npos, misspelt);
+  BOOST_TEST(misspelt.find("planning") != std::string::npos, misspelt);
+  BOOST_TEST(misspelt.find('\n') == std::string::npos);
+  const std::string paper = error_of({"environment.convention=paper", "environment.water_law=planing"});
+  BOOST_TEST(paper.find("environment.water_law") != std::string::npos, paper);
+  BOOST_TEST(paper.find("paper convention") != std::string::npos, paper);
+  BOOST_TEST(error_of({"reference.restart=sometimes"}).find("reference.restart") != std::string::npos);
+  BOOST_TEST(error_of({"reference.atol_scaling=scalar"}).find("reference.atol_scaling") != std::string::npos);
+  BOOST_TEST(error_of({"reference.locate_switches=true"}).find("reference.locate_switches") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(restart_and_tolerance_scaling_are_read_and_written_back) {
+  // Oracle: the values given; resolved_settings() must name them so the run can be repeated.
+  const StoneCase c = parse({"reference.restart=every_event", "reference.atol_scaling=uniform", "environment.water_law=planing"});
+  BOOST_TEST((c.reference.restart == RestartStrategy::every_event));
+  BOOST_TEST((c.reference.atol_scaling == ToleranceScaling::uniform));
+  const std::string s = c.resolved_settings();
+  BOOST_TEST(s.find("restart = \"every_event\"") != std::string::npos, s);
+  BOOST_TEST(s.find("atol_scaling = \"uniform\"") != std::string::npos, s);
+  BOOST_TEST(s.find("water_law = \"planing\"") != std::string::npos, s);
+  BOOST_TEST((parse({}).reference.restart == ReferenceOptions{}.restart));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
