@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "reports/common/markdown.hpp"
-#include "tools/capture/mounting.hpp"
+#include "verification/captures/mounting.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/hdf5_file.hpp"
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "tools/capture/capture_trace.hpp"
+#include "verification/captures/capture_trace.hpp"
 
 namespace stoneskip {
 

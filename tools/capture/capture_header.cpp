@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "tools/capture/capture_text.hpp"
-#include "tools/capture/mounting.hpp"
+#include "verification/captures/mounting.hpp"
 #include "tools/capture/wiimote_report.hpp"
 #include "tools/io/input_error.hpp"
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-#include "tools/capture/capture_trace.hpp"
+#include "verification/captures/capture_trace.hpp"
 
 namespace stoneskip {
 

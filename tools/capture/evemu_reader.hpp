@@ -12,7 +12,7 @@
 // (capture_header.hpp), else the nominal calibration with a warning.
 #include <string>
 
-#include "tools/capture/capture_trace.hpp"
+#include "verification/captures/capture_trace.hpp"
 
 namespace stoneskip {
 

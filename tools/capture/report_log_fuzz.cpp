@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "tools/capture/capture_analysis.hpp"
+#include "verification/captures/capture_analysis.hpp"
 #include "tools/capture/capture_format.hpp"
 #include "tools/io/input_error.hpp"
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "tools/capture/mounting.hpp"
+#include "verification/captures/mounting.hpp"
 
 namespace stoneskip {
 

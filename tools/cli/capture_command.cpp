@@ -25,12 +25,13 @@
 #include "reports/capture/capture_json.hpp"
 #include "reports/capture/capture_report.hpp"
 #include "tools/capture/capture_format.hpp"
-#include "tools/capture/capture_throw.hpp"
+#include "verification/captures/capture_throw.hpp"
 #include "tools/capture/synthetic_capture.hpp"
 #include "tools/capture/trace_csv.hpp"
 #include "tools/cli/command_registry.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/progress.hpp"
 #include "tools/scene/stone_case.hpp"
 #include "tools/scene/throw_output.hpp"
 
@@ -173,8 +174,13 @@ void validate(const CaptureArgs& a) {
       so.reference = !a.no_reference;
       so.realtime_options = c->realtime;
       so.reference_options = c->reference;
-      so.progress = a.progress;
+      std::optional<Progress> progress;
+      if (a.progress) {
+        progress.emplace("capture ensemble " + an->source, an->ensemble.size());
+        so.progress = [&progress](std::size_t, std::size_t) { progress->tick(); };
+      }
       *sim = simulate_capture(c->stone, c->environment, *an, so);
+      if (progress) progress->done();
     }
     unusable = unusable || !an->can_throw();
     if (a.json) std::cout << capture_json(*an, c ? sim.get() : nullptr).dump() << std::endl;

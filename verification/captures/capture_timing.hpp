@@ -13,7 +13,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "tools/capture/capture_trace.hpp"
+#include "verification/captures/capture_trace.hpp"
 
 namespace stoneskip {
 

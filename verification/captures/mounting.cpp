@@ -1,9 +1,9 @@
-#include "tools/capture/mounting.hpp"
+#include "verification/captures/mounting.hpp"
 
 #include <cmath>
 #include <cstdio>
 
-#include "tools/capture/capture_text.hpp"
+#include "verification/captures/strict_numbers.hpp"
 #include "tools/io/input_error.hpp"
 
 namespace stoneskip {

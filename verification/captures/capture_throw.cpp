@@ -1,9 +1,8 @@
-#include "tools/capture/capture_throw.hpp"
+#include "verification/captures/capture_throw.hpp"
 
 #include <algorithm>
 #include <chrono>
 
-#include "tools/io/progress.hpp"
 
 namespace stoneskip {
 
@@ -26,16 +25,13 @@ CaptureSimulation simulate_capture(const Stone& stone, const Environment& env, c
   if (o.ensemble && !a.ensemble.empty()) {
     RealtimeOptions ro = o.realtime_options;
     ro.record_trajectory = false;
-    std::optional<Progress> progress;
-    if (o.progress) progress.emplace("capture ensemble " + a.source, a.ensemble.size());
     const auto start = std::chrono::steady_clock::now();
     for (const ReleaseKinematics& m : a.ensemble) {
       const ThrowResult r = run_realtime(stone, env, capture_initial_state(stone, m), ro);
       sim.ensemble_bounces.push_back(r.bounces);
       ++sim.bounce_histogram[r.bounces];
-      if (progress) progress->tick();
+      if (o.progress) o.progress(sim.ensemble_bounces.size(), a.ensemble.size());
     }
-    if (progress) progress->done();
     sim.ensemble_cpu_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::vector<int> b = sim.ensemble_bounces;
     std::sort(b.begin(), b.end());

@@ -29,9 +29,9 @@
 #include <vector>
 
 #include "model/stone/stone.hpp"
-#include "tools/capture/capture_timing.hpp"
-#include "tools/capture/capture_trace.hpp"
-#include "tools/capture/mounting.hpp"
+#include "verification/captures/capture_timing.hpp"
+#include "verification/captures/capture_trace.hpp"
+#include "verification/captures/mounting.hpp"
 
 namespace stoneskip {
 

@@ -1,4 +1,4 @@
-#include "tools/capture/capture_chain.hpp"
+#include "verification/captures/capture_chain.hpp"
 
 #include <algorithm>
 #include <cmath>

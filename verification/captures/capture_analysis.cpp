@@ -1,4 +1,4 @@
-#include "tools/capture/capture_analysis.hpp"
+#include "verification/captures/capture_analysis.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "model/stone/throw.hpp"
-#include "tools/capture/capture_chain.hpp"
+#include "verification/captures/capture_chain.hpp"
 
 namespace stoneskip {
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "tools/capture/capture_analysis.hpp"
+#include "verification/captures/capture_analysis.hpp"
 
 namespace stoneskip {
 

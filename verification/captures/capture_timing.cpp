@@ -1,4 +1,4 @@
-#include "tools/capture/capture_timing.hpp"
+#include "verification/captures/capture_timing.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -3,12 +3,13 @@
 // release state through the real-time model and/or the CVODE reference, and the ensemble of
 // perturbed release states (capture_analysis.hpp) through the real-time model only (cheap), which
 // turns the capture's uncertainty into a distribution of bounce counts.
+#include <functional>
 #include <map>
 #include <optional>
 
 #include "solvers/realtime/stone_stepper.hpp"
 #include "solvers/reference/cvode_stone.hpp"
-#include "tools/capture/capture_analysis.hpp"
+#include "verification/captures/capture_analysis.hpp"
 
 namespace stoneskip {
 
@@ -22,7 +23,8 @@ struct CaptureSimulationOptions {
   bool ensemble = true;        // the ensemble through the real-time model
   RealtimeOptions realtime_options;
   ReferenceOptions reference_options;
-  bool progress = false;       // progress on stderr for the ensemble
+  // Called after each ensemble member (done, total); empty: no progress. Nothing here prints.
+  std::function<void(std::size_t done, std::size_t total)> progress;
 };
 
 struct CaptureSimulation {
