@@ -2,27 +2,39 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <numbers>
 
-#include "model/stone/throw.hpp"
 #include "verification/captures/capture_chain.hpp"
 
 namespace stoneskip {
 
-const char* to_string(Verdict v) {
-  switch (v) {
-    case Verdict::usable: return "usable";
-    case Verdict::usable_with_caveats: return "usable with caveats";
-    case Verdict::unusable: return "unusable";
-  }
-  return "?";
-}
-
 bool ReleaseKinematics::finite() const {
   return velocity_m_s.allFinite() && accel_velocity_m_s.allFinite() && lever_velocity_m_s.allFinite() &&
+         measured.velocity_m_s.allFinite() && measured.omega_body_rad_s.allFinite() && std::isfinite(measured.rise_m) &&
          omega_body_rad_s.allFinite() && std::isfinite(height_m) && std::isfinite(stone_orientation.w()) &&
          stone_orientation.vec().allFinite();
+}
+
+bool CaptureOptions::is_valid(std::string* why) const {
+  auto fail = [&](const std::string& w) {
+    if (why) *why = w;
+    return false;
+  };
+  if (!(saturation_g > 0 && saturation_g < 1000)) return fail("saturation_g must be in (0, 1000) g");
+  if (!(max_accel_g >= saturation_g && max_accel_g < 1000)) return fail("max_accel_g must be at least saturation_g and below 1000 g");
+  if (!(gravity_m_s2 > 0 && gravity_m_s2 < 100)) return fail("gravity_m_s2 must be in (0, 100)");
+  if (!(min_still_s > 0 && min_still_s <= 10)) return fail("min_still_s must be in (0, 10] s");
+  if (!(still_accel_tol_g > 0 && still_accel_tol_g < 1)) return fail("still_accel_tol_g must be in (0, 1) g");
+  if (!(still_rate_tol_deg_s > 0 && still_rate_tol_deg_s < 100)) return fail("still_rate_tol_deg_s must be in (0, 100) deg/s");
+  if (!(accel_noise_g >= 0 && accel_noise_g < 1)) return fail("accel_noise_g must be in [0, 1) g");
+  if (!(accel_bias_g >= 0 && accel_bias_g < 1)) return fail("accel_bias_g must be in [0, 1) g");
+  if (!(gyro_noise_deg_s >= 0 && gyro_noise_deg_s < 100)) return fail("gyro_noise_deg_s must be in [0, 100) deg/s");
+  if (!(gyro_scale_rel_uncertainty >= 0 && gyro_scale_rel_uncertainty < 1))
+    return fail("gyro_scale_rel_uncertainty must be in [0, 1)");
+  if (members < 0 || members > 100000) return fail("members must be in [0, 100000]");
+  if (!(timing.gap_factor > 1 && timing.gap_factor < 100)) return fail("timing.gap_factor must be in (1, 100)");
+  if (!(timing.regular_max_residual_intervals > 0 && timing.regular_max_residual_intervals <= 1))
+    return fail("timing.regular_max_residual_intervals must be in (0, 1]");
+  return thrower.is_valid(why) && rules.is_valid(why);
 }
 
 Mounting resolve_mounting(const Trace& trace, const std::vector<std::string>& overrides) {
@@ -32,13 +44,14 @@ Mounting resolve_mounting(const Trace& trace, const std::vector<std::string>& ov
   return m;
 }
 
-namespace {
-
-std::string format(const char* fmt, double a = 0, double b = 0, double c = 0) {
-  char buf[320];
-  std::snprintf(buf, sizeof buf, fmt, a, b, c);
-  return buf;
+VirtualThrowerOptions resolve_thrower(const Trace& trace, const std::vector<std::string>& overrides) {
+  VirtualThrowerOptions o;
+  for (const auto& s : trace.thrower) apply_thrower_setting(o, s, trace.source);
+  for (const auto& s : overrides) apply_thrower_setting(o, s, "--thrower");
+  return o;
 }
+
+namespace {
 
 const char* axis_name(int i) { return i == 0 ? "X" : i == 1 ? "Y" : "Z"; }
 
@@ -51,51 +64,123 @@ double percentile(std::vector<double> v, double p) {
   return i + 1 < v.size() ? v[i] * (1 - f) + v[i + 1] * f : v[i];
 }
 
-Interval interval_of(double nominal, const std::vector<ReleaseKinematics>& e, double ReleaseKinematics::*field) {
+// The nominal value joined with the 2.5–97.5 % range of the members.
+template <class Get>
+Interval interval_of(const ReleaseKinematics& nominal, const std::vector<ReleaseKinematics>& e, Get get) {
   std::vector<double> v;
   for (const auto& m : e)
-    if (std::isfinite(m.*field)) v.push_back(m.*field);
-  Interval r{nominal, nominal, nominal};
+    if (std::isfinite(get(m))) v.push_back(get(m));
+  const double x = get(nominal);
+  Interval r{x, x, x};
   if (v.empty()) return r;
-  r.low = std::min(nominal, percentile(v, 0.025));
-  r.high = std::max(nominal, percentile(v, 0.975));
+  r.low = std::min(x, percentile(v, 0.025));
+  r.high = std::max(x, percentile(v, 0.975));
   return r;
 }
 
-// The still part: the latest window of at least min_still_s before `last` where accelerometer and
-// gyro stay within tolerance of their window means; then grown backwards (up to 2 s).
-bool find_still(const ChainInput& in, const CaptureOptions& o, std::size_t last, std::size_t& begin, std::size_t& end) {
+// Step 3: the release from the action button (or the file's end).
+void locate_release(CaptureAnalysis& a, const ChainInput& in, const Trace& trace, unsigned button) {
   const std::size_t n = in.t_s.size();
-  if (n < 3 || last >= n) return false;
-  const double period = in.period_s > 0 ? in.period_s : 0.01;
-  const std::size_t w = std::size_t(std::clamp(std::ceil(o.min_still_s / period), 3.0, 100000.0));
-  if (w > last + 1) return false;
-  auto quiet = [&](std::size_t b, std::size_t e) {
-    Vec3 fa = Vec3::Zero(), wa = Vec3::Zero();
-    for (std::size_t k = b; k <= e; ++k) {
-      if (in.flags[k] & (kAccelSaturated | kGyroSaturated)) return false;
-      fa += in.accel_g[k];
-      wa += in.rate_slow_deg_s(k);
+  if (n < 2) return;
+  if (trace.has_buttons) {
+    std::size_t last_down = n;
+    for (std::size_t k = n; k-- > 0;)
+      if (in.buttons[k] & button) {
+        last_down = k;
+        break;
+      }
+    if (last_down == n) return;  // no press
+    a.press_found = a.release_found = true;
+    a.release_sample = last_down;
+    if (last_down + 1 < n) {
+      a.release_t_low_s = in.t_s[last_down];
+      a.release_t_high_s = in.t_s[last_down + 1];
+      a.release_t_s = 0.5 * (a.release_t_low_s + a.release_t_high_s);
+    } else {
+      a.release_at_end = true;
     }
-    fa /= double(e - b + 1);
-    wa /= double(e - b + 1);
-    if (std::abs(fa.norm() - 1.0) > 0.3 || wa.cwiseAbs().maxCoeff() > 60.0) return false;
-    for (std::size_t k = b; k <= e; ++k) {
-      if ((in.accel_g[k] - fa).cwiseAbs().maxCoeff() > o.still_accel_tol_g) return false;
-      if ((in.rate_slow_deg_s(k) - wa).cwiseAbs().maxCoeff() > o.still_rate_tol_deg_s) return false;
-    }
-    return true;
-  };
-  for (std::size_t e = last + 1; e-- > w - 1;) {
-    if (!quiet(e + 1 - w, e)) continue;
-    std::size_t b = e + 1 - w;
-    const std::size_t max_len = std::size_t(std::clamp(2.0 / period, double(w), 100000.0));
-    while (b > 0 && e - b + 2 <= max_len && quiet(b - 1, e)) --b;
-    begin = b;
-    end = e;
-    return true;
+  } else {
+    a.press_found = a.release_found = a.release_at_end = true;
   }
-  return false;
+  if (a.release_at_end) {
+    // The button went up after the last sample, before the next report would have come.
+    a.release_sample = n - 1;
+    a.release_t_low_s = in.t_s[n - 1];
+    a.release_t_high_s = in.t_s[n - 1] + (in.period_s > 0 ? in.period_s : in.t_s[n - 1] - in.t_s[n - 2]);
+    a.release_t_s = 0.5 * (a.release_t_low_s + a.release_t_high_s);
+  }
+}
+
+// Step 4 and the swing between the still part and the release.
+void locate_still_part(CaptureAnalysis& a, const ChainInput& in, const CaptureOptions& o) {
+  if (!a.release_found) return;
+  a.still_found = find_still(in, o, a.release_sample, a.still_begin, a.still_end);
+  if (!a.still_found) return;
+  const std::size_t n = in.t_s.size();
+  a.still_t0_s = in.t_s[a.still_begin];
+  a.still_t1_s = in.t_s[a.still_end];
+  for (std::size_t k = a.still_end; k <= std::min(a.release_sample + 1, n - 1); ++k) {
+    ++a.swing_samples;
+    if (in.flags[k] & kAccelSaturated) ++a.saturated_in_swing;
+    if (in.flags[k] & kGyroSaturated) a.gyro_saturated_in_swing = true;
+  }
+  a.clipped = a.saturated_in_swing > 0;
+  for (int i = 0; i < 3; ++i) {
+    bool on_axis = false;
+    for (const auto& s : a.spans)
+      if (s.axis == i && s.t1_s >= a.still_t1_s && s.t0_s <= a.release_t_high_s) on_axis = true;
+    if (on_axis) a.clipped_axes += std::string(a.clipped_axes.empty() ? "" : ", ") + axis_name(i);
+  }
+}
+
+// Steps 5–8 for the nominal throw, the accelerometer's bounds and the ensemble, with intervals.
+void estimate_throw(CaptureAnalysis& a, const ChainInput& in, const CaptureOptions& o) {
+  ChainDiagnostics d;
+  a.nominal = run_chain(in, o, Perturbation{}, &a.series, &d);
+  a.nominal_computed = true;
+  a.still_accel_g = d.still_accel_g;
+  a.still_accel_error_g = d.still_accel_g - 1.0;
+  a.gyro_bias_deg_s = d.gyro_bias_deg_s;
+  if (!a.nominal.finite()) return;
+  a.accel_lower = a.nominal;
+  a.accel_upper = a.clipped ? run_chain(in, o, Perturbation{Perturb::none, ClipFill::at_max, 0}, nullptr, nullptr) : a.nominal;
+  std::mt19937_64 seeds(o.seed);
+  for (int m = 0; m < o.members; ++m) {
+    const Perturbation p{Perturb::random, a.clipped ? ClipFill::random_bump : ClipFill::as_recorded, seeds()};
+    const ReleaseKinematics r = run_chain(in, o, p, nullptr, nullptr);
+    if (r.finite()) a.ensemble.push_back(r);
+  }
+  const auto& e = a.ensemble;
+  const ReleaseKinematics& nom = a.nominal;
+  using R = const ReleaseKinematics&;
+  a.speed_m_s = interval_of(nom, e, [](R r) { return r.speed_m_s; });
+  a.attack_angle_deg = interval_of(nom, e, [](R r) { return r.attack_angle_deg; });
+  a.path_angle_deg = interval_of(nom, e, [](R r) { return r.path_angle_deg; });
+  a.spin_rev_s = interval_of(nom, e, [](R r) { return r.spin_rev_s; });
+  a.height_m = interval_of(nom, e, [](R r) { return r.height_m; });
+  a.accel_speed_m_s = interval_of(nom, e, [](R r) { return r.accel_speed_m_s; });
+  a.lever_speed_m_s = interval_of(nom, e, [](R r) { return r.lever_speed_m_s; });
+  a.measured_speed_m_s = interval_of(nom, e, [](R r) { return r.measured_speed_m_s; });
+  a.measured_spin_rev_s = interval_of(nom, e, [](R r) { return r.measured_spin_rev_s; });
+  a.rise_m = interval_of(nom, e, [](R r) { return r.measured.rise_m; });
+  if (a.clipped) {
+    // The accelerometer alone bounds the speed and the rise: clipped spans as recorded … at
+    // max_accel_g. The measured (and so the virtual) speed spans them and the lever arm's interval.
+    auto widen = [](Interval& v, double x, double y) {
+      v.low = std::min({v.low, x, y});
+      v.high = std::max({v.high, x, y});
+    };
+    widen(a.accel_speed_m_s, a.accel_lower.accel_speed_m_s, a.accel_upper.accel_speed_m_s);
+    widen(a.rise_m, a.accel_lower.measured.rise_m, a.accel_upper.measured.rise_m);
+    widen(a.measured_speed_m_s, a.accel_speed_m_s.low, a.accel_speed_m_s.high);
+    widen(a.measured_speed_m_s, a.lever_speed_m_s.low, a.lever_speed_m_s.high);
+    const double scale = o.thrower.speed_scale;
+    widen(a.speed_m_s, scale * a.measured_speed_m_s.low, scale * a.measured_speed_m_s.high);
+    if (o.thrower.height_mapping == HeightMapping::still_part_height)
+      widen(a.height_m, o.thrower.still_height_m + a.rise_m.low - o.thrower.height_uncertainty_m,
+            o.thrower.still_height_m + a.rise_m.high + o.thrower.height_uncertainty_m);
+  }
+  a.speed_difference_m_s = nom.accel_speed_m_s - nom.lever_speed_m_s;
 }
 
 }  // namespace
@@ -106,11 +191,9 @@ CaptureAnalysis analyse_capture(const Trace& trace, const CaptureOptions& option
   a.format = trace.format;
   a.trace = trace;
   a.options = options;
-  a.timing = analyse_timing(trace);
-  const TimingStats& ts = a.timing.stats;
-  std::vector<std::string> fatal, caveats;
-
-  // The kept samples, with saturation flags.
+  a.notes = trace.notes;
+  // 1–2. Timing, the kept samples and their saturation flags.
+  a.timing = analyse_timing(trace, options.timing);
   ChainInput in = make_chain_input(trace, a.timing, options);
   const std::size_t n = in.t_s.size();
   for (std::size_t k = 0; k < n; ++k) {
@@ -121,175 +204,28 @@ CaptureAnalysis analyse_capture(const Trace& trace, const CaptureOptions& option
   a.saturated_fraction = n ? double(a.saturated_any) / double(n) : 0.0;
   a.spans = saturated_spans(in);
   a.gyro_range_switches = count_range_switches(in);
-
-  // Series for the plots (filled further by the nominal chain).
   a.series.t_s = in.t_s;
   a.series.accel_g = in.accel_g;
   a.series.buttons = in.buttons;
   a.series.flags = in.flags;
-
-  if (!trace.has_gyro) fatal.push_back("no MotionPlus data: the orientation through the throw cannot be followed");
-  if (n < 10) fatal.push_back(format("only %.0f usable samples", double(n)));
-  if (!ts.ok) fatal.push_back("no sample rate can be found from the timestamps");
-  else if (ts.rate_hz < 20.0) fatal.push_back(format("sample rate %.3g Hz is too low (a throw lasts about 0.2 s)", ts.rate_hz));
-
-  // The release.
-  if (n >= 2) {
-    if (trace.has_buttons) {
-      std::size_t last_down = n;
-      for (std::size_t k = n; k-- > 0;)
-        if (in.buttons[k] & options.release_button) {
-          last_down = k;
-          break;
-        }
-      if (last_down == n) {
-        fatal.push_back(std::string("no press of the action button (") +
-                        (options.release_button == kButtonA ? "A" : "B") + ") found: the release cannot be located");
-      } else {
-        a.press_found = true;
-        a.release_sample = last_down;
-        if (last_down + 1 < n) {
-          a.release_found = true;
-          a.release_t_low_s = in.t_s[last_down];
-          a.release_t_high_s = in.t_s[last_down + 1];
-          a.release_t_s = 0.5 * (a.release_t_low_s + a.release_t_high_s);
-        } else {
-          a.release_found = true;
-          a.release_at_end = true;
-          caveats.push_back("the button is still held at the end of the file: the release is taken at the file's end");
-        }
-      }
-    } else {
-      a.press_found = a.release_found = a.release_at_end = true;
-      a.release_sample = n - 1;
-    }
-    if (a.release_at_end) {
-      a.release_sample = n - 1;
-      a.release_t_s = a.release_t_high_s = in.t_s[n - 1];
-      a.release_t_low_s = in.t_s[n - 2];
-    }
-    if (a.release_found && a.release_t_high_s - a.release_t_low_s > 0.1)
-      fatal.push_back(format("the release falls in a gap of %.3g s: its state is unknown",
-                             a.release_t_high_s - a.release_t_low_s));
-  }
-
-  // The still part.
-  if (a.release_found) {
-    a.still_found = find_still(in, options, a.release_sample, a.still_begin, a.still_end);
-    if (!a.still_found)
-      fatal.push_back(format("no still part of at least %.3g s before the release: gravity and the gyro bias cannot be found",
-                             options.min_still_s));
-  }
+  // 3–4. Release and still part.
+  locate_release(a, in, trace, options.release_button);
+  locate_still_part(a, in, options);
   in.still_begin = a.still_begin;
   in.still_end = a.still_end;
   in.release_sample = a.release_sample;
   in.release_t_s = a.release_t_s;
   in.release_t_low_s = a.release_t_low_s;
   in.release_t_high_s = a.release_t_high_s;
-
-  if (a.still_found) {
-    for (std::size_t k = a.still_end; k <= std::min(a.release_sample + 1, n - 1); ++k) {
-      ++a.swing_samples;
-      if (in.flags[k] & kAccelSaturated) ++a.saturated_in_swing;
-      if (in.flags[k] & kGyroSaturated) a.gyro_saturated_in_swing = true;
-    }
-    a.clipped = a.saturated_in_swing > 0;
-    in.use_lever = a.clipped;
-    a.still_t0_s = in.t_s[a.still_begin];
-    a.still_t1_s = in.t_s[a.still_end];
-  }
-
-  if (fatal.empty()) {
-    ChainDiagnostics d;
-    a.nominal = run_chain(in, options, Perturbation{}, &a.series, &d);
-    a.still_accel_g = d.still_accel_g;
-    a.still_accel_error_g = d.still_accel_g - 1.0;
-    a.gyro_bias_deg_s = d.gyro_bias_deg_s;
-    if (!a.nominal.finite()) fatal.push_back("the release state is not finite (numbers out of range in the capture)");
-  }
-
-  if (fatal.empty()) {
-    // Bounds from the accelerometer and the ensemble.
-    a.accel_lower = a.nominal;
-    a.accel_upper = a.clipped ? run_chain(in, options, Perturbation{false, ClipFill::at_max, 0}, nullptr, nullptr) : a.nominal;
-    std::mt19937_64 seeds(options.seed);
-    for (int m = 0; m < options.members; ++m) {
-      Perturbation p{true, a.clipped ? ClipFill::random_bump : ClipFill::as_recorded, seeds()};
-      const ReleaseKinematics r = run_chain(in, options, p, nullptr, nullptr);
-      if (r.finite()) a.ensemble.push_back(r);
-    }
-    a.speed_m_s = interval_of(a.nominal.speed_m_s, a.ensemble, &ReleaseKinematics::speed_m_s);
-    a.accel_speed_m_s = interval_of(a.nominal.accel_speed_m_s, a.ensemble, &ReleaseKinematics::accel_speed_m_s);
-    a.lever_speed_m_s = interval_of(a.nominal.lever_speed_m_s, a.ensemble, &ReleaseKinematics::lever_speed_m_s);
-    a.attack_angle_deg = interval_of(a.nominal.attack_angle_deg, a.ensemble, &ReleaseKinematics::attack_angle_deg);
-    a.path_angle_deg = interval_of(a.nominal.path_angle_deg, a.ensemble, &ReleaseKinematics::path_angle_deg);
-    a.spin_rev_s = interval_of(a.nominal.spin_rev_s, a.ensemble, &ReleaseKinematics::spin_rev_s);
-    a.height_m = interval_of(a.nominal.height_m, a.ensemble, &ReleaseKinematics::height_m);
-    if (a.clipped) {
-      // The accelerometer alone bounds the speed: clipped spans as recorded … at max_accel_g.
-      a.accel_speed_m_s.low = std::min(a.accel_speed_m_s.low, a.accel_lower.accel_speed_m_s);
-      a.accel_speed_m_s.high = std::max(a.accel_speed_m_s.high, a.accel_upper.accel_speed_m_s);
-      a.speed_m_s.low = std::min({a.speed_m_s.low, a.accel_speed_m_s.low, a.lever_speed_m_s.low});
-      a.speed_m_s.high = std::max({a.speed_m_s.high, a.accel_speed_m_s.high, a.lever_speed_m_s.high});
-    }
-    a.speed_difference_m_s = a.nominal.accel_speed_m_s - a.nominal.lever_speed_m_s;
-  }
-
-  // Caveats.
-  if (a.clipped) {
-    std::string axes;
-    for (int i = 0; i < 3; ++i) {
-      bool on_axis = false;
-      for (const auto& s : a.spans)
-        if (s.axis == i && s.t1_s >= a.still_t1_s && s.t0_s <= a.release_t_high_s) on_axis = true;
-      if (on_axis) axes += std::string(axes.empty() ? "" : ", ") + axis_name(i);
-    }
-    caveats.push_back(format("accelerometer clipped (|a| >= %.3g g) on ", options.saturation_g) + axes +
-                      format(" in %.0f of the swing's %.0f samples: the accelerometer gives only a lower bound on the speed "
-                             "(%.3g m/s)",
-                             a.saturated_in_swing, a.swing_samples, a.accel_lower.accel_speed_m_s) +
-                      format("; the throw uses the lever-arm estimate %.3g m/s", a.nominal.lever_speed_m_s));
-  } else if (a.saturated_any > 0) {
-    a.notes.push_back(format("accelerometer clipped in %.0f samples outside the swing (not used for the throw)",
-                             a.saturated_any));
-  }
-  if (a.gyro_saturated_in_swing) caveats.push_back("the MotionPlus reached the end of its range during the swing");
-  if (ts.ok && !ts.nominal) {
-    const double lost = double(ts.dropped_reports) / double(ts.dropped_reports + long(ts.used));
-    if (lost > 0.02) caveats.push_back(format("%.0f reports lost in %.0f gaps (%.2g %% of the reports)",
-                                             double(ts.dropped_reports), ts.gaps, 100 * lost));
-    else if (ts.dropped_reports > 0)
-      a.notes.push_back(format("%.0f reports lost in %.0f gaps", double(ts.dropped_reports), ts.gaps));
-    if (ts.jitter_s > 0.003) caveats.push_back(format("timestamp jitter %.3g ms (standard deviation of the intervals)", 1e3 * ts.jitter_s));
-  }
-  if (ts.repeated > 0) a.notes.push_back(format("%.0f repeated reports dropped", double(ts.repeated)));
-  if (a.still_found && fatal.empty()) {
-    const double err = std::abs(a.still_accel_error_g);
-    if (err > 3 * options.calibration_tol_g)
-      fatal.push_back(format("still-part |a| = %.4g g, not 1 g within %.3g g: the calibration is wrong", a.still_accel_g,
-                             3 * options.calibration_tol_g));
-    else if (err > options.calibration_tol_g)
-      caveats.push_back(format("still-part |a| = %.4g g differs from 1 g by more than %.3g g: check the calibration",
-                               a.still_accel_g, options.calibration_tol_g));
-  }
-  if (trace.nominal_timestamps)
-    caveats.push_back(format("no timestamps in the file: the nominal rate %.4g Hz was assumed", trace.nominal_rate_hz));
-  if (trace.gyro_mode_inferred && a.gyro_range_switches > 0)
-    caveats.push_back(format("%.0f MotionPlus range switches inferred from jumps (no range flags in the file)",
-                             a.gyro_range_switches));
-  if (!trace.calibration.accel_from_device)
-    caveats.push_back("no device calibration in the file: the nominal accelerometer calibration was used");
-  if (fatal.empty() && !a.clipped && a.nominal.lever_speed_m_s > 0 &&
-      std::abs(a.speed_difference_m_s) > 0.25 * a.nominal.speed_m_s)
-    caveats.push_back(format("the accelerometer (%.3g m/s) and the lever arm (%.3g m/s) disagree by more than 25 %%: "
-                             "check the mounting's lever arm",
-                             a.nominal.accel_speed_m_s, a.nominal.lever_speed_m_s));
-  if (!trace.warnings.empty())
-    caveats.push_back(format("%.0f reader warning(s), e.g. ", double(trace.warnings.size())) + trace.warnings.front());
-
-  a.reasons = fatal;
-  a.reasons.insert(a.reasons.end(), caveats.begin(), caveats.end());
-  a.verdict = !fatal.empty() ? Verdict::unusable : caveats.empty() ? Verdict::usable : Verdict::usable_with_caveats;
+  in.use_lever = a.clipped;
+  // 5–8. The throw, when the capture holds what it needs.
+  const TimingStats& ts = a.timing.stats;
+  const bool preconditions = trace.has_gyro && n >= options.rules.min_samples && ts.ok &&
+                             ts.rate_hz >= options.rules.min_rate_hz && a.release_found && a.still_found &&
+                             a.release_t_high_s - a.release_t_low_s <= options.rules.max_release_gap_s;
+  if (preconditions) estimate_throw(a, in, options);
+  // 9. The verdict.
+  judge_capture(a, options.rules);
   return a;
 }
 

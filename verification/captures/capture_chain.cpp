@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "model/stone/throw.hpp"
+#include "verification/captures/virtual_thrower.hpp"
 
 namespace stoneskip {
 
@@ -70,6 +71,44 @@ std::vector<SaturatedSpan> saturated_spans(const ChainInput& in) {
   return spans;
 }
 
+bool find_still(const ChainInput& in, const CaptureOptions& o, std::size_t last, std::size_t& begin, std::size_t& end) {
+  constexpr double kMaxStill_s = 2.0;   // the gravity direction and the bias need no more
+  constexpr std::size_t kMinSamples = 3;
+  const std::size_t n = in.t_s.size();
+  if (n < kMinSamples || last >= n) return false;
+  auto quiet = [&](std::size_t b, std::size_t e) {
+    Vec3 fa = Vec3::Zero(), wa = Vec3::Zero();
+    for (std::size_t k = b; k <= e; ++k) {
+      if (in.flags[k] & (kAccelSaturated | kGyroSaturated)) return false;
+      fa += in.accel_g[k];
+      wa += in.rate_slow_deg_s(k);
+    }
+    fa /= double(e - b + 1);
+    wa /= double(e - b + 1);
+    // A quick reject before the per-sample test: far from 1 g, or turning.
+    if (std::abs(fa.norm() - 1.0) > 0.3 || wa.cwiseAbs().maxCoeff() > 60.0) return false;
+    for (std::size_t k = b; k <= e; ++k) {
+      if ((in.accel_g[k] - fa).cwiseAbs().maxCoeff() > o.still_accel_tol_g) return false;
+      if ((in.rate_slow_deg_s(k) - wa).cwiseAbs().maxCoeff() > o.still_rate_tol_deg_s) return false;
+    }
+    return true;
+  };
+  // For each candidate end (latest first), the shortest window reaching min_still_s in time.
+  std::size_t b = last + 1;
+  for (std::size_t e = last + 1; e-- > 0;) {
+    if (b > e) b = e;
+    while (b > 0 && in.t_s[e] - in.t_s[b] < o.min_still_s) --b;
+    if (in.t_s[e] - in.t_s[b] < o.min_still_s) return false;  // not enough time before e
+    if (e - b + 1 < kMinSamples || !quiet(b, e)) continue;
+    std::size_t s = b;
+    while (s > 0 && in.t_s[e] - in.t_s[s - 1] <= kMaxStill_s && quiet(s - 1, e)) --s;
+    begin = s;
+    end = e;
+    return true;
+  }
+  return false;
+}
+
 int count_range_switches(const ChainInput& in) {
   int n = 0;
   for (std::size_t k = 1; k < in.fast.size(); ++k)
@@ -93,20 +132,24 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
   std::vector<Vec3> w(stop + 1);
   for (std::size_t k = 0; k <= stop; ++k) w[k] = in.rate_deg_s[k];
   double gyro_scale = 1.0, lever_scale = 1.0, height_offset = 0.0, release_t = in.release_t_s;
-  if (p.random) {
+  if (p.kind == Perturb::random) {
+    Vec3 bias;
+    for (int i = 0; i < 3; ++i) bias[i] = o.accel_bias_g * sym();
     for (std::size_t k = 0; k <= stop; ++k)
       for (int i = 0; i < 3; ++i) {
-        f[k][i] += o.accel_noise_g * gauss(rng) + 0.5 * in.accel_lsb_g[i] * sym();
+        f[k][i] += bias[i] + o.accel_noise_g * gauss(rng) + 0.5 * in.accel_lsb_g[i] * sym();
         const double lsb = in.gyro_lsb_deg_s[i] * (in.fast[k][i] ? in.fast_factor : 1.0);
         w[k][i] += o.gyro_noise_deg_s * gauss(rng) * (in.fast[k][i] ? in.fast_factor : 1.0) + 0.5 * lsb * sym();
       }
     gyro_scale = 1.0 + o.gyro_scale_rel_uncertainty * sym();
     lever_scale = 1.0 + in.mounting.lever_arm_rel_uncertainty * sym();
-    height_offset = o.start_height_uncertainty_m * sym();
+    height_offset = o.thrower.height_uncertainty_m * sym();
     release_t = in.release_t_low_s + unit(rng) * (in.release_t_high_s - in.release_t_low_s);
   }
-  // 2. Clipped spans: what the accelerometer could not show.
+  // 2. Clipped spans: what the accelerometer could not show. A random bump is a half sine in time
+  // from the last unclipped sample before the span to the first after it.
   if (p.fill != ClipFill::as_recorded) {
+    const double edge = in.period_s > 0 ? in.period_s : 0.01;
     for (int i = 0; i < 3; ++i) {
       const std::uint32_t bit = kSaturatedX << i;
       for (std::size_t k = 0; k <= stop;) {
@@ -116,9 +159,11 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
         }
         std::size_t e = k;
         while (e <= stop && (in.flags[e] & bit)) ++e;
+        const double ta = k > 0 ? in.t_s[k - 1] : in.t_s[k] - edge;
+        const double tb = e <= stop ? in.t_s[e] : in.t_s[e - 1] + edge;
         const double s = p.fill == ClipFill::at_max ? 1.0 : unit(rng);
         for (std::size_t j = k; j < e; ++j) {
-          const double bump = p.fill == ClipFill::at_max ? 1.0 : std::sin(std::numbers::pi * (double(j - k) + 0.5) / double(e - k));
+          const double bump = p.fill == ClipFill::at_max ? 1.0 : std::sin(std::numbers::pi * (in.t_s[j] - ta) / (tb - ta));
           const double level = std::abs(in.accel_g[j][i]);
           const double extra = std::max(0.0, o.max_accel_g - level) * s * bump;
           f[j][i] = std::copysign(level + extra, in.accel_g[j][i]);
@@ -181,17 +226,30 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
       series->stone_speed_m_s[k + 1] = (v[k + 1] + wr.cross(q[k + 1] * in.mounting.stone_offset_m)).norm();
     }
   }
-  // 5. The state at the release time, interpolated between samples.
-  std::size_t j = std::max(s0, std::min(in.release_sample, stop > 0 ? stop - 1 : 0));
-  while (j + 1 < stop && in.t_s[j + 1] < release_t) ++j;
-  while (j > s0 && in.t_s[j] > release_t) --j;
-  const std::size_t j1 = std::min(j + 1, stop);
-  const double span = in.t_s[j1] - in.t_s[j];
-  const double u = span > 0 ? std::clamp((release_t - in.t_s[j]) / span, 0.0, 1.0) : 0.0;
-  const Quat qr = q[j].slerp(u, q[j1]);
-  const Vec3 vr = (1 - u) * v[j] + u * v[j1];
-  const Vec3 xr = (1 - u) * x[j] + u * x[j1];
-  const Vec3 wr = (1 - u) * omega(j) + u * omega(j1);  // remote frame
+  // 5. The state at the release time, interpolated between samples; a release after the last
+  // sample (the button still held at the file's end) is extrapolated at constant rate and
+  // acceleration over at most one interval.
+  Quat qr;
+  Vec3 vr, xr, wr;  // wr: remote frame
+  if (release_t > in.t_s[stop]) {
+    const double d = release_t - in.t_s[stop];
+    const Vec3 a_end = world_accel(stop);
+    wr = omega(stop);
+    qr = (q[stop] * exp_rotation(wr * d)).normalized();
+    vr = v[stop] + a_end * d;
+    xr = x[stop] + v[stop] * d + 0.5 * a_end * d * d;
+  } else {
+    std::size_t j = std::max(s0, std::min(in.release_sample, stop > 0 ? stop - 1 : 0));
+    while (j + 1 < stop && in.t_s[j + 1] < release_t) ++j;
+    while (j > s0 && in.t_s[j] > release_t) --j;
+    const std::size_t j1 = std::min(j + 1, stop);
+    const double span = in.t_s[j1] - in.t_s[j];
+    const double u = span > 0 ? std::clamp((release_t - in.t_s[j]) / span, 0.0, 1.0) : 0.0;
+    qr = q[j].slerp(u, q[j1]);
+    vr = (1 - u) * v[j] + u * v[j1];
+    xr = (1 - u) * x[j] + u * x[j1];
+    wr = (1 - u) * omega(j) + u * omega(j1);
+  }
   const Mat3 R = qr.toRotationMatrix();
   const Vec3 w_world = R * wr;
   const Vec3 v_accel = vr + w_world.cross(R * in.mounting.stone_offset_m);
@@ -204,17 +262,24 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
   r.t_s = release_t;
   r.accel_velocity_m_s = turn * v_accel;
   r.lever_velocity_m_s = turn * v_lever;
-  r.velocity_m_s = turn * v_used;
   r.stone_orientation = Quat(turn * R * M).normalized();
-  r.omega_body_rad_s = M.transpose() * wr;
+  r.measured.velocity_m_s = turn * v_used;
+  r.measured.omega_body_rad_s = M.transpose() * wr;
   const Vec3 stone_rise = xr + R * in.mounting.stone_offset_m - q0 * in.mounting.stone_offset_m;
-  r.height_m = o.start_height_m + height_offset + stone_rise.z();
+  r.measured.rise_m = stone_rise.z();
+  // 7. The virtual thrower.
+  const VirtualThrow virt = map_to_virtual(r.measured, o.thrower, height_offset);
+  r.velocity_m_s = virt.velocity_m_s;
+  r.omega_body_rad_s = virt.omega_body_rad_s;
+  r.height_m = virt.height_m;
   r.speed_m_s = r.velocity_m_s.norm();
   r.accel_speed_m_s = r.accel_velocity_m_s.norm();
   r.lever_speed_m_s = r.lever_velocity_m_s.norm();
+  r.measured_speed_m_s = r.measured.velocity_m_s.norm();
+  r.measured_spin_rev_s = r.measured.omega_body_rad_s.z() / (2.0 * std::numbers::pi);
   RigidState st;
   st.orientation = r.stone_orientation;
-  st.velocity_m_s = r.velocity_m_s;
+  st.velocity_m_s = r.measured.velocity_m_s;
   const AttitudeAngles ang = attitude_angles(st);
   r.attack_angle_deg = ang.attack_angle_deg;
   r.path_angle_deg = ang.path_angle_deg;

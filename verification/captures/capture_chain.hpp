@@ -15,7 +15,7 @@ struct ChainInput {
   std::vector<std::array<bool, 3>> fast;
   std::vector<unsigned> buttons;
   std::vector<std::uint32_t> flags;        // with saturation from the threshold
-  double period_s = 0;
+  double period_s = 0;                     // typical interval (only to extend a span at the file's edge)
   double fast_factor = 4.5;
   std::array<double, 3> accel_lsb_g{};     // quantisation step per axis
   std::array<double, 3> gyro_lsb_deg_s{};  // slow mode
@@ -40,6 +40,11 @@ struct ChainDiagnostics {
   double still_accel_g = 0;
   Vec3 gyro_bias_deg_s = Vec3::Zero();
 };
+
+// The still part (capture_analysis.hpp, step 4): the latest stretch ending at or before `last`,
+// at least o.min_still_s long and at most 2 s, where every sample stays within the tolerances of
+// the stretch's means. Kept indices [begin, end].
+bool find_still(const ChainInput& in, const CaptureOptions& o, std::size_t last, std::size_t& begin, std::size_t& end);
 
 // Runs the chain. `series` (nominal run) receives the world acceleration, the remote's velocity
 // and the stone's speed per sample.

@@ -5,7 +5,37 @@
 
 namespace stoneskip {
 
-TimedSamples analyse_timing(const Trace& trace) {
+const char* to_string(ClockModel m) {
+  switch (m) {
+    case ClockModel::automatic: return "automatic";
+    case ClockModel::regular_reports: return "regular_reports";
+    case ClockModel::stamps_as_given: return "stamps_as_given";
+  }
+  return "?";
+}
+
+namespace {
+
+// Least-squares line t = mt + b (slot − mi) through the (slot, stamp) pairs; false if degenerate.
+bool fit_clock(const std::vector<long>& slot, const std::vector<double>& stamps, double& mi, double& mt, double& b) {
+  const double n = double(stamps.size());
+  mi = mt = 0;
+  for (std::size_t k = 0; k < stamps.size(); ++k) mi += double(slot[k]), mt += stamps[k];
+  mi /= n;
+  mt /= n;
+  double sii = 0, sit = 0;
+  for (std::size_t k = 0; k < stamps.size(); ++k) {
+    const double di = double(slot[k]) - mi;
+    sii += di * di;
+    sit += di * (stamps[k] - mt);
+  }
+  b = sii > 0 ? sit / sii : 0.0;
+  return b > 0 && std::isfinite(b);
+}
+
+}  // namespace
+
+TimedSamples analyse_timing(const Trace& trace, const TimingOptions& o) {
   TimedSamples out;
   TimingStats& s = out.stats;
   s.samples = trace.samples.size();
@@ -20,33 +50,30 @@ TimedSamples analyse_timing(const Trace& trace) {
     stamps.push_back(trace.samples[k].t_s);
   }
   s.used = stamps.size();
-  if (stamps.size() < 2) {
-    out.t_s = stamps;
-    out.report_index.assign(stamps.size(), 0);
-    return out;
-  }
+  out.t_s = stamps;
+  out.report_index.assign(stamps.size(), 0);
+  if (stamps.size() < 2) return out;
   s.duration_s = stamps.back() - stamps.front();
+  if (s.duration_s > 0) s.mean_rate_hz = double(stamps.size() - 1) / s.duration_s;
   std::vector<double> dt(stamps.size() - 1);
   for (std::size_t k = 1; k < stamps.size(); ++k) dt[k - 1] = stamps[k] - stamps[k - 1];
+  s.min_interval_s = *std::min_element(dt.begin(), dt.end());
+  s.max_interval_s = *std::max_element(dt.begin(), dt.end());
+  s.equal_stamps = std::size_t(std::count(dt.begin(), dt.end(), 0.0));
   std::vector<double> sorted = dt;
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
   s.period_s = sorted[sorted.size() / 2];
-  if (!(s.period_s > 0) || !std::isfinite(s.period_s)) {
-    out.t_s = stamps;
-    out.report_index.assign(stamps.size(), 0);
-    return out;
-  }
+  if (!(s.period_s > 0) || !std::isfinite(s.period_s)) return out;
   s.ok = true;
   s.rate_hz = 1.0 / s.period_s;
-  // Gaps, lost reports, report indices.
-  constexpr double kGapFactor = 1.5;     // an interval of 1.5 periods or more is a gap
-  constexpr long kMaxLostPerGap = 1000000;  // bounds the index arithmetic for absurd stamps
-  out.report_index.assign(stamps.size(), 0);
-  double sum = 0, sum2 = 0;
+  // Gaps, lost reports, report slots.
+  constexpr long kMaxLostPerGap = 1000000;  // bounds the slot arithmetic for absurd stamps
+  const double gap = o.gap_factor * s.period_s;
+  double sum = 0;
   long n_ok = 0;
   for (std::size_t k = 0; k < dt.size(); ++k) {
     long step = 1;
-    if (dt[k] >= kGapFactor * s.period_s) {
+    if (dt[k] >= gap) {
       const double ratio = std::min(dt[k] / s.period_s, double(kMaxLostPerGap));
       step = std::max(2L, std::lround(ratio));
       ++s.gaps;
@@ -54,47 +81,43 @@ TimedSamples analyse_timing(const Trace& trace) {
       s.longest_gap_s = std::max(s.longest_gap_s, dt[k]);
     } else {
       sum += dt[k];
-      sum2 += dt[k] * dt[k];
       ++n_ok;
       s.max_jitter_s = std::max(s.max_jitter_s, std::abs(dt[k] - s.period_s));
     }
     out.report_index[k + 1] = out.report_index[k] + step;
   }
   if (n_ok > 1) {
-    const double mean = sum / n_ok;
+    const double mean = sum / double(n_ok);
     double var = 0;
-    for (std::size_t k = 0; k < dt.size(); ++k)
-      if (dt[k] < kGapFactor * s.period_s) var += (dt[k] - mean) * (dt[k] - mean);
+    for (double d : dt)
+      if (d < gap) var += (d - mean) * (d - mean);
     s.jitter_s = std::sqrt(var / double(n_ok - 1));
   }
-  if (trace.nominal_timestamps) {
-    out.t_s = stamps;
-    return out;
+  if (trace.nominal_timestamps) return out;
+  // The remote's regular clock through the slots, and how far the stamps lie from it.
+  double mi = 0, mt = 0, b = 0;
+  const bool fitted = fit_clock(out.report_index, stamps, mi, mt, b);
+  std::vector<double> clock(stamps.size());
+  if (fitted) {
+    double r2 = 0;
+    for (std::size_t k = 0; k < stamps.size(); ++k) {
+      clock[k] = mt + b * (double(out.report_index[k]) - mi);
+      const double r = stamps[k] - clock[k];
+      r2 += r * r;
+      s.clock_residual_max_s = std::max(s.clock_residual_max_s, std::abs(r));
+    }
+    s.clock_residual_rms_s = std::sqrt(r2 / double(stamps.size()));
   }
-  // Least-squares clock t = a + b n.
-  const double n = double(stamps.size());
-  double mi = 0, mt = 0;
-  for (std::size_t k = 0; k < stamps.size(); ++k) mi += double(out.report_index[k]), mt += stamps[k];
-  mi /= n;
-  mt /= n;
-  double sii = 0, sit = 0;
-  for (std::size_t k = 0; k < stamps.size(); ++k) {
-    const double di = double(out.report_index[k]) - mi;
-    sii += di * di;
-    sit += di * (stamps[k] - mt);
+  bool regular = false;
+  switch (o.clock) {
+    case ClockModel::regular_reports: regular = fitted; break;
+    case ClockModel::stamps_as_given: regular = false; break;
+    case ClockModel::automatic:
+      regular = fitted && s.clock_residual_max_s <= o.regular_max_residual_intervals * s.period_s;
+      break;
   }
-  const double b = sii > 0 ? sit / sii : s.period_s;
-  if (!(b > 0) || !std::isfinite(b)) {
-    out.t_s = stamps;
-    return out;
-  }
-  out.t_s.resize(stamps.size());
-  double r2 = 0;
-  for (std::size_t k = 0; k < stamps.size(); ++k) {
-    out.t_s[k] = mt + b * (double(out.report_index[k]) - mi);
-    r2 += (stamps[k] - out.t_s[k]) * (stamps[k] - out.t_s[k]);
-  }
-  s.clock_residual_rms_s = std::sqrt(r2 / n);
+  s.clock = regular ? ClockModel::regular_reports : ClockModel::stamps_as_given;
+  if (regular) out.t_s = clock;
   return out;
 }
 

@@ -1,21 +1,46 @@
 #pragma once
 // Timing of a capture (spec §4: the remote sends no timestamp; the recorder stamps each report
-// with the host clock, so jitter and dropped reports are normal).
-//   * repeated reports (flag R) are dropped;
-//   * the nominal period is the median interval; an interval longer than 1.5 periods is a gap, and
-//     round(interval / period) − 1 reports were lost in it;
-//   * jitter = standard deviation of the intervals that are not gaps (and their largest deviation
-//     from the period);
-//   * de-jittering: each kept report gets its index in the remote's own sequence (gaps counted),
-//     and the host stamps are replaced by a least-squares line through (index, stamp), so the
-//     remote's regular clock is recovered; the residual RMS is the stamps' own jitter.
-// Traces with nominal timestamps (gesture format) are left as they are (jitter unknown).
+// with the host clock, so jitter, gaps and repeats are normal). Nothing here assumes a rate that
+// the time column does not show:
+//   * repeated reports (flag R) are dropped and counted;
+//   * the typical interval is the median interval (the "rate" is its inverse; the mean rate over
+//     the recording is reported beside it); an interval of gap_factor typical intervals or more is
+//     a gap, and about round(interval / typical) − 1 reports were lost in it;
+//   * jitter = standard deviation of the intervals that are not gaps, with the largest deviation,
+//     the shortest and longest interval and the number of equal stamps;
+//   * the clock (ClockModel): a Wii Remote sends its reports on its own regular clock and the host
+//     adds jitter, so each kept report gets its slot in that sequence (gaps counted) and a
+//     least-squares line through (slot, stamp) recovers the remote's clock — valid only when every
+//     stamp lies within half a typical interval of its slot (otherwise the slots are ambiguous).
+//     `automatic` checks exactly that and otherwise uses the stamps as given (a logger whose rows
+//     are not one per report, a device without a regular clock). Integration always uses the
+//     actual steps between the times chosen here, never a nominal dt.
+// Traces with nominal timestamps (no time column: gesture files) are left as they are (jitter
+// unknown).
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "verification/captures/capture_trace.hpp"
 
 namespace stoneskip {
+
+enum class ClockModel {
+  automatic,        // regular_reports when every stamp is within half an interval of its slot
+  regular_reports,  // the remote's regular clock fitted through the report slots (de-jittered)
+  stamps_as_given,  // the host stamps, unchanged
+};
+const char* to_string(ClockModel m);
+
+struct TimingOptions {
+  ClockModel clock = ClockModel::automatic;
+  // An interval this many typical intervals long or longer is a gap. 1.5: halfway between one and
+  // two report periods, so one lost report is counted whatever the jitter below half a period.
+  double gap_factor = 1.5;
+  // automatic: the largest |stamp − fitted clock| allowed for regular_reports, in typical intervals.
+  // 0.5: beyond it a stamp could belong to the neighbouring slot and the slot count is ambiguous.
+  double regular_max_residual_intervals = 0.5;
+};
 
 struct TimingStats {
   std::size_t samples = 0;      // in the file
@@ -23,12 +48,17 @@ struct TimingStats {
   std::size_t used = 0;
   double duration_s = 0;
   double period_s = 0;          // median interval
-  double rate_hz = 0;
+  double rate_hz = 0;           // 1 / median interval
+  double mean_rate_hz = 0;      // (used − 1) / duration
   double jitter_s = 0;          // std of the non-gap intervals
   double max_jitter_s = 0;      // largest |interval − period| among non-gap intervals
-  double clock_residual_rms_s = 0;  // RMS of stamp − fitted clock
+  double min_interval_s = 0, max_interval_s = 0;
+  std::size_t equal_stamps = 0; // intervals of exactly zero (two reports stamped alike)
+  double clock_residual_rms_s = 0;  // RMS of stamp − fitted regular clock
+  double clock_residual_max_s = 0;  // largest |stamp − fitted regular clock|
+  ClockModel clock = ClockModel::stamps_as_given;  // the model used (never automatic)
   int gaps = 0;
-  long dropped_reports = 0;
+  long dropped_reports = 0;     // estimated from the gaps' lengths
   double longest_gap_s = 0;
   bool nominal = false;         // times from the nominal rate (no host stamps)
   bool ok = false;              // a positive period could be found
@@ -37,10 +67,10 @@ struct TimingStats {
 struct TimedSamples {
   TimingStats stats;
   std::vector<std::size_t> index;  // into trace.samples, kept samples only
-  std::vector<double> t_s;         // de-jittered times of those samples
-  std::vector<long> report_index;  // position in the remote's report sequence
+  std::vector<double> t_s;         // the times used: fitted clock or stamps (ClockModel)
+  std::vector<long> report_index;  // slot in the remote's report sequence (gaps counted)
 };
 
-TimedSamples analyse_timing(const Trace& trace);
+TimedSamples analyse_timing(const Trace& trace, const TimingOptions& options = {});
 
 }  // namespace stoneskip

@@ -71,7 +71,7 @@ struct TraceSample {
 
 struct Trace {
   std::string source;       // file name as given
-  std::string format;       // reader that produced it: trace_csv, report_log, evemu, gesture
+  std::string format;       // reader that produced it: trace_csv, report_log, evemu, gesture, csv
   bool has_accel = true;
   bool has_gyro = false;
   bool has_buttons = true;  // false: release at the file's end (gesture format)
@@ -80,7 +80,9 @@ struct Trace {
   double nominal_rate_hz = 100.0;
   CaptureCalibration calibration;
   std::vector<std::string> mounting;  // "key=value" settings found in the file's header
+  std::vector<std::string> thrower;   // "key=value" virtual thrower settings found in the header
   std::vector<std::string> warnings;  // "FILE:LINE: what" for input that was used with a caveat
+  std::vector<std::string> notes;     // what the reader chose or skipped (does not change a verdict)
   std::vector<TraceSample> samples;
 };
 
