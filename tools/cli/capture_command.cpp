@@ -43,6 +43,8 @@ namespace fs = std::filesystem;
 struct CaptureArgs {
   std::vector<std::string> files;
   std::string format;
+  int remote = 0;
+  std::string columns;
   std::string case_file = "cases/paper_8ms_spin.toml";
   std::vector<std::string> sets;
   std::vector<std::string> mounts;
@@ -61,9 +63,24 @@ struct CaptureArgs {
   bool progress = false;
 };
 
+void add_read(CLI::App* cmd, CaptureArgs& a) {
+  cmd->add_option("--format", a.format, "Force a reader: trace_csv, report_log, evemu, gesture, csv (default: recognised from the content)")
+      ->check(CLI::IsMember({"auto", "trace_csv", "report_log", "evemu", "gesture", "csv"}));
+  cmd->add_option("--remote", a.remote, "csv: the remote to read (the N of a '#WMN' column suffix; default: the first with data)")
+      ->check(CLI::Range(1, 999));
+  cmd->add_option("--columns", a.columns, "csv: map columns, key[unit]=Column Name,... (keys: t, ax, ay, az, wx, wy, wz, raw_pitch, raw_roll, raw_yaw, speed_pitch, speed_roll, speed_yaw, slow_*, fast_*, buttons, button_a, button_b, pitch, roll, seq)");
+}
+
+CaptureReadOptions read_options(const CaptureArgs& a) {
+  CaptureReadOptions o;
+  o.format = a.format;
+  o.csv.remote = a.remote;
+  o.csv.columns = a.columns;
+  return o;
+}
+
 void add_common(CLI::App* cmd, CaptureArgs& a) {
-  cmd->add_option("--format", a.format, "Force a reader: trace_csv, report_log, evemu, gesture (default: recognised from the content)")
-      ->check(CLI::IsMember({"auto", "trace_csv", "report_log", "evemu", "gesture"}));
+  add_read(cmd, a);
   cmd->add_option("--mount", a.mounts, "Mounting setting key=value (stone_normal, stone_forward, stone_offset_m, lever_arm_m, lever_arm_rel_uncertainty), repeatable");
   cmd->add_option("--button", a.button, "The action button held through the swing (default B)")->check(CLI::IsMember({"A", "B"}));
   cmd->add_option("--thrower", a.thrower, "Virtual thrower setting key=value (height_mapping, release_height_m, still_height_m, height_uncertainty_m, speed_scale, spin_scale, finger_spin_rev_s), repeatable");
@@ -152,7 +169,7 @@ void validate(const CaptureArgs& a) {
   for (const auto& file : a.files) {
     Trace trace;
     try {
-      trace = read_capture(file, a.format);
+      trace = read_capture(file, read_options(a));
     } catch (const InputError& e) {
       // One bad file does not stop the others; it is reported and the exit status says so.
       unreadable = true;
@@ -201,7 +218,7 @@ void validate(const CaptureArgs& a) {
 void throw_capture(const CaptureArgs& a) {
   StoneCase c = load_stone_case(a.case_file, a.sets);
   if (!a.out.empty()) AtomicOutput check(a.out);
-  const Trace trace = read_capture(a.files.front(), a.format);
+  const Trace trace = read_capture(a.files.front(), read_options(a));
   CaptureOptions o = capture_options(a, trace);
   o.members = 0;  // the intervals are validate's business; the throw is the nominal one
   const CaptureAnalysis an = analyse_capture(trace, o);
@@ -233,21 +250,24 @@ void throw_capture(const CaptureArgs& a) {
 }
 
 void convert(const CaptureArgs& a) {
-  Trace t = read_capture(a.files.front(), a.format);
+  Trace t = read_capture(a.files.front(), read_options(a));
   for (const auto& w : t.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   write_text_file(a.out, trace_csv_text(t));
   std::printf("wrote %s (%zu samples from %s)\n", a.out.c_str(), t.samples.size(), t.format.c_str());
 }
 
 // The shipped synthetic captures (cases/captures/): each with its .truth.toml.
+enum class CaptureKind { report_log, evemu, gesture, wiiyourself_csv };
+
 void synthesize(const CaptureArgs& a) {
   fs::create_directories(a.out);
   struct Item {
     std::string name;
     SyntheticThrow th;
     SyntheticSensor s;
-    int kind;  // 0 log, 1 evemu, 2 gesture
+    CaptureKind kind;
   };
+  // Gestures (a remote swung in a room; issue 5): release 0.9 m up, 5–10 m/s, 1–2 rev/s.
   SyntheticThrow gentle;
   gentle.swing_rate_rad_s = 7.0;
   gentle.pivot_speed_m_s = 1.0;
@@ -262,22 +282,63 @@ void synthesize(const CaptureArgs& a) {
   SyntheticSensor s37;
   s37.report_id = 0x37;
   s37.seed = 3;
-  const std::vector<Item> items{{"gentle_sidearm.log", gentle, {}, 0},
-                                {"hard_sidearm_clipped.log", hard, s37, 0},
-                                {"gentle_sidearm.evemu", gentle, {}, 1},
-                                {"gentle_sidearm_gesture.txt", gentle, {}, 2},
-                                {"lossy_sidearm.log", gentle, lossy, 0},
-                                {"no_still_part.log", no_still, {}, 0}};
+  // Skipping throws as published (synthetic_capture.hpp, skipping_throw).
+  SkippingThrowSpec bocquet;  // Bocquet 2003's example: 12 m/s, 14 rev/s; Clanet's α = 20°
+  // Near the physical convention's threshold for the measured throw: 14 m/s at α ≈ 31°, β ≈ 2°
+  // separates 0 from 1 bounce there (this model's optimum is α ≈ 25–30°, spec §3). A thrower whose
+  // trunk barely turns (pivot share 5 %), so the lever-arm estimate stays close to the speed.
+  SkippingThrowSpec threshold;
+  threshold.speed_m_s = 14.5;
+  threshold.spin_rev_s = 12.0;
+  threshold.attack_angle_deg = 31.0;
+  threshold.path_angle_deg = 2.0;
+  threshold.pivot_share = 0.05;
+  SkippingThrowSpec two_remotes;
+  two_remotes.speed_m_s = 10.0;
+  two_remotes.spin_rev_s = 12.0;
+  two_remotes.path_angle_deg = 8.0;
+  SyntheticSensor s_skip;
+  s_skip.report_id = 0x37;
+  s_skip.seed = 11;
+  SyntheticSensor s_threshold;
+  s_threshold.seed = 13;
+  SyntheticSensor s_wm1;  // a Windows host: larger jitter
+  s_wm1.jitter_s = 0.004;
+  s_wm1.seed = 17;
+  const std::vector<Item> items{{"gentle_sidearm.log", gentle, {}, CaptureKind::report_log},
+                                {"hard_sidearm_clipped.log", hard, s37, CaptureKind::report_log},
+                                {"gentle_sidearm.evemu", gentle, {}, CaptureKind::evemu},
+                                {"gentle_sidearm_gesture.txt", gentle, {}, CaptureKind::gesture},
+                                {"lossy_sidearm.log", gentle, lossy, CaptureKind::report_log},
+                                {"no_still_part.log", no_still, {}, CaptureKind::report_log},
+                                {"skip_12ms_14revs.log", skipping_throw(bocquet), s_skip, CaptureKind::report_log},
+                                {"skip_threshold_14ms.log", skipping_throw(threshold), s_threshold, CaptureKind::report_log},
+                                {"skip_two_remotes_wiiyourself.csv", skipping_throw(two_remotes), s_wm1,
+                                 CaptureKind::wiiyourself_csv}};
+  SyntheticSensor idle;  // the second remote, on the table
+  idle.rate_hz = 99.6;
+  idle.jitter_s = 0.004;
+  idle.accel_zero_counts = {511, 509, 515};
+  idle.accel_one_g_counts = {615, 613, 618};
+  idle.gyro_zero_counts = {8101, 8033, 8150};
+  idle.seed = 19;
   for (const auto& it : items) {
     SyntheticTruth truth;
-    const std::string text = it.kind == 0 ? synthetic_report_log(it.th, it.s, truth)
-                             : it.kind == 1 ? synthetic_evemu(it.th, it.s, truth)
-                                            : synthetic_gesture(it.th, it.s, truth);
+    std::string text;
+    switch (it.kind) {
+      case CaptureKind::report_log: text = synthetic_report_log(it.th, it.s, truth); break;
+      case CaptureKind::evemu: text = synthetic_evemu(it.th, it.s, truth); break;
+      case CaptureKind::gesture: text = synthetic_gesture(it.th, it.s, truth); break;
+      case CaptureKind::wiiyourself_csv: text = synthetic_wiiyourself_csv(it.th, it.s, idle, truth); break;
+    }
     write_text_file(fs::path(a.out) / it.name, text);
-    write_text_file(fs::path(a.out) / (fs::path(it.name).stem().string() + (it.kind == 2 ? "" : fs::path(it.name).extension().string()) + ".truth.toml"),
-                    truth.toml());
-    std::printf("wrote %s (truth: %.3f m/s, attack %.2f deg, path %.2f deg)\n", it.name.c_str(), truth.speed_m_s,
-                truth.attack_angle_deg, truth.path_angle_deg);
+    // gesture: name_gesture.truth.toml (the recorder's own extension is dropped); others: name.ext.truth.toml.
+    const fs::path p(it.name);
+    const std::string truth_name = it.kind == CaptureKind::gesture ? p.stem().string() : it.name;
+    write_text_file(fs::path(a.out) / (truth_name + ".truth.toml"), truth.toml());
+    std::printf("wrote %s (truth: %.3f m/s, attack %.2f deg, path %.2f deg, spin %.2f rev/s seen, %.2f in all)\n",
+                it.name.c_str(), truth.speed_m_s, truth.attack_angle_deg, truth.path_angle_deg, truth.spin_rev_s,
+                truth.total_spin_rev_s);
   }
 }
 
@@ -310,7 +371,7 @@ void add_capture(CLI::App& app) {
   auto* c = cmd->add_subcommand("convert", "Write any capture as a stoneskip trace CSV");
   c->add_option("FILE", a->files, "Capture file")->required()->expected(1);
   c->add_option("--out", a->out, "Trace CSV to write")->required();
-  c->add_option("--format", a->format, "Force a reader")->check(CLI::IsMember({"auto", "trace_csv", "report_log", "evemu", "gesture"}));
+  add_read(c, *a);
   c->callback([a] { convert(*a); });
 
   auto* s = cmd->add_subcommand("synthesize", "Write the shipped synthetic captures and their truth files");

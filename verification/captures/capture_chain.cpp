@@ -25,11 +25,23 @@ ChainInput make_chain_input(const Trace& trace, const TimedSamples& timing, cons
   const std::size_t n = timing.index.size();
   const double t0 = n ? timing.t_s.front() : 0.0;
   in.period_s = timing.stats.period_s;
+  // Host stamps used as given carry their own noise: σ = jitter/√2 for independent stamps, drawn
+  // uniform (half-width √3 σ).
+  if (!timing.stats.nominal && timing.stats.clock == ClockModel::stamps_as_given)
+    in.stamp_noise_s = std::sqrt(1.5) * timing.stats.jitter_s;
   in.fast_factor = trace.calibration.gyro_fast_factor;
   in.mounting = o.mounting;
   for (int i = 0; i < 3; ++i) {
-    // Y and Z lose their lowest bit in the reports (spec §4): a step of two counts.
+    // Y and Z lose their lowest bit in the reports (spec §4): a step of two counts. A logger that
+    // kept fewer bits (WiiYourself! uses the 8 high bits) shows a coarser step: the smallest change
+    // between consecutive samples, when larger, is taken as the step.
     in.accel_lsb_g[i] = trace.calibration.accel_lsb_g(i) * (i == 0 ? 1.0 : 2.0);
+    double smallest = 0;
+    for (std::size_t j = 1; j < n; ++j) {
+      const double d = std::abs(trace.samples[timing.index[j]].accel_g[i] - trace.samples[timing.index[j - 1]].accel_g[i]);
+      if (d > 0 && (smallest == 0 || d < smallest)) smallest = d;
+    }
+    in.accel_lsb_g[i] = std::max(in.accel_lsb_g[i], smallest);
     in.gyro_lsb_deg_s[i] = trace.calibration.gyro_lsb_deg_s(false);
   }
   for (std::size_t j = 0; j < n; ++j) {
@@ -133,11 +145,17 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
   for (std::size_t k = 0; k <= stop; ++k) w[k] = in.rate_deg_s[k];
   double gyro_scale = 1.0, lever_scale = 1.0, height_offset = 0.0, release_t = in.release_t_s;
   if (p.kind == Perturb::random) {
-    Vec3 bias;
-    for (int i = 0; i < 3; ++i) bias[i] = o.accel_bias_g * sym();
+    // A calibration offset on every sample, and the still part's own error: a constant signal read
+    // without enough noise to dither it keeps its rounding, up to half a step, in its mean.
+    Vec3 bias, still_bias;
+    for (int i = 0; i < 3; ++i) {
+      bias[i] = o.accel_bias_g * sym();
+      still_bias[i] = 0.5 * in.accel_lsb_g[i] * sym();
+    }
     for (std::size_t k = 0; k <= stop; ++k)
       for (int i = 0; i < 3; ++i) {
-        f[k][i] += bias[i] + o.accel_noise_g * gauss(rng) + 0.5 * in.accel_lsb_g[i] * sym();
+        const bool still = k >= in.still_begin && k <= in.still_end;
+        f[k][i] += bias[i] + (still ? still_bias[i] : 0.0) + o.accel_noise_g * gauss(rng) + 0.5 * in.accel_lsb_g[i] * sym();
         const double lsb = in.gyro_lsb_deg_s[i] * (in.fast[k][i] ? in.fast_factor : 1.0);
         w[k][i] += o.gyro_noise_deg_s * gauss(rng) * (in.fast[k][i] ? in.fast_factor : 1.0) + 0.5 * lsb * sym();
       }
@@ -146,6 +164,14 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
     height_offset = o.thrower.height_uncertainty_m * sym();
     release_t = in.release_t_low_s + unit(rng) * (in.release_t_high_s - in.release_t_low_s);
   }
+  // The times: as chosen by the timing analysis; a member redraws each host stamp within the
+  // stamps' own noise when they are used as given (kept in order).
+  std::vector<double> t(in.t_s.begin(), in.t_s.begin() + stop + 1);
+  if (p.kind == Perturb::random && in.stamp_noise_s > 0)
+    for (std::size_t k = 0; k <= stop; ++k) {
+      t[k] += in.stamp_noise_s * sym();
+      if (k > 0) t[k] = std::max(t[k], t[k - 1]);
+    }
   // 2. Clipped spans: what the accelerometer could not show. A random bump is a half sine in time
   // from the last unclipped sample before the span to the first after it.
   if (p.fill != ClipFill::as_recorded) {
@@ -159,11 +185,11 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
         }
         std::size_t e = k;
         while (e <= stop && (in.flags[e] & bit)) ++e;
-        const double ta = k > 0 ? in.t_s[k - 1] : in.t_s[k] - edge;
-        const double tb = e <= stop ? in.t_s[e] : in.t_s[e - 1] + edge;
+        const double ta = k > 0 ? t[k - 1] : t[k] - edge;
+        const double tb = e <= stop ? t[e] : t[e - 1] + edge;
         const double s = p.fill == ClipFill::at_max ? 1.0 : unit(rng);
         for (std::size_t j = k; j < e; ++j) {
-          const double bump = p.fill == ClipFill::at_max ? 1.0 : std::sin(std::numbers::pi * (in.t_s[j] - ta) / (tb - ta));
+          const double bump = p.fill == ClipFill::at_max ? 1.0 : std::sin(std::numbers::pi * (t[j] - ta) / (tb - ta));
           const double level = std::abs(in.accel_g[j][i]);
           const double extra = std::max(0.0, o.max_accel_g - level) * s * bump;
           f[j][i] = std::copysign(level + extra, in.accel_g[j][i]);
@@ -194,10 +220,13 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
     for (int i = 0; i < 3; ++i) x[i] -= bias_slow[i] * (in.fast[k][i] ? in.fast_factor : 1.0);
     return Vec3(gyro_scale * kDeg * x);
   };
-  // 4. Orientation, acceleration, velocity, position from the end of the still part.
+  // 4. Orientation, acceleration, velocity, position from the start of the still part: at rest on
+  // average there (its mean acceleration is gravity by construction, so integrating across it adds
+  // nothing), while its last samples may already hold the slow onset of the swing within the
+  // stillness tolerances — starting at its end would take that motion as rest.
   const double g0 = o.gravity_m_s2;
   const Quat q0 = Quat::FromTwoVectors(f_still.normalized(), Vec3::UnitZ());
-  const std::size_t s0 = in.still_end;
+  const std::size_t s0 = in.still_begin;
   std::vector<Quat> q(stop + 1, q0);
   std::vector<Vec3> v(stop + 1, Vec3::Zero()), x(stop + 1, Vec3::Zero());
   auto world_accel = [&](std::size_t k) { return Vec3(g0 * (q[k] * f[k] - g_still * Vec3::UnitZ())); };
@@ -211,7 +240,7 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
     series->world_accel_m_s2[s0] = a_prev;
   }
   for (std::size_t k = s0; k < stop; ++k) {
-    const double dt = in.t_s[k + 1] - in.t_s[k];
+    const double dt = t[k + 1] - t[k];
     const Vec3 w0 = omega(k), w1 = omega(k + 1);
     const Vec3 theta = 0.5 * (w0 + w1) * dt + (dt * dt / 12.0) * w0.cross(w1);  // Bortz, 2nd order
     q[k + 1] = (q[k] * exp_rotation(theta)).normalized();
@@ -226,13 +255,15 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
       series->stone_speed_m_s[k + 1] = (v[k + 1] + wr.cross(q[k + 1] * in.mounting.stone_offset_m)).norm();
     }
   }
-  // 5. The state at the release time, interpolated between samples; a release after the last
-  // sample (the button still held at the file's end) is extrapolated at constant rate and
-  // acceleration over at most one interval.
+  // 5. The state at the release time: integrated from the sample before it with the rate and the
+  // acceleration interpolated linearly, as the steps above (a straight line between the velocities
+  // of two samples would cut off the peak of speed that a release sits on, by a few percent when a
+  // report around it was lost). A release after the last sample (the button still held at the
+  // file's end) is extrapolated at constant rate and acceleration over at most one interval.
   Quat qr;
   Vec3 vr, xr, wr;  // wr: remote frame
-  if (release_t > in.t_s[stop]) {
-    const double d = release_t - in.t_s[stop];
+  if (release_t > t[stop]) {
+    const double d = release_t - t[stop];
     const Vec3 a_end = world_accel(stop);
     wr = omega(stop);
     qr = (q[stop] * exp_rotation(wr * d)).normalized();
@@ -240,15 +271,18 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
     xr = x[stop] + v[stop] * d + 0.5 * a_end * d * d;
   } else {
     std::size_t j = std::max(s0, std::min(in.release_sample, stop > 0 ? stop - 1 : 0));
-    while (j + 1 < stop && in.t_s[j + 1] < release_t) ++j;
-    while (j > s0 && in.t_s[j] > release_t) --j;
+    while (j + 1 < stop && t[j + 1] < release_t) ++j;
+    while (j > s0 && t[j] > release_t) --j;
     const std::size_t j1 = std::min(j + 1, stop);
-    const double span = in.t_s[j1] - in.t_s[j];
-    const double u = span > 0 ? std::clamp((release_t - in.t_s[j]) / span, 0.0, 1.0) : 0.0;
-    qr = q[j].slerp(u, q[j1]);
-    vr = (1 - u) * v[j] + u * v[j1];
-    xr = (1 - u) * x[j] + u * x[j1];
-    wr = (1 - u) * omega(j) + u * omega(j1);
+    const double h = t[j1] - t[j];
+    const double d = std::clamp(release_t - t[j], 0.0, std::max(h, 0.0));
+    const double u = h > 0 ? d / h : 0.0;
+    const Vec3 w0 = omega(j);
+    wr = (1 - u) * w0 + u * omega(j1);
+    qr = (q[j] * exp_rotation(0.5 * (w0 + wr) * d + (d * d / 12.0) * w0.cross(wr))).normalized();
+    const Vec3 a0 = world_accel(j), da = h > 0 ? Vec3((world_accel(j1) - a0) / h) : Vec3::Zero();
+    vr = v[j] + a0 * d + 0.5 * da * d * d;
+    xr = x[j] + v[j] * d + 0.5 * a0 * d * d + da * d * d * d / 6.0;
   }
   const Mat3 R = qr.toRotationMatrix();
   const Vec3 w_world = R * wr;

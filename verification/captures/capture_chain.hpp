@@ -16,6 +16,7 @@ struct ChainInput {
   std::vector<unsigned> buttons;
   std::vector<std::uint32_t> flags;        // with saturation from the threshold
   double period_s = 0;                     // typical interval (only to extend a span at the file's edge)
+  double stamp_noise_s = 0;                // half-width of the stamps' noise (stamps used as given)
   double fast_factor = 4.5;
   std::array<double, 3> accel_lsb_g{};     // quantisation step per axis
   std::array<double, 3> gyro_lsb_deg_s{};  // slow mode

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 
 namespace stoneskip {
 
@@ -94,14 +96,62 @@ TimedSamples analyse_timing(const Trace& trace, const TimingOptions& o) {
     s.jitter_s = std::sqrt(var / double(n_ok - 1));
   }
   if (trace.nominal_timestamps) return out;
-  // The remote's regular clock through the slots, and how far the stamps lie from it.
+  // The remote's regular clock. Slots counted interval by interval go wrong where the jitter makes
+  // an interval look like a gap or hides one, and the error carries into every later slot. So the
+  // clock is found from all stamps at once: for each trial period P within ±20 % of the typical
+  // interval, the stamps' phases t/P mod 1 are sorted and the shortest arc holding them all is
+  // found (one minus the largest gap between neighbouring phases); the period with the shortest arc
+  // is the clock's, each stamp's slot is the nearest to its phase in that arc, and a least-squares
+  // line through (slot, stamp) gives the clock. Half that arc, in periods, is the largest distance
+  // of a stamp from its slot.
   double mi = 0, mt = 0, b = 0;
-  const bool fitted = fit_clock(out.report_index, stamps, mi, mt, b);
+  std::vector<long> slots = out.report_index;
+  bool fitted = false;
+  double minimax_residual_s = std::numeric_limits<double>::infinity();
+  if (s.duration_s > 0) {
+    const double t0 = stamps.front();
+    std::vector<double> phase(stamps.size());
+    auto shortest_arc = [&](double period, double& centre) {  // in cycles; centre: the arc's middle
+      for (std::size_t k = 0; k < stamps.size(); ++k) {
+        const double x = (stamps[k] - t0) / period;
+        phase[k] = x - std::floor(x);
+      }
+      std::sort(phase.begin(), phase.end());
+      double gap = phase.front() + 1.0 - phase.back(), start = phase.front();  // the wrap-around gap
+      for (std::size_t k = 1; k < phase.size(); ++k)
+        if (phase[k] - phase[k - 1] > gap) gap = phase[k] - phase[k - 1], start = phase[k];
+      centre = start + 0.5 * (1.0 - gap);
+      return 1.0 - gap;
+    };
+    // The arc changes by about N·δP/P over a step δP: step so that it changes by at most 1 % of a cycle.
+    const double step = std::max(0.01 * s.period_s / double(stamps.size()), 0.4 * s.period_s / 200000);
+    double best = 2, best_period = s.period_s, best_centre = 0;
+    for (double period = 0.8 * s.period_s; period <= 1.2 * s.period_s; period += step) {
+      double centre = 0;
+      const double arc = shortest_arc(period, centre);
+      if (arc < best) best = arc, best_period = period, best_centre = centre;
+    }
+    bool increasing = true;
+    for (std::size_t k = 0; k < stamps.size() && increasing; ++k) {
+      slots[k] = std::lround((stamps[k] - t0) / best_period - best_centre);
+      if (k > 0 && slots[k] <= slots[k - 1]) increasing = false;
+    }
+    if (increasing) {
+      const long first = slots.front();
+      for (long& x : slots) x -= first;
+      fitted = fit_clock(slots, stamps, mi, mt, b);
+      minimax_residual_s = 0.5 * best * best_period;
+    }
+  }
+  if (!fitted) {
+    slots = out.report_index;
+    fitted = fit_clock(slots, stamps, mi, mt, b);
+  }
   std::vector<double> clock(stamps.size());
   if (fitted) {
     double r2 = 0;
     for (std::size_t k = 0; k < stamps.size(); ++k) {
-      clock[k] = mt + b * (double(out.report_index[k]) - mi);
+      clock[k] = mt + b * (double(slots[k]) - mi);
       const double r = stamps[k] - clock[k];
       r2 += r * r;
       s.clock_residual_max_s = std::max(s.clock_residual_max_s, std::abs(r));
@@ -113,8 +163,34 @@ TimedSamples analyse_timing(const Trace& trace, const TimingOptions& o) {
     case ClockModel::regular_reports: regular = fitted; break;
     case ClockModel::stamps_as_given: regular = false; break;
     case ClockModel::automatic:
-      regular = fitted && s.clock_residual_max_s <= o.regular_max_residual_intervals * s.period_s;
+      // Every stamp within half a period of a regular clock: by the least-squares line, or by the
+      // minimax phase arc (the line may stray a little further where the jitter is large).
+      regular = fitted && std::min(s.clock_residual_max_s, minimax_residual_s) <= o.regular_max_residual_intervals * b;
       break;
+  }
+  if (regular && slots != out.report_index) {
+    // The gaps and the jitter by the refined slots: an interval spanning one slot is not a gap.
+    out.report_index = slots;
+    s.gaps = 0;
+    s.dropped_reports = 0;
+    s.longest_gap_s = 0;
+    s.max_jitter_s = 0;
+    double sum1 = 0, sum2 = 0;
+    long n1 = 0;
+    for (std::size_t k = 0; k < dt.size(); ++k) {
+      const long step = slots[k + 1] - slots[k];
+      if (step > 1) {
+        ++s.gaps;
+        s.dropped_reports += step - 1;
+        s.longest_gap_s = std::max(s.longest_gap_s, dt[k]);
+      } else {
+        sum1 += dt[k];
+        sum2 += dt[k] * dt[k];
+        ++n1;
+        s.max_jitter_s = std::max(s.max_jitter_s, std::abs(dt[k] - s.period_s));
+      }
+    }
+    if (n1 > 1) s.jitter_s = std::sqrt(std::max(0.0, (sum2 - sum1 * sum1 / double(n1)) / double(n1 - 1)));
   }
   s.clock = regular ? ClockModel::regular_reports : ClockModel::stamps_as_given;
   if (regular) out.t_s = clock;

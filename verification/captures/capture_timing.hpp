@@ -9,9 +9,12 @@
 //   * jitter = standard deviation of the intervals that are not gaps, with the largest deviation,
 //     the shortest and longest interval and the number of equal stamps;
 //   * the clock (ClockModel): a Wii Remote sends its reports on its own regular clock and the host
-//     adds jitter, so each kept report gets its slot in that sequence (gaps counted) and a
-//     least-squares line through (slot, stamp) recovers the remote's clock — valid only when every
-//     stamp lies within half a typical interval of its slot (otherwise the slots are ambiguous).
+//     adds jitter. Its period is found from all stamps at once: the one (within ±20 % of the typical
+//     interval) for which the stamps' phases t/P mod 1 fit in the shortest arc; each report's slot
+//     is the one nearest its phase (gaps counted from the slots), and a least-squares line through
+//     (slot, stamp) is the clock.
+//     Valid only when every stamp lies within half a period of its slot (the arc shorter than one
+//     period; otherwise the slots are ambiguous).
 //     `automatic` checks exactly that and otherwise uses the stamps as given (a logger whose rows
 //     are not one per report, a device without a regular clock). Integration always uses the
 //     actual steps between the times chosen here, never a nominal dt.

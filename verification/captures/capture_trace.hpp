@@ -32,6 +32,10 @@ struct CaptureCalibration {
   double accel_g(int axis, double raw) const {
     return accel_sign[axis] * (raw - accel_zero_counts[axis]) / (accel_one_g_counts[axis] - accel_zero_counts[axis]);
   }
+  // A reading from a report: Y and Z come without their lowest bit (spec §4: Y = AY<<2 |
+  // (b1>>4 & 2)), so the 10-bit reading lies in [raw, raw + 1]; its mean, raw + ½, is used (taking
+  // raw itself would read them half a count, ≈ 0.005 g, low and tilt gravity by ≈ 0.3°).
+  double accel_g_from_report(int axis, double raw) const { return accel_g(axis, raw + (axis == 0 ? 0.0 : 0.5)); }
   double accel_lsb_g(int axis) const { return 1.0 / std::abs(accel_one_g_counts[axis] - accel_zero_counts[axis]); }
   double gyro_deg_s(int axis, double raw, bool fast) const {
     return gyro_sign[axis] * (raw - gyro_zero_counts[axis]) / gyro_slow_counts_per_deg_s * (fast ? gyro_fast_factor : 1.0);

@@ -107,7 +107,7 @@ void judge_capture(CaptureAnalysis& a, const CaptureVerdictRules& r) {
   if (trace.nominal_timestamps)
     caveats.push_back(format("no timestamps in the file: the nominal rate %.4g Hz was assumed", trace.nominal_rate_hz));
   if (trace.gyro_mode_inferred && a.gyro_range_switches > 0)
-    caveats.push_back(format("%.0f MotionPlus range switches inferred from jumps (no range flags in the file)",
+    caveats.push_back(format("%.0f MotionPlus range switches inferred (no range flags in the file)",
                              a.gyro_range_switches));
   if (!trace.calibration.accel_from_device)
     caveats.push_back("no device calibration in the file: the nominal accelerometer calibration was used");
