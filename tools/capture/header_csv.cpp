@@ -389,7 +389,7 @@ Trace read_header_csv(const std::string& text, const std::string& file, const He
       }
       unit = median < 0.5 ? CsvUnit::s : median < 500 ? CsvUnit::ms : CsvUnit::us;
       char b[120];
-      std::snprintf(b, sizeof b, "detected from the median interval %.6g (no unit in the header)", median);
+      std::snprintf(b, sizeof b, "no unit in the header: detected from the median interval %.6g", median);
       how = b;
     }
     const double scale = unit == CsvUnit::ms ? 1e-3 : unit == CsvUnit::us ? 1e-6 : 1.0;

@@ -4,10 +4,13 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <fstream>
 #include <numbers>
+#include <regex>
 #include <string>
 
 #include "tools/capture/capture_format.hpp"
+#include "tools/capture/capture_text.hpp"
 #include "tools/capture/csv_columns.hpp"
 #include "tools/capture/header_csv.hpp"
 #include "tools/capture/synthetic_capture.hpp"
@@ -89,6 +92,50 @@ BOOST_AUTO_TEST_CASE(column_names_are_recognised_whatever_their_case_units_and_d
   }
   for (const char* unknown : {"Temperature", "Yaw", "Acc W", "acc x [furlong]", "Battery #WM1"})
     BOOST_TEST(!recognise_column(unknown).has_value(), unknown);
+}
+
+BOOST_AUTO_TEST_CASE(the_table_in_the_readme_is_what_the_reader_recognises) {
+  // Oracle: tools/capture/README.md's table of recognised names: every name in a row must be
+  // recognised as one of that row's keys, and the row's units must be the field's.
+  std::ifstream in("tools/capture/README.md");
+  BOOST_REQUIRE(in.good());
+  const std::regex ticked("`([^`]+)`");
+  std::string line;
+  int rows = 0;
+  while (std::getline(in, line)) {
+    if (line.rfind("| `", 0) != 0) continue;
+    std::vector<std::string> cells;
+    for (std::size_t b = 1, e; (e = line.find('|', b)) != std::string::npos; b = e + 1) cells.push_back(line.substr(b, e - b));
+    if (cells.size() != 4) continue;  // the other tables of the README
+    std::vector<CsvField> keys;
+    for (std::sregex_iterator it(cells[0].begin(), cells[0].end(), ticked), end; it != end; ++it) {
+      const std::string key = (*it)[1];
+      if (key.back() == '*') {  // slow_*, fast_*
+        for (const char* axis : {"pitch", "roll", "yaw"}) keys.push_back(*csv_field_from_key(key.substr(0, key.size() - 1) + axis));
+      } else {
+        const auto f = csv_field_from_key(key);
+        BOOST_REQUIRE_MESSAGE(f.has_value(), "README key " << key);
+        keys.push_back(*f);
+      }
+    }
+    if (keys.empty()) continue;
+    ++rows;
+    for (std::sregex_iterator it(cells[2].begin(), cells[2].end(), ticked), end; it != end; ++it) {
+      const std::string name = (*it)[1];
+      const auto r = recognise_column(name);
+      BOOST_TEST_CONTEXT("README name '" << name << "'") {
+        BOOST_REQUIRE(r.has_value());
+        BOOST_TEST((std::find(keys.begin(), keys.end(), r->field) != keys.end()));
+      }
+    }
+    const auto& units = csv_field_info(keys.front()).units;
+    const std::string cell(trim(cells[3]));
+    BOOST_TEST(cell.rfind(units.front() == CsvUnit::none ? "none" : to_string(units.front()), 0) == 0u,
+               "default unit of " << cells[0] << ": README '" << cell << "'");
+    for (CsvUnit u : units)
+      if (u != CsvUnit::none) BOOST_TEST(cell.find(to_string(u)) != std::string::npos, cells[0] << " lacks " << to_string(u));
+  }
+  BOOST_TEST(rows == 10);
 }
 
 BOOST_AUTO_TEST_CASE(a_wiiyourself_log_reads_back_the_readings_the_report_log_of_the_same_throw_holds) {

@@ -4,6 +4,7 @@
 //   stoneskip capture throw FILE --solver realtime|reference|both [--json] [--out FILE.h5]
 //   stoneskip capture convert FILE --out TRACE.csv               any format → stoneskip trace CSV
 //   stoneskip capture synthesize --out DIR                       the shipped synthetic captures + truth
+//   stoneskip capture columns                                    the csv reader's recognised column names
 //
 // Examples (regression runs):
 //   stoneskip capture validate cases/captures/*.log cases/captures/*.evemu --out out/captures
@@ -16,6 +17,7 @@
 // with an unusable capture or a failed solve, 2 bad input.
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -25,6 +27,7 @@
 #include "reports/capture/capture_json.hpp"
 #include "reports/capture/capture_report.hpp"
 #include "tools/capture/capture_format.hpp"
+#include "tools/capture/csv_columns.hpp"
 #include "verification/captures/capture_throw.hpp"
 #include "tools/capture/synthetic_capture.hpp"
 #include "tools/capture/trace_csv.hpp"
@@ -109,6 +112,30 @@ CaptureOptions capture_options(const CaptureArgs& a, const Trace& t) {
   return o;
 }
 
+// What capture_json (reports/capture) does not hold yet: the timing in detail, the throw as
+// measured in the room, and the virtual thrower's settings.
+void add_details(nlohmann::json& j, const CaptureAnalysis& an) {
+  const TimingStats& t = an.timing.stats;
+  auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+  j["timing"] = {{"clock", to_string(t.clock)},
+                 {"mean_rate_hz", number(t.mean_rate_hz)},
+                 {"min_interval_ms", number(1e3 * t.min_interval_s)},
+                 {"max_interval_ms", number(1e3 * t.max_interval_s)},
+                 {"max_jitter_ms", number(1e3 * t.max_jitter_s)},
+                 {"equal_stamps", t.equal_stamps},
+                 {"clock_residual_max_ms", number(1e3 * t.clock_residual_max_s)},
+                 {"longest_gap_ms", number(1e3 * t.longest_gap_s)}};
+  const bool ok = an.can_throw();
+  auto put = [&](const char* key, const Interval& v) {
+    j["measured"][key] = ok ? nlohmann::json{number(v.nominal), number(v.low), number(v.high)} : nlohmann::json(nullptr);
+  };
+  j["measured"] = nlohmann::json::object();
+  put("speed_m_s", an.measured_speed_m_s);
+  put("spin_rev_s", an.measured_spin_rev_s);
+  put("rise_m", an.rise_m);
+  j["thrower"] = thrower_settings(an.options.thrower);
+}
+
 std::string folder_name(const std::string& file, std::vector<std::string>& used) {
   std::string stem = fs::path(file).filename().string();
   for (char& c : stem)
@@ -122,20 +149,32 @@ std::string folder_name(const std::string& file, std::vector<std::string>& used)
 void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
   std::printf("%s: %s\n", an.source.c_str(), to_string(an.verdict));
   for (const auto& r : an.reasons) std::printf("  - %s\n", r.c_str());
+  for (const auto& n : an.notes) std::printf("  note: %s\n", n.c_str());
   if (!an.can_throw()) return;
   const auto show = [](const char* name, const Interval& v, const char* unit) {
-    std::printf("  %-22s %8.3f  [%.3f, %.3f] %s\n", name, v.nominal, v.low, v.high, unit);
+    std::printf("    %-24s %8.3f  [%.3f, %.3f] %s\n", name, v.nominal, v.low, v.high, unit);
   };
   const TimingStats& t = an.timing.stats;
-  std::printf("  rate %.1f Hz, jitter %.2f ms, %d gaps (%ld reports lost), %zu repeats, saturated fraction %.3f\n",
-              t.rate_hz, 1e3 * t.jitter_s, t.gaps, t.dropped_reports, t.repeated, an.saturated_fraction);
-  show("release speed", an.speed_m_s, an.clipped ? "m/s (accelerometer clipped: lower bound from it)" : "m/s");
+  std::printf("  timing: rate %.1f Hz (mean %.1f Hz), jitter %.2f ms, intervals %.1f-%.1f ms, %d gaps (about %ld reports "
+              "lost), %zu repeats; clock %s\n",
+              t.rate_hz, t.mean_rate_hz, 1e3 * t.jitter_s, 1e3 * t.min_interval_s, 1e3 * t.max_interval_s, t.gaps,
+              t.dropped_reports, t.repeated, to_string(t.clock));
+  std::printf("  saturated fraction %.3f\n", an.saturated_fraction);
+  std::printf("  as measured (the stone at the remote's mounting, in the room):\n");
+  show("speed", an.measured_speed_m_s,
+       an.clipped ? "m/s (accelerometer clipped: the lever-arm value; the interval spans the accelerometer's bounds)" : "m/s");
   show("  accelerometer", an.accel_speed_m_s, "m/s");
   show("  angular rate x lever", an.lever_speed_m_s, "m/s");
   show("attack angle", an.attack_angle_deg, "deg");
   show("path angle", an.path_angle_deg, "deg");
+  show("spin about the normal", an.measured_spin_rev_s, "rev/s");
+  show("rise since still part", an.rise_m, "m");
+  const VirtualThrowerOptions& th = an.options.thrower;
+  std::printf("  as mapped (the virtual stone: %s, speed x%g, spin x%g + %g rev/s):\n", to_string(th.height_mapping),
+              th.speed_scale, th.spin_scale, th.finger_spin_rev_s);
+  show("speed", an.speed_m_s, "m/s");
   show("spin", an.spin_rev_s, "rev/s");
-  show("release height", an.height_m, "m");
+  show("height above the water", an.height_m, "m");
   if (sim) {
     if (sim->realtime) std::printf("  bounces: real-time %d", sim->realtime->bounces);
     if (sim->reference) std::printf(", reference %d", sim->reference->bounces);
@@ -197,7 +236,11 @@ void validate(const CaptureArgs& a) {
       if (progress) progress->done();
     }
     unusable = unusable || !an->can_throw();
-    if (a.json) std::cout << capture_json(*an, c ? sim.get() : nullptr).dump() << std::endl;
+    if (a.json) {
+      nlohmann::json j = capture_json(*an, c ? sim.get() : nullptr);
+      add_details(j, *an);
+      std::cout << j.dump() << std::endl;
+    }
     else print_verdict(*an, c ? sim.get() : nullptr);
     if (!a.out.empty()) {
       const std::string folder = folder_name(file, used);
@@ -234,6 +277,7 @@ void throw_capture(const CaptureArgs& a) {
     results.emplace_back("reference", run_reference(c.stone, c.environment, c.initial, c.reference));
   if (a.json) {
     nlohmann::json j = capture_json(an, nullptr);
+    add_details(j, an);
     for (const auto& [name, r] : results) j[name] = json_summary(r);
     std::cout << j.dump(2) << std::endl;
   } else {
@@ -342,6 +386,22 @@ void synthesize(const CaptureArgs& a) {
   }
 }
 
+// The header-driven CSV reader's table of recognised column names (from the code, so it cannot
+// drift from what the reader does).
+void print_columns() {
+  std::printf("key           meaning                                                        units (first: default)\n");
+  for (const auto& f : csv_fields()) {
+    std::string units;
+    for (CsvUnit u : f.units) units += std::string(units.empty() ? "" : ", ") + (u == CsvUnit::none ? "none" : to_string(u));
+    std::printf("%-13s %-62s %s\n", f.key, f.meaning, units.c_str());
+    std::string names;
+    for (const auto& n : csv_field_names(f.field)) names += std::string(names.empty() ? "" : ", ") + n;
+    std::printf("              names: %s\n", names.c_str());
+  }
+  std::printf("Names are compared in lowercase words (split at spaces, _ . - / : and camelCase); a unit in [ ] or ( )\n"
+              "or as trailing words (t_s, wx_deg_s), and a device suffix #WMn, may follow.\n");
+}
+
 void add_capture(CLI::App& app) {
   auto* cmd = app.add_subcommand("capture", "Wii Remote captures: validate them, convert them, throw them");
   cmd->require_subcommand(1);
@@ -373,6 +433,9 @@ void add_capture(CLI::App& app) {
   c->add_option("--out", a->out, "Trace CSV to write")->required();
   add_read(c, *a);
   c->callback([a] { convert(*a); });
+
+  auto* cols = cmd->add_subcommand("columns", "List the column names the csv reader recognises, with their units");
+  cols->callback([] { print_columns(); });
 
   auto* s = cmd->add_subcommand("synthesize", "Write the shipped synthetic captures and their truth files");
   s->add_option("--out", a->out, "Folder (e.g. cases/captures)")->required();
