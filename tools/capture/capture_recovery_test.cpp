@@ -56,7 +56,7 @@ void check_unclipped(const CaptureAnalysis& a, const SyntheticTruth& truth) {
 }
 }  // namespace
 
-BOOST_AUTO_TEST_SUITE(capture_analysis)
+BOOST_AUTO_TEST_SUITE(capture_recovery)
 
 BOOST_AUTO_TEST_CASE(an_unclipped_hard_throw_is_recovered_within_five_percent_and_three_degrees) {
   // Oracle: the generator's analytic release state (speed V + Ω|lever|, angles α and β).

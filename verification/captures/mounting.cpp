@@ -33,10 +33,7 @@ Vec3 parse_vec(const std::string& value, const std::string& where, const std::st
 }  // namespace
 
 void apply_mounting_setting(Mounting& m, const std::string& setting, const std::string& where) {
-  const auto eq = setting.find('=');
-  if (eq == std::string::npos) throw_input_error(where, 0, setting, "expected key=value");
-  const std::string key(trim(std::string_view(setting).substr(0, eq)));
-  const std::string value(trim(std::string_view(setting).substr(eq + 1)));
+  const auto [key, value] = split_setting(setting, where);
   const std::string full = "mounting." + key;
   if (key == "stone_normal" || key == "stone_forward") {
     const Vec3 v = parse_vec(value, where, full);

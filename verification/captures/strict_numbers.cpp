@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "tools/io/input_error.hpp"
+
 namespace stoneskip {
 
 std::string_view trim(std::string_view s) {
@@ -60,6 +62,12 @@ std::optional<long long> parse_integer(std::string_view f, int base) {
   const auto r = std::from_chars(f.data(), f.data() + f.size(), v, base);
   if (r.ec != std::errc() || r.ptr != f.data() + f.size()) return std::nullopt;
   return v;
+}
+
+std::pair<std::string, std::string> split_setting(const std::string& setting, const std::string& where) {
+  const auto eq = setting.find('=');
+  if (eq == std::string::npos) throw_input_error(where, 0, setting, "expected key=value");
+  return {std::string(trim(std::string_view(setting).substr(0, eq))), std::string(trim(std::string_view(setting).substr(eq + 1)))};
 }
 
 }  // namespace stoneskip

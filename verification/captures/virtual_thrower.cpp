@@ -41,10 +41,7 @@ bool VirtualThrowerOptions::is_valid(std::string* why) const {
 }
 
 void apply_thrower_setting(VirtualThrowerOptions& o, const std::string& setting, const std::string& where) {
-  const auto eq = setting.find('=');
-  if (eq == std::string::npos) throw_input_error(where, 0, setting, "expected key=value");
-  const std::string key(trim(std::string_view(setting).substr(0, eq)));
-  const std::string value(trim(std::string_view(setting).substr(eq + 1)));
+  const auto [key, value] = split_setting(setting, where);
   const std::string full = "thrower." + key;
   if (key == "height_mapping") {
     if (value == "fixed_release_height") o.height_mapping = HeightMapping::fixed_release_height;
