@@ -98,45 +98,87 @@ TimedSamples analyse_timing(const Trace& trace, const TimingOptions& o) {
   if (trace.nominal_timestamps) return out;
   // The remote's regular clock. Slots counted interval by interval go wrong where the jitter makes
   // an interval look like a gap or hides one, and the error carries into every later slot. So the
-  // clock is found from all stamps at once: for each trial period P within ±20 % of the typical
-  // interval, the stamps' phases t/P mod 1 are sorted and the shortest arc holding them all is
-  // found (one minus the largest gap between neighbouring phases); the period with the shortest arc
-  // is the clock's, each stamp's slot is the nearest to its phase in that arc, and a least-squares
-  // line through (slot, stamp) gives the clock. Half that arc, in periods, is the largest distance
-  // of a stamp from its slot.
+  // clock is found from many stamps at once: for each trial period P within ±20 % of the typical
+  // interval, the phases t/P mod 1 of the first 256 stamps are sorted and the shortest arc holding
+  // them all is found (one minus the largest gap between neighbouring phases); the period with the
+  // shortest arc is the clock's, and each stamp's slot is the nearest to its phase in that arc. Later
+  // stamps are tracked with a least-squares clock through the slots so far, then all are checked
+  // against the final period. Half the arc, in periods, is the largest distance of a stamp from its
+  // slot; a least-squares line through (slot, stamp) gives the clock.
   double mi = 0, mt = 0, b = 0;
   std::vector<long> slots = out.report_index;
   bool fitted = false;
   double minimax_residual_s = std::numeric_limits<double>::infinity();
   if (s.duration_s > 0) {
     const double t0 = stamps.front();
-    std::vector<double> phase(stamps.size());
-    auto shortest_arc = [&](double period, double& centre) {  // in cycles; centre: the arc's middle
-      for (std::size_t k = 0; k < stamps.size(); ++k) {
+    std::vector<double> phase;
+    // The shortest arc (in cycles) holding the phases of stamps[0, m) for a period; centre: its middle.
+    auto shortest_arc = [&](double period, std::size_t m, double& centre) {
+      phase.resize(m);
+      for (std::size_t k = 0; k < m; ++k) {
         const double x = (stamps[k] - t0) / period;
         phase[k] = x - std::floor(x);
       }
       std::sort(phase.begin(), phase.end());
       double gap = phase.front() + 1.0 - phase.back(), start = phase.front();  // the wrap-around gap
-      for (std::size_t k = 1; k < phase.size(); ++k)
+      for (std::size_t k = 1; k < m; ++k)
         if (phase[k] - phase[k - 1] > gap) gap = phase[k] - phase[k - 1], start = phase[k];
       centre = start + 0.5 * (1.0 - gap);
       return 1.0 - gap;
     };
-    // The arc changes by about N·δP/P over a step δP: step so that it changes by at most 1 % of a cycle.
-    const double step = std::max(0.01 * s.period_s / double(stamps.size()), 0.4 * s.period_s / 200000);
+    auto assign = [&](double period, double centre, std::size_t m) {  // false unless increasing
+      for (std::size_t k = 0; k < m; ++k) {
+        const double x = (stamps[k] - t0) / period - centre;
+        if (!(std::abs(x) < 1e12)) return false;
+        slots[k] = std::lround(x);
+        if (k > 0 && slots[k] <= slots[k - 1]) return false;
+      }
+      return true;
+    };
+    // 1. The period from the first kHead stamps (the search costs ~40·m² log m): the arc changes by
+    // about m·δP/P over a step δP, so step for 1 % of a cycle.
+    constexpr std::size_t kHead = 256;
+    const std::size_t m = std::min(stamps.size(), kHead);
+    const double step = 0.01 * s.period_s / double(m);
     double best = 2, best_period = s.period_s, best_centre = 0;
     for (double period = 0.8 * s.period_s; period <= 1.2 * s.period_s; period += step) {
       double centre = 0;
-      const double arc = shortest_arc(period, centre);
+      const double arc = shortest_arc(period, m, centre);
       if (arc < best) best = arc, best_period = period, best_centre = centre;
     }
-    bool increasing = true;
-    for (std::size_t k = 0; k < stamps.size() && increasing; ++k) {
-      slots[k] = std::lround((stamps[k] - t0) / best_period - best_centre);
-      if (k > 0 && slots[k] <= slots[k - 1]) increasing = false;
+    bool ok = best < 1.0 && assign(best_period, best_centre, m);
+    // 2. The rest tracked: a least-squares clock through the slots so far gives each next slot.
+    if (ok && m < stamps.size()) {
+      double n_s = 0, si = 0, st = 0, sii = 0, sit = 0, intercept = 0, slope = 0;
+      auto add = [&](long i, double t) {
+        n_s += 1, si += double(i), st += t, sii += double(i) * double(i), sit += double(i) * t;
+      };
+      auto refit = [&] {
+        const double d = n_s * sii - si * si;
+        if (!(d > 0)) return false;
+        slope = (n_s * sit - si * st) / d;
+        intercept = (st - slope * si) / n_s;
+        return slope > 0 && std::isfinite(slope) && std::isfinite(intercept);
+      };
+      for (std::size_t k = 0; k < m; ++k) add(slots[k], stamps[k]);
+      ok = refit();
+      for (std::size_t k = m; k < stamps.size() && ok; ++k) {
+        const double x = (stamps[k] - intercept) / slope;
+        if (!(std::abs(x) < 1e12)) ok = false;
+        else {
+          slots[k] = std::max(slots[k - 1] + 1, std::lround(x));
+          add(slots[k], stamps[k]);
+          ok = refit();
+        }
+      }
+      // 3. Every stamp against the final period: its arc and its slot.
+      if (ok) {
+        best_period = slope;
+        best = shortest_arc(best_period, stamps.size(), best_centre);
+        ok = best < 1.0 && assign(best_period, best_centre, stamps.size());
+      }
     }
-    if (increasing) {
+    if (ok) {
       const long first = slots.front();
       for (long& x : slots) x -= first;
       fitted = fit_clock(slots, stamps, mi, mt, b);
