@@ -139,9 +139,10 @@ TimedSamples analyse_timing(const Trace& trace, const TimingOptions& o) {
     // about m·δP/P over a step δP, so step for 1 % of a cycle.
     constexpr std::size_t kHead = 256;
     const std::size_t m = std::min(stamps.size(), kHead);
-    const double step = 0.01 * s.period_s / double(m);
+    const long steps = 40 * long(m);  // 0.4 P in steps of 0.01 P/m (counted, so no step can vanish)
     double best = 2, best_period = s.period_s, best_centre = 0;
-    for (double period = 0.8 * s.period_s; period <= 1.2 * s.period_s; period += step) {
+    for (long i = 0; i <= steps; ++i) {
+      const double period = s.period_s * (0.8 + 0.4 * double(i) / double(steps));
       double centre = 0;
       const double arc = shortest_arc(period, m, centre);
       if (arc < best) best = arc, best_period = period, best_centre = centre;
