@@ -12,7 +12,8 @@
 //   stoneskip capture throw cases/captures/gentle_sidearm.log --solver both
 // Common options: --format NAME (force a reader), --case FILE (stone and water, default
 // cases/paper_8ms_spin.toml), --mount key=value (mounting.hpp), --thrower key=value
-// (virtual_thrower.hpp), --button A|B, --saturation-g G, --max-accel-g G, --members N, --seed S.
+// (virtual_thrower.hpp), --clock MODEL, --button A|B, --saturation-g G, --max-accel-g G, --members N,
+// --seed S.
 // Exit status: 0 done (whatever the verdicts, unless --strict and one is unusable), 1 --strict
 // with an unusable capture or a failed solve, 2 bad input.
 #include <algorithm>
@@ -52,6 +53,7 @@ struct CaptureArgs {
   std::vector<std::string> sets;
   std::vector<std::string> mounts;
   std::vector<std::string> thrower;
+  std::string clock = "automatic";
   std::string button = "B";
   double saturation_g = 3.4;
   double max_accel_g = 20.0;
@@ -85,6 +87,8 @@ CaptureReadOptions read_options(const CaptureArgs& a) {
 void add_common(CLI::App* cmd, CaptureArgs& a) {
   add_read(cmd, a);
   cmd->add_option("--mount", a.mounts, "Mounting setting key=value (stone_normal, stone_forward, stone_offset_m, lever_arm_m, lever_arm_rel_uncertainty), repeatable");
+  cmd->add_option("--clock", a.clock, "automatic (default), regular_reports (the remote's clock fitted through the stamps) or stamps_as_given")
+      ->check(CLI::IsMember({"automatic", "regular_reports", "stamps_as_given"}));
   cmd->add_option("--button", a.button, "The action button held through the swing (default B)")->check(CLI::IsMember({"A", "B"}));
   cmd->add_option("--thrower", a.thrower, "Virtual thrower setting key=value (height_mapping, release_height_m, still_height_m, height_uncertainty_m, speed_scale, spin_scale, finger_spin_rev_s), repeatable");
   cmd->add_option("--saturation-g", a.saturation_g, "An axis at or beyond this |a| is clipped, g (default 3.4)");
@@ -102,6 +106,9 @@ CaptureOptions capture_options(const CaptureArgs& a, const Trace& t) {
   CaptureOptions o;
   o.mounting = resolve_mounting(t, a.mounts);
   o.thrower = resolve_thrower(t, a.thrower);
+  o.timing.clock = a.clock == "regular_reports"   ? ClockModel::regular_reports
+                   : a.clock == "stamps_as_given" ? ClockModel::stamps_as_given
+                                                  : ClockModel::automatic;
   o.release_button = a.button == "A" ? kButtonA : kButtonB;
   o.saturation_g = a.saturation_g;
   o.max_accel_g = a.max_accel_g;
