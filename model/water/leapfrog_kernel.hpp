@@ -1,0 +1,40 @@
+#pragma once
+// The inner loop of the height field (spec §2.1): one row segment of the damped leapfrog
+//   z⁺ = wc·z + wo·Σ_orth + wd·Σ_diag − wp·z⁻,
+// with wc = 4/(2 + μΔt) + s·centre, wo = s·orth, wd = s·diag, wp = (2 − μΔt)/(2 + μΔt),
+// s = 2σ²/(2 + μΔt) (the 3×3 stencil of model/water/stencil.hpp folded into the update).
+// z⁺ overwrites z⁻ in place (each cell reads only its own z⁻).
+//
+// Written with explicit SIMD (GCC vector extensions, 64-byte vectors) and compiled three times
+// (x86-64-v4 = AVX-512, x86-64-v3 = AVX2 + FMA, baseline SSE2) with a run-time choice of the
+// best the CPU has (GCC target_clones): no -march flag, so the binary runs on any x86-64. The
+// file is compiled with -ffp-contract=off and the vector body and the scalar tail evaluate the
+// same expression in the same order, so every cell gets the same bits whichever variant, vector
+// lane or row segment computes it (the active-tile mode relies on that: spec §2.6, ε = 0).
+#include <cstddef>
+
+namespace stoneskip {
+
+template <class Real>
+struct LeapfrogWeights {
+  Real centre = 0, orth = 0, diag = 0, previous = 0;  // wc, wo, wd, wp above
+};
+
+// Updates zp[k], k ∈ [0, n) (zp and z point at the segment's first cell; w is the row stride, so
+// z[k ± w] are the rows above and below). `diagonal` false skips the corner terms (wd = 0).
+void leapfrog_row(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<double>& c,
+                  bool diagonal);
+void leapfrog_row(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<float>& c,
+                  bool diagonal);
+
+// The same update, returning the segment's activity max_k max(|z⁺_k|, |z⁺_k − z_k|) (spec §2.6);
+// a NaN anywhere makes the result NaN, so a blown-up tile is never taken for a quiet one.
+double leapfrog_row_activity(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t w,
+                             const LeapfrogWeights<double>& c, bool diagonal);
+float leapfrog_row_activity(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t w,
+                            const LeapfrogWeights<float>& c, bool diagonal);
+
+// Which variant the run-time dispatch chose on this CPU: "x86-64-v4", "x86-64-v3" or "baseline".
+const char* leapfrog_kernel_isa();
+
+}  // namespace stoneskip
