@@ -210,7 +210,8 @@ void HeightField::step_impl(std::vector<Real>& curv, std::vector<Real>& prevv, c
     fill_ghosts(z, nx, ny, stride_, options_.boundary);
     auto rows = [&](int part) {
       const PartRange r = part_range(ny, part, parts);
-      for (long j = r.begin + 1; j <= r.end; ++j) leapfrog_row(zp + j * w + 1, z + j * w + 1, nx, w, wts, diagonal);
+      const std::ptrdiff_t k = (r.begin + 1) * w + 1;
+      leapfrog_block(zp + k, z + k, nx, r.end - r.begin, w, wts, diagonal);
     };
     if (team_)
       team_->run(rows);
@@ -290,15 +291,9 @@ void HeightField::step_impl(std::vector<Real>& curv, std::vector<Real>& prevv, c
       for (long q = r.begin; q < r.end; ++q) {
         const int t = active_[q];
         const int tx = t % tiles_x_, ty = t / tiles_x_;
-        const int i0 = tx * tc, n = std::min(tc, nx - i0);
-        double act = 0;
-        for (int j = ty * tc; j < std::min((ty + 1) * tc, ny); ++j) {
-          const std::size_t k = index(i0, j);
-          const double a = leapfrog_row_activity(zp + k, z + k, n, w, wts, diagonal);
-          act = a <= act ? act : a;
-          if (a != a) act = a;  // a NaN stays (see leapfrog_row_activity)
-        }
-        activity_[t] = act;
+        const int i0 = tx * tc, j0 = ty * tc, n = std::min(tc, nx - i0), rows_in_tile = std::min(tc, ny - j0);
+        const std::size_t k = index(i0, j0);
+        activity_[t] = leapfrog_block_activity(zp + k, z + k, n, rows_in_tile, w, wts, diagonal);
       }
     };
     if (team_)
@@ -312,7 +307,7 @@ void HeightField::step_impl(std::vector<Real>& curv, std::vector<Real>& prevv, c
       const int i1 = std::min(i0 + tc, nx), j1 = std::min(j0 + tc, ny);
       bool held = false;
       auto border = [&](int ib, int ie, int jb, int je) {
-        for (int j = jb; j < je; ++j) leapfrog_row(zp + index(ib, j), z + index(ib, j), ie - ib, w, wts, diagonal);
+        leapfrog_block(zp + index(ib, jb), z + index(ib, jb), ie - ib, je - jb, w, wts, diagonal);
         held = drop_cells(ib, ie, jb, je, zp, nullptr) || held;  // the tile's z⁺ there; its z is zero
       };
       border(i0, i1, j0, j0 + 1);

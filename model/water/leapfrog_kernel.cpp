@@ -35,15 +35,17 @@ template <class Real>
   return reinterpret_cast<typename S::V>(reinterpret_cast<typename S::I>(x) & ~mask);
 }
 
-// The update of spec §2.1 for one segment; the scalar tail repeats the vector body's expression
-// term for term so that both round identically. With `Activity`, also the segment's activity.
+// The update of spec §2.1 for one row segment; the scalar tail repeats the vector body's
+// expression term for term so that both round identically. With `Activity`, the segment's
+// largest max(|z⁺|, |z⁺ − z|) goes into vmax/smax and (value − value), 0 unless a value is not
+// finite, into vnan/snan.
 template <class Real, bool Diagonal, bool Activity>
-[[gnu::always_inline]] inline Real row_body(Real* __restrict zp, const Real* __restrict z, std::ptrdiff_t n,
-                                            std::ptrdiff_t w, const LeapfrogWeights<Real>& c) {
+[[gnu::always_inline]] inline void row_body(Real* __restrict zp, const Real* __restrict z, std::ptrdiff_t n,
+                                            std::ptrdiff_t w, const LeapfrogWeights<Real>& c, typename Simd<Real>::V& vmax,
+                                            typename Simd<Real>::V& vnan, Real& smax, Real& snan) {
   using S = Simd<Real>;
   using V = typename S::V;
   const Real wc = c.centre, wo = c.orth, wd = c.diag, wp = c.previous;
-  V vmax = V{} * 0, vnan = V{} * 0;
   std::ptrdiff_t k = 0;
   for (; k + S::lanes <= n; k += S::lanes) {
     const V zc = load(z + k);
@@ -59,10 +61,9 @@ template <class Real, bool Diagonal, bool Activity>
       const V a = vabs<Real>(r), b = vabs<Real>(r - zc);
       const V ab = a <= b ? b : a;
       vmax = ab <= vmax ? vmax : ab;
-      vnan = vnan + (ab - ab);  // stays 0 unless a value is inf or NaN
+      vnan = vnan + (ab - ab);
     }
   }
-  Real smax = 0, snan = 0;
   for (; k < n; ++k) {
     const Real zc = z[k];
     const Real orth = (z[k - 1] + z[k + 1]) + (z[k - w] + z[k + w]);
@@ -80,8 +81,18 @@ template <class Real, bool Diagonal, bool Activity>
       snan = snan + (ab - ab);
     }
   }
+}
+
+template <class Real, bool Diagonal, bool Activity>
+[[gnu::always_inline]] inline Real block_body(Real* zp, const Real* z, std::ptrdiff_t n, std::ptrdiff_t rows,
+                                              std::ptrdiff_t w, const LeapfrogWeights<Real>& c) {
+  using V = typename Simd<Real>::V;
+  V vmax = V{} * 0, vnan = V{} * 0;
+  Real smax = 0, snan = 0;
+  for (std::ptrdiff_t r = 0; r < rows; ++r)
+    row_body<Real, Diagonal, Activity>(zp + r * w, z + r * w, n, w, c, vmax, vnan, smax, snan);
   if constexpr (Activity) {
-    for (int l = 0; l < S::lanes; ++l) {
+    for (int l = 0; l < Simd<Real>::lanes; ++l) {
       smax = vmax[l] <= smax ? smax : vmax[l];
       snan = snan + vnan[l];
     }
@@ -91,9 +102,10 @@ template <class Real, bool Diagonal, bool Activity>
 }
 
 template <class Real, bool Activity>
-[[gnu::always_inline]] inline Real row_dispatch(Real* zp, const Real* z, std::ptrdiff_t n, std::ptrdiff_t w,
-                                                const LeapfrogWeights<Real>& c, bool diagonal) {
-  return diagonal ? row_body<Real, true, Activity>(zp, z, n, w, c) : row_body<Real, false, Activity>(zp, z, n, w, c);
+[[gnu::always_inline]] inline Real block_dispatch(Real* zp, const Real* z, std::ptrdiff_t n, std::ptrdiff_t rows,
+                                                  std::ptrdiff_t w, const LeapfrogWeights<Real>& c, bool diagonal) {
+  return diagonal ? block_body<Real, true, Activity>(zp, z, n, rows, w, c)
+                  : block_body<Real, false, Activity>(zp, z, n, rows, w, c);
 }
 
 }  // namespace
@@ -101,27 +113,27 @@ template <class Real, bool Activity>
 #define STONESKIP_KERNEL_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 
 STONESKIP_KERNEL_CLONES
-void leapfrog_row(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<double>& c,
-                  bool diagonal) {
-  row_dispatch<double, false>(zp, z, n, w, c, diagonal);
+void leapfrog_block(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
+                    const LeapfrogWeights<double>& c, bool diagonal) {
+  block_dispatch<double, false>(zp, z, n, rows, w, c, diagonal);
 }
 
 STONESKIP_KERNEL_CLONES
-void leapfrog_row(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<float>& c,
-                  bool diagonal) {
-  row_dispatch<float, false>(zp, z, n, w, c, diagonal);
+void leapfrog_block(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
+                    const LeapfrogWeights<float>& c, bool diagonal) {
+  block_dispatch<float, false>(zp, z, n, rows, w, c, diagonal);
 }
 
 STONESKIP_KERNEL_CLONES
-double leapfrog_row_activity(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t w,
-                             const LeapfrogWeights<double>& c, bool diagonal) {
-  return row_dispatch<double, true>(zp, z, n, w, c, diagonal);
+double leapfrog_block_activity(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
+                               const LeapfrogWeights<double>& c, bool diagonal) {
+  return block_dispatch<double, true>(zp, z, n, rows, w, c, diagonal);
 }
 
 STONESKIP_KERNEL_CLONES
-float leapfrog_row_activity(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t w,
-                            const LeapfrogWeights<float>& c, bool diagonal) {
-  return row_dispatch<float, true>(zp, z, n, w, c, diagonal);
+float leapfrog_block_activity(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
+                              const LeapfrogWeights<float>& c, bool diagonal) {
+  return block_dispatch<float, true>(zp, z, n, rows, w, c, diagonal);
 }
 
 const char* leapfrog_kernel_isa() {

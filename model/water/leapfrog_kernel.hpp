@@ -20,19 +20,21 @@ struct LeapfrogWeights {
   Real centre = 0, orth = 0, diag = 0, previous = 0;  // wc, wo, wd, wp above
 };
 
-// Updates zp[k], k ∈ [0, n) (zp and z point at the segment's first cell; w is the row stride, so
-// z[k ± w] are the rows above and below). `diagonal` false skips the corner terms (wd = 0).
-void leapfrog_row(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<double>& c,
-                  bool diagonal);
-void leapfrog_row(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<float>& c,
-                  bool diagonal);
+// Updates a block of `rows` row segments of n cells: zp[r·w + k], k ∈ [0, n), r ∈ [0, rows)
+// (zp and z point at the block's first cell; w is the row stride, so z[k ± w] are the rows above
+// and below). `diagonal` false skips the corner terms (wd = 0).
+void leapfrog_block(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
+                    const LeapfrogWeights<double>& c, bool diagonal);
+void leapfrog_block(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
+                    const LeapfrogWeights<float>& c, bool diagonal);
 
-// The same update, returning the segment's activity max_k max(|z⁺_k|, |z⁺_k − z_k|) (spec §2.6);
-// a NaN anywhere makes the result NaN, so a blown-up tile is never taken for a quiet one.
-double leapfrog_row_activity(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t w,
-                             const LeapfrogWeights<double>& c, bool diagonal);
-float leapfrog_row_activity(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t w,
-                            const LeapfrogWeights<float>& c, bool diagonal);
+// The same update, returning the block's activity max over its cells of max(|z⁺|, |z⁺ − z|)
+// (spec §2.6); a NaN or infinity anywhere makes the result NaN, so a blown-up tile is never taken
+// for a quiet one.
+double leapfrog_block_activity(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
+                               const LeapfrogWeights<double>& c, bool diagonal);
+float leapfrog_block_activity(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
+                              const LeapfrogWeights<float>& c, bool diagonal);
 
 // Which variant the run-time dispatch chose on this CPU: "x86-64-v4", "x86-64-v3" or "baseline".
 const char* leapfrog_kernel_isa();

@@ -33,14 +33,14 @@ void check_segments_round_alike(bool diagonal) {
   auto z = random_rows<Real>(n, 1);
   auto whole = random_rows<Real>(n, 2), pieces = whole;
   const Real* zm = z.data() + w + 1;
-  const double a1 = leapfrog_row_activity(whole.data() + w + 1, zm, n, w, c, diagonal);
+  const double a1 = leapfrog_block_activity(whole.data() + w + 1, zm, n, 1, w, c, diagonal);
   double a2 = 0;
-  for (int k = 0; k < n; ++k) a2 = std::max(a2, static_cast<double>(leapfrog_row_activity(pieces.data() + w + 1 + k, zm + k, 1, w, c, diagonal)));
+  for (int k = 0; k < n; ++k) a2 = std::max(a2, static_cast<double>(leapfrog_block_activity(pieces.data() + w + 1 + k, zm + k, 1, 1, w, c, diagonal)));
   BOOST_TEST(std::memcmp(whole.data(), pieces.data(), whole.size() * sizeof(Real)) == 0);
   BOOST_TEST(a1 == a2);
   // And the plain kernel writes the same bits as the activity kernel.
   auto plain = random_rows<Real>(n, 2);
-  leapfrog_row(plain.data() + w + 1, zm, n, w, c, diagonal);
+  leapfrog_block(plain.data() + w + 1, zm, n, 1, w, c, diagonal);
   BOOST_TEST(std::memcmp(whole.data(), plain.data(), whole.size() * sizeof(Real)) == 0);
 }
 
@@ -62,7 +62,7 @@ BOOST_AUTO_TEST_CASE(row_matches_the_update_written_out) {
   auto z = random_rows<double>(n, 3);
   auto zp = random_rows<double>(n, 4);
   const auto before = zp;
-  leapfrog_row(zp.data() + w + 1, z.data() + w + 1, n, w, c, true);
+  leapfrog_block(zp.data() + w + 1, z.data() + w + 1, n, 1, w, c, true);
   for (int i = 1; i <= n; ++i) {
     const std::ptrdiff_t k = w + i;
     long double e = (long double)c.centre * z[k] +
@@ -80,14 +80,14 @@ BOOST_AUTO_TEST_CASE(activity_is_the_largest_height_or_change_and_nan_is_never_q
   const LeapfrogWeights<double> c{0.3, 0.17, 0.05, 0.93};
   auto z = random_rows<double>(n, 5);
   auto zp = random_rows<double>(n, 6);
-  const double act = leapfrog_row_activity(zp.data() + w + 1, z.data() + w + 1, n, w, c, true);
+  const double act = leapfrog_block_activity(zp.data() + w + 1, z.data() + w + 1, n, 1, w, c, true);
   double expect = 0;
   for (int i = 1; i <= n; ++i) expect = std::max({expect, std::abs(zp[w + i]), std::abs(zp[w + i] - z[w + i])});
   BOOST_TEST(act == expect);
   z[w + 9] = NAN;
-  BOOST_TEST(std::isnan(leapfrog_row_activity(zp.data() + w + 1, z.data() + w + 1, n, w, c, true)));
+  BOOST_TEST(std::isnan(leapfrog_block_activity(zp.data() + w + 1, z.data() + w + 1, n, 1, w, c, true)));
   z[w + 9] = INFINITY;
-  BOOST_TEST(std::isnan(leapfrog_row_activity(zp.data() + w + 1, z.data() + w + 1, n, w, c, true)));
+  BOOST_TEST(std::isnan(leapfrog_block_activity(zp.data() + w + 1, z.data() + w + 1, n, 1, w, c, true)));
 }
 
 BOOST_AUTO_TEST_CASE(thread_team_runs_every_part_once_per_call) {
