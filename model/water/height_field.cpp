@@ -74,10 +74,13 @@ std::string ActiveTileSummary::brief() const {
 }
 
 HeightField::HeightField(const HeightFieldOptions& options)
-    : options_(options), f64_(options.precision == Precision::float64), stride_(static_cast<std::size_t>(options.nx) + 2) {
+    : options_(options), f64_(options.precision == Precision::float64) {
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument(why);
-  const std::size_t n = stride_ * (static_cast<std::size_t>(options.ny) + 2);
+  const std::size_t line = CacheAligned<double>::kAlignment / (f64_ ? sizeof(double) : sizeof(float));
+  origin_ = line - 1;
+  stride_ = (origin_ + static_cast<std::size_t>(options.nx) + 2 + line - 1) / line * line;
+  const std::size_t n = levels_size_ = stride_ * (static_cast<std::size_t>(options.ny) + 2);
   if (f64_) {
     cur64_.assign(n, 0.0);
     prev64_.assign(n, 0.0);
@@ -104,7 +107,8 @@ HeightField& HeightField::operator=(HeightField&&) noexcept = default;
 
 namespace {
 
-// Fills the ghost layer of a padded (nx+2)×(ny+2) array from its interior (spec §2.1 boundaries).
+// Fills the ghost layer of a padded (nx+2)×(ny+2) array from its interior (spec §2.1 boundaries);
+// p points at the ghost corner (−1, −1), rows w apart.
 template <class Real>
 void fill_ghosts(Real* p, int nx, int ny, std::size_t w, Boundary boundary) {
   switch (boundary) {
@@ -115,7 +119,7 @@ void fill_ghosts(Real* p, int nx, int ny, std::size_t w, Boundary boundary) {
         p[j * w + 0] = p[j * w + nx];
         p[j * w + nx + 1] = p[j * w + 1];
       }
-      for (std::size_t i = 0; i < w; ++i) {  // whole rows, so the corners wrap too
+      for (std::size_t i = 0; i < static_cast<std::size_t>(nx) + 2; ++i) {  // whole rows, so the corners wrap too
         p[i] = p[ny * w + i];
         p[(ny + 1) * w + i] = p[w + i];
       }
@@ -125,7 +129,7 @@ void fill_ghosts(Real* p, int nx, int ny, std::size_t w, Boundary boundary) {
         p[j * w + 0] = p[j * w + 1];
         p[j * w + nx + 1] = p[j * w + nx];
       }
-      for (std::size_t i = 0; i < w; ++i) {
+      for (std::size_t i = 0; i < static_cast<std::size_t>(nx) + 2; ++i) {
         p[i] = p[w + i];
         p[(ny + 1) * w + i] = p[ny * w + i];
       }
@@ -188,7 +192,8 @@ void HeightField::build_forcing(const DraughtPatch& p) {
 }
 
 template <class Real>
-void HeightField::step_impl(std::vector<Real>& curv, std::vector<Real>& prevv, const DraughtPatch* draught) {
+void HeightField::step_impl(std::vector<Real, CacheAligned<Real>>& curv, std::vector<Real, CacheAligned<Real>>& prevv,
+                            const DraughtPatch* draught) {
   // Lee & Baek 2013 Eq. 11 in the centred-damping form of spec §2.1, forced as in spec §2.4.
   const double mdt = options_.damping_per_s * options_.dt_s;
   const double inv = 1.0 / (2 + mdt);
@@ -207,10 +212,10 @@ void HeightField::step_impl(std::vector<Real>& curv, std::vector<Real>& prevv, c
   const int parts = team_ ? team_->size() : 1;
 
   if (options_.mode == StepMode::full) {
-    fill_ghosts(z, nx, ny, stride_, options_.boundary);
+    fill_ghosts(z + origin_, nx, ny, stride_, options_.boundary);
     auto rows = [&](int part) {
       const PartRange r = part_range(ny, part, parts);
-      const std::ptrdiff_t k = (r.begin + 1) * w + 1;
+      const std::ptrdiff_t k = static_cast<std::ptrdiff_t>(index(0, static_cast<int>(r.begin)));
       leapfrog_block(zp + k, z + k, nx, r.end - r.begin, w, wts, diagonal);
     };
     if (team_)
@@ -284,7 +289,7 @@ void HeightField::step_impl(std::vector<Real>& curv, std::vector<Real>& prevv, c
     for (int t = 0; t < nt; ++t)
       if (step_flag_[t]) active_.push_back(t);
     // 3: step them, measuring each one's activity max(|z⁺|, |z⁺ − z|) for the next step.
-    fill_ghosts(z, nx, ny, stride_, options_.boundary);
+    fill_ghosts(z + origin_, nx, ny, stride_, options_.boundary);
     const long count = static_cast<long>(active_.size());
     auto tiles = [&](int part) {
       const PartRange r = part_range(count, part, parts);
@@ -396,10 +401,10 @@ void HeightField::set_state(const std::vector<double>& z0, const std::vector<dou
   const std::size_t n = static_cast<std::size_t>(nx) * ny;
   if (z0.size() != n || (!v0.empty() && v0.size() != n)) throw std::invalid_argument("set_state: wrong field size");
   // The start is computed in double whatever the storage, then stored.
-  std::vector<double> cur(stride_ * (static_cast<std::size_t>(ny) + 2), 0.0);
+  std::vector<double> cur(levels_size_, 0.0);
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) cur[index(i, j)] = z0[static_cast<std::size_t>(j) * nx + i];
-  fill_ghosts(cur.data(), nx, ny, stride_, options_.boundary);
+  fill_ghosts(cur.data() + origin_, nx, ny, stride_, options_.boundary);
   const std::ptrdiff_t w = static_cast<std::ptrdiff_t>(stride_);
   const double id2 = 1.0 / (options_.cell_m * options_.cell_m);
   const Stencil& st = options_.stencil;
@@ -414,8 +419,8 @@ void HeightField::set_state(const std::vector<double>& z0, const std::vector<dou
       prev[k] = cur[k] - dt * v + 0.5 * dt * dt * (c2 * lap - mu * v);
     }
   if (f64_) {
-    cur64_.swap(cur);
-    prev64_.swap(prev);
+    cur64_.assign(cur.begin(), cur.end());
+    prev64_.assign(prev.begin(), prev.end());
   } else {
     for (std::size_t k = 0; k < cur.size(); ++k) {
       cur32_[k] = static_cast<float>(cur[k]);

@@ -17,7 +17,9 @@
 // neighbours' content fall to |z| ≤ ε and |z − z⁻| ≤ ε is set to zero ("dropped"), and the
 // summary keeps what was dropped, which bounds the error (the scheme is linear: the difference
 // from the full field is exactly the free evolution of the dropped content).
+#include <cstddef>
 #include <memory>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,20 @@
 namespace stoneskip {
 
 class ThreadTeam;
+
+// Storage aligned to 64 bytes (a cache line, an AVX-512 vector), so that with the padding below
+// every row's first interior cell starts a cache line.
+template <class T>
+struct CacheAligned {
+  using value_type = T;
+  static constexpr std::size_t kAlignment = 64;
+  CacheAligned() = default;
+  template <class U>
+  CacheAligned(const CacheAligned<U>&) {}
+  T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t(kAlignment))); }
+  void deallocate(T* p, std::size_t) { ::operator delete(p, std::align_val_t(kAlignment)); }
+  friend bool operator==(const CacheAligned&, const CacheAligned&) { return true; }
+};
 
 enum class Boundary {
   periodic,    // the grid tiles the plane (verification against the spectral reference)
@@ -137,18 +153,20 @@ class HeightField {
   double interpolate(double x_m, double y_m) const;
 
  private:
-  std::size_t index(int i, int j) const { return static_cast<std::size_t>(j + 1) * stride_ + (i + 1); }
+  // Padded layout: row j (−1 ≤ j ≤ ny) starts at (j + 1)·stride; its left ghost sits one before a
+  // cache-line boundary (origin_), so cell (0, j) starts a line; stride is a whole number of lines.
+  std::size_t index(int i, int j) const { return static_cast<std::size_t>(j + 1) * stride_ + origin_ + (i + 1); }
   template <class Real>
-  void step_impl(std::vector<Real>& cur, std::vector<Real>& prev, const DraughtPatch* draught);
+  void step_impl(std::vector<Real, CacheAligned<Real>>& cur, std::vector<Real, CacheAligned<Real>>& prev, const DraughtPatch* draught);
   void build_forcing(const DraughtPatch& draught);
   int tile_of(int i, int j) const { return (j / options_.tiles.tile_cells) * tiles_x_ + i / options_.tiles.tile_cells; }
   void restart();  // after set_state/set_levels: time 0, every tile to be measured
 
   HeightFieldOptions options_;
   bool f64_ = true;
-  std::size_t stride_;
-  std::vector<double> cur64_, prev64_;
-  std::vector<float> cur32_, prev32_;
+  std::size_t stride_ = 0, origin_ = 0, levels_size_ = 0;
+  std::vector<double, CacheAligned<double>> cur64_, prev64_;
+  std::vector<float, CacheAligned<float>> cur32_, prev32_;
   double time_s_ = 0;
   long steps_ = 0;
   std::unique_ptr<ThreadTeam> team_;

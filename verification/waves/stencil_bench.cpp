@@ -7,7 +7,8 @@
 //   build/verification/stoneskip_wave_studies_bench --benchmark_counters_tabular=true
 //   build/verification/stoneskip_wave_studies_bench --benchmark_filter='five_point/2048/2/0' --benchmark_counters_tabular=true
 //
-// Arguments: n / threads / precision (0 = float64, 1 = float32). Counters: cells_per_s (best),
+// Arguments: n / threads / precision (0 = float64, 1 = float32) / clock (0 = wall, 1 = thread CPU,
+// one thread only). Counters: cells_per_s (best),
 // bound_cells_per_s = copy bytes/s ÷ (3 values per cell), bandwidth_fraction (best/best),
 // fraction_median (median/median: how disturbed the run was), copy_GB_s.
 #include <benchmark/benchmark.h>
@@ -23,6 +24,13 @@ void step_throughput(benchmark::State& state, const char* stencil) {
   o.threads = static_cast<int>(state.range(1));
   o.precision = state.range(2) ? Precision::float32 : Precision::float64;
   o.stencil = named_stencil(stencil);
+  o.clock = state.range(3) ? ThroughputClock::cpu : ThroughputClock::wall;
+  if (o.clock == ThroughputClock::cpu && o.threads != 1) {
+    state.SkipWithError("the cpu clock needs one thread");
+    for (auto _ : state) {
+    }
+    return;
+  }
   ThroughputSummary s;
   for (auto _ : state) s = measure_stencil_throughput(o);
   state.counters["cells_per_s"] = s.cells_per_s;
@@ -30,12 +38,12 @@ void step_throughput(benchmark::State& state, const char* stencil) {
   state.counters["bandwidth_fraction"] = s.fraction;
   state.counters["fraction_median"] = s.fraction_median;
   state.counters["copy_GB_s"] = s.copy_bytes_per_s * 1e-9;
-  state.SetLabel(s.kernel_isa);
+  state.SetLabel(s.kernel_isa + ", " + s.clock + " clock");
 }
 
 #define STONESKIP_THROUGHPUT(name)                                                                     \
   BENCHMARK_CAPTURE(step_throughput, name, #name)                                                      \
-      ->ArgsProduct({{500, 2048}, {1, 2}, {0, 1}})                                                     \
+      ->ArgsProduct({{500, 2048}, {1, 2}, {0, 1}, {0, 1}})                                             \
       ->Iterations(1)                                                                                  \
       ->Unit(benchmark::kMillisecond)
 STONESKIP_THROUGHPUT(five_point);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <cstring>
 #include <functional>
@@ -14,6 +15,8 @@
 
 namespace stoneskip {
 
+const char* to_string(ThroughputClock c) { return c == ThroughputClock::wall ? "wall" : "cpu"; }
+
 bool ThroughputOptions::is_valid(std::string* why) const {
   auto fail = [&](const char* what) {
     if (why) *why = what;
@@ -23,6 +26,7 @@ bool ThroughputOptions::is_valid(std::string* why) const {
   if (threads < 1 || threads > 256) return fail("throughput: threads must be in [1, 256]");
   if (samples < 1) return fail("throughput: samples must be >= 1");
   if (!(sample_s > 0)) return fail("throughput: sample_s must be > 0");
+  if (clock == ThroughputClock::cpu && threads != 1) return fail("throughput: the cpu clock needs threads = 1 (use wall)");
   return true;
 }
 
@@ -39,18 +43,24 @@ std::string ThroughputSummary::brief() const {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+double now_s(ThroughputClock clock) {
+  if (clock == ThroughputClock::wall)
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
 
-// Runs `kernel` repeatedly for at least `sample_s` of wall time; returns seconds per call.
+// Runs `kernel` repeatedly for at least `sample_s` on the clock; returns seconds per call.
 template <class F>
-double time_sample(F&& kernel, double sample_s) {
-  const auto t0 = Clock::now();
+double time_sample(F&& kernel, double sample_s, ThroughputClock clock) {
+  const double t0 = now_s(clock);
   long calls = 0;
   double elapsed = 0;
   do {
     kernel();
     ++calls;
-    elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
+    elapsed = now_s(clock) - t0;
   } while (elapsed < sample_s);
   return elapsed / static_cast<double>(calls);
 }
@@ -71,7 +81,7 @@ void measure_copy(std::size_t elements, ThreadTeam& team, const ThroughputOption
     std::memcpy(b.data() + r.begin, a.data() + r.begin, static_cast<std::size_t>(r.end - r.begin) * sizeof(Real));
   };
   for (int s = 0; s < o.samples; ++s) {
-    seconds.push_back(time_sample([&] { team.run(copy); }, o.sample_s));
+    seconds.push_back(time_sample([&] { team.run(copy); }, o.sample_s, o.clock));
     a.swap(b);
     between();
   }
@@ -101,7 +111,7 @@ ThroughputSummary measure_stencil_throughput(const ThroughputOptions& o) {
   ThreadTeam team(o.threads);
   const std::size_t elements = static_cast<std::size_t>(o.n + 2) * (o.n + 2);
   std::vector<double> step_s, copy_s;
-  auto one_step_sample = [&] { step_s.push_back(time_sample([&] { field.step(); }, o.sample_s)); };
+  auto one_step_sample = [&] { step_s.push_back(time_sample([&] { field.step(); }, o.sample_s, o.clock)); };
   field.step();  // warm the caches and the team
   if (o.precision == Precision::float64)
     measure_copy<double>(elements, team, o, copy_s, one_step_sample);
@@ -111,6 +121,7 @@ ThroughputSummary measure_stencil_throughput(const ThroughputOptions& o) {
   ThroughputSummary s;
   s.options = o;
   s.kernel_isa = leapfrog_kernel_isa();
+  s.clock = to_string(o.clock);
   const double cells = static_cast<double>(o.n) * o.n;
   const double bytes = static_cast<double>(elements) * (o.precision == Precision::float64 ? sizeof(double) : sizeof(float));
   const double value_bytes = o.precision == Precision::float64 ? sizeof(double) : sizeof(float);
