@@ -19,35 +19,38 @@ const char* to_string(Boundary b) {
   return "?";
 }
 
-bool parse_boundary(const std::string& s, Boundary& out) {
-  for (auto b : {Boundary::periodic, Boundary::reflecting, Boundary::fixed})
-    if (s == to_string(b)) {
-      out = b;
+namespace {
+
+// The value of `all` whose name is s.
+template <class E, std::size_t N>
+bool parse_named(const std::string& s, const E (&all)[N], E& out) {
+  for (E e : all)
+    if (s == to_string(e)) {
+      out = e;
       return true;
     }
   return false;
+}
+
+}  // namespace
+
+bool parse_boundary(const std::string& s, Boundary& out) {
+  constexpr Boundary all[] = {Boundary::periodic, Boundary::reflecting, Boundary::fixed};
+  return parse_named(s, all, out);
 }
 
 const char* to_string(Precision p) { return p == Precision::float64 ? "float64" : "float32"; }
 
 bool parse_precision(const std::string& s, Precision& out) {
-  for (auto p : {Precision::float64, Precision::float32})
-    if (s == to_string(p)) {
-      out = p;
-      return true;
-    }
-  return false;
+  constexpr Precision all[] = {Precision::float64, Precision::float32};
+  return parse_named(s, all, out);
 }
 
 const char* to_string(StepMode m) { return m == StepMode::full ? "full" : "active_tiles"; }
 
 bool parse_step_mode(const std::string& s, StepMode& out) {
-  for (auto m : {StepMode::full, StepMode::active_tiles})
-    if (s == to_string(m)) {
-      out = m;
-      return true;
-    }
-  return false;
+  constexpr StepMode all[] = {StepMode::full, StepMode::active_tiles};
+  return parse_named(s, all, out);
 }
 
 bool HeightFieldOptions::is_valid(std::string* why) const {

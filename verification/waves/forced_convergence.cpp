@@ -5,7 +5,6 @@
 #include <limits>
 #include <stdexcept>
 
-#include "model/water/height_field.hpp"
 #include "verification/waves/cpu_timer.hpp"
 
 namespace stoneskip {
@@ -23,23 +22,17 @@ bool ForcedConvergenceOptions::is_valid(std::string* why) const {
   for (long s : time_steps)
     if (s < 1) return fail("forced convergence: time_steps must be >= 1");
   if (!(both_sigma > 0)) return fail("forced convergence: both_sigma must be > 0");
-  if (!(problem.t_end_s > 0) || !(problem.length_m > 0)) return fail("forced convergence: t_end_s and length_m must be > 0");
+  if (!(problem.wave.t_end_s > 0) || !(problem.wave.length_m > 0))
+    return fail("forced convergence: t_end_s and length_m must be > 0");
   if (quadrature.intervals < 1 || quadrature.nodes < 1) return fail("forced convergence: quadrature needs intervals, nodes >= 1");
   if (fit_points < 2) return fail("forced convergence: fit_points must be >= 2");
   return true;
 }
 
 LeapfrogResult solve_forced_leapfrog(const ForcedWaveProblem& p, const Stencil& stencil, int n, long steps) {
-  HeightFieldOptions o;
-  o.nx = o.ny = n;
-  o.cell_m = p.length_m / n;
-  o.wave_speed_m_s = p.wave_speed_m_s;
-  o.damping_per_s = p.damping_per_s;
-  o.dt_s = p.t_end_s / steps;
-  o.stencil = stencil;
-  o.boundary = Boundary::periodic;
+  const HeightFieldOptions o = leapfrog_options(p.wave, stencil, n, steps);
   HeightField f(o);
-  f.set_state(std::vector<double>(static_cast<std::size_t>(n) * n, 0.0));  // at rest; b(0) = 0
+  f.set_state(initial_surface(p.wave, n));  // at rest; the draught's envelope makes b(0) = 0
   DraughtPatch b;
   b.reset(0, 0, n, n);
   LeapfrogResult r;
@@ -58,16 +51,11 @@ LeapfrogResult solve_forced_leapfrog(const ForcedWaveProblem& p, const Stencil& 
 
 std::vector<double> solve_forced_reference(const ForcedWaveProblem& p, int n, SpectralSymbol symbol, const Stencil& stencil,
                                            const DuhamelQuadrature& quadrature, long* transforms) {
-  SpectralWaveOptions o;
-  o.nx = o.ny = n;
-  o.cell_m = p.length_m / n;
-  o.wave_speed_m_s = p.wave_speed_m_s;
-  o.damping_per_s = p.damping_per_s;
-  o.symbol = symbol;
-  o.stencil = stencil;
+  const SpectralWaveOptions o = spectral_options(p.wave, n, symbol, stencil);
   ForcedSpectralWave w(o, p.draught.on_grid(n, n, o.cell_m), quadrature);
+  w.set_initial(initial_surface(p.wave, n));
   std::vector<double> z;
-  w.evaluate(p.t_end_s, z);
+  w.evaluate(p.wave.t_end_s, z);
   if (transforms) *transforms += w.draught_transforms();
   return z;
 }
@@ -95,6 +83,7 @@ ForcedConvergenceStudy run_forced_convergence(const Stencil& stencil, const Forc
   std::string why;
   if (!o.is_valid(&why)) throw std::invalid_argument(why);
   const ForcedWaveProblem& p = o.problem;
+  const WaveProblem& wp = p.wave;
   ForcedConvergenceStudy study;
   study.stencil = stencil.name;
   long& transforms = study.reference_transforms;
@@ -104,7 +93,7 @@ ForcedConvergenceStudy run_forced_convergence(const Stencil& stencil, const Forc
   for (int n : o.space_grids) {
     const auto semi = solve_forced_reference(p, n, SpectralSymbol::stencil, stencil, o.quadrature, &transforms);
     const auto cont = solve_forced_reference(p, n, SpectralSymbol::continuum, stencil, o.quadrature, &transforms);
-    study.space.points.push_back(point_of(n, 0, p.length_m / n, nan, semi, cont, 0));
+    study.space.points.push_back(point_of(n, 0, wp.length_m / n, nan, semi, cont, 0));
   }
   fit_sequence(study.space, o.fit_points, o.judgement);
   // Time alone: forced leapfrog vs the stencil's semi-discrete forced solution on one grid.
@@ -115,27 +104,22 @@ ForcedConvergenceStudy run_forced_convergence(const Stencil& stencil, const Forc
     for (long steps : o.time_steps) {
       const LeapfrogResult r = solve_forced_leapfrog(p, stencil, n, steps);
       study.time.points.push_back(
-          point_of(n, steps, r.dt_s, p.wave_speed_m_s * r.dt_s / (p.length_m / n), r.z, semi, r.cpu_s));
+          point_of(n, steps, r.dt_s, wp.wave_speed_m_s * r.dt_s / (wp.length_m / n), r.z, semi, r.cpu_s));
     }
   }
   fit_sequence(study.time, o.fit_points, o.judgement);
   // Both at fixed σ: forced leapfrog vs the continuum forced solution.
   study.both.kind = "both";
   for (int n : o.both_grids) {
-    const double d = p.length_m / n;
-    const long steps = std::max(1L, std::lround(p.t_end_s * p.wave_speed_m_s / (o.both_sigma * d)));
+    const double d = wp.length_m / n;
+    const long steps = std::max(1L, std::lround(wp.t_end_s * wp.wave_speed_m_s / (o.both_sigma * d)));
     const LeapfrogResult r = solve_forced_leapfrog(p, stencil, n, steps);
     const auto cont = solve_forced_reference(p, n, SpectralSymbol::continuum, stencil, o.quadrature, &transforms);
-    study.both.points.push_back(point_of(n, steps, d, p.wave_speed_m_s * r.dt_s / d, r.z, cont, r.cpu_s));
+    study.both.points.push_back(point_of(n, steps, d, wp.wave_speed_m_s * r.dt_s / d, r.z, cont, r.cpu_s));
     study.both.point_exact_m = cont[static_cast<std::size_t>(n / 2) * n + 3 * n / 4];
   }
   fit_sequence(study.both, o.fit_points, o.judgement);
-  const auto& b = study.both.points;
-  if (b.size() >= 3) {
-    const std::size_t k = b.size();
-    study.both.gci = grid_convergence_index(b[k - 1].point_m, b[k - 2].point_m, b[k - 3].point_m, b[k - 1].h,
-                                            b[k - 2].h, b[k - 3].h);
-  }
+  attach_gci(study.both);
   // The reference's own error: halve the sub-intervals' length on the finest grid used.
   int finest = o.time_grid;
   for (int n : o.space_grids) finest = std::max(finest, n);

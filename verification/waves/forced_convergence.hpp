@@ -19,12 +19,15 @@
 
 namespace stoneskip {
 
+// The free problem (domain, c, μ, t_end, initial surface: flat by default) and the draught.
 struct ForcedWaveProblem {
-  double length_m = 1;
-  double wave_speed_m_s = 1;
-  double damping_per_s = 0.5;
-  double t_end_s = 0.5;
+  WaveProblem wave = at_rest();
   MovingGaussianDraught draught;  // 5 mm deep, w = 0.1 m, from (0.3, 0.4) m at (0.4, 0.2) m/s, rise 0.1 s
+  static WaveProblem at_rest() {
+    WaveProblem w;
+    w.initial.amplitude_m = 0;
+    return w;
+  }
 };
 
 struct ForcedConvergenceOptions {

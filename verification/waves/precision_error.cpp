@@ -38,14 +38,7 @@ PrecisionError measure_precision_error(const PrecisionErrorOptions& o) {
   PrecisionError r;
   r.steps = std::max(1L, std::lround(p.t_end_s * p.wave_speed_m_s / (o.sigma * d)));
   auto run = [&](Precision precision) {
-    HeightFieldOptions f;
-    f.nx = f.ny = o.n;
-    f.cell_m = d;
-    f.wave_speed_m_s = p.wave_speed_m_s;
-    f.damping_per_s = p.damping_per_s;
-    f.dt_s = p.t_end_s / r.steps;
-    f.stencil = o.stencil;
-    f.boundary = Boundary::periodic;
+    HeightFieldOptions f = leapfrog_options(p, o.stencil, o.n, r.steps);
     f.precision = precision;
     HeightField field(f);
     field.set_state(initial_surface(p, o.n));
