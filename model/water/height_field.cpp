@@ -83,7 +83,8 @@ HeightField::HeightField(const HeightFieldOptions& options)
   const std::size_t line = CacheAligned<double>::kAlignment / (f64_ ? sizeof(double) : sizeof(float));
   origin_ = line - 1;
   stride_ = (origin_ + static_cast<std::size_t>(options.nx) + 2 + line - 1) / line * line;
-  const std::size_t n = levels_size_ = stride_ * (static_cast<std::size_t>(options.ny) + 2);
+  // One vector of slack at the end: the aligned kernel reads the vector after a row's last cell.
+  const std::size_t n = levels_size_ = stride_ * (static_cast<std::size_t>(options.ny) + 2) + line;
   if (f64_) {
     cur64_.assign(n, 0.0);
     prev64_.assign(n, 0.0);

@@ -22,7 +22,9 @@ struct LeapfrogWeights {
 
 // Updates a block of `rows` row segments of n cells: zp[r·w + k], k ∈ [0, n), r ∈ [0, rows)
 // (zp and z point at the block's first cell; w is the row stride, so z[k ± w] are the rows above
-// and below). `diagonal` false skips the corner terms (wd = 0).
+// and below). `diagonal` false skips the corner terms (wd = 0). When z, zp and w are aligned to
+// 64 bytes the kernel reads whole aligned vectors, including up to one vector before and after
+// each row segment of rows −1…rows: that memory must exist (the height field pads for it).
 void leapfrog_block(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
                     const LeapfrogWeights<double>& c, bool diagonal);
 void leapfrog_block(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
