@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <type_traits>
 
 #include "model/water/leapfrog_kernel.hpp"
 #include "model/water/thread_team.hpp"
@@ -100,8 +101,24 @@ HeightField::HeightField(const HeightFieldOptions& options)
   holds_.assign(nt, 0);
   nonzero_.assign(nt, 0);
   step_flag_.assign(nt, 0);
-  activity_.assign(nt, 0.0);
+  activity64_.assign(nt, 0.0);
+  activity32_.assign(nt, 0.0f);
   active_.reserve(nt);
+  runs_.reserve(nt);
+  tile_neighbours_.resize(nt);
+  const bool periodic = options.boundary == Boundary::periodic;
+  for (int ty = 0; ty < tiles_y_; ++ty)
+    for (int tx = 0; tx < tiles_x_; ++tx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          int qx = tx + dx, qy = ty + dy;
+          if (periodic) {
+            qx = (qx + tiles_x_) % tiles_x_;
+            qy = (qy + tiles_y_) % tiles_y_;
+          }
+          const bool inside = qx >= 0 && qx < tiles_x_ && qy >= 0 && qy < tiles_y_;
+          tile_neighbours_[static_cast<std::size_t>(ty) * tiles_x_ + tx][3 * (dy + 1) + dx + 1] = inside ? qy * tiles_x_ + qx : -1;
+        }
   tiles_summary_.tiles = options.mode == StepMode::active_tiles ? static_cast<long>(nt) : 0;
 }
 
@@ -236,22 +253,10 @@ void HeightField::step_impl(std::vector<Real, CacheAligned<Real>>& curv, std::ve
     // nonzero tile holds, so nothing nonzero is ever dropped and the result is the full field's.
     const int tc = options_.tiles.tile_cells;
     const double eps = options_.tiles.epsilon_m;
-    auto neighbour = [&](int t, int dx, int dy) -> int {
-      int tx = t % tiles_x_ + dx, ty = t / tiles_x_ + dy;
-      if (periodic) {
-        tx = wrap(tx, tiles_x_);
-        ty = wrap(ty, tiles_y_);
-      } else if (tx < 0 || tx >= tiles_x_ || ty < 0 || ty >= tiles_y_) {
-        return -1;
-      }
-      return ty * tiles_x_ + tx;
-    };
+    // Neighbour q of tile t (q = 3(dy + 1) + dx + 1, 4 = itself), −1 beyond a non-periodic edge.
     auto any_neighbour = [&](int t, const std::vector<unsigned char>& flag) {
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int q = neighbour(t, dx, dy);
-          if (q >= 0 && flag[q]) return true;
-        }
+      for (int q : tile_neighbours_[t])
+        if (q >= 0 && flag[q]) return true;
       return false;
     };
     const int nt = tiles_x_ * tiles_y_;
@@ -268,16 +273,18 @@ void HeightField::step_impl(std::vector<Real, CacheAligned<Real>>& curv, std::ve
           for (int i = ilo; i <= ihi; ++i) step_flag_[tile_of(i, j)] = 1;
       }
     }
-    double dropped_sq = 0;
+    double dropped_sq = 0, dropped_max = 0;
+    // Sets cells of a (and b) to zero, keeping the sum of squares and the largest magnitude.
     auto drop_cells = [&](int i_begin, int i_end, int j_begin, int j_end, Real* a, Real* b) {
       bool held = false;
       for (int j = j_begin; j < j_end; ++j)
         for (int i = i_begin; i < i_end; ++i) {
           const std::size_t k = index(i, j);
           const double u = a[k], v = b ? static_cast<double>(b[k]) : 0.0;
+          if (u == 0 && v == 0) continue;
+          held = true;
           dropped_sq += u * u + v * v;
-          tiles_summary_.dropped_max_m = std::max({tiles_summary_.dropped_max_m, std::abs(u), std::abs(v)});
-          held = held || u != 0 || v != 0;
+          dropped_max = std::max(dropped_max, std::max(std::abs(u), std::abs(v)));
           a[k] = 0;
           if (b) b[k] = 0;
         }
@@ -292,47 +299,99 @@ void HeightField::step_impl(std::vector<Real, CacheAligned<Real>>& curv, std::ve
     active_.clear();
     for (int t = 0; t < nt; ++t)
       if (step_flag_[t]) active_.push_back(t);
-    // 3: step them, measuring each one's activity max(|z⁺|, |z⁺ − z|) for the next step.
+    // 2: step them band by band (a band = a row of tiles), row by row across each run of adjacent
+    // active tiles, so that memory is streamed as in the full step; the kernel measures each
+    // tile's activity max(|z⁺|, |z⁺ − z|) on the way.
     fill_ghosts(z + origin_, nx, ny, stride_, options_.boundary);
     const long count = static_cast<long>(active_.size());
-    auto tiles = [&](int part) {
-      const PartRange r = part_range(count, part, parts);
+    Real* activity = nullptr;
+    if constexpr (std::is_same_v<Real, double>)
+      activity = activity64_.data();
+    else
+      activity = activity32_.data();
+    for (int t : active_) activity[t] = 0;
+    // Runs of adjacent active tiles, band by band.
+    runs_.clear();
+    for (int ty = 0; ty < tiles_y_; ++ty)
+      for (int tx = 0; tx < tiles_x_;) {
+        if (!step_flag_[ty * tiles_x_ + tx]) {
+          ++tx;
+          continue;
+        }
+        const int first = tx;
+        while (tx < tiles_x_ && step_flag_[ty * tiles_x_ + tx]) ++tx;
+        runs_.push_back({ty, first, tx});
+      }
+    auto bands = [&](int part) {
+      const PartRange r = part_range(static_cast<long>(runs_.size()), part, parts);
       for (long q = r.begin; q < r.end; ++q) {
-        const int t = active_[q];
-        const int tx = t % tiles_x_, ty = t / tiles_x_;
-        const int i0 = tx * tc, j0 = ty * tc, n = std::min(tc, nx - i0), rows_in_tile = std::min(tc, ny - j0);
-        const std::size_t k = index(i0, j0);
-        activity_[t] = leapfrog_block_activity(zp + k, z + k, n, rows_in_tile, w, wts, diagonal);
+        const TileRun& run = runs_[q];
+        const int i0 = run.first * tc, cells = std::min(run.end * tc, nx) - i0;
+        Real* act = activity + run.band * tiles_x_ + run.first;
+        for (int j = run.band * tc; j < std::min((run.band + 1) * tc, ny); ++j) {
+          const std::size_t k = index(i0, j);
+          leapfrog_row_chunks(zp + k, z + k, cells, w, wts, diagonal, tc, act);
+        }
       }
     };
     if (team_)
-      team_->run(tiles);
+      team_->run(bands);
     else
-      tiles(0);
-    // 3: the quiet tiles next to a nonzero active tile: their border cells' update, dropped.
+      bands(0);
+    // 3: a quiet tile next to a nonzero active tile q would receive across their common side
+    // L_i = s(orth e_i + diag (e_{i−1} + e_{i+1})), e the line of q's cells along the side (one
+    // cell at a corner, diag e). Not computed: dropped, and recorded by its bound ‖L‖₂ ≤
+    // (|s orth| + 2|s diag|) ‖e‖₂ (corner |s diag| |e|), so the summary's dropped norm bounds,
+    // rather than equals, what the borders lost; O(side) per quiet tile, no update evaluated.
+    const double leak_side = std::abs(s * st.orth) + 2 * std::abs(s * st.diag), leak_corner = std::abs(s * st.diag);
+    auto cell = [&](int i, int j) -> double {
+      if (periodic) {
+        i = wrap(i, nx);
+        j = wrap(j, ny);
+      }
+      return std::abs(static_cast<double>(z[index(i, j)]));
+    };
     for (int t = 0; t < nt; ++t) {
       if (step_flag_[t] || !any_neighbour(t, nonzero_)) continue;
       const int i0 = (t % tiles_x_) * tc, j0 = (t / tiles_x_) * tc;
       const int i1 = std::min(i0 + tc, nx), j1 = std::min(j0 + tc, ny);
-      bool held = false;
-      auto border = [&](int ib, int ie, int jb, int je) {
-        leapfrog_block(zp + index(ib, jb), z + index(ib, jb), ie - ib, je - jb, w, wts, diagonal);
-        held = drop_cells(ib, ie, jb, je, zp, nullptr) || held;  // the tile's z⁺ there; its z is zero
-      };
-      border(i0, i1, j0, j0 + 1);
-      if (j1 - 1 > j0) border(i0, i1, j1 - 1, j1);
-      if (j1 - 2 > j0) {
-        border(i0, i0 + 1, j0 + 1, j1 - 1);
-        if (i1 - 1 > i0) border(i1 - 1, i1, j0 + 1, j1 - 1);
+      double norm = 0;
+      for (int q = 0; q < 9; ++q) {
+        const int nb = tile_neighbours_[t][q];
+        if (q == 4 || nb < 0 || !nonzero_[nb]) continue;
+        const int dx = q % 3 - 1, dy = q / 3 - 1;
+        const int ei = dx < 0 ? i0 - 1 : i1, ej = dy < 0 ? j0 - 1 : j1;  // q's line next to the tile
+        double sq = 0, mx = 0;
+        if (dx != 0 && dy != 0) {
+          mx = cell(ei, ej);
+          sq = mx * mx;
+        } else if (dy != 0) {
+          for (int i = i0; i < i1; ++i) {
+            const double e = cell(i, ej);
+            sq += e * e;
+            mx = std::max(mx, e);
+          }
+        } else {
+          for (int j = j0; j < j1; ++j) {
+            const double e = cell(ei, j);
+            sq += e * e;
+            mx = std::max(mx, e);
+          }
+        }
+        const double coef = dx != 0 && dy != 0 ? leak_corner : leak_side;
+        norm += coef * std::sqrt(sq);
+        dropped_max = std::max(dropped_max, coef * mx);
       }
-      if (held) ++tiles_summary_.border_drops;
+      if (norm > 0) ++tiles_summary_.border_drops;
+      dropped_sq += norm * norm;
     }
+    tiles_summary_.dropped_max_m = std::max(tiles_summary_.dropped_max_m, dropped_max);
     tiles_summary_.dropped_norm_sum_m += std::sqrt(dropped_sq);
     std::fill(holds_.begin(), holds_.end(), 0);
     std::fill(nonzero_.begin(), nonzero_.end(), 0);
     for (int t : active_) {
-      holds_[t] = !(activity_[t] <= eps);
-      nonzero_[t] = !(activity_[t] <= 0);
+      holds_[t] = !(activity[t] <= eps);  // a NaN holds
+      nonzero_[t] = !(activity[t] <= 0);
     }
     tiles_summary_.tile_steps += count;
   }
@@ -380,14 +439,29 @@ void HeightField::advance(long n) {
 }
 
 void HeightField::restart() {
-  // After the state was set from outside the activity is unknown: step every tile once, which
-  // measures it (and drops what is quiet when ε > 0).
-  std::fill(holds_.begin(), holds_.end(), 1);
-  std::fill(nonzero_.begin(), nonzero_.end(), 1);
+  // After the state was set from outside: measure every tile's activity max(|z|, |z − z⁻|).
+  const int nx = options_.nx, ny = options_.ny;
+  std::fill(activity64_.begin(), activity64_.end(), 0.0);
+  std::fill(activity32_.begin(), activity32_.end(), 0.0f);
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) note_activity(i, j);
   time_s_ = 0;
   steps_ = 0;
   tiles_summary_ = ActiveTileSummary{};
   tiles_summary_.tiles = options_.mode == StepMode::active_tiles ? static_cast<long>(holds_.size()) : 0;
+}
+
+void HeightField::note_activity(int i, int j) {
+  const int t = tile_of(i, j);
+  const double z = height(i, j), a = std::max(std::abs(z), std::abs(z - previous_height(i, j)));
+  double& act64 = activity64_[t];
+  float& act32 = activity32_[t];
+  const double before = f64_ ? act64 : static_cast<double>(act32);
+  const double now = !(a <= before) ? a : before;  // a NaN stays
+  act64 = now;
+  act32 = static_cast<float>(now);
+  holds_[t] = !(now <= options_.tiles.epsilon_m);
+  nonzero_[t] = !(now <= 0);
 }
 
 void HeightField::set_height(int i, int j, double z) {
@@ -396,8 +470,7 @@ void HeightField::set_height(int i, int j, double z) {
     cur64_[k] = z;
   else
     cur32_[k] = static_cast<float>(z);
-  holds_[tile_of(i, j)] = 1;
-  nonzero_[tile_of(i, j)] = 1;
+  note_activity(i, j);
 }
 
 void HeightField::set_state(const std::vector<double>& z0, const std::vector<double>& v0) {

@@ -17,6 +17,7 @@
 // neighbours' content fall to |z| ≤ ε and |z − z⁻| ≤ ε is set to zero ("dropped"), and the
 // summary keeps what was dropped, which bounds the error (the scheme is linear: the difference
 // from the full field is exactly the free evolution of the dropped content).
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <new>
@@ -160,7 +161,8 @@ class HeightField {
   void step_impl(std::vector<Real, CacheAligned<Real>>& cur, std::vector<Real, CacheAligned<Real>>& prev, const DraughtPatch* draught);
   void build_forcing(const DraughtPatch& draught);
   int tile_of(int i, int j) const { return (j / options_.tiles.tile_cells) * tiles_x_ + i / options_.tiles.tile_cells; }
-  void restart();  // after set_state/set_levels: time 0, every tile to be measured
+  void restart();  // after set_state/set_levels: time 0, every tile's activity measured
+  void note_activity(int i, int j);  // raises cell (i, j)'s tile activity to its |z|, |z − z⁻|
 
   HeightFieldOptions options_;
   bool f64_ = true;
@@ -181,7 +183,13 @@ class HeightField {
   std::vector<unsigned char> nonzero_;    // anything nonzero in the tile
   std::vector<unsigned char> step_flag_;  // scratch: the tiles this step updates
   std::vector<int> active_;
-  std::vector<double> activity_;  // per tile, written by the kernel
+  std::vector<std::array<int, 9>> tile_neighbours_;  // 3(dy + 1) + dx + 1 → tile, −1 beyond the edge
+  struct TileRun {
+    int band, first, end;  // tiles [first, end) of tile row `band`
+  };
+  std::vector<TileRun> runs_;
+  std::vector<double> activity64_;  // per tile, raised by the kernel (float64 storage)
+  std::vector<float> activity32_;   // (float32 storage)
   ActiveTileSummary tiles_summary_;
 };
 

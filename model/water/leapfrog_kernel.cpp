@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <algorithm>
 #include <cstring>
 #include <type_traits>
 
@@ -33,17 +34,6 @@ template <class Real>
   return v;
 }
 
-template <class Real>
-[[gnu::always_inline]] inline typename Simd<Real>::V vabs(typename Simd<Real>::V x) {
-  using S = Simd<Real>;
-  const typename S::I mask = (typename S::I{} + 1) << (8 * sizeof(Real) - 1);  // the sign bit
-  return reinterpret_cast<typename S::V>(reinterpret_cast<typename S::I>(x) & ~mask);
-}
-
-// The update of spec §2.1 for one row segment; the scalar tail repeats the vector body's
-// expression term for term so that both round identically. With `Activity`, the segment's
-// largest max(|z⁺|, |z⁺ − z|) goes into vmax/smax and (value − value), 0 unless a value is not
-// finite, into vnan/snan.
 // z[k − 1] and z[k + 1] of an aligned vector z[k] from its aligned neighbours z[k − L], z[k + L].
 template <class Real>
 [[gnu::always_inline]] inline typename Simd<Real>::V shift_in_left(typename Simd<Real>::V prev, typename Simd<Real>::V cur) {
@@ -62,15 +52,44 @@ template <class Real>
     return __builtin_shuffle(cur, next, I{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16});
 }
 
-// The activity bookkeeping of one vector of results r over the old values zc.
+// The activity of one vector of results r over the old values zc: the bit patterns of |r| and
+// |r − zc| (sign cleared), whose integer order is the numbers' order with NaN above ∞ above all.
 template <class Real>
-[[gnu::always_inline]] inline void track(typename Simd<Real>::V r, typename Simd<Real>::V zc, typename Simd<Real>::V& vmax,
-                                         typename Simd<Real>::V& vnan) {
-  using V = typename Simd<Real>::V;
-  const V a = vabs<Real>(r), b = vabs<Real>(r - zc);
-  const V ab = a <= b ? b : a;
-  vmax = ab <= vmax ? vmax : ab;
-  vnan = vnan + (ab - ab);  // stays 0 unless a value is inf or NaN
+[[gnu::always_inline]] inline void track(typename Simd<Real>::V r, typename Simd<Real>::V zc, typename Simd<Real>::I& vmax) {
+  using S = Simd<Real>;
+  using I = typename S::I;
+  const I sign = (I{} + 1) << (8 * sizeof(Real) - 1);
+  const I a = reinterpret_cast<I>(r) & ~sign, b = reinterpret_cast<I>(r - zc) & ~sign;
+  const I ab = a > b ? a : b;
+  vmax = ab > vmax ? ab : vmax;
+}
+
+// The largest lane, by halving shuffles.
+template <class Real>
+[[gnu::always_inline]] inline typename Simd<Real>::Int lane_max(typename Simd<Real>::I v) {
+  using I = typename Simd<Real>::I;
+  auto fold = [](I x, I y) { return x > y ? x : y; };
+  if constexpr (Simd<Real>::lanes == 16) {
+    v = fold(v, __builtin_shuffle(v, I{8, 9, 10, 11, 12, 13, 14, 15, 0, 1, 2, 3, 4, 5, 6, 7}));
+    v = fold(v, __builtin_shuffle(v, I{4, 5, 6, 7, 0, 1, 2, 3, 12, 13, 14, 15, 8, 9, 10, 11}));
+    v = fold(v, __builtin_shuffle(v, I{2, 3, 0, 1, 6, 7, 4, 5, 10, 11, 8, 9, 14, 15, 12, 13}));
+    v = fold(v, __builtin_shuffle(v, I{1, 0, 3, 2, 5, 4, 7, 6, 9, 8, 11, 10, 13, 12, 15, 14}));
+  } else {
+    v = fold(v, __builtin_shuffle(v, I{4, 5, 6, 7, 0, 1, 2, 3}));
+    v = fold(v, __builtin_shuffle(v, I{2, 3, 0, 1, 6, 7, 4, 5}));
+    v = fold(v, __builtin_shuffle(v, I{1, 0, 3, 2, 5, 4, 7, 6}));
+  }
+  return v[0];
+}
+
+// activity[q] = max(activity[q], the value whose bit pattern is m).
+template <class Real>
+[[gnu::always_inline]] inline void raise(Real* activity, typename Simd<Real>::Int m) {
+  using Int = typename Simd<Real>::Int;
+  Int old;
+  std::memcpy(&old, activity, sizeof old);
+  old &= ~(Int(1) << (8 * sizeof(Real) - 1));  // a start of −0 reads as 0
+  if (m > old) std::memcpy(activity, &m, sizeof m);
 }
 
 // The update of spec §2.1 for one row segment. Two vector paths compute the same expression from
@@ -78,18 +97,34 @@ template <class Real>
 // a vector (the field's interior rows, tiles of a multiple of 8 cells), each row's vectors are
 // loaded aligned once and the ±1 neighbours are shuffled out of adjacent vectors (an unaligned
 // load straddles two cache lines, and a 9-point update needs six of them); elsewhere unaligned
-// loads. The scalar tail repeats the expression term for term. With `Activity`, the segment's
-// largest max(|z⁺|, |z⁺ − z|) goes into vmax/smax and (value − value), 0 unless a value is not
-// finite, into vnan/snan.
+// loads. The scalar tail repeats the expression term for term. With `Activity`, the segment is
+// made of chunks of `chunk` cells, a multiple of the vector length (or the whole segment), and
+// the bit pattern of each chunk's largest max(|z⁺|, |z⁺ − z|) raises activity[chunk index].
 template <class Real, bool Diagonal, bool Activity>
 [[gnu::always_inline]] inline void row_body(Real* __restrict zp, const Real* __restrict z, std::ptrdiff_t n,
-                                            std::ptrdiff_t w, const LeapfrogWeights<Real>& c, typename Simd<Real>::V& vmax,
-                                            typename Simd<Real>::V& vnan, Real& smax, Real& snan) {
+                                            std::ptrdiff_t w, const LeapfrogWeights<Real>& c, std::ptrdiff_t chunk,
+                                            Real* activity) {
   using S = Simd<Real>;
   using V = typename S::V;
+  using I = typename S::I;
+  using Int = typename S::Int;
   constexpr std::ptrdiff_t L = S::lanes;
   const Real wc = c.centre, wo = c.orth, wd = c.diag, wp = c.previous;
   std::ptrdiff_t k = 0;
+  I vmax{};
+  // After each vector: hand a finished chunk's maximum over (a countdown, not a division).
+  std::ptrdiff_t left_in_chunk = chunk;
+  Real* chunk_activity = activity;
+  auto chunk_end = [&] {
+    if constexpr (Activity) {
+      left_in_chunk -= L;
+      if (left_in_chunk == 0) {
+        raise<Real>(chunk_activity++, lane_max<Real>(vmax));
+        vmax = I{};
+        left_in_chunk = chunk;
+      }
+    }
+  };
   const bool aligned = reinterpret_cast<std::uintptr_t>(z) % kVectorBytes == 0 &&
                        reinterpret_cast<std::uintptr_t>(zp) % kVectorBytes == 0 && w % L == 0;
   if (aligned && n >= L) {
@@ -110,7 +145,10 @@ template <class Real, bool Diagonal, bool Activity>
       }
       r = r - wp * load(zp + k);
       std::memcpy(zp + k, &r, sizeof r);
-      if constexpr (Activity) track<Real>(r, zc, vmax, vnan);
+      if constexpr (Activity) {
+        track<Real>(r, zc, vmax);
+        chunk_end();
+      }
       up0 = up1;
       up1 = up2;
       mid0 = mid1;
@@ -131,9 +169,13 @@ template <class Real, bool Diagonal, bool Activity>
       }
       r = r - wp * load(zp + k);
       std::memcpy(zp + k, &r, sizeof r);
-      if constexpr (Activity) track<Real>(r, zc, vmax, vnan);
+      if constexpr (Activity) {
+        track<Real>(r, zc, vmax);
+        chunk_end();
+      }
     }
   }
+  Int smax = 0;
   for (; k < n; ++k) {
     const Real zc = z[k];
     const Real orth = (z[k - 1] + z[k + 1]) + (z[k - w] + z[k + w]);
@@ -145,37 +187,42 @@ template <class Real, bool Diagonal, bool Activity>
     r = r - wp * zp[k];
     zp[k] = r;
     if constexpr (Activity) {
-      const Real a = r < 0 ? -r : r, d = r - zc, b = d < 0 ? -d : d;
-      const Real ab = a <= b ? b : a;
-      smax = ab <= smax ? smax : ab;
-      snan = snan + (ab - ab);
+      const Int sign = Int(1) << (8 * sizeof(Real) - 1);
+      const Real d = r - zc;
+      Int a, b;
+      std::memcpy(&a, &r, sizeof a);
+      std::memcpy(&b, &d, sizeof b);
+      a &= ~sign;
+      b &= ~sign;
+      const Int ab = a > b ? a : b;
+      smax = ab > smax ? ab : smax;
     }
   }
-}
-
-template <class Real, bool Diagonal, bool Activity>
-[[gnu::always_inline]] inline Real block_body(Real* zp, const Real* z, std::ptrdiff_t n, std::ptrdiff_t rows,
-                                              std::ptrdiff_t w, const LeapfrogWeights<Real>& c) {
-  using V = typename Simd<Real>::V;
-  V vmax = V{} * 0, vnan = V{} * 0;
-  Real smax = 0, snan = 0;
-  for (std::ptrdiff_t r = 0; r < rows; ++r)
-    row_body<Real, Diagonal, Activity>(zp + r * w, z + r * w, n, w, c, vmax, vnan, smax, snan);
   if constexpr (Activity) {
-    for (int l = 0; l < Simd<Real>::lanes; ++l) {
-      smax = vmax[l] <= smax ? smax : vmax[l];
-      snan = snan + vnan[l];
+    if (n % chunk != 0 || n % L != 0) {  // the last chunk is unfinished: its vectors and its tail
+      const Int m = lane_max<Real>(vmax);
+      raise<Real>(activity + (n - 1) / chunk, m > smax ? m : smax);
     }
-    return snan == 0 ? smax : snan - snan;  // NaN when anything was not finite
   }
-  return 0;
 }
 
-template <class Real, bool Activity>
-[[gnu::always_inline]] inline Real block_dispatch(Real* zp, const Real* z, std::ptrdiff_t n, std::ptrdiff_t rows,
-                                                  std::ptrdiff_t w, const LeapfrogWeights<Real>& c, bool diagonal) {
-  return diagonal ? block_body<Real, true, Activity>(zp, z, n, rows, w, c)
-                  : block_body<Real, false, Activity>(zp, z, n, rows, w, c);
+template <class Real, bool Diagonal>
+[[gnu::always_inline]] inline void block_body(Real* zp, const Real* z, std::ptrdiff_t n, std::ptrdiff_t rows,
+                                              std::ptrdiff_t w, const LeapfrogWeights<Real>& c) {
+  for (std::ptrdiff_t r = 0; r < rows; ++r) row_body<Real, Diagonal, false>(zp + r * w, z + r * w, n, w, c, n, nullptr);
+}
+
+template <class Real, bool Diagonal>
+[[gnu::always_inline]] inline void chunks_body(Real* zp, const Real* z, std::ptrdiff_t n, std::ptrdiff_t w,
+                                               const LeapfrogWeights<Real>& c, std::ptrdiff_t chunk, Real* activity) {
+  if (chunk % Simd<Real>::lanes == 0 || chunk >= n) {  // chunk boundaries fall between vectors
+    row_body<Real, Diagonal, true>(zp, z, n, w, c, chunk, activity);
+    return;
+  }
+  for (std::ptrdiff_t k0 = 0, q = 0; k0 < n; k0 += chunk, ++q) {
+    const std::ptrdiff_t m = std::min(chunk, n - k0);
+    row_body<Real, Diagonal, true>(zp + k0, z + k0, m, w, c, m, activity + q);
+  }
 }
 
 }  // namespace
@@ -185,25 +232,27 @@ template <class Real, bool Activity>
 STONESKIP_KERNEL_CLONES
 void leapfrog_block(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
                     const LeapfrogWeights<double>& c, bool diagonal) {
-  block_dispatch<double, false>(zp, z, n, rows, w, c, diagonal);
+  diagonal ? block_body<double, true>(zp, z, n, rows, w, c) : block_body<double, false>(zp, z, n, rows, w, c);
 }
 
 STONESKIP_KERNEL_CLONES
 void leapfrog_block(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
                     const LeapfrogWeights<float>& c, bool diagonal) {
-  block_dispatch<float, false>(zp, z, n, rows, w, c, diagonal);
+  diagonal ? block_body<float, true>(zp, z, n, rows, w, c) : block_body<float, false>(zp, z, n, rows, w, c);
 }
 
 STONESKIP_KERNEL_CLONES
-double leapfrog_block_activity(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
-                               const LeapfrogWeights<double>& c, bool diagonal) {
-  return block_dispatch<double, true>(zp, z, n, rows, w, c, diagonal);
+void leapfrog_row_chunks(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<double>& c,
+                         bool diagonal, std::ptrdiff_t chunk, double* activity) {
+  diagonal ? chunks_body<double, true>(zp, z, n, w, c, chunk, activity)
+           : chunks_body<double, false>(zp, z, n, w, c, chunk, activity);
 }
 
 STONESKIP_KERNEL_CLONES
-float leapfrog_block_activity(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
-                              const LeapfrogWeights<float>& c, bool diagonal) {
-  return block_dispatch<float, true>(zp, z, n, rows, w, c, diagonal);
+void leapfrog_row_chunks(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<float>& c,
+                         bool diagonal, std::ptrdiff_t chunk, float* activity) {
+  diagonal ? chunks_body<float, true>(zp, z, n, w, c, chunk, activity)
+           : chunks_body<float, false>(zp, z, n, w, c, chunk, activity);
 }
 
 const char* leapfrog_kernel_isa() {

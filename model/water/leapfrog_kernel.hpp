@@ -30,13 +30,14 @@ void leapfrog_block(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_
 void leapfrog_block(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
                     const LeapfrogWeights<float>& c, bool diagonal);
 
-// The same update, returning the block's activity max over its cells of max(|z⁺|, |z⁺ − z|)
-// (spec §2.6); a NaN or infinity anywhere makes the result NaN, so a blown-up tile is never taken
-// for a quiet one.
-double leapfrog_block_activity(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
-                               const LeapfrogWeights<double>& c, bool diagonal);
-float leapfrog_block_activity(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
-                              const LeapfrogWeights<float>& c, bool diagonal);
+// The update of one row segment of n cells that consists of consecutive chunks of `chunk` cells
+// (tiles; the last may be shorter), raising activity[q] to the largest max(|z⁺|, |z⁺ − z|) over
+// chunk q's cells (spec §2.6). The values are compared as bit patterns, in which NaN > ∞ > any
+// finite value, so a blown-up chunk reports NaN and is never taken for a quiet one.
+void leapfrog_row_chunks(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<double>& c,
+                         bool diagonal, std::ptrdiff_t chunk, double* activity);
+void leapfrog_row_chunks(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<float>& c,
+                         bool diagonal, std::ptrdiff_t chunk, float* activity);
 
 // Which variant the run-time dispatch chose on this CPU: "x86-64-v4", "x86-64-v3" or "baseline".
 const char* leapfrog_kernel_isa();

@@ -27,4 +27,13 @@ double leapfrog_propagator_bound(const Stencil& stencil, double sigma, double mu
   return k_max;
 }
 
+double leapfrog_rounding_bound(const Stencil& stencil, double sigma, double mu_dt, double z_norm, double z_previous_norm,
+                               double unit_roundoff) {
+  const double inv = 1 / (2 + mu_dt), s = 2 * sigma * sigma * inv;
+  const double w_z = std::abs(s * stencil.centre + 4 * inv) + 4 * std::abs(s * stencil.orth) + 4 * std::abs(s * stencil.diag);
+  const double w_p = (2 - mu_dt) * inv;
+  const double gamma = 12 * unit_roundoff / (1 - 12 * unit_roundoff);
+  return 4 * gamma * (w_z * z_norm + w_p * z_previous_norm);
+}
+
 }  // namespace stoneskip

@@ -15,4 +15,13 @@ namespace stoneskip {
 // Cost O((nx + 1)(ny + 1) N) 2×2 products (halved when nx = ny, the stencil being symmetric).
 double leapfrog_propagator_bound(const Stencil& stencil, double sigma, double mu_dt, int nx, int ny, long steps);
 
+// Two runs whose inputs differ by less than an ulp can still round differently. For one update
+// z⁺ = Σ w_i x_i (12 roundings, 9 values of z and one of z⁻), each computed value lies within
+// γ₁₂ Σ|w_i||x_i| of the exact one (Higham, Accuracy and Stability of Numerical Algorithms,
+// §3.1), so two evaluations differ by at most twice that; over the cells, in the 2-norm, at most
+// 2γ₁₂ · 2 (W ‖z‖₂ + |w_p| ‖z⁻‖₂), W = Σ|weights on z|, the last 2 for mirrored edge values.
+// unit_roundoff: 2⁻⁵³ (float64) or 2⁻²⁴ (float32).
+double leapfrog_rounding_bound(const Stencil& stencil, double sigma, double mu_dt, double z_norm, double z_previous_norm,
+                               double unit_roundoff);
+
 }  // namespace stoneskip

@@ -3,8 +3,10 @@
 // water run twice in lockstep, once in full and once on active tiles with a given ε, from the same
 // start and with the same draught source. Reported: the largest difference over the run, the
 // difference at the end, the fraction of tile-steps done, the CPU time of each run's steps, and —
-// when the draught does not depend on the field — the a-priori bound K_N · Σ‖dropped‖
-// (model/water/propagator_bound.hpp), which the measured difference must respect.
+// when the draught does not depend on the field — the a-priori bound K_N · (Σ‖dropped‖ + Σ rounding)
+// (model/water/propagator_bound.hpp), which the measured difference must respect: the dropped
+// content's free evolution, plus the ulp-level differences that rounding can make once two runs'
+// inputs differ at all.
 #include <functional>
 #include <string>
 #include <vector>
@@ -40,7 +42,8 @@ struct TileComparison {
   double final_pair_error_m = 0;     // ‖(e_N, e_{N−1})‖₂ over cells at the end
   double max_height_m = 0;           // max over steps and cells of |z_full| (the scale)
   double propagator_bound = 0;       // K_N (prescribed or no draught; 0 otherwise)
-  double error_bound_m = 0;          // K_N · tiles.dropped_norm_sum_m (0 when not applicable)
+  double rounding_sum_m = 0;         // Σ over steps of leapfrog_rounding_bound on the full run's levels
+  double error_bound_m = 0;          // K_N · (tiles.dropped_norm_sum_m + rounding_sum_m) (0 when not applicable)
   std::string brief() const;
 };
 
