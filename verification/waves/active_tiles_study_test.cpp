@@ -53,7 +53,7 @@ BOOST_AUTO_TEST_CASE(exact_tiles_show_no_error_and_skip_work) {
   const TileComparison r = compare_active_tiles(pond(0));
   BOOST_TEST(r.max_error_m == 0);
   BOOST_TEST(r.tiles.fraction() < 1, r.brief());
-  BOOST_TEST(r.error_bound_m == 0);
+  BOOST_TEST(r.tiles.dropped_norm_sum_m == 0);
 }
 
 BOOST_AUTO_TEST_CASE(tiles_with_a_threshold_stay_within_the_bound_of_what_they_dropped) {
