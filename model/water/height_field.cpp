@@ -230,7 +230,9 @@ void HeightField::step_impl(std::vector<Real, CacheAligned<Real>>& curv, std::ve
   if (forced) build_forcing(*draught);
   Real* z = curv.data();
   Real* zp = prevv.data();  // holds z⁻, receives z⁺
-  const int parts = team_ ? team_->size() : 1;
+  // Work is cut into a few chunks per thread, claimed by whichever thread is free (thread_team.hpp).
+  const int chunks_per_thread = 4;
+  const int parts = team_ ? chunks_per_thread * team_->size() : 1;
 
   if (options_.mode == StepMode::full) {
     fill_ghosts(z + origin_, nx, ny, stride_, options_.boundary);
@@ -240,7 +242,7 @@ void HeightField::step_impl(std::vector<Real, CacheAligned<Real>>& curv, std::ve
       leapfrog_block(zp + k, z + k, nx, r.end - r.begin, w, wts, diagonal);
     };
     if (team_)
-      team_->run(rows);
+      team_->run(rows, std::min(parts, ny));
     else
       rows(0);
   } else {
@@ -335,7 +337,7 @@ void HeightField::step_impl(std::vector<Real, CacheAligned<Real>>& curv, std::ve
       }
     };
     if (team_)
-      team_->run(bands);
+      team_->run(bands, parts);
     else
       bands(0);
     // 3: a quiet tile next to a nonzero active tile q would receive across their common side

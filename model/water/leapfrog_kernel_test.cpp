@@ -3,6 +3,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <atomic>
 #include <cstring>
 #include <random>
 #include <vector>
@@ -134,14 +135,20 @@ BOOST_AUTO_TEST_CASE(chunk_activity_is_the_largest_height_or_change_and_never_qu
   }
 }
 
-BOOST_AUTO_TEST_CASE(thread_team_runs_every_part_once_per_call) {
-  // Oracle: counting. 3 threads, 2000 calls: each part's counter must read 2000.
+BOOST_AUTO_TEST_CASE(thread_team_runs_every_chunk_once_per_call) {
+  // Oracle: counting. 3 threads, 2000 calls of 7 chunks: each chunk's counter must read 2000
+  // (atomic counters: chunks of one call may run on different threads at once).
   ThreadTeam team(3);
   BOOST_TEST(team.size() == 3);
-  std::vector<long> count(3, 0);
-  auto f = [&](int part) { ++count[part]; };
-  for (int r = 0; r < 2000; ++r) team.run(f);
-  for (long c : count) BOOST_TEST(c == 2000);
+  std::vector<std::atomic<long>> count(7);
+  auto f = [&](int chunk) { count[chunk].fetch_add(1, std::memory_order_relaxed); };
+  for (int r = 0; r < 2000; ++r) team.run(f, 7);
+  for (const auto& c : count) BOOST_TEST(c.load() == 2000);
+  ThreadTeam alone(1);
+  std::vector<int> order;
+  auto g = [&](int chunk) { order.push_back(chunk); };
+  alone.run(g, 4);
+  BOOST_TEST((order == std::vector<int>{0, 1, 2, 3}));
   // part_range tiles [0, count) without gaps or overlap.
   long covered = 0;
   for (int p = 0; p < 7; ++p) {

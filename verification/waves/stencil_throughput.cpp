@@ -75,13 +75,13 @@ template <class Real>
 void measure_copy(std::size_t elements, ThreadTeam& team, const ThroughputOptions& o, std::vector<double>& seconds,
                   const std::function<void()>& between) {
   std::vector<Real> a(elements, Real(1)), b(elements, Real(0));
-  const int parts = team.size();
+  const int parts = 4 * team.size();  // chunks, as the field's step cuts its rows
   auto copy = [&](int part) {
     const PartRange r = part_range(static_cast<long>(elements), part, parts);
     std::memcpy(b.data() + r.begin, a.data() + r.begin, static_cast<std::size_t>(r.end - r.begin) * sizeof(Real));
   };
   for (int s = 0; s < o.samples; ++s) {
-    seconds.push_back(time_sample([&] { team.run(copy); }, o.sample_s, o.clock));
+    seconds.push_back(time_sample([&] { team.run(copy, parts); }, o.sample_s, o.clock));
     a.swap(b);
     between();
   }
