@@ -220,8 +220,7 @@ void HeightField::step_impl(std::vector<Real, CacheAligned<Real>>& curv, std::ve
   const double inv = 1.0 / (2 + mdt);
   const double s = 2 * options_.courant() * options_.courant() * inv;  // 2c²Δt²/d² /(2+μΔt)
   const Stencil& st = options_.stencil;
-  const LeapfrogWeights<Real> wts{static_cast<Real>(s * st.centre + 4 * inv), static_cast<Real>(s * st.orth),
-                                  static_cast<Real>(s * st.diag), static_cast<Real>((2 - mdt) * inv)};
+  const LeapfrogWeights<Real> wts = leapfrog_weights<Real>(st.centre, st.orth, st.diag, options_.courant(), mdt);
   const bool diagonal = wts.diag != 0;
   const int nx = options_.nx, ny = options_.ny;
   const std::ptrdiff_t w = static_cast<std::ptrdiff_t>(stride_);

@@ -52,6 +52,22 @@ template <class Real>
     return __builtin_shuffle(cur, next, I{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16});
 }
 
+// One update, on a vector or a scalar alike (so that both round the same): zc = z, orth and diag
+// the neighbour sums, zm = z⁻; the direct or the increment form of leapfrog_kernel.hpp.
+template <class Real, class T, bool Diagonal, bool IncrementForm>
+[[gnu::always_inline]] inline T update(T zc, T orth, T diag, T zm, Real wc, Real wo, Real wd, Real wp, Real wx) {
+  if constexpr (IncrementForm) {
+    const T four = zc * 4;
+    T dz = wp * (zc - zm) + wo * (orth - four);
+    if constexpr (Diagonal) dz = dz + wd * (diag - four);
+    return zc + (dz + wx * zc);
+  } else {
+    T r = wc * zc + wo * orth;
+    if constexpr (Diagonal) r = r + wd * diag;
+    return r - wp * zm;
+  }
+}
+
 // The activity of one vector of results r over the old values zc: the bit patterns of |r| and
 // |r − zc| (sign cleared), whose integer order is the numbers' order with NaN above ∞ above all.
 template <class Real>
@@ -109,7 +125,8 @@ template <class Real, bool Diagonal, bool Activity>
   using I = typename S::I;
   using Int = typename S::Int;
   constexpr std::ptrdiff_t L = S::lanes;
-  const Real wc = c.centre, wo = c.orth, wd = c.diag, wp = c.previous;
+  const Real wc = c.centre, wo = c.orth, wd = c.diag, wp = c.previous, wx = c.defect;
+  constexpr bool increment_form = std::is_same_v<Real, float>;  // see leapfrog_kernel.hpp
   std::ptrdiff_t k = 0;
   I vmax{};
   // After each vector: hand a finished chunk's maximum over (a countdown, not a division).
@@ -137,13 +154,11 @@ template <class Real, bool Diagonal, bool Activity>
       const V mid2 = load(z + k + L), up2 = load(z + k - w + L), dn2 = load(z + k + w + L);
       const V zc = mid1;
       const V orth = (shift_in_left<Real>(mid0, mid1) + shift_in_right<Real>(mid1, mid2)) + (up1 + dn1);
-      V r = wc * zc + wo * orth;
-      if constexpr (Diagonal) {
-        const V diag = (shift_in_left<Real>(up0, up1) + shift_in_right<Real>(up1, up2)) +
-                       (shift_in_left<Real>(dn0, dn1) + shift_in_right<Real>(dn1, dn2));
-        r = r + wd * diag;
-      }
-      r = r - wp * load(zp + k);
+      V diag{};
+      if constexpr (Diagonal)
+        diag = (shift_in_left<Real>(up0, up1) + shift_in_right<Real>(up1, up2)) +
+               (shift_in_left<Real>(dn0, dn1) + shift_in_right<Real>(dn1, dn2));
+      const V r = update<Real, V, Diagonal, increment_form>(zc, orth, diag, load(zp + k), wc, wo, wd, wp, wx);
       std::memcpy(zp + k, &r, sizeof r);
       if constexpr (Activity) {
         track<Real>(r, zc, vmax);
@@ -162,12 +177,10 @@ template <class Real, bool Diagonal, bool Activity>
       __builtin_prefetch(zp + k + STONESKIP_PF, 1, 3);
       const V zc = load(z + k);
       const V orth = (load(z + k - 1) + load(z + k + 1)) + (load(z + k - w) + load(z + k + w));
-      V r = wc * zc + wo * orth;
-      if constexpr (Diagonal) {
-        const V diag = (load(z + k - w - 1) + load(z + k - w + 1)) + (load(z + k + w - 1) + load(z + k + w + 1));
-        r = r + wd * diag;
-      }
-      r = r - wp * load(zp + k);
+      V diag{};
+      if constexpr (Diagonal)
+        diag = (load(z + k - w - 1) + load(z + k - w + 1)) + (load(z + k + w - 1) + load(z + k + w + 1));
+      const V r = update<Real, V, Diagonal, increment_form>(zc, orth, diag, load(zp + k), wc, wo, wd, wp, wx);
       std::memcpy(zp + k, &r, sizeof r);
       if constexpr (Activity) {
         track<Real>(r, zc, vmax);
@@ -179,12 +192,9 @@ template <class Real, bool Diagonal, bool Activity>
   for (; k < n; ++k) {
     const Real zc = z[k];
     const Real orth = (z[k - 1] + z[k + 1]) + (z[k - w] + z[k + w]);
-    Real r = wc * zc + wo * orth;
-    if constexpr (Diagonal) {
-      const Real diag = (z[k - w - 1] + z[k - w + 1]) + (z[k + w - 1] + z[k + w + 1]);
-      r = r + wd * diag;
-    }
-    r = r - wp * zp[k];
+    Real diag = 0;
+    if constexpr (Diagonal) diag = (z[k - w - 1] + z[k - w + 1]) + (z[k + w - 1] + z[k + w + 1]);
+    const Real r = update<Real, Real, Diagonal, increment_form>(zc, orth, diag, zp[k], wc, wo, wd, wp, wx);
     zp[k] = r;
     if constexpr (Activity) {
       const Int sign = Int(1) << (8 * sizeof(Real) - 1);
