@@ -54,13 +54,14 @@ template <class Real>
 
 // One update, on a vector or a scalar alike (so that both round the same): zc = z, orth and diag
 // the neighbour sums, zm = z⁻; the direct or the increment form of leapfrog_kernel.hpp.
-template <class Real, class T, bool Diagonal, bool IncrementForm>
+template <class Real, class T, bool Diagonal, bool Defect, bool IncrementForm>
 [[gnu::always_inline]] inline T update(T zc, T orth, T diag, T zm, Real wc, Real wo, Real wd, Real wp, Real wx) {
   if constexpr (IncrementForm) {
     const T four = zc * 4;
     T dz = wp * (zc - zm) + wo * (orth - four);
     if constexpr (Diagonal) dz = dz + wd * (diag - four);
-    return zc + (dz + wx * zc);
+    if constexpr (Defect) dz = dz + wx * zc;  // wx = 0 exactly for a consistent stencil
+    return zc + dz;
   } else {
     T r = wc * zc + wo * orth;
     if constexpr (Diagonal) r = r + wd * diag;
@@ -116,7 +117,7 @@ template <class Real>
 // loads. The scalar tail repeats the expression term for term. With `Activity`, the segment is
 // made of chunks of `chunk` cells, a multiple of the vector length (or the whole segment), and
 // the bit pattern of each chunk's largest max(|z⁺|, |z⁺ − z|) raises activity[chunk index].
-template <class Real, bool Diagonal, bool Activity>
+template <class Real, bool Diagonal, bool Defect, bool Activity>
 [[gnu::always_inline]] inline void row_body(Real* __restrict zp, const Real* __restrict z, std::ptrdiff_t n,
                                             std::ptrdiff_t w, const LeapfrogWeights<Real>& c, std::ptrdiff_t chunk,
                                             Real* activity) {
@@ -145,31 +146,29 @@ template <class Real, bool Diagonal, bool Activity>
   const bool aligned = reinterpret_cast<std::uintptr_t>(z) % kVectorBytes == 0 &&
                        reinterpret_cast<std::uintptr_t>(zp) % kVectorBytes == 0 && w % L == 0;
   if (aligned && n >= L) {
-    V up0 = load(z - w - L), up1 = load(z - w);
+    // Rows above and below enter only as up + dn (z[k ± w] in Σ_orth, z[k ± w ± 1] in Σ_diag), and
+    // a shift of a sum is the sum of the shifts: Σ_diag = shifted-left(ud) + shifted-right(ud), two
+    // shuffles where four would do the rows one by one.
     V mid0 = load(z - L), mid1 = load(z);
-    V dn0 = load(z + w - L), dn1 = load(z + w);
+    V ud0 = load(z - w - L) + load(z + w - L), ud1 = load(z - w) + load(z + w);
     for (; k + L <= n; k += L) {
       __builtin_prefetch(z + k + w + STONESKIP_PF, 0, 3);
       __builtin_prefetch(zp + k + STONESKIP_PF, 1, 3);
-      const V mid2 = load(z + k + L), up2 = load(z + k - w + L), dn2 = load(z + k + w + L);
+      const V mid2 = load(z + k + L), ud2 = load(z + k - w + L) + load(z + k + w + L);
       const V zc = mid1;
-      const V orth = (shift_in_left<Real>(mid0, mid1) + shift_in_right<Real>(mid1, mid2)) + (up1 + dn1);
+      const V orth = (shift_in_left<Real>(mid0, mid1) + shift_in_right<Real>(mid1, mid2)) + ud1;
       V diag{};
-      if constexpr (Diagonal)
-        diag = (shift_in_left<Real>(up0, up1) + shift_in_right<Real>(up1, up2)) +
-               (shift_in_left<Real>(dn0, dn1) + shift_in_right<Real>(dn1, dn2));
-      const V r = update<Real, V, Diagonal, increment_form>(zc, orth, diag, load(zp + k), wc, wo, wd, wp, wx);
+      if constexpr (Diagonal) diag = shift_in_left<Real>(ud0, ud1) + shift_in_right<Real>(ud1, ud2);
+      const V r = update<Real, V, Diagonal, Defect, increment_form>(zc, orth, diag, load(zp + k), wc, wo, wd, wp, wx);
       std::memcpy(zp + k, &r, sizeof r);
       if constexpr (Activity) {
         track<Real>(r, zc, vmax);
         chunk_end();
       }
-      up0 = up1;
-      up1 = up2;
       mid0 = mid1;
       mid1 = mid2;
-      dn0 = dn1;
-      dn1 = dn2;
+      ud0 = ud1;
+      ud1 = ud2;
     }
   } else {
     for (; k + L <= n; k += L) {
@@ -179,8 +178,8 @@ template <class Real, bool Diagonal, bool Activity>
       const V orth = (load(z + k - 1) + load(z + k + 1)) + (load(z + k - w) + load(z + k + w));
       V diag{};
       if constexpr (Diagonal)
-        diag = (load(z + k - w - 1) + load(z + k - w + 1)) + (load(z + k + w - 1) + load(z + k + w + 1));
-      const V r = update<Real, V, Diagonal, increment_form>(zc, orth, diag, load(zp + k), wc, wo, wd, wp, wx);
+        diag = (load(z + k - w - 1) + load(z + k + w - 1)) + (load(z + k - w + 1) + load(z + k + w + 1));
+      const V r = update<Real, V, Diagonal, Defect, increment_form>(zc, orth, diag, load(zp + k), wc, wo, wd, wp, wx);
       std::memcpy(zp + k, &r, sizeof r);
       if constexpr (Activity) {
         track<Real>(r, zc, vmax);
@@ -193,8 +192,8 @@ template <class Real, bool Diagonal, bool Activity>
     const Real zc = z[k];
     const Real orth = (z[k - 1] + z[k + 1]) + (z[k - w] + z[k + w]);
     Real diag = 0;
-    if constexpr (Diagonal) diag = (z[k - w - 1] + z[k - w + 1]) + (z[k + w - 1] + z[k + w + 1]);
-    const Real r = update<Real, Real, Diagonal, increment_form>(zc, orth, diag, zp[k], wc, wo, wd, wp, wx);
+    if constexpr (Diagonal) diag = (z[k - w - 1] + z[k + w - 1]) + (z[k - w + 1] + z[k + w + 1]);
+    const Real r = update<Real, Real, Diagonal, Defect, increment_form>(zc, orth, diag, zp[k], wc, wo, wd, wp, wx);
     zp[k] = r;
     if constexpr (Activity) {
       const Int sign = Int(1) << (8 * sizeof(Real) - 1);
@@ -216,23 +215,33 @@ template <class Real, bool Diagonal, bool Activity>
   }
 }
 
-template <class Real, bool Diagonal>
+template <class Real, bool Diagonal, bool Defect>
 [[gnu::always_inline]] inline void block_body(Real* zp, const Real* z, std::ptrdiff_t n, std::ptrdiff_t rows,
                                               std::ptrdiff_t w, const LeapfrogWeights<Real>& c) {
-  for (std::ptrdiff_t r = 0; r < rows; ++r) row_body<Real, Diagonal, false>(zp + r * w, z + r * w, n, w, c, n, nullptr);
+  for (std::ptrdiff_t r = 0; r < rows; ++r)
+    row_body<Real, Diagonal, Defect, false>(zp + r * w, z + r * w, n, w, c, n, nullptr);
 }
 
-template <class Real, bool Diagonal>
+template <class Real, bool Diagonal, bool Defect>
 [[gnu::always_inline]] inline void chunks_body(Real* zp, const Real* z, std::ptrdiff_t n, std::ptrdiff_t w,
                                                const LeapfrogWeights<Real>& c, std::ptrdiff_t chunk, Real* activity) {
   if (chunk % Simd<Real>::lanes == 0 || chunk >= n) {  // chunk boundaries fall between vectors
-    row_body<Real, Diagonal, true>(zp, z, n, w, c, chunk, activity);
+    row_body<Real, Diagonal, Defect, true>(zp, z, n, w, c, chunk, activity);
     return;
   }
   for (std::ptrdiff_t k0 = 0, q = 0; k0 < n; k0 += chunk, ++q) {
     const std::ptrdiff_t m = std::min(chunk, n - k0);
-    row_body<Real, Diagonal, true>(zp + k0, z + k0, m, w, c, m, activity + q);
+    row_body<Real, Diagonal, Defect, true>(zp + k0, z + k0, m, w, c, m, activity + q);
   }
+}
+
+// Calls f.operator()<Diagonal, Defect>() with the stencil's shape as compile-time flags.
+template <class F>
+[[gnu::always_inline]] inline void with_shape(bool diagonal, bool defect, F&& f) {
+  if (diagonal)
+    defect ? f.template operator()<true, true>() : f.template operator()<true, false>();
+  else
+    defect ? f.template operator()<false, true>() : f.template operator()<false, false>();
 }
 
 }  // namespace
@@ -242,27 +251,25 @@ template <class Real, bool Diagonal>
 STONESKIP_KERNEL_CLONES
 void leapfrog_block(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
                     const LeapfrogWeights<double>& c, bool diagonal) {
-  diagonal ? block_body<double, true>(zp, z, n, rows, w, c) : block_body<double, false>(zp, z, n, rows, w, c);
+  with_shape(diagonal, c.defect != 0, [&]<bool D, bool X>() __attribute__((always_inline)) { block_body<double, D, X>(zp, z, n, rows, w, c); });
 }
 
 STONESKIP_KERNEL_CLONES
 void leapfrog_block(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
                     const LeapfrogWeights<float>& c, bool diagonal) {
-  diagonal ? block_body<float, true>(zp, z, n, rows, w, c) : block_body<float, false>(zp, z, n, rows, w, c);
+  with_shape(diagonal, c.defect != 0, [&]<bool D, bool X>() __attribute__((always_inline)) { block_body<float, D, X>(zp, z, n, rows, w, c); });
 }
 
 STONESKIP_KERNEL_CLONES
 void leapfrog_row_chunks(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<double>& c,
                          bool diagonal, std::ptrdiff_t chunk, double* activity) {
-  diagonal ? chunks_body<double, true>(zp, z, n, w, c, chunk, activity)
-           : chunks_body<double, false>(zp, z, n, w, c, chunk, activity);
+  with_shape(diagonal, c.defect != 0, [&]<bool D, bool X>() __attribute__((always_inline)) { chunks_body<double, D, X>(zp, z, n, w, c, chunk, activity); });
 }
 
 STONESKIP_KERNEL_CLONES
 void leapfrog_row_chunks(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<float>& c,
                          bool diagonal, std::ptrdiff_t chunk, float* activity) {
-  diagonal ? chunks_body<float, true>(zp, z, n, w, c, chunk, activity)
-           : chunks_body<float, false>(zp, z, n, w, c, chunk, activity);
+  with_shape(diagonal, c.defect != 0, [&]<bool D, bool X>() __attribute__((always_inline)) { chunks_body<float, D, X>(zp, z, n, w, c, chunk, activity); });
 }
 
 const char* leapfrog_kernel_isa() {
