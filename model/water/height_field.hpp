@@ -10,13 +10,19 @@
 // z⁻), then the two buffers swap.
 //
 // Speed (model/water/leapfrog_kernel.hpp): a SIMD row kernel chosen at run time for the CPU,
-// optionally split over a team of threads kept alive between steps, in double or float storage.
-// Active tiles (spec §2.6): StepMode::active_tiles steps only the tiles of tile_cells² cells where
-// the water moves; with ε = 0 the result is bit-identical to StepMode::full (the update of a cell
-// whose own and neighbours' z and z⁻ are zero is zero); with ε > 0 a tile whose content and whose
-// neighbours' content fall to |z| ≤ ε and |z − z⁻| ≤ ε is set to zero ("dropped"), and the
-// summary keeps what was dropped, which bounds the error (the scheme is linear: the difference
-// from the full field is exactly the free evolution of the dropped content).
+// optionally split over a team of threads kept alive between steps (they pay only where a core is
+// free: on a shared 2-core machine they did not), in float64 or float32 storage (float32 steps
+// in an increment form that keeps a uniform level exact; verification/waves/precision_error.hpp
+// measures its error).
+// Active tiles (spec §2.6): StepMode::active_tiles steps only the tiles of tile_cells² cells that
+// hold |z| or |z − z⁻| above ε or have a neighbour that does (or lie under the draught). With
+// ε = 0 the result is bit-identical to StepMode::full (the update of a cell whose own and
+// neighbours' z and z⁻ are zero is zero). With ε > 0 the nonzero tiles that are not active are
+// set to zero, and what a quiet tile would receive across its border from an active neighbour is
+// not computed; both are "dropped", and the summary keeps their 2-norm (the border part by a bound
+// from the neighbour's facing line of cells). The scheme is linear, so the difference from the
+// full field is the free evolution of what was dropped (plus rounding): model/water/
+// propagator_bound.hpp bounds it, verification/waves/active_tiles_study.hpp measures it.
 #include <array>
 #include <cstddef>
 #include <memory>
