@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "model/water/propagator_bound.hpp"
-#include "verification/waves/cpu_timer.hpp"
+#include "solvers/realtime/clocks.hpp"
 
 namespace stoneskip {
 

@@ -5,7 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "verification/waves/cpu_timer.hpp"
+#include "solvers/realtime/clocks.hpp"
 
 namespace stoneskip {
 
