@@ -54,7 +54,7 @@ bool SceneOptions::valid(std::string* why) const {
   };
   if (!(frame_rate_hz > 0) || !std::isfinite(frame_rate_hz)) return fail("frame_rate_hz must be > 0");
   if (!(duration_s > 0) || !std::isfinite(duration_s)) return fail("duration_s must be > 0");
-  if (frames() < 1) return fail("duration_s · frame_rate_hz must give at least one frame");
+  if (end == SceneEnd::at_duration && frames() < 1) return fail("duration_s · frame_rate_hz must give at least one frame");
   if (frames() > 100000000) return fail("more than 1e8 frames");
   if (coupling == Coupling::none) return true;
   if (!water) return fail(std::string("coupling ") + to_string(coupling) + " needs a water field");
@@ -268,7 +268,7 @@ SceneSummary run_scene(const SceneOptions& o, const FrameRecorder& recorder) {
   out.options_brief = o;
   if (out.options_brief.water) out.options_brief.water->initial_m.clear();
   RealtimeOptions steps = o.stone_steps;
-  steps.t_max_s = std::min(steps.t_max_s, o.end_s());
+  if (o.end == SceneEnd::at_duration) steps.t_max_s = std::min(steps.t_max_s, o.end_s());
   SceneLoop loop(o, recorder, out);
   out.stone = run_realtime(o.stone, o.environment, o.initial, steps, loop.surface(),
                            [&](double t_s, const RigidState& s) { loop.at_stone_step(t_s, s); });

@@ -62,7 +62,7 @@ struct SceneOptions {
   Stone stone;
   Environment environment;
   RigidState initial;
-  RealtimeOptions stone_steps;     // its t_max_s is cut to the scene's end
+  RealtimeOptions stone_steps;     // its t_max_s is cut to the scene's end (SceneEnd::at_duration)
   Coupling coupling = Coupling::two_way;
   std::optional<SceneWater> water; // required unless coupling is none (then ignored)
   int draught_samples = 8;         // K per water step (two_way)
