@@ -172,7 +172,12 @@ class SceneLoop {
           ++node_;
           ++due;
         }
-        if (due > 0 && s) sample(*s, due);
+        if (due > 0 && s) {
+          last_sample_s_ = t_s;
+          sample(*s, due);
+        } else if (due > 0) {
+          in_episode_ = false;
+        }
       }
       if (end > t_s) break;
       step_water();
@@ -182,7 +187,22 @@ class SceneLoop {
   void sample(const RigidState& s, int due) {
     const double w0 = steady_now();
     const DraughtSummary d = draught_->compute(s, *field_, o_.water->placement, sample_patch_);
-    if (d.wet) window_->add(sample_patch_, static_cast<double>(due) / o_.draught_samples);
+    if (d.wet) {
+      window_->add(sample_patch_, static_cast<double>(due) / o_.draught_samples);
+      const double eta = surface_->height_m(s.position_m.x(), s.position_m.y());
+      if (!in_episode_) {
+        out_.episodes.emplace_back();
+        out_.episodes.back().start_s = last_sample_s_;
+        out_.episodes.back().surface_at_start_m = eta;
+        out_.episodes.back().lowest_surface_m = eta;
+      }
+      DraughtEpisode& e = out_.episodes.back();
+      e.end_s = last_sample_s_;
+      e.max_volume_m3 = std::max(e.max_volume_m3, d.volume_m3);
+      e.volume_time_m3_s += d.volume_m3 * due * dt_s_ / o_.draught_samples;
+      e.lowest_surface_m = std::min(e.lowest_surface_m, eta);
+    }
+    in_episode_ = d.wet;
     last_volume_m3_ = d.volume_m3;
     out_.max_draught_volume_m3 = std::max(out_.max_draught_volume_m3, d.volume_m3);
     out_.draught_samples += 1;
@@ -253,6 +273,8 @@ class SceneLoop {
   std::unique_ptr<DraughtWindow> window_;
   DraughtPatch sample_patch_, step_patch_;
   int node_ = 0;  // draught samples taken in the current window
+  bool in_episode_ = false;
+  double last_sample_s_ = 0;
   double last_volume_m3_ = 0;
   long closed_ = 0;
   FrameCost cost_;

@@ -100,6 +100,17 @@ struct FrameCost {
   int stone_steps = 0, water_steps = 0, draught_samples = 0;
 };
 
+// A run of consecutive draught samples with the stone in the water (two_way): how much it pressed
+// on the water and how far the water under it had sunk — what makes two-way coupling differ from
+// one-way (spec §2.4: the depression forms on the time scale footprint/c).
+struct DraughtEpisode {
+  double start_s = 0, end_s = 0;     // first and last sample in the water
+  double max_volume_m3 = 0;          // largest Σ b d² of a sample
+  double volume_time_m3_s = 0;       // Σ over samples of Σ b d² · Δt/K
+  double surface_at_start_m = 0;     // η under the stone's centre at the first sample
+  double lowest_surface_m = 0;       // lowest η under the stone's centre over the samples
+};
+
 struct SceneSummary {
   SceneOptions options_brief;      // the options as run, without the field's initial heights
   ThrowResult stone;               // the throw: contacts, bounces, trajectory, its own stats
@@ -109,6 +120,7 @@ struct SceneSummary {
   long draught_samples = 0;
   double max_draught_volume_m3 = 0;    // largest Σ b d² of one sample
   double draught_impulse_m3_s = 0;     // ∫ Σ b d² dt as applied to the water (Σ over steps of Δt Σ b̄ d²)
+  std::vector<DraughtEpisode> episodes;  // two_way
   double volume_start_m3 = 0, volume_end_m3 = 0;  // Σ z d² of the field at the start and the end
   ActiveTileSummary tiles;         // the field's (all tiles every step in full mode)
   std::vector<FrameCost> frame_costs;

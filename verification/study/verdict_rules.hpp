@@ -20,6 +20,16 @@
 //   attack_change        change_deg → nose-down | nose-up | unchanged
 //   max_fluid_power      max_fluid_power_W, round_off_W → passive | creates energy
 //   error_split          space_converges (0/1), time_at_expected (0/1) → (see verdict_rules.cpp)
+//   coupling_change      count_change, max_time_change_s, time_tolerance_s → changes the bounce count |
+//                        moves the contacts | no visible change
+//   coupled_limit        growth_below, growth_above, growth_free_above, growth_tolerance →
+//                        stable below the limit, unstable above it | the limit is not confirmed
+//   ring_speed           valid, speed_low, speed_high, predicted_low, predicted_high → not measured |
+//                        within c less the scheme's dispersion | faster than c |
+//                        slower than the scheme's dispersion explains
+//   shortcut             field_relative, start_change_s, count_change, field_tolerance, time_tolerance_s →
+//                        exact | within tolerance | beyond tolerance
+//   speed_target         value, target → meets the target | misses the target
 #include <string>
 
 #include "verification/study/record.hpp"
