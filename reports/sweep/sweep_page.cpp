@@ -115,8 +115,9 @@ std::string sweep_markdown(const SweepData& d, const std::vector<Figure>& figure
      << " recovered from an interrupted run's journal; " << fmt(r.wall_s, 4) << " s wall, "
      << fmt(r.wall_s > 0 ? r.throws / r.wall_s : NAN, 4) << " throws/s; " << r.chunks
      << " chunks (at most " << d.run.max_chunk << " throws); rank 0's scheduling thread used "
-     << fmt(r.master_cpu_s, 3) << " s CPU (" << fmt(r.throws ? 1e6 * r.master_cpu_s / r.throws : NAN, 3)
-     << " µs per throw), of which the journal " << fmt(d.run.journal_wall_s, 3) << " s wall.\n\n";
+     << fmt(r.master_cpu_s, 3) << " s CPU, " << fmt(r.master_busy_cpu_s, 3) << " s of it handling results and requests ("
+     << fmt(r.throws ? 1e6 * r.master_busy_cpu_s / r.throws : NAN, 3) << " µs per throw: the master's cost per task), the rest "
+     << "polling; the journal took " << fmt(d.run.journal_wall_s, 3) << " s wall.\n\n";
 
   md << "## Maps\n\n";
   if (figures.empty()) md << "No figures.\n\n";

@@ -142,8 +142,11 @@ ScheduleStats run_master(const std::vector<std::uint64_t>& pending, std::size_t 
   std::vector<bool> retired(static_cast<std::size_t>(mpi.size()), false);
   int retired_count = 0;
   for (;;) {
+    const CpuTimer round;  // CPU of this round, counted as busy when it handled anything
+    bool handled = false;
     MpiSession::Message m;
     while (workers > 0 && mpi.poll(-1, -1, m)) {
+      handled = true;
       if (m.tag == kAsk) {
         std::uint32_t n = 0;
         if (m.bytes.size() == sizeof n) std::memcpy(&n, m.bytes.data(), sizeof n);
@@ -175,7 +178,12 @@ ScheduleStats run_master(const std::vector<std::uint64_t>& pending, std::size_t 
       local.batch.width = width;
       threads_finished = local.threads_done == threads;
     }
-    deliver(mine);
+    if (mine.rows() > 0 || !mine.notes.empty()) {
+      const CpuTimer busy;
+      deliver(mine);
+      stats.master_busy_cpu_s += busy.seconds();
+    }
+    if (handled) stats.master_busy_cpu_s += round.seconds();
     if (threads_finished && retired_count == workers) break;
   }
   for (auto& t : pool) t.join();

@@ -42,7 +42,7 @@ using BatchSink = std::function<void(const RowBatch&)>;
 struct ScheduleOptions {
   int master_threads = 1;          // compute threads on rank 0; at least 1 when it is alone
   std::size_t max_chunk = 32;      // largest chunk handed out
-  double poll_interval_s = 5e-4;   // how often the master looks for messages (MPI only)
+  double poll_interval_s = 2e-3;   // how often the master looks for messages (MPI only)
   double handover_interval_s = 0.2;  // a master thread hands its rows over at least this often
 };
 
@@ -53,7 +53,9 @@ struct ScheduleStats {
   std::size_t chunks = 0;          // handed out (to threads and workers)
   std::size_t remote_throws = 0;   // of which computed by other ranks
   double wall_s = 0;
-  double master_cpu_s = 0;         // CPU of rank 0's scheduling thread: MPI, sink, bookkeeping
+  double master_cpu_s = 0;         // CPU of rank 0's scheduling thread: MPI, sink, bookkeeping,
+                                   // and polling for messages while idle
+  double master_busy_cpu_s = 0;    // of which handling messages and rows (the cost per task)
   double sink_wall_s = 0;          // of which in the sink (journal, progress)
 };
 

@@ -81,7 +81,8 @@ void write_sweep_file(const std::filesystem::path& path, const SweepData& d) {
   run.set_attr("chunks", static_cast<long long>(s.chunks));
   run.set_attr("max_chunk", static_cast<long long>(d.run.max_chunk));
   run.set_attr("master_cpu_s", s.master_cpu_s);
-  run.set_attr("master_cpu_per_throw_s", s.throws ? s.master_cpu_s / s.throws : 0.0);
+  run.set_attr("master_busy_cpu_s", s.master_busy_cpu_s);
+  run.set_attr("master_busy_cpu_per_throw_s", s.throws ? s.master_busy_cpu_s / s.throws : 0.0);
   run.set_attr("journal_wall_s", d.run.journal_wall_s);
   w.commit();
 }
@@ -139,6 +140,7 @@ SweepData read_sweep_file(const std::filesystem::path& path) {
     s.remote_throws = static_cast<std::size_t>(run.attr_int("throws_remote"));
     s.chunks = static_cast<std::size_t>(run.attr_int("chunks"));
     s.master_cpu_s = run.attr_double("master_cpu_s");
+    s.master_busy_cpu_s = run.attr_double("master_busy_cpu_s");
     d.run.throws_recovered = static_cast<std::size_t>(run.attr_int("throws_recovered"));
     d.run.journal_wall_s = run.attr_double("journal_wall_s");
     d.run.max_chunk = static_cast<std::size_t>(run.attr_int("max_chunk"));

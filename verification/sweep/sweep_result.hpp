@@ -13,9 +13,11 @@
 //   /notes        datasets throw (ints), solver, detail (strings): failed solves and throws whose
 //                 case could not be built
 //   /run          attributes of the run that finished the file (not part of the result proper):
-//                 ranks, master_threads, wall_s, throws_computed, throws_recovered (from the
-//                 journal of an interrupted run), throws_per_s, chunks, master_cpu_s,
-//                 master_cpu_per_throw_s, journal_wall_s, max_chunk
+//                 ranks, master_threads, wall_s, throws_computed, throws_remote (by other
+//                 ranks), throws_recovered (from the journal of an interrupted run),
+//                 throws_per_s, chunks, max_chunk, master_cpu_s (rank 0's scheduling thread,
+//                 idle polling included), master_busy_cpu_s (of which handling messages and
+//                 rows), master_busy_cpu_per_throw_s, journal_wall_s
 #include <filesystem>
 #include <string>
 #include <vector>
