@@ -1,10 +1,13 @@
 #include "reports/sweep/sweep_maps.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <sstream>
+
+#include "tools/io/input_error.hpp"
 
 namespace stoneskip {
 
@@ -47,9 +50,17 @@ std::string axes_script(const Axis& x, const Axis& y, const std::string& title) 
 
 // The colour scale of bounce counts lo..hi: one colour per count.
 std::string count_scale(double lo, double hi, const std::string& label) {
+  hi = std::max(hi, lo + 1);  // gnuplot needs two colours at least
   std::ostringstream s;
   s << kCountPalette << "set palette maxcolors " << static_cast<int>(hi - lo + 1) << "\nset cbrange [" << lo - 0.5 << ":"
-    << hi + 0.5 << "]\nset cbtics 1\nset cblabel " << quoted(label) << " noenhanced\n";
+    << hi + 0.5 << "]\nset cbtics 1\nset cblabel " << quoted(label) << " noenhanced offset 1.5,0\n";
+  return s.str();
+}
+
+std::string continuous_scale(double lo, double hi, const std::string& label) {
+  std::ostringstream s;
+  s << kCountPalette << "set cbrange [" << num(lo) << ":" << num(hi > lo ? hi : lo + 1) << "]\nset cblabel " << quoted(label)
+    << " noenhanced offset 1.5,0\n";
   return s.str();
 }
 
@@ -57,7 +68,7 @@ std::string diverging_scale(double span, const std::string& label) {
   const double m = std::max(1.0, span);
   std::ostringstream s;
   s << kDivergingPalette << "set palette maxcolors " << static_cast<int>(2 * m + 1) << "\nset cbrange [" << -m - 0.5
-    << ":" << m + 0.5 << "]\nset cblabel " << quoted(label) << " noenhanced\n";
+    << ":" << m + 0.5 << "]\nset cblabel " << quoted(label) << " noenhanced offset 1.5,0\n";
   return s.str();
 }
 
@@ -82,33 +93,81 @@ std::vector<int> threshold_counts(double lo, double hi, std::size_t max_levels) 
   return ks;
 }
 
-// A heat map of a grid map with the thresholds' edges over it.
+// Tics of a heat-map axis drawn in cell-index space (cell i at i): round values placed where
+// they fall between the grid values, which are equally spaced in x (linear) or ln x (log).
+std::string index_tics(const char* axis, const std::vector<double>& values, bool log_scale) {
+  const std::size_t n = values.size();
+  std::ostringstream s;
+  s << "set " << axis << "tics (";
+  if (n == 1) return s.str() + quoted(num(values[0])) + " 0)\n";
+  auto f = [&](double v) { return log_scale ? std::log(v) : v; };
+  const double a = f(values.front()), b = f(values.back());
+  auto pos = [&](double v) { return (f(v) - a) / (b - a) * static_cast<double>(n - 1); };
+  std::vector<double> ticks;
+  const double lo = values.front(), hi = values.back();
+  if (log_scale) {
+    const int d0 = static_cast<int>(std::floor(std::log10(lo))), d1 = static_cast<int>(std::ceil(std::log10(hi)));
+    const std::vector<double> mantissas = d1 - d0 <= 2 ? std::vector<double>{1, 2, 5} : std::vector<double>{1};
+    for (int d = d0; d <= d1; ++d)
+      for (double m : mantissas) ticks.push_back(m * std::pow(10.0, d));
+  } else {
+    const double raw = (hi - lo) / 5, mag = std::pow(10.0, std::floor(std::log10(raw)));
+    double step = 10 * mag;
+    for (double m : {1.0, 2.0, 2.5, 5.0})
+      if (m * mag >= raw) {
+        step = m * mag;
+        break;
+      }
+    for (double t = std::ceil(lo / step) * step; t <= hi + 1e-9 * step; t += step) ticks.push_back(std::abs(t) < 1e-12 * step ? 0 : t);
+  }
+  bool first = true;
+  for (double t : ticks) {
+    if (t < lo * (1 - 1e-12) - 1e-300 || t > hi * (1 + 1e-12) + 1e-300) continue;
+    s << (first ? "" : ", ") << quoted(num(t)) << " " << num(pos(t));
+    first = false;
+  }
+  return s.str() + ")\n";
+}
+
+struct Contour {
+  GridMap field;      // drawn where this field passes the level
+  double level;
+  std::string label;
+};
+
+// A heat map of a grid map (one cell per grid point, drawn as an image in cell-index space so
+// that neighbouring cells meet without seams; tics carry the values) with contours over it.
 Figure heat_map(const std::string& name, const std::string& title, const GridMap& map, const Axis& x, const Axis& y,
-                const std::string& scale, const std::vector<std::pair<double, std::string>>& levels) {
+                const std::string& scale, const std::vector<Contour>& contours) {
   Figure f;
   f.name = name;
   f.title = title;
-  const std::vector<double> ex = cell_edges(map.x_values, x.log), ey = cell_edges(map.y_values, y.log);
+  const std::size_t nx = map.x_values.size(), ny = map.y_values.size();
   Table cells;
-  cells.columns = {"x", "y", "x_lo", "x_hi", "y_lo", "y_hi", "value"};
-  for (std::size_t iy = 0; iy < map.y_values.size(); ++iy)
-    for (std::size_t ix = 0; ix < map.x_values.size(); ++ix)
-      cells.add_row({map.x_values[ix], map.y_values[iy], ex[ix], ex[ix + 1], ey[iy], ey[iy + 1], map.at(ix, iy)});
+  cells.columns = {"ix", "iy", "x", "y", "value"};
+  for (std::size_t iy = 0; iy < ny; ++iy)
+    for (std::size_t ix = 0; ix < nx; ++ix)
+      cells.add_row({double(ix), double(iy), map.x_values[ix], map.y_values[iy], map.at(ix, iy)});
   f.tables.emplace_back(name + "_cells", cells);
   std::ostringstream s;
-  s << axes_script(x, y, title) << scale;
-  s << "set xrange [" << num(ex.front()) << ":" << num(ex.back()) << "]\nset yrange [" << num(ey.front()) << ":"
-    << num(ey.back()) << "]\nset key outside below\n";
-  s << "plot '" << name << "_cells.dat' using 1:2:3:4:5:6:7 with boxxyerror fs solid 1.0 noborder lc palette notitle";
-  for (std::size_t l = 0; l < levels.size(); ++l) {
+  s << "set title " << quoted(title) << " noenhanced\n";
+  s << "set xlabel " << quoted(x.key + (x.log ? " (log scale)" : "")) << " noenhanced\nset ylabel "
+    << quoted(y.key + (y.log ? " (log scale)" : "")) << " noenhanced\n";
+  s << index_tics("x", map.x_values, x.log) << index_tics("y", map.y_values, y.log) << scale;
+  s << "set xrange [-0.5:" << nx - 0.5 << "]\nset yrange [-0.5:" << ny - 0.5 << "]\nset key outside below\nset tics out\n";
+  s << "plot '" << name << "_cells.dat' using 1:2:5 with image notitle";
+  for (std::size_t l = 0; l < contours.size(); ++l) {
+    GridMap index = contours[l].field;  // the same field on cell indices
+    for (std::size_t i = 0; i < nx; ++i) index.x_values[i] = double(i);
+    for (std::size_t i = 0; i < ny; ++i) index.y_values[i] = double(i);
     Table seg;
-    seg.columns = {"x0", "y0", "x1", "y1"};
-    for (const auto& e : threshold_edges(map, levels[l].first, x.log, y.log)) seg.add_row({e.x0, e.y0, e.x1, e.y1});
+    seg.columns = {"ix0", "iy0", "ix1", "iy1"};
+    for (const auto& e : threshold_edges(index, contours[l].level, false, false)) seg.add_row({e.x0, e.y0, e.x1, e.y1});
     if (seg.rows() == 0) continue;
     const std::string t = name + "_level" + std::to_string(l);
     f.tables.emplace_back(t, seg);
     s << ", \\\n     '" << t << ".dat' using 1:2:($3-$1):($4-$2) with vectors nohead lw 2.5 lc rgb '"
-      << kLevelColours[l % std::size(kLevelColours)] << "' title " << quoted(levels[l].second);
+      << kLevelColours[l % std::size(kLevelColours)] << "' title " << quoted(contours[l].label);
   }
   s << "\n";
   f.script = s.str();
@@ -322,9 +381,9 @@ std::vector<Figure> sweep_map_figures(const SweepData& d, const SweepMapOptions&
         const auto [lo, hi] = finite_range(c);
         if (grid) {
           const GridMap m = grid_mean(d, c, i, j);
-          std::vector<std::pair<double, std::string>> levels;
+          std::vector<Contour> levels;
           for (int k : threshold_counts(lo, hi, o.max_contour_levels))
-            levels.emplace_back(k + 0.5, std::to_string(k) + " | " + std::to_string(k + 1) + " bounces");
+            levels.push_back({m, k + 0.5, std::to_string(k) + " | " + std::to_string(k + 1) + " bounces"});
           figs.push_back(heat_map(pre + "bounces_" + s + pair, title, m, axis(i), axis(j), count_scale(lo, hi, "bounces"),
                                   levels));
         } else {
@@ -337,22 +396,12 @@ std::vector<Figure> sweep_map_figures(const SweepData& d, const SweepMapOptions&
         const double span = std::max(std::abs(lo), std::abs(hi));
         const std::string title = "Real-time minus reference bounce count: " + axes[j].key + " against " + axes[i].key + others(i, j);
         if (grid) {
-          GridMap m = grid_mean(d, diff, i, j);
           std::vector<double> absolute(diff.size());
           for (std::size_t k = 0; k < diff.size(); ++k) absolute[k] = std::abs(diff[k]);
-          const GridMap mag = grid_mean(d, absolute, i, j);
-          // The contour of agreement: where the mean |difference| passes ½.
-          Figure f = heat_map(pre + "disagreement" + pair, title, m, axis(i), axis(j),
-                              diverging_scale(span, "real-time − reference bounces"), {});
-          Table seg;
-          seg.columns = {"x0", "y0", "x1", "y1"};
-          for (const auto& e : threshold_edges(mag, 0.5, axis(i).log, axis(j).log)) seg.add_row({e.x0, e.y0, e.x1, e.y1});
-          if (seg.rows() > 0) {
-            f.tables.emplace_back(f.name + "_agree", seg);
-            f.script.pop_back();  // the newline ending the plot command
-            f.script += ", \\\n     '" + f.name + "_agree.dat' using 1:2:($3-$1):($4-$2) with vectors nohead lw 2.5 lc rgb '#000000' title 'edge of agreement'\n";
-          }
-          figs.push_back(f);
+          // The edge of agreement: where the mean |difference| passes ½.
+          figs.push_back(heat_map(pre + "disagreement" + pair, title, grid_mean(d, diff, i, j), axis(i), axis(j),
+                                  diverging_scale(span, "real-time − reference bounces"),
+                                  {{grid_mean(d, absolute, i, j), 0.5, "edge of agreement"}}));
         } else {
           figs.push_back(scatter(pre + "disagreement" + pair, title, d.throws.column(axes[i].key),
                                  d.throws.column(axes[j].key), diff, axis(i), axis(j),
@@ -360,6 +409,27 @@ std::vector<Figure> sweep_map_figures(const SweepData& d, const SweepMapOptions&
         }
       }
     }
+  for (const auto& column : o.columns) {
+    if (std::find(d.throws.columns.begin(), d.throws.columns.end(), column) == d.throws.columns.end())
+      throw_input_error(column, 0, "", "no such column in the sweep's table (the columns are listed in its /throws)");
+    const std::vector<double> v = d.throws.column(column);
+    const auto [lo, hi] = finite_range(v);
+    std::string stem = pre;
+    for (char ch : column) stem += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+    if (n == 1)
+      figs.push_back(scatter(stem, column + " against " + axes[0].key, d.throws.column(axes[0].key), v, v, axis(0),
+                             Axis{column, false}, continuous_scale(lo, hi, column)));
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const std::string title = column + ": " + axes[j].key + " against " + axes[i].key + (grid ? others(i, j) : "");
+        const std::string name = stem + "_" + std::to_string(i) + "_" + std::to_string(j);
+        if (grid)
+          figs.push_back(heat_map(name, title, grid_mean(d, v, i, j), axis(i), axis(j), continuous_scale(lo, hi, column), {}));
+        else
+          figs.push_back(scatter(name, title, d.throws.column(axes[i].key), d.throws.column(axes[j].key), v, axis(i), axis(j),
+                                 continuous_scale(lo, hi, column)));
+      }
+  }
   if (!grid) {
     figs.push_back(histogram(pre + "bounce_histogram", "Bounce counts over the " + std::to_string(d.throws.rows()) + " throws",
                              "bounces", [&] {

@@ -12,8 +12,10 @@
 //                   the count per solver.
 //   both solvers    the real-time − reference count per throw: a map (grid) or a scatter
 //                   (random) on a diverging palette, and a histogram.
-// Throws whose solve failed or whose case could not be built are left out of every figure
-// (they are counted in the page's table).
+//   columns         any other column asked for (SweepMapOptions::columns): the same maps on a
+//                   continuous colour scale; with one key, the column against the key.
+// Throws whose solve failed or whose case could not be built are left out of every bounce-count
+// figure (they are counted in the page's table). An unknown column is an InputError.
 #include <string>
 #include <vector>
 
@@ -25,6 +27,8 @@ namespace stoneskip {
 struct SweepMapOptions {
   std::string prefix = "sweep";      // figure names: <prefix>_<what>[_<solver>]_<i>_<j>
   std::size_t max_contour_levels = 6;  // thresholds drawn per map (spread over the count's range)
+  std::vector<std::string> columns;  // more maps, of any column of the table on a continuous
+                                     // scale (e.g. realtime_distance_m, cost_realtime_wall_s)
 };
 
 std::vector<Figure> sweep_map_figures(const SweepData& data, const SweepMapOptions& options = {});

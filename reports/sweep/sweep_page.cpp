@@ -133,9 +133,9 @@ std::string sweep_markdown(const SweepData& d, const std::vector<Figure>& figure
 }
 
 SweepPageSummary write_sweep_page(const std::filesystem::path& dir, const SweepData& d, const std::string& source,
-                                  bool render) {
+                                  const SweepMapOptions& maps, bool render) {
+  const std::vector<Figure> figs = sweep_map_figures(d, maps);  // before any file: a bad column writes nothing
   std::filesystem::create_directories(dir);
-  const std::vector<Figure> figs = sweep_map_figures(d);
   Hdf5Writer w(dir / "data.h5");
   stamp_provenance(w.root());
   w.root().set_attr("source", source);

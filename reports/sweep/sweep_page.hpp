@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "reports/common/figure.hpp"
+#include "reports/sweep/sweep_maps.hpp"
 #include "verification/sweep/sweep_result.hpp"
 
 namespace stoneskip {
@@ -20,6 +21,6 @@ struct SweepPageSummary {
 };
 // Writes the folder; render = false stores the figures without running gnuplot.
 SweepPageSummary write_sweep_page(const std::filesystem::path& dir, const SweepData& data, const std::string& source_file,
-                                  bool render = true);
+                                  const SweepMapOptions& maps = {}, bool render = true);
 
 }  // namespace stoneskip

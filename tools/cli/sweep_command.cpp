@@ -75,6 +75,7 @@ ThrowEvaluator make_evaluator(const SweepFile& sweep, const SweepCases& cases, c
     ThrowCost cost;
     cost.rank = site.rank;
     cost.thread = site.thread;
+    cost.start_unix_s = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
     const auto t0 = std::chrono::steady_clock::now();
     auto not_run = [&](const std::string& who, const std::string& why) {
       out.add_row(record.not_run_row(i, point, cost));
@@ -108,6 +109,9 @@ ThrowEvaluator make_evaluator(const SweepFile& sweep, const SweepCases& cases, c
   };
 }
 
+void compute(const SweepArgs& a, const SweepFile& sweep, const SweepCases& cases, SweepPlan& plan,
+             const ThrowEvaluator& evaluate, MpiSession& mpi);
+
 void run(const SweepArgs& a) {
   MpiSession mpi;
   // 1. Every rank: the sweep file, the base case, the case at the design's extreme points.
@@ -115,6 +119,10 @@ void run(const SweepArgs& a) {
   std::unique_ptr<SweepCases> cases;
   std::string error;
   try {
+    if (!MpiSession::built_with_mpi() && MpiSession::launched_size() > 1)
+      throw_input_error("mpirun", 0, "", "this stoneskip was built without MPI, so its " +
+                                             std::to_string(MpiSession::launched_size()) +
+                                             " processes cannot share a sweep: install libopenmpi-dev and rebuild");
     sweep = load_sweep_file(a.file);
     cases = std::make_unique<SweepCases>(*sweep);
     if (a.threads < -1) throw_input_error("--threads", 0, "", "must be >= 0");
@@ -156,18 +164,30 @@ void run(const SweepArgs& a) {
   // 3. The throws.
   const ThrowRecord record = sweep_record(sweep->design, sweep->solvers);
   const ThrowEvaluator evaluate = make_evaluator(*sweep, *cases, record);
-  if (mpi.rank() != 0) {
-    run_worker(record.width(), evaluate, mpi);
-    return;
+  try {
+    if (mpi.rank() == 0)
+      compute(a, *sweep, *cases, *plan, evaluate, mpi);
+    else
+      run_worker(record.width(), evaluate, mpi);
+  } catch (const std::exception& e) {
+    if (mpi.size() == 1) throw;
+    // One rank cannot finish: the others would wait for it forever. The journal keeps what is done.
+    std::fprintf(stderr, "stoneskip: rank %d: internal error: %s (the sweep can be finished with --resume)\n",
+                 mpi.rank(), e.what());
+    mpi.abort(3);
   }
+}
+
+void compute(const SweepArgs& a, const SweepFile& sweep, const SweepCases& cases, SweepPlan& plan,
+             const ThrowEvaluator& evaluate, MpiSession& mpi) {
   if (!a.quiet) {
-    std::printf("%s", describe(*sweep, *cases).c_str());
+    std::printf("%s", describe(sweep, cases).c_str());
     std::printf("run       %d rank%s%s; %zu of %zu throws to compute; output %s\n", mpi.size(), mpi.size() == 1 ? "" : "s",
-                MpiSession::built_with_mpi() ? "" : " (built without MPI)", plan->pending(), sweep->design.size(),
-                options.out.c_str());
+                MpiSession::built_with_mpi() ? "" : " (built without MPI)", plan.pending(), sweep.design.size(),
+                plan.output().c_str());
     std::fflush(stdout);
   }
-  const SweepSummary summary = plan->run(evaluate, mpi);
+  const SweepSummary summary = plan.run(evaluate, mpi);
   std::printf("%s\n", summary.brief().c_str());
 }
 

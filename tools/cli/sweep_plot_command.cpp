@@ -1,10 +1,10 @@
-// stoneskip sweep-plot FILE.h5 [--out DIR] [--no-render]
+// stoneskip sweep-plot FILE.h5 [--out DIR] [--map COLUMN ...] [--no-render]
 //
 // Draws a finished sweep (`stoneskip sweep`): bounce-count maps over every pair of varied keys
 // with the count's thresholds as contours, the real-time/reference disagreement map, histograms
 // for random designs, and a page DIR/index.md with the outcomes, the agreement of the solvers and
 // what the throws cost (reports/sweep/). DIR defaults to FILE's name without .h5, plus "_plots".
-//   stoneskip sweep-plot speed_spin.h5 --out out/speed_spin
+//   stoneskip sweep-plot speed_spin.h5 --out out/speed_spin --map realtime_distance_m --map cost_realtime_wall_s
 #include <cstdio>
 #include <filesystem>
 
@@ -19,6 +19,7 @@ struct PlotArgs {
   std::string file;
   std::string out;
   bool no_render = false;
+  std::vector<std::string> columns;
 };
 
 void run(const PlotArgs& a) {
@@ -27,7 +28,9 @@ void run(const PlotArgs& a) {
   if (dir.empty()) dir = std::filesystem::path(a.file).replace_extension("").string() + "_plots";
   if (!a.no_render && !gnuplot_available())
     throw_input_error("gnuplot", 0, "", "not found on PATH (apt-get install gnuplot-nox), or use --no-render");
-  const SweepPageSummary s = write_sweep_page(dir, data, a.file, !a.no_render);
+  SweepMapOptions maps;
+  maps.columns = a.columns;
+  const SweepPageSummary s = write_sweep_page(dir, data, a.file, maps, !a.no_render);
   std::printf("wrote %s/index.md and %zu figures (%d drawn) from %zu throws\n", dir.c_str(), s.figures, s.render.rendered,
               data.throws.rows());
   for (const auto& f : s.render.failures) std::fprintf(stderr, "figure failed: %s\n", f.c_str());
@@ -40,6 +43,8 @@ void add_sweep_plot(CLI::App& app) {
   cmd->add_option("FILE", a->file, "Sweep result file (from stoneskip sweep)")->required();
   cmd->add_option("--out", a->out, "Folder for index.md, data.h5 and figures/ (default: FILE without .h5 + _plots)");
   cmd->add_flag("--no-render", a->no_render, "Store the figures' data and scripts without running gnuplot");
+  cmd->add_option("--map", a->columns,
+                  "Also map this column of the table, e.g. realtime_distance_m or cost_realtime_wall_s (repeatable)");
   cmd->callback([a] { run(*a); });
 }
 

@@ -83,6 +83,7 @@ fs::path journal_path_for(const fs::path& result_file) {
 SweepJournal::SweepJournal(fs::path path, int fd, double sync_interval_s)
     : path_(std::move(path)), fd_(fd), sync_interval_s_(sync_interval_s), last_sync_s_(now_s()) {}
 
+// Moved only before the first append (create/resume return it by value): no sync thread yet.
 SweepJournal::SweepJournal(SweepJournal&& o) noexcept
     : path_(std::move(o.path_)), fd_(o.fd_), sync_interval_s_(o.sync_interval_s_), last_sync_s_(o.last_sync_s_),
       write_wall_s_(o.write_wall_s_) {
@@ -90,10 +91,40 @@ SweepJournal::SweepJournal(SweepJournal&& o) noexcept
 }
 
 SweepJournal::~SweepJournal() {
+  stop_syncing();
   if (fd_ >= 0) {
     ::fdatasync(fd_);
     ::close(fd_);
   }
+}
+
+void SweepJournal::request_sync() {
+  if (!syncer_.joinable()) {
+    syncer_ = std::thread([this] {
+      std::unique_lock<std::mutex> lock(sync_mutex_);
+      for (;;) {
+        sync_wanted_.wait(lock, [this] { return sync_pending_ || stopping_; });
+        if (stopping_) return;
+        sync_pending_ = false;
+        lock.unlock();
+        ::fdatasync(fd_);
+        lock.lock();
+      }
+    });
+  }
+  std::lock_guard<std::mutex> lock(sync_mutex_);
+  sync_pending_ = true;
+  sync_wanted_.notify_one();
+}
+
+void SweepJournal::stop_syncing() {
+  if (!syncer_.joinable()) return;
+  {
+    std::lock_guard<std::mutex> lock(sync_mutex_);
+    stopping_ = true;
+    sync_wanted_.notify_one();
+  }
+  syncer_.join();
 }
 
 SweepJournal SweepJournal::create(const fs::path& path, const JournalIdentity& identity, double sync_interval_s) {
@@ -160,8 +191,11 @@ void SweepJournal::write_record(std::uint32_t type, const std::vector<unsigned c
     if (w <= 0) throw std::runtime_error("cannot append to the sweep journal " + path_.string() + ": " + std::strerror(errno));
     done += static_cast<std::size_t>(w);
   }
-  if (now_s() - last_sync_s_ >= sync_interval_s_) sync();
   write_wall_s_ += now_s() - start;
+  if (now_s() - last_sync_s_ >= sync_interval_s_) {
+    last_sync_s_ = now_s();
+    request_sync();
+  }
 }
 
 void SweepJournal::append(const RowBatch& b) { write_record(kRows, encode(b)); }
@@ -172,6 +206,7 @@ void SweepJournal::sync() {
 }
 
 void SweepJournal::close_and_remove() {
+  stop_syncing();
   if (fd_ >= 0) ::close(fd_);
   fd_ = -1;
   std::error_code ec;

@@ -15,10 +15,14 @@
 //
 // Durability: every append is one write(2) (a SIGKILL loses nothing already appended: the data is
 // in the kernel's page cache); fdatasync(2) runs at most once per sync interval (a lost node or
-// power cut loses at most that interval). The file is locked (flock) while a sweep writes it, so
-// two runs cannot interleave records.
+// power cut loses at most that interval), on a thread of its own so that a slow disk never stalls
+// the scheduler that appends. The file is locked (flock) while a sweep writes it, so two runs
+// cannot interleave records.
+#include <condition_variable>
 #include <filesystem>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -52,19 +56,25 @@ class SweepJournal {
   ~SweepJournal();
 
   void append(const RowBatch& b);  // throws std::runtime_error on a failed write
-  void sync();
-  double write_wall_s() const { return write_wall_s_; }  // spent in write and fdatasync
+  void sync();                      // fdatasync now, on the calling thread
+  double write_wall_s() const { return write_wall_s_; }  // spent appending (the syncs run aside)
   const std::filesystem::path& path() const { return path_; }
   void close_and_remove();
 
  private:
   SweepJournal(std::filesystem::path path, int fd, double sync_interval_s);
   void write_record(std::uint32_t type, const std::vector<unsigned char>& payload);
+  void request_sync();  // wakes the sync thread (started on first use, once the journal is in place)
+  void stop_syncing();
   std::filesystem::path path_;
   int fd_ = -1;
   double sync_interval_s_ = 1;
   double last_sync_s_ = 0;
   double write_wall_s_ = 0;
+  std::thread syncer_;
+  std::mutex sync_mutex_;
+  std::condition_variable sync_wanted_;
+  bool sync_pending_ = false, stopping_ = false;
 };
 
 }  // namespace stoneskip

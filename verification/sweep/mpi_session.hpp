@@ -24,6 +24,8 @@ class MpiSession {
   static bool built_with_mpi();
   // True when the environment shows an MPI launcher (Open MPI's mpirun, PMI/PMIx as under srun).
   static bool launched_by_mpi();
+  // The job size the launcher announces (OMPI_COMM_WORLD_SIZE, PMI_SIZE), 1 when it says none.
+  static int launched_size();
 
   // Collective: the lowest rank whose `ok` is false, or −1 when every rank is ok.
   int first_failed_rank(bool ok) const;

@@ -45,6 +45,7 @@ class SweepPlan {
   // refused plan leaves no file behind.
   static SweepPlan prepare(const SweepData& spec, const SweepRunOptions& options);
   std::size_t pending() const { return pending_.size(); }
+  const std::filesystem::path& output() const { return options_.out; }
   SweepSummary run(const ThrowEvaluator& evaluate, MpiSession& mpi);
 
  private:

@@ -128,6 +128,7 @@ ThrowRecord::ThrowRecord(std::vector<std::string> varied_keys, SweepSolvers solv
   }
   columns_.push_back("cost_rank");
   columns_.push_back("cost_thread");
+  columns_.push_back("cost_start_unix_s");
 }
 
 bool ThrowRecord::is_cost_column(std::size_t c) const { return columns_.at(c).rfind(kCostPrefix, 0) == 0; }
@@ -151,7 +152,7 @@ std::vector<double> ThrowRecord::row(std::uint64_t throw_index, const std::vecto
   r.push_back(cost.setup_wall_s);
   if (rt) r.insert(r.end(), {rt->stats.cpu_s, cost.realtime_cpu_s});
   if (ref) r.insert(r.end(), {ref->stats.cpu_s, cost.reference_cpu_s});
-  r.insert(r.end(), {double(cost.rank), double(cost.thread)});
+  r.insert(r.end(), {double(cost.rank), double(cost.thread), cost.start_unix_s});
   return r;
 }
 
@@ -164,8 +165,9 @@ std::vector<double> ThrowRecord::not_run_row(std::uint64_t throw_index, const st
     if (is_outcome_column(columns_[c])) r[c] = kOutcomeNotRun;
     if (columns_[c] == "cost_setup_wall_s") r[c] = cost.setup_wall_s;
   }
-  r[columns_.size() - 2] = cost.rank;
-  r[columns_.size() - 1] = cost.thread;
+  r[columns_.size() - 3] = cost.rank;
+  r[columns_.size() - 2] = cost.thread;
+  r[columns_.size() - 1] = cost.start_unix_s;
   return r;
 }
 

@@ -22,6 +22,7 @@
 //   cost_setup_wall_s                      building the throw's case from the base + overrides
 //   cost_<solver>_wall_s, cost_<solver>_cpu_s  the solve: wall, and CPU of the thread
 //   cost_rank, cost_thread                 which process (MPI rank) and thread computed it
+//   cost_start_unix_s                      when it started (seconds since 1970, system clock)
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -48,6 +49,7 @@ struct ThrowCost {
   double setup_wall_s = 0;
   double realtime_cpu_s = 0, reference_cpu_s = 0;
   int rank = 0, thread = 0;
+  double start_unix_s = 0;  // when the throw started (system clock): a timeline of the run
 };
 
 // A throw that needs words: a failed solve or a case that could not be built.

@@ -95,6 +95,7 @@ BOOST_AUTO_TEST_CASE(only_cost_columns_depend_on_where_a_throw_ran) {
   ThrowCost c1, c2;
   c2.rank = 5;
   c2.thread = 3;
+  c2.start_unix_s = 1.7e9;
   c2.setup_wall_s = 1;
   c2.realtime_cpu_s = 2;
   std::vector<ThrowNote> notes;
