@@ -34,6 +34,15 @@ const char* kCountPalette =
 const char* kDivergingPalette = "set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 '#b2182b')\n";
 const char* kLevelColours[] = {"#000000", "#ffffff", "#e41a1c", "#ff7f00", "#f781bf", "#a65628"};
 
+// The end of every figure's script: the plot command's newline, the script, the size.
+Figure& finish(Figure& f, std::ostringstream& script, int width_px, int height_px) {
+  script << "\n";
+  f.script = script.str();
+  f.width_px = width_px;
+  f.height_px = height_px;
+  return f;
+}
+
 struct Axis {
   std::string key;
   bool log = false;
@@ -169,11 +178,7 @@ Figure heat_map(const std::string& name, const std::string& title, const GridMap
     s << ", \\\n     '" << t << ".dat' using 1:2:($3-$1):($4-$2) with vectors nohead lw 2.5 lc rgb '"
       << kLevelColours[l % std::size(kLevelColours)] << "' title " << quoted(contours[l].label);
   }
-  s << "\n";
-  f.script = s.str();
-  f.width_px = 900;
-  f.height_px = 760;
-  return f;
+  return finish(f, s, 900, 760);
 }
 
 Figure scatter(const std::string& name, const std::string& title, const std::vector<double>& xs,
@@ -222,11 +227,7 @@ Figure histogram(const std::string& name, const std::string& title, const std::s
     s << (k ? ", \\\n     " : "") << "'" << tn << ".dat' using ($1+" << num(offset) << "):2 with boxes title "
       << quoted(series[k].first);
   }
-  s << "\n";
-  f.script = s.str();
-  f.width_px = 900;
-  f.height_px = 520;
-  return f;
+  return finish(f, s, 900, 520);
 }
 
 Figure count_curve(const std::string& name, const std::string& title, const Axis& x,
@@ -249,18 +250,7 @@ Figure count_curve(const std::string& name, const std::string& title, const Axis
     s << (k ? ", \\\n     " : "") << "'" << tn << ".dat' using 1:2 with linespoints pt 7 ps 0.6 title "
       << quoted(series[k].first);
   }
-  s << "\n";
-  f.script = s.str();
-  f.width_px = 900;
-  f.height_px = 520;
-  return f;
-}
-
-std::vector<std::string> solvers_of(const SweepData& d) {
-  std::vector<std::string> s;
-  if (runs_realtime(d.solvers)) s.push_back("realtime");
-  if (runs_reference(d.solvers)) s.push_back("reference");
-  return s;
+  return finish(f, s, 900, 520);
 }
 
 std::string word(const std::string& solver) { return solver == "realtime" ? "real-time" : "reference"; }
@@ -336,7 +326,7 @@ std::vector<Figure> sweep_map_figures(const SweepData& d, const SweepMapOptions&
   const auto& axes = d.design.axes;
   const std::size_t n = axes.size();
   const bool grid = d.design.kind == DesignKind::grid;
-  const std::vector<std::string> solvers = solvers_of(d);
+  const std::vector<std::string> solvers = solver_names(d.solvers);
   std::vector<std::pair<std::string, std::vector<double>>> counts;
   for (const auto& s : solvers) counts.emplace_back(s, usable_counts(d, s));
   std::vector<double> diff;

@@ -37,13 +37,6 @@ Stats stats_of(std::vector<double> v) {
   return s;
 }
 
-std::vector<std::string> solver_names(const SweepData& d) {
-  std::vector<std::string> s;
-  if (runs_realtime(d.solvers)) s.push_back("realtime");
-  if (runs_reference(d.solvers)) s.push_back("reference");
-  return s;
-}
-
 }  // namespace
 
 std::string sweep_markdown(const SweepData& d, const std::vector<Figure>& figures, const std::string& source) {
@@ -69,7 +62,7 @@ std::string sweep_markdown(const SweepData& d, const std::vector<Figure>& figure
 
   md << "## Outcomes and bounce counts\n\n";
   MarkdownTable out({"solver", "sank", "reached t_max", "failed", "not run", "bounces: min", "median", "mean", "max"});
-  for (const auto& s : solver_names(d)) {
+  for (const auto& s : solver_names(d.solvers)) {
     const std::vector<double> o = t.column(s + "_outcome");
     auto count = [&](double code) { return std::to_string(std::count(o.begin(), o.end(), code)); };
     const Stats b = stats_of(usable_counts(d, s));
@@ -97,7 +90,7 @@ std::string sweep_markdown(const SweepData& d, const std::vector<Figure>& figure
   md << "## Cost\n\n";
   MarkdownTable cost({"part", "per throw: mean (ms)", "median (ms)", "max (ms)", "max / min", "total (s)"});
   std::vector<std::pair<std::string, std::string>> parts = {{"case set-up (parse + build)", "cost_setup_wall_s"}};
-  for (const auto& s : solver_names(d)) parts.emplace_back(s + " solve (wall)", "cost_" + s + "_wall_s");
+  for (const auto& s : solver_names(d.solvers)) parts.emplace_back(s + " solve (wall)", "cost_" + s + "_wall_s");
   double solves = 0, setup = 0;
   for (const auto& [label, column] : parts) {
     if (!has_column(t, column)) continue;

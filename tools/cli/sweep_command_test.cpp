@@ -49,36 +49,23 @@ Outcome command(const std::string& args, const std::string& prefix = "") {
 
 void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
 
-// Physical convention: every throw sinks within about 0.1 s, so a throw costs milliseconds.
-const char* kBase = R"([stone]
-shape = "prism"
-radius_m = 0.03
-thickness_m = 0.008
-segments = 11
-density_kg_m3 = 2500.0
-[throw]
-speed_m_s = 8.0
-path_angle_deg = 10.0
-attack_angle_deg = 10.0
-spin_rev_s = 10.0
-height_m = 0.1
-[solver]
-dt_s = 1.0e-3
-contact_dt_s = 1.0e-5
-t_max_s = 2.0
-[reference]
-rtol = 1.0e-8
-)";
+// The shipped paper throw (physical convention: every throw sinks within about 0.1 s, so a throw
+// costs milliseconds), cut at 2 s, with a cheaper reference.
+const std::string kBaseSets = "--set solver.t_max_s=2.0 --set reference.rtol=1.0e-8";
 
-// A 3 × 3 grid with both solvers, written beside the base case.
+std::string base_lines() {
+  return "base = \"" + fs::absolute("cases/paper_8ms_spin.toml").string() +
+         "\"\nset = [\"solver.t_max_s=2.0\", \"reference.rtol=1.0e-8\"]\n";
+}
+
+// A speeds × spins grid.
 std::string grid_sweep(int speeds = 3, int spins = 3, const std::string& solvers = "[\"realtime\", \"reference\"]") {
-  return "base = \"base.toml\"\nsolvers = " + solvers + "\n[design]\nkind = \"grid\"\n[[vary]]\nkey = \"throw.speed_m_s\"\n" +
+  return base_lines() + "solvers = " + solvers + "\n[design]\nkind = \"grid\"\n[[vary]]\nkey = \"throw.speed_m_s\"\n" +
          "from = 6.0\nto = 10.0\ncount = " + std::to_string(speeds) + "\n[[vary]]\nkey = \"throw.spin_rev_s\"\nfrom = 0.0\n" +
          "to = 20.0\ncount = " + std::to_string(spins) + "\n";
 }
 
 fs::path setup(const std::string& name, const std::string& sweep_text) {
-  write(work() / "base.toml", kBase);
   const fs::path p = work() / (name + ".toml");
   write(p, sweep_text);
   return p;
@@ -153,7 +140,7 @@ BOOST_AUTO_TEST_CASE(a_throws_row_equals_stoneskip_run_on_the_same_overridden_ca
     char set[256];
     std::snprintf(set, sizeof set, "--set throw.speed_m_s=%.17g --set throw.spin_rev_s=%.17g", at(t, row, "throw.speed_m_s"),
                   at(t, row, "throw.spin_rev_s"));
-    const Outcome run = command("run " + (work() / "base.toml").string() + " " + set + " --solver both --json");
+    const Outcome run = command("run cases/paper_8ms_spin.toml " + kBaseSets + " " + set + " --solver both --json");
     BOOST_REQUIRE_MESSAGE(run.status == 0, run.err);
     const nlohmann::json j = nlohmann::json::parse(run.out);
     for (const char* solver : {"realtime", "reference"}) {
@@ -187,13 +174,13 @@ BOOST_AUTO_TEST_CASE(bad_sweep_files_fail_before_any_throw_with_one_line_and_no_
   };
   const std::string g = grid_sweep();
   const std::vector<Bad> bad = {
-      {g + "colour = \"red\"\n", "bad.toml:15: vary[2].colour: unknown key"},
-      {replace(g, "throw.spin_rev_s", "stone.shape"), "bad.toml:11: vary[2].key: \"stone.shape\" is not a numeric key"},
-      {replace(g, "count = 3\n[[vary]]", "count = 0\n[[vary]]"), "bad.toml:9: vary[1].count: must be >= 1"},
-      {replace(g, "to = 20.0\ncount = 3", "to = 20.0\ncount = 3\nscale = \"log\""), "bad.toml:12: vary[2].from: a log axis needs from > 0"},
+      {g + "colour = \"red\"\n", "bad.toml:16: vary[2].colour: unknown key"},
+      {replace(g, "throw.spin_rev_s", "stone.shape"), "bad.toml:12: vary[2].key: \"stone.shape\" is not a numeric key"},
+      {replace(g, "count = 3\n[[vary]]", "count = 0\n[[vary]]"), "bad.toml:10: vary[1].count: must be >= 1"},
+      {replace(g, "to = 20.0\ncount = 3", "to = 20.0\ncount = 3\nscale = \"log\""), "bad.toml:13: vary[2].from: a log axis needs from > 0"},
       {replace(g, "from = 6.0\nto = 10.0\ncount = 3", "from = 6.0\nto = 2.0\ncount = 3\nscale = \"log\""),
-       "bad.toml:8: vary[1].to: from (6) must not exceed to (2)"},
-      {replace(g, "base.toml", "no_such_case.toml"), "bad.toml:1: base: the base case does not load"},
+       "bad.toml:9: vary[1].to: from (6) must not exceed to (2)"},
+      {replace(g, "paper_8ms_spin.toml", "no_such_case.toml"), "bad.toml:1: base: the base case does not load"},
   };
   for (const auto& b : bad) {
     write(work() / "bad.toml", b.text);
@@ -281,7 +268,7 @@ BOOST_AUTO_TEST_CASE(sweep_plot_maps_hold_the_tables_counts) {
   }
   BOOST_TEST(text_of(dir / "index.md").find("grid design, 9 throws") != std::string::npos);
 
-  const fs::path lhs = setup("lhs", "base = \"base.toml\"\n[design]\nkind = \"latin_hypercube\"\nsamples = 12\nseed = 5\n"
+  const fs::path lhs = setup("lhs", base_lines() + "[design]\nkind = \"latin_hypercube\"\nsamples = 12\nseed = 5\n"
                                     "[[vary]]\nkey = \"throw.attack_angle_deg\"\nfrom = 0.0\nto = 30.0\n"
                                     "[[vary]]\nkey = \"stone.radius_m\"\nfrom = 0.02\nto = 0.05\nscale = \"log\"\n");
   const fs::path lout = work() / "lhs.h5", ldir = work() / "lhs";
@@ -324,7 +311,7 @@ BOOST_AUTO_TEST_CASE(a_bad_sweep_file_under_mpirun_fails_on_every_rank_with_one_
   const fs::path out = work() / "mpibad.h5";
   const Outcome r = command("sweep " + sweep.string() + " --out " + out.string(), mpiexec() + " --oversubscribe -n 2");
   BOOST_TEST(r.status == 2, r.err);
-  const std::string m = "mpibad.toml:9: vary[1].count: must be >= 1";
+  const std::string m = "mpibad.toml:10: vary[1].count: must be >= 1";
   const auto first = r.err.find(m);
   BOOST_TEST(first != std::string::npos, r.err);
   BOOST_TEST(r.err.find(m, first + 1) == std::string::npos, "printed more than once: " << r.err);

@@ -18,32 +18,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* kBase = R"([stone]
-shape = "prism"
-radius_m = 0.03
-thickness_m = 0.008
-segments = 11
-density_kg_m3 = 2500.0
-[environment]
-convention = "physical"
-[throw]
-speed_m_s = 8.0
-path_angle_deg = 10.0
-attack_angle_deg = 10.0
-spin_rev_s = 10.0
-height_m = 0.1
-[solver]
-dt_s = 1.0e-3
-contact_dt_s = 1.0e-5
-t_max_s = 3.0
-)";
-
+// The folder of the test's sweep files, and the shipped paper throw as their base.
 fs::path dir() {
   const fs::path d = fs::temp_directory_path() / ("stoneskip_sweepfile_" + std::to_string(::getpid()));
   fs::create_directories(d / "sweeps");
-  std::ofstream(d / "base.toml") << kBase;
   return d;
 }
+
+const fs::path kBase = fs::absolute("cases/paper_8ms_spin.toml");
 
 fs::path write_sweep(const std::string& text) {
   const fs::path p = dir() / "sweeps" / "s.toml";
@@ -51,8 +33,8 @@ fs::path write_sweep(const std::string& text) {
   return p;
 }
 
-const std::string kGrid = R"(base = "../base.toml"
-solvers = ["realtime", "reference"]
+// base (relative to the sweep file) on line 1, both solvers, a 5 × 3 grid, one axis log.
+const std::string kGrid = "base = \"" + fs::relative(kBase, dir() / "sweeps").string() + "\"\n" + R"(solvers = ["realtime", "reference"]
 [design]
 kind = "grid"
 [[vary]]
@@ -98,7 +80,7 @@ BOOST_AUTO_TEST_CASE(a_grid_sweep_file_reads_as_written) {
   const fs::path p = write_sweep(kGrid);
   const SweepFile s = load_sweep_file(p.string());
   BOOST_TEST(s.title == "s");
-  BOOST_TEST(fs::equivalent(s.base_file, dir() / "base.toml"));  // relative to the sweep file
+  BOOST_TEST(fs::equivalent(s.base_file, kBase));  // relative to the sweep file
   BOOST_TEST((s.solvers == SweepSolvers::both));
   BOOST_TEST(s.design.size() == 15u);
   BOOST_TEST((s.design.axes[1].scale == AxisScale::log));
@@ -157,7 +139,7 @@ BOOST_AUTO_TEST_CASE(bad_sweep_files_fail_with_one_line_naming_file_line_and_key
       {replace(kGrid, "environment.water_coefficient", "environment.convention"), "s.toml:11: vary[2].key", "not a numeric key"},
       {replace(kGrid, "throw.speed_m_s", "throw.sped_m_s"), "s.toml:6: vary[1]", "unknown key"},
       {replace(kGrid, "from = 4.0", "from = -4.0"), "s.toml:6: vary[1]", "speed_m_s"},
-      {replace(kGrid, "../base.toml", "../missing.toml"), "s.toml:1: base", "no such file"},
+      {replace(kGrid, "paper_8ms_spin.toml", "missing.toml"), "s.toml:1: base", "no such file"},
       {replace(kGrid, "kind = \"grid\"", "kind = \"grid\"\nseed = 3"), "s.toml:5: design.seed", "random designs"},
       {replace(kGrid, "kind = \"grid\"", "kind = \"random\"\nsamples = 10"), "design.seed", "missing"},
       {replace(kGrid, "kind = \"grid\"", "kind = \"random\"\nsamples = 10\nseed = 1"), "s.toml:11: vary[1].count", "for grids"},

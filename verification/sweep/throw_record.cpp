@@ -18,6 +18,13 @@ const char* to_string(SweepSolvers s) {
 bool runs_realtime(SweepSolvers s) { return s != SweepSolvers::reference; }
 bool runs_reference(SweepSolvers s) { return s != SweepSolvers::realtime; }
 
+std::vector<std::string> solver_names(SweepSolvers s) {
+  std::vector<std::string> names;
+  if (runs_realtime(s)) names.push_back("realtime");
+  if (runs_reference(s)) names.push_back("reference");
+  return names;
+}
+
 double outcome_code(Outcome o) {
   switch (o) {
     case Outcome::sank: return kOutcomeSank;
@@ -104,25 +111,18 @@ const std::vector<Disagreement>& disagreement_fields() {
 
 const char* kCostPrefix = "cost_";
 
-std::vector<const char*> solver_names(SweepSolvers s) {
-  std::vector<const char*> names;
-  if (runs_realtime(s)) names.push_back("realtime");
-  if (runs_reference(s)) names.push_back("reference");
-  return names;
-}
-
 }  // namespace
 
 ThrowRecord::ThrowRecord(std::vector<std::string> varied_keys, SweepSolvers solvers)
     : varied_(std::move(varied_keys)), solvers_(solvers) {
   columns_.push_back("throw");
   for (const auto& k : varied_) columns_.push_back(k);
-  for (const char* s : solver_names(solvers_))
-    for (const auto& f : solver_fields()) columns_.push_back(std::string(s) + "_" + f.name);
+  for (const auto& s : solver_names(solvers_))
+    for (const auto& f : solver_fields()) columns_.push_back(s + "_" + f.name);
   if (solvers_ == SweepSolvers::both)
     for (const auto& f : disagreement_fields()) columns_.push_back(std::string("disagreement_") + f.name);
   columns_.push_back("cost_setup_wall_s");
-  for (const char* s : solver_names(solvers_)) {
+  for (const auto& s : solver_names(solvers_)) {
     columns_.push_back(std::string(kCostPrefix) + s + "_wall_s");
     columns_.push_back(std::string(kCostPrefix) + s + "_cpu_s");
   }

@@ -35,6 +35,7 @@ enum class SweepSolvers { realtime, reference, both };
 const char* to_string(SweepSolvers s);
 bool runs_realtime(SweepSolvers s);
 bool runs_reference(SweepSolvers s);
+std::vector<std::string> solver_names(SweepSolvers s);  // {"realtime"}, {"reference"} or both, in column order
 
 // Outcome codes of the <solver>_outcome columns; kOutcomeNotRun: the throw's case could not be
 // built (its other columns are NaN and a note says why).
