@@ -10,8 +10,8 @@
 //
 // Record: u32 magic "SWJ1", u32 type (1 header, 2 rows), u64 payload bytes, payload, u64 FNV-1a
 // of the payload. The header's payload is a list of (name, value) strings — the sweep file's
-// text, the base case's text, the code version, the columns, the byte order — which a resume
-// must match exactly; a rows payload is an encoded RowBatch (row_batch.hpp).
+// text, the base case's text, the code version and a fingerprint of the executable, the columns,
+// the byte order — which a resume must match exactly; a rows payload is an encoded RowBatch.
 //
 // Durability: every append is one write(2) (a SIGKILL loses nothing already appended: the data is
 // in the kernel's page cache); fdatasync(2) runs at most once per sync interval (a lost node or

@@ -57,6 +57,10 @@ class Dispenser {
     std::lock_guard<std::mutex> lock(mutex_);
     return chunks_;
   }
+  std::size_t next_chunk_size() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return guided_chunk(pending_.size() - next_, consumers_, max_chunk_);
+  }
 
  private:
   const std::vector<std::uint64_t>& pending_;
@@ -139,6 +143,14 @@ ScheduleStats run_master(const std::vector<std::uint64_t>& pending, std::size_t 
     stats.sink_wall_s += std::chrono::duration<double>(Clock::now() - t0).count();
     stats.throws += b.rows();
   };
+  // A quarter of the time the next chunk takes: mean wall per throw per consumer × chunk size.
+  auto poll_interval = [&] {
+    if (stats.throws == 0) return options.min_poll_s;
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    const double per_throw = elapsed * static_cast<double>(threads + workers) / static_cast<double>(stats.throws);
+    const double chunk = static_cast<double>(std::max<std::size_t>(1, dispenser.next_chunk_size()));
+    return std::clamp(0.25 * per_throw * chunk, options.min_poll_s, options.max_poll_s);
+  };
   std::vector<bool> retired(static_cast<std::size_t>(mpi.size()), false);
   int retired_count = 0;
   for (;;) {
@@ -170,7 +182,7 @@ ScheduleStats run_master(const std::vector<std::uint64_t>& pending, std::size_t 
       auto something = [&] { return local.batch.rows() > 0 || !local.batch.notes.empty(); };
       if (!something()) {
         if (workers > 0)  // sleep until a thread hands over rows or it is time to look for messages
-          local.ready.wait_for(lock, std::chrono::duration<double>(options.poll_interval_s), something);
+          local.ready.wait_for(lock, std::chrono::duration<double>(poll_interval()), something);
         else
           local.ready.wait(lock, [&] { return something() || local.threads_done == threads; });
       }

@@ -15,9 +15,13 @@
 //   master → worker  WORK(ids)   one reply per chunk asked: the throw indices; empty = no more
 //   worker → master  RESULTS     the finished chunk's rows and notes (row_batch.hpp encoding)
 //   worker → master  RETIRE      after its last RESULTS, once every ask has been answered
-// The master's MPI thread never computes: it polls for messages every poll_interval_s, collects
-// its threads' rows, and passes every batch to the sink (journal, progress) as it arrives. It
-// returns when every worker has retired and its threads are done. Which rank or thread computed
+// The master's MPI thread never computes: it looks for messages, collects its threads' rows, and
+// passes every batch to the sink (journal, progress) as it arrives, sleeping in between. It sleeps
+// a quarter of the time the chunk being handed out now takes to compute (the mean throw time so
+// far × the chunk size), within [min_poll_s, max_poll_s]: a worker's prefetched request is then
+// answered long before it needs the chunk, and a sweep of 5 ms throws costs the master tens of
+// wake-ups a second, not thousands. It returns when every worker has retired and its threads are
+// done. Which rank or thread computed
 // a throw, and in which order, never changes the throw's row (only its cost_ columns).
 #include <cstdint>
 #include <functional>
@@ -42,7 +46,8 @@ using BatchSink = std::function<void(const RowBatch&)>;
 struct ScheduleOptions {
   int master_threads = 1;          // compute threads on rank 0; at least 1 when it is alone
   std::size_t max_chunk = 32;      // largest chunk handed out
-  double poll_interval_s = 2e-3;   // how often the master looks for messages (MPI only)
+  double min_poll_s = 5e-4;        // bounds of the master's sleep between looks for messages
+  double max_poll_s = 2e-2;
   double handover_interval_s = 0.2;  // a master thread hands its rows over at least this often
 };
 

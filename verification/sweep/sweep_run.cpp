@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <thread>
@@ -29,12 +31,23 @@ std::string joined(const std::vector<std::string>& v, const char* sep) {
   return s;
 }
 
+// FNV-1a of this process's executable: the build that computes the rows (the git version is
+// taken when CMake configures, so it misses a rebuild after an edit; the bytes do not).
+std::string executable_fingerprint() {
+  std::ifstream f("/proc/self/exe", std::ios::binary);
+  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  char hex[20];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a64(bytes.data(), bytes.size())));
+  return hex;
+}
+
 // What a journal must match to be resumed: everything that decides a row's bits.
 JournalIdentity identity_of(const SweepData& d) {
   return {{"sweep_text", d.provenance.sweep_text},
           {"base_case_text", d.provenance.base_case_text},
           {"base_overrides", joined(d.provenance.base_overrides, "\n")},
           {"code_version", std::string(kVersion) + " (git " + kGitDescribe + ")"},
+          {"executable", executable_fingerprint()},
           {"columns", joined(d.throws.columns, ",")},
           {"throws", std::to_string(d.design.size())}};
 }
@@ -53,7 +66,7 @@ std::string SweepSummary::brief() const {
     s << out.string() << " is already complete (" << throws << " throws): nothing to compute";
     return s.str();
   }
-  s << "wrote " << out.string() << ": " << throws << " throws (" << computed << " computed";
+  s << "wrote " << out.string() << ": " << throws << (throws == 1 ? " throw (" : " throws (") << computed << " computed";
   if (recovered) s << ", " << recovered << " recovered from the journal";
   s << ")";
   if (failed_solves) s << ", " << failed_solves << " failed solves";
