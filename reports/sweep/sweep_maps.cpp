@@ -152,11 +152,18 @@ Figure heat_map(const std::string& name, const std::string& title, const GridMap
   f.name = name;
   f.title = title;
   const std::size_t nx = map.x_values.size(), ny = map.y_values.size();
-  Table cells;
-  cells.columns = {"ix", "iy", "x", "y", "value"};
+  // An image needs a value in every cell: a cell without one is drawn with the lowest value
+  // ("shown") and covered by a grey box.
+  const double lowest = finite_range(map.value).first;
+  Table cells, empty;
+  cells.columns = {"ix", "iy", "x", "y", "value", "shown"};
+  empty.columns = {"ix", "iy"};
   for (std::size_t iy = 0; iy < ny; ++iy)
-    for (std::size_t ix = 0; ix < nx; ++ix)
-      cells.add_row({double(ix), double(iy), map.x_values[ix], map.y_values[iy], map.at(ix, iy)});
+    for (std::size_t ix = 0; ix < nx; ++ix) {
+      const double v = map.at(ix, iy);
+      cells.add_row({double(ix), double(iy), map.x_values[ix], map.y_values[iy], v, std::isfinite(v) ? v : lowest});
+      if (!std::isfinite(v)) empty.add_row({double(ix), double(iy)});
+    }
   f.tables.emplace_back(name + "_cells", cells);
   std::ostringstream s;
   s << "set title " << quoted(title) << " noenhanced\n";
@@ -164,7 +171,12 @@ Figure heat_map(const std::string& name, const std::string& title, const GridMap
     << quoted(y.key + (y.log ? " (log scale)" : "")) << " noenhanced\n";
   s << index_tics("x", map.x_values, x.log) << index_tics("y", map.y_values, y.log) << scale;
   s << "set xrange [-0.5:" << nx - 0.5 << "]\nset yrange [-0.5:" << ny - 0.5 << "]\nset key outside below\nset tics out\n";
-  s << "plot '" << name << "_cells.dat' using 1:2:5 with image notitle";
+  s << "plot '" << name << "_cells.dat' using 1:2:6 with image notitle";
+  if (empty.rows() > 0) {
+    f.tables.emplace_back(name + "_empty", empty);
+    s << ", \\\n     '" << name << "_empty.dat' using 1:2:($1-0.5):($1+0.5):($2-0.5):($2+0.5) with boxxyerror "
+      << "fs solid 1.0 noborder fc rgb '#bdbdbd' title 'no result (failed or not run)'";
+  }
   for (std::size_t l = 0; l < contours.size(); ++l) {
     GridMap index = contours[l].field;  // the same field on cell indices
     for (std::size_t i = 0; i < nx; ++i) index.x_values[i] = double(i);

@@ -122,14 +122,31 @@ BOOST_AUTO_TEST_CASE(a_two_key_grid_with_both_solvers_gets_count_and_disagreemen
   const Table& diff = table(figure(figs, "sweep_disagreement_0_1"), "sweep_disagreement_0_1_cells");
   BOOST_REQUIRE_EQUAL(cells.rows(), 12u);
   for (std::size_t r = 0; r < cells.rows(); ++r) {
-    BOOST_TEST(cells.values[r * 5 + 4] == cells.values[r * 5 + 2] + cells.values[r * 5 + 3]);
-    BOOST_TEST(diff.values[r * 5 + 4] == diff.values[r * 5 + 3]);
+    BOOST_TEST(cells.values[r * 6 + 4] == cells.values[r * 6 + 2] + cells.values[r * 6 + 3]);
+    BOOST_TEST(diff.values[r * 6 + 4] == diff.values[r * 6 + 3]);
   }
   // Counts 2..7: five thresholds, every one drawn (fewer than max_contour_levels).
   const Figure& f = figure(figs, "sweep_bounces_realtime_0_1");
   std::size_t levels = 0;
   for (const auto& [name, t] : f.tables) levels += name.find("_level") != std::string::npos ? 1 : 0;
   BOOST_TEST(levels == 5u);  // thresholds 2|3, 3|4, 4|5, 5|6, 6|7
+}
+
+BOOST_AUTO_TEST_CASE(a_throw_without_a_result_is_a_grey_cell_not_a_hole_in_the_image) {
+  // Oracle: one failed throw at grid point (1, 2) of a 3 × 4 grid.
+  SweepData d = grid_data({3, 4}, SweepSolvers::realtime);
+  fill(d, [](const std::vector<double>& p, int) { return p[0]; });
+  const std::size_t w = d.throws.columns.size(), failed = 1 * 4 + 2;
+  for (std::size_t c = 0; c < w; ++c)
+    if (d.throws.columns[c] == "realtime_outcome") d.throws.values[failed * w + c] = kOutcomeFailed;
+  const std::vector<Figure> figs = sweep_map_figures(d);
+  const Figure& f = figure(figs, "sweep_bounces_realtime_0_1");
+  const Table& cells = table(f, "sweep_bounces_realtime_0_1_cells");
+  BOOST_TEST(cells.rows() == 12u);  // every cell present: an image needs a full grid
+  const Table& empty = table(f, "sweep_bounces_realtime_0_1_empty");
+  BOOST_REQUIRE_EQUAL(empty.rows(), 1u);
+  BOOST_TEST(empty.values[0] == 1);
+  BOOST_TEST(empty.values[1] == 2);
 }
 
 BOOST_AUTO_TEST_CASE(a_random_design_gets_scatter_maps_and_histograms_that_count_every_throw) {

@@ -116,7 +116,8 @@ std::string sweep_markdown(const SweepData& d, const std::vector<Figure>& figure
   if (figures.empty()) md << "No figures.\n\n";
   for (const auto& f : figures) md << figure_markdown(f);
   if (!d.notes.empty()) {
-    md << "## Notes\n\n" << d.notes.size() << " throws need words (first 20):\n\n";
+    md << "## Notes\n\n" << d.notes.size() << (d.notes.size() == 1 ? " throw needs" : " throws need")
+       << " words (first 20 shown):\n\n";
     MarkdownTable notes({"throw", "solver", "detail"});
     for (std::size_t i = 0; i < std::min<std::size_t>(20, d.notes.size()); ++i)
       notes.row({std::to_string(d.notes[i].throw_index), d.notes[i].solver, d.notes[i].detail});
