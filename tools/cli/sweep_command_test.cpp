@@ -288,7 +288,7 @@ BOOST_AUTO_TEST_SUITE(sweep_mpi, *boost::unit_test::disabled())
 
 BOOST_AUTO_TEST_CASE(one_two_and_three_ranks_give_the_table_of_a_threaded_run) {
   // Oracle: the same sweep on threads in one process, bit for bit but the cost_ columns.
-  const fs::path sweep = setup("mpi", grid_sweep(6, 4));
+  const fs::path sweep = setup("mpi", grid_sweep(4, 3));
   const fs::path threads = work() / "threads.h5";
   BOOST_REQUIRE(command("sweep " + sweep.string() + " --out " + threads.string() + " --quiet").status == 0);
   const stoneskip::Table reference = table_of(threads);
