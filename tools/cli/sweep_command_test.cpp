@@ -34,6 +34,14 @@ fs::path work() {
   return d;
 }
 
+// The suite's files go when it ends.
+struct RemoveScratch {
+  ~RemoveScratch() {
+    std::error_code ec;
+    fs::remove_all(work(), ec);
+  }
+};
+
 std::string text_of(const fs::path& p) {
   std::ifstream f(p);
   return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
@@ -126,7 +134,7 @@ std::string mpiexec() {
 
 }  // namespace
 
-BOOST_AUTO_TEST_SUITE(sweep_command)
+BOOST_AUTO_TEST_SUITE(sweep_command, *boost::unit_test::fixture<RemoveScratch>())
 
 BOOST_AUTO_TEST_CASE(a_throws_row_equals_stoneskip_run_on_the_same_overridden_case) {
   // Oracle: `stoneskip run BASE --set ... --solver both --json`, field by field, exactly.
@@ -284,7 +292,7 @@ BOOST_AUTO_TEST_CASE(sweep_plot_maps_hold_the_tables_counts) {
 BOOST_AUTO_TEST_SUITE_END()
 
 // Run by ctest as `stoneskip_sweep_mpi` with what Open MPI needs to run as root (tools/CMakeLists.txt).
-BOOST_AUTO_TEST_SUITE(sweep_mpi, *boost::unit_test::disabled())
+BOOST_AUTO_TEST_SUITE(sweep_mpi, *boost::unit_test::disabled() * boost::unit_test::fixture<RemoveScratch>())
 
 BOOST_AUTO_TEST_CASE(one_two_and_three_ranks_give_the_table_of_a_threaded_run) {
   // Oracle: the same sweep on threads in one process, bit for bit but the cost_ columns.

@@ -25,6 +25,14 @@ fs::path dir() {
   return d;
 }
 
+// The suite's files go when it ends.
+struct RemoveScratch {
+  ~RemoveScratch() {
+    std::error_code ec;
+    fs::remove_all(dir(), ec);
+  }
+};
+
 const fs::path kBase = fs::absolute("cases/paper_8ms_spin.toml");
 
 fs::path write_sweep(const std::string& text) {
@@ -73,7 +81,7 @@ bool same_bits(const Vec3& a, const Vec3& b) { return std::memcmp(a.data(), b.da
 
 }  // namespace
 
-BOOST_AUTO_TEST_SUITE(sweep_file)
+BOOST_AUTO_TEST_SUITE(sweep_file, *boost::unit_test::fixture<RemoveScratch>())
 
 BOOST_AUTO_TEST_CASE(a_grid_sweep_file_reads_as_written) {
   // Oracle: kGrid's text.

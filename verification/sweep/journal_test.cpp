@@ -21,11 +21,20 @@ namespace fs = std::filesystem;
 
 namespace {
 
+fs::path scratch_dir() { return fs::temp_directory_path() / ("stoneskip_journal_" + std::to_string(::getpid())); }
+
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("stoneskip_journal_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
+  fs::create_directories(scratch_dir());
+  return scratch_dir() / name;
 }
+
+// The suite's files go when it ends.
+struct RemoveScratch {
+  ~RemoveScratch() {
+    std::error_code ec;
+    fs::remove_all(scratch_dir(), ec);
+  }
+};
 
 RowBatch batch(std::uint64_t first, std::size_t rows) {
   RowBatch b;
@@ -55,7 +64,7 @@ void write_bytes(const fs::path& p, const std::vector<char>& b, std::size_t n) {
 
 }  // namespace
 
-BOOST_AUTO_TEST_SUITE(sweep_journal)
+BOOST_AUTO_TEST_SUITE(sweep_journal, *boost::unit_test::fixture<RemoveScratch>())
 
 BOOST_AUTO_TEST_CASE(a_batch_round_trips_bit_for_bit) {
   // Oracle: the batch itself (NaN payload and −0 included).
