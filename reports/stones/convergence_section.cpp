@@ -49,7 +49,7 @@ Figure series_figure(const std::string& name, const std::string& title, const Re
 }  // namespace
 
 SectionOutput convergence_section(const Record& c) {
-  SectionWriter w(c, "1. Convergence of the real-time model");
+  SectionWriter w(c, "1. Convergence of the real-time model, each water law");
   const std::string contact_step = "dt × " + fmt(c.number("contact_ratio"), 3);
   w.lead("What is measured.",
          "The real-time stepper (fixed steps; a finer *contact step* near and in the water) is run on one throw with "
@@ -137,6 +137,29 @@ SectionOutput convergence_section(const Record& c) {
          "is pre-asymptotic and its verdict says so. The whole stepper adds its own event handling (contact start and "
          "end located by interpolation inside the step) and coarse steps can change the contact list itself (listed "
          "above): such runs have no bounce-position error.");
+
+  // Every other water law: the same series, compactly.
+  if (c.has("other_laws_list") && !c.strings("other_laws_list").empty()) {
+    w.subheading("The other water laws");
+    w.text("The same throw and the same measurements with each other law (its published C_w); the table above is for `" +
+           c.text("law") + "`. Same verdict rules.");
+    const Record& others = c.at("other_laws");
+    for (const auto& law : c.strings("other_laws_list")) {
+      const Record& l = others.at(law);
+      w.lead("`" + law + "`.", "Throw: " + l.text("case") + "; the reference makes " + fmt(l.number("reference_contacts")) +
+                                   " contacts and " + fmt(l.number("reference_bounces")) + " bounces and ends (" +
+                                   l.text("reference_outcome") + ") at " + fmt(l.number("reference_end_time_s"), 4) + " s.");
+      for (const auto& p : l.strings("problems")) w.text("> Could not measure: " + p);
+      MarkdownTable lt({"quantity", "scheme", "formal p", "observed p [95 % CI]", "verdict"});
+      const Record& ls = l.at("series");
+      for (const auto& key : l.strings("series_keys")) {
+        const Record& s = ls.at(key);
+        lt.row({s.text("description"), s.text("scheme"), fmt(s.number("formal_order")), observed(s.at("fit")),
+                verdict_markdown(s.at("fit").at("verdict"))});
+      }
+      w.table(lt);
+    }
+  }
 
   // The reference's own error against its tolerance.
   const Record& t = c.at("reference_tolerance");

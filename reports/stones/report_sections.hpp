@@ -10,5 +10,6 @@ SectionOutput work_precision_section(const Record& work_precision);
 SectionOutput sweeps_section(const Record& sweeps, const Record& fig9);
 SectionOutput hard_cases_section(const Record& hard_cases);
 SectionOutput validation_section(const Record& validation);
+SectionOutput ranking_section(const Record& validation);  // the validation record's "ranking" (issue 11)
 
 }  // namespace stoneskip

@@ -28,6 +28,20 @@ ThrowProblem work_throw(const StoneStudiesOptions& o, const std::string& name) {
   throw std::invalid_argument("no study throw named '" + name + "'");
 }
 
+// The throw under each law with its published C_w (labelled with the law), or as given when no
+// law is named. A paper-convention throw has the paper's printed law only.
+std::vector<ThrowProblem> under_laws(const ThrowProblem& p, const std::vector<WaterLaw>& laws) {
+  if (laws.empty() || p.environment.convention == Convention::paper) return {p};
+  std::vector<ThrowProblem> out;
+  for (WaterLaw law : laws) {
+    ThrowProblem q = p;
+    set_water_law(q.environment, law);
+    q.label += std::string(" (") + to_string(law) + ")";
+    out.push_back(q);
+  }
+  return out;
+}
+
 Record settings_findings(const StoneStudiesOptions& o) {
   Record r;
   r.set("preset", o.preset);
@@ -60,11 +74,14 @@ bool StoneStudiesOptions::valid(std::string* why) const {
   if (workers < 1) return fail("workers must be >= 1");
   if (convergence.dt_s.empty() || convergence.interval_steps.empty()) return fail("convergence needs steps");
   if (work_precision.dt_s.empty() || work_precision.rtol.empty()) return fail("work_precision needs steps and tolerances");
-  for (const auto& n : work_precision_throws) {
-    if (n == "spin_paper") continue;
-    if (std::find(std::begin(kThrowNames), std::end(kThrowNames), n) == std::end(kThrowNames))
-      return fail("work_precision throw '" + n + "' is not one of the study's throws");
-  }
+  for (const auto* list : {&work_precision_throws, &restarts.throws})
+    for (const auto& n : *list) {
+      if (n == "spin_paper") continue;
+      if (std::find(std::begin(kThrowNames), std::end(kThrowNames), n) == std::end(kThrowNames))
+        return fail("work_precision throw '" + n + "' is not one of the study's throws");
+    }
+  if (restarts.rtol.empty() || restarts.methods.empty()) return fail("the restart study needs methods and tolerances");
+  if (!validation.valid(why)) return false;
   for (const auto& a : sweep_axes) {
     if (a.values.size() < 2) return fail(std::string("sweep over ") + to_string(a.parameter) + " needs at least 2 values");
     if (!std::is_sorted(a.values.begin(), a.values.end())) return fail("sweep values must ascend");
@@ -87,12 +104,23 @@ Record run_stone_studies(const StoneStudiesOptions& o, StudySink& sink) {
     ReferenceToleranceOptions to = o.reference_tolerance;
     to.workers = o.workers;
     to.progress = progress;
-    const RealtimeConvergenceResult conv = run_realtime_convergence(o.convergence_throw.problem, co);
-    const ReferenceToleranceResult tol = run_reference_tolerance(o.convergence_throw.problem, to);
+    // The first law in full (with the reference's own tolerance study), every other law's series.
+    const std::vector<ThrowProblem> throws = under_laws(o.convergence_throw.problem, o.convergence_laws);
+    const RealtimeConvergenceResult conv = run_realtime_convergence(throws.front(), co);
+    const ReferenceToleranceResult tol = run_reference_tolerance(throws.front(), to);
     Record r = convergence_findings(conv, tol, o.convergence_judgement, o.required_tolerance_drop);
     r.child("reference_tolerance").set("truth_rtol", to.truth_rtol);
     r.child("reference_tolerance").set("atol_ratio", to.atol_ratio);
     r.set("contact_ratio", co.contact_ratio);
+    r.set("law", std::string(to_string(throws.front().environment.water_law)));
+    std::vector<std::string> others;
+    for (std::size_t k = 1; k < throws.size(); ++k) {
+      const std::string law = to_string(throws[k].environment.water_law);
+      others.push_back(law);
+      r.child("other_laws").add_child(law, convergence_series_findings(run_realtime_convergence(throws[k], co),
+                                                                         o.convergence_judgement));
+    }
+    r.set_strings("other_laws_list", others);
     return r;
   });
 
@@ -100,9 +128,28 @@ Record run_stone_studies(const StoneStudiesOptions& o, StudySink& sink) {
     WorkPrecisionOptions wo = o.work_precision;
     wo.workers = o.workers;
     wo.progress = progress;
+    wo.laws.clear();  // applied here: a paper-convention throw keeps its printed law
     std::vector<ThrowProblem> throws;
-    for (const auto& n : o.work_precision_throws) throws.push_back(work_throw(o, n));
-    return work_precision_findings(run_work_precision(throws, wo), wo);
+    for (const auto& n : o.work_precision_throws)
+      for (const ThrowProblem& p : under_laws(work_throw(o, n), o.work_precision_laws)) throws.push_back(p);
+    Record r = work_precision_findings(run_work_precision(throws, wo), wo);
+    // The restart strategies: CVODE only, on spinning and non-spinning throws, under each law.
+    const RestartStudyOptions& ro = o.restarts;
+    WorkPrecisionOptions rs = wo;
+    rs.realtime.clear();
+    rs.dt_s.clear();
+    rs.methods = ro.methods;
+    rs.restarts = ro.strategies;
+    rs.rtol = ro.rtol;
+    rs.repeats = ro.repeats;
+    rs.restart_time_tolerance_s = ro.time_tolerance_s;
+    rs.restart_error_factor = ro.error_factor;
+    std::vector<ThrowProblem> restart_throws;
+    for (const auto& n : ro.throws)
+      for (const ThrowProblem& p : under_laws(work_throw(o, n), ro.laws)) restart_throws.push_back(p);
+    if (!restart_throws.empty() && !ro.strategies.empty())
+      r.add_child("restarts", restart_findings(run_work_precision(restart_throws, rs), rs, ReferenceOptions{}.restart));
+    return r;
   });
 
   run_section(sink, "validation", [&] {
@@ -112,12 +159,16 @@ Record run_stone_studies(const StoneStudiesOptions& o, StudySink& sink) {
     const ValidationResult v =
         run_validation(o.clanet.problem, o.bocquet.problem, o.nospin_throw.problem, o.spin_throw.problem, vo);
     Record r = validation_findings(v, vo);
-    // The paper's Fig. 9 histories (shown with the sweeps).
+    // The paper's Fig. 9 histories (shown with the sweeps): the seed's throws with the default law
+    // and with the paper's printed equations, both solvers.
     Record& f = r.child("fig9");
     std::vector<std::string> keys;
-    for (const auto& h : v.fig9) {
-      keys.push_back(record_key(h.label));
-      f.add_child(keys.back(), history_record(h));
+    for (const auto& run : v.variants) {
+      if (run.variant.convention != Convention::paper && run.variant.law != vo.laws.front()) continue;
+      for (const ThrowHistory* h : {&run.without_spin, &run.with_spin}) {
+        keys.push_back(record_key(h->label));
+        f.add_child(keys.back(), history_record(*h));
+      }
     }
     f.set_strings("histories", keys);
     return r;
