@@ -111,12 +111,7 @@ SectionOutput ranking_section(const Record& v) {
       const Record& g = vars.at(law + "_reference");
       if (!g.has_child(regime)) continue;
       const Record& h = g.at(regime);
-      PlotSeries p;
-      p.title = law + " (" + fmt(h.number("bounces")) + " bounces)";
-      p.style = "lines";
-      p.x = h.table("history").column("t_s");
-      p.y = h.table("history").column("attack_deg");
-      ps.push_back(p);
+      ps.push_back(attack_angle_series(h, law + " (" + fmt(h.number("bounces")) + " bounces)", "lines"));
     }
     PlotAxes ax;
     ax.x_label = "time (s)";

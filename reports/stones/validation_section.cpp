@@ -101,6 +101,15 @@ std::string first_contact_text(const Record& h) {
 
 }  // namespace
 
+PlotSeries attack_angle_series(const Record& history, const std::string& title, const std::string& style) {
+  PlotSeries p;
+  p.title = title;
+  p.style = style;
+  p.x = history.table("history").column("t_s");
+  p.y = history.table("history").column("attack_deg");
+  return p;
+}
+
 SectionOutput validation_section(const Record& v) {
   SectionWriter w(v, "5. Validation against experiments (spec §3)");
   const Record& vars = v.at("variants");
@@ -193,12 +202,7 @@ SectionOutput validation_section(const Record& v) {
         continue;
       for (const auto& rk : g.strings("regimes")) {
         const Record& h = g.at(rk);
-        PlotSeries p;
-        p.title = h.text("label");
-        p.style = h.text("convention") == "paper" ? "lines dt 2" : "lines";
-        p.x = h.table("history").column("t_s");
-        p.y = h.table("history").column("attack_deg");
-        ps.push_back(p);
+        ps.push_back(attack_angle_series(h, h.text("label"), h.text("convention") == "paper" ? "lines dt 2" : "lines"));
       }
     }
     PlotAxes ax;

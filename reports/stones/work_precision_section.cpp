@@ -42,7 +42,7 @@ SectionOutput work_precision_section(const Record& c) {
     w.subheading("Throw: " + t.text("label"));
     const std::string what = t.text("headline") + " error (m)";
     const double unc = t.number("truth_uncertainty_m");
-    w.text("Reference (rtol " + fmt(c.number("truth_rtol"), 2) + "): " + fmt(t.number("truth_contacts")) + " contacts, " +
+    w.text("Water law: `" + t.text("law") + "`. Reference (rtol " + fmt(c.number("truth_rtol"), 2) + "): " + fmt(t.number("truth_contacts")) + " contacts, " +
            fmt(t.number("truth_bounces")) + " bounces, " + t.text("truth_outcome") + " at " +
            fmt(t.number("truth_end_time_s"), 4) + " s; " + fmt(t.number("truth_steps"), 8) + " steps, " +
            fmt(t.number("truth_rhs_evaluations"), 8) + " RHS evaluations, " + fmt(t.number("truth_segments"), 8) +

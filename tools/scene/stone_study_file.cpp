@@ -62,6 +62,14 @@ std::vector<WaterLaw> laws_of(TomlTable& t, const std::string& key, const std::v
   return out;
 }
 
+// Throws of the work-precision and restart studies ("nospin", "nospin@planing", "spin_paper").
+std::vector<std::string> throw_names(TomlTable& t, const std::string& key, const std::vector<std::string>& names) {
+  if (names.empty()) t.fail(key, "must not be empty");
+  for (const auto& n : names)
+    if (const std::string problem = study_throw_problem(n); !problem.empty()) t.fail(key, problem);
+  return names;
+}
+
 std::vector<ReferenceMethod> methods_of(TomlTable& t, const std::string& key, const std::vector<ReferenceMethod>& fallback) {
   auto names = t.maybe_strings(key);
   if (!names) return fallback;
@@ -96,6 +104,7 @@ void read_throws(const fs::path& dir, TomlTable t, StoneStudiesOptions& o) {
   o.clanet = load_throw(dir, t, "clanet");
   o.bocquet = load_throw(dir, t, "bocquet");
   o.stable_step_base = load_throw(dir, t, "stable_step_base");
+  if (t.has("flat_drop")) o.flat_drop = load_throw(dir, t, "flat_drop");
   const std::string hard = t.string("hard");
   const int limit = count(t, "hard_limit", 0, 0, 1000);
   const fs::path hard_dir = dir / hard;
@@ -160,8 +169,7 @@ void read_reference_tolerance(TomlTable t, StoneStudiesOptions& o) {
 
 void read_work_precision(TomlTable t, StoneStudiesOptions& o) {
   WorkPrecisionOptions& w = o.work_precision;
-  if (auto s = t.maybe_strings("throws")) o.work_precision_throws = *s;
-  o.work_precision_laws = laws_of(t, "laws", o.work_precision_laws);
+  if (auto s = t.maybe_strings("throws")) o.work_precision_throws = throw_names(t, "throws", *s);
   if (t.has("realtime")) {
     w.realtime.clear();
     for (TomlTable f : t.tables("realtime")) {
@@ -186,8 +194,7 @@ void read_work_precision(TomlTable t, StoneStudiesOptions& o) {
 
 void read_restarts(TomlTable t, StoneStudiesOptions& o) {
   RestartStudyOptions& r = o.restarts;
-  if (auto s = t.maybe_strings("throws")) r.throws = *s;
-  r.laws = laws_of(t, "laws", r.laws);
+  if (auto s = t.maybe_strings("throws")) r.throws = throw_names(t, "throws", *s);
   if (auto names = t.maybe_strings("strategies")) {
     r.strategies.clear();
     for (const auto& n : *names) {
@@ -383,8 +390,8 @@ StoneStudyFile load_stone_study_file(const std::string& path, const std::vector<
   // Everything the findings depend on: the study file and the text of every case it names.
   f.settings_text = "# " + f.file + "\n" + f.text;
   for (const StudyThrow* t : {&o.convergence_throw, &o.spin_throw, &o.nospin_throw, &o.sweep_base, &o.clanet, &o.bocquet,
-                              &o.stable_step_base})
-    f.settings_text += "\n# case " + t->file + "\n" + t->case_text;
+                              &o.stable_step_base, &o.flat_drop})
+    if (!t->file.empty()) f.settings_text += "\n# case " + t->file + "\n" + t->case_text;
   for (const auto& h : o.hard) f.settings_text += "\n# hard case " + h.file + "\n" + h.case_text;
   std::string why;
   if (!o.valid(&why)) throw_input_error(f.file, 0, "", why);

@@ -1,5 +1,6 @@
 // The keys issue 11 added to the stones study files (cases/README.md, "Study files"): the water
-// laws of the convergence, work-precision and validation studies, the restart study, the
+// laws of the convergence and validation studies, "throw@law" in the work-precision and restart
+// studies, the restart study, the
 // validation's scored ranges, measured curve and ranking; strict one-line errors for bad values.
 #include <boost/test/unit_test.hpp>
 
@@ -32,9 +33,11 @@ BOOST_AUTO_TEST_CASE(the_shipped_presets_name_their_laws_ranges_and_curve) {
   const std::vector<WaterLaw> all{WaterLaw::newtonian, WaterLaw::planing, WaterLaw::lift_drag};
   BOOST_TEST((full.validation.laws == all));
   BOOST_TEST((full.convergence_laws == all));
-  BOOST_TEST((full.work_precision_laws == all));
+  BOOST_TEST(full.work_precision_throws.size() == 6u);  // three throws, and three under another law
+  BOOST_TEST((full.flat_drop.problem.environment.convention == Convention::paper));
   BOOST_TEST(full.restarts.strategies.size() == 4u);
-  BOOST_TEST((full.restarts.throws == std::vector<std::string>{"spin", "nospin", "clanet"}));
+  BOOST_TEST((full.restarts.throws ==
+              std::vector<std::string>{"clanet", "spin", "nospin", "spin@planing", "nospin@planing", "flat_drop"}));
   int scored = 0;
   for (const auto& m : full.validation.measured) scored += m.score ? 1 : 0;
   BOOST_TEST(scored == 5);
@@ -58,6 +61,10 @@ BOOST_AUTO_TEST_CASE(bad_laws_ranges_and_strategies_are_one_line_errors_naming_t
   names(error_of({"validation.ranking.cost_throws=[\"bocquet\"]"}), "validation.ranking.cost_throws");
   names(error_of({"validation.ranking.colour=1"}), "colour");
   names(error_of({"restarts.strategies=[\"at_jumps\", \"never\"]"}), "restarts.strategies");
+  names(error_of({"restarts.throws=[\"nospin@planning\"]"}), "restarts.throws");
+  names(error_of({"work_precision.throws=[\"spin_paper@planing\"]"}), "work_precision.throws");
+  names(error_of({"work_precision.throws=[\"sidespin\"]"}), "work_precision.throws");
+  names(error_of({"restarts.throws=[\"flat_drop@planing\"]"}), "paper convention");  // the case is the paper's
   names(error_of({"restarts.strategies=[\"every_event\", \"sometimes\"]"}), "restarts.strategies");
   // A measured row: a range on a row the ranking cannot score, half a range, a range across zero.
   const std::string row = R"(validation.measured=[{key = "seed_spin", quantity = "q", measured = "m", source = "s", )";

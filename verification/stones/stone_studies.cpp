@@ -10,28 +10,38 @@ namespace stoneskip {
 namespace {
 
 std::vector<const StudyThrow*> named_throws(const StoneStudiesOptions& o) {
-  return {&o.convergence_throw, &o.spin_throw, &o.nospin_throw, &o.sweep_base, &o.clanet, &o.bocquet, &o.stable_step_base};
+  return {&o.convergence_throw, &o.spin_throw, &o.nospin_throw, &o.sweep_base, &o.clanet, &o.bocquet, &o.stable_step_base,
+          &o.flat_drop};
 }
-const char* kThrowNames[] = {"convergence", "spin", "nospin", "sweep_base", "clanet", "bocquet", "stable_step_base"};
+const char* kThrowNames[] = {"convergence", "spin",  "nospin",           "sweep_base",
+                             "clanet",      "bocquet", "stable_step_base", "flat_drop"};
 
-// The throws of the work-precision study, by name; "spin_paper" is the spinning throw in the
-// paper convention.
-ThrowProblem work_throw(const StoneStudiesOptions& o, const std::string& name) {
+ThrowProblem work_throw(const StoneStudiesOptions& o, const std::string& entry) {
+  const std::size_t at = entry.find('@');
+  const std::string name = entry.substr(0, at);
+  ThrowProblem p;
   if (name == "spin_paper") {
-    ThrowProblem p = with_convention(o.spin_throw.problem, Convention::paper);
+    p = with_convention(o.spin_throw.problem, Convention::paper);
     p.label += " (paper convention)";
-    return p;
+  } else {
+    const auto all = named_throws(o);
+    const auto it = std::find(std::begin(kThrowNames), std::end(kThrowNames), name);
+    if (it == std::end(kThrowNames)) throw std::invalid_argument("no study throw named '" + name + "'");
+    p = all[static_cast<std::size_t>(it - std::begin(kThrowNames))]->problem;
   }
-  const auto all = named_throws(o);
-  for (std::size_t i = 0; i < all.size(); ++i)
-    if (name == kThrowNames[i]) return all[i]->problem;
-  throw std::invalid_argument("no study throw named '" + name + "'");
+  if (at != std::string::npos) {
+    WaterLaw law = WaterLaw::newtonian;
+    parse_water_law(entry.substr(at + 1), law);
+    set_water_law(p.environment, law);
+    p.label += std::string(" (") + to_string(law) + ")";
+  }
+  return p;
 }
 
 // The throw under each law with its published C_w (labelled with the law), or as given when no
-// law is named. A paper-convention throw has the paper's printed law only.
+// law is named.
 std::vector<ThrowProblem> under_laws(const ThrowProblem& p, const std::vector<WaterLaw>& laws) {
-  if (laws.empty() || p.environment.convention == Convention::paper) return {p};
+  if (laws.empty()) return {p};
   std::vector<ThrowProblem> out;
   for (WaterLaw law : laws) {
     ThrowProblem q = p;
@@ -58,13 +68,27 @@ Record settings_findings(const StoneStudiesOptions& o) {
     c.set("mass_kg", t.problem.stone.mass.mass_kg);
     c.set("convention", std::string(to_string(t.problem.environment.convention)));
   };
-  for (std::size_t i = 0; i < all.size(); ++i) store(kThrowNames[i], *all[i]);
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (!all[i]->file.empty()) store(kThrowNames[i], *all[i]);  // an optional throw left out is not stored
   for (const auto& h : o.hard) store("hard_" + record_key(h.file), h);
   r.set_strings("throws", names);
   return r;
 }
 
 }  // namespace
+
+std::string study_throw_problem(const std::string& entry) {
+  const std::size_t at = entry.find('@');
+  const std::string name = entry.substr(0, at);
+  if (name != "spin_paper" && std::find(std::begin(kThrowNames), std::end(kThrowNames), name) == std::end(kThrowNames))
+    return "'" + name + "' is not one of the study's throws (or spin_paper)";
+  if (at == std::string::npos) return "";
+  WaterLaw law;
+  if (!parse_water_law(entry.substr(at + 1), law))
+    return "'" + entry.substr(at + 1) + "' in '" + entry + "' is not one of newtonian, planing, lift_drag";
+  if (name == "spin_paper") return "'" + entry + "': the paper convention has only its printed law";
+  return "";
+}
 
 bool StoneStudiesOptions::valid(std::string* why) const {
   auto fail = [&](const std::string& w) {
@@ -76,9 +100,17 @@ bool StoneStudiesOptions::valid(std::string* why) const {
   if (work_precision.dt_s.empty() || work_precision.rtol.empty()) return fail("work_precision needs steps and tolerances");
   for (const auto* list : {&work_precision_throws, &restarts.throws})
     for (const auto& n : *list) {
-      if (n == "spin_paper") continue;
-      if (std::find(std::begin(kThrowNames), std::end(kThrowNames), n) == std::end(kThrowNames))
-        return fail("work_precision throw '" + n + "' is not one of the study's throws");
+      const std::string study = list == &restarts.throws ? "restarts" : "work_precision";
+      if (const std::string problem = study_throw_problem(n); !problem.empty()) return fail(study + " throw " + problem);
+      const std::string name = n.substr(0, n.find('@'));
+      if (name == "flat_drop" && flat_drop.file.empty())
+        return fail(study + " throw 'flat_drop': the study file names no flat_drop case in [throws]");
+      if (n.find('@') != std::string::npos && name != "spin_paper") {
+        const auto all = named_throws(*this);
+        const auto it = std::find(std::begin(kThrowNames), std::end(kThrowNames), name);
+        if (all[static_cast<std::size_t>(it - std::begin(kThrowNames))]->problem.environment.convention == Convention::paper)
+          return fail(study + " throw '" + n + "': its case is in the paper convention, which has only its printed law");
+      }
     }
   if (restarts.rtol.empty() || restarts.methods.empty()) return fail("the restart study needs methods and tolerances");
   if (!validation.valid(why)) return false;
@@ -128,12 +160,11 @@ Record run_stone_studies(const StoneStudiesOptions& o, StudySink& sink) {
     WorkPrecisionOptions wo = o.work_precision;
     wo.workers = o.workers;
     wo.progress = progress;
-    wo.laws.clear();  // applied here: a paper-convention throw keeps its printed law
+    wo.laws.clear();  // each throw's law is named with it ("nospin@planing")
     std::vector<ThrowProblem> throws;
-    for (const auto& n : o.work_precision_throws)
-      for (const ThrowProblem& p : under_laws(work_throw(o, n), o.work_precision_laws)) throws.push_back(p);
+    for (const auto& n : o.work_precision_throws) throws.push_back(work_throw(o, n));
     Record r = work_precision_findings(run_work_precision(throws, wo), wo);
-    // The restart strategies: CVODE only, on spinning and non-spinning throws, under each law.
+    // The restart strategies: CVODE only, on spinning and non-spinning throws, under their laws.
     const RestartStudyOptions& ro = o.restarts;
     WorkPrecisionOptions rs = wo;
     rs.realtime.clear();
@@ -145,8 +176,7 @@ Record run_stone_studies(const StoneStudiesOptions& o, StudySink& sink) {
     rs.restart_time_tolerance_s = ro.time_tolerance_s;
     rs.restart_error_factor = ro.error_factor;
     std::vector<ThrowProblem> restart_throws;
-    for (const auto& n : ro.throws)
-      for (const ThrowProblem& p : under_laws(work_throw(o, n), ro.laws)) restart_throws.push_back(p);
+    for (const auto& n : ro.throws) restart_throws.push_back(work_throw(o, n));
     if (!restart_throws.empty() && !ro.strategies.empty())
       r.add_child("restarts", restart_findings(run_work_precision(restart_throws, rs), rs, ReferenceOptions{}.restart));
     return r;

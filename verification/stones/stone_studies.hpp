@@ -43,8 +43,7 @@ struct SweepAxisOptions {
 // The CVODE restart strategies measured against each other (issue 11, item 6): the
 // work-precision study's CVODE runs only, on these throws under these laws.
 struct RestartStudyOptions {
-  std::vector<std::string> throws{"spin", "nospin"};   // study throws by name (spinning and not)
-  std::vector<WaterLaw> laws;                           // empty: each throw's own law
+  std::vector<std::string> throws{"spin", "nospin"};   // as work_precision_throws (spinning and not)
   std::vector<RestartStrategy> strategies{RestartStrategy::every_event, RestartStrategy::every_crossing,
                                           RestartStrategy::at_jumps, RestartStrategy::never};
   std::vector<ReferenceMethod> methods{ReferenceMethod::bdf};
@@ -59,6 +58,7 @@ struct StoneStudiesOptions {
   int workers = 2;
   // The throws.
   StudyThrow convergence_throw, spin_throw, nospin_throw, sweep_base, clanet, bocquet, stable_step_base;
+  StudyThrow flat_drop;  // optional (file empty when not given): a throw whose force jumps at landing
   std::vector<StudyThrow> hard;
   // The studies.
   RealtimeConvergenceOptions convergence;
@@ -67,8 +67,9 @@ struct StoneStudiesOptions {
   ReferenceToleranceOptions reference_tolerance;
   double required_tolerance_drop = 100;  // CVODE's bounce-position error should fall this much from rtol 1e-6 to 1e-10
   WorkPrecisionOptions work_precision;
-  std::vector<std::string> work_precision_throws{"convergence", "nospin", "spin_paper"};  // which throws, by name
-  std::vector<WaterLaw> work_precision_laws;  // each physical throw under each (published C_w); empty: as given
+  // Which throws, by name: a study throw or spin_paper (the spinning throw, paper convention), with
+  // "@law" for that throw under that water law with its published C_w ("nospin@planing").
+  std::vector<std::string> work_precision_throws{"convergence", "nospin", "spin_paper"};
   RestartStudyOptions restarts;
   std::vector<SweepAxisOptions> sweep_axes;
   int max_thresholds = 8;
@@ -78,6 +79,12 @@ struct StoneStudiesOptions {
   ValidationOptions validation;
   bool valid(std::string* why) const;
 };
+
+// A throw of the work-precision and restart studies: a study throw's name ([throws]: convergence,
+// spin, nospin, ...) or "spin_paper" (the spinning throw in the paper convention), optionally with
+// "@law": that throw under that water law with its published C_w. Empty when the entry names one;
+// else what is wrong, in words.
+std::string study_throw_problem(const std::string& entry);
 
 // The sections in order, each stored in the sink as it finishes; returns the report-wide record.
 Record run_stone_studies(const StoneStudiesOptions& options, StudySink& sink);

@@ -51,6 +51,25 @@ ThrowProblem vary(const ThrowProblem& p, SweepParameter which, double value) {
 
 int bounces(const ThrowProblem& p, const SolverChoice& s) { return solve(p, s).bounces; }
 
+// The throw solved up to an early time first (kEarlyLook_s, or t_max if sooner), and again to
+// t_max only when `decided` says that early part does not settle the question: the answer is the
+// same as from the whole throw, without the seconds-long planing runs after a bounce.
+constexpr double kEarlyLook_s = 0.5;
+ThrowResult solve_until_decided(const ThrowProblem& p, const SolverChoice& s,
+                                const std::function<bool(const ThrowResult&)>& decided) {
+  SolverChoice early = s;
+  double& t_max = s.kind == SolverKind::realtime ? early.realtime.t_max_s : early.reference.t_max_s;
+  if (t_max <= kEarlyLook_s) return solve(p, s);
+  t_max = kEarlyLook_s;
+  ThrowResult r = solve(p, early);
+  return r.outcome != Outcome::time_limit || decided(r) ? r : solve(p, s);
+}
+
+// Whether the throw bounces at all: decided once it has bounced (the count never falls).
+bool bounces_at_all(const ThrowProblem& p, const SolverChoice& s) {
+  return solve_until_decided(p, s, [](const ThrowResult& r) { return r.bounces > 0; }).bounces > 0;
+}
+
 std::string fmt_value(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", x);
@@ -62,8 +81,8 @@ std::string fmt_value(double x) {
 BisectedValue bisect_bounce(const ThrowProblem& p, const SolverChoice& s, SweepParameter which, double lo, double hi,
                             double tol, bool smallest, const std::string& unit) {
   BisectedValue b;
-  const bool at_lo = bounces(vary(p, which, lo), s) > 0;
-  const bool at_hi = bounces(vary(p, which, hi), s) > 0;
+  const bool at_lo = bounces_at_all(vary(p, which, lo), s);
+  const bool at_hi = bounces_at_all(vary(p, which, hi), s);
   b.runs = 2;
   if (smallest) {
     if (!at_hi) {
@@ -91,7 +110,7 @@ BisectedValue bisect_bounce(const ThrowProblem& p, const SolverChoice& s, SweepP
   // Invariant: the bouncing side and the non-bouncing side bracket the change.
   while (hi - lo > tol) {
     const double mid = 0.5 * (lo + hi);
-    const bool bounce = bounces(vary(p, which, mid), s) > 0;
+    const bool bounce = bounces_at_all(vary(p, which, mid), s);
     ++b.runs;
     if (bounce == at_lo)
       lo = mid;
@@ -106,7 +125,11 @@ BisectedValue bisect_bounce(const ThrowProblem& p, const SolverChoice& s, SweepP
 
 // Duration of the first contact when it ends in a bounce (Clanet's contact time is that of a
 // bounce; a contact that ends in sinking is a planing run of another kind): NaN otherwise.
-double first_contact_duration(const ThrowResult& r) {
+double first_contact_duration(const ThrowProblem& p, const SolverChoice& s) {
+  // Decided once the first contact has ended (a contact still open at the early look is not).
+  const ThrowResult r = solve_until_decided(p, s, [](const ThrowResult& e) {
+    return e.contacts.size() > 1 || (e.contacts.size() == 1 && e.bounces > 0);
+  });
   return r.contacts.empty() || !r.contacts[0].bounced ? kNaN : r.contacts[0].duration_s();
 }
 
@@ -257,7 +280,7 @@ ValidationResult run_validation(const ThrowProblem& clanet, const ThrowProblem& 
     R.contact_time_s.assign(o.clanet_contact_speeds_m_s.size(), kNaN);
     for (std::size_t i = 0; i < o.clanet_contact_speeds_m_s.size(); ++i)
       jobs.push_back([&, C, Cs, i] {
-        R.contact_time_s[i] = first_contact_duration(solve(vary(C, SweepParameter::speed_m_s, o.clanet_contact_speeds_m_s[i]), Cs));
+        R.contact_time_s[i] = first_contact_duration(vary(C, SweepParameter::speed_m_s, o.clanet_contact_speeds_m_s[i]), Cs);
       });
     // The spin regimes at α = regime_attack_deg (Clanet et al.: tumbles / dips and recovers / held).
     R.regimes.resize(o.regime_spins_rev_s.size());

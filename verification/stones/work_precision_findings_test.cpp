@@ -2,27 +2,18 @@
 // work-precision study's own choice (RestartVerdict).
 #include <boost/test/unit_test.hpp>
 
-#include "model/stone/mass_properties.hpp"
-#include "model/stone/throw.hpp"
+#include "verification/stones/convergence_throw.hpp"
 #include "verification/stones/stone_studies.hpp"
 #include "verification/study/verdict_rules.hpp"
 
 namespace stoneskip {
 namespace {
 
-// The 8 m/s throw of the 3 cm stone without spin (sinks in its first contact, ≈ 10 ms long).
+// The convergence throw up to the end of its first contact (a bounce, with 40 rev/s of spin).
 ThrowProblem short_throw() {
-  ThrowProblem p;
-  const Mesh mesh = make_prism(0.03, 0.008, 11);
-  p.label = "8 m/s";
-  p.stone = make_stone(mesh, mass_properties_from_density(mesh, 2500.0), 0.0, "prism");
-  p.parameters.speed_m_s = 8.0;
-  p.parameters.path_angle_deg = 10.0;
-  p.parameters.attack_angle_deg = 10.0;
-  p.parameters.height_m = 0.1;
-  p.initial = initial_state(p.stone, p.parameters);
-  p.reference.t_max_s = 0.2;
-  p.realtime.t_max_s = 0.2;
+  ThrowProblem p = convergence_throw();
+  p.reference.t_max_s = 0.12;
+  p.realtime.t_max_s = 0.12;
   return p;
 }
 
