@@ -127,9 +127,9 @@ SectionOutput ranking_section(const Record& v) {
          "The distance says how far a law's disk is from Clanet's and Rosellini's disk where both can be measured; the "
          "attitude criterion says whether it keeps flying like their spinning disk. A law can be near in the numbers "
          "and still fail the attitude: the lift of every law here acts on the wetted trailing part of the stone, behind "
-         "the centre of mass, so its torque pitches the stone unless the spin's gyroscopic stiffness holds it. A law "
-         "that fails only the attitude would need a different contact model (a cavity, added mass, the splash), not a "
-         "different coefficient; no coefficient was tuned here.");
+         "the centre of mass, so its torque pitches the stone unless the spin's gyroscopic stiffness holds it. No "
+         "coefficient was tuned here; whether another coefficient, or a contact model with a cavity, added mass or the "
+         "splash, would hold the attitude is not studied.");
   return w.finish();
 }
 

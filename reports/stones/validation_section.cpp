@@ -169,8 +169,8 @@ SectionOutput validation_section(const Record& v) {
       if (c.text("quantity") != "clanet_min_speed") continue;
       const Table& pts = c.table("points");
       PlotSeries lo, hi;
-      lo.title = "measured, low end: " + c.text("label");
-      hi.title = "measured, high end (" + c.text("source") + ")";
+      lo.title = "measured, low end";
+      hi.title = "measured, high end";
       lo.style = "points pt 7 ps 1.5";
       hi.style = "points pt 5 ps 1.5";
       lo.x = hi.x = pts.column("x");
@@ -185,6 +185,11 @@ SectionOutput validation_section(const Record& v) {
     ax.extra = "set yrange [0:*]";
     w.figure(line_figure("clanet_min_speed", "Clanet's disk: minimum bouncing speed against attack angle, measured and each law",
                          ax, ps, "attack_deg", "speed_m_s"));
+    for (const auto& ck : curves.strings("keys")) {
+      const Record& c = curves.at(ck);
+      if (c.text("quantity") == "clanet_min_speed")
+        w.text("Measured points in the figure: " + c.text("label") + " (" + c.text("source") + ").");
+    }
   }
   {
     PlotAxes ax;

@@ -118,18 +118,18 @@ SectionOutput work_precision_section(const Record& c) {
     const auto& methods = r.strings("methods");
     w.subheading("CVODE's restart strategies");
     std::string throws;
-    for (const auto& l : r.strings("throws")) throws += (throws.empty() ? "" : "; ") + l;
+    for (const auto& l : r.strings("throws")) throws += (throws.empty() ? "" : "; ") + ("*" + l + "*");
     w.text("Where the right-hand side is only non-smooth (a vertex crossing or a face's switch leaves the force "
            "continuous) a restart of CVODE's multistep history may not pay. Each strategy — `every_event` (locate every "
            "vertex crossing and face switch and restart at each), `every_crossing` (restart at vertex crossings only), "
            "`at_jumps` (restart only where the force jumps: a flat face reaching or leaving the surface, and a contact's "
-           "start), `never` — solves the throws " + throws + " at each method and rtol (atol = rtol × " +
+           "start), `never` — solves each throw at each method and rtol (atol = rtol × " +
            fmt(r.number("atol_ratio"), 2) + "), against a truth that restarts at every event at rtol " +
            fmt(r.number("truth_rtol"), 2) + ". A strategy keeps the contact times where, at every method and rtol, no run "
            "fails or changes its contact list and its worst contact-start or -end error is at most the larger of " +
            fmt(r.number("time_tolerance_s"), 2) + " s and " + fmt(r.number("error_factor"), 2) +
            "× `every_event`'s own worst error there. Cost: right-hand-side evaluations (the verdict's measure) and " +
-           r.text("clock") + " (" + fmt(r.number("repeats")) + " repeats).");
+           r.text("clock") + " (" + fmt(r.number("repeats")) + " repeats). The throws: " + throws + ".");
     w.verdict("Cheapest strategy that keeps the contact times (the reference's default is `" + r.text("default") + "`)",
               r.at("verdict"));
     w.end_list();
