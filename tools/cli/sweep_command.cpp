@@ -21,11 +21,12 @@
 
 #include "solvers/reference/cvode_stone.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "tools/cli/terminal_progress.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/scene/scene_throw.hpp"
 #include "tools/scene/sweep_file.hpp"
 #include "verification/sweep/sweep_run.hpp"
-#include "verification/waves/cpu_timer.hpp"
+#include "solvers/realtime/clocks.hpp"
 
 namespace stoneskip::cli {
 namespace {
@@ -148,7 +149,7 @@ void run(const SweepArgs& a) {
   options.resume = a.resume;
   options.master_threads = a.threads;
   options.max_chunk = a.max_chunk;
-  options.progress = !a.quiet;
+  if (!a.quiet) options.progress = terminal_progress();
 
   // 2. Rank 0: the output and the journal.
   std::optional<SweepPlan> plan;

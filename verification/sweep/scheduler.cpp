@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "verification/waves/cpu_timer.hpp"
+#include "solvers/realtime/clocks.hpp"
 
 namespace stoneskip {
 

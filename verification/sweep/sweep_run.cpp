@@ -11,7 +11,6 @@
 #include "stoneskip_version.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
-#include "tools/io/progress.hpp"
 
 namespace stoneskip {
 
@@ -138,8 +137,8 @@ SweepSummary SweepPlan::run(const ThrowEvaluator& evaluate, MpiSession& mpi) {
   summary.throws = data_.design.size();
   summary.recovered = recovered_;
   summary.was_complete = was_complete_;
-  std::unique_ptr<Progress> progress;
-  if (options_.progress && !pending_.empty()) progress = std::make_unique<Progress>("sweep", pending_.size());
+  std::unique_ptr<ProgressTicker> progress;
+  if (!pending_.empty()) progress = start_progress(options_.progress, "sweep", pending_.size());
   const BatchSink sink = [&](const RowBatch& b) {
     journal_->append(b);
     take(b);
@@ -151,7 +150,7 @@ SweepSummary SweepPlan::run(const ThrowEvaluator& evaluate, MpiSession& mpi) {
                       : mpi.size() > 1              ? 1
                                                     : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   summary.schedule = run_master(pending_, data_.throws.columns.size(), evaluate, sink, so, mpi);
-  if (progress) progress->done();
+  progress.reset();
   summary.computed = summary.schedule.throws;
   if (was_complete_) return summary;
 

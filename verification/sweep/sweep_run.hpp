@@ -14,6 +14,8 @@
 #include <optional>
 #include <string>
 
+#include "verification/study/progress.hpp"
+
 #include "verification/sweep/journal.hpp"
 #include "verification/sweep/sweep_result.hpp"
 
@@ -26,7 +28,7 @@ struct SweepRunOptions {
                                     // rank, 1 beside MPI workers; 0 with workers: it only schedules
   std::size_t max_chunk = 32;
   double sync_interval_s = 1.0;     // fdatasync of the journal at most this often
-  bool progress = true;             // a progress line with the time left, on stderr
+  ProgressFactory progress;         // how the throws are shown (the command line: a bar with the time left); empty: silently
 };
 
 struct SweepSummary {
