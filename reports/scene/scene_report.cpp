@@ -1,5 +1,6 @@
 #include "reports/scene/scene_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -91,24 +92,24 @@ SectionOutput coupling_section(const Record& c) {
              k < a.rows() && k < b.rows() ? us(a.column("start_s")[k] - b.column("start_s")[k]) : "–"});
     w.table(t);
     if (rows > 20) w.text("(" + fmt(double(rows)) + " contacts in all; the first 20 shown, every one in data.h5.)");
-    w.text("Contacts: two-way " + fmt(r.at("two_way").number("contacts")) + " (" + fmt(r.at("two_way").number("bounces")) + " bounces, " +
+    w.text("Contacts: two-way " + fmt(r.at("two_way").number("contact_count")) + " (" + fmt(r.at("two_way").number("bounces")) + " bounces, " +
            r.at("two_way").text("outcome") + " at " + fmt(r.at("two_way").number("end_time_s"), 4) + " s), one-way " +
-           fmt(r.at("one_way").number("contacts")) + " (" + fmt(r.at("one_way").number("bounces")) + ", " + r.at("one_way").text("outcome") +
-           " at " + fmt(r.at("one_way").number("end_time_s"), 4) + " s), still water " + fmt(r.at("none").number("contacts")) + " (" +
+           fmt(r.at("one_way").number("contact_count")) + " (" + fmt(r.at("one_way").number("bounces")) + ", " + r.at("one_way").text("outcome") +
+           " at " + fmt(r.at("one_way").number("end_time_s"), 4) + " s), still water " + fmt(r.at("none").number("contact_count")) + " (" +
            fmt(r.at("none").number("bounces")) + ").");
     std::vector<PlotSeries> series;
     for (const auto& [key, label] : {std::pair<const char*, const char*>{"two_way", "two-way"}, {"one_way", "one-way"}}) {
       const Table& x = r.at(key).table("contacts");
       series.push_back({label, x.column("touch_x_m"), x.column("start_s"), "points pt 7 ps 0.9"});
     }
-    PlotAxes ax{"first touch x (m)", "contact start (s)"};
+    PlotAxes ax{"first touch x (m)", "contact start (s)", false, false, ""};
     w.figure(line_figure("coupling_" + name, "Where and when the stone touched the water: " + name, ax, series, "x_m", "t_s"));
   }
   w.lead("How to read it.",
          "The two-way stone meets the water its own draught has pushed down, but only as far as the water has had time to move: "
          "the depression spreads at c, so over a contact much shorter than the time footprint/c the water under the stone barely "
-         "answers. In the physical convention that is a change of microseconds; in the paper convention, which creates energy "
-         "in contacts, a small change at one contact is amplified by every later one and the throws part ways.");
+         "answers. How large the change is, scene by scene, is the verdict above with its numbers; a throw that bounces carries "
+         "a change at one contact into every later one (in the paper convention, whose contacts can create energy, it can grow).");
   return w.finish();
 }
 
@@ -164,7 +165,7 @@ SectionOutput convergence_section(const Record& c) {
     w.verdict(code(name) + " both", s.at("both").at("fit").at("verdict"));
   }
   w.end_list();
-  PlotAxes ax{"cell size d (m), Δt = σ d / c", "RMS error at t_end (m)", true, true};
+  PlotAxes ax{"cell size d (m), Δt = σ d / c", "RMS error at t_end (m)", true, true, ""};
   w.figure(line_figure("forced_convergence", "Forced leapfrog: error against the forced spectral reference, d and Δt refined together", ax,
                        series, "h_m", "error_m"));
   return w.finish();
@@ -203,14 +204,14 @@ SectionOutput rings_section(const Record& r) {
       fit.push_back(r.number("intercept_m") + r.number("speed_m_s") * x);
       at_c.push_back(r.number("intercept_m") + r.number("c_m_s") * x);
     }
-    PlotAxes ax{"t (s)", "radius of the leading edge (m)"};
+    PlotAxes ax{"t (s)", "radius of the leading edge (m)", false, false, ""};
     w.figure(line_figure("ring_radius", "The ring's leading edge against time", ax,
                          {{"measured", t.column("t_s"), t.column("radius_m"), "points pt 7 ps 0.6"},
                           {"least-squares line", t.column("t_s"), fit, "lines"},
                           {"speed c from the same start", t.column("t_s"), at_c, "lines dt 2"}},
                          "t_s", "r_m"));
     const Table& p = r.table("profile");
-    PlotAxes ap{"distance from the contact's centre (m)", "z (m)"};
+    PlotAxes ap{"distance from the contact's centre (m)", "z (m)", false, false, ""};
     w.figure(line_figure("ring_profile", "The ring at t = " + fmt(r.number("profile_t_s"), 3) + " s: azimuthal mean and RMS", ap,
                          {{"mean", p.column("r_m"), p.column("mean_m"), "lines"}, {"RMS", p.column("r_m"), p.column("rms_m"), "lines"}},
                          "r_m", "z_m"));
@@ -281,8 +282,13 @@ SectionOutput speed_section(const Record& s) {
          " of " + ms(s.number("wall_s")) + " (" + ms(s.number("cpu_s")) + " thread CPU). The slowest frame is frame " +
          fmt(s.number("slowest_frame")) + " (t = " + fmt(s.number("slowest_frame_t_s"), 3) + " s): " + ms(s.number("slowest_frame_wall_s")) +
          " wall, " + ms(s.number("slowest_frame_cpu_s")) + " CPU.");
+  w.text("What a throw of the sweep costs (its profile, thread CPU): " + ms(s.number("sweep_cpu_per_throw_s")) + " per throw, for " +
+         fmt(s.number("sweep_simulated_per_throw_s"), 3) + " s simulated, " + fmt(s.number("sweep_steps_per_throw"), 4) + " stone steps of which " +
+         fmt(s.number("sweep_contact_steps_per_throw"), 4) + " with the contact step, " + us(s.number("sweep_cpu_per_step_s")) +
+         " per step; the target allows " + ms(s.number("sweep_cpu_budget_per_throw_s")) + " per throw on " + fmt(s.number("sweep_workers")) +
+         " fully available workers.");
   const Table& f = s.table("frames");
-  PlotAxes ax{"t (s)", "cost of the frame (ms)", false, true};
+  PlotAxes ax{"t (s)", "cost of the frame (ms)", false, true, ""};
   w.figure(line_figure("frame_cost", "The cost of each frame (1 thread)", ax,
                        {{"wall", f.column("t_s"), f.column("wall_ms"), "lines"},
                         {"thread CPU", f.column("t_s"), f.column("cpu_ms"), "lines"},

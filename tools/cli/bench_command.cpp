@@ -89,6 +89,8 @@ void bench(const BenchArgs& a) {
   j["scene_fps_2cores_median"] = h.scene_many.fps_median_wall();
   j["scene_fps_1core_cpu"] = h.scene_one.fps_cpu();
   j["scene_frames"] = h.scene_one.frames;
+  j["scene_wall_s_1core"] = h.scene_one.best_wall_s;
+  j["scene_cpu_s_1core"] = h.scene_one.best_cpu_s;
   j["scene_slowest_frame_ms_1core"] = 1e3 * h.scene_one.best.slowest_frame_wall_s;
   j["scene_parts_wall_s_1core"] = {{"stone", h.scene_one.best.stone_wall_s},
                                    {"draught", h.scene_one.best.draught_wall_s},
@@ -101,6 +103,7 @@ void bench(const BenchArgs& a) {
   j["stencil_cells_per_s_500"] = h.stencil_small.cells_per_s;
   j["stencil_cells_per_s_2048"] = h.stencil_large.cells_per_s;
   j["bandwidth_fraction_2048"] = h.stencil_large.fraction;
+  j["copy_bound_cells_per_s_2048"] = h.stencil_large.bound_cells_per_s;
   j["bandwidth_fraction_2048_median"] = h.stencil_large.fraction_median;
   j["bandwidth_fraction_500"] = h.stencil_small.fraction;
   j["per_cell_ratio_500_over_2048"] = h.per_cell_ratio;
@@ -108,6 +111,10 @@ void bench(const BenchArgs& a) {
   j["sweep_throws"] = h.sweep.throws;
   j["sweep_workers"] = h.sweep.workers;
   j["sweep_cpu_s"] = h.sweep.cpu_s;
+  j["sweep_wall_s"] = h.sweep.best_wall_s;
+  j["sweep_steps"] = h.sweep.steps;
+  j["sweep_contact_steps"] = h.sweep.contact_steps;
+  j["sweep_simulated_s"] = h.sweep.simulated_s;
   j["load_average_before"] = h.load_before;
   j["load_average_after"] = h.load_after;
   j["cores"] = h.cores;
@@ -139,6 +146,11 @@ void bench(const BenchArgs& a) {
   line("bounce-count sweep (" + std::to_string(h.sweep.throws) + " throws, " + std::to_string(h.sweep.workers) + " workers): throws/s",
        g(h.sweep.throws_per_s(), 4) + " (CPU " + g(h.sweep.cpu_s, 3) + " s)", ">= " + g(kThrowsPerSecondTarget),
        h.sweep.throws_per_s() >= kThrowsPerSecondTarget);
+  std::printf("sweep profile: %s ms CPU per throw, %s s simulated per throw, %s steps per throw (%s with the contact step), %s µs CPU per step\n",
+              g(1e3 * h.sweep.cpu_s / std::max(1L, h.sweep.throws)).c_str(), g(h.sweep.simulated_s / std::max(1L, h.sweep.throws)).c_str(),
+              g(double(h.sweep.steps) / std::max(1L, h.sweep.throws)).c_str(),
+              g(double(h.sweep.contact_steps) / std::max(1L, h.sweep.throws)).c_str(),
+              g(1e6 * h.sweep.cpu_s / std::max(1L, h.sweep.steps)).c_str());
   std::printf("scene parts (1 thread, best run, wall): stone %s ms, draught %s ms, water %s ms; slowest frame %s ms\n",
               g(1e3 * h.scene_one.best.stone_wall_s).c_str(), g(1e3 * h.scene_one.best.draught_wall_s).c_str(),
               g(1e3 * h.scene_one.best.water_wall_s).c_str(), g(1e3 * h.scene_one.best.slowest_frame_wall_s).c_str());

@@ -1,7 +1,8 @@
-// `stoneskip bench --quick --json`: not a timing test (speed is quoted from the benchmark, never
-// asserted), only that the figures the README and issue 9 name are there, and are positive and
-// finite. Oracle: the JSON schema of the README; a fraction of a copy bound must lie in (0, 10)
-// (above 1 only where the step beats the copy kernel in cache, never by orders of magnitude).
+// Oracle: the JSON schema of the README and identities between its own figures that a wrong
+// measurement would break — not the speeds themselves (speed is quoted from the benchmark, never
+// asserted): thread CPU ≤ wall for the one-thread scene, the fraction of the copy bound is the
+// cell rate over the bound, the per-cell ratio is the 500² rate over the large grid's, the sweep's
+// summed CPU fits in workers × wall, and the counts are duration × rate and spins × angles.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -11,19 +12,40 @@
 
 BOOST_AUTO_TEST_SUITE(bench_command_)
 
-BOOST_AUTO_TEST_CASE(bench_json_names_every_headline_figure) {
+BOOST_AUTO_TEST_CASE(bench_json_names_every_headline_figure_and_they_agree) {
+  constexpr double kRoundoff = 1e-12;   // a ratio recomputed from printed doubles (17 digits)
+  constexpr double kClockSlack = 0.05;  // thread-CPU and wall clocks read at different instants, coarse CPU ticks on a VM
   const auto r = stoneskip::test::run_stoneskip("bench --quick --json", false);
   BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
   const auto j = nlohmann::json::parse(r.out);
   for (const char* key : {"scene_fps_1core", "scene_fps_2cores", "stencil_cells_per_s_500", "stencil_cells_per_s_2048",
-                          "bandwidth_fraction_2048", "sweep_throws_per_s", "scene_fps_1core_cpu", "per_cell_ratio_500_over_2048"}) {
+                          "bandwidth_fraction_2048", "sweep_throws_per_s", "scene_fps_1core_cpu", "per_cell_ratio_500_over_2048",
+                          "copy_bound_cells_per_s_2048", "scene_wall_s_1core", "scene_cpu_s_1core", "sweep_wall_s", "sweep_cpu_s"}) {
     BOOST_REQUIRE_MESSAGE(j.contains(key), key);
     const double v = j[key];
     BOOST_TEST((std::isfinite(v) && v > 0), key << " = " << v);
   }
-  BOOST_TEST(j["bandwidth_fraction_2048"].get<double>() < 10.0);
+  const double d = j["bandwidth_fraction_2048"].get<double>() -
+                   j["stencil_cells_per_s_2048"].get<double>() / j["copy_bound_cells_per_s_2048"].get<double>();
+  BOOST_TEST(std::abs(d) <= kRoundoff * j["bandwidth_fraction_2048"].get<double>());
+  const double ratio = j["stencil_cells_per_s_500"].get<double>() / j["stencil_cells_per_s_2048"].get<double>();
+  BOOST_TEST(std::abs(j["per_cell_ratio_500_over_2048"].get<double>() - ratio) <= kRoundoff * ratio);
+  // One thread: its CPU time cannot exceed the wall time it ran in.
+  BOOST_TEST(j["scene_cpu_s_1core"].get<double>() <= (1 + kClockSlack) * j["scene_wall_s_1core"].get<double>());
+  BOOST_TEST(j["scene_fps_1core"].get<double>() * j["scene_wall_s_1core"].get<double>() == j["scene_frames"].get<double>(),
+             boost::test_tools::tolerance(kRoundoff));
+  // The sweep's throws ran on sweep_workers threads during its wall time.
+  BOOST_TEST(j["sweep_cpu_s"].get<double>() <= (1 + kClockSlack) * j["sweep_workers"].get<double>() * j["sweep_wall_s"].get<double>());
   BOOST_TEST(j["scene_frames"].get<long>() == 45);  // the quick scene: 0.5 s at 90 frames/s
-  BOOST_TEST(j["sweep_throws"].get<long>() == 6);
+  BOOST_TEST(j["sweep_throws"].get<long>() == 6);   // 3 spins × 2 attack angles
+  BOOST_TEST(j["sweep_throws_per_s"].get<double>() * j["sweep_wall_s"].get<double>() == 6.0, boost::test_tools::tolerance(kRoundoff));
+}
+
+BOOST_AUTO_TEST_CASE(bench_refuses_a_bad_repeat_count) {
+  // Oracle: the input rules — one line naming the option, exit 2.
+  const auto r = stoneskip::test::run_stoneskip("bench --quick --repeats 0");
+  BOOST_TEST(r.status == 2);
+  BOOST_TEST(r.out.find("--repeats") != std::string::npos, r.out);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

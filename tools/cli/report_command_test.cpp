@@ -96,6 +96,16 @@ BOOST_AUTO_TEST_CASE(stones_quick_report_is_a_function_of_its_data) {
   check_report(dir);
 }
 
+BOOST_AUTO_TEST_CASE(scene_quick_report_is_a_function_of_its_data) {
+  // Oracle: as for the waves report; and the still frames the page promises are drawn.
+  TempDir tmp("stoneskip-report-scene");
+  const fs::path dir = tmp.path() / "scene";
+  const auto r = run_stoneskip("report scene --quick --out " + dir.string());
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
+  check_report(dir);
+  BOOST_TEST(fs::file_size(dir / "figures" / "still_seed_8ms.png") > 0u);
+}
+
 BOOST_AUTO_TEST_CASE(a_bad_study_file_fails_before_any_work_and_leaves_nothing) {
   // Oracle: the input rules — one line naming the file and key, exit 2, no folder.
   TempDir tmp("stoneskip-report-bad");

@@ -3,6 +3,7 @@
 #   OUT/throws/*.h5      the shipped stone cases, real-time model and CVODE reference
 #   OUT/waves/           the water-surface verification report (index.md, figures/, data.h5)
 #   OUT/stones/          the stone verification and validation report
+#   OUT/scene/           the seed's scene report (two-way coupling, rings, shortcuts, speed)
 #   OUT/captures/        the Wii Remote capture reports for the shipped captures
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -37,6 +38,9 @@ echo "== Report: waves =="
 
 echo "== Report: stones =="
 "$exe" report stones --out "$out/stones"
+
+echo "== Report: the seed's scene (two-way coupling, rings, shortcuts, speed, stills) =="
+"$exe" report scene --out "$out/scene"
 
 echo "== Regression against the golden bounce-count baselines =="
 "$exe" regress

@@ -75,7 +75,8 @@ SweepSpeed measure_sweep(const SweepSpeedOptions& o, ProgressTicker& ticker) {
   s.throws = static_cast<long>(throws.size());
   s.workers = o.workers;
   std::vector<int> bounces(throws.size());
-  std::vector<double> cpu(throws.size());
+  std::vector<double> cpu(throws.size()), simulated(throws.size());
+  std::vector<long> steps(throws.size()), contact_steps(throws.size());
   for (int k = 0; k < o.repeats; ++k) {
     ParallelOptions po;
     po.workers = o.workers;
@@ -86,6 +87,9 @@ SweepSpeed measure_sweep(const SweepSpeedOptions& o, ProgressTicker& ticker) {
           const ThrowResult r = solve(throws[i], solver);
           bounces[i] = r.bounces;
           cpu[i] = r.stats.cpu_s;
+          steps[i] = r.stats.steps;
+          contact_steps[i] = r.stats.contact_steps;
+          simulated[i] = r.end_time_s;
         },
         po);
     const double w = wall.seconds();
@@ -94,6 +98,13 @@ SweepSpeed measure_sweep(const SweepSpeedOptions& o, ProgressTicker& ticker) {
       s.best_wall_s = w;
       s.cpu_s = 0;
       for (double c : cpu) s.cpu_s += c;
+      s.steps = s.contact_steps = 0;
+      s.simulated_s = 0;
+      for (std::size_t i = 0; i < throws.size(); ++i) {
+        s.steps += steps[i];
+        s.contact_steps += contact_steps[i];
+        s.simulated_s += simulated[i];
+      }
     }
     ticker.tick();
   }

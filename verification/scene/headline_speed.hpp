@@ -57,6 +57,9 @@ struct SweepSpeed {
   std::vector<double> wall_s;         // per repeat
   double best_wall_s = 0;
   double cpu_s = 0;                   // summed thread CPU of the throws, best repeat
+  // What a throw costs (the profile of the sweep's time): summed over the throws of one repeat.
+  long steps = 0, contact_steps = 0;  // all stone steps; those with the contact step size
+  double simulated_s = 0;             // Σ of each throw's end time
   std::vector<int> bounce_histogram;  // throws with 0, 1, 2, … bounces
   double throws_per_s() const { return best_wall_s > 0 ? throws / best_wall_s : 0; }
 };

@@ -159,7 +159,7 @@ Record scene_coupling_findings(const SceneStudiesOptions& o, const ProgressFacto
     for (const auto& [key, p] : {std::pair<const char*, const ProbedScene*>{"two_way", &a}, {"one_way", &b}, {"none", &n}}) {
       Record& k = r.child(key);
       k.set_table("contacts", contacts_table(p->summary.stone));
-      k.set("contacts", static_cast<long>(p->summary.stone.contacts.size()));
+      k.set("contact_count", static_cast<long>(p->summary.stone.contacts.size()));
       k.set("bounces", p->summary.stone.bounces);
       k.set("outcome", std::string(to_string(p->summary.stone.outcome)));
       k.set("end_time_s", p->summary.stone.end_time_s);
@@ -443,7 +443,7 @@ Record scene_shortcuts_findings(const SceneStudiesOptions& o, const ProgressFact
     in.set("field_tolerance", so.field_tolerance);
     in.set("time_tolerance_s", so.time_tolerance_s);
     std::ostringstream reason;
-    reason << "largest surface difference " << num(d.field_max_change_m, 2) << " m (" << num(d.field_relative(), 2) << " of the largest |z|), contacts moved by up to "
+    reason << "largest surface difference " << num(d.field_max_change_m, 2) << " m (" << num(d.field_relative(), 2) << " of the largest surface height), contacts moved by up to "
            << us(std::max(d.max_start_change_s, d.max_end_change_s)) << ", " << d.contacts_b << " contacts against " << d.contacts_a << "; CPU "
            << ms(cut.min_cpu_s) << " against " << ms(ref.min_cpu_s) << " (" << num(100 * (ref.min_cpu_s > 0 ? 1 - cut.min_cpu_s / ref.min_cpu_s : 0), 3)
            << " % saved)";
@@ -504,6 +504,18 @@ Record scene_speed_findings(const SceneStudiesOptions& o, const ProgressFactory&
   r.set("sweep_cpu_s", s.sweep.cpu_s);
   r.set("sweep_wall_s", s.sweep.best_wall_s);
   r.set("sweep_contact_dt_s", h.sweep.base.realtime.contact_dt_s);
+  r.set("sweep_steps", s.sweep.steps);
+  r.set("sweep_contact_steps", s.sweep.contact_steps);
+  r.set("sweep_simulated_s", s.sweep.simulated_s);
+  {  // The sweep's profile: what one throw costs, and what the target allows it.
+    const double n = std::max(1L, s.sweep.throws);
+    r.set("sweep_cpu_per_throw_s", s.sweep.cpu_s / n);
+    r.set("sweep_simulated_per_throw_s", s.sweep.simulated_s / n);
+    r.set("sweep_steps_per_throw", s.sweep.steps / n);
+    r.set("sweep_contact_steps_per_throw", s.sweep.contact_steps / n);
+    r.set("sweep_cpu_per_step_s", s.sweep.steps > 0 ? s.sweep.cpu_s / s.sweep.steps : kNaN);
+    r.set("sweep_cpu_budget_per_throw_s", s.sweep.workers / o.speed.throws_per_s_target);
+  }
   auto target = [&](const std::string& key, double value, double goal, const std::string& what) {
     Record in;
     in.set("value", value);
