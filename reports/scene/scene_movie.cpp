@@ -12,6 +12,7 @@
 #include "reports/scene/frame_plot.hpp"
 #include "solvers/realtime/clocks.hpp"
 #include "tools/io/atomic_file.hpp"
+#include "verification/scene/scene_still.hpp"
 
 namespace stoneskip {
 
@@ -47,25 +48,11 @@ void write_floats(const fs::path& p, const std::vector<float>& v) {
   if (!f) throw std::runtime_error("movie: cannot write " + p.string());
 }
 
-// Block means of the field over [i0, i0 + n·b) × [j0, j0 + m·b) (points beyond the grid are left out).
-void block_means(const HeightField* field, int i0, int j0, int n, int m, int b, std::vector<float>& out, double& max_abs) {
+// Block means of the field (verification/scene/scene_still.hpp), zeros without a field.
+double means(const HeightField* field, int i0, int j0, int n, int m, int b, std::vector<float>& out) {
+  if (field) return block_means(*field, i0, j0, n, m, b, out);
   out.assign(static_cast<std::size_t>(n) * m, 0.0f);
-  if (!field) return;
-  for (int q = 0; q < m; ++q)
-    for (int p = 0; p < n; ++p) {
-      double s = 0;
-      int count = 0;
-      for (int dj = 0; dj < b; ++dj)
-        for (int di = 0; di < b; ++di) {
-          const int i = i0 + p * b + di, j = j0 + q * b + dj;
-          if (i < 0 || j < 0 || i >= field->nx() || j >= field->ny()) continue;
-          s += field->height(i, j);
-          ++count;
-        }
-      const double v = count ? s / count : 0.0;
-      out[static_cast<std::size_t>(q) * n + p] = static_cast<float>(v);
-      max_abs = std::max(max_abs, std::abs(v));
-    }
+  return 0;
 }
 
 // Runs a shell command, calling on_line for every line it prints (stdout and stderr); its status.
@@ -129,8 +116,7 @@ void MovieRecorder::record(const SceneFrame& f) {
   if (f.index % stride_ != 0) return;
   const long k = static_cast<long>(frames_.size()) + 1;
   const HeightField* field = has_field_ ? f.field : nullptr;
-  double max_abs = 0;
-  block_means(field, 0, 0, top_nx_, top_ny_, top_block_, buffer_, max_abs);
+  const double max_abs = means(field, 0, 0, top_nx_, top_ny_, top_block_, buffer_);
   write_floats(dir_ / frame_name("top", k, "bin"), buffer_);
   // The 3-D window: near_window_m around the stone, inside the pond.
   const int side = std::min({static_cast<int>(std::ceil(o_.near_window_m / cell_m_)), nx_, ny_});
@@ -140,8 +126,7 @@ void MovieRecorder::record(const SceneFrame& f) {
   const int ic = static_cast<int>(std::lround((f.stone.position_m.x() - x0_m_) / cell_m_));
   const int jc = static_cast<int>(std::lround((f.stone.position_m.y() - y0_m_) / cell_m_));
   const int i0 = std::clamp(ic - span / 2, 0, std::max(0, nx_ - span)), j0 = std::clamp(jc - span / 2, 0, std::max(0, ny_ - span));
-  double near_max = 0;
-  block_means(field, i0, j0, n, n, block, buffer_, near_max);
+  means(field, i0, j0, n, n, block, buffer_);
   write_floats(dir_ / frame_name("near", k, "bin"), buffer_);
   FrameData d;
   d.index = f.index;

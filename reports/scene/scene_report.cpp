@@ -20,6 +20,7 @@ std::string interval(const Record& fit) {
 std::string us(double s) { return fmt(1e6 * s, 3) + " µs"; }
 std::string ms(double s) { return fmt(1e3 * s, 3) + " ms"; }
 std::string pct(double f) { return fmt(100 * f, 3) + " %"; }
+std::string duration(double s) { return std::abs(s) >= 0.1 ? fmt(s, 3) + " s" : std::abs(s) >= 1e-3 ? ms(s) : us(s); }
 
 const std::string& verdict_of(const Record& r, const std::string& key = "verdict") { return r.at(key).text("verdict"); }
 
@@ -89,7 +90,7 @@ SectionOutput coupling_section(const Record& c) {
     };
     for (std::size_t k = 0; k < rows && k < 20; ++k)
       t.row({fmt(double(k + 1)), span(a, k), touch(a, k), span(b, k), touch(b, k), span(n, k),
-             k < a.rows() && k < b.rows() ? us(a.column("start_s")[k] - b.column("start_s")[k]) : "–"});
+             k < a.rows() && k < b.rows() ? duration(a.column("start_s")[k] - b.column("start_s")[k]) : "–"});
     w.table(t);
     if (rows > 20) w.text("(" + fmt(double(rows)) + " contacts in all; the first 20 shown, every one in data.h5.)");
     w.text("Contacts: two-way " + fmt(r.at("two_way").number("contact_count")) + " (" + fmt(r.at("two_way").number("bounces")) + " bounces, " +
@@ -232,7 +233,7 @@ SectionOutput shortcuts_section(const Record& s) {
   MarkdownTable t({"shortcut", "surface difference (m, relative)", "contacts moved", "contacts", "CPU (shortcut / reference)", "saved", "verdict"});
   for (const auto& key : s.strings("shortcuts")) {
     const Record& r = s.at(key);
-    t.row({r.text("what"), fmt(r.number("field_max_change_m"), 2) + " (" + fmt(r.number("field_relative"), 2) + ")", us(r.number("start_change_s")),
+    t.row({r.text("what"), fmt(r.number("field_max_change_m"), 2) + " (" + fmt(r.number("field_relative"), 2) + ")", duration(r.number("start_change_s")),
            fmt(r.number("contacts_shortcut")) + " / " + fmt(r.number("contacts_reference")),
            ms(r.number("shortcut_cpu_s")) + " / " + ms(r.number("reference_cpu_s")), pct(r.number("saving")), verdict_of(r)});
   }

@@ -18,9 +18,12 @@ bool StillFrameOptions::is_valid(std::string* why) const {
 
 namespace {
 
-// Block means over [i0, i0 + n b) × [j0, j0 + m b), points beyond the grid left out.
-void block_means(const HeightField& f, int i0, int j0, int n, int m, int b, std::vector<double>& out) {
-  out.assign(static_cast<std::size_t>(n) * m, 0.0);
+}  // namespace
+
+template <class T>
+double block_means(const HeightField& f, int i0, int j0, int n, int m, int b, std::vector<T>& out) {
+  out.assign(static_cast<std::size_t>(n) * m, T(0));
+  double largest = 0;
   for (int q = 0; q < m; ++q)
     for (int p = 0; p < n; ++p) {
       double s = 0;
@@ -32,11 +35,14 @@ void block_means(const HeightField& f, int i0, int j0, int n, int m, int b, std:
           s += f.height(i, j);
           ++count;
         }
-      out[static_cast<std::size_t>(q) * n + p] = count ? s / count : 0.0;
+      const double v = count ? s / count : 0.0;
+      out[static_cast<std::size_t>(q) * n + p] = static_cast<T>(v);
+      largest = std::max(largest, std::abs(v));
     }
+  return largest;
 }
-
-}  // namespace
+template double block_means(const HeightField&, int, int, int, int, int, std::vector<float>&);
+template double block_means(const HeightField&, int, int, int, int, int, std::vector<double>&);
 
 StillFrame capture_telling_frame(const SceneOptions& scene, const StillFrameOptions& o) {
   StillFrame r;

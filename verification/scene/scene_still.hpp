@@ -42,6 +42,12 @@ struct StillFrame {
   std::vector<double> track_x_m, track_y_m, touch_x_m, touch_y_m;
 };
 
+// Block means of the field's heights over [i0, i0 + n b) × [j0, j0 + m b) (b × b points each,
+// points beyond the grid left out), row-major n × m into out; returns the largest |mean|.
+// Defined for float and double (the movie's frames and the report's stills).
+template <class T>
+double block_means(const HeightField& f, int i0, int j0, int n, int m, int b, std::vector<T>& out);
+
 StillFrame capture_telling_frame(const SceneOptions& scene, const StillFrameOptions& options);
 
 }  // namespace stoneskip

@@ -35,6 +35,9 @@ const SceneStudyCase& find_case(const SceneStudiesOptions& o, const std::string&
 std::string us(double s) { return num(1e6 * s, 3) + " µs"; }
 std::string ms(double s) { return num(1e3 * s, 3) + " ms"; }
 std::string mm(double m) { return num(1e3 * m, 3) + " mm"; }
+// A time or a length in the unit that reads best (a contact moved by 0.97 s, not 9.7e5 µs).
+std::string duration(double s) { return std::abs(s) >= 0.1 ? num(s, 3) + " s" : std::abs(s) >= 1e-3 ? ms(s) : us(s); }
+std::string length(double m) { return std::abs(m) >= 1 ? num(m, 3) + " m" : mm(m); }
 
 Table contacts_table(const ThrowResult& r) {
   Table t = table({"start_s", "end_s", "touch_x_m", "touch_y_m", "exit_speed_m_s", "bounced"});
@@ -215,7 +218,7 @@ Record scene_coupling_findings(const SceneStudiesOptions& o, const ProgressFacto
     std::ostringstream reason;
     reason << "two-way: " << d.contacts_a << " contacts (" << d.bounces_a << " bounces) in " << num(two.end_s(), 3) << " s against one-way's "
            << d.contacts_b << " (" << d.bounces_b << "); over the first " << d.common << " contacts the times differ by up to "
-           << us(std::max(d.max_start_change_s, d.max_end_change_s)) << " and the first touches by up to " << mm(d.max_touch_change_m);
+           << duration(std::max(d.max_start_change_s, d.max_end_change_s)) << " and the first touches by up to " << length(d.max_touch_change_m);
     Record in;
     in.set("count_change", static_cast<double>(count_change));
     in.set("max_time_change_s", std::max(d.max_start_change_s, d.max_end_change_s));
@@ -444,7 +447,7 @@ Record scene_shortcuts_findings(const SceneStudiesOptions& o, const ProgressFact
     in.set("time_tolerance_s", so.time_tolerance_s);
     std::ostringstream reason;
     reason << "largest surface difference " << num(d.field_max_change_m, 2) << " m (" << num(d.field_relative(), 2) << " of the largest surface height), contacts moved by up to "
-           << us(std::max(d.max_start_change_s, d.max_end_change_s)) << ", " << d.contacts_b << " contacts against " << d.contacts_a << "; CPU "
+           << duration(std::max(d.max_start_change_s, d.max_end_change_s)) << ", " << d.contacts_b << " contacts against " << d.contacts_a << "; CPU "
            << ms(cut.min_cpu_s) << " against " << ms(ref.min_cpu_s) << " (" << num(100 * (ref.min_cpu_s > 0 ? 1 - cut.min_cpu_s / ref.min_cpu_s : 0), 3)
            << " % saved)";
     decide_verdict(r, "verdict", "shortcut", in, reason.str());

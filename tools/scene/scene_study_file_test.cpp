@@ -1,0 +1,55 @@
+// The scene study file (cases/README.md, "Study files", Scene). Oracles: the shipped quick preset
+// as written (its cases, duration cap, sweep grid from [from, to, step] ranges), and the strict-
+// parsing rule — a bad value is one line naming where it came from (--set here) and the key.
+#include <boost/test/unit_test.hpp>
+
+#include "tools/io/input_error.hpp"
+#include "tools/scene/scene_study_file.hpp"
+
+using namespace stoneskip;
+
+namespace {
+
+const char* kQuick = "cases/studies/scene_quick.toml";  // tests run in the source folder
+
+std::string error_of(const std::vector<std::string>& overrides) {
+  try {
+    load_scene_study_file(kQuick, overrides);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(scene_study_file_keys)
+
+BOOST_AUTO_TEST_CASE(the_quick_preset_resolves_as_written) {
+  const SceneStudiesOptions o = load_scene_study_file(kQuick).options;
+  BOOST_TEST_REQUIRE(o.cases.size() == 2u);
+  BOOST_TEST(o.cases[0].name == "seed_8ms");
+  BOOST_TEST(o.cases[1].name == "seed_8ms_paper");
+  BOOST_TEST((o.cases[0].scene.coupling == Coupling::two_way));
+  BOOST_TEST(o.duration_cap_s == 0.6);
+  BOOST_TEST(o.speed.headline.scene.duration_s == 0.6);  // the speed scene is cut too
+  BOOST_TEST((o.speed.headline.sweep.spins_rev_s == std::vector<double>{0.0, 20.0, 40.0}));       // [0, 40, 20]
+  BOOST_TEST((o.speed.headline.sweep.attack_angles_deg == std::vector<double>{10.0, 20.0}));       // [10, 20, 10]
+  BOOST_TEST(o.shortcuts.epsilons_m.size() == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(bad_values_are_one_line_errors_naming_the_key) {
+  auto names = [](const std::string& message, const std::string& key) {
+    BOOST_TEST(message.find(key) != std::string::npos, message);
+    BOOST_TEST(message.rfind("--set: ", 0) == 0u, message);  // an override is named as such, not as the file
+    BOOST_TEST(message.find('\n') == std::string::npos, message);
+  };
+  names(error_of({"rings.case=\"nowhere\""}), "rings.case");
+  names(error_of({"shortcuts.epsilons_m=[-1e-6]"}), "shortcuts.epsilons_m");
+  names(error_of({"speed.sweep_spin_range=[40.0, 0.0, 20.0]"}), "speed.sweep_spin_range");
+  names(error_of({"stability.stencil=\"six_point\""}), "stability.stencil");
+  names(error_of({"convergence.stencils=[]"}), "convergence.stencils");
+  names(error_of({"frames.treshold_fraction=0.1"}), "frames.treshold_fraction");
+}
+
+BOOST_AUTO_TEST_SUITE_END()
