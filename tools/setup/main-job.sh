@@ -19,7 +19,7 @@ for c in cases/*.toml; do
   "$exe" run "$c" --solver both --out "$out/throws/$(basename "${c%.toml}").h5"
 done
 
-echo "== Stones on live water (one-way coupling; real-time model only) =="
+echo "== Stones on live water (coupled as each case says; real-time model only) =="
 for c in cases/scenes/*.toml; do
   echo "-- $c"
   "$exe" run "$c" --out "$out/throws/$(basename "${c%.toml}").h5"

@@ -1,0 +1,76 @@
+// Tests of the verdict rules of the scene report (issue 9; phrases in verdict_rules.hpp): each rule
+// at and beside its edges. Oracle: the rules' definitions as the header states them.
+#include <boost/test/unit_test.hpp>
+
+#include <limits>
+
+#include "verification/study/verdict_rules.hpp"
+
+namespace stoneskip {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+BOOST_AUTO_TEST_SUITE(scene_verdict_rules)
+
+BOOST_AUTO_TEST_CASE(a_coupling_change_is_a_count_change_before_a_time_change) {
+  Record in;
+  in.set("count_change", 0.0).set("max_time_change_s", 1e-4).set("time_tolerance_s", 1e-4);
+  BOOST_TEST(decide("coupling_change", in) == "no visible change");  // the tolerance is inclusive
+  in.set("max_time_change_s", 1.01e-4);
+  BOOST_TEST(decide("coupling_change", in) == "moves the contacts");
+  in.set("count_change", 2.0).set("max_time_change_s", 0.0);
+  BOOST_TEST(decide("coupling_change", in) == "changes the bounce count");
+}
+
+BOOST_AUTO_TEST_CASE(the_coupled_limit_needs_all_three_runs_to_agree) {
+  Record in;
+  in.set("growth_below", 1.001).set("growth_above", 1.5).set("growth_free_above", 0.999).set("growth_tolerance", 1e-3);
+  BOOST_TEST(decide("coupled_limit", in) == "stable below the limit, unstable above it");
+  in.set("growth_below", 1.0011);
+  BOOST_TEST(decide("coupled_limit", in) == "the limit is not confirmed");  // grows below the limit
+  in.set("growth_below", 1.0).set("growth_above", 1.0005);
+  BOOST_TEST(decide("coupled_limit", in) == "the limit is not confirmed");  // does not grow above it
+  in.set("growth_above", 1.5).set("growth_free_above", 1.2);
+  BOOST_TEST(decide("coupled_limit", in) == "the limit is not confirmed");  // the free field grows: not the stone's doing
+}
+
+BOOST_AUTO_TEST_CASE(a_ring_speed_is_judged_by_its_interval_against_group_speed_and_c) {
+  Record in;
+  in.set("valid", 1.0).set("speed_low", 0.46).set("speed_high", 0.48).set("predicted_low", 0.465).set("predicted_high", 0.5);
+  BOOST_TEST(decide("ring_speed", in) == "within c less the scheme's dispersion");  // overlaps [group, c]
+  in.set("speed_low", 0.501).set("speed_high", 0.52);
+  BOOST_TEST(decide("ring_speed", in) == "faster than c");
+  in.set("speed_low", 0.40).set("speed_high", 0.464);
+  BOOST_TEST(decide("ring_speed", in) == "slower than the scheme's dispersion explains");
+  in.set("valid", 0.0).set("speed_low", kNaN).set("speed_high", kNaN);
+  BOOST_TEST(decide("ring_speed", in) == "not measured");
+}
+
+BOOST_AUTO_TEST_CASE(a_shortcut_is_exact_only_with_no_difference_at_all) {
+  Record in;
+  in.set("field_relative", 0.0).set("start_change_s", 0.0).set("count_change", 0.0);
+  in.set("field_tolerance", 1e-3).set("time_tolerance_s", 1e-4);
+  BOOST_TEST(decide("shortcut", in) == "exact");
+  in.set("field_relative", 1e-3);
+  BOOST_TEST(decide("shortcut", in) == "within tolerance");  // inclusive
+  in.set("start_change_s", 2e-4);
+  BOOST_TEST(decide("shortcut", in) == "beyond tolerance");
+  in.set("start_change_s", 0.0).set("count_change", 1.0);
+  BOOST_TEST(decide("shortcut", in) == "beyond tolerance");
+}
+
+BOOST_AUTO_TEST_CASE(a_speed_target_is_met_at_or_above_it) {
+  Record in;
+  in.set("value", 3000.0).set("target", 3000.0);
+  BOOST_TEST(decide("speed_target", in) == "meets the target");
+  in.set("value", 2999.0);
+  BOOST_TEST(decide("speed_target", in) == "misses the target");
+  in.set("value", kNaN);
+  BOOST_TEST(decide("speed_target", in) == "misses the target");  // not measured is not met
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace
+}  // namespace stoneskip
