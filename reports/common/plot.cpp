@@ -9,7 +9,10 @@ std::string gnuplot_quote(const std::string& s) {
   std::string out;
   for (char c : s) {
     if (c == '\'') out += "''";
-    else if (c == '_') out += ' ';  // enhanced text would make the next letter a subscript
+    // Enhanced text reads these as markup (subscript, overprint, phantom, …); a backslash prints
+    // them as written (gnuplot 5.4 "enhanced text": a single backslash inside single quotes).
+    // ^ { } stay markup: labels use them for exponents (10^{-3}).
+    else if (c == '_' || c == '&' || c == '@' || c == '~') out += std::string("\\") + c;
     else out += c;
   }
   return "'" + out + "'";

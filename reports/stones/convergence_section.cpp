@@ -52,9 +52,10 @@ Figure series_figure(const std::string& name, const std::string& title, const Re
 std::vector<std::string> left_out(const Record& s, bool with_quantity) {
   std::vector<std::string> out;
   const auto h = s.table("points").column("h_s");
+  const auto below_floor = s.table("points").column("below_floor");
   const auto& n = s.strings("notes");
   for (std::size_t i = 0; i < h.size() && i < n.size(); ++i)
-    if (!n[i].empty() && n[i].find("below the reference") == std::string::npos)
+    if (!n[i].empty() && below_floor[i] == 0.0)
       out.push_back((with_quantity ? s.text("quantity") + ", " : std::string()) + s.text("scheme") + ", h = " +
                     fmt(h[i], 3) + " s: " + n[i]);
   return out;
@@ -215,7 +216,8 @@ SectionOutput convergence_section(const Record& c) {
   w.table(t2);
   w.verdict("Slope of log(bounce-position error) against log(rtol)", t.at("bounce_position_fit").at("verdict"));
   w.verdict("Slope of log(contact-time error) against log(rtol)", t.at("contact_time_fit").at("verdict"));
-  w.verdict("Error from rtol 1e-6 to 1e-10", t.at("drop"));
+  w.verdict("Error from rtol " + fmt(t.number("drop_from_rtol"), 2) + " to " + fmt(t.number("drop_to_rtol"), 2),
+            t.at("drop"));
   w.end_list();
   {
     PlotSeries a, b, ideal;

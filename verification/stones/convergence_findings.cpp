@@ -22,8 +22,9 @@ void store_series(Record& parent, const ConvergenceSeries& s, OrderJudgement j) 
   r.set("scheme", s.scheme);
   r.set("formal_order", s.formal_order);
   r.set("reference_error", s.reference_error);
-  Table t{{"h_s", "value", "error", "in_fit"}, {}};
-  for (std::size_t i = 0; i < s.h_s.size(); ++i) t.add_row({s.h_s[i], s.value[i], s.error[i], s.in_fit[i] ? 1.0 : 0.0});
+  Table t{{"h_s", "value", "error", "in_fit", "below_floor"}, {}};
+  for (std::size_t i = 0; i < s.h_s.size(); ++i)
+    t.add_row({s.h_s[i], s.value[i], s.error[i], s.in_fit[i] ? 1.0 : 0.0, s.below_floor[i] ? 1.0 : 0.0});
   r.set_table("points", t);
   r.set_strings("notes", s.notes);
   j.expected_order = s.formal_order;
@@ -98,16 +99,19 @@ Record convergence_findings(const RealtimeConvergenceResult& c, const ReferenceT
   OrderJudgement proportional{1.0, judgement.tolerance, judgement.minimum_order};
   store_order_fit(t, "bounce_position_fit", tol.bounce_position_fit, proportional);
   store_order_fit(t, "contact_time_fit", tol.contact_time_fit, proportional);
-  t.set("error_drop_1e6_to_1e10", tol.error_drop_1e6_to_1e10);
+  t.set("error_drop", tol.error_drop);
+  t.set("drop_from_rtol", tol.drop_from_rtol);
+  t.set("drop_to_rtol", tol.drop_to_rtol);
   t.set("required_drop", required_drop);
-  const double drop = tol.error_drop_1e6_to_1e10;
+  const double drop = tol.error_drop;
+  const std::string span = "rtol " + num(tol.drop_from_rtol) + " to " + num(tol.drop_to_rtol);
   Record in;
   in.set("ratio", drop);
   in.set("required", required_drop);
   decide_verdict(
       t, "drop", "minimum_ratio", in,
-      std::isnan(drop) ? "rtol 1e-6 or 1e-10 was not run or failed"
-                       : "the bounce-position error falls " + num(drop) + "× from rtol 1e-6 to 1e-10 (at least " +
+      std::isnan(drop) ? "rtol " + num(tol.drop_from_rtol) + " or " + num(tol.drop_to_rtol) + " was not run or failed"
+                       : "the bounce-position error falls " + num(drop) + "× from " + span + " (at least " +
                              num(required_drop) + "× required)");
   return r;
 }

@@ -30,6 +30,7 @@ void finish_series(ConvergenceSeries& s, const RealtimeConvergenceOptions& o) {
   const double floor_factor = o.floor_factor;
   const std::size_t n = s.h_s.size();
   s.in_fit.assign(n, false);
+  s.below_floor.assign(n, false);
   s.notes.resize(n);
   std::vector<double> h, e;
   for (std::size_t i = 0; i < n; ++i) {
@@ -39,6 +40,7 @@ void finish_series(ConvergenceSeries& s, const RealtimeConvergenceOptions& o) {
     }
     if (s.error[i] <= floor_factor * s.reference_error) {
       s.notes[i] = "below the reference's error bound";
+      s.below_floor[i] = true;
       continue;
     }
     s.in_fit[i] = true;
@@ -111,7 +113,7 @@ EventCrowding crowding(const std::vector<double>& events, double t0, double h, l
 RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const RealtimeConvergenceOptions& o) {
   RealtimeConvergenceResult res;
   res.case_label = p.label;
-  const ParallelOptions par{o.workers, ""};
+  const ParallelOptions par{o.workers, "", {}};
 
   // 1. Two references: the one we compare with and one 100x looser (the check), whose difference
   //    bounds the reference's own error (the floor below which an observed error means nothing).

@@ -59,6 +59,7 @@ struct ConvergenceSeries {
   std::vector<double> value; // the scalar measured (NaN for vector quantities)
   std::vector<double> error; // against the reference; NaN where the run failed
   std::vector<bool> in_fit;  // false: failed or below the reference's accuracy
+  std::vector<bool> below_floor;  // true: left out because below the reference's accuracy
   std::vector<std::string> notes;  // per point: empty, or why it is not in the fit
   double reference_error = 0;      // the reference's own error on this quantity
   OrderFit fit;

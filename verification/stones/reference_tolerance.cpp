@@ -30,7 +30,7 @@ ReferenceToleranceResult run_reference_tolerance(const ThrowProblem& p, const Re
   run_jobs(jobs, ParallelOptions{o.workers, "stones: reference tolerance proportionality", o.progress});
 
   std::vector<double> h, e_pos, h_t, e_t;
-  double at_1e6 = kNaN, at_1e10 = kNaN;
+  double at_from = kNaN, at_to = kNaN;
   for (std::size_t i = 0; i < o.rtol.size(); ++i) {
     ReferenceTolerancePoint pt;
     const ThrowResult& r = runs[i];
@@ -56,15 +56,17 @@ ReferenceToleranceResult run_reference_tolerance(const ThrowProblem& p, const Re
       e_pos.push_back(pt.bounce_position_error_m);
       h_t.push_back(pt.rtol);
       e_t.push_back(pt.contact_time_error_s);
-      if (pt.rtol == 1e-6) at_1e6 = pt.bounce_position_error_m;
-      if (pt.rtol == 1e-10) at_1e10 = pt.bounce_position_error_m;
+      if (pt.rtol == o.drop_from_rtol) at_from = pt.bounce_position_error_m;
+      if (pt.rtol == o.drop_to_rtol) at_to = pt.bounce_position_error_m;
     }
     if (!pt.ok) pt.bounce_position_error_m = pt.contact_time_error_s = pt.final_position_error_m = kNaN;
     res.points.push_back(pt);
   }
   res.bounce_position_fit = fit_order(h, e_pos);
   res.contact_time_fit = fit_order(h_t, e_t);
-  res.error_drop_1e6_to_1e10 = at_1e6 / at_1e10;
+  res.drop_from_rtol = o.drop_from_rtol;
+  res.drop_to_rtol = o.drop_to_rtol;
+  res.error_drop = at_from / at_to;
   return res;
 }
 

@@ -16,6 +16,8 @@ struct ReferenceToleranceOptions {
   std::vector<double> rtol{1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10};
   double truth_rtol = 1e-12;        // the "exact" solution
   double atol_ratio = 1e-2;         // atol = atol_ratio · rtol (SI units, positions ~ 1 m)
+  double drop_from_rtol = 1e-6;     // the error drop is measured between these two tolerances
+  double drop_to_rtol = 1e-10;      //   (both must be in rtol for it to be measured)
   ReferenceMethod method = ReferenceMethod::bdf;
   int workers = 2;
   ProgressFactory progress;  // how long runs are shown; empty: silently
@@ -41,7 +43,8 @@ struct ReferenceToleranceResult {
   std::vector<ReferenceTolerancePoint> points;
   OrderFit bounce_position_fit;   // slope of log error against log rtol
   OrderFit contact_time_fit;
-  double error_drop_1e6_to_1e10 = 0;  // bounce-position error at 1e-6 over that at 1e-10 (NaN: not run)
+  double drop_from_rtol = 0, drop_to_rtol = 0;  // the tolerances of error_drop
+  double error_drop = 0;  // bounce-position error at drop_from_rtol over that at drop_to_rtol (NaN: not run)
 };
 
 ReferenceToleranceResult run_reference_tolerance(const ThrowProblem& p, const ReferenceToleranceOptions& o);

@@ -157,7 +157,7 @@ WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& given, c
           (c ? checks[k] : res.throws[k].truth) = solve(throws[k], reference_choice(r));
         });
     }
-    run_jobs(jobs, ParallelOptions{o.workers, ""});
+    run_jobs(jobs, ParallelOptions{o.workers, "", {}});
     for (std::size_t k = 0; k < throws.size(); ++k) {
       WorkPrecisionThrow& t = res.throws[k];
       t.headline = t.truth.bounces > 0 ? HeadlineError::bounce_position : HeadlineError::sink_position;
