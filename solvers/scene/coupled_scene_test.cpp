@@ -10,6 +10,7 @@
 #include "model/stone/throw.hpp"
 #include "solvers/scene/coupled_scene.hpp"
 #include "solvers/scene/draught_window.hpp"
+#include "solvers/scene/seed_throw_scene.hpp"
 
 namespace stoneskip {
 inline std::ostream& operator<<(std::ostream& o, Outcome x) { return o << to_string(x); }
@@ -27,33 +28,7 @@ Stone prism_stone(double R = 0.03, double h = 0.008) {
 // The paper's 8 m/s throw (physical convention: it lands at x ≈ 0.5 m and sinks in its first
 // contact) onto a 64 × 48 pond of 2 cm cells around the landing point.
 SceneOptions skipping_scene(Coupling coupling, double wave_speed_m_s = 0.5) {
-  SceneOptions o;
-  o.stone = prism_stone();
-  ThrowParameters tp;
-  tp.speed_m_s = 8;
-  tp.path_angle_deg = 10;
-  tp.attack_angle_deg = 10;
-  tp.spin_rev_s = 10;
-  tp.height_m = 0.1;
-  o.initial = initial_state(o.stone, tp);
-  o.stone_steps.dt_s = 1e-3;
-  o.stone_steps.contact_dt_s = 1e-5;
-  o.coupling = coupling;
-  SceneWater w;
-  w.field.nx = 64;
-  w.field.ny = 48;
-  w.field.cell_m = 0.02;
-  w.field.wave_speed_m_s = wave_speed_m_s;
-  w.field.damping_per_s = 0.2;
-  w.field.dt_s = 1.0 / 90;
-  w.field.stencil = named_stencil("nine_point_isotropic");
-  w.field.boundary = Boundary::reflecting;
-  w.placement.origin_x_m = -0.1;
-  w.placement.origin_y_m = -0.47;
-  o.water = w;
-  o.frame_rate_hz = 90;
-  o.duration_s = 0.3;
-  return o;
+  return seed_throw_scene(64, 48, -0.1, -0.47, 0.3, coupling, wave_speed_m_s);
 }
 
 void require_same_throw(const ThrowResult& a, const ThrowResult& b) {
