@@ -15,6 +15,9 @@
 //   frames       the most telling still of each scene.
 // Each section's record holds the numbers, tables, verdicts and computed reasons the report
 // formats (reports/scene/); nothing in the report decides a verdict.
+// Files: settings, stability, convergence and rings here (scene_studies.cpp); coupling, shortcuts,
+// speed and frames in scene_{coupling,shortcut,speed,frame}_findings.cpp; what they share in
+// scene_findings_support.hpp.
 #include <string>
 #include <vector>
 
