@@ -107,8 +107,9 @@ Record scene_coupling_findings(const SceneStudiesOptions& o, const ProgressFacto
     r.set("why", why);
     const long count_change = std::labs(d.contacts_a - d.contacts_b) + std::abs(d.bounces_a - d.bounces_b);
     std::ostringstream reason;
-    reason << "two-way: " << d.contacts_a << " contacts (" << d.bounces_a << " bounces) in " << num(two.end_s(), 3) << " s against one-way's "
-           << d.contacts_b << " (" << d.bounces_b << "); over the first " << d.common << " contacts the times differ by up to "
+    reason << "two-way: " << counted(d.contacts_a, "contact") << " (" << counted(d.bounces_a, "bounce") << ") in " << num(two.end_s(), 3)
+           << " s against one-way's " << d.contacts_b << " (" << d.bounces_b << "); over " << (d.common == 1 ? "the first contact" : "the first " + counted(d.common, "contact"))
+           << " the times differ by up to "
            << duration(std::max(d.max_start_change_s, d.max_end_change_s)) << " and the first touches by up to " << length(d.max_touch_change_m);
     Record in;
     in.set("count_change", static_cast<double>(count_change));

@@ -27,6 +27,7 @@ std::string ms(double s) { return num(1e3 * s, 3) + " ms"; }
 std::string mm(double m) { return num(1e3 * m, 3) + " mm"; }
 std::string duration(double s) { return std::abs(s) >= 0.1 ? num(s, 3) + " s" : std::abs(s) >= 1e-3 ? ms(s) : us(s); }
 std::string length(double m) { return std::abs(m) >= 1 ? num(m, 3) + " m" : mm(m); }
+std::string counted(long n, const std::string& noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
 
 void store_scene_settings(Record& r, const SceneStudyCase& c, const SceneOptions& s) {
   r.set("title", c.title);

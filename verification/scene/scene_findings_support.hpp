@@ -23,6 +23,8 @@ std::string mm(double m);
 // A time or a length in the unit that reads best (a contact moved by 0.97 s, not 9.7e5 µs).
 std::string duration(double s);
 std::string length(double m);
+// "1 contact", "2 contacts".
+std::string counted(long n, const std::string& noun);
 // The case's settings as the report states them (title, convention, coupling, frames, grid, σ …).
 void store_scene_settings(Record& r, const SceneStudyCase& c, const SceneOptions& s);
 

@@ -105,7 +105,7 @@ Record scene_shortcuts_findings(const SceneStudiesOptions& o, const ProgressFact
     in.set("time_tolerance_s", so.time_tolerance_s);
     std::ostringstream reason;
     reason << "largest surface difference " << num(d.field_max_change_m, 2) << " m (" << num(d.field_relative(), 2) << " of the largest surface height), contacts moved by up to "
-           << duration(std::max(d.max_start_change_s, d.max_end_change_s)) << ", " << d.contacts_b << " contacts against " << d.contacts_a << "; CPU "
+           << duration(std::max(d.max_start_change_s, d.max_end_change_s)) << ", " << counted(d.contacts_b, "contact") << " against " << d.contacts_a << "; CPU "
            << ms(cut.min_cpu_s) << " against " << ms(ref.min_cpu_s) << " (" << num(100 * (ref.min_cpu_s > 0 ? 1 - cut.min_cpu_s / ref.min_cpu_s : 0), 3)
            << " % saved)";
     decide_verdict(r, "verdict", "shortcut", in, reason.str());
