@@ -34,7 +34,8 @@ std::string frame_plot_commands(const FramePlot& p) {
     << "\nset xrange [" << p.near_x0_m << ":" << p.near_x1_m << "]\nset yrange [" << p.near_y0_m << ":" << p.near_y1_m
     << "]\nset zrange [" << -zs << ":" << zs << "]\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset zlabel 'z (m)' rotate\n"
     << "set ztics " << s << "\nset pm3d at s\nunset surface\n";
-  if (p.stone_shown)
+  const bool in_window = p.stone_x_m >= p.near_x0_m && p.stone_x_m <= p.near_x1_m && p.stone_y_m >= p.near_y0_m && p.stone_y_m <= p.near_y1_m;
+  if (p.stone_shown && in_window)  // a window around the latest touch may leave the flying stone out
     g << "set label 2 '' at " << p.stone_x_m << "," << p.stone_y_m << "," << stone_z << " point " << stone_pt
       << " lc rgb 'black' front\n";
   g << "splot " << p.near << " with pm3d notitle\n"

@@ -348,8 +348,8 @@ SectionOutput frames_section(const Record& f) {
   w.text("For each scene the most telling frame: the one with the most disturbed water (cells with |z| above " +
          pct(f.number("threshold_fraction")) + " of the scene's largest |z|) among the frames before the waves reach the pond's edge. "
          "Left, the water from above (the dashed square is the right panel's window), the stone's track (line), its first "
-         "touches (crosses) and the stone (filled; hollow once sunk); right, the water around the stone, heights on the colour "
-         "scale. `stoneskip scene CASE --movie FILE.mp4` draws every frame the same way.");
+         "touches (crosses) and the stone (filled; hollow once sunk); right, the water around the stone (while it is in the air, "
+         "around its latest touch), heights on the colour scale. `stoneskip scene CASE --movie FILE.mp4` draws every frame this way, its right panel always following the stone.");
   for (const auto& name : f.strings("cases")) {
     const Record& r = f.at(name);
     w.subheading(code(name) + ": " + r.text("title"));
@@ -357,7 +357,8 @@ SectionOutput frames_section(const Record& f) {
       w.text("No still: " + r.text("problem") + ".");
       continue;
     }
-    w.text("Frame chosen: " + r.text("why") + ".");
+    w.text("Frame chosen: " + r.text("why") + "." +
+           (r.flag("near_on_touch") ? " The stone is in the air: the right panel shows the water around its latest touch." : ""));
     w.figure(still_figure(name, r));
   }
   return w.finish();

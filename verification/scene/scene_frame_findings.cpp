@@ -70,6 +70,7 @@ Record scene_frames_findings(const SceneStudiesOptions& o, const ProgressFactory
       r.set("top_y0_m", s.top_y0_m);
       r.set("top_dx_m", s.top_dx_m);
       r.set_table("top", matrix_table(s.top_m, s.top_nx, s.top_ny));
+      r.set("near_on_touch", s.near_on_touch);
       r.set("near_x0_m", s.near_x0_m);
       r.set("near_y0_m", s.near_y0_m);
       r.set("near_dx_m", s.near_dx_m);

@@ -145,8 +145,10 @@ StillFrame capture_telling_frame(const SceneOptions& scene, const StillFrameOpti
     const int nb = std::max(1, (side + o.near_cells_max - 1) / o.near_cells_max);
     r.near_n = std::max(2, side / nb);
     const int w = r.near_n * nb;
-    const int ic = static_cast<int>(std::lround((r.stone_x_m - at.origin_x_m) / d));
-    const int jc = static_cast<int>(std::lround((r.stone_y_m - at.origin_y_m) / d));
+    r.near_on_touch = f.stone_status == StoneStatus::in_play && r.stone_z_m > r.stone_radius_m && !r.touch_x_m.empty();
+    const double cx = r.near_on_touch ? r.touch_x_m.back() : r.stone_x_m, cy = r.near_on_touch ? r.touch_y_m.back() : r.stone_y_m;
+    const int ic = static_cast<int>(std::lround((cx - at.origin_x_m) / d));
+    const int jc = static_cast<int>(std::lround((cy - at.origin_y_m) / d));
     const int a0 = std::clamp(ic - w / 2, 0, std::max(0, fo.nx - w)), b0 = std::clamp(jc - w / 2, 0, std::max(0, fo.ny - w));
     block_means(*f.field, a0, b0, r.near_n, r.near_n, nb, r.near_m);
     r.near_dx_m = nb * d;

@@ -4,7 +4,8 @@
 // `threshold_fraction` of the largest |z| of the whole scene) among the frames before any
 // disturbance reaches the pond's edge (after that, reflections muddle the rings) — and what it
 // is drawn from: the surface in a window around the track (block means), the water around the
-// stone, the track and the first touches so far.
+// stone (while the stone is in the air — its centre higher than its radius above z = 0 — around
+// its latest first touch instead, where its newest ring is), the track and the first touches so far.
 #include <string>
 #include <vector>
 
@@ -36,6 +37,7 @@ struct StillFrame {
   double top_x0_m = 0, top_y0_m = 0, top_dx_m = 0;                   // first block centre, block size
   int top_nx = 0, top_ny = 0;
   std::vector<double> top_m;     // top_ny rows of top_nx
+  bool near_on_touch = false;    // the 3-D window is around the latest touch (the stone was in the air), not the stone
   double near_x0_m = 0, near_y0_m = 0, near_dx_m = 0;
   int near_n = 0;
   std::vector<double> near_m;
