@@ -21,10 +21,6 @@ struct Figure {
   std::string data_path;  // where its data lie in data.h5 (e.g. "/sections/convergence"), for the caption
 };
 
-// Legacy: whole figures stored under /figures/<name> (the capture pages still use it).
-void store_figure(const H5Group& figures_group, const Figure& fig);
-std::vector<Figure> load_figures(const H5Group& figures_group);
-
 struct RenderSummary {
   int rendered = 0;
   std::vector<std::string> failures;  // "name: gnuplot said ..."

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <toml.hpp>
 
@@ -171,6 +172,32 @@ BOOST_AUTO_TEST_CASE(the_virtual_thrower_and_the_reader_options_are_checked) {
   BOOST_TEST(bad.status == 2);
   const Run remote = run("capture validate " + file + " --no-simulate --remote 2");
   BOOST_TEST(remote.status == 2);
+}
+
+BOOST_AUTO_TEST_CASE(a_report_holds_every_capture_or_none_and_json_stays_json) {
+  // Oracle: the input rules (a file that cannot be read is exit 2 and no partial output: neither the
+  // folder nor its work folder appears) and the --json contract (stdout holds one JSON object per
+  // capture and nothing else, also when the report is written).
+  const fs::path tmp = fs::temp_directory_path() / ("stoneskip_capture_report_" + std::to_string(::getpid()));
+  fs::remove_all(tmp);
+  fs::create_directories(tmp);
+  const fs::path dir = tmp / "captures";
+  const Run bad = run("capture validate cases/captures/gentle_sidearm.log " + (tmp / "missing.log").string() +
+                      " --no-simulate --members 4 --out " + dir.string());
+  BOOST_TEST(bad.status == 2);
+  BOOST_TEST(!fs::exists(dir));
+  BOOST_TEST(!fs::exists(fs::path(dir.string() + ".partial")));
+  const Run ok = run("capture validate cases/captures/gentle_sidearm.log cases/captures/no_still_part.log --json "
+                     "--no-simulate --members 4 --out " + dir.string());
+  BOOST_TEST(ok.status == 0);
+  std::istringstream lines(ok.out);
+  int objects = 0;
+  for (std::string line; std::getline(lines, line); ++objects)
+    BOOST_TEST(nlohmann::json::accept(line), "not JSON: " << line);
+  BOOST_TEST(objects == 2);
+  BOOST_TEST(fs::exists(dir / "index.md"));
+  BOOST_TEST(fs::exists(dir / "data.h5"));
+  fs::remove_all(tmp);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
