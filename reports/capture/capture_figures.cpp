@@ -134,6 +134,26 @@ Table motion_table(const Record& c) {
                                                 "stone_speed_m_s", "lever_speed_m_s"});
 }
 
+// The nominal throw's height against distance for each solver that ran, as plot clauses (each
+// after ", "), and where each contact began when asked.
+enum class ContactMarks { none, where_they_began };
+std::string solver_paths(Figure& f, const Record& sim, ContactMarks contacts) {
+  std::string s;
+  for (const auto& [solver, colour, title] : {std::tuple{"realtime", kRealtime, "real-time model"},
+                                              std::tuple{"reference", kReference, "reference (CVODE)"}}) {
+    if (!sim.has_child(solver)) continue;
+    const Record& r = sim.at(solver);
+    add(f, solver, pick(r.table("trajectory"), {"x_m", "z_m"}));
+    s += ", " + dat(f, solver) + " u 1:2 w l " + (solver == std::string("realtime") ? "lw 3" : "lw 1.5 dt 2") +
+         " lc rgb '" + colour + "' t " + gnuplot_quote(title);
+    if (contacts == ContactMarks::none) continue;
+    const std::string part = std::string(solver) + "_contacts";
+    add(f, part, pick(r.table("contact_list"), {"x_m", "start_s"}));
+    s += ", " + dat(f, part) + " u 1:(0) w p pt 6 ps 1.2 lc rgb '" + colour + "' notitle";
+  }
+  return s;
+}
+
 }  // namespace
 
 Figure capture_motion_figure(const std::string& key, const Record& c) {
@@ -295,8 +315,10 @@ std::optional<Figure> capture_room_and_water_figure(const std::string& key, cons
   const Record& sim = c.at("simulation");
   Figure f = make(key, "room_and_water",
                   "The throw in the room and over the water: the stone's path in the room from the start of the still "
-                  "part to the release (integrated from the accelerometer; from above to scale, from the side), and the "
-                  "virtual stone's flight from the height the thrower maps it to; arrows: the release velocity × " +
+                  "part to the release (integrated from the accelerometer" +
+                      std::string(th.flag("clipped") ? ", which clipped: the path falls short" : "") +
+                      "; from above to scale, from the side), and the virtual stone's flight from the height the "
+                      "thrower maps it to; arrows: the release velocity used × " +
                       std::to_string(int(1000 * kArrow_s)) + " ms",
                   1400, 760);
   const Table path = th.table("room_path");
@@ -329,14 +351,7 @@ std::optional<Figure> capture_room_and_water_figure(const std::string& key, cons
     << "set title 'the virtual stone over the water'\nset xlabel 'distance (m)'\nset ylabel 'height of the centre (m)'\n"
     << "plot 0 w l lw 1.5 lc rgb '#3060c0' t 'water', " << v << " every ::1::1 u 1:3:4:6" << vector_style
     << " t 'release velocity'";
-  for (const auto& [solver, colour, title] : {std::tuple{"realtime", kRealtime, "real-time model"},
-                                              std::tuple{"reference", kReference, "reference (CVODE)"}}) {
-    if (!sim.has_child(solver)) continue;
-    add(f, solver, pick(sim.at(solver).table("trajectory"), {"x_m", "z_m"}));
-    s << ", " << dat(f, solver) << " u 1:2 w l " << (solver == std::string("realtime") ? "lw 3" : "lw 1.5 dt 2")
-      << " lc rgb '" << colour << "' t " << gnuplot_quote(title);
-  }
-  s << "\nunset multiplot\n";
+  s << solver_paths(f, sim, ContactMarks::none) << "\nunset multiplot\n";
   f.script = s.str();
   return f;
 }
@@ -351,16 +366,7 @@ std::optional<Figure> capture_trajectory_figure(const std::string& key, const Re
   std::ostringstream s;
   s << "set grid\nset key top right\nset xlabel 'distance (m)'\nset ylabel 'height of the centre (m)'\n"
     << "plot 0 w l lw 1.5 lc rgb '#3060c0' t 'water'";
-  for (const auto& [solver, colour, title] : {std::tuple{"realtime", kRealtime, "real-time model"},
-                                              std::tuple{"reference", kReference, "reference (CVODE)"}}) {
-    if (!sim.has_child(solver)) continue;
-    const Record& r = sim.at(solver);
-    add(f, solver, pick(r.table("trajectory"), {"x_m", "z_m"}));
-    add(f, std::string(solver) + "_contacts", pick(r.table("contact_list"), {"x_m", "start_s"}));
-    s << ", " << dat(f, solver) << " u 1:2 w l " << (solver == std::string("realtime") ? "lw 3" : "lw 1.5 dt 2")
-      << " lc rgb '" << colour << "' t " << gnuplot_quote(title) << ", " << dat(f, std::string(solver) + "_contacts") << " u 1:(0) w p pt 6 ps 1.2 lc rgb '" << colour << "' notitle";
-  }
-  s << "\n";
+  s << solver_paths(f, sim, ContactMarks::where_they_began) << "\n";
   f.script = s.str();
   return f;
 }
@@ -378,22 +384,23 @@ std::optional<Figure> capture_bounce_figure(const std::string& key, const Record
   const auto counts = h.column("bounces");
   double lo = counts.empty() ? 0 : *std::min_element(counts.begin(), counts.end());
   double hi = counts.empty() ? 0 : *std::max_element(counts.begin(), counts.end());
+  // The nominal throw's counts as lines beside the bar of their count (real-time left, reference right).
   std::string marks, arrows;
-  double height = 1.0;
-  for (const auto& [solver, colour, title] : {std::tuple{"realtime", kRealtime, "nominal throw, real-time model"},
-                                              std::tuple{"reference", kReference, "nominal throw, reference (CVODE)"}}) {
+  for (const auto& [solver, colour, title, shift] :
+       {std::tuple{"realtime", kRealtime, "nominal throw, real-time model", -0.15},
+        std::tuple{"reference", kReference, "nominal throw, reference (CVODE)", 0.15}}) {
     if (!sim.has_child(solver)) continue;
     const double b = sim.at(solver).number("bounces");
     lo = std::min(lo, b);
     hi = std::max(hi, b);
-    arrows += "set arrow from " + g(b) + ", graph 0 to " + g(b) + ", graph " + g(height) + " nohead lw 3 dt 2 lc rgb '" +
+    arrows += "set arrow from " + g(b + shift) + ", graph 0 to " + g(b + shift) + ", graph 0.85 nohead lw 3 dt 2 lc rgb '" +
               colour + "' front\n";
     marks += ", keyentry w l lw 3 dt 2 lc rgb '" + std::string(colour) + "' t " + gnuplot_quote(title);
-    height -= 0.1;
   }
   std::ostringstream s;
-  s << "set grid y\nset key below\nset xlabel 'bounces'\nset ylabel 'throws of the ensemble'\nset xtics 1\n"
-    << "set xrange [" << g(lo - 0.6) << ":" << g(hi + 0.6) << "]\nset yrange [0:*]\nset style fill solid 0.6\n"
+  s << "set grid y\nset key top right\nset xlabel 'bounces'\nset ylabel 'throws of the ensemble'\nset xtics 1\n"
+    << "set xrange [" << g(lo - 0.6) << ":" << g(hi + 0.6) << "]\nset yrange [0:*]\nset offsets 0, 0, graph 0.3, 0\n"
+    << "set style fill solid 0.6\n"
     << "set boxwidth 0.8\n" << arrows << "plot " << dat(f, "histogram") << " u 1:2 w boxes lc rgb '" << kAxis[0]
     << "' t 'ensemble'" << marks << "\n";
   f.script = s.str();

@@ -3,7 +3,7 @@
 #   OUT/throws/*.h5      the shipped stone cases, real-time model and CVODE reference
 #   OUT/waves/           the water-surface verification report (index.md, figures/, data.h5)
 #   OUT/stones/          the stone verification and validation report
-#   OUT/captures/        the Wii Remote capture reports for the shipped captures
+#   OUT/captures/        the captures report: every shipped capture (index.md, figures/, data.h5)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 out="${1:-$root/out}"
@@ -43,7 +43,8 @@ echo "== Regression against the golden bounce-count baselines =="
 
 echo "== Wii Remote captures (synthetic, truth in cases/captures/*.truth.toml) =="
 # no_still_part.log is unusable on purpose: validate reports it and still exits 0.
-"$exe" capture validate cases/captures/*.log cases/captures/*.evemu cases/captures/*.txt --out "$out/captures" --progress
+"$exe" capture validate cases/captures/*.log cases/captures/*.evemu cases/captures/*.txt cases/captures/*.csv \
+  --out "$out/captures" --progress
 
 echo
 echo "Reports: $out/waves/index.md, $out/stones/index.md, $out/captures/index.md"
