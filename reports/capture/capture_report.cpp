@@ -48,7 +48,9 @@ SectionOutput index_section(const Record& index, const Record& sections) {
          " unusable. A capture's name leads to its part of this page: the reasons for its verdict, its timing, its "
          "motion, its release state and what the solvers make of it.");
   MarkdownTable t({"capture", "read as", "verdict", "speed (m/s) [interval]", "attack (deg)", "path (deg)", "spin (rev/s)",
-                   "height (m)", "bounces: real-time / reference / ensemble 95 %"});
+                   "height (m)",
+                   "bounces: real-time / reference / ensemble (" + fmt(index.number("low_percent"), 3) + "–" +
+                       fmt(index.number("high_percent"), 3) + " %)"});
   for (const auto& key : index.strings("captures")) {
     const Record& c = sections.at(key);
     const Record& th = c.at("throw");

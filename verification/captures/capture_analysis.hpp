@@ -74,6 +74,10 @@ struct CaptureOptions {
   bool is_valid(std::string* why) const;
 };
 
+// The intervals (and the ensemble's bounce-count range) span these quantiles of the members.
+constexpr double kIntervalLowQuantile = 0.025;
+constexpr double kIntervalHighQuantile = 0.975;
+
 struct Interval {
   double nominal = 0, low = 0, high = 0;
   bool contains(double x) const { return x >= low && x <= high; }

@@ -295,7 +295,7 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
   const double psi = std::hypot(v_used.x(), v_used.y()) > 1e-9 ? std::atan2(v_used.y(), v_used.x()) : 0.0;
   const Mat3 turn = Eigen::AngleAxisd(-psi, Vec3::UnitZ()).toRotationMatrix();
   if (series)
-    for (auto& p : series->stone_position_m) p = turn * p;
+    for (auto& x_m : series->stone_position_m) x_m = turn * x_m;
   const Mat3 M = in.mounting.stone_axes();
   r.t_s = release_t;
   r.accel_velocity_m_s = turn * v_accel;

@@ -48,8 +48,8 @@ Record settings_findings(const CaptureAnalysis& a) {
   r.set("lever_arm_rel_uncertainty", o.mounting.lever_arm_rel_uncertainty);
   r.set("height_uncertainty_m", o.thrower.height_uncertainty_m);
   r.set("max_accel_g", o.max_accel_g);
-  r.set("interval_low_percent", 2.5);   // capture_analysis.cpp interval_of
-  r.set("interval_high_percent", 97.5);
+  r.set("interval_low_percent", 100 * kIntervalLowQuantile);
+  r.set("interval_high_percent", 100 * kIntervalHighQuantile);
   return r;
 }
 
@@ -255,6 +255,8 @@ Record simulation_findings(const CaptureSimulation& sim, const CaptureFindingsCo
     e.set("bounces_low", sim.bounces_low);
     e.set("bounces_median", sim.bounces_median);
     e.set("bounces_high", sim.bounces_high);
+    e.set("low_percent", 100 * kIntervalLowQuantile);
+    e.set("high_percent", 100 * kIntervalHighQuantile);
     Table h{{"bounces", "members"}, {}};
     for (const auto& [b, m] : sim.bounce_histogram) h.add_row({double(b), double(m)});
     e.set_table("histogram", h);
@@ -264,7 +266,8 @@ Record simulation_findings(const CaptureSimulation& sim, const CaptureFindingsCo
                                   ? bounce_words(sim.bounces_low)
                                   : num(sim.bounces_low) + " to " + bounce_words(sim.bounces_high);
     decide_verdict(e, "spread", "bounce_spread", in,
-                   "the central 95 % of the " + num(double(sim.ensemble_bounces.size())) +
+                   "the central " + num(100 * (kIntervalHighQuantile - kIntervalLowQuantile)) + " % of the " +
+                       num(double(sim.ensemble_bounces.size())) +
                        " throws drawn from the capture's intervals make " + range + " in the real-time model (median " +
                        num(sim.bounces_median) + ")");
   }
@@ -321,6 +324,8 @@ Record capture_index_findings(const std::vector<std::pair<std::string, Record>>&
   r.set("stone_description", c.stone_description);
   r.set("convention", c.convention);
   r.set("water_law", c.water_law);
+  r.set("low_percent", 100 * kIntervalLowQuantile);
+  r.set("high_percent", 100 * kIntervalHighQuantile);
   std::vector<std::string> keys;
   double usable = 0, caveats = 0, unusable = 0;
   for (const auto& [key, rec] : captures) {

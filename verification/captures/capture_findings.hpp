@@ -59,7 +59,8 @@ Record capture_findings(const CaptureAnalysis& a, const CaptureSimulation& sim, 
 
 // The index section: `captures` (the capture sections' keys, in order), the verdicts counted
 // (`usable`, `usable_with_caveats`, `unusable`, `count`), the stone case (`case_file`,
-// `stone_description`, `convention`, `water_law`; empty when the solvers did not run).
+// `stone_description`, `convention`, `water_law`; empty when the solvers did not run) and the
+// quantiles of the ensembles' ranges (`low_percent`, `high_percent`).
 Record capture_index_findings(const std::vector<std::pair<std::string, Record>>& captures,
                               const CaptureFindingsContext& context);
 

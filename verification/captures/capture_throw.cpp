@@ -38,8 +38,8 @@ CaptureSimulation simulate_capture(const Stone& stone, const Environment& env, c
     std::vector<int> b = sim.ensemble_bounces;
     std::sort(b.begin(), b.end());
     auto at = [&](double p) { return b[std::size_t(p * double(b.size() - 1) + 0.5)]; };
-    sim.bounces_low = at(0.025);
-    sim.bounces_high = at(0.975);
+    sim.bounces_low = at(kIntervalLowQuantile);
+    sim.bounces_high = at(kIntervalHighQuantile);
     sim.bounces_median = at(0.5);
   }
   return sim;

@@ -34,7 +34,7 @@ struct CaptureSimulation {
   std::map<int, int> bounce_histogram;   // bounces → members
   double ensemble_cpu_s = 0;   // thread CPU time of the ensemble's runs (solvers/realtime/clocks.hpp)
   double ensemble_wall_s = 0;  // … and wall-clock time
-  int bounces_low = 0, bounces_high = 0, bounces_median = 0;  // 2.5 %, 97.5 %, 50 % of the ensemble
+  int bounces_low = 0, bounces_high = 0, bounces_median = 0;  // the interval quantiles and the median of the ensemble
 };
 
 CaptureSimulation simulate_capture(const Stone& stone, const Environment& env, const CaptureAnalysis& a,
