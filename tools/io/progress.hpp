@@ -1,6 +1,7 @@
 #pragma once
 // Progress for long runs: a single updating line on stderr when it is a terminal, a line per
-// 10 % otherwise (so CI logs stay short). Thread-safe: workers call tick().
+// 10 % otherwise (so CI logs stay short), with the time left at the mean rate so far.
+// Thread-safe: workers call tick().
 #include <atomic>
 #include <chrono>
 #include <mutex>
@@ -17,6 +18,7 @@ class Progress {
 
  private:
   void print(std::size_t k);
+  std::string left(std::size_t k, double elapsed_s) const;
   std::string label_;
   std::size_t total_;
   std::atomic<std::size_t> count_{0};

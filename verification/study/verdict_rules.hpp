@@ -24,8 +24,27 @@
 //                        (verification/captures/capture_verdict.hpp; inputs: capture_conditions
 //                        below) → usable | usable with caveats | unusable
 //   bounce_agreement     realtime_bounces, reference_bounces → same bounce count | different bounce counts
-//   bounce_spread        bounces_low, bounces_high (the ensemble's 2.5 and 97.5 % points) →
+//   bounce_spread        bounces_low, bounces_high (the ensemble's interval quantiles) →
 //                        decided by the capture | not decided by the capture
+//   power_law_exponent   valid, exponent, exponent_low, exponent_high, points, expected, tolerance →
+//                        too few points to fit | consistent with the expected exponent |
+//                        excludes the expected exponent | exponent not established
+//                        (the 95 % interval decides, as for order_fit: within expected ± tolerance,
+//                        entirely outside it, or neither; fewer than 3 points or no fit: too few)
+//   skips_like_a_stone   distance, distance_bound, attack_change_deg, attack_bound_deg →
+//                        skips like a real stone | too far from the measurements |
+//                        does not hold its attitude | too far from the measurements and does not
+//                        hold its attitude (holds: |attack change| ≤ bound; NaN: no contact, does not)
+//   cheapest_skipping_law  per law L: L.distance, L.attack_change_deg, L.cost_s; distance_bound,
+//                        attack_bound_deg → "L is the cheapest law that skips like a real stone" |
+//                        no law skips like a real stone (a law skips as in skips_like_a_stone;
+//                        the cheapest by cost_s, ties to the smaller distance, then by name)
+//   restart_strategy     per strategy S: S.failed, S.error_ratio, S.rhs_evaluations →
+//                        "S is the cheapest strategy that keeps the contact times" |
+//                        no strategy keeps the contact times (S keeps them with no failed run and
+//                        error_ratio — its worst contact-time error over its tolerance, the largest
+//                        over every method and rtol — at most 1; cheapest by rhs_evaluations, ties
+//                        by name)
 #include <string>
 #include <vector>
 
