@@ -166,6 +166,13 @@ Crossing last_out(const Waterline& w0, const Waterline& w1) {
 ThrowResult run_realtime(const Stone& stone, const Environment& env, const RigidState& initial,
                          const RealtimeOptions& o, const WaterSurface* surface,
                          const std::function<void(double t_s)>& before_step) {
+  if (!before_step) return run_realtime(stone, env, initial, o, surface, BeforeStepWithState{});
+  return run_realtime(stone, env, initial, o, surface, [&](double t_s, const RigidState&) { before_step(t_s); });
+}
+
+ThrowResult run_realtime(const Stone& stone, const Environment& env, const RigidState& initial,
+                         const RealtimeOptions& o, const WaterSurface* surface,
+                         const BeforeStepWithState& before_step) {
   const CpuTimer cpu;
   const WallTimer wall;
   ThrowResult r;
@@ -236,7 +243,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
   double next_output = o.output_dt_s;
   while (going && t < o.t_max_s - 1e-12 * o.t_max_s) {
     if (before_step) {
-      before_step(t);
+      before_step(t, s);
       if (!settle(t)) break;  // the surface under the stone may have moved
     }
     // Step size: fine while in the water or while the lowest vertex could reach it in one flight

@@ -49,5 +49,11 @@ RigidState realtime_step(const Stone& stone, const Environment& env, const Rigid
 ThrowResult run_realtime(const Stone& stone, const Environment& env, const RigidState& initial,
                          const RealtimeOptions& options, const WaterSurface* surface = nullptr,
                          const std::function<void(double t_s)>& before_step = {});
+// The same, with the stone's state at the start of the step handed to the callback as well: a
+// two-way scene (solvers/scene/) computes the stone's draught on the water from it.
+using BeforeStepWithState = std::function<void(double t_s, const RigidState& s)>;
+ThrowResult run_realtime(const Stone& stone, const Environment& env, const RigidState& initial,
+                         const RealtimeOptions& options, const WaterSurface* surface,
+                         const BeforeStepWithState& before_step);
 
 }  // namespace stoneskip

@@ -1,36 +1,35 @@
 #include "tools/scene/scene_throw.hpp"
 
-#include <chrono>
-
-#include "model/water/height_field_surface.hpp"
-
 namespace stoneskip {
 
-SceneThrow run_scene_realtime(const StoneCase& c) {
-  SceneThrow out;
-  if (!c.water) {
-    out.result = run_realtime(c.stone, c.environment, c.initial, c.realtime);
-    return out;
+SceneOptions scene_options(const StoneCase& c, SceneEnd end) {
+  SceneOptions o;
+  o.stone = c.stone;
+  o.environment = c.environment;
+  o.initial = c.initial;
+  o.stone_steps = c.realtime;
+  o.end = end;
+  o.frame_rate_hz = c.frames.frame_rate_hz;
+  o.duration_s = c.frames.duration_s ? *c.frames.duration_s : c.realtime.t_max_s;
+  o.coupling = c.water ? c.water->coupling : Coupling::none;
+  if (c.water && c.water->coupling != Coupling::none) {
+    const WaterScene& w = *c.water;
+    SceneWater sw;
+    sw.field = w.field;
+    if (w.initial) sample_disturbance(*w.initial, w.field.nx, w.field.ny, w.field.cell_m, sw.initial_m);
+    sw.placement = FieldPlacement{w.origin_x_m, w.origin_y_m};
+    o.water = std::move(sw);
+    o.draught_samples = w.draught_samples;
   }
-  const WaterScene& w = *c.water;
-  HeightField field(w.field);
-  std::vector<double> z0;
-  sample_disturbance(w.initial, w.field.nx, w.field.ny, w.field.cell_m, z0);
-  field.set_state(z0);
-  const HeightFieldSurface surface(field, w.origin_x_m, w.origin_y_m);
-  double water_cpu = 0;
-  // The field is advanced to the nearest of its own time levels at the start of each stone step
-  // (the surface is piecewise constant in time at the water's step, as in a game loop).
-  auto advance = [&](double t_s) {
-    const auto start = std::chrono::steady_clock::now();
-    while (field.time_s() + 0.5 * w.field.dt_s <= t_s) field.step();
-    water_cpu += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
-  out.result = run_realtime(c.stone, c.environment, c.initial, c.realtime, &surface, advance);
-  out.result.solver += ", on a live " + std::to_string(w.field.nx) + "x" + std::to_string(w.field.ny) + " height field (" +
-                       w.field.stencil.name + ")";
-  out.water_steps = field.steps();
-  out.water_cpu_s = water_cpu;
+  return o;
+}
+
+SceneThrow run_scene_realtime(const StoneCase& c) {
+  const SceneSummary s = run_scene(scene_options(c, SceneEnd::with_the_throw));
+  SceneThrow out;
+  out.result = s.stone;
+  out.water_steps = s.water_steps;
+  out.water_wall_s = s.water_wall_s;
   return out;
 }
 

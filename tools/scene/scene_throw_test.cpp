@@ -84,7 +84,7 @@ BOOST_AUTO_TEST_CASE(a_plate_falling_onto_a_frozen_crest_touches_it_at_the_close
   const double z0 = 0.2, h = 0.008, g = 9.81;
   const StoneCase c = drop_case("0.05", "1.0e-4");
   std::vector<double> z;
-  sample_disturbance(c.water->initial, 100, 100, 0.02, z);
+  sample_disturbance(*c.water->initial, 100, 100, 0.02, z);
   const double crest = z[50 * 100 + 50];
   BOOST_TEST(std::abs(crest - 0.05) <= 1e-6);
   const SceneThrow r = run_scene_realtime(c);

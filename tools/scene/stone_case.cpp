@@ -220,14 +220,7 @@ StoneCase stone_case_from_document(const TomlDocument& doc) {
   read_throw(top.table("throw"), c);
   c.realtime = read_solver(top.table("solver"));
   c.reference = read_reference(top.maybe_table("reference"), c.realtime.t_max_s, c.realtime.output_dt_s);
-  if (auto w = top.maybe_table("water")) {
-    WaterScene scene;
-    scene.origin_x_m = w->number_or("origin_x_m", 0.0);
-    scene.origin_y_m = w->number_or("origin_y_m", 0.0);
-    scene.initial = read_disturbance(w->table("initial"));
-    scene.field = read_height_field(*w, top, nullptr);
-    c.water = scene;
-  }
+  read_scene_keys(top, c.water, c.frames);  // [water], [scene]: tools/scene/scene_case.cpp
   top.finish();
   return c;
 }
@@ -262,15 +255,7 @@ std::string StoneCase::resolved_settings() const {
     << "]\nangular_velocity_rad_s = [" << w.x() << ", " << w.y() << ", " << w.z() << "]\n";
   s << "\n[solver]\nscheme = \"" << to_string(realtime.scheme) << "\"\ndt_s = " << realtime.dt_s << "\ncontact_dt_s = "
     << realtime.contact_dt_s << "\nt_max_s = " << realtime.t_max_s << "\noutput_dt_s = " << realtime.output_dt_s << "\n";
-  if (water) {
-    const HeightFieldOptions& f = water->field;
-    s << "\n[water]\nstencil = \"" << f.stencil.name << "\"  # weights × 1/d²: " << f.stencil.centre << ", " << f.stencil.orth
-      << ", " << f.stencil.diag << "\nnx = " << f.nx << "\nny = " << f.ny << "\ncell_m = " << f.cell_m
-      << "\nwave_speed_m_s = " << f.wave_speed_m_s << "\ndamping_per_s = " << f.damping_per_s << "\nboundary = \""
-      << to_string(f.boundary) << "\"\ndt_s = " << f.dt_s << "\norigin_x_m = " << water->origin_x_m
-      << "\norigin_y_m = " << water->origin_y_m << "\n\n[water.initial]\nkind = \"" << to_string(water->initial.kind)
-      << "\"\namplitude_m = " << water->initial.amplitude_m << "\n";
-  }
+  s << scene_settings_toml(water, frames);
   s << "\n[reference]\nmethod = \"" << to_string(reference.method) << "\"\nrtol = " << reference.rtol << "\natol = "
     << reference.atol << "\natol_scaling = \"" << to_string(reference.atol_scaling) << "\"\nmax_steps = " << reference.max_steps
     << "\nrestart = \"" << to_string(reference.restart) << "\"\nmax_step_s = " << reference.max_step_s

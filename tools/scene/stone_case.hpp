@@ -12,6 +12,7 @@
 #include "model/water/height_field.hpp"
 #include "solvers/realtime/stone_stepper.hpp"
 #include "solvers/reference/reference_options.hpp"
+#include "tools/scene/scene_case.hpp"  // [water], [scene]: WaterScene, SceneFrames
 #include "tools/io/toml_table.hpp"
 
 namespace stoneskip {
@@ -28,15 +29,6 @@ struct StoneSpec {
   std::string mesh_file;     // resolved relative to the case file's folder
 };
 
-// A live water surface under the stone (optional [water] in a stone case): a height field
-// stepped alongside the stone, its grid point (0, 0) at (origin_x_m, origin_y_m) of the scene,
-// starting from a disturbance at rest. One-way: the stone sees the waves; it makes none.
-struct WaterScene {
-  HeightFieldOptions field;
-  Disturbance initial;
-  double origin_x_m = 0, origin_y_m = 0;
-};
-
 struct StoneCase {
   std::string file;                    // path as given
   std::string text;                    // the case file's text, attached to results
@@ -51,6 +43,7 @@ struct StoneCase {
   RealtimeOptions realtime;
   ReferenceOptions reference;
   std::optional<WaterScene> water;     // absent: still water η = 0
+  SceneFrames frames;                  // [scene]: the frames of `stoneskip scene`
   std::string resolved_settings() const;  // every setting, as TOML, after defaults and overrides
 };
 

@@ -176,6 +176,38 @@ const std::map<std::string, Rule>& rules() {
          return std::string(in.number("bounces_low") == in.number("bounces_high") ? "decided by the capture"
                                                                                  : "not decided by the capture");
        }},
+      {"coupling_change",
+       [](const Record& in) {
+         if (in.number("count_change") != 0) return std::string("changes the bounce count");
+         return std::string(in.number("max_time_change_s") > in.number("time_tolerance_s") ? "moves the contacts"
+                                                                                           : "no visible change");
+       }},
+      {"coupled_limit",
+       [](const Record& in) {
+         const double tol = in.number("growth_tolerance");
+         const bool ok = in.number("growth_below") <= 1 + tol && in.number("growth_above") > 1 + tol &&
+                         in.number("growth_free_above") <= 1 + tol;
+         return std::string(ok ? "stable below the limit, unstable above it" : "the limit is not confirmed");
+       }},
+      {"ring_speed",
+       [](const Record& in) {
+         if (!in.flag("valid")) return std::string("not measured");
+         if (in.number("speed_low") > in.number("predicted_high")) return std::string("faster than c");
+         if (in.number("speed_high") < in.number("predicted_low")) return std::string("slower than the scheme's dispersion explains");
+         return std::string("within c less the scheme's dispersion");
+       }},
+      {"shortcut",
+       [](const Record& in) {
+         if (in.number("field_relative") == 0 && in.number("start_change_s") == 0 && in.number("count_change") == 0)
+           return std::string("exact");
+         const bool within = in.number("field_relative") <= in.number("field_tolerance") &&
+                             in.number("start_change_s") <= in.number("time_tolerance_s") && in.number("count_change") == 0;
+         return std::string(within ? "within tolerance" : "beyond tolerance");
+       }},
+      {"speed_target",
+       [](const Record& in) {
+         return std::string(in.number("value") >= in.number("target") ? "meets the target" : "misses the target");
+       }},
   };
   return r;
 }

@@ -26,6 +26,16 @@
 //   bounce_agreement     realtime_bounces, reference_bounces → same bounce count | different bounce counts
 //   bounce_spread        bounces_low, bounces_high (the ensemble's interval quantiles) →
 //                        decided by the capture | not decided by the capture
+//   coupling_change      count_change, max_time_change_s, time_tolerance_s → changes the bounce count |
+//                        moves the contacts | no visible change
+//   coupled_limit        growth_below, growth_above, growth_free_above, growth_tolerance →
+//                        stable below the limit, unstable above it | the limit is not confirmed
+//   ring_speed           valid, speed_low, speed_high, predicted_low, predicted_high → not measured |
+//                        within c less the scheme's dispersion | faster than c |
+//                        slower than the scheme's dispersion explains
+//   shortcut             field_relative, start_change_s, count_change, field_tolerance, time_tolerance_s →
+//                        exact | within tolerance | beyond tolerance
+//   speed_target         value, target → meets the target | misses the target
 //   power_law_exponent   valid, exponent, exponent_low, exponent_high, points, expected, tolerance →
 //                        too few points to fit | consistent with the expected exponent |
 //                        excludes the expected exponent | exponent not established

@@ -1,0 +1,45 @@
+#include "reports/scene/frame_plot.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "reports/common/plot.hpp"
+
+namespace stoneskip {
+
+std::string frame_plot_commands(const FramePlot& p) {
+  std::ostringstream g;
+  g.precision(9);
+  const double s = p.scale_m > 0 ? p.scale_m : 1e-3;
+  const std::string stone_pt = p.stone_sunk ? "pt 6 ps 1.6 lw 2" : "pt 7 ps 1.4";
+  g << "reset\n"
+    << "set multiplot layout 1,2 title " << gnuplot_quote(p.title) << "\n"
+    << "set palette defined (-1 '#08306b', -0.4 '#4292c6', 0 '#f7fbff', 0.4 '#ef6548', 1 '#7f0000')\n"
+    << "set cbrange [" << -s << ":" << s << "]\nset format cb '%.2g'\nset format z '%.2g'\n";
+  // Left: the pond from above.
+  g << "set size ratio -1\nset xrange [" << p.pond_x0_m << ":" << p.pond_x1_m << "]\nset yrange [" << p.pond_y0_m << ":"
+    << p.pond_y1_m << "]\nset xlabel 'x (m, along the throw)'\nset ylabel 'y (m)'\nset cblabel 'z (m)'\n"
+    << "set object 1 rectangle from " << p.near_x0_m << "," << p.near_y0_m << " to " << p.near_x1_m << "," << p.near_y1_m
+    << " front fillstyle empty border lc rgb '#555555' dt 2\n";
+  if (p.stone_shown)
+    g << "set label 1 '' at " << p.stone_x_m << "," << p.stone_y_m << " point " << stone_pt << " lc rgb 'black' front\n";
+  g << "plot " << p.top << " with image notitle";
+  if (!p.track.empty()) g << ", " << p.track << " with lines lc rgb '#222222' lw 1 notitle";
+  if (!p.touches.empty()) g << ", " << p.touches << " with points pt 2 ps 1.2 lc rgb '#222222' notitle";
+  g << "\n";
+  // Right: the water around the stone, oblique.
+  const double zs = 2 * s;
+  const double stone_z = std::clamp(p.stone_z_m, -zs, zs);
+  g << "unset object 1\nunset label 1\nunset colorbox\nset size noratio\nset view 52, 28, 1, 1\nset xyplane at " << -zs
+    << "\nset xrange [" << p.near_x0_m << ":" << p.near_x1_m << "]\nset yrange [" << p.near_y0_m << ":" << p.near_y1_m
+    << "]\nset zrange [" << -zs << ":" << zs << "]\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset zlabel 'z (m)' rotate\n"
+    << "set ztics " << s << "\nset pm3d at s\nunset surface\n";
+  if (p.stone_shown)
+    g << "set label 2 '' at " << p.stone_x_m << "," << p.stone_y_m << "," << stone_z << " point " << stone_pt
+      << " lc rgb 'black' front\n";
+  g << "splot " << p.near << " with pm3d notitle\n"
+    << "unset multiplot\n";
+  return g.str();
+}
+
+}  // namespace stoneskip

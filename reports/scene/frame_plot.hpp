@@ -1,0 +1,34 @@
+#pragma once
+// One frame of a scene drawn by gnuplot (issue 9, item 6), in two panels side by side:
+//   left:  the pond seen from above — the surface height as a colour map (blue below, red above
+//          the still level, on a fixed symmetric scale), the stone's track so far, where it touched
+//          the water, and the stone (a disk, black; hollow once it has sunk);
+//   right: an oblique 3-D view of the water in a window around the stone (or where it sank), the
+//          heights exaggerated to the same scale so that a ripple of the scale's size is visible.
+// The same commands draw the movie's frames (reports/scene/scene_movie.hpp, binary data files)
+// and the report's still frames (reports/scene/scene_report.cpp, the stored tables), so the two
+// look alike. Only the data clauses differ.
+#include <string>
+
+namespace stoneskip {
+
+struct FramePlot {
+  // gnuplot data specifications (file and how to read it), each giving x_m y_m z_m:
+  std::string top;      // the pond's surface (with image)
+  std::string near;     // the window around the stone (with pm3d)
+  std::string track;    // x_m y_m of the stone's path so far ("" for none)
+  std::string touches;  // x_m y_m of the first touch of each contact so far ("" for none)
+  double stone_x_m = 0, stone_y_m = 0, stone_z_m = 0, stone_radius_m = 0.03;
+  bool stone_sunk = false;
+  bool stone_shown = true;  // false: no stone (coupling none still shows it; a scene without one does not)
+  double pond_x0_m = 0, pond_x1_m = 1, pond_y0_m = 0, pond_y1_m = 1;
+  double near_x0_m = 0, near_x1_m = 1, near_y0_m = 0, near_y1_m = 1;
+  double scale_m = 1e-3;    // colour scale ±scale_m; the 3-D view's z range
+  std::string title;        // "t = 0.500 s"
+  int width_px = 1280, height_px = 540;
+};
+
+// The gnuplot commands that draw one frame onto the current output (a multiplot of two panels).
+std::string frame_plot_commands(const FramePlot& p);
+
+}  // namespace stoneskip

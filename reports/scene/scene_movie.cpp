@@ -1,0 +1,267 @@
+#include "reports/scene/scene_movie.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <sys/wait.h>
+
+#include "reports/scene/frame_plot.hpp"
+#include "solvers/realtime/clocks.hpp"
+#include "tools/io/atomic_file.hpp"
+
+namespace stoneskip {
+
+namespace fs = std::filesystem;
+
+bool movie_format_of(const fs::path& file, MovieFormat& out) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == ".mp4") out = MovieFormat::mp4;
+  else if (ext == ".gif") out = MovieFormat::gif;
+  else return false;
+  return true;
+}
+
+namespace {
+
+// The stride of scene frames between movie frames.
+int movie_stride(MovieFormat f, double scene_rate_hz, double rate_hz) {
+  if (rate_hz > 0) return static_cast<int>(std::lround(scene_rate_hz / rate_hz));
+  if (f == MovieFormat::mp4) return 1;
+  return std::max(1, static_cast<int>(std::ceil(scene_rate_hz / 30.0 - 1e-9)));
+}
+
+std::string frame_name(const char* stem, long k, const char* ext) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%s_%05ld.%s", stem, k, ext);
+  return buf;
+}
+
+void write_floats(const fs::path& p, const std::vector<float>& v) {
+  std::ofstream f(p, std::ios::binary);
+  f.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(float)));
+  if (!f) throw std::runtime_error("movie: cannot write " + p.string());
+}
+
+// Block means of the field over [i0, i0 + n·b) × [j0, j0 + m·b) (points beyond the grid are left out).
+void block_means(const HeightField* field, int i0, int j0, int n, int m, int b, std::vector<float>& out, double& max_abs) {
+  out.assign(static_cast<std::size_t>(n) * m, 0.0f);
+  if (!field) return;
+  for (int q = 0; q < m; ++q)
+    for (int p = 0; p < n; ++p) {
+      double s = 0;
+      int count = 0;
+      for (int dj = 0; dj < b; ++dj)
+        for (int di = 0; di < b; ++di) {
+          const int i = i0 + p * b + di, j = j0 + q * b + dj;
+          if (i < 0 || j < 0 || i >= field->nx() || j >= field->ny()) continue;
+          s += field->height(i, j);
+          ++count;
+        }
+      const double v = count ? s / count : 0.0;
+      out[static_cast<std::size_t>(q) * n + p] = static_cast<float>(v);
+      max_abs = std::max(max_abs, std::abs(v));
+    }
+}
+
+// Runs a shell command, calling on_line for every line it prints (stdout and stderr); its status.
+int run_lines(const std::string& cmd, const std::function<void(const std::string&)>& on_line) {
+  FILE* p = popen((cmd + " 2>&1").c_str(), "r");
+  if (!p) return -1;
+  std::array<char, 4096> buf{};
+  while (std::fgets(buf.data(), buf.size(), p)) {
+    std::string line = buf.data();
+    while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
+    on_line(line);
+  }
+  const int st = pclose(p);
+  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+}  // namespace
+
+std::string MovieOptions::problem(double scene_rate_hz) const {
+  MovieFormat f;
+  if (!movie_format_of(output, f)) return "the movie must be a .mp4 or .gif file (got '" + output.string() + "')";
+  if (width_px < 320 || width_px > 7680 || height_px < 160 || height_px > 4320)
+    return "the movie size must be within 320×160 … 7680×4320";
+  if (rate_hz < 0 || !std::isfinite(rate_hz)) return "the movie rate must be > 0";
+  if (rate_hz > 0) {
+    const double stride = scene_rate_hz / rate_hz;
+    if (stride < 1 - 1e-9 || std::abs(stride - std::round(stride)) > 1e-6)
+      return "the movie rate must be the scene's frame rate divided by a whole number";
+    if (f == MovieFormat::gif && rate_hz > 50) return "a GIF plays at most 50 frames/s (delays are whole hundredths of a second)";
+  }
+  if (!(near_window_m > 0) || near_cells_max < 8 || top_cells_max < 16) return "bad movie window sizes";
+  return "";
+}
+
+MovieRecorder::MovieRecorder(const MovieOptions& options, const SceneOptions& scene, fs::path work_dir)
+    : o_(options), dir_(std::move(work_dir)), scene_rate_hz_(scene.frame_rate_hz),
+      has_field_(scene.coupling != Coupling::none && scene.water.has_value()), stone_radius_m_(scene.stone.disk_radius_m) {
+  const std::string why = o_.problem(scene.frame_rate_hz);
+  if (!why.empty()) throw std::invalid_argument("movie: " + why);
+  movie_format_of(o_.output, format_);
+  stride_ = movie_stride(format_, scene.frame_rate_hz, o_.rate_hz);
+  if (has_field_) {
+    const HeightFieldOptions& f = scene.water->field;
+    x0_m_ = scene.water->placement.origin_x_m;
+    y0_m_ = scene.water->placement.origin_y_m;
+    cell_m_ = f.cell_m;
+    nx_ = f.nx;
+    ny_ = f.ny;
+  } else {  // still water: a flat 10 m pond around the throw's start
+    cell_m_ = 0.05;
+    nx_ = ny_ = 200;
+    x0_m_ = scene.initial.position_m.x() - 1;
+    y0_m_ = scene.initial.position_m.y() - 5;
+  }
+  top_block_ = std::max(1, (std::max(nx_, ny_) + o_.top_cells_max - 1) / o_.top_cells_max);
+  top_nx_ = (nx_ + top_block_ - 1) / top_block_;
+  top_ny_ = (ny_ + top_block_ - 1) / top_block_;
+}
+
+void MovieRecorder::record(const SceneFrame& f) {
+  if (f.index % stride_ != 0) return;
+  const long k = static_cast<long>(frames_.size()) + 1;
+  const HeightField* field = has_field_ ? f.field : nullptr;
+  double max_abs = 0;
+  block_means(field, 0, 0, top_nx_, top_ny_, top_block_, buffer_, max_abs);
+  write_floats(dir_ / frame_name("top", k, "bin"), buffer_);
+  // The 3-D window: near_window_m around the stone, inside the pond.
+  const int side = std::min({static_cast<int>(std::ceil(o_.near_window_m / cell_m_)), nx_, ny_});
+  const int block = std::max(1, (side + o_.near_cells_max - 1) / o_.near_cells_max);
+  const int n = std::max(2, side / block);
+  const int span = n * block;
+  const int ic = static_cast<int>(std::lround((f.stone.position_m.x() - x0_m_) / cell_m_));
+  const int jc = static_cast<int>(std::lround((f.stone.position_m.y() - y0_m_) / cell_m_));
+  const int i0 = std::clamp(ic - span / 2, 0, std::max(0, nx_ - span)), j0 = std::clamp(jc - span / 2, 0, std::max(0, ny_ - span));
+  double near_max = 0;
+  block_means(field, i0, j0, n, n, block, buffer_, near_max);
+  write_floats(dir_ / frame_name("near", k, "bin"), buffer_);
+  FrameData d;
+  d.index = f.index;
+  d.t_s = f.t_s;
+  d.x_m = f.stone.position_m.x();
+  d.y_m = f.stone.position_m.y();
+  d.z_m = f.stone.position_m.z();
+  d.sunk = f.stone_status == StoneStatus::sank;
+  d.near_dx_m = block * cell_m_;
+  d.near_x0_m = x0_m_ + (i0 + 0.5 * (block - 1)) * cell_m_;
+  d.near_y0_m = y0_m_ + (j0 + 0.5 * (block - 1)) * cell_m_;
+  d.near_nx = d.near_ny = n;
+  frames_.push_back(d);
+  frame_max_m_.push_back(max_abs);
+}
+
+MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, const ProgressFactory& progress) {
+  MovieSummary s;
+  s.file = o_.output;
+  s.frames = static_cast<long>(frames_.size());
+  s.rate_hz = scene_rate_hz_ / stride_;
+  s.width_px = o_.width_px;
+  s.height_px = o_.height_px;
+  if (frames_.empty()) throw std::runtime_error("movie: no frames to draw (the scene is shorter than one movie frame)");
+  // 1. The colour scale: half the median of the frames' largest |z| (frames with any motion).
+  std::vector<double> moving;
+  for (double m : frame_max_m_)
+    if (m > 0) moving.push_back(m);
+  if (!moving.empty()) {
+    std::nth_element(moving.begin(), moving.begin() + moving.size() / 2, moving.end());
+    s.scale_m = 0.5 * moving[moving.size() / 2];
+  }
+  if (!(s.scale_m > 0)) s.scale_m = 1e-4;
+  // 2. The track and the first touches, one point a line.
+  {
+    std::ofstream t(dir_ / "track.dat");
+    t.precision(9);
+    for (const auto& f : frames_) t << f.x_m << " " << f.y_m << "\n";
+    std::ofstream c(dir_ / "touches.dat");
+    c.precision(9);
+    for (const auto& k : contacts) c << k.first_touch_m.x() << " " << k.first_touch_m.y() << "\n";
+  }
+  // 3. The gnuplot script: one block per frame.
+  std::ostringstream gp;
+  gp.precision(9);
+  gp << "set terminal pngcairo size " << o_.width_px << "," << o_.height_px << " font 'Sans,10'\n";
+  const double half = 0.5 * cell_m_ * top_block_;
+  for (std::size_t j = 0; j < frames_.size(); ++j) {
+    const FrameData& f = frames_[j];
+    FramePlot p;
+    std::ostringstream top, near;
+    top.precision(9);
+    near.precision(9);
+    top << "'" << frame_name("top", static_cast<long>(j) + 1, "bin") << "' binary array=(" << top_nx_ << "," << top_ny_
+        << ") format='%float32' origin=(" << x0_m_ + half - 0.5 * cell_m_ << "," << y0_m_ + half - 0.5 * cell_m_
+        << ") dx=" << cell_m_ * top_block_ << " dy=" << cell_m_ * top_block_;
+    near << "'" << frame_name("near", static_cast<long>(j) + 1, "bin") << "' binary array=(" << f.near_nx << "," << f.near_ny
+         << ") format='%float32' origin=(" << f.near_x0_m << "," << f.near_y0_m << ",0) dx=" << f.near_dx_m << " dy=" << f.near_dx_m;
+    p.top = top.str();
+    p.near = near.str();
+    if (j > 0) p.track = "'track.dat' every ::0::" + std::to_string(j);
+    long touched = 0;
+    for (const auto& c : contacts) touched += c.start_s <= f.t_s;
+    if (touched > 0) p.touches = "'touches.dat' every ::0::" + std::to_string(touched - 1);
+    p.stone_x_m = f.x_m;
+    p.stone_y_m = f.y_m;
+    p.stone_z_m = f.z_m;
+    p.stone_radius_m = stone_radius_m_;
+    p.stone_sunk = f.sunk;
+    p.pond_x0_m = x0_m_ - 0.5 * cell_m_;
+    p.pond_x1_m = x0_m_ + (nx_ - 0.5) * cell_m_;
+    p.pond_y0_m = y0_m_ - 0.5 * cell_m_;
+    p.pond_y1_m = y0_m_ + (ny_ - 0.5) * cell_m_;
+    p.near_x0_m = f.near_x0_m;
+    p.near_x1_m = f.near_x0_m + (f.near_nx - 1) * f.near_dx_m;
+    p.near_y0_m = f.near_y0_m;
+    p.near_y1_m = f.near_y0_m + (f.near_ny - 1) * f.near_dx_m;
+    p.scale_m = s.scale_m;
+    char title[160];
+    std::snprintf(title, sizeof title, "t = %.3f s%s   (colour and height scale ±%.2g mm)", f.t_s, f.sunk ? ", the stone has sunk" : "",
+                  1e3 * s.scale_m);
+    p.title = title;
+    gp << "set output '" << frame_name("frame", static_cast<long>(j) + 1, "png") << "'\n"
+       << frame_plot_commands(p) << "set output\nprint 'frame " << j + 1 << "'\n";
+  }
+  {
+    std::ofstream f(dir_ / "movie.gp");
+    f << gp.str();
+  }
+  // 4. Draw, one tick per frame.
+  const WallTimer draw;
+  {
+    auto ticker = start_progress(progress, "movie: drawing frames", frames_.size());
+    std::string errors;
+    const int rc = run_lines("cd '" + dir_.string() + "' && gnuplot movie.gp", [&](const std::string& line) {
+      if (line.rfind("frame ", 0) == 0) ticker->tick();
+      else if (errors.size() < 2000) errors += line + "\n";
+    });
+    if (rc != 0) throw std::runtime_error("movie: gnuplot failed (status " + std::to_string(rc) + "): " + errors);
+  }
+  s.draw_wall_s = draw.seconds();
+  // 5. Assemble.
+  const WallTimer encode;
+  AtomicOutput out(o_.output);
+  std::ostringstream cmd;
+  cmd << "ffmpeg -nostdin -y -loglevel error -framerate " << s.rate_hz << " -i '" << (dir_ / "frame_%05d.png").string() << "' ";
+  if (format_ == MovieFormat::mp4)
+    cmd << "-c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -f mp4 ";
+  else
+    cmd << "-vf 'split[a][b];[a]palettegen[p];[b][p]paletteuse' -f gif ";
+  cmd << "'" << out.temporary_path().string() << "'";
+  std::string errors;
+  const int rc = run_lines(cmd.str(), [&](const std::string& line) {
+    if (errors.size() < 2000) errors += line + "\n";
+  });
+  if (rc != 0) throw std::runtime_error("movie: ffmpeg failed (status " + std::to_string(rc) + "): " + errors);
+  out.commit();
+  s.encode_wall_s = encode.seconds();
+  s.bytes = fs::file_size(o_.output);
+  return s;
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,308 @@
+#include "solvers/scene/coupled_scene.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include "model/water/height_field_surface.hpp"
+#include "solvers/realtime/clocks.hpp"
+#include "solvers/scene/draught_window.hpp"
+
+namespace stoneskip {
+
+const char* to_string(Coupling c) {
+  switch (c) {
+    case Coupling::none: return "none";
+    case Coupling::one_way: return "one_way";
+    case Coupling::two_way: return "two_way";
+  }
+  return "?";
+}
+
+bool parse_coupling(const std::string& s, Coupling& out) {
+  for (Coupling c : {Coupling::none, Coupling::one_way, Coupling::two_way})
+    if (s == to_string(c)) {
+      out = c;
+      return true;
+    }
+  return false;
+}
+
+const char* to_string(StoneStatus s) {
+  switch (s) {
+    case StoneStatus::in_play: return "in_play";
+    case StoneStatus::sank: return "sank";
+    case StoneStatus::ended: return "ended";
+  }
+  return "?";
+}
+
+long SceneOptions::frames() const {
+  if (!(duration_s > 0) || !(frame_rate_hz > 0)) return 0;
+  return static_cast<long>(std::floor(duration_s * frame_rate_hz + 1e-9));
+}
+
+double SceneOptions::end_s() const { return frame_rate_hz > 0 ? static_cast<double>(frames()) / frame_rate_hz : 0; }
+
+bool SceneOptions::valid(std::string* why) const {
+  auto fail = [&](const std::string& w) {
+    if (why) *why = w;
+    return false;
+  };
+  if (!(frame_rate_hz > 0) || !std::isfinite(frame_rate_hz)) return fail("frame_rate_hz must be > 0");
+  if (!(duration_s > 0) || !std::isfinite(duration_s)) return fail("duration_s must be > 0");
+  if (end == SceneEnd::at_duration && frames() < 1) return fail("duration_s · frame_rate_hz must give at least one frame");
+  if (frames() > 100000000) return fail("more than 1e8 frames");
+  if (coupling == Coupling::none) return true;
+  if (!water) return fail(std::string("coupling ") + to_string(coupling) + " needs a water field");
+  std::string w;
+  if (!water->field.is_valid(&w)) return fail(w);
+  const std::size_t cells = static_cast<std::size_t>(water->field.nx) * water->field.ny;
+  if (!water->initial_m.empty() && water->initial_m.size() != cells) return fail("initial heights: need nx·ny values");
+  if (coupling == Coupling::two_way) {
+    if (draught_samples < 1 || draught_samples > 4096) return fail("draught_samples must be in [1, 4096]");
+    const double sigma = water->field.courant(), limit = coupled_courant_limit(water->field.stencil);
+    if (sigma > limit) {
+      std::ostringstream m;
+      m.precision(4);
+      m << "σ = cΔt/d = " << sigma << " is above the coupled stability limit " << limit << " of "
+        << water->field.stencil.name << " under the stone (spec §2.4: free limit/√2); take dt_s ≤ "
+        << limit * water->field.cell_m / water->field.wave_speed_m_s << " s";
+      return fail(m.str());
+    }
+  }
+  return true;
+}
+
+std::string SceneSummary::brief() const {
+  char buf[300];
+  std::snprintf(buf, sizeof buf,
+                "%ld frames (%.4g s simulated) at %.4g frames/s CPU, %.4g wall; slowest frame %.3g ms wall (#%ld)", frames,
+                simulated_s, frames_per_s_cpu(), frames_per_s_wall(), 1e3 * slowest_frame_wall_s, slowest_frame);
+  return buf;
+}
+
+namespace {
+
+double steady_now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+double thread_cpu_now() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// The loop's state: the field, the draught window, the frames and their costs.
+class SceneLoop {
+ public:
+  SceneLoop(const SceneOptions& o, const FrameRecorder& recorder, SceneSummary& out)
+      : o_(o), recorder_(recorder), out_(out), two_way_(o.coupling == Coupling::two_way),
+        frames_(o.frames()) {
+    if (o.coupling != Coupling::none) {
+      field_ = std::make_unique<HeightField>(o.water->field);
+      if (!o.water->initial_m.empty()) field_->set_state(o.water->initial_m);
+      surface_ = std::make_unique<HeightFieldSurface>(*field_, o.water->placement.origin_x_m, o.water->placement.origin_y_m);
+      out_.volume_start_m3 = field_->volume_m3();
+      dt_s_ = o.water->field.dt_s;
+    }
+    if (two_way_) {
+      draught_ = std::make_unique<StoneDraught>(o.stone.body_mesh);
+      window_ = std::make_unique<DraughtWindow>(o.water->field.nx, o.water->field.ny,
+                                                o.water->field.boundary == Boundary::periodic);
+    }
+    out_.frame_costs.reserve(static_cast<std::size_t>(frames_));
+    frame_cpu0_ = thread_cpu_now();
+    frame_wall0_ = steady_now();
+  }
+
+  const WaterSurface* surface() const { return surface_.get(); }
+
+  // Called at the start of every stone step: the water catches up with the stone's clock, the
+  // draught samples due are taken from the stone's state, and the frames that ended are closed.
+  void at_stone_step(double t_s, const RigidState& s) {
+    ++cost_.stone_steps;
+    catch_up(t_s, &s);
+    while (closed_ < frames_ && frame_time(closed_ + 1) <= t_s) close_frame(StoneStatus::in_play, s);
+  }
+
+  // After the throw: the stone's last state (it is sampled up to end_s), then the water alone.
+  void after_throw(const ThrowResult& r) {
+    const StoneStatus status = r.outcome == Outcome::sank ? StoneStatus::sank : StoneStatus::ended;
+    catch_up(r.end_time_s, &r.final_state);
+    if (o_.end == SceneEnd::with_the_throw) {
+      while (closed_ < frames_ && frame_time(closed_ + 1) <= r.end_time_s) close_frame(status, r.final_state);
+      return;
+    }
+    while (closed_ < frames_) {
+      catch_up(frame_time(closed_ + 1), nullptr);
+      close_frame(status, r.final_state);
+    }
+  }
+
+  void finish() {
+    out_.frames = closed_;
+    out_.simulated_s = frame_time(closed_);
+    if (field_) {
+      out_.volume_end_m3 = field_->volume_m3();
+      out_.tiles = field_->tile_summary();
+      out_.water_steps = field_->steps();
+    }
+  }
+
+ private:
+  double frame_time(long k) const { return static_cast<double>(k) / o_.frame_rate_hz; }
+
+  // Steps every water window that ends by t_s, taking the draught samples due before each end
+  // from the stone's state s (nullptr: the stone has left the scene).
+  void catch_up(double t_s, const RigidState* s) {
+    if (!field_) return;
+    const int k = o_.draught_samples;
+    for (;;) {
+      const double t_n = field_->time_s(), end = t_n + 0.5 * dt_s_;
+      if (two_way_) {
+        int due = 0;
+        for (;;) {
+          const double node = t_n - 0.5 * dt_s_ + (node_ + 0.5) * dt_s_ / k;
+          if (node_ >= k || node > t_s || node >= end) break;
+          ++node_;
+          ++due;
+        }
+        if (due > 0 && s) {
+          last_sample_s_ = t_s;
+          sample(*s, due);
+        } else if (due > 0) {
+          in_episode_ = false;
+        }
+      }
+      if (end > t_s) break;
+      step_water();
+    }
+  }
+
+  void sample(const RigidState& s, int due) {
+    const double w0 = steady_now();
+    const DraughtSummary d = draught_->compute(s, *field_, o_.water->placement, sample_patch_);
+    if (d.wet) {
+      window_->add(sample_patch_, static_cast<double>(due) / o_.draught_samples);
+      const double eta = surface_->height_m(s.position_m.x(), s.position_m.y());
+      if (!in_episode_) {
+        out_.episodes.emplace_back();
+        out_.episodes.back().start_s = last_sample_s_;
+        out_.episodes.back().surface_at_start_m = eta;
+        out_.episodes.back().lowest_surface_m = eta;
+      }
+      DraughtEpisode& e = out_.episodes.back();
+      e.end_s = last_sample_s_;
+      e.max_volume_m3 = std::max(e.max_volume_m3, d.volume_m3);
+      e.volume_time_m3_s += d.volume_m3 * due * dt_s_ / o_.draught_samples;
+      e.lowest_surface_m = std::min(e.lowest_surface_m, eta);
+    }
+    in_episode_ = d.wet;
+    last_volume_m3_ = d.volume_m3;
+    out_.max_draught_volume_m3 = std::max(out_.max_draught_volume_m3, d.volume_m3);
+    out_.draught_samples += 1;
+    ++cost_.draught_samples;
+    cost_.draught_wall_s += steady_now() - w0;
+  }
+
+  void step_water() {
+    const double w0 = steady_now();
+    if (two_way_) {
+      window_->take(step_patch_);
+      out_.draught_impulse_m3_s += dt_s_ * step_patch_.volume_m3(o_.water->field.cell_m);
+      field_->step(step_patch_);
+      node_ = 0;
+    } else {
+      field_->step();
+    }
+    ++cost_.water_steps;
+    cost_.water_wall_s += steady_now() - w0;
+  }
+
+  void close_frame(StoneStatus status, const RigidState& s) {
+    ++closed_;
+    if (recorder_) {
+      const double w0 = steady_now();
+      SceneFrame f;
+      f.index = closed_;
+      f.t_s = frame_time(closed_);
+      f.stone_status = status;
+      f.stone = s;
+      f.field = field_.get();
+      if (o_.water) f.placement = o_.water->placement;
+      f.draught_volume_m3 = last_volume_m3_;
+      recorder_(f);
+      cost_.recording_wall_s += steady_now() - w0;
+    }
+    const double cpu = thread_cpu_now(), wall = steady_now();
+    cost_.t_s = frame_time(closed_);
+    cost_.cpu_s = cpu - frame_cpu0_;
+    cost_.wall_s = wall - frame_wall0_;
+    cost_.stone_wall_s = std::max(0.0, cost_.wall_s - cost_.draught_wall_s - cost_.water_wall_s - cost_.recording_wall_s);
+    out_.frame_costs.push_back(cost_);
+    out_.cpu_s += cost_.cpu_s;
+    out_.wall_s += cost_.wall_s;
+    out_.stone_wall_s += cost_.stone_wall_s;
+    out_.draught_wall_s += cost_.draught_wall_s;
+    out_.water_wall_s += cost_.water_wall_s;
+    out_.recording_wall_s += cost_.recording_wall_s;
+    if (cost_.wall_s > out_.slowest_frame_wall_s) {
+      out_.slowest_frame_wall_s = cost_.wall_s;
+      out_.slowest_frame_cpu_s = cost_.cpu_s;
+      out_.slowest_frame = closed_;
+    }
+    cost_ = FrameCost{};
+    frame_cpu0_ = cpu;
+    frame_wall0_ = wall;
+  }
+
+  const SceneOptions& o_;
+  const FrameRecorder& recorder_;
+  SceneSummary& out_;
+  const bool two_way_;
+  const long frames_;
+  double dt_s_ = 0;
+  std::unique_ptr<HeightField> field_;
+  std::unique_ptr<HeightFieldSurface> surface_;
+  std::unique_ptr<StoneDraught> draught_;
+  std::unique_ptr<DraughtWindow> window_;
+  DraughtPatch sample_patch_, step_patch_;
+  int node_ = 0;  // draught samples taken in the current window
+  bool in_episode_ = false;
+  double last_sample_s_ = 0;
+  double last_volume_m3_ = 0;
+  long closed_ = 0;
+  FrameCost cost_;
+  double frame_cpu0_ = 0, frame_wall0_ = 0;
+};
+
+}  // namespace
+
+SceneSummary run_scene(const SceneOptions& o, const FrameRecorder& recorder) {
+  std::string why;
+  if (!o.valid(&why)) throw std::invalid_argument("scene: " + why);
+  SceneSummary out;
+  out.options_brief = o;
+  if (out.options_brief.water) out.options_brief.water->initial_m.clear();
+  RealtimeOptions steps = o.stone_steps;
+  if (o.end == SceneEnd::at_duration) steps.t_max_s = std::min(steps.t_max_s, o.end_s());
+  SceneLoop loop(o, recorder, out);
+  out.stone = run_realtime(o.stone, o.environment, o.initial, steps, loop.surface(),
+                           [&](double t_s, const RigidState& s) { loop.at_stone_step(t_s, s); });
+  loop.after_throw(out.stone);
+  loop.finish();
+  if (o.coupling != Coupling::none) {
+    std::ostringstream name;
+    name << out.stone.solver << ", " << to_string(o.coupling) << " on a live " << o.water->field.nx << "x"
+         << o.water->field.ny << " height field (" << o.water->field.stencil.name << ")";
+    out.stone.solver = name.str();
+  }
+  return out;
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,140 @@
+#pragma once
+// The seed's system, whole (Lee & Baek 2013 §3–4; spec §2.4, issue 9): a stone stepped by the
+// real-time stepper (solvers/realtime/stone_stepper.hpp) on a live height field
+// (model/water/height_field.hpp), run frame by frame for a set duration whether or not the stone
+// has sunk, with what each part cost.
+//
+// Coupling (spec §2.4):
+//   none     no field at all: the stone on still water (η = 0). The cheapest scene, and the
+//            throw is the still-water throw bit for bit.
+//   one_way  the stone is clipped against the field's surface (bilinear between grid points,
+//            model/water/height_field_surface.hpp); the field runs free.
+//   two_way  and the stone's draught b (model/coupling/draught.hpp) forces the field:
+//            z_tt = c²∇²(z + b) − μ z_t (the forced leapfrog, HeightField::step(DraughtPatch)).
+// Time: the field's level n (t_n = nΔt) is the surface the stone sees during
+// [t_n − Δt/2, t_n + Δt/2) (piecewise constant, as in a game loop); when the stone's clock passes
+// t_n + Δt/2 the field steps, forced by the window's draught (solvers/scene/draught_window.hpp:
+// K samples per step, K = 1 the spec's point sample at t_n). Each sample is taken at the start of
+// the first stone step at or after its time: within one contact step (the stepper steps finely
+// whenever the stone is in or near the water) of its node.
+// Stability (spec §2.4): under a floating stone b follows z with unit gain, so the two-way step
+// is stable only for σ = cΔt/d ≤ coupled_courant_limit(stencil) = the free limit / √2. A scene
+// above it is refused (SceneOptions::valid), not run: the growth there is geometric from the
+// first steps (model/coupling/two_way_test.cpp: ×1.55 per step 3 % above the limit).
+// After the stone's throw ends (it sank, or reached its own t_max) the stone leaves the scene: its
+// draught is no longer applied, and the water runs on to the scene's end.
+//
+// Frames: frame k (k = 1 … N, N = ⌊duration · rate⌋) ends at t = k/rate; at its end the
+// recorder (optional) sees the field's current level and the stone at the first step start at or
+// after that time (within one stone step: 1 ms in flight, one contact step near the water).
+// Cost: each frame's thread CPU time and wall time (a thread-CPU reading costs microseconds on a
+// virtual machine, so it is read once per frame), and the frame's wall time split into parts with
+// the steady clock (tens of ns a reading): draught (sampling b and adding it to the window), water
+// (field steps), recording (the recorder), stone (the rest: the stepper, its clipping against the
+// field, the loop's own bookkeeping). With field threads > 1 the thread CPU time leaves out the
+// field's workers: read the wall times.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/coupling/draught.hpp"
+#include "model/water/height_field.hpp"
+#include "solvers/realtime/stone_stepper.hpp"
+
+namespace stoneskip {
+
+enum class Coupling { none, one_way, two_way };
+const char* to_string(Coupling c);
+bool parse_coupling(const std::string& s, Coupling& out);
+
+// How far a scene runs: to its duration whatever the stone does (watching it), or only as long as
+// the stone's throw (`stoneskip run` on a case with [water]).
+enum class SceneEnd { at_duration, with_the_throw };
+
+struct SceneWater {
+  HeightFieldOptions field;
+  std::vector<double> initial_m;  // z(0) at rest, nx·ny row-major (empty: still water)
+  FieldPlacement placement;       // where grid point (0, 0) lies in the throw's frame
+};
+
+struct SceneOptions {
+  Stone stone;
+  Environment environment;
+  RigidState initial;
+  RealtimeOptions stone_steps;     // its t_max_s is cut to the scene's end (SceneEnd::at_duration)
+  Coupling coupling = Coupling::two_way;
+  std::optional<SceneWater> water; // required unless coupling is none (then ignored)
+  int draught_samples = 8;         // K per water step (two_way)
+  double frame_rate_hz = 90;       // one frame = 1/rate of simulated time
+  double duration_s = 3;
+  SceneEnd end = SceneEnd::at_duration;
+
+  long frames() const;             // N = ⌊duration · rate⌋ (1e-9 slack for round-off)
+  double end_s() const;            // N / rate
+  // False with the first problem, naming the option, in *why (includes the coupled limit).
+  bool valid(std::string* why = nullptr) const;
+};
+
+// What the stone is doing at a frame.
+enum class StoneStatus { in_play, sank, ended };
+const char* to_string(StoneStatus s);
+
+// What the recorder sees at the end of a frame (pointers valid during the call only).
+struct SceneFrame {
+  long index = 0;                  // 1 … N
+  double t_s = 0;                  // k / rate
+  StoneStatus stone_status = StoneStatus::in_play;
+  RigidState stone;                // in play: at the first step start ≥ t_s; else where it ended
+  const HeightField* field = nullptr;  // nullptr for coupling none
+  FieldPlacement placement;
+  double draught_volume_m3 = 0;    // Σ b d² of the last sample taken (two_way)
+};
+using FrameRecorder = std::function<void(const SceneFrame&)>;
+
+// One frame's cost.
+struct FrameCost {
+  double t_s = 0;
+  double cpu_s = 0, wall_s = 0;    // thread CPU, wall
+  double stone_wall_s = 0, draught_wall_s = 0, water_wall_s = 0, recording_wall_s = 0;
+  int stone_steps = 0, water_steps = 0, draught_samples = 0;
+};
+
+// A run of consecutive draught samples with the stone in the water (two_way): how much it pressed
+// on the water and how far the water under it had sunk — what makes two-way coupling differ from
+// one-way (spec §2.4: the depression forms on the time scale footprint/c).
+struct DraughtEpisode {
+  double start_s = 0, end_s = 0;     // first and last sample in the water
+  double max_volume_m3 = 0;          // largest Σ b d² of a sample
+  double volume_time_m3_s = 0;       // Σ over samples of Σ b d² · Δt/K
+  double surface_at_start_m = 0;     // η under the stone's centre at the first sample
+  double lowest_surface_m = 0;       // lowest η under the stone's centre over the samples
+};
+
+struct SceneSummary {
+  SceneOptions options_brief;      // the options as run, without the field's initial heights
+  ThrowResult stone;               // the throw: contacts, bounces, trajectory, its own stats
+  long frames = 0;
+  double simulated_s = 0;          // frames / rate
+  long water_steps = 0;
+  long draught_samples = 0;
+  double max_draught_volume_m3 = 0;    // largest Σ b d² of one sample
+  double draught_impulse_m3_s = 0;     // ∫ Σ b d² dt as applied to the water (Σ over steps of Δt Σ b̄ d²)
+  std::vector<DraughtEpisode> episodes;  // two_way
+  double volume_start_m3 = 0, volume_end_m3 = 0;  // Σ z d² of the field at the start and the end
+  ActiveTileSummary tiles;         // the field's (all tiles every step in full mode)
+  std::vector<FrameCost> frame_costs;
+  // Totals over the frames.
+  double cpu_s = 0, wall_s = 0;
+  double stone_wall_s = 0, draught_wall_s = 0, water_wall_s = 0, recording_wall_s = 0;
+  long slowest_frame = 0;          // by wall time
+  double slowest_frame_wall_s = 0, slowest_frame_cpu_s = 0;
+  double frames_per_s_cpu() const { return cpu_s > 0 ? frames / cpu_s : 0; }
+  double frames_per_s_wall() const { return wall_s > 0 ? frames / wall_s : 0; }
+  std::string brief() const;  // "270 frames (3 s) at 4100 frames/s CPU, 3900 wall; slowest frame 2.1 ms wall (#7)"
+};
+
+// Runs the scene; throws std::invalid_argument when the options are not valid.
+SceneSummary run_scene(const SceneOptions& options, const FrameRecorder& recorder = {});
+
+}  // namespace stoneskip

@@ -1,0 +1,161 @@
+// stoneskip bench [--json] [--quick] [--scene CASE] [--sweep-case CASE] [--repeats N]
+//
+// The headline speed figures of issue 9, measured in one run of this binary
+// (verification/scene/headline_speed.hpp): the seed's scene in simulated frames per second with
+// the field on one thread and on two; the stencil's cell updates per second at 500² and 2048² and
+// the fraction of the copy bound measured by the same binary at 2048²; real-time throws per
+// second in a bounce-count sweep on two workers. Printed beside the targets of issue 9 with the
+// machine's load average before and after. A benchmark, not a test: the numbers depend on the
+// machine and on what else runs on it.
+//   stoneskip bench
+//   stoneskip bench --json
+//   stoneskip bench --quick --json      # a smoke run (seconds): the same keys, rougher numbers
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "tools/cli/command_registry.hpp"
+#include "tools/cli/terminal_progress.hpp"
+#include "tools/io/input_error.hpp"
+#include "tools/scene/case_problem.hpp"
+#include "tools/scene/scene_throw.hpp"
+#include "verification/scene/headline_speed.hpp"
+
+namespace stoneskip::cli {
+namespace {
+
+struct BenchArgs {
+  bool json = false;
+  bool quick = false;
+  std::string scene = "cases/scenes/seed_8ms.toml";
+  std::string sweep_case = "cases/spin_sweep_base.toml";
+  int repeats = 3;
+};
+
+// Issue 9, "What must be true".
+constexpr double kSceneFpsTarget = 3000;
+constexpr double kBandwidthFractionTarget = 0.9;
+constexpr double kPerCellRatioTarget = 2;
+constexpr double kThrowsPerSecondTarget = 1000;
+
+std::vector<double> range(double lo, double hi, double step) {
+  std::vector<double> v;
+  for (double x = lo; x <= hi + 1e-9; x += step) v.push_back(x);
+  return v;
+}
+
+std::string g(double v, int significant = 3) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", significant, v);
+  return buf;
+}
+
+void bench(const BenchArgs& a) {
+  if (a.repeats < 1 || a.repeats > 100) throw_input_error("--repeats", 0, "", "must be in [1, 100]");
+  const StoneCase scene_case = load_stone_case(a.scene);
+  const StoneCase sweep_case = load_stone_case(a.sweep_case);
+  if (!sweep_case.throw_from_parameters)
+    throw_input_error(sweep_case.file, 0, "throw", "the sweep varies spin and attack angle: give the throw as [throw] parameters");
+  HeadlineSpeedOptions o;
+  o.scene = scene_options(scene_case, SceneEnd::at_duration);
+  o.scene_repeats = a.repeats;
+  o.stencil.stencil = o.scene.water ? o.scene.water->field.stencil : named_stencil("nine_point_isotropic");
+  o.stencil.precision = Precision::float64;
+  o.stencil.clock = ThroughputClock::wall;
+  o.sweep.base = problem_from_case(sweep_case);
+  o.sweep.spins_rev_s = range(0, 60, 2.5);
+  o.sweep.attack_angles_deg = range(0, 30, 2.5);
+  o.sweep.repeats = a.repeats;
+  if (a.quick) {
+    o.scene.duration_s = std::min(o.scene.duration_s, 0.5);
+    o.scene_repeats = 1;
+    o.stencil.samples = 4;
+    o.stencil.sample_s = 0.002;
+    o.stencil_large_n = 1024;
+    o.sweep.spins_rev_s = {0, 20, 40};
+    o.sweep.attack_angles_deg = {10, 20};
+    o.sweep.repeats = 1;
+  }
+  std::string why;
+  if (!o.is_valid(&why)) throw_input_error(a.scene, 0, "", why);
+  const HeadlineSpeed h = measure_headline_speed(o, terminal_progress());
+
+  nlohmann::json j;
+  j["scene_fps_1core"] = h.scene_one.fps_best_wall();
+  j["scene_fps_2cores"] = h.scene_many.fps_best_wall();
+  j["scene_fps_1core_median"] = h.scene_one.fps_median_wall();
+  j["scene_fps_2cores_median"] = h.scene_many.fps_median_wall();
+  j["scene_fps_1core_cpu"] = h.scene_one.fps_cpu();
+  j["scene_frames"] = h.scene_one.frames;
+  j["scene_slowest_frame_ms_1core"] = 1e3 * h.scene_one.best.slowest_frame_wall_s;
+  j["scene_parts_wall_s_1core"] = {{"stone", h.scene_one.best.stone_wall_s},
+                                   {"draught", h.scene_one.best.draught_wall_s},
+                                   {"water", h.scene_one.best.water_wall_s},
+                                   {"recording", h.scene_one.best.recording_wall_s}};
+  j["stencil"] = h.stencil_large.options.stencil.name;
+  j["stencil_isa"] = h.stencil_large.kernel_isa;
+  j["stencil_n_small"] = h.stencil_small.options.n;
+  j["stencil_n_large"] = h.stencil_large.options.n;
+  j["stencil_cells_per_s_500"] = h.stencil_small.cells_per_s;
+  j["stencil_cells_per_s_2048"] = h.stencil_large.cells_per_s;
+  j["bandwidth_fraction_2048"] = h.stencil_large.fraction;
+  j["bandwidth_fraction_2048_median"] = h.stencil_large.fraction_median;
+  j["bandwidth_fraction_500"] = h.stencil_small.fraction;
+  j["per_cell_ratio_500_over_2048"] = h.per_cell_ratio;
+  j["sweep_throws_per_s"] = h.sweep.throws_per_s();
+  j["sweep_throws"] = h.sweep.throws;
+  j["sweep_workers"] = h.sweep.workers;
+  j["sweep_cpu_s"] = h.sweep.cpu_s;
+  j["load_average_before"] = h.load_before;
+  j["load_average_after"] = h.load_after;
+  j["cores"] = h.cores;
+  j["clocks"] = "frames/s and throws/s: wall (best of the repeats; _median: median), _cpu: the scene thread's CPU; "
+                "stencil: wall, best sample against the copy kernel's best sample";
+  j["quick"] = a.quick;
+  if (a.json) {
+    std::cout << j.dump(2) << std::endl;
+    return;
+  }
+  auto line = [](const std::string& what, const std::string& value, const std::string& target, bool met) {
+    std::printf("%-58s %-26s %s\n", what.c_str(), value.c_str(), (target + (met ? "  met" : "  MISSED")).c_str());
+  };
+  std::printf("stoneskip bench%s — load average %s before, %s after, on %d cores; wall clock unless marked CPU\n",
+              a.quick ? " (quick: a smoke run)" : "", g(h.load_before).c_str(), g(h.load_after).c_str(), h.cores);
+  std::printf("%-58s %-26s %s\n", "", "measured", "target (issue 9)");
+  line("seed's scene (" + std::to_string(h.scene_one.frames) + " frames), 1 thread: frames/s", g(h.scene_one.fps_best_wall(), 4) +
+           " (median " + g(h.scene_one.fps_median_wall(), 4) + ", CPU " + g(h.scene_one.fps_cpu(), 4) + ")",
+       ">= " + g(kSceneFpsTarget), h.scene_one.fps_best_wall() >= kSceneFpsTarget);
+  line("seed's scene, " + std::to_string(h.scene_many.threads) + " threads: frames/s",
+       g(h.scene_many.fps_best_wall(), 4) + " (median " + g(h.scene_many.fps_median_wall(), 4) + ")", "", true);
+  line("stencil " + h.stencil_large.options.stencil.name + " at " + std::to_string(h.stencil_small.options.n) + "²: cells/s",
+       g(h.stencil_small.cells_per_s) + " (" + g(h.stencil_small.fraction) + " of its copy bound)", "", true);
+  line("stencil at " + std::to_string(h.stencil_large.options.n) + "²: cells/s, fraction of the copy bound",
+       g(h.stencil_large.cells_per_s) + ", " + g(h.stencil_large.fraction) + " (median " + g(h.stencil_large.fraction_median) + ")",
+       ">= " + g(kBandwidthFractionTarget), h.stencil_large.fraction >= kBandwidthFractionTarget);
+  line("stencil: rate per cell at 500² / at 2048²", g(h.per_cell_ratio), ">= " + g(kPerCellRatioTarget),
+       h.per_cell_ratio >= kPerCellRatioTarget);
+  line("bounce-count sweep (" + std::to_string(h.sweep.throws) + " throws, " + std::to_string(h.sweep.workers) + " workers): throws/s",
+       g(h.sweep.throws_per_s(), 4) + " (CPU " + g(h.sweep.cpu_s, 3) + " s)", ">= " + g(kThrowsPerSecondTarget),
+       h.sweep.throws_per_s() >= kThrowsPerSecondTarget);
+  std::printf("scene parts (1 thread, best run, wall): stone %s ms, draught %s ms, water %s ms; slowest frame %s ms\n",
+              g(1e3 * h.scene_one.best.stone_wall_s).c_str(), g(1e3 * h.scene_one.best.draught_wall_s).c_str(),
+              g(1e3 * h.scene_one.best.water_wall_s).c_str(), g(1e3 * h.scene_one.best.slowest_frame_wall_s).c_str());
+}
+
+void add_bench(CLI::App& app) {
+  auto a = std::make_shared<BenchArgs>();
+  auto* cmd = app.add_subcommand("bench", "Measure the headline speed figures (scene frames/s, stencil against the copy bound, sweep throws/s)");
+  cmd->add_flag("--json", a->json, "Print one JSON object");
+  cmd->add_flag("--quick", a->quick, "A smoke run of seconds (shorter scene, fewer samples, a small sweep, 1024² instead of 2048²)");
+  cmd->add_option("--scene", a->scene, "The scene to time")->capture_default_str();
+  cmd->add_option("--sweep-case", a->sweep_case, "The throw whose spin and attack angle the sweep varies")->capture_default_str();
+  cmd->add_option("--repeats", a->repeats, "Runs of the scene and of the sweep (the best is reported)")->capture_default_str();
+  cmd->callback([a] { bench(*a); });
+}
+
+const bool kRegistered = register_command(add_bench);
+
+}  // namespace
+}  // namespace stoneskip::cli

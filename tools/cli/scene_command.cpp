@@ -1,0 +1,218 @@
+// stoneskip scene CASE [--set key=value ...] [--json] [--movie FILE.mp4|.gif [--movie-size WxH] [--movie-rate HZ]]
+//
+// Runs a stone case as a scene, frame by frame, for its [scene] duration whether or not the stone
+// has sunk: the stone on its [water] (coupled as water.coupling says; still water, no field at
+// all, without [water] or with coupling = "none"). Prints the frames per second simulated (no
+// drawing), the slowest frame, and what each part cost — thread CPU and wall per frame, the parts
+// (stone, draught, water, recording) by the wall clock — and the throw's bounces. With --movie the
+// frames are drawn with gnuplot and assembled with ffmpeg (a progress bar while drawing).
+//   stoneskip scene cases/scenes/seed_8ms.toml
+//   stoneskip scene cases/scenes/seed_8ms.toml --json
+//   stoneskip scene cases/scenes/seed_8ms_paper.toml --movie seed_paper.mp4
+//   stoneskip scene cases/scenes/seed_8ms.toml --set water.coupling=one_way --set scene.duration_s=1
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <unistd.h>
+
+#include "reports/scene/scene_movie.hpp"
+#include "tools/cli/command_registry.hpp"
+#include "tools/cli/terminal_progress.hpp"
+#include "tools/io/atomic_file.hpp"
+#include "tools/io/input_error.hpp"
+#include "tools/scene/scene_throw.hpp"
+#include "tools/scene/throw_output.hpp"
+
+namespace stoneskip::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct SceneArgs {
+  std::string case_file;
+  std::vector<std::string> sets;
+  bool json = false;
+  std::string movie;
+  std::string movie_size = "1280x540";
+  double movie_rate_hz = 0;
+};
+
+// A folder for the movie's frames, removed with the object.
+class WorkFolder {
+ public:
+  WorkFolder() {
+    std::string tmpl = (fs::temp_directory_path() / "stoneskip-movie-XXXXXX").string();
+    if (!mkdtemp(tmpl.data())) throw std::runtime_error("cannot make a temporary folder for the movie's frames");
+    path_ = tmpl;
+  }
+  ~WorkFolder() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+bool tool_available(const char* command) { return std::system((std::string(command) + " >/dev/null 2>&1").c_str()) == 0; }
+
+std::string fixed(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+std::string general(double v, int significant = 4) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", significant, v);
+  return buf;
+}
+
+nlohmann::json json_of(const StoneCase& c, const SceneOptions& o, const SceneSummary& s) {
+  nlohmann::json j;
+  j["case"] = c.title;
+  j["coupling"] = to_string(o.coupling);
+  j["frame_rate_hz"] = o.frame_rate_hz;
+  j["frames"] = s.frames;
+  j["simulated_s"] = s.simulated_s;
+  j["frames_per_s_cpu"] = s.frames_per_s_cpu();
+  j["frames_per_s_wall"] = s.frames_per_s_wall();
+  j["cpu_s"] = s.cpu_s;
+  j["wall_s"] = s.wall_s;
+  j["slowest_frame"] = {{"index", s.slowest_frame},
+                        {"t_s", s.slowest_frame > 0 ? s.frame_costs[s.slowest_frame - 1].t_s : 0.0},
+                        {"wall_s", s.slowest_frame_wall_s},
+                        {"cpu_s", s.slowest_frame_cpu_s}};
+  j["parts_wall_s"] = {{"stone", s.stone_wall_s}, {"draught", s.draught_wall_s}, {"water", s.water_wall_s},
+                       {"recording", s.recording_wall_s}};
+  j["clocks"] = "cpu_s: the scene thread's CPU time; wall_s and parts_wall_s: wall clock (steady)";
+  j["water_steps"] = s.water_steps;
+  j["draught_samples"] = s.draught_samples;
+  j["max_draught_volume_m3"] = s.max_draught_volume_m3;
+  j["draught_impulse_m3_s"] = s.draught_impulse_m3_s;
+  j["water_volume_change_m3"] = s.volume_end_m3 - s.volume_start_m3;
+  if (o.water) {
+    j["grid"] = {o.water->field.nx, o.water->field.ny};
+    j["courant"] = o.water->field.courant();
+    j["coupled_courant_limit"] = coupled_courant_limit(o.water->field.stencil);
+    j["tile_steps_fraction"] = s.tiles.fraction();
+    j["precision"] = to_string(o.water->field.precision);
+    j["threads"] = o.water->field.threads;
+    j["mode"] = to_string(o.water->field.mode);
+  }
+  j["throw"] = json_summary(s.stone);
+  j["bounces"] = s.stone.bounces;
+  j["outcome"] = to_string(s.stone.outcome);
+  return j;
+}
+
+std::string text_of(const StoneCase& c, const SceneOptions& o, const SceneSummary& s) {
+  std::ostringstream m;
+  m << text_summary(c, s.stone);
+  m << "scene     " << s.frames << " frames of 1/" << general(o.frame_rate_hz) << " s (" << general(s.simulated_s) << " s simulated), "
+    << to_string(o.coupling);
+  if (o.water) {
+    const HeightFieldOptions& f = o.water->field;
+    m << " on " << f.nx << " × " << f.ny << " cells of " << general(f.cell_m) << " m (" << f.stencil.name << ", σ = " << general(f.courant())
+      << (o.coupling == Coupling::two_way ? ", coupled limit " + general(coupled_courant_limit(f.stencil)) : std::string()) << ", "
+      << to_string(f.precision) << ", " << to_string(f.mode) << ", " << f.threads << (f.threads == 1 ? " thread" : " threads") << ")";
+  } else {
+    m << ": still water, no field";
+  }
+  m << "\nspeed     " << general(s.frames_per_s_cpu()) << " frames/s simulated (CPU), " << general(s.frames_per_s_wall())
+    << " (wall); real time is " << general(o.frame_rate_hz) << "\n";
+  if (s.slowest_frame > 0)
+    m << "slowest   frame " << s.slowest_frame << " (t = " << fixed(s.frame_costs[s.slowest_frame - 1].t_s, 3) << " s): "
+      << general(1e3 * s.slowest_frame_wall_s, 3) << " ms wall, " << general(1e3 * s.slowest_frame_cpu_s, 3) << " ms CPU\n";
+  auto part = [&](const char* name, double w) {
+    m << "  " << name << general(1e3 * w, 4) << " ms (" << fixed(s.wall_s > 0 ? 100 * w / s.wall_s : 0, 1) << " %)\n";
+  };
+  m << "parts     wall clock, over " << general(1e3 * s.wall_s, 4) << " ms wall (" << general(1e3 * s.cpu_s, 4) << " ms CPU):\n";
+  part("stone      ", s.stone_wall_s);
+  part("draught    ", s.draught_wall_s);
+  part("water      ", s.water_wall_s);
+  part("recording  ", s.recording_wall_s);
+  if (o.water) {
+    m << "water     " << s.water_steps << " steps";
+    if (o.coupling == Coupling::two_way)
+      m << ", " << s.draught_samples << " draught samples (largest " << general(1e6 * s.max_draught_volume_m3, 3) << " cm³), volume change "
+        << general(s.volume_end_m3 - s.volume_start_m3, 2) << " m³";
+    if (o.water->field.mode == StepMode::active_tiles) m << "; active tiles: " << s.tiles.brief();
+    m << "\n";
+  }
+  return m.str();
+}
+
+void run(const SceneArgs& a) {
+  StoneCase c = load_stone_case(a.case_file, a.sets);
+  const SceneOptions o = scene_options(c, SceneEnd::at_duration);
+  std::string why;
+  if (!o.valid(&why)) throw_input_error(c.file, 0, "scene", why);
+  // The movie's settings and tools are checked before any work.
+  std::unique_ptr<MovieRecorder> movie;
+  std::unique_ptr<WorkFolder> work;
+  MovieOptions mo;
+  if (!a.movie.empty()) {
+    mo.output = a.movie;
+    int w = 0, h = 0;
+    char x = 0;
+    std::istringstream size(a.movie_size);
+    if (!(size >> w >> x >> h) || x != 'x' || !size.eof()) throw_input_error("--movie-size", 0, "", "must be WIDTHxHEIGHT, e.g. 1280x540");
+    mo.width_px = w;
+    mo.height_px = h;
+    mo.rate_hz = a.movie_rate_hz;
+    const std::string problem = mo.problem(o.frame_rate_hz);
+    if (!problem.empty()) throw_input_error("--movie", 0, "", problem);
+    { AtomicOutput check(mo.output); }  // the folder exists and is writable
+    if (!tool_available("gnuplot --version")) throw_input_error("--movie", 0, "", "gnuplot not found (apt-get install gnuplot-nox)");
+    if (!tool_available("ffmpeg -version")) throw_input_error("--movie", 0, "", "ffmpeg not found (apt-get install ffmpeg)");
+    work = std::make_unique<WorkFolder>();
+    movie = std::make_unique<MovieRecorder>(mo, o, work->path());
+  }
+  FrameRecorder recorder;
+  if (movie) recorder = [&](const SceneFrame& f) { movie->record(f); };
+  const SceneSummary s = run_scene(o, recorder);
+  if (a.json) {
+    nlohmann::json j = json_of(c, o, s);
+    if (movie) {
+      const MovieSummary m = movie->finish(s.stone.contacts, terminal_progress());
+      j["movie"] = {{"file", m.file.string()}, {"frames", m.frames}, {"rate_hz", m.rate_hz}, {"bytes", m.bytes},
+                    {"width_px", m.width_px}, {"height_px", m.height_px}, {"scale_m", m.scale_m}};
+    }
+    std::cout << j.dump(2) << std::endl;
+  } else {
+    std::cout << text_of(c, o, s) << std::flush;
+    if (movie) {
+      std::cout << "movie     drawing " << s.frames << " frames with gnuplot (recording the frames' data cost "
+                << general(1e3 * s.recording_wall_s, 3) << " ms wall above)\n"
+                << std::flush;
+      const MovieSummary m = movie->finish(s.stone.contacts, terminal_progress());
+      std::cout << "movie     " << m.file.string() << ": " << m.frames << " frames at " << general(m.rate_hz) << " frames/s, "
+                << m.width_px << "×" << m.height_px << ", " << general(m.bytes / 1e6, 3) << " MB; drawn in " << general(m.draw_wall_s, 3)
+                << " s, assembled in " << general(m.encode_wall_s, 3) << " s (wall); colour scale ±" << general(1e3 * m.scale_m, 2)
+                << " mm\n";
+    }
+  }
+  if (s.stone.outcome == Outcome::failed) set_exit_code(1);
+}
+
+void add_scene(CLI::App& app) {
+  auto a = std::make_shared<SceneArgs>();
+  auto* cmd = app.add_subcommand("scene", "Run a stone case as a scene, frame by frame: frames/s simulated, cost per part, a movie");
+  cmd->add_option("CASE", a->case_file, "Stone case file (TOML; [water] and [scene], see cases/README.md)")->required();
+  cmd->add_option("--set", a->sets, "Override a case key: section.key=value (repeatable)");
+  cmd->add_flag("--json", a->json, "Print one JSON object instead of the summary");
+  cmd->add_option("--movie", a->movie, "Draw the frames (gnuplot) and assemble them (ffmpeg) into FILE.mp4 or FILE.gif");
+  cmd->add_option("--movie-size", a->movie_size, "Movie frame size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--movie-rate", a->movie_rate_hz,
+                  "Movie frames per second: the scene's frame rate divided by a whole number (default: every frame for MP4, ≤ 30/s for GIF)");
+  cmd->callback([a] { run(*a); });
+}
+
+const bool kRegistered = register_command(add_scene);
+
+}  // namespace
+}  // namespace stoneskip::cli

@@ -1,0 +1,103 @@
+// End-to-end tests of `stoneskip scene`: the JSON the README promises, the movie (ffprobe reads it
+// and counts the frames), and bad input (one line naming the key, exit 2, no movie left behind).
+// The seed's case is shrunk with --set (a 60 × 60 pond, a fraction of a second, small frames) so
+// that each test runs in a second or two.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "tools/cli/test_support.hpp"
+
+namespace {
+
+using stoneskip::test::run_stoneskip;
+using stoneskip::test::TempDir;
+namespace fs = std::filesystem;
+
+// The seed's scene on a 1.2 m pond around the landing point, for `seconds`.
+std::string small_seed(double seconds) {
+  return "cases/scenes/seed_8ms.toml --set water.nx=60 --set water.ny=60 --set water.origin_x_m=-0.1 "
+         "--set water.origin_y_m=-0.6 --set scene.duration_s=" +
+         std::to_string(seconds);
+}
+
+// ffprobe's count of the video frames in a file (−1 if it cannot read it).
+long probed_frames(const fs::path& movie) {
+  const std::string cmd = "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 '" +
+                          movie.string() + "' 2>/dev/null";
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return -1;
+  char buf[64] = {0};
+  const bool read = std::fgets(buf, sizeof buf, p) != nullptr;
+  if (pclose(p) != 0 || !read) return -1;
+  try {
+    return std::stol(buf);
+  } catch (...) {
+    return -1;
+  }
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(scene_command_)
+
+BOOST_AUTO_TEST_CASE(json_reports_frames_speed_and_parts) {
+  // Oracle: the README's schema and the scene's definitions — N = duration · rate frames, the
+  // frame rate per CPU and wall second equal to frames over the summed times, the parts (wall)
+  // within the wall time, and the throw the same as `stoneskip run` gives on the same water
+  // (the scene runs the same stepper; it only goes on after the stone has sunk).
+  const auto r = run_stoneskip("scene " + small_seed(0.2) + " --json", false);
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
+  const auto j = nlohmann::json::parse(r.out);
+  BOOST_TEST(j["frames"].get<long>() == 18);
+  BOOST_TEST(j["coupling"].get<std::string>() == "two_way");
+  const double cpu = j["cpu_s"], wall = j["wall_s"];
+  BOOST_TEST(std::abs(j["frames_per_s_cpu"].get<double>() - 18 / cpu) <= 1e-9 * (18 / cpu));
+  BOOST_TEST(std::abs(j["frames_per_s_wall"].get<double>() - 18 / wall) <= 1e-9 * (18 / wall));
+  double parts = 0;
+  for (const char* k : {"stone", "draught", "water", "recording"}) parts += j["parts_wall_s"][k].get<double>();
+  BOOST_TEST(parts <= wall * (1 + 1e-9));
+  BOOST_TEST(j["slowest_frame"]["wall_s"].get<double>() <= wall);
+  BOOST_TEST(j["water_steps"].get<long>() == 18);  // one water step per frame (Δt = 1/90 s)
+  const auto run = run_stoneskip("run " + small_seed(0.2) + " --json", false);
+  BOOST_REQUIRE(run.status == 0);
+  const auto t = nlohmann::json::parse(run.out);
+  BOOST_TEST(t["contacts"].size() == j["throw"]["contacts"].size());
+  BOOST_TEST(t["contacts"][0]["end_s"].get<double>() == j["throw"]["contacts"][0]["end_s"].get<double>());
+}
+
+BOOST_AUTO_TEST_CASE(a_movie_has_duration_times_rate_frames) {
+  // Oracle: the movie plays in real time — ffprobe counts duration × rate frames: 0.2 s at 90
+  // frames/s (MP4, every frame) = 18; as a GIF (≤ 30 frames/s: every third frame) = 6.
+  TempDir tmp("stoneskip-movie");
+  for (const auto& [name, frames] : {std::pair<std::string, long>{"m.mp4", 18}, {"m.gif", 6}}) {
+    const fs::path movie = tmp.path() / name;
+    const auto r = run_stoneskip("scene " + small_seed(0.2) + " --movie " + movie.string() + " --movie-size 320x160");
+    BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
+    BOOST_TEST(fs::file_size(movie) > 0u);
+    BOOST_TEST(probed_frames(movie) == frames, name);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(bad_scene_input_fails_before_any_work_and_leaves_no_movie) {
+  // Oracle: the input rules — one line naming the key or option, exit 2, no output file.
+  TempDir tmp("stoneskip-movie-bad");
+  const fs::path avi = tmp.path() / "m.avi";
+  auto r = run_stoneskip("scene " + small_seed(0.2) + " --movie " + avi.string());
+  BOOST_TEST(r.status == 2);
+  BOOST_TEST(r.out.find(".mp4 or .gif") != std::string::npos, r.out);
+  BOOST_TEST(!fs::exists(avi));
+  const fs::path mp4 = tmp.path() / "m.mp4";
+  r = run_stoneskip("scene " + small_seed(0.2) + " --set water.dt_s=0.03 --movie " + mp4.string());
+  BOOST_TEST(r.status == 2);
+  BOOST_TEST(r.out.find("water.dt_s") != std::string::npos, r.out);
+  BOOST_TEST(r.out.find("coupled stability limit") != std::string::npos, r.out);
+  BOOST_TEST(!fs::exists(mp4));
+  r = run_stoneskip("scene " + small_seed(0.2) + " --movie " + mp4.string() + " --movie-rate 40");
+  BOOST_TEST(r.status == 2);
+  BOOST_TEST(r.out.find("divided by a whole number") != std::string::npos, r.out);
+  BOOST_TEST(fs::is_empty(tmp.path()));
+}
+
+BOOST_AUTO_TEST_SUITE_END()

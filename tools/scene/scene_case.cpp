@@ -1,0 +1,100 @@
+#include "tools/scene/scene_case.hpp"
+
+#include <sstream>
+
+#include "model/coupling/draught.hpp"
+#include "tools/scene/wave_case.hpp"
+
+namespace stoneskip {
+
+namespace {
+
+WaterScene read_water(TomlTable w, TomlTable& top) {
+  WaterScene scene;
+  scene.origin_x_m = w.number_or("origin_x_m", 0.0);
+  scene.origin_y_m = w.number_or("origin_y_m", 0.0);
+  if (auto i = w.maybe_table("initial")) scene.initial = read_disturbance(*i);
+  const std::string coupling = w.string_or("coupling", to_string(scene.coupling));
+  if (!parse_coupling(coupling, scene.coupling)) w.fail("coupling", "'" + coupling + "' is not one of none, one_way, two_way");
+  const long long samples = w.integer_or("draught_samples", scene.draught_samples);
+  if (samples < 1 || samples > 4096) w.fail("draught_samples", "must be in [1, 4096]");
+  scene.draught_samples = static_cast<int>(samples);
+  // How the field is computed (model/water/height_field.hpp); read before read_height_field,
+  // which finishes the table (the keys read here count as known there).
+  HeightFieldOptions how;
+  const std::string precision = w.string_or("precision", to_string(how.precision));
+  if (!parse_precision(precision, how.precision)) w.fail("precision", "'" + precision + "' is not one of float64, float32");
+  const long long threads = w.integer_or("threads", how.threads);
+  if (threads < 1 || threads > 64) w.fail("threads", "must be in [1, 64]");
+  const std::string mode = w.string_or("mode", to_string(how.mode));
+  if (!parse_step_mode(mode, how.mode)) w.fail("mode", "'" + mode + "' is not one of full, active_tiles");
+  const long long tile = w.integer_or("tile_cells", how.tiles.tile_cells);
+  if (tile < 1 || tile > 4096) w.fail("tile_cells", "must be in [1, 4096]");
+  how.tiles.epsilon_m = w.number_or("epsilon_m", how.tiles.epsilon_m);
+  w.require_non_negative("epsilon_m", how.tiles.epsilon_m);
+  TomlTable checked = w;  // for errors naming keys after read_height_field has finished w
+  scene.field = read_height_field(w, top, nullptr);
+  scene.field.precision = how.precision;
+  scene.field.threads = static_cast<int>(threads);
+  scene.field.mode = how.mode;
+  scene.field.tiles.tile_cells = static_cast<int>(tile);
+  scene.field.tiles.epsilon_m = how.tiles.epsilon_m;
+  if (scene.coupling == Coupling::two_way) {
+    // Spec §2.4: under the stone the Courant number is √2 σ; refused rather than run unstable.
+    const double sigma = scene.field.courant(), limit = coupled_courant_limit(scene.field.stencil);
+    if (sigma > limit) {
+      std::ostringstream m;
+      m.precision(4);
+      m << "σ = cΔt/d = " << sigma << " is above the coupled stability limit " << limit << " of " << scene.field.stencil.name
+        << " under the stone (spec §2.4: free limit/√2): take dt_s ≤ " << limit * scene.field.cell_m / scene.field.wave_speed_m_s
+        << " s, or coupling = \"one_way\"";
+      checked.fail("dt_s", m.str());
+    }
+  }
+  return scene;
+}
+
+}  // namespace
+
+void read_scene_keys(TomlTable& top, std::optional<WaterScene>& water, SceneFrames& frames) {
+  if (auto w = top.maybe_table("water")) water = read_water(*w, top);
+  if (auto s = top.maybe_table("scene")) {
+    frames.frame_rate_hz = s->number_or("frame_rate_hz", frames.frame_rate_hz);
+    s->require_in("frame_rate_hz", frames.frame_rate_hz, 1e-3, 1e5);
+    if (auto d = s->maybe_number("duration_s")) {
+      s->require_positive("duration_s", *d);
+      if (*d * frames.frame_rate_hz < 1) s->fail("duration_s", "shorter than one frame (1/frame_rate_hz)");
+      if (*d * frames.frame_rate_hz > 1e8) s->fail("duration_s", "more than 1e8 frames");
+      frames.duration_s = *d;
+    }
+    s->finish();
+  }
+}
+
+std::string scene_settings_toml(const std::optional<WaterScene>& water, const SceneFrames& frames) {
+  std::ostringstream s;
+  s.precision(12);
+  if (water) {
+    const HeightFieldOptions& f = water->field;
+    s << "\n[water]\ncoupling = \"" << to_string(water->coupling) << "\"\ndraught_samples = " << water->draught_samples
+      << "\nstencil = \"" << f.stencil.name << "\"  # weights × 1/d²: " << f.stencil.centre << ", " << f.stencil.orth << ", "
+      << f.stencil.diag << "\nnx = " << f.nx << "\nny = " << f.ny << "\ncell_m = " << f.cell_m
+      << "\nwave_speed_m_s = " << f.wave_speed_m_s << "\ndamping_per_s = " << f.damping_per_s << "\nboundary = \""
+      << to_string(f.boundary) << "\"\ndt_s = " << f.dt_s << "  # σ = " << f.courant() << "\nprecision = \""
+      << to_string(f.precision) << "\"\nthreads = " << f.threads << "\nmode = \"" << to_string(f.mode)
+      << "\"\ntile_cells = " << f.tiles.tile_cells << "\nepsilon_m = " << f.tiles.epsilon_m << "\norigin_x_m = " << water->origin_x_m
+      << "\norigin_y_m = " << water->origin_y_m << "\n";
+    if (water->initial) {
+      const Disturbance& d = *water->initial;
+      s << "\n[water.initial]\nkind = \"" << to_string(d.kind) << "\"\namplitude_m = " << d.amplitude_m << "\nwidth_m = " << d.width_m
+        << "\nx_m = " << d.x_m << "\ny_m = " << d.y_m << "\nradius_m = " << d.radius_m << "\nangle_deg = " << d.angle_deg
+        << "\nwavelength_m = " << d.wavelength_m << "\n";
+    }
+  }
+  s << "\n[scene]\nframe_rate_hz = " << frames.frame_rate_hz << "\n";
+  if (frames.duration_s) s << "duration_s = " << *frames.duration_s << "\n";
+  else s << "# duration_s: the stone's t_max_s\n";
+  return s.str();
+}
+
+}  // namespace stoneskip

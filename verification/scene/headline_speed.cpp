@@ -1,0 +1,133 @@
+#include "verification/scene/headline_speed.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cstdlib>
+#include <stdexcept>
+#include <thread>
+
+#include "solvers/realtime/clocks.hpp"
+#include "verification/stones/parallel_runs.hpp"
+
+namespace stoneskip {
+
+bool HeadlineSpeedOptions::is_valid(std::string* why) const {
+  auto fail = [&](const std::string& w) {
+    if (why) *why = w;
+    return false;
+  };
+  std::string w;
+  if (!scene.valid(&w)) return fail("scene: " + w);
+  if (scene_repeats < 1 || sweep.repeats < 1) return fail("repeats must be >= 1");
+  if (many_threads < 1) return fail("many_threads must be >= 1");
+  if (stencil_small_n < 8 || stencil_large_n < 8) return fail("stencil grids must be >= 8");
+  if (sweep.spins_rev_s.empty() || sweep.attack_angles_deg.empty()) return fail("the sweep needs spins and attack angles");
+  if (sweep.workers < 1) return fail("sweep workers must be >= 1");
+  return true;
+}
+
+namespace {
+
+double load_average() {
+  double l[1];
+  return getloadavg(l, 1) == 1 ? l[0] : -1;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+SceneSpeed measure_scene(const SceneOptions& base, int threads, int repeats, ProgressTicker& ticker) {
+  SceneSpeed s;
+  s.threads = threads;
+  SceneOptions o = base;
+  if (o.water) o.water->field.threads = threads;
+  for (int k = 0; k < repeats; ++k) {
+    SceneSummary r = run_scene(o);
+    s.frames = r.frames;
+    s.wall_s.push_back(r.wall_s);
+    if (k == 0 || r.cpu_s < s.best_cpu_s) s.best_cpu_s = r.cpu_s;
+    if (k == 0 || r.wall_s < s.best_wall_s) {
+      s.best_wall_s = r.wall_s;
+      s.best = std::move(r);
+    }
+    ticker.tick();
+  }
+  s.median_wall_s = median(s.wall_s);
+  return s;
+}
+
+SweepSpeed measure_sweep(const SweepSpeedOptions& o, ProgressTicker& ticker) {
+  std::vector<ThrowProblem> throws;
+  for (double spin : o.spins_rev_s)
+    for (double attack : o.attack_angles_deg) {
+      ThrowParameters tp = o.base.parameters;
+      tp.spin_rev_s = spin;
+      tp.attack_angle_deg = attack;
+      throws.push_back(with_parameters(o.base, tp));
+    }
+  SolverChoice solver = realtime_choice(o.base.realtime);
+  solver.realtime.record_trajectory = false;  // a sweep needs the counts, not the paths
+  SweepSpeed s;
+  s.throws = static_cast<long>(throws.size());
+  s.workers = o.workers;
+  std::vector<int> bounces(throws.size());
+  std::vector<double> cpu(throws.size());
+  for (int k = 0; k < o.repeats; ++k) {
+    ParallelOptions po;
+    po.workers = o.workers;
+    const WallTimer wall;
+    parallel_for(
+        throws.size(),
+        [&](std::size_t i) {
+          const ThrowResult r = solve(throws[i], solver);
+          bounces[i] = r.bounces;
+          cpu[i] = r.stats.cpu_s;
+        },
+        po);
+    const double w = wall.seconds();
+    s.wall_s.push_back(w);
+    if (k == 0 || w < s.best_wall_s) {
+      s.best_wall_s = w;
+      s.cpu_s = 0;
+      for (double c : cpu) s.cpu_s += c;
+    }
+    ticker.tick();
+  }
+  for (int b : bounces) {
+    if (b < 0) continue;
+    if (static_cast<std::size_t>(b) >= s.bounce_histogram.size()) s.bounce_histogram.resize(b + 1, 0);
+    ++s.bounce_histogram[b];
+  }
+  return s;
+}
+
+}  // namespace
+
+HeadlineSpeed measure_headline_speed(const HeadlineSpeedOptions& o, const ProgressFactory& progress) {
+  std::string why;
+  if (!o.is_valid(&why)) throw std::invalid_argument("headline speed: " + why);
+  HeadlineSpeed h;
+  h.cores = static_cast<int>(std::thread::hardware_concurrency());
+  h.load_before = load_average();
+  auto ticker = start_progress(progress, "bench", static_cast<std::size_t>(2 * o.scene_repeats + 2 + o.sweep.repeats));
+  h.scene_one = measure_scene(o.scene, 1, o.scene_repeats, *ticker);
+  h.scene_many = measure_scene(o.scene, o.many_threads, o.scene_repeats, *ticker);
+  ThroughputOptions t = o.stencil;
+  t.threads = 1;
+  t.n = o.stencil_small_n;
+  h.stencil_small = measure_stencil_throughput(t);
+  ticker->tick();
+  t.n = o.stencil_large_n;
+  h.stencil_large = measure_stencil_throughput(t);
+  ticker->tick();
+  h.per_cell_ratio = h.stencil_large.cells_per_s > 0 ? h.stencil_small.cells_per_s / h.stencil_large.cells_per_s : 0;
+  h.sweep = measure_sweep(o.sweep, *ticker);
+  h.load_after = load_average();
+  return h;
+}
+
+}  // namespace stoneskip

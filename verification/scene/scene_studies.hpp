@@ -1,0 +1,92 @@
+#pragma once
+// The scene studies (issue 9, item 9): every question the scene report answers, as a function
+// from settings (cases/studies/scene*.toml) to findings (verification/study/record.hpp), section
+// by section:
+//   settings     the scenes studied and the settings;
+//   coupling     two-way against one-way against still water on each shipped throw: contacts,
+//                bounces, first touches, and why they differ (the draught, the depression under
+//                the stone, the contact's duration against footprint/c);
+//   stability    the coupled limit of spec §2.4 on either side (a held stone);
+//   convergence  the forced leapfrog against the forced spectral reference (spec §2.5);
+//   rings        a bounce's ring speed against c less the scheme's dispersion;
+//   shortcuts    each way of computing less (no field, active tiles, float32, one draught sample,
+//                the contact step only near the water): its error and the time it saves;
+//   speed        the headline speed figures against issue 9's targets;
+//   frames       the most telling still of each scene.
+// Each section's record holds the numbers, tables, verdicts and computed reasons the report
+// formats (reports/scene/); nothing in the report decides a verdict.
+#include <string>
+#include <vector>
+
+#include "solvers/scene/coupled_scene.hpp"
+#include "verification/scene/coupled_stability.hpp"
+#include "verification/scene/headline_speed.hpp"
+#include "verification/scene/ring_speed.hpp"
+#include "verification/scene/scene_still.hpp"
+#include "verification/study/study_sink.hpp"
+#include "verification/waves/forced_convergence.hpp"
+
+namespace stoneskip {
+
+struct SceneStudyCase {
+  std::string name;   // [a-z0-9_], e.g. "seed_8ms"
+  std::string title;
+  std::string file;   // where it came from (for the report's words)
+  SceneOptions scene; // as the case says (two-way for the shipped scenes)
+};
+
+struct SceneCouplingOptions {
+  double time_tolerance_s = 1e-4;   // a contact moved by less is "no visible change"
+};
+
+struct SceneConvergenceOptions {
+  std::vector<std::string> stencils{"five_point", "nine_point_half", "nine_point_isotropic", "paper_eq11"};
+  ForcedConvergenceOptions forced;
+};
+
+struct SceneShortcutOptions {
+  std::string case_name;                          // which scene (default: the first)
+  std::vector<double> epsilons_m{1e-7, 1e-6, 1e-5};  // active tiles with ε > 0
+  int tile_cells = 32;
+  int repeats = 3;                                // timed runs per variant (the least is kept)
+  long checkpoint_every = 30;                     // frames between field comparisons
+  double field_tolerance = 1e-3;                  // largest |Δz| / largest |z| called "within tolerance"
+  double time_tolerance_s = 1e-4;                 // largest contact-time change called "within tolerance"
+};
+
+struct SceneSpeedOptions {
+  HeadlineSpeedOptions headline;                  // its scene is the first case's unless set
+  double scene_fps_target = 3000, bandwidth_fraction_target = 0.9, per_cell_ratio_target = 2, throws_per_s_target = 1000;
+};
+
+struct SceneStudiesOptions {
+  std::string preset = "full";
+  std::vector<SceneStudyCase> cases;
+  double duration_cap_s = 0;                      // > 0: every scene cut to this (quick presets)
+  SceneCouplingOptions coupling;
+  CoupledStabilityOptions stability;
+  SceneConvergenceOptions convergence;
+  std::string rings_case;                         // default: the first case
+  RingSpeedOptions rings;
+  SceneShortcutOptions shortcuts;
+  SceneSpeedOptions speed;
+  StillFrameOptions frames;
+  double stability_growth_tolerance = 1e-3;
+  bool valid(std::string* why) const;
+};
+
+// The sections in order, each stored in the sink as it finishes (names: "settings", "coupling",
+// "stability", "convergence", "rings", "shortcuts", "speed", "frames"), and the report's summary
+// record.
+Record run_scene_studies(const SceneStudiesOptions& options, StudySink& sink);
+
+Record scene_settings_findings(const SceneStudiesOptions& o);
+Record scene_coupling_findings(const SceneStudiesOptions& o, const ProgressFactory& progress);
+Record scene_stability_findings(const SceneStudiesOptions& o);
+Record scene_convergence_findings(const SceneStudiesOptions& o, const ProgressFactory& progress);
+Record scene_rings_findings(const SceneStudiesOptions& o);
+Record scene_shortcuts_findings(const SceneStudiesOptions& o, const ProgressFactory& progress);
+Record scene_speed_findings(const SceneStudiesOptions& o, const ProgressFactory& progress);
+Record scene_frames_findings(const SceneStudiesOptions& o, const ProgressFactory& progress);
+
+}  // namespace stoneskip
