@@ -171,6 +171,12 @@ const std::map<std::string, Rule>& rules() {
          return std::string(in.number("realtime_bounces") == in.number("reference_bounces") ? "same bounce count"
                                                                                           : "different bounce counts");
        }},
+      {"reference_resolves",
+       [](const Record& in) {
+         return std::string(in.number("margin") * in.number("reference_error_m") <= in.number("smallest_error_m")
+                                ? "the reference resolves the errors"
+                                : "the reference's own error is too large to measure the smallest error");
+       }},
       {"bounce_spread",
        [](const Record& in) {
          return std::string(in.number("bounces_low") == in.number("bounces_high") ? "decided by the capture"

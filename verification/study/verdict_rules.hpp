@@ -36,6 +36,9 @@
 //   shortcut             field_relative, start_change_s, count_change, field_tolerance, time_tolerance_s →
 //                        exact | within tolerance | beyond tolerance
 //   speed_target         value, target → meets the target | misses the target
+//   reference_resolves   reference_error_m, smallest_error_m, margin → the reference resolves the errors
+//                        (margin · reference error ≤ smallest error) | the reference's own error is too
+//                        large to measure the smallest error
 //   power_law_exponent   valid, exponent, exponent_low, exponent_high, points, expected, tolerance →
 //                        too few points to fit | consistent with the expected exponent |
 //                        excludes the expected exponent | exponent not established
