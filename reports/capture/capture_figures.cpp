@@ -407,4 +407,49 @@ std::optional<Figure> capture_bounce_figure(const std::string& key, const Record
   return f;
 }
 
+std::optional<Figure> capture_scene_stone_figure(const std::string& key, const Record& c) {
+  if (!c.has_child("scene")) return std::nullopt;
+  const Record& st = c.at("scene").at("stone");
+  Figure f = make(key, "scene_stone",
+                  "The throw through the coupled scene: height of the stone's centre against distance for the scene's "
+                  "stone (real-time model on the live water), the same model on still water and the reference (CVODE, "
+                  "still water); points on the water: where each contact began",
+                  1100, 480);
+  std::ostringstream s;
+  s << "set grid\nset key top right\nset xlabel 'distance (m)'\nset ylabel 'height of the centre (m)'\n"
+    << "plot 0 w l lw 1.5 lc rgb '#3060c0' t 'still water level'";
+  for (const auto& [part, colour, style, title] :
+       {std::tuple{"scene_path", kRealtime, "lw 3", "scene (real-time model, live water)"},
+        std::tuple{"still_path", kAxis[0], "lw 1.5", "real-time model, still water"},
+        std::tuple{"reference_path", kReference, "lw 1.5 dt 2", "reference (CVODE, still water)"}}) {
+    add(f, part, pick(st.table(part), {"x_m", "z_m"}));
+    s << ", " << dat(f, part) << " u 1:2 w l " << style << " lc rgb '" << colour << "' t " << gnuplot_quote(title);
+  }
+  add(f, "contacts", pick(st.table("contacts"), {"scene_exit_x_m", "reference_exit_x_m"}));
+  s << ", " << dat(f, "contacts") << " u 1:(0) w p pt 6 ps 1.4 lc rgb '" << kRealtime << "' t 'contact ends (scene)', "
+    << dat(f, "contacts") << " u 2:(0) w p pt 2 ps 1.4 lc rgb '" << kReference << "' t 'contact ends (CVODE)'\n";
+  f.script = s.str();
+  return f;
+}
+
+std::optional<Figure> capture_scene_wave_figure(const std::string& key, const Record& c) {
+  if (!c.has_child("scene") || !c.at("scene").at("waves").flag("compared")) return std::nullopt;
+  const Record& w = c.at("scene").at("waves");
+  Figure f = make(key, "scene_waves",
+                  "The waves the stone made, along the grid row through its first contact at the scene's last frame: "
+                  "the scene, the forced leapfrog driven by the reference's draught, and the forced spectral reference "
+                  "(the stencil's exact semi-discrete solution, and the continuum one)",
+                  1100, 520);
+  add(f, "profile", w.table("profile"));
+  const std::string d = dat(f, "profile");
+  std::ostringstream s;
+  s << "set grid\nset key outside right top\nset xlabel 'x (m)'\nset ylabel 'surface height (mm)'\n"
+    << "plot " << d << " u 1:($2*1e3) w l lw 3 lc rgb '" << kRealtime << "' t 'scene (two-way)', " << d
+    << " u 1:($3*1e3) w l lw 2 lc rgb '" << kAxis[0] << "' t 'leapfrog, reference draught', " << d
+    << " u 1:($4*1e3) w l lw 1.5 dt 2 lc rgb '" << kAxis[2] << "' t 'semi-discrete reference', " << d
+    << " u 1:($5*1e3) w l lw 1.5 dt 3 lc rgb '" << kReference << "' t 'continuum reference'\n";
+  f.script = s.str();
+  return f;
+}
+
 }  // namespace stoneskip

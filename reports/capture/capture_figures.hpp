@@ -29,5 +29,11 @@ std::optional<Figure> capture_room_and_water_figure(const std::string& key, cons
 std::optional<Figure> capture_trajectory_figure(const std::string& key, const Record& capture);
 // Bounce counts of the ensemble, the nominal throw's counts marked.
 std::optional<Figure> capture_bounce_figure(const std::string& key, const Record& capture);
+// The throw through the coupled scene (child `scene`, verification/captures/capture_scene_findings.hpp):
+// height against distance of the scene's stone, the stepper on still water and CVODE, contacts
+// marked; and the surface along the grid row through the first contact at the scene's last frame:
+// the scene, the leapfrog driven by CVODE's draught, the semi-discrete and the continuum references.
+std::optional<Figure> capture_scene_stone_figure(const std::string& key, const Record& capture);
+std::optional<Figure> capture_scene_wave_figure(const std::string& key, const Record& capture);
 
 }  // namespace stoneskip

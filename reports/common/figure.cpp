@@ -13,6 +13,21 @@ namespace stoneskip {
 
 namespace fs = std::filesystem;
 
+// Whole figures stored under a group (the sweep page keeps its figures so).
+void store_figure(const H5Group& figures_group, const Figure& fig) {
+  H5Group g = figures_group.create_group(fig.name);
+  g.set_attr("title", fig.title);
+  g.set_attr("gnuplot", fig.script);
+  g.set_attr("width_px", static_cast<long long>(fig.width_px));
+  g.set_attr("height_px", static_cast<long long>(fig.height_px));
+  std::vector<std::string> order;
+  for (const auto& [name, table] : fig.tables) {
+    g.write_table(name, table);
+    order.push_back(name);
+  }
+  g.write_strings("table_order", order);
+}
+
 bool gnuplot_available() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
 
 namespace {

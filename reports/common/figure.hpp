@@ -21,6 +21,9 @@ struct Figure {
   std::string data_path;  // where its data lie in data.h5 (e.g. "/sections/convergence"), for the caption
 };
 
+// Whole figures stored under /figures/<name> (the sweep page uses it).
+void store_figure(const H5Group& figures_group, const Figure& fig);
+
 struct RenderSummary {
   int rendered = 0;
   std::vector<std::string> failures;  // "name: gnuplot said ..."

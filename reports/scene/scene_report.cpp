@@ -1,5 +1,6 @@
 #include "reports/scene/scene_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 

@@ -2,6 +2,7 @@
 //
 //   stoneskip capture validate FILE... [--json] [--out DIR]    verdicts; --out: the captures report
 //   stoneskip capture throw FILE --solver realtime|reference|both [--json] [--out FILE.h5]
+//   stoneskip capture throw FILE --scene SCENE [--json]          through the coupled scene, both references
 //   stoneskip capture convert FILE --out TRACE.csv               any format → stoneskip trace CSV
 //   stoneskip capture synthesize --out DIR                       the shipped synthetic captures + truth
 //   stoneskip capture columns                                    the csv reader's recognised column names
@@ -10,6 +11,7 @@
 //   stoneskip capture validate cases/captures/*.log cases/captures/*.evemu --out out/captures
 //   stoneskip capture validate cases/captures/hard_sidearm_clipped.log --json --no-reference
 //   stoneskip capture throw cases/captures/gentle_sidearm.log --solver both
+//   stoneskip capture throw cases/captures/skip_12ms_14revs.log --scene cases/captures/pond_two_way.toml
 // Common options: --format NAME (force a reader), --case FILE (stone and water, default
 // cases/paper_8ms_spin.toml), --mount key=value (mounting.hpp), --thrower key=value
 // (virtual_thrower.hpp), --clock MODEL, --button A|B, --saturation-g G, --max-accel-g G, --members N,
@@ -18,6 +20,11 @@
 // with one findings section per capture and an index, DIR/index.md and DIR/figures/ rendered from
 // it alone (`stoneskip report render DIR` rebuilds them), built in DIR.partial and moved into place
 // when whole. A file that cannot be read then stops the report before any work.
+// --scene SCENE (throw, validate): a stone case with [water] and [scene] (cases/README.md, "A stone on
+// live water"; --set applies to it too): the capture's virtual stone is thrown into that scene and
+// compared with the CVODE reference (the stone) and the forced spectral reference driven by the
+// CVODE trajectory's draught (the waves; verification/captures/capture_scene.hpp). With validate
+// --out, each usable capture's section shows both comparisons.
 // Exit status: 0 done (whatever the verdicts, unless --strict and one is unusable), 1 --strict
 // with an unusable capture or a failed solve, 2 bad input.
 #include <cmath>
@@ -41,7 +48,9 @@
 #include "tools/io/progress.hpp"
 #include "tools/scene/stone_case.hpp"
 #include "tools/scene/throw_output.hpp"
+#include "tools/scene/scene_throw.hpp"
 #include "verification/captures/capture_findings.hpp"
+#include "verification/captures/capture_scene_findings.hpp"
 #include "verification/study/study_sink.hpp"
 
 namespace stoneskip::cli {
@@ -71,6 +80,7 @@ struct CaptureArgs {
   bool no_simulate = false;
   bool strict = false;
   bool progress = false;
+  std::string scene;
 };
 
 void add_read(CLI::App* cmd, CaptureArgs& a) {
@@ -168,6 +178,7 @@ std::string command_line(const CaptureArgs& a) {
   s += b;
   if (a.no_reference) s += " --no-reference";
   if (a.no_simulate) s += " --no-simulate";
+  if (!a.scene.empty()) s += " --scene " + a.scene;
   return s;
 }
 
@@ -223,9 +234,80 @@ void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
   }
 }
 
+// The scene case of --scene, checked before any work: it must have a water field.
+std::optional<StoneCase> load_scene_case(const CaptureArgs& a) {
+  if (a.scene.empty()) return std::nullopt;
+  StoneCase c = load_stone_case(a.scene, a.sets);
+  if (!c.water || c.water->coupling == Coupling::none)
+    throw_input_error(a.scene, 0, "water", "--scene needs a case with [water] and a coupling other than none");
+  return c;
+}
+
+// The capture's virtual stone thrown into the scene case, against both references.
+Record scene_comparison(const StoneCase& scene, const CaptureAnalysis& an) {
+  StoneCase c = scene;
+  c.initial = capture_initial_state(c.stone, an.nominal);
+  CaptureSceneOptions o;
+  o.scene = scene_options(c, SceneEnd::at_duration);
+  o.reference = c.reference;
+  std::string why;
+  if (!o.valid(&why)) throw_input_error(scene.file, 0, "", why);
+  return capture_scene_findings(compare_capture_scene(o), o, scene.file);
+}
+
+std::string verdict_line(const Record& v) { return v.text("verdict") + " — " + v.text("reason"); }
+
+void print_scene(const Record& r) {
+  const Record& st = r.at("stone");
+  const Record& w = r.at("waves");
+  std::printf("scene %s: stone %s\n", r.at("settings").text("case_file").c_str(), verdict_line(st.at("agreement")).c_str());
+  if (!w.flag("compared")) {
+    std::printf("waves not compared: %s\n", w.text("not_compared").c_str());
+    return;
+  }
+  std::printf("waves at %.4g s, largest reference height %.3g mm; max differences (mm): total %.3g, model %.3g, "
+              "time %.3g, space %.3g, reference quadrature %.3g\nreference: %s\n",
+              w.number("t_s"), 1e3 * w.number("amplitude_m"), 1e3 * w.number("total_m"), 1e3 * w.number("model_m"),
+              1e3 * w.number("time_m"), 1e3 * w.number("space_m"), 1e3 * w.number("quadrature_m"),
+              verdict_line(w.at("reference")).c_str());
+}
+
+nlohmann::json scene_json(const Record& r) {
+  const Record& st = r.at("stone");
+  const Record& w = r.at("waves");
+  nlohmann::json j;
+  j["case_file"] = r.at("settings").text("case_file");
+  j["coupling"] = r.at("settings").text("coupling");
+  nlohmann::json s;
+  for (const char* k : {"scene_bounces", "still_bounces", "reference_bounces", "max_start_difference_s",
+                        "max_end_difference_s", "still_max_start_difference_s"})
+    s[k] = st.number(k);
+  s["verdict"] = st.at("agreement").text("verdict");
+  s["reason"] = st.at("agreement").text("reason");
+  const Table& t = st.table("contacts");
+  for (std::size_t i = 0; i < t.rows(); ++i) {
+    nlohmann::json c;
+    for (const auto& col : t.columns) c[col] = t.column(col)[i];
+    s["contacts"].push_back(c);
+  }
+  j["stone"] = s;
+  nlohmann::json wj{{"compared", w.flag("compared")}};
+  if (!w.flag("compared")) {
+    wj["not_compared"] = w.text("not_compared");
+  } else {
+    for (const char* k : {"t_s", "amplitude_m", "total_m", "model_m", "time_m", "space_m", "quadrature_m"}) wj[k] = w.number(k);
+    wj["verdict"] = w.at("reference").text("verdict");
+    wj["reason"] = w.at("reference").text("reason");
+  }
+  j["waves"] = wj;
+  return j;
+}
+
 void validate(const CaptureArgs& a) {
   std::optional<StoneCase> c;
   if (!a.no_simulate) c = load_stone_case(a.case_file, a.sets);
+  const std::optional<StoneCase> scene = load_scene_case(a);
+  if (scene && a.no_simulate) throw InputError("capture validate: --scene and --no-simulate cannot be given together");
   // 1. Every file read first: a report holds every capture asked for, or there is none. Without
   //    --out one bad file does not stop the others; it is reported and the exit status says so.
   std::vector<std::optional<Trace>> traces;
@@ -292,7 +374,12 @@ void validate(const CaptureArgs& a) {
       } else {
         print_verdict(an, c ? &sim : nullptr);
       }
-      return capture_findings(an, sim, ctx);
+      Record r = capture_findings(an, sim, ctx);
+      if (scene && an.can_throw()) {
+        r.add_child("scene", scene_comparison(*scene, an));
+        if (!a.json) print_scene(r.at("scene"));
+      }
+      return r;
     };
     if (!build) {
       run();
@@ -316,6 +403,8 @@ void validate(const CaptureArgs& a) {
 }
 
 void throw_capture(const CaptureArgs& a) {
+  const std::optional<StoneCase> scene = load_scene_case(a);
+  if (scene && !a.out.empty()) throw InputError("capture throw: --out is not written with --scene (use capture validate --scene --out DIR for the report)");
   StoneCase c = load_stone_case(a.case_file, a.sets);
   if (!a.out.empty()) AtomicOutput check(a.out);
   const Trace trace = read_capture(a.files.front(), read_options(a));
@@ -324,6 +413,19 @@ void throw_capture(const CaptureArgs& a) {
   const CaptureAnalysis an = analyse_capture(trace, o);
   if (!an.can_throw())
     throw_input_error(a.files.front(), 0, "", std::string("unusable capture: ") + (an.reasons.empty() ? "" : an.reasons.front()));
+  if (scene) {
+    const Record r = scene_comparison(*scene, an);
+    if (a.json) {
+      nlohmann::json j = capture_json(an, nullptr);
+      add_details(j, an);
+      j["scene"] = scene_json(r);
+      std::cout << j.dump(2) << std::endl;
+    } else {
+      print_verdict(an, nullptr);
+      print_scene(r);
+    }
+    return;
+  }
   c.initial = capture_initial_state(c.stone, an.nominal);
   c.throw_from_parameters = false;
   c.title = "capture " + a.files.front();
@@ -472,6 +574,7 @@ void add_capture(CLI::App& app) {
   v->add_flag("--no-simulate", a->no_simulate, "Skip the solvers (no case file needed)");
   v->add_flag("--strict", a->strict, "Exit with status 1 if a capture is unusable");
   v->add_flag("--progress", a->progress, "Show the ensemble's progress on stderr");
+  v->add_option("--scene", a->scene, "Also throw each usable capture into this scene case against both references (its report section shows them)");
   add_common(v, *a);
   add_case(v, *a);
   v->callback([a] { validate(*a); });
@@ -481,6 +584,7 @@ void add_capture(CLI::App& app) {
   t->add_option("--solver", a->solver, "realtime, reference or both (default)")->check(CLI::IsMember({"realtime", "reference", "both"}));
   t->add_flag("--json", a->json, "Print one JSON object");
   t->add_option("--out", a->out, "Write the trajectories and the case to this HDF5 file");
+  t->add_option("--scene", a->scene, "Throw it into this scene case ([water], [scene]) against the CVODE and the forced spectral references");
   add_common(t, *a);
   add_case(t, *a);
   t->callback([a] { throw_capture(*a); });

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "tools/io/input_error.hpp"
 #include "tools/scene/case_problem.hpp"
 #include "tools/scene/scene_throw.hpp"
 #include "tools/scene/study_keys.hpp"
