@@ -413,7 +413,7 @@ std::optional<Figure> capture_scene_stone_figure(const std::string& key, const R
   Figure f = make(key, "scene_stone",
                   "The throw through the coupled scene: height of the stone's centre against distance for the scene's "
                   "stone (real-time model on the live water), the same model on still water and the reference (CVODE, "
-                  "still water); points on the water: where each contact began",
+                  "still water); points on the water: where each contact ended",
                   1100, 480);
   std::ostringstream s;
   s << "set grid\nset key top right\nset xlabel 'distance (m)'\nset ylabel 'height of the centre (m)'\n"

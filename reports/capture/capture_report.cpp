@@ -159,7 +159,7 @@ void release_part(SectionWriter& w, const std::string& key, const Record& c) {
   const Record& s = c.at("settings");
   w.subheading("The release state, as measured in the room and as mapped to the virtual stone");
   if (!th.flag("computed")) {
-    w.text("No release state: the capture is unusable (the reasons are in its verdict above).");
+    w.text("No release state: the capture's verdict is " + c.at("verdict").text("verdict") + " (its reasons are above).");
     return;
   }
   w.text("The intervals join the nominal estimate with the " + fmt(s.number("interval_low_percent"), 3) + "–" +
@@ -218,7 +218,8 @@ void solvers_part(SectionWriter& w, const std::string& key, const Record& c) {
   w.subheading("What the solvers make of it");
   if (!sim.flag("ran")) {
     w.text(c.at("throw").flag("computed") ? "The solvers did not run (switched off)."
-                                          : "The solvers did not run: the capture is unusable.");
+                                          : "The solvers did not run: the capture's verdict is " +
+                                                c.at("verdict").text("verdict") + ".");
     return;
   }
   w.text("The stone and the water come from " + code(sim.text("case_file")) + " (" + sim.text("stone_description") + "; " +
@@ -258,8 +259,9 @@ void scene_part(SectionWriter& w, const std::string& key, const Record& c) {
             fmt(s.number("wave_speed_m_s"), 3) + " m/s, μ = " + fmt(s.number("damping_per_s"), 3) + " /s, Δt = " +
             fmt(1e3 * s.number("dt_s"), 3) + " ms (σ = " + fmt(s.number("courant"), 3) + "), " +
             fmt(s.number("draught_samples")) + " draught samples per water step";
-  w.text("The capture's virtual stone thrown into the scene of " + code(s.text("case_file")) + " (coupling " +
-         code(s.text("coupling")) + "; " + water + "; " + fmt(s.number("frame_rate_hz"), 4) + " frames/s for " +
+  w.text("The capture's virtual stone thrown into the scene of " + code(s.text("case_file")) + " (" +
+         s.text("stone_description") + "; " + s.text("convention") + " convention; coupling " + code(s.text("coupling")) +
+         "; " + water + "; " + fmt(s.number("frame_rate_hz"), 4) + " frames/s for " +
          fmt(s.number("duration_s"), 4) + " s). The stone is compared with the CVODE reference on still water (rtol " +
          fmt(s.number("reference_rtol"), 3) + ") contact by contact, beside the same real-time model on still water: "
          "the scene against still water is what the live surface changes, still water against CVODE is the model's "
@@ -284,8 +286,8 @@ void scene_part(SectionWriter& w, const std::string& key, const Record& c) {
   } else {
     w.text("The waves at " + fmt(wv.number("t_s"), 4) + " s (" + fmt(wv.number("steps")) +
            " water steps) against the forced spectral reference (spec §2.5) driven by the draught of the CVODE "
-           "trajectory against the flat surface, evaluated with " + fmt(wv.number("quadrature_intervals")) + " × " +
-           fmt(s.number("quadrature_nodes")) + " Gauss–Legendre nodes. Largest differences over the grid (the largest "
+           "trajectory against the flat surface, evaluated on " + fmt(wv.number("quadrature_intervals"), 9) +
+           " sub-intervals of " + fmt(s.number("quadrature_nodes")) + " Gauss–Legendre nodes each. Largest differences over the grid (the largest "
            "height of the reference is " + fmt(1e3 * wv.number("amplitude_m"), 3) + " mm):");
     MarkdownTable e({"part", "compares", "max difference (mm)"});
     e.row({"total", "scene − continuum reference", fmt(1e3 * wv.number("total_m"), 3)})
@@ -301,7 +303,7 @@ void scene_part(SectionWriter& w, const std::string& key, const Record& c) {
     add_figure(w, capture_scene_wave_figure(key, c));
     w.text("Cost: the scene " + fmt(st.number("frames")) + " frames in " + fmt(st.number("scene_cpu_s"), 3) + " s CPU, " +
            fmt(st.number("scene_wall_s"), 3) + " s wall; CVODE " + fmt(st.number("reference_cpu_s"), 3) + " s CPU, " +
-           fmt(st.number("reference_wall_s"), 3) + " s wall; the wave references (" + fmt(wv.number("transforms")) +
+           fmt(st.number("reference_wall_s"), 3) + " s wall; the wave references (" + fmt(wv.number("transforms"), 12) +
            " transforms of b) " + fmt(wv.number("cpu_s"), 3) + " s CPU, " + fmt(wv.number("wall_s"), 3) + " s wall.");
   }
 }

@@ -21,7 +21,7 @@
 // it alone (`stoneskip report render DIR` rebuilds them), built in DIR.partial and moved into place
 // when whole. A file that cannot be read then stops the report before any work.
 // --scene SCENE (throw, validate): a stone case with [water] and [scene] (cases/README.md, "A stone on
-// live water"; --set applies to it too): the capture's virtual stone is thrown into that scene and
+// live water"; --scene-set key=value overrides its keys): the capture's virtual stone is thrown into that scene and
 // compared with the CVODE reference (the stone) and the forced spectral reference driven by the
 // CVODE trajectory's draught (the waves; verification/captures/capture_scene.hpp). With validate
 // --out, each usable capture's section shows both comparisons.
@@ -81,6 +81,7 @@ struct CaptureArgs {
   bool strict = false;
   bool progress = false;
   std::string scene;
+  std::vector<std::string> scene_sets;
 };
 
 void add_read(CLI::App* cmd, CaptureArgs& a) {
@@ -179,6 +180,7 @@ std::string command_line(const CaptureArgs& a) {
   if (a.no_reference) s += " --no-reference";
   if (a.no_simulate) s += " --no-simulate";
   if (!a.scene.empty()) s += " --scene " + a.scene;
+  for (const auto& x : a.scene_sets) s += " --scene-set " + x;
   return s;
 }
 
@@ -237,7 +239,7 @@ void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
 // The scene case of --scene, checked before any work: it must have a water field.
 std::optional<StoneCase> load_scene_case(const CaptureArgs& a) {
   if (a.scene.empty()) return std::nullopt;
-  StoneCase c = load_stone_case(a.scene, a.sets);
+  StoneCase c = load_stone_case(a.scene, a.scene_sets);
   if (!c.water || c.water->coupling == Coupling::none)
     throw_input_error(a.scene, 0, "water", "--scene needs a case with [water] and a coupling other than none");
   return c;
@@ -575,6 +577,7 @@ void add_capture(CLI::App& app) {
   v->add_flag("--strict", a->strict, "Exit with status 1 if a capture is unusable");
   v->add_flag("--progress", a->progress, "Show the ensemble's progress on stderr");
   v->add_option("--scene", a->scene, "Also throw each usable capture into this scene case against both references (its report section shows them)");
+  v->add_option("--scene-set", a->scene_sets, "Override a key of the scene case: section.key=value (repeatable)");
   add_common(v, *a);
   add_case(v, *a);
   v->callback([a] { validate(*a); });
@@ -585,6 +588,7 @@ void add_capture(CLI::App& app) {
   t->add_flag("--json", a->json, "Print one JSON object");
   t->add_option("--out", a->out, "Write the trajectories and the case to this HDF5 file");
   t->add_option("--scene", a->scene, "Throw it into this scene case ([water], [scene]) against the CVODE and the forced spectral references");
+  t->add_option("--scene-set", a->scene_sets, "Override a key of the scene case: section.key=value (repeatable)");
   add_common(t, *a);
   add_case(t, *a);
   t->callback([a] { throw_capture(*a); });

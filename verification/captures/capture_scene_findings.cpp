@@ -23,6 +23,8 @@ Record settings(const CaptureSceneOptions& o, const std::string& case_file) {
   const SceneOptions& s = o.scene;
   r.set("case_file", case_file);
   r.set("coupling", std::string(to_string(s.coupling)));
+  r.set("convention", std::string(to_string(s.environment.convention)));
+  r.set("stone_description", s.stone.description);
   r.set("draught_samples", s.draught_samples);
   r.set("frame_rate_hz", s.frame_rate_hz);
   r.set("duration_s", s.end_s());
@@ -78,8 +80,9 @@ Record stone(const CaptureSceneComparison& c) {
   Record in;
   in.set("realtime_bounces", c.scene.stone.bounces).set("reference_bounces", c.reference.bounces);
   decide_verdict(r, "agreement", "bounce_agreement", in,
-                 "the scene's stone makes " + bounce_words(c.scene.stone.bounces) + ", the CVODE reference on still water " +
-                     bounce_words(c.reference.bounces) + "; the first " + num(double(c.contacts.size())) +
+                 "in the scene's " + num(c.scene.simulated_s) + " s the scene's stone makes " +
+                     bounce_words(c.scene.stone.bounces) + ", the CVODE reference on still water " +
+                     bounce_words(c.reference.bounces) + "; the first " + num(double(c.contacts.size()), 9) +
                      " contact(s) start at most " + num(1e3 * c.max_start_difference_s) + " ms apart (the stepper on "
                      "still water: " + num(1e3 * c.still_max_start_difference_s) + " ms)");
   return r;
@@ -119,7 +122,7 @@ Record waves(const CaptureSceneComparison& c, const CaptureSceneOptions& o) {
   in.set("reference_error_m", w.quadrature_m).set("smallest_error_m", smallest).set("margin", kReferenceMargin);
   decide_verdict(r, "reference", "reference_resolves", in,
                  "the forced spectral reference changes by " + num(w.quadrature_m) + " m when its " +
-                     num(double(w.quadrature_intervals)) + " sub-intervals are halved in number; the smallest error it "
+                     num(double(w.quadrature_intervals), 9) + " sub-intervals are halved in number; the smallest error it "
                      "measures here is " + num(smallest) + " m");
   return r;
 }

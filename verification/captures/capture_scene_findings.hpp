@@ -1,7 +1,7 @@
 #pragma once
 // The findings of a capture's throw through the coupled scene (capture_scene.hpp), stored as the
 // child `scene` of the capture's record (capture_findings.hpp) and rendered by reports/capture:
-//   settings         case_file, coupling, stencil (texts); nx, ny, cell_m, wave_speed_m_s,
+//   settings         case_file, coupling, convention, stone_description, stencil (texts); nx, ny, cell_m, wave_speed_m_s,
 //                    damping_per_s, dt_s, courant, draught_samples, frame_rate_hz, duration_s,
 //                    reference_rtol, reference_output_dt_s, quadrature_intervals, quadrature_nodes
 //   stone            bounces of the scene, the stepper on still water and CVODE; the contacts
