@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -26,6 +27,7 @@ bool CaptureSceneOptions::valid(std::string* why) const {
   if (!(quadrature_interval_s > 0) || !std::isfinite(quadrature_interval_s))
     return fail("quadrature_interval_s must be > 0");
   if (quadrature_nodes < 1 || quadrature_nodes > 32) return fail("quadrature_nodes must be in [1, 32]");
+  if (!(max_reference_cell_transforms > 0)) return fail("max_reference_cell_transforms must be > 0");
   return true;
 }
 
@@ -227,6 +229,20 @@ CaptureSceneComparison compare_capture_scene(const CaptureSceneOptions& o) {
     out.waves_not_compared = "the CVODE reference failed (" + out.reference.outcome_detail + ")";
     return out;
   }
+  const HeightFieldOptions& field = so.water->field;
+  DuhamelQuadrature q;
+  q.nodes = o.quadrature_nodes;
+  q.intervals = std::max(1, static_cast<int>(std::ceil(field_t / o.quadrature_interval_s - 1e-9)));
+  const double work = 2.5 * q.intervals * q.nodes * static_cast<double>(field.nx) * field.ny;
+  if (work > o.max_reference_cell_transforms) {
+    char b[240];
+    std::snprintf(b, sizeof b,
+                  "the references would take %.3g cell-transforms of b (%d sub-intervals of %d nodes on %d × %d cells), "
+                  "more than the limit of %.3g",
+                  work, q.intervals, q.nodes, field.nx, field.ny, o.max_reference_cell_transforms);
+    out.waves_not_compared = b;
+    return out;
+  }
   const CpuTimer cpu;
   const WallTimer wall;
   WaveComparison& w = out.waves;
@@ -234,12 +250,8 @@ CaptureSceneComparison compare_capture_scene(const CaptureSceneOptions& o) {
   w.steps = field_steps;
   w.scene_m = last_field;
   const TrajectoryPose pose(out.reference.trajectory);
-  const HeightFieldOptions& field = so.water->field;
   const DraughtField b = trajectory_draught(so.stone.body_mesh, field, so.water->placement, pose);
   w.prescribed_m = prescribed_forced_leapfrog(field, so.water->initial_m, b, so.draught_samples, w.steps);
-  DuhamelQuadrature q;
-  q.nodes = o.quadrature_nodes;
-  q.intervals = std::max(1, static_cast<int>(std::ceil(w.t_s / o.quadrature_interval_s - 1e-9)));
   w.quadrature_intervals = q.intervals;
   w.semi_discrete_m = spectral(field, SpectralSymbol::stencil, so.water->initial_m, b, q, w.t_s, w.transforms);
   w.continuum_m = spectral(field, SpectralSymbol::continuum, so.water->initial_m, b, q, w.t_s, w.transforms);

@@ -44,6 +44,10 @@ struct CaptureSceneOptions {
   double reference_output_dt_s = 1e-4;   // the CVODE trajectory's sampling, for the draught between samples
   double quadrature_interval_s = 1e-4;   // the Duhamel integral's sub-intervals are at most this long …
   int quadrature_nodes = 4;              // … with this many Gauss–Legendre nodes each
+  // The references take 2.5 · intervals · nodes transforms of b over the grid (fine, coarse,
+  // semi-discrete): beyond this many cell-transforms (about a minute of CPU at 1e9) the waves are
+  // not compared, and `waves_not_compared` says how many it would have taken.
+  double max_reference_cell_transforms = 5e9;
   bool valid(std::string* why = nullptr) const;
 };
 

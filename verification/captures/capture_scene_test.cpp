@@ -158,6 +158,20 @@ BOOST_AUTO_TEST_CASE(skipping_capture_through_the_scene_against_both_references)
   BOOST_TEST(r.at("waves").table("profile").rows() == std::size_t(f.nx));
 }
 
+BOOST_AUTO_TEST_CASE(waves_too_costly_to_reference_are_not_compared_and_say_why) {
+  // Oracle: the work estimate's definition — 2.5 · intervals · nodes · cells: 0.3 s in 1e-4 s
+  // sub-intervals of 4 nodes on 48 × 16 cells is 2.5 · 3000 · 4 · 768 = 2.304e7 cell-transforms.
+  CaptureSceneOptions o = skipping_options(0.3);
+  o.quadrature_interval_s = 1e-4;
+  o.max_reference_cell_transforms = 2.3e7;
+  const CaptureSceneComparison c = compare_capture_scene(o);
+  BOOST_TEST(!c.waves_compared);
+  BOOST_TEST(c.waves_not_compared.find("2.3e+07 cell-transforms") != std::string::npos, c.waves_not_compared);
+  BOOST_TEST(!c.contacts.empty());  // the stone is still compared
+  o.max_reference_cell_transforms = 2.31e7;
+  BOOST_TEST(compare_capture_scene(o).waves_compared);
+}
+
 BOOST_AUTO_TEST_CASE(invalid_options_are_refused) {
   // Oracle: the input rules — invalid options name the option.
   CaptureSceneOptions o = skipping_options(0.3);
