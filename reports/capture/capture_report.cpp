@@ -293,6 +293,10 @@ void scene_part(SectionWriter& w, const std::string& key, const Record& c) {
     e.row({"total", "scene − continuum reference", fmt(1e3 * wv.number("total_m"), 3)})
         .row({"model", "scene − leapfrog driven by CVODE's draught (the stone's own path, b against the moving surface)",
               fmt(1e3 * wv.number("model_m"), 3)})
+        .row({"… path", "leapfrog driven by the scene stone's own draught − the one driven by CVODE's",
+              fmt(1e3 * wv.number("path_m"), 3)})
+        .row({"… feedback", "scene − leapfrog driven by the scene stone's own draught (b against the moving surface)",
+              fmt(1e3 * wv.number("feedback_m"), 3)})
         .row({"time", "that leapfrog − the stencil's exact semi-discrete solution", fmt(1e3 * wv.number("time_m"), 3)})
         .row({"space", "semi-discrete − continuum solution", fmt(1e3 * wv.number("space_m"), 3)})
         .row({"reference", "continuum reference − itself with half as many sub-intervals",

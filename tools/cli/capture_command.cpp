@@ -267,9 +267,10 @@ void print_scene(const Record& r) {
     std::printf("waves not compared: %s\n", w.text("not_compared").c_str());
     return;
   }
-  std::printf("waves at %.4g s, largest reference height %.3g mm; max differences (mm): total %.3g, model %.3g, "
-              "time %.3g, space %.3g, reference quadrature %.3g\nreference: %s\n",
+  std::printf("waves at %.4g s, largest reference height %.3g mm; max differences (mm): total %.3g, model %.3g "
+              "(path %.3g, feedback %.3g), time %.3g, space %.3g, reference quadrature %.3g\nreference: %s\n",
               w.number("t_s"), 1e3 * w.number("amplitude_m"), 1e3 * w.number("total_m"), 1e3 * w.number("model_m"),
+              1e3 * w.number("path_m"), 1e3 * w.number("feedback_m"),
               1e3 * w.number("time_m"), 1e3 * w.number("space_m"), 1e3 * w.number("quadrature_m"),
               verdict_line(w.at("reference")).c_str());
 }
@@ -297,7 +298,7 @@ nlohmann::json scene_json(const Record& r) {
   if (!w.flag("compared")) {
     wj["not_compared"] = w.text("not_compared");
   } else {
-    for (const char* k : {"t_s", "amplitude_m", "total_m", "model_m", "time_m", "space_m", "quadrature_m"}) wj[k] = w.number(k);
+    for (const char* k : {"t_s", "amplitude_m", "total_m", "model_m", "path_m", "feedback_m", "time_m", "space_m", "quadrature_m"}) wj[k] = w.number(k);
     wj["verdict"] = w.at("reference").text("verdict");
     wj["reason"] = w.at("reference").text("reason");
   }

@@ -188,7 +188,8 @@ CaptureSceneComparison compare_capture_scene(const CaptureSceneOptions& o) {
   std::string why;
   if (!o.valid(&why)) throw std::invalid_argument("capture scene: " + why);
   CaptureSceneComparison out;
-  const SceneOptions& so = o.scene;
+  SceneOptions so = o.scene;
+  so.stone_steps.output_dt_s = o.reference_output_dt_s;  // the scene stone's path, for the draught it would make
 
   // The scene, keeping the field at its last frame.
   std::vector<double> last_field;
@@ -252,6 +253,10 @@ CaptureSceneComparison compare_capture_scene(const CaptureSceneOptions& o) {
   const TrajectoryPose pose(out.reference.trajectory);
   const DraughtField b = trajectory_draught(so.stone.body_mesh, field, so.water->placement, pose);
   w.prescribed_m = prescribed_forced_leapfrog(field, so.water->initial_m, b, so.draught_samples, w.steps);
+  const TrajectoryPose own_pose(out.scene.stone.trajectory);
+  w.own_path_m = prescribed_forced_leapfrog(field, so.water->initial_m,
+                                            trajectory_draught(so.stone.body_mesh, field, so.water->placement, own_pose),
+                                            so.draught_samples, w.steps);
   w.quadrature_intervals = q.intervals;
   w.semi_discrete_m = spectral(field, SpectralSymbol::stencil, so.water->initial_m, b, q, w.t_s, w.transforms);
   w.continuum_m = spectral(field, SpectralSymbol::continuum, so.water->initial_m, b, q, w.t_s, w.transforms);
@@ -261,6 +266,8 @@ CaptureSceneComparison compare_capture_scene(const CaptureSceneOptions& o) {
       spectral(field, SpectralSymbol::continuum, so.water->initial_m, b, coarse, w.t_s, w.transforms);
   for (double z : w.continuum_m) w.amplitude_m = std::max(w.amplitude_m, std::abs(z));
   w.model_m = max_abs_difference(w.scene_m, w.prescribed_m);
+  w.path_m = max_abs_difference(w.own_path_m, w.prescribed_m);
+  w.feedback_m = max_abs_difference(w.scene_m, w.own_path_m);
   w.time_m = max_abs_difference(w.prescribed_m, w.semi_discrete_m);
   w.space_m = max_abs_difference(w.semi_discrete_m, w.continuum_m);
   w.total_m = max_abs_difference(w.scene_m, w.continuum_m);

@@ -15,7 +15,11 @@
 //                space: the semi-discrete solution against the continuum one (no time error);
 //                model: the scene's field against that prescribed-draught leapfrog: what the stone's
 //                       own path (real-time stepper, live surface) and b measured against the moving
-//                       surface (two-way) change.
+//                       surface (two-way) change; split once more by a third leapfrog driven by the
+//                       scene stone's own trajectory against the flat surface:
+//                         path:     that leapfrog − the one driven by CVODE's trajectory;
+//                         feedback: the scene − that leapfrog (b measured against the moving surface,
+//                                   and the scene's samples at stone steps instead of at the nodes).
 // Order in time: a stone's draught is not smooth in time at a grid point. It grows from 0 where
 // the bottom goes under (a kink), but where the submerged rim of a moving stone sweeps over a grid
 // point b jumps from 0 to the rim's depth there, so the windowed leapfrog is first order in Δt on
@@ -23,8 +27,9 @@
 // and so is the reference's quadrature in its sub-interval length.
 // The reference's own quadrature error is measured by evaluating it again with sub-intervals twice
 // as long: the difference bounds the coarser one's error and is reported beside the errors.
-// The CVODE trajectory is sampled every reference_output_dt_s; between samples the pose is a cubic
-// Hermite curve in position (from positions and velocities) and a slerp in orientation.
+// The CVODE trajectory and the scene stone's are sampled every reference_output_dt_s; between
+// samples the pose is a cubic Hermite curve in position (from positions and velocities) and a
+// slerp in orientation.
 // The spectral reference is periodic: the waves are compared only on a periodic two-way scene (else
 // `waves_compared` is false and `waves_not_compared` says why).
 #include <optional>
@@ -87,8 +92,11 @@ struct WaveComparison {
   double t_s = 0;                         // the field's time at the last frame
   long steps = 0;
   std::vector<double> scene_m, prescribed_m, semi_discrete_m, continuum_m;  // nx·ny each
+  std::vector<double> own_path_m;         // the leapfrog driven by the scene stone's own trajectory
   double amplitude_m = 0;                 // max |continuum|
   double model_m = 0;                     // max |scene − prescribed|
+  double path_m = 0;                      // max |own path − prescribed|
+  double feedback_m = 0;                  // max |scene − own path|
   double time_m = 0;                      // max |prescribed − semi-discrete|
   double space_m = 0;                     // max |semi-discrete − continuum|
   double total_m = 0;                     // max |scene − continuum|

@@ -98,6 +98,7 @@ Record waves(const CaptureSceneComparison& c, const CaptureSceneOptions& o) {
   const WaveComparison& w = c.waves;
   r.set("t_s", w.t_s).set("steps", w.steps);
   r.set("amplitude_m", w.amplitude_m);
+  r.set("path_m", w.path_m).set("feedback_m", w.feedback_m);
   r.set("total_m", w.total_m).set("model_m", w.model_m).set("time_m", w.time_m).set("space_m", w.space_m);
   r.set("quadrature_m", w.quadrature_m);
   r.set("quadrature_intervals", w.quadrature_intervals);

@@ -11,7 +11,7 @@
 //                    scene's bounces against CVODE's); trajectories (tables `scene_path`,
 //                    `reference_path`: t_s, x_m, z_m); cost (scene frames, thread CPU, wall; CVODE)
 //   waves            compared (0/1) and, when not, `not_compared` (why); else t_s, steps, amplitude_m,
-//                    total_m, model_m, time_m, space_m, quadrature_m (capture_scene.hpp says what
+//                    total_m, model_m, path_m, feedback_m, time_m, space_m, quadrature_m (capture_scene.hpp says what
 //                    each is), verdict `reference` (rule reference_resolves: is the reference's own
 //                    error below the smallest error it is used to measure), table `profile` (x_m,
 //                    scene_m, prescribed_m, semi_discrete_m, continuum_m along the grid row nearest

@@ -116,7 +116,8 @@ BOOST_AUTO_TEST_CASE(skipping_capture_through_the_scene_against_both_references)
                                       << ", start differences scene " << c.max_start_difference_s << " s, still "
                                       << c.still_max_start_difference_s << " s");
   BOOST_TEST_MESSAGE("waves at " << c.waves.t_s << " s: amplitude " << c.waves.amplitude_m << " m, total "
-                                 << c.waves.total_m << ", model " << c.waves.model_m << ", time " << c.waves.time_m
+                                 << c.waves.total_m << ", model " << c.waves.model_m << " (path " << c.waves.path_m
+                                 << ", feedback " << c.waves.feedback_m << "), time " << c.waves.time_m
                                  << ", space " << c.waves.space_m << ", quadrature " << c.waves.quadrature_m);
   // The stone: the stepper on still water starts each contact within a few contact steps of
   // CVODE (the contact start is the step on which a vertex is found under water, interpolated; the
@@ -126,8 +127,12 @@ BOOST_AUTO_TEST_CASE(skipping_capture_through_the_scene_against_both_references)
   constexpr double kContactTimeTolerance_s = 1e-3;  // one flight step: the stepper's first-order flight error
   BOOST_TEST(c.still_max_start_difference_s < kContactTimeTolerance_s);
   BOOST_TEST(c.max_start_difference_s < kContactTimeTolerance_s);
-  // The waves: the stone made waves.
+  // The waves: the stone made waves, and the split is consistent: each part is a max-norm
+  // difference, so the triangle inequality bounds the whole by its parts.
   BOOST_TEST(c.waves.amplitude_m > 0);
+  constexpr double kSplitRoundoff = 1e-15;  // a few ulps of millimetre heights
+  BOOST_TEST(c.waves.total_m <= c.waves.model_m + c.waves.time_m + c.waves.space_m + kSplitRoundoff);
+  BOOST_TEST(c.waves.model_m <= c.waves.path_m + c.waves.feedback_m + kSplitRoundoff);
   // Order in time: the forced leapfrog with Δt, Δt/2, Δt/4 (same grid, same K) against the same
   // semi-discrete solution. The stone's submerged rim sweeps over grid points, so b jumps in time
   // there (capture_scene.hpp): at least first order, not necessarily second.
