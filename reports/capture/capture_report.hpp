@@ -1,41 +1,18 @@
 #pragma once
-// The report page of one capture (`stoneskip capture validate FILE --out DIR`): DIR/data.h5 first
-// (the trace as read and as processed, timing, saturation, the estimates with their intervals, the
-// ensemble, the solvers' trajectories, the figures' tables and scripts, provenance), then the
-// figures rendered from it (traces with the release marked and clipped spans shaded, timing,
-// the stone's speed, bounce-count distribution, trajectories), then DIR/index.md in words.
-#include <filesystem>
-#include <string>
-#include <vector>
-
-#include "reports/common/figure.hpp"
-#include "verification/captures/capture_throw.hpp"
+// The captures report (`stoneskip capture validate FILE... --out DIR`, kind "captures"): one page,
+// DIR/index.md, formatted from DIR/data.h5 alone — first the verdicts of every capture with a link
+// to its part of the page, then one section per capture: its verdict and reasons, timing,
+// the motion with the still part, the swing, clipping and the release marked, the release state as
+// measured in the room and as mapped to the virtual stone (with intervals), what the solvers make of
+// it and the settings. The findings are computed in verification/captures/capture_findings.hpp;
+// nothing here computes a result or decides a verdict.
+//
+// data.h5: the root record (/report) holds the stone case the solvers ran with; /sections holds
+// one record per capture (capture_findings) and "index" (capture_index_findings).
+#include "reports/common/stored_report.hpp"
 
 namespace stoneskip {
 
-struct CaptureReportContext {
-  std::string case_file;         // the stone case the throw ran with
-  std::string case_text;
-  std::string stone_description;
-  std::string command_line;      // how the report was made
-};
-
-struct CaptureReportSummary {
-  std::filesystem::path index_md;
-  RenderSummary figures;
-  bool gnuplot = false;
-};
-
-CaptureReportSummary write_capture_report(const std::filesystem::path& dir, const CaptureAnalysis& a,
-                                          const CaptureSimulation& sim, const CaptureReportContext& context);
-
-// DIR/index.md listing several captures' verdicts, linking their pages (relative folders).
-struct CaptureIndexEntry {
-  std::string folder;
-  const CaptureAnalysis* analysis = nullptr;
-  const CaptureSimulation* simulation = nullptr;
-};
-void write_capture_index(const std::filesystem::path& dir, const std::vector<CaptureIndexEntry>& entries,
-                         const CaptureReportContext& context);
+RenderedReport render_captures_report(const StoredReport& stored);
 
 }  // namespace stoneskip

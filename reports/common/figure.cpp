@@ -13,7 +13,7 @@ namespace stoneskip {
 
 namespace fs = std::filesystem;
 
-// Legacy storage of whole figures (the capture pages, until they render from their records).
+// Whole figures stored under a group (the sweep page keeps its figures so).
 void store_figure(const H5Group& figures_group, const Figure& fig) {
   H5Group g = figures_group.create_group(fig.name);
   g.set_attr("title", fig.title);
@@ -26,22 +26,6 @@ void store_figure(const H5Group& figures_group, const Figure& fig) {
     order.push_back(name);
   }
   g.write_strings("table_order", order);
-}
-
-std::vector<Figure> load_figures(const H5Group& figures_group) {
-  std::vector<Figure> out;
-  for (const auto& name : figures_group.children()) {
-    H5Group g = figures_group.open_group(name);
-    Figure f;
-    f.name = name;
-    f.title = g.attr_string("title");
-    f.script = g.attr_string("gnuplot");
-    f.width_px = static_cast<int>(g.attr_int("width_px"));
-    f.height_px = static_cast<int>(g.attr_int("height_px"));
-    for (const auto& t : g.read_strings("table_order")) f.tables.emplace_back(t, g.read_table(t));
-    out.push_back(std::move(f));
-  }
-  return out;
 }
 
 bool gnuplot_available() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }

@@ -21,9 +21,8 @@ struct Figure {
   std::string data_path;  // where its data lie in data.h5 (e.g. "/sections/convergence"), for the caption
 };
 
-// Legacy: whole figures stored under /figures/<name> (the capture pages still use it).
+// Whole figures stored under /figures/<name> (the sweep page uses it).
 void store_figure(const H5Group& figures_group, const Figure& fig);
-std::vector<Figure> load_figures(const H5Group& figures_group);
 
 struct RenderSummary {
   int rendered = 0;

@@ -1,7 +1,8 @@
 // stoneskip capture: Wii Remote captures (tools/capture/README.md, spec §4).
 //
-//   stoneskip capture validate FILE... [--json] [--out DIR]    verdict + report page per capture
+//   stoneskip capture validate FILE... [--json] [--out DIR]    verdicts; --out: the captures report
 //   stoneskip capture throw FILE --solver realtime|reference|both [--json] [--out FILE.h5]
+//   stoneskip capture throw FILE --scene SCENE [--json]          through the coupled scene, both references
 //   stoneskip capture convert FILE --out TRACE.csv               any format → stoneskip trace CSV
 //   stoneskip capture synthesize --out DIR                       the shipped synthetic captures + truth
 //   stoneskip capture columns                                    the csv reader's recognised column names
@@ -10,14 +11,22 @@
 //   stoneskip capture validate cases/captures/*.log cases/captures/*.evemu --out out/captures
 //   stoneskip capture validate cases/captures/hard_sidearm_clipped.log --json --no-reference
 //   stoneskip capture throw cases/captures/gentle_sidearm.log --solver both
+//   stoneskip capture throw cases/captures/skip_12ms_14revs.log --scene cases/captures/pond_two_way.toml
 // Common options: --format NAME (force a reader), --case FILE (stone and water, default
 // cases/paper_8ms_spin.toml), --mount key=value (mounting.hpp), --thrower key=value
 // (virtual_thrower.hpp), --clock MODEL, --button A|B, --saturation-g G, --max-accel-g G, --members N,
 // --seed S.
+// validate --out DIR writes the captures report (reports/capture/capture_report.hpp): DIR/data.h5
+// with one findings section per capture and an index, DIR/index.md and DIR/figures/ rendered from
+// it alone (`stoneskip report render DIR` rebuilds them), built in DIR.partial and moved into place
+// when whole. A file that cannot be read then stops the report before any work.
+// --scene SCENE (throw, validate): a stone case with [water] and [scene] (cases/README.md, "A stone on
+// live water"; --scene-set key=value overrides its keys): the capture's virtual stone is thrown into that scene and
+// compared with the CVODE reference (the stone) and the forced spectral reference driven by the
+// CVODE trajectory's draught (the waves; verification/captures/capture_scene.hpp). With validate
+// --out, each usable capture's section shows both comparisons.
 // Exit status: 0 done (whatever the verdicts, unless --strict and one is unusable), 1 --strict
 // with an unusable capture or a failed solve, 2 bad input.
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -26,18 +35,23 @@
 #include <memory>
 
 #include "reports/capture/capture_json.hpp"
-#include "reports/capture/capture_report.hpp"
+#include "reports/common/report_build.hpp"
 #include "tools/capture/capture_format.hpp"
 #include "tools/capture/csv_columns.hpp"
-#include "verification/captures/capture_throw.hpp"
 #include "tools/capture/synthetic_capture.hpp"
 #include "tools/capture/trace_csv.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "tools/cli/report_render.hpp"
+#include "tools/cli/terminal_progress.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/progress.hpp"
 #include "tools/scene/stone_case.hpp"
 #include "tools/scene/throw_output.hpp"
+#include "tools/scene/scene_throw.hpp"
+#include "verification/captures/capture_findings.hpp"
+#include "verification/captures/capture_scene_findings.hpp"
+#include "verification/study/study_sink.hpp"
 
 namespace stoneskip::cli {
 namespace {
@@ -66,6 +80,8 @@ struct CaptureArgs {
   bool no_simulate = false;
   bool strict = false;
   bool progress = false;
+  std::string scene;
+  std::vector<std::string> scene_sets;
 };
 
 void add_read(CLI::App* cmd, CaptureArgs& a) {
@@ -143,15 +159,43 @@ void add_details(nlohmann::json& j, const CaptureAnalysis& an) {
   j["thrower"] = thrower_settings(an.options.thrower);
 }
 
-std::string folder_name(const std::string& file, std::vector<std::string>& used) {
-  std::string stem = fs::path(file).filename().string();
-  for (char& c : stem)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
-  std::string name = stem;
-  for (int k = 2; std::find(used.begin(), used.end(), name) != used.end(); ++k) name = stem + "_" + std::to_string(k);
-  used.push_back(name);
-  return name;
+// How the command was given (stored with the report).
+std::string command_line(const CaptureArgs& a) {
+  std::string s = "stoneskip capture validate";
+  for (const auto& f : a.files) s += " " + f;
+  if (!a.out.empty()) s += " --out " + a.out;
+  if (!a.format.empty() && a.format != "auto") s += " --format " + a.format;
+  if (a.remote) s += " --remote " + std::to_string(a.remote);
+  if (!a.columns.empty()) s += " --columns '" + a.columns + "'";
+  if (a.case_file != "cases/paper_8ms_spin.toml") s += " --case " + a.case_file;
+  for (const auto& x : a.sets) s += " --set " + x;
+  for (const auto& m : a.mounts) s += " --mount " + m;
+  for (const auto& t : a.thrower) s += " --thrower " + t;
+  if (a.clock != "automatic") s += " --clock " + a.clock;
+  if (a.button != "B") s += " --button " + a.button;
+  char b[160];
+  std::snprintf(b, sizeof b, " --saturation-g %g --max-accel-g %g --members %d --seed %u", a.saturation_g, a.max_accel_g,
+                a.members, a.seed);
+  s += b;
+  if (a.no_reference) s += " --no-reference";
+  if (a.no_simulate) s += " --no-simulate";
+  if (!a.scene.empty()) s += " --scene " + a.scene;
+  for (const auto& x : a.scene_sets) s += " --scene-set " + x;
+  return s;
 }
+
+// The sections of a captures report are stored as each capture finishes and never resumed: a
+// capture takes seconds, and validate prints each one as it goes.
+class FreshSections : public StudySink {
+ public:
+  explicit FreshSections(StudySink& to) : to_(to) {}
+  std::optional<Record> resume(const std::string&) override { return std::nullopt; }
+  void store(const std::string& section, const Record& r) override { to_.store(section, r); }
+  const ProgressFactory& progress() const override { return to_.progress(); }
+
+ private:
+  StudySink& to_;
+};
 
 void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
   std::printf("%s: %s\n", an.source.c_str(), to_string(an.verdict));
@@ -192,80 +236,178 @@ void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
   }
 }
 
+// The scene case of --scene, checked before any work: it must have a water field.
+std::optional<StoneCase> load_scene_case(const CaptureArgs& a) {
+  if (a.scene.empty()) return std::nullopt;
+  StoneCase c = load_stone_case(a.scene, a.scene_sets);
+  if (!c.water || c.water->coupling == Coupling::none)
+    throw_input_error(a.scene, 0, "water", "--scene needs a case with [water] and a coupling other than none");
+  return c;
+}
+
+// The capture's virtual stone thrown into the scene case, against both references.
+Record scene_comparison(const StoneCase& scene, const CaptureAnalysis& an) {
+  StoneCase c = scene;
+  c.initial = capture_initial_state(c.stone, an.nominal);
+  CaptureSceneOptions o;
+  o.scene = scene_options(c, SceneEnd::at_duration);
+  o.reference = c.reference;
+  std::string why;
+  if (!o.valid(&why)) throw_input_error(scene.file, 0, "", why);
+  return capture_scene_findings(compare_capture_scene(o), o, scene.file);
+}
+
+std::string verdict_line(const Record& v) { return v.text("verdict") + " — " + v.text("reason"); }
+
+void print_scene(const Record& r) {
+  const Record& st = r.at("stone");
+  const Record& w = r.at("waves");
+  std::printf("scene %s: stone %s\n", r.at("settings").text("case_file").c_str(), verdict_line(st.at("agreement")).c_str());
+  if (!w.flag("compared")) {
+    std::printf("waves not compared: %s\n", w.text("not_compared").c_str());
+    return;
+  }
+  std::printf("waves at %.4g s, largest reference height %.3g mm; max differences (mm): total %.3g, model %.3g "
+              "(path %.3g, feedback %.3g), time %.3g, space %.3g, reference quadrature %.3g\nreference: %s\n",
+              w.number("t_s"), 1e3 * w.number("amplitude_m"), 1e3 * w.number("total_m"), 1e3 * w.number("model_m"),
+              1e3 * w.number("path_m"), 1e3 * w.number("feedback_m"),
+              1e3 * w.number("time_m"), 1e3 * w.number("space_m"), 1e3 * w.number("quadrature_m"),
+              verdict_line(w.at("reference")).c_str());
+}
+
+nlohmann::json scene_json(const Record& r) {
+  const Record& st = r.at("stone");
+  const Record& w = r.at("waves");
+  nlohmann::json j;
+  j["case_file"] = r.at("settings").text("case_file");
+  j["coupling"] = r.at("settings").text("coupling");
+  nlohmann::json s;
+  for (const char* k : {"scene_bounces", "still_bounces", "reference_bounces", "max_start_difference_s",
+                        "max_end_difference_s", "still_max_start_difference_s"})
+    s[k] = st.number(k);
+  s["verdict"] = st.at("agreement").text("verdict");
+  s["reason"] = st.at("agreement").text("reason");
+  const Table& t = st.table("contacts");
+  for (std::size_t i = 0; i < t.rows(); ++i) {
+    nlohmann::json c;
+    for (const auto& col : t.columns) c[col] = t.column(col)[i];
+    s["contacts"].push_back(c);
+  }
+  j["stone"] = s;
+  nlohmann::json wj{{"compared", w.flag("compared")}};
+  if (!w.flag("compared")) {
+    wj["not_compared"] = w.text("not_compared");
+  } else {
+    for (const char* k : {"t_s", "amplitude_m", "total_m", "model_m", "path_m", "feedback_m", "time_m", "space_m", "quadrature_m"}) wj[k] = w.number(k);
+    wj["verdict"] = w.at("reference").text("verdict");
+    wj["reason"] = w.at("reference").text("reason");
+  }
+  j["waves"] = wj;
+  return j;
+}
+
 void validate(const CaptureArgs& a) {
   std::optional<StoneCase> c;
   if (!a.no_simulate) c = load_stone_case(a.case_file, a.sets);
-  if (!a.out.empty()) fs::create_directories(a.out);
-  std::vector<std::unique_ptr<CaptureAnalysis>> analyses;
-  std::vector<std::unique_ptr<CaptureSimulation>> sims;
-  std::vector<CaptureIndexEntry> index;
-  std::vector<std::string> used;
-  CaptureReportContext ctx;
-  ctx.case_file = a.case_file;
-  ctx.command_line = "stoneskip capture validate";
-  for (const auto& f : a.files) ctx.command_line += " " + f;
-  if (!a.out.empty()) ctx.command_line += " --out " + a.out;
-  if (a.case_file != "cases/paper_8ms_spin.toml") ctx.command_line += " --case " + a.case_file;
-  for (const auto& m : a.mounts) ctx.command_line += " --mount " + m;
-  if (c) {
-    ctx.case_text = c->text;
-    ctx.stone_description = c->stone.description;
-  }
-  bool unreadable = false, unusable = false;
+  const std::optional<StoneCase> scene = load_scene_case(a);
+  if (scene && a.no_simulate) throw InputError("capture validate: --scene and --no-simulate cannot be given together");
+  // 1. Every file read first: a report holds every capture asked for, or there is none. Without
+  //    --out one bad file does not stop the others; it is reported and the exit status says so.
+  std::vector<std::optional<Trace>> traces;
+  bool unreadable = false;
   for (const auto& file : a.files) {
-    Trace trace;
     try {
-      trace = read_capture(file, read_options(a));
+      traces.emplace_back(read_capture(file, read_options(a)));
     } catch (const InputError& e) {
-      // One bad file does not stop the others; it is reported and the exit status says so.
       unreadable = true;
+      traces.emplace_back(std::nullopt);
       if (a.json) {
         nlohmann::json j{{"file", file}, {"verdict", "unusable"}, {"reasons", {e.what()}}, {"error", e.what()}};
         std::cout << j.dump() << std::endl;
       } else {
         std::fprintf(stderr, "stoneskip: %s\n", e.what());
       }
+    }
+  }
+  if (unreadable && !a.out.empty())
+    throw InputError("capture validate: at least one capture could not be read (see above); no report written to " + a.out);
+  // 2. The report folder (made whole at the end, kind "captures"): checked before any work.
+  const std::string command = command_line(a);
+  std::optional<ReportBuild> build;
+  if (!a.out.empty())
+    build.emplace(ReportBuildOptions{a.out, "captures",
+                                     "# " + command + "\n" + (c ? "# case " + c->file + "\n" + c->text : std::string()),
+                                     command, terminal_progress()});
+  std::optional<FreshSections> sections;
+  if (build) sections.emplace(*build);
+  CaptureFindingsContext ctx;
+  if (c) {
+    ctx.case_file = a.case_file;
+    ctx.stone_description = c->stone.description;
+    ctx.convention = to_string(c->environment.convention);
+    ctx.water_law = to_string(c->environment.water_law);
+  }
+  // 3. Each capture: analysis, the solvers, the verdict printed, its section stored.
+  std::vector<std::pair<std::string, Record>> stored;
+  std::vector<std::string> used;
+  bool unusable = false;
+  for (const auto& trace : traces) {
+    if (!trace) continue;
+    auto run = [&] {
+      const CaptureAnalysis an = analyse_capture(*trace, capture_options(a, *trace));
+      CaptureSimulation sim;
+      if (c && an.can_throw()) {
+        CaptureSimulationOptions so;
+        so.reference = !a.no_reference;
+        so.realtime_options = c->realtime;
+        so.reference_options = c->reference;
+        std::optional<Progress> progress;
+        if (a.progress) {
+          progress.emplace("capture ensemble " + an.source, an.ensemble.size());
+          so.progress = [&progress](std::size_t, std::size_t) { progress->tick(); };
+        }
+        sim = simulate_capture(c->stone, c->environment, an, so);
+        if (progress) progress->done();
+      }
+      unusable = unusable || !an.can_throw();
+      if (a.json) {
+        nlohmann::json j = capture_json(an, c ? &sim : nullptr);
+        add_details(j, an);
+        std::cout << j.dump() << std::endl;
+      } else {
+        print_verdict(an, c ? &sim : nullptr);
+      }
+      Record r = capture_findings(an, sim, ctx);
+      if (scene && an.can_throw()) {
+        r.add_child("scene", scene_comparison(*scene, an));
+        if (!a.json) print_scene(r.at("scene"));
+      }
+      return r;
+    };
+    if (!build) {
+      run();
       continue;
     }
-    auto an = std::make_unique<CaptureAnalysis>(analyse_capture(trace, capture_options(a, trace)));
-    auto sim = std::make_unique<CaptureSimulation>();
-    if (c && an->can_throw()) {
-      CaptureSimulationOptions so;
-      so.reference = !a.no_reference;
-      so.realtime_options = c->realtime;
-      so.reference_options = c->reference;
-      std::optional<Progress> progress;
-      if (a.progress) {
-        progress.emplace("capture ensemble " + an->source, an->ensemble.size());
-        so.progress = [&progress](std::size_t, std::size_t) { progress->tick(); };
-      }
-      *sim = simulate_capture(c->stone, c->environment, *an, so);
-      if (progress) progress->done();
-    }
-    unusable = unusable || !an->can_throw();
-    if (a.json) {
-      nlohmann::json j = capture_json(*an, c ? sim.get() : nullptr);
-      add_details(j, *an);
-      std::cout << j.dump() << std::endl;
-    }
-    else print_verdict(*an, c ? sim.get() : nullptr);
-    if (!a.out.empty()) {
-      const std::string folder = folder_name(file, used);
-      const auto r = write_capture_report(fs::path(a.out) / folder, *an, *sim, ctx);
-      for (const auto& f : r.figures.failures) std::fprintf(stderr, "figure failed: %s\n", f.c_str());
-      if (!r.gnuplot) std::fprintf(stderr, "gnuplot not found: figures stored in data.h5 but not drawn\n");
-      if (!a.json) std::printf("  report: %s\n", r.index_md.c_str());
-      index.push_back({folder, an.get(), sim.get()});
-    }
-    analyses.push_back(std::move(an));
-    sims.push_back(std::move(sim));
+    const std::string key = capture_section_key(trace->source, used);
+    stored.emplace_back(key, run_section(*sections, key, run));
   }
-  if (!a.out.empty() && !index.empty()) write_capture_index(a.out, index, ctx);
+  // 4. The index, data.h5, the page and its figures from it alone; the folder moved into place.
+  if (build) {
+    build->store("index", capture_index_findings(stored, ctx));
+    if (!a.json) {
+      finish_report(*build, Record(), a.out);
+    } else {  // stdout holds one JSON object per capture, nothing else
+      render_folder(build->assemble(Record()));
+      build->commit();
+    }
+  }
   if (unreadable) throw InputError("capture validate: at least one capture could not be read (see above)");
   if (a.strict && unusable) set_exit_code(1);
 }
 
 void throw_capture(const CaptureArgs& a) {
+  const std::optional<StoneCase> scene = load_scene_case(a);
+  if (scene && !a.out.empty()) throw InputError("capture throw: --out is not written with --scene (use capture validate --scene --out DIR for the report)");
   StoneCase c = load_stone_case(a.case_file, a.sets);
   if (!a.out.empty()) AtomicOutput check(a.out);
   const Trace trace = read_capture(a.files.front(), read_options(a));
@@ -274,6 +416,19 @@ void throw_capture(const CaptureArgs& a) {
   const CaptureAnalysis an = analyse_capture(trace, o);
   if (!an.can_throw())
     throw_input_error(a.files.front(), 0, "", std::string("unusable capture: ") + (an.reasons.empty() ? "" : an.reasons.front()));
+  if (scene) {
+    const Record r = scene_comparison(*scene, an);
+    if (a.json) {
+      nlohmann::json j = capture_json(an, nullptr);
+      add_details(j, an);
+      j["scene"] = scene_json(r);
+      std::cout << j.dump(2) << std::endl;
+    } else {
+      print_verdict(an, nullptr);
+      print_scene(r);
+    }
+    return;
+  }
   c.initial = capture_initial_state(c.stone, an.nominal);
   c.throw_from_parameters = false;
   c.title = "capture " + a.files.front();
@@ -417,11 +572,13 @@ void add_capture(CLI::App& app) {
   auto* v = cmd->add_subcommand("validate", "Judge captures (verdict, timing, clipping, still part, release, throw with intervals, bounce counts)");
   v->add_option("FILE", a->files, "Capture files (any format)")->required();
   v->add_flag("--json", a->json, "One JSON object per capture (one per line)");
-  v->add_option("--out", a->out, "Write a report page per capture into DIR/<capture>/ and DIR/index.md");
+  v->add_option("--out", a->out, "Write the captures report into DIR (index.md, figures/, data.h5; an existing report folder is replaced)");
   v->add_flag("--no-reference", a->no_reference, "Skip the CVODE reference run of the nominal throw");
   v->add_flag("--no-simulate", a->no_simulate, "Skip the solvers (no case file needed)");
   v->add_flag("--strict", a->strict, "Exit with status 1 if a capture is unusable");
   v->add_flag("--progress", a->progress, "Show the ensemble's progress on stderr");
+  v->add_option("--scene", a->scene, "Also throw each usable capture into this scene case against both references (its report section shows them)");
+  v->add_option("--scene-set", a->scene_sets, "Override a key of the scene case: section.key=value (repeatable)");
   add_common(v, *a);
   add_case(v, *a);
   v->callback([a] { validate(*a); });
@@ -431,6 +588,8 @@ void add_capture(CLI::App& app) {
   t->add_option("--solver", a->solver, "realtime, reference or both (default)")->check(CLI::IsMember({"realtime", "reference", "both"}));
   t->add_flag("--json", a->json, "Print one JSON object");
   t->add_option("--out", a->out, "Write the trajectories and the case to this HDF5 file");
+  t->add_option("--scene", a->scene, "Throw it into this scene case ([water], [scene]) against the CVODE and the forced spectral references");
+  t->add_option("--scene-set", a->scene_sets, "Override a key of the scene case: section.key=value (repeatable)");
   add_common(t, *a);
   add_case(t, *a);
   t->callback([a] { throw_capture(*a); });

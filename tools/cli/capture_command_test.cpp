@@ -6,10 +6,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <toml.hpp>
 
@@ -171,6 +174,73 @@ BOOST_AUTO_TEST_CASE(the_virtual_thrower_and_the_reader_options_are_checked) {
   BOOST_TEST(bad.status == 2);
   const Run remote = run("capture validate " + file + " --no-simulate --remote 2");
   BOOST_TEST(remote.status == 2);
+}
+
+BOOST_AUTO_TEST_CASE(a_report_holds_every_capture_or_none_and_json_stays_json) {
+  // Oracle: the input rules (a file that cannot be read is exit 2 and no partial output: neither the
+  // folder nor its work folder appears) and the --json contract (stdout holds one JSON object per
+  // capture and nothing else, also when the report is written).
+  const fs::path tmp = fs::temp_directory_path() / ("stoneskip_capture_report_" + std::to_string(::getpid()));
+  fs::remove_all(tmp);
+  fs::create_directories(tmp);
+  const fs::path dir = tmp / "captures";
+  const Run bad = run("capture validate cases/captures/gentle_sidearm.log " + (tmp / "missing.log").string() +
+                      " --no-simulate --members 4 --out " + dir.string());
+  BOOST_TEST(bad.status == 2);
+  BOOST_TEST(!fs::exists(dir));
+  BOOST_TEST(!fs::exists(fs::path(dir.string() + ".partial")));
+  const Run ok = run("capture validate cases/captures/gentle_sidearm.log cases/captures/no_still_part.log --json "
+                     "--no-simulate --members 4 --out " + dir.string());
+  BOOST_TEST(ok.status == 0);
+  std::istringstream lines(ok.out);
+  int objects = 0;
+  for (std::string line; std::getline(lines, line); ++objects)
+    BOOST_TEST(nlohmann::json::accept(line), "not JSON: " << line);
+  BOOST_TEST(objects == 2);
+  BOOST_TEST(fs::exists(dir / "index.md"));
+  BOOST_TEST(fs::exists(dir / "data.h5"));
+  fs::remove_all(tmp);
+}
+
+// The shipped pond for measured throws, shrunk for a test: 0.3 s (the first contact and its rings)
+// on an 80 × 40 grid of 4 cm cells.
+const char* const kSmallPond =
+    " --scene cases/captures/pond_two_way.toml --scene-set scene.duration_s=0.3 --scene-set solver.t_max_s=0.3"
+    " --scene-set water.nx=80 --scene-set water.ny=40 --scene-set water.cell_m=0.04";
+
+BOOST_AUTO_TEST_CASE(a_skipping_capture_through_the_scene_against_both_references) {
+  // Oracles: the CVODE reference for the stone (contact starts within one flight step of the
+  // stepper, whose flight is first order in it); the triangle inequality for the waves' error split
+  // (|scene − continuum| ≤ model + time + space, each a max over the grid); the scene's clock (the
+  // field's last level at 27 steps of 1/90 s = 0.3 s); the reference's own error far below the
+  // errors it measures (its stored verdict agrees).
+  const Run r = run("capture throw cases/captures/skip_12ms_14revs.log --thrower finger_spin_rev_s=11.5 --json" +
+                    std::string(kSmallPond));
+  BOOST_REQUIRE_MESSAGE(r.status == 0, "exit " << r.status);
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& st = j.at("scene").at("stone");
+  const auto& w = j.at("scene").at("waves");
+  constexpr double kFlightStep_s = 1e-3;  // the case's solver.dt_s
+  BOOST_TEST(st.at("contacts").size() >= 1u);
+  BOOST_TEST(st.at("max_start_difference_s").get<double>() < kFlightStep_s);
+  BOOST_TEST(st.at("reference_bounces").get<double>() >= 1);  // the capture skips in the paper convention
+  BOOST_REQUIRE(w.at("compared").get<bool>());
+  constexpr double kClock = 1e-12;  // round-off of 27 additions of 1/90
+  BOOST_TEST(std::abs(w.at("t_s").get<double>() - 0.3) < kClock);
+  const double total = w.at("total_m"), model = w.at("model_m"), time = w.at("time_m"), space = w.at("space_m");
+  constexpr double kRoundoff = 1e-15;  // a few ulps of millimetre heights
+  BOOST_TEST(total <= model + time + space + kRoundoff);
+  BOOST_TEST(w.at("amplitude_m").get<double>() > 0);
+  BOOST_TEST(10 * w.at("quadrature_m").get<double>() <= std::min({time, space, total}));
+  BOOST_TEST(w.at("verdict").get<std::string>() == "the reference resolves the errors");
+}
+
+BOOST_AUTO_TEST_CASE(a_scene_without_water_is_refused) {
+  // Oracle: the input rules — exit 2, one line naming the scene file and key, before any work.
+  const Run r = run("capture throw cases/captures/skip_12ms_14revs.log --scene cases/paper_8ms_spin.toml");
+  BOOST_TEST(r.status == 2);
+  const Run o = run("capture throw cases/captures/skip_12ms_14revs.log --scene cases/captures/pond_two_way.toml --out x.h5");
+  BOOST_TEST(o.status == 2);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

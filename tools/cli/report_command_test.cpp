@@ -1,5 +1,6 @@
-// End-to-end tests of the reports: `report waves --quick` and `report stones --quick` run the
-// built executable, then `report render` rebuilds the page from data.h5 alone.
+// End-to-end tests of the reports: `report waves --quick`, `report stones --quick` and
+// `capture validate --out` run the built executable, then `report render` rebuilds the page from
+// data.h5 alone.
 #include <boost/test/unit_test.hpp>
 
 #include <regex>
@@ -104,6 +105,41 @@ BOOST_AUTO_TEST_CASE(scene_quick_report_is_a_function_of_its_data) {
   BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
   check_report(dir);
   BOOST_TEST(fs::file_size(dir / "figures" / "still_seed_8ms.png") > 0u);
+}
+
+BOOST_AUTO_TEST_CASE(captures_report_is_a_function_of_its_data) {
+  // Oracle: as for the waves report — on three shipped captures (a WiiYourself! log with jitter and
+  // clipping, a throw at the physical convention's first bounce, an unusable one) and a small
+  // ensemble, each usable one also thrown into a small coupled scene: every capture has its
+  // section and anchor, every figure is drawn (the scene's two among them), every verdict agrees
+  // with its rule, and rendering data.h5 again reproduces index.md byte for byte.
+  TempDir tmp("stoneskip-report-captures");
+  const fs::path dir = tmp.path() / "captures";
+  const auto r = run_stoneskip("capture validate cases/captures/skip_two_remotes_wiiyourself.csv "
+                               "cases/captures/skip_threshold_14ms.log cases/captures/no_still_part.log --members 12 "
+                               "--scene cases/captures/pond_two_way.toml --scene-set scene.duration_s=0.3 "
+                               "--scene-set solver.t_max_s=0.3 --scene-set water.nx=80 --scene-set water.ny=40 "
+                               "--scene-set water.cell_m=0.04 --out " +
+                               dir.string());
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
+  check_report(dir);
+  const std::string index = read_file(dir / "index.md");
+  for (const char* key : {"skip_two_remotes_wiiyourself_csv", "skip_threshold_14ms_log", "no_still_part_log"}) {
+    BOOST_TEST(index.find("<a id=\"" + std::string(key) + "\"></a>") != std::string::npos, key);
+    BOOST_TEST(index.find("](#" + std::string(key) + ")") != std::string::npos, key);
+  }
+  BOOST_TEST(index.find("**unusable** — no still part") != std::string::npos);
+  for (const char* key : {"skip_two_remotes_wiiyourself_csv", "skip_threshold_14ms_log"}) {
+    BOOST_TEST(index.find("](figures/" + std::string(key) + "_scene_stone.png)") != std::string::npos, key);
+    BOOST_TEST(index.find("](figures/" + std::string(key) + "_scene_waves.png)") != std::string::npos, key);
+  }
+  // A folder that is not a report is refused before any work (exit 2, nothing written into it).
+  const fs::path other = tmp.path() / "other";
+  fs::create_directories(other);
+  { std::ofstream(other / "notes.txt") << "mine\n"; }
+  const auto refused = run_stoneskip("capture validate cases/captures/gentle_sidearm.log --no-simulate --out " + other.string());
+  BOOST_TEST(refused.status == 2, refused.out);
+  BOOST_TEST(!fs::exists(other / "index.md"));
 }
 
 BOOST_AUTO_TEST_CASE(a_bad_study_file_fails_before_any_work_and_leaves_nothing) {

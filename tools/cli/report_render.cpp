@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "reports/capture/capture_report.hpp"
 #include "reports/scene/scene_report.hpp"
 #include "reports/stones/stones_report.hpp"
 #include "reports/waves/waves_report.hpp"
@@ -13,6 +14,7 @@ namespace stoneskip::cli {
 RenderedReport render_stored_report(const StoredReport& s) {
   if (s.kind == "waves") return render_waves_report(s);
   if (s.kind == "stones") return render_stones_report(s);
+  if (s.kind == "captures") return render_captures_report(s);
   if (s.kind == "scene") return render_scene_report(s);
   throw_input_error(s.file.string(), 0, "report", "unknown report kind '" + s.kind + "'");
 }

@@ -4,7 +4,8 @@
 #   OUT/waves/           the water-surface verification report (index.md, figures/, data.h5)
 #   OUT/stones/          the stone verification and validation report
 #   OUT/scene/           the seed's scene report (two-way coupling, rings, shortcuts, speed)
-#   OUT/captures/        the Wii Remote capture reports for the shipped captures
+#   OUT/captures/        the captures report: every shipped capture (index.md, figures/, data.h5)
+#   OUT/capture_scene/   a skipping capture through the coupled scene against both references
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 out="${1:-$root/out}"
@@ -47,7 +48,11 @@ echo "== Regression against the golden bounce-count baselines =="
 
 echo "== Wii Remote captures (synthetic, truth in cases/captures/*.truth.toml) =="
 # no_still_part.log is unusable on purpose: validate reports it and still exits 0.
-"$exe" capture validate cases/captures/*.log cases/captures/*.evemu cases/captures/*.txt --out "$out/captures" --progress
+"$exe" capture validate cases/captures/*.log cases/captures/*.evemu cases/captures/*.txt cases/captures/*.csv \
+  --out "$out/captures" --progress
+# One skipping capture through the coupled scene, against CVODE and the forced spectral reference.
+"$exe" capture validate cases/captures/skip_12ms_14revs.log --thrower finger_spin_rev_s=11.5 \
+  --set environment.convention=paper --scene cases/captures/pond_two_way.toml --out "$out/capture_scene"
 
 echo
-echo "Reports: $out/waves/index.md, $out/stones/index.md, $out/captures/index.md"
+echo "Reports: $out/waves/index.md, $out/stones/index.md, $out/scene/index.md, $out/captures/index.md, $out/capture_scene/index.md"

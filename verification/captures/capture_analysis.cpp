@@ -73,8 +73,8 @@ Interval interval_of(const ReleaseKinematics& nominal, const std::vector<Release
   const double x = get(nominal);
   Interval r{x, x, x};
   if (v.empty()) return r;
-  r.low = std::min(x, percentile(v, 0.025));
-  r.high = std::max(x, percentile(v, 0.975));
+  r.low = std::min(x, percentile(v, kIntervalLowQuantile));
+  r.high = std::max(x, percentile(v, kIntervalHighQuantile));
   return r;
 }
 

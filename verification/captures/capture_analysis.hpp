@@ -74,6 +74,10 @@ struct CaptureOptions {
   bool is_valid(std::string* why) const;
 };
 
+// The intervals (and the ensemble's bounce-count range) span these quantiles of the members.
+constexpr double kIntervalLowQuantile = 0.025;
+constexpr double kIntervalHighQuantile = 0.975;
+
 struct Interval {
   double nominal = 0, low = 0, high = 0;
   bool contains(double x) const { return x >= low && x <= high; }
@@ -120,6 +124,9 @@ struct ProcessedSeries {
   std::vector<Vec3> accel_g, rate_deg_s;  // as recorded (rate bias-corrected)
   std::vector<Vec3> world_accel_m_s2, remote_velocity_m_s;  // zero before the still part ends
   std::vector<double> stone_speed_m_s;    // |v_remote + ω × R r_offset|
+  // The stone centre's position in the room relative to where it was at the start of the still
+  // part, in the release state's frame (heading turned: the horizontal release velocity along +x).
+  std::vector<Vec3> stone_position_m;
   std::vector<unsigned> buttons;
   std::vector<std::uint32_t> flags;
 };

@@ -235,6 +235,7 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
     series->world_accel_m_s2.assign(n, Vec3::Zero());
     series->remote_velocity_m_s.assign(n, Vec3::Zero());
     series->stone_speed_m_s.assign(n, 0.0);
+    series->stone_position_m.assign(n, Vec3::Zero());
     series->rate_deg_s.assign(n, Vec3::Zero());
     for (std::size_t k = 0; k < n; ++k) series->rate_deg_s[k] = omega(k) / kDeg;
     series->world_accel_m_s2[s0] = a_prev;
@@ -253,6 +254,7 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
       series->remote_velocity_m_s[k + 1] = v[k + 1];
       const Vec3 wr = q[k + 1] * w1;
       series->stone_speed_m_s[k + 1] = (v[k + 1] + wr.cross(q[k + 1] * in.mounting.stone_offset_m)).norm();
+      series->stone_position_m[k + 1] = x[k + 1] + q[k + 1] * in.mounting.stone_offset_m - q0 * in.mounting.stone_offset_m;
     }
   }
   // 5. The state at the release time: integrated from the sample before it with the rate and the
@@ -292,6 +294,8 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
   // 6. Turn the heading so the horizontal velocity points along +x.
   const double psi = std::hypot(v_used.x(), v_used.y()) > 1e-9 ? std::atan2(v_used.y(), v_used.x()) : 0.0;
   const Mat3 turn = Eigen::AngleAxisd(-psi, Vec3::UnitZ()).toRotationMatrix();
+  if (series)
+    for (auto& x_m : series->stone_position_m) x_m = turn * x_m;
   const Mat3 M = in.mounting.stone_axes();
   r.t_s = release_t;
   r.accel_velocity_m_s = turn * v_accel;

@@ -1,8 +1,8 @@
 #include "verification/captures/capture_throw.hpp"
 
 #include <algorithm>
-#include <chrono>
 
+#include "solvers/realtime/clocks.hpp"
 
 namespace stoneskip {
 
@@ -25,19 +25,21 @@ CaptureSimulation simulate_capture(const Stone& stone, const Environment& env, c
   if (o.ensemble && !a.ensemble.empty()) {
     RealtimeOptions ro = o.realtime_options;
     ro.record_trajectory = false;
-    const auto start = std::chrono::steady_clock::now();
+    const CpuTimer cpu;
+    const WallTimer wall;
     for (const ReleaseKinematics& m : a.ensemble) {
       const ThrowResult r = run_realtime(stone, env, capture_initial_state(stone, m), ro);
       sim.ensemble_bounces.push_back(r.bounces);
       ++sim.bounce_histogram[r.bounces];
       if (o.progress) o.progress(sim.ensemble_bounces.size(), a.ensemble.size());
     }
-    sim.ensemble_cpu_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    sim.ensemble_cpu_s = cpu.seconds();
+    sim.ensemble_wall_s = wall.seconds();
     std::vector<int> b = sim.ensemble_bounces;
     std::sort(b.begin(), b.end());
     auto at = [&](double p) { return b[std::size_t(p * double(b.size() - 1) + 0.5)]; };
-    sim.bounces_low = at(0.025);
-    sim.bounces_high = at(0.975);
+    sim.bounces_low = at(kIntervalLowQuantile);
+    sim.bounces_high = at(kIntervalHighQuantile);
     sim.bounces_median = at(0.5);
   }
   return sim;

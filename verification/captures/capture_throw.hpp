@@ -32,8 +32,9 @@ struct CaptureSimulation {
   std::optional<ThrowResult> reference;  // nominal throw
   std::vector<int> ensemble_bounces;     // one per ensemble member (real-time model)
   std::map<int, int> bounce_histogram;   // bounces → members
-  double ensemble_cpu_s = 0;
-  int bounces_low = 0, bounces_high = 0, bounces_median = 0;  // 2.5 %, 97.5 %, 50 % of the ensemble
+  double ensemble_cpu_s = 0;   // thread CPU time of the ensemble's runs (solvers/realtime/clocks.hpp)
+  double ensemble_wall_s = 0;  // … and wall-clock time
+  int bounces_low = 0, bounces_high = 0, bounces_median = 0;  // the interval quantiles and the median of the ensemble
 };
 
 CaptureSimulation simulate_capture(const Stone& stone, const Environment& env, const CaptureAnalysis& a,

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "verification/captures/capture_analysis.hpp"
+#include "verification/study/verdict_rules.hpp"
 
 namespace stoneskip {
 
@@ -40,57 +41,127 @@ std::string format(const char* fmt, double a = 0, double b = 0, double c = 0) {
 }
 }  // namespace
 
-void judge_capture(CaptureAnalysis& a, const CaptureVerdictRules& r) {
-  std::vector<std::string> fatal, caveats;
+Verdict verdict_from_phrase(const std::string& phrase) {
+  for (Verdict v : {Verdict::usable, Verdict::usable_with_caveats, Verdict::unusable})
+    if (phrase == to_string(v)) return v;
+  return Verdict::unusable;
+}
+
+Record capture_verdict_inputs(const CaptureAnalysis& a, const CaptureVerdictRules& r) {
   const Trace& trace = a.trace;
   const TimingStats& ts = a.timing.stats;
-  const std::size_t n = a.series.t_s.size();
-  // Unusable.
-  if (!trace.has_gyro) fatal.push_back("no MotionPlus data: the orientation through the throw cannot be followed");
-  if (n < r.min_samples) fatal.push_back(format("only %.0f usable samples (at least %.0f needed)", double(n), double(r.min_samples)));
-  if (!ts.ok) fatal.push_back("no sample rate can be found from the timestamps");
-  else if (ts.rate_hz < r.min_rate_hz)
-    fatal.push_back(format("sample rate %.3g Hz is below %.3g Hz (a throw's swing lasts 0.1-0.2 s)", ts.rate_hz, r.min_rate_hz));
-  if (n >= 2 && !a.press_found) {
-    fatal.push_back(std::string("no press of the action button (") + (a.options.release_button == kButtonA ? "A" : "B") +
-                    ") found: the release cannot be located");
-  }
-  if (a.release_found && a.release_t_high_s - a.release_t_low_s > r.max_release_gap_s)
-    fatal.push_back(format("the release falls in a gap of %.3g s (longer than %.3g s): its state is unknown",
-                           a.release_t_high_s - a.release_t_low_s, r.max_release_gap_s));
-  if (a.release_found && !a.still_found)
-    fatal.push_back(format("no still part of at least %.3g s before the release: gravity and the gyro bias cannot be found",
-                           a.options.min_still_s));
-  if (a.nominal_computed && !a.nominal.finite())
-    fatal.push_back("the release state is not finite (numbers out of range in the capture)");
-  const double calibration_error = std::abs(a.still_accel_error_g);
-  if (a.nominal_computed && calibration_error > r.calibration_unusable_g)
-    fatal.push_back(format("still-part |a| = %.4g g, not 1 g within %.3g g: the calibration is wrong", a.still_accel_g,
-                           r.calibration_unusable_g));
-  // Caveats.
-  if (a.release_at_end && trace.has_buttons)
-    caveats.push_back("the button is still held at the end of the file: the release is taken at the file's end");
-  if (a.clipped) {
-    caveats.push_back(format("accelerometer clipped (|a| >= %.3g g) on ", a.options.saturation_g) + a.clipped_axes +
-                      format(" in %.0f of the swing's %.0f samples: the accelerometer gives only a lower bound on the speed "
-                             "(%.3g m/s)",
-                             a.saturated_in_swing, a.swing_samples, a.accel_lower.accel_speed_m_s) +
-                      format("; the throw uses the lever-arm estimate %.3g m/s", a.nominal.lever_speed_m_s));
-  } else if (a.saturated_any > 0) {
+  const bool stamps = ts.ok && !ts.nominal;
+  const bool finite = a.nominal_computed && a.nominal.finite();
+  Record in;
+  in.set("has_gyro", trace.has_gyro);
+  in.set("samples", a.series.t_s.size());
+  in.set("min_samples", r.min_samples);
+  in.set("rate_found", ts.ok);
+  in.set("rate_hz", ts.rate_hz);
+  in.set("min_rate_hz", r.min_rate_hz);
+  in.set("press_found", a.press_found);
+  in.set("release_found", a.release_found);
+  in.set("release_gap_s", a.release_found ? a.release_t_high_s - a.release_t_low_s : 0.0);
+  in.set("max_release_gap_s", r.max_release_gap_s);
+  in.set("still_found", a.still_found);
+  in.set("throw_computed", a.nominal_computed);
+  in.set("throw_finite", finite);
+  in.set("calibration_error_g", a.nominal_computed ? std::abs(a.still_accel_error_g) : 0.0);
+  in.set("calibration_unusable_g", r.calibration_unusable_g);
+  in.set("calibration_caveat_g", r.calibration_caveat_g);
+  in.set("has_buttons", trace.has_buttons);
+  in.set("release_at_end", a.release_at_end);
+  in.set("clipped_in_swing", a.clipped);
+  in.set("gyro_saturated_in_swing", a.gyro_saturated_in_swing);
+  in.set("stamps_given", stamps);
+  in.set("lost_fraction", stamps ? double(ts.dropped_reports) / double(ts.dropped_reports + long(ts.used)) : 0.0);
+  in.set("lost_fraction_caveat", r.lost_fraction_caveat);
+  in.set("jitter_s", stamps ? ts.jitter_s : 0.0);
+  in.set("jitter_caveat_s", r.jitter_caveat_s);
+  in.set("nominal_timestamps", trace.nominal_timestamps);
+  in.set("inferred_range_switches", trace.gyro_mode_inferred ? a.gyro_range_switches : 0);
+  in.set("device_calibration", trace.calibration.accel_from_device);
+  in.set("measured_speed_m_s", finite ? a.nominal.measured_speed_m_s : 0.0);
+  in.set("lever_speed_m_s", finite ? a.nominal.lever_speed_m_s : 0.0);
+  in.set("speed_difference_m_s", finite ? a.speed_difference_m_s : 0.0);
+  in.set("accel_lever_disagreement", r.accel_lever_disagreement);
+  in.set("reader_warnings", trace.warnings.size());
+  return in;
+}
+
+namespace {
+
+// The sentence for one condition of the rule (capture_conditions' names), with its numbers.
+std::string reason_for(const std::string& c, const CaptureAnalysis& a, const Record& in) {
+  const TimingStats& ts = a.timing.stats;
+  if (c == "no_gyro") return "no MotionPlus data: the orientation through the throw cannot be followed";
+  if (c == "too_few_samples")
+    return format("only %.0f usable samples (at least %.0f needed)", in.number("samples"), in.number("min_samples"));
+  if (c == "no_rate") return "no sample rate can be found from the timestamps";
+  if (c == "rate_too_low")
+    return format("sample rate %.3g Hz is below %.3g Hz (a throw's swing lasts 0.1-0.2 s)", ts.rate_hz,
+                  in.number("min_rate_hz"));
+  if (c == "no_press")
+    return std::string("no press of the action button (") + (a.options.release_button == kButtonA ? "A" : "B") +
+           ") found: the release cannot be located";
+  if (c == "release_in_gap")
+    return format("the release falls in a gap of %.3g s (longer than %.3g s): its state is unknown",
+                  in.number("release_gap_s"), in.number("max_release_gap_s"));
+  if (c == "no_still_part")
+    return format("no still part of at least %.3g s before the release: gravity and the gyro bias cannot be found",
+                  a.options.min_still_s);
+  if (c == "state_not_finite") return "the release state is not finite (numbers out of range in the capture)";
+  if (c == "calibration_wrong")
+    return format("the still part reads %.4g g, not 1 g within %.3g g: the calibration is wrong", a.still_accel_g,
+                  in.number("calibration_unusable_g"));
+  if (c == "button_held_at_end") return "the button is still held at the end of the file: the release is taken at the file's end";
+  if (c == "clipped_in_swing")
+    return format("accelerometer clipped (an axis at or beyond %.3g g) on ", a.options.saturation_g) + a.clipped_axes +
+           format(" in %.0f of the swing's %.0f samples: the accelerometer gives only a lower bound on the speed "
+                  "(%.3g m/s)",
+                  a.saturated_in_swing, a.swing_samples, a.accel_lower.accel_speed_m_s) +
+           format("; the throw uses the lever-arm estimate %.3g m/s", a.nominal.lever_speed_m_s);
+  if (c == "gyro_saturated") return "the MotionPlus reached the end of its range during the swing";
+  if (c == "reports_lost")
+    return format("about %.0f reports lost in %.0f gaps (%.2g %% of the reports)", double(ts.dropped_reports), ts.gaps,
+                  100 * in.number("lost_fraction"));
+  if (c == "jitter")
+    return format("timestamp jitter %.3g ms (standard deviation of the intervals; above %.3g ms)", 1e3 * ts.jitter_s,
+                  1e3 * in.number("jitter_caveat_s"));
+  if (c == "calibration_off")
+    return format("the still part reads %.4g g, off 1 g by more than %.3g g: check the calibration", a.still_accel_g,
+                  in.number("calibration_caveat_g"));
+  if (c == "no_timestamps")
+    return format("no timestamps in the file: the nominal rate %.4g Hz was assumed", a.trace.nominal_rate_hz);
+  if (c == "range_switches_inferred")
+    return format("%.0f MotionPlus range switches inferred (no range flags in the file)", in.number("inferred_range_switches"));
+  if (c == "nominal_calibration") return "no device calibration in the file: the nominal accelerometer calibration was used";
+  if (c == "accel_lever_disagree")
+    return format("the accelerometer (%.3g m/s) and the lever arm (%.3g m/s) disagree by more than %.3g %%: "
+                  "check the mounting's lever arm",
+                  a.nominal.accel_speed_m_s, a.nominal.lever_speed_m_s, 100 * in.number("accel_lever_disagreement"));
+  if (c == "reader_warnings")
+    return format("%.0f reader warning(s), e.g. ", in.number("reader_warnings")) + a.trace.warnings.front();
+  return c;
+}
+
+}  // namespace
+
+void judge_capture(CaptureAnalysis& a, const CaptureVerdictRules& r) {
+  const Record in = capture_verdict_inputs(a, r);
+  const CaptureConditions conditions = capture_conditions(in);
+  a.reasons.clear();
+  for (const auto* list : {&conditions.unusable, &conditions.caveats})
+    for (const auto& c : *list) a.reasons.push_back(reason_for(c, a, in));
+  a.verdict = verdict_from_phrase(decide("capture_verdict", in));
+  // Notes: information that does not change the verdict.
+  const TimingStats& ts = a.timing.stats;
+  if (!a.clipped && a.saturated_any > 0)
     a.notes.push_back(format("accelerometer clipped in %.0f samples outside the swing (not used for the throw)",
                              a.saturated_any));
-  }
-  if (a.gyro_saturated_in_swing) caveats.push_back("the MotionPlus reached the end of its range during the swing");
   if (ts.ok && !ts.nominal) {
-    const double lost = double(ts.dropped_reports) / double(ts.dropped_reports + long(ts.used));
-    if (lost > r.lost_fraction_caveat)
-      caveats.push_back(format("about %.0f reports lost in %.0f gaps (%.2g %% of the reports)", double(ts.dropped_reports),
-                               ts.gaps, 100 * lost));
-    else if (ts.dropped_reports > 0)
+    if (in.number("lost_fraction") <= r.lost_fraction_caveat && ts.dropped_reports > 0)
       a.notes.push_back(format("about %.0f reports lost in %.0f gaps", double(ts.dropped_reports), ts.gaps));
-    if (ts.jitter_s > r.jitter_caveat_s)
-      caveats.push_back(format("timestamp jitter %.3g ms (standard deviation of the intervals; above %.3g ms)",
-                               1e3 * ts.jitter_s, 1e3 * r.jitter_caveat_s));
     if (ts.clock == ClockModel::regular_reports)
       a.notes.push_back(format("clock: every stamp within %.2g ms of a regular %.5g Hz clock; the stamps were replaced by it",
                                1e3 * ts.clock_residual_max_s, ts.rate_hz));
@@ -101,27 +172,6 @@ void judge_capture(CaptureAnalysis& a, const CaptureVerdictRules& r) {
     if (ts.equal_stamps > 0) a.notes.push_back(format("%.0f pairs of samples with equal stamps", double(ts.equal_stamps)));
   }
   if (ts.repeated > 0) a.notes.push_back(format("%.0f repeated reports dropped", double(ts.repeated)));
-  if (a.nominal_computed && calibration_error > r.calibration_caveat_g && calibration_error <= r.calibration_unusable_g)
-    caveats.push_back(format("still-part |a| = %.4g g differs from 1 g by more than %.3g g: check the calibration",
-                             a.still_accel_g, r.calibration_caveat_g));
-  if (trace.nominal_timestamps)
-    caveats.push_back(format("no timestamps in the file: the nominal rate %.4g Hz was assumed", trace.nominal_rate_hz));
-  if (trace.gyro_mode_inferred && a.gyro_range_switches > 0)
-    caveats.push_back(format("%.0f MotionPlus range switches inferred (no range flags in the file)",
-                             a.gyro_range_switches));
-  if (!trace.calibration.accel_from_device)
-    caveats.push_back("no device calibration in the file: the nominal accelerometer calibration was used");
-  if (a.nominal_computed && a.nominal.finite() && !a.clipped && a.nominal.lever_speed_m_s > 0 &&
-      std::abs(a.speed_difference_m_s) > r.accel_lever_disagreement * a.nominal.measured_speed_m_s)
-    caveats.push_back(format("the accelerometer (%.3g m/s) and the lever arm (%.3g m/s) disagree by more than %.3g %%: "
-                             "check the mounting's lever arm",
-                             a.nominal.accel_speed_m_s, a.nominal.lever_speed_m_s, 100 * r.accel_lever_disagreement));
-  if (!trace.warnings.empty())
-    caveats.push_back(format("%.0f reader warning(s), e.g. ", double(trace.warnings.size())) + trace.warnings.front());
-
-  a.reasons = fatal;
-  a.reasons.insert(a.reasons.end(), caveats.begin(), caveats.end());
-  a.verdict = !fatal.empty() ? Verdict::unusable : caveats.empty() ? Verdict::usable : Verdict::usable_with_caveats;
 }
 
 }  // namespace stoneskip

@@ -1,9 +1,14 @@
 #pragma once
 // The verdict on a capture: unusable, usable with caveats, or usable, with the reasons — decided
 // from the analysis's findings alone by the thresholds below, each with why it is where it is.
+// The decision is the verdict rule `capture_verdict` (verification/study/verdict_rules.hpp): the
+// findings and thresholds go in as numbers (capture_verdict_inputs), so a stored verdict can be
+// decided again from data.h5; this file words the reasons.
 #include <cstddef>
 #include <string>
 #include <vector>
+
+#include "verification/study/record.hpp"
 
 namespace stoneskip {
 
@@ -39,6 +44,11 @@ struct CaptureVerdictRules {
 
 struct CaptureAnalysis;
 struct Trace;
+
+// The inputs of the rule `capture_verdict`: a's findings and the rules' thresholds, as numbers.
+Record capture_verdict_inputs(const CaptureAnalysis& a, const CaptureVerdictRules& rules);
+// The verdict phrase as the enum ("usable", …); unusable for an unknown phrase.
+Verdict verdict_from_phrase(const std::string& phrase);
 
 // The verdict and its reasons (unusable reasons first, then caveats), from a's findings; notes
 // (information that does not change the verdict) are appended to a.notes. Fills a.verdict,

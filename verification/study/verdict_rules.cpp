@@ -13,6 +13,11 @@ namespace {
 
 using Rule = std::function<std::string(const Record&)>;
 
+std::string capture_verdict_phrase(const Record& in) {
+  const CaptureConditions c = capture_conditions(in);
+  return !c.unusable.empty() ? "unusable" : (c.caveats.empty() ? "usable" : "usable with caveats");
+}
+
 // The names P of the inputs "P.field" that have the given field (the variants a rule compares).
 std::vector<std::string> prefixes_with(const Record& in, const std::string& field) {
   std::vector<std::string> out;
@@ -160,6 +165,23 @@ const std::map<std::string, Rule>& rules() {
                                 ? "does not converge: the stencil is at fault, not the time stepping"
                                 : "does not converge in space; the time stepping is not at its expected order either");
        }},
+      {"capture_verdict", capture_verdict_phrase},
+      {"bounce_agreement",
+       [](const Record& in) {
+         return std::string(in.number("realtime_bounces") == in.number("reference_bounces") ? "same bounce count"
+                                                                                          : "different bounce counts");
+       }},
+      {"reference_resolves",
+       [](const Record& in) {
+         return std::string(in.number("margin") * in.number("reference_error_m") <= in.number("smallest_error_m")
+                                ? "the reference resolves the errors"
+                                : "the reference's own error is too large to measure the smallest error");
+       }},
+      {"bounce_spread",
+       [](const Record& in) {
+         return std::string(in.number("bounces_low") == in.number("bounces_high") ? "decided by the capture"
+                                                                                 : "not decided by the capture");
+       }},
       {"coupling_change",
        [](const Record& in) {
          if (in.number("count_change") != 0) return std::string("changes the bounce count");
@@ -205,6 +227,43 @@ void collect(const Record& r, std::vector<std::string>& out) {
 }
 
 }  // namespace
+
+CaptureConditions capture_conditions(const Record& in) {
+  CaptureConditions c;
+  auto unusable = [&](bool holds, const char* name) {
+    if (holds) c.unusable.emplace_back(name);
+  };
+  auto caveat = [&](bool holds, const char* name) {
+    if (holds) c.caveats.emplace_back(name);
+  };
+  const bool computed = in.flag("throw_computed");
+  const double calibration = in.number("calibration_error_g");
+  unusable(!in.flag("has_gyro"), "no_gyro");
+  unusable(in.number("samples") < in.number("min_samples"), "too_few_samples");
+  unusable(!in.flag("rate_found"), "no_rate");
+  unusable(in.flag("rate_found") && in.number("rate_hz") < in.number("min_rate_hz"), "rate_too_low");
+  unusable(in.number("samples") >= 2 && !in.flag("press_found"), "no_press");
+  unusable(in.flag("release_found") && in.number("release_gap_s") > in.number("max_release_gap_s"), "release_in_gap");
+  unusable(in.flag("release_found") && !in.flag("still_found"), "no_still_part");
+  unusable(computed && !in.flag("throw_finite"), "state_not_finite");
+  unusable(computed && calibration > in.number("calibration_unusable_g"), "calibration_wrong");
+  caveat(in.flag("release_at_end") && in.flag("has_buttons"), "button_held_at_end");
+  caveat(in.flag("clipped_in_swing"), "clipped_in_swing");
+  caveat(in.flag("gyro_saturated_in_swing"), "gyro_saturated");
+  caveat(in.flag("stamps_given") && in.number("lost_fraction") > in.number("lost_fraction_caveat"), "reports_lost");
+  caveat(in.flag("stamps_given") && in.number("jitter_s") > in.number("jitter_caveat_s"), "jitter");
+  caveat(computed && calibration > in.number("calibration_caveat_g") && calibration <= in.number("calibration_unusable_g"),
+         "calibration_off");
+  caveat(in.flag("nominal_timestamps"), "no_timestamps");
+  caveat(in.number("inferred_range_switches") > 0, "range_switches_inferred");
+  caveat(!in.flag("device_calibration"), "nominal_calibration");
+  caveat(computed && in.flag("throw_finite") && !in.flag("clipped_in_swing") && in.number("lever_speed_m_s") > 0 &&
+             std::abs(in.number("speed_difference_m_s")) >
+                 in.number("accel_lever_disagreement") * in.number("measured_speed_m_s"),
+         "accel_lever_disagree");
+  caveat(in.number("reader_warnings") > 0, "reader_warnings");
+  return c;
+}
 
 std::string decide(const std::string& rule, const Record& inputs) {
   const auto it = rules().find(rule);

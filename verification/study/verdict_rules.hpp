@@ -20,6 +20,12 @@
 //   attack_change        change_deg → nose-down | nose-up | unchanged
 //   max_fluid_power      max_fluid_power_W, round_off_W → passive | creates energy
 //   error_split          space_converges (0/1), time_at_expected (0/1) → (see verdict_rules.cpp)
+//   capture_verdict      the findings of a Wii Remote capture and CaptureVerdictRules' thresholds
+//                        (verification/captures/capture_verdict.hpp; inputs: capture_conditions
+//                        below) → usable | usable with caveats | unusable
+//   bounce_agreement     realtime_bounces, reference_bounces → same bounce count | different bounce counts
+//   bounce_spread        bounces_low, bounces_high (the ensemble's interval quantiles) →
+//                        decided by the capture | not decided by the capture
 //   coupling_change      count_change, max_time_change_s, time_tolerance_s → changes the bounce count |
 //                        moves the contacts | no visible change
 //   coupled_limit        growth_below, growth_above, growth_free_above, growth_tolerance →
@@ -30,6 +36,9 @@
 //   shortcut             field_relative, start_change_s, count_change, field_tolerance, time_tolerance_s →
 //                        exact | within tolerance | beyond tolerance
 //   speed_target         value, target → meets the target | misses the target
+//   reference_resolves   reference_error_m, smallest_error_m, margin → the reference resolves the errors
+//                        (margin · reference error ≤ smallest error) | the reference's own error is too
+//                        large to measure the smallest error
 //   power_law_exponent   valid, exponent, exponent_low, exponent_high, points, expected, tolerance →
 //                        too few points to fit | consistent with the expected exponent |
 //                        excludes the expected exponent | exponent not established
@@ -50,6 +59,7 @@
 //                        over every method and rtol — at most 1; cheapest by rhs_evaluations, ties
 //                        by name)
 #include <string>
+#include <vector>
 
 #include "verification/study/record.hpp"
 
@@ -63,6 +73,23 @@ std::string decide(const std::string& rule, const Record& inputs);
 // `reason`. Returns the child.
 Record& decide_verdict(Record& parent, const std::string& key, const std::string& rule, const Record& inputs,
                        const std::string& reason);
+
+// capture_verdict: which of its conditions hold, by name, in the order a capture's reasons list
+// them (unusable ones, then caveats). Inputs (numbers; flags 0/1): has_gyro, samples, min_samples,
+// rate_found, rate_hz, min_rate_hz, press_found, release_found, release_gap_s, max_release_gap_s,
+// still_found, throw_computed, throw_finite, calibration_error_g, calibration_unusable_g,
+// calibration_caveat_g, has_buttons, release_at_end, clipped_in_swing, gyro_saturated_in_swing,
+// stamps_given, lost_fraction, lost_fraction_caveat, jitter_s, jitter_caveat_s,
+// nominal_timestamps, inferred_range_switches, device_calibration, measured_speed_m_s,
+// lever_speed_m_s, speed_difference_m_s, accel_lever_disagreement, reader_warnings.
+// Unusable: no_gyro, too_few_samples, no_rate, rate_too_low, no_press, release_in_gap,
+// no_still_part, state_not_finite, calibration_wrong. Caveats: button_held_at_end,
+// clipped_in_swing, gyro_saturated, reports_lost, jitter, calibration_off, no_timestamps,
+// range_switches_inferred, nominal_calibration, accel_lever_disagree, reader_warnings.
+struct CaptureConditions {
+  std::vector<std::string> unusable, caveats;
+};
+CaptureConditions capture_conditions(const Record& inputs);
 
 // Every verdict record under `r` (at any depth) whose stored phrase differs from what its rule
 // decides from its stored inputs, as "path: stored 'x', rule says 'y'" lines. Empty: consistent.

@@ -1,0 +1,455 @@
+// The figures of a capture's section, formatted from its stored record (gnuplot scripts over tables
+// taken from the record; nothing here computes a result).
+#include "reports/capture/capture_figures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <tuple>
+
+#include "reports/common/plot.hpp"
+
+namespace stoneskip {
+
+namespace {
+
+// Colours of the phases, the same in every figure.
+constexpr const char* kStill = "#b9e4b9";
+constexpr const char* kSwing = "#cfe0f5";
+constexpr const char* kClipped = "#f4a6a6";
+constexpr const char* kRelease = "#bdbdbd";
+// Lines: the three axes, and the two solvers.
+constexpr const char* kAxis[3] = {"#1f77b4", "#ff7f0e", "#2ca02c"};
+constexpr const char* kRealtime = "#d62728";
+constexpr const char* kReference = "#1f1f1f";
+constexpr const char* kMember = "#9e9e9e";
+// The release velocity is drawn as the distance it carries the stone in this time.
+constexpr double kArrow_s = 0.05;
+// Stacked panels with their keys outside on the right: the same plot area in every panel.
+constexpr const char* kStacked = "set grid\nset key outside right top\nset lmargin at screen 0.08\nset rmargin at screen 0.72\n";
+
+// A number for a gnuplot script, with every digit it needs.
+std::string g(double x) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.9g", x);
+  return b;
+}
+
+// The named columns of a stored table, in that order.
+Table pick(const Table& t, const std::vector<std::string>& columns) {
+  Table out;
+  out.columns = columns;
+  std::vector<std::vector<double>> cols;
+  for (const auto& c : columns) cols.push_back(t.column(c));
+  for (std::size_t r = 0; r < t.rows(); ++r) {
+    std::vector<double> row;
+    for (const auto& c : cols) row.push_back(c[r]);
+    out.add_row(row);
+  }
+  return out;
+}
+
+// 1-based column of a table in a gnuplot `using` clause.
+std::string col(const Table& t, const std::string& name) {
+  const auto it = std::find(t.columns.begin(), t.columns.end(), name);
+  return std::to_string(1 + (it - t.columns.begin()));
+}
+
+Figure make(const std::string& key, const std::string& name, const std::string& title, int w, int h) {
+  Figure f;
+  f.name = key + "_" + name;
+  f.title = title;
+  f.width_px = w;
+  f.height_px = h;
+  return f;
+}
+
+std::string dat(const Figure& f, const std::string& part) { return "'" + f.name + "_" + part + ".dat'"; }
+void add(Figure& f, const std::string& part, Table t) { f.tables.emplace_back(f.name + "_" + part, std::move(t)); }
+
+std::string rect(double t0, double t1, const char* colour, double opacity) {
+  return "set object rect from " + g(t0) + ", graph 0 to " + g(t1) + ", graph 1 fc rgb '" + colour +
+         "' fs transparent solid " + g(opacity) + " noborder behind\n";
+}
+std::string entry(const char* colour, double opacity, const std::string& title) {
+  return "keyentry with boxes fc rgb '" + std::string(colour) + "' fs transparent solid " + g(opacity) + " noborder title " +
+         gnuplot_quote(title);
+}
+
+// The phases as shaded spans (set before the plots, so every panel has them) and their legend
+// entries (for one panel's plot command).
+struct Phases {
+  std::string objects, entries;
+};
+Phases phases(const Record& c) {
+  const Record& m = c.at("motion");
+  const Record& still = m.at("still");
+  const Record& rel = m.at("release");
+  const double period = c.at("timing").number("period_s");
+  const double half = 0.5 * (period > 0 ? period : 0.01);
+  Phases p;
+  std::vector<std::string> entries;
+  if (still.flag("found")) {
+    p.objects += rect(still.number("t0_s"), still.number("t1_s"), kStill, 0.55);
+    entries.push_back(entry(kStill, 0.55, "still part"));
+    if (rel.flag("found")) {
+      p.objects += rect(still.number("t1_s"), rel.number("t_s"), kSwing, 0.55);
+      entries.push_back(entry(kSwing, 0.55, "swing"));
+    }
+  }
+  const Table& spans = m.at("saturation").table("spans");
+  for (std::size_t i = 0; i < spans.rows(); ++i)
+    p.objects += rect(spans.column("t0_s")[i] - half, spans.column("t1_s")[i] + half, kClipped, 0.6);
+  if (spans.rows() > 0) entries.push_back(entry(kClipped, 0.6, "accelerometer clipped"));
+  if (rel.flag("found")) {
+    p.objects += rect(rel.number("t_low_s"), rel.number("t_high_s"), kRelease, 0.7);
+    p.objects += "set arrow from " + g(rel.number("t_s")) + ", graph 0 to " + g(rel.number("t_s")) +
+                 ", graph 1 nohead lw 2 lc rgb '#000000' dt 2 front\n";
+    entries.push_back(entry(kRelease, 0.7, "release interval (dashed: release)"));
+  }
+  for (const auto& e : entries) p.entries += ", " + e;
+  return p;
+}
+
+std::string axis_plot(const Figure& f, const std::string& part, int first_column, const char* const names[3],
+                      const std::string& style) {
+  std::string s;
+  for (int i = 0; i < 3; ++i)
+    s += std::string(i ? ", " : "") + (i ? "''" : dat(f, part)) + " u 1:" + std::to_string(first_column + i) + " w " +
+         style + " lc rgb '" + kAxis[i] + "' t '" + names[i] + "'";  // enhanced text: a_x is a subscript
+  return s;
+}
+
+const char* const kAccelNames[3] = {"a_x", "a_y", "a_z"};
+const char* const kRateNames[3] = {"pitch rate (about x)", "roll rate (about y)", "yaw rate (about z)"};
+
+std::string rate_label(const Record& c) {
+  return c.at("motion").flag("bias_removed") ? "angular rate, bias removed (deg/s)" : "angular rate as read (deg/s)";
+}
+
+// One table with the acceleration and the rate, for both motion figures.
+Table motion_table(const Record& c) {
+  return pick(c.at("motion").table("samples"), {"t_s", "ax_g", "ay_g", "az_g", "wx_deg_s", "wy_deg_s", "wz_deg_s",
+                                                "stone_speed_m_s", "lever_speed_m_s"});
+}
+
+// The nominal throw's height against distance for each solver that ran, as plot clauses (each
+// after ", "), and where each contact began when asked.
+enum class ContactMarks { none, where_they_began };
+std::string solver_paths(Figure& f, const Record& sim, ContactMarks contacts) {
+  std::string s;
+  for (const auto& [solver, colour, title] : {std::tuple{"realtime", kRealtime, "real-time model"},
+                                              std::tuple{"reference", kReference, "reference (CVODE)"}}) {
+    if (!sim.has_child(solver)) continue;
+    const Record& r = sim.at(solver);
+    add(f, solver, pick(r.table("trajectory"), {"x_m", "z_m"}));
+    s += ", " + dat(f, solver) + " u 1:2 w l " + (solver == std::string("realtime") ? "lw 3" : "lw 1.5 dt 2") +
+         " lc rgb '" + colour + "' t " + gnuplot_quote(title);
+    if (contacts == ContactMarks::none) continue;
+    const std::string part = std::string(solver) + "_contacts";
+    add(f, part, pick(r.table("contact_list"), {"x_m", "start_s"}));
+    s += ", " + dat(f, part) + " u 1:(0) w p pt 6 ps 1.2 lc rgb '" + colour + "' notitle";
+  }
+  return s;
+}
+
+}  // namespace
+
+Figure capture_motion_figure(const std::string& key, const Record& c) {
+  Figure f = make(key, "motion",
+                  "Acceleration and angular rate against time as recorded: the still part green, the swing blue, "
+                  "clipped spans red, the release interval grey (dashed: the release)",
+                  1100, 760);
+  add(f, "samples", motion_table(c));
+  const Phases p = phases(c);
+  const double sat = c.at("motion").at("saturation").number("saturation_g");
+  std::ostringstream s;
+  s << p.objects << "set multiplot layout 2,1\n" << kStacked
+    << "set ylabel 'acceleration (g)'\n"
+    << "plot " << axis_plot(f, "samples", 2, kAccelNames, "lp pt 7 ps 0.25 lw 1.2") << ", " << g(sat)
+    << " w l dt 3 lc rgb '#aa0000' t 'clipping level', " << g(-sat) << " w l dt 3 lc rgb '#aa0000' notitle" << p.entries
+    << "\nset xlabel 't (s)'\nset ylabel " << gnuplot_quote(rate_label(c)) << "\n"
+    << "plot " << axis_plot(f, "samples", 5, kRateNames, "lp pt 7 ps 0.25 lw 1.2") << "\nunset multiplot\n";
+  f.script = s.str();
+  return f;
+}
+
+std::optional<Figure> capture_swing_figure(const std::string& key, const Record& c) {
+  const Record& th = c.at("throw");
+  if (!th.flag("computed")) return std::nullopt;
+  const Record& still = c.at("motion").at("still");
+  const Record& rel = c.at("motion").at("release");
+  Figure f = make(key, "swing",
+                  "The swing: acceleration, angular rate and the stone's speed from the end of the still part to just "
+                  "after the release, with the release estimates and their intervals",
+                  1100, 980);
+  add(f, "samples", motion_table(c));
+  // The estimates at the release: accelerometer, lever arm (a little before and after, to be seen
+  // apart) and the one used.
+  const double t0 = still.number("t1_s") - 0.1, t1 = rel.number("t_high_s") + 0.1;
+  const double dt = 0.012 * (t1 - t0);  // apart enough to be seen
+  Table est{{"t_s", "nominal_m_s", "low_m_s", "high_m_s"}, {}};
+  const double t = th.number("release_t_s");
+  for (const auto& [name, shift] : std::vector<std::pair<const char*, double>>{
+           {"accel_speed_m_s", -dt}, {"lever_speed_m_s", dt}, {"speed_m_s", 0.0}}) {
+    const Record& v = th.at("measured").at(name);
+    est.add_row({t + shift, v.number("nominal"), v.number("low"), v.number("high")});
+  }
+  add(f, "estimates", est);
+  const Phases p = phases(c);
+  const std::string e = dat(f, "estimates");
+  std::ostringstream s;
+  s << p.objects << "set multiplot layout 3,1\n" << kStacked
+    << "set xrange [" << g(t0) << ":" << g(t1) << "]\n"
+    << "set ylabel 'acceleration (g)'\n"
+    << "plot " << axis_plot(f, "samples", 2, kAccelNames, "lp pt 7 ps 0.4 lw 1.2") << p.entries << "\n"
+    << "set ylabel " << gnuplot_quote(rate_label(c)) << "\n"
+    << "plot " << axis_plot(f, "samples", 5, kRateNames, "lp pt 7 ps 0.4 lw 1.2") << "\n"
+    << "set xlabel 't (s)'\nset ylabel 'stone speed in the room (m/s)'\n"
+    << "plot " << dat(f, "samples") << " u 1:8 w l lw 2 lc rgb '" << kAxis[0]
+    << "' t 'accelerometer, integrated" << (th.flag("clipped") ? " (clipped: a lower bound)" : "") << "', '' u 1:9 w l lw 2 lc rgb '"
+    << kAxis[1] << "' t '{/Symbol w} × lever arm', " << e << " every ::0::0 u 1:2:3:4 w yerrorbars pt 5 ps 1.2 lw 2 lc rgb '"
+    << kAxis[0] << "' t 'release: accelerometer', " << e << " every ::1::1 u 1:2:3:4 w yerrorbars pt 5 ps 1.2 lw 2 lc rgb '"
+    << kAxis[1] << "' t 'release: lever arm', " << e
+    << " every ::2::2 u 1:2:3:4 w yerrorbars pt 7 ps 1.6 lw 2 lc rgb '#000000' t 'release: the throw (used)'\n"
+    << "unset multiplot\n";
+  f.script = s.str();
+  return f;
+}
+
+std::optional<Figure> capture_timing_figure(const std::string& key, const Record& c) {
+  const Record& t = c.at("timing");
+  if (t.flag("nominal") || !t.flag("ok") || t.table("intervals").rows() == 0) return std::nullopt;
+  const bool clock = t.text("clock") == "regular_reports";
+  Figure f = make(key, "timing",
+                  std::string("Timing: the interval between kept reports against time (gaps red) with the median interval "
+                              "and ± one standard deviation (the jitter)") +
+                      (clock ? ", each stamp's distance from the fitted regular clock," : ",") +
+                      " and the distribution of the intervals",
+                  1100, clock ? 980 : 760);
+  add(f, "intervals", pick(t.table("intervals"), {"t_s", "interval_ms", "lost_reports", "stamp_minus_clock_ms"}));
+  const double p = 1e3 * t.number("period_s"), j = 1e3 * t.number("jitter_s");
+  const double max_ms = 1e3 * t.number("max_interval_s");
+  const double bin = p / 20;
+  const std::string d = dat(f, "intervals");
+  std::ostringstream s;
+  s << "set multiplot layout " << (clock ? 3 : 2) << ",1\n" << kStacked
+    << "set xlabel 't (s)'\nset ylabel 'interval (ms)'\n" << (max_ms > 4 * p ? "set logscale y\n" : "")
+    << "plot " << d << " u 1:($3 > 0 ? NaN : $2) w p pt 7 ps 0.4 lc rgb '" << kAxis[0] << "' t 'interval', " << d
+    << " u 1:($3 > 0 ? $2 : NaN) w p pt 7 ps 0.8 lc rgb '" << kRealtime << "' t 'gap (reports lost)', " << g(p)
+    << " w l lw 1.5 lc rgb '#000000' t 'median interval', " << g(p + j) << " w l dt 2 lc rgb '#555555' t '± jitter (1 σ)', "
+    << g(p - j) << " w l dt 2 lc rgb '#555555' notitle\nunset logscale y\n";
+  if (clock)
+    s << "set ylabel 'stamp − clock (ms)'\nplot " << d << " u 1:4 w p pt 7 ps 0.4 lc rgb '" << kAxis[2]
+      << "' t 'host stamp − fitted clock', " << g(p / 2) << " w l dt 2 lc rgb '#555555' t '± half an interval', "
+      << g(-p / 2) << " w l dt 2 lc rgb '#555555' notitle\n";
+  s << "set xlabel 'interval (ms)'\nset ylabel 'intervals'\nset xrange [0:" << g(std::min(1.05 * max_ms, 6 * p))
+    << "]\nset style fill solid 0.6\nset boxwidth " << g(bin) << "\nbin(x) = " << g(bin) << " * floor(x / " << g(bin)
+    << ") + " << g(bin / 2) << "\nplot " << d << " u (bin($2)):(1.0) smooth frequency w boxes lc rgb '" << kAxis[0]
+    << "' t 'intervals between kept reports'\nunset multiplot\n";
+  f.script = s.str();
+  return f;
+}
+
+std::optional<Figure> capture_release_figure(const std::string& key, const Record& c) {
+  const Record& th = c.at("throw");
+  if (!th.flag("computed")) return std::nullopt;
+  Figure f = make(key, "release_state",
+                  "The release state with its intervals (black: the estimate and its interval; grey: the ensemble's "
+                  "members), the throw as measured in the room beside the virtual stone it is mapped to",
+                  1200, 820);
+  const Table& ens = th.table("ensemble");
+  add(f, "ensemble", ens);
+  const double n = std::max<double>(1, double(ens.rows()));
+  struct Category {
+    std::string label;   // x tic label
+    std::string column;  // ensemble column
+    const Record* value;
+  };
+  struct Panel {
+    std::string name, ylabel;
+    std::vector<Category> categories;
+  };
+  const Record& m = th.at("measured");
+  const Record& v = th.at("virtual");
+  const std::vector<Panel> panels{
+      {"speed", "speed (m/s)",
+       {{"room:\\naccel.", "accel_speed_m_s", &m.at("accel_speed_m_s")},
+        {"room:\\nlever arm", "lever_speed_m_s", &m.at("lever_speed_m_s")},
+        {"room:\\nused", "measured_speed_m_s", &m.at("speed_m_s")},
+        {"virtual\\nstone", "speed_m_s", &v.at("speed_m_s")}}},
+      {"spin", "spin about the stone's normal (rev/s)",
+       {{"room", "measured_spin_rev_s", &m.at("spin_rev_s")}, {"virtual\\nstone", "spin_rev_s", &v.at("spin_rev_s")}}},
+      {"height", "height (m)",
+       {{"room: rise since\\nthe still part", "rise_m", &m.at("rise_m")},
+        {"virtual stone:\\nabove the water", "height_m", &v.at("height_m")}}},
+      {"attack", "attack angle (deg)", {{"room = virtual", "attack_angle_deg", &v.at("attack_angle_deg")}}},
+      {"path", "path angle (deg)", {{"room = virtual", "path_angle_deg", &v.at("path_angle_deg")}}}};
+  std::ostringstream s;
+  s << "set multiplot layout 2,3\nset grid y\nset key off\nset bmargin 4\n";
+  for (const Panel& p : panels) {
+    Table est{{"category", "nominal", "low", "high"}, {}};
+    std::string tics, plot;
+    for (std::size_t i = 0; i < p.categories.size(); ++i) {
+      const Category& k = p.categories[i];
+      const double x = double(i + 1);
+      est.add_row({x, k.value->number("nominal"), k.value->number("low"), k.value->number("high")});
+      tics += std::string(i ? ", " : "") + "\"" + k.label + "\" " + g(x);
+      plot += std::string(i ? ", " : "") + dat(f, "ensemble") + " u (" + g(x) + " + 0.5 * (column(0) / " + g(n) +
+              " - 0.5)):" + col(ens, k.column) + " w p pt 7 ps 0.5 lc rgb '" + kMember + "'";
+    }
+    add(f, p.name, est);
+    s << "set xrange [0.4:" << g(double(p.categories.size()) + 0.6) << "]\nset xtics (" << tics << ")\nset ylabel "
+      << gnuplot_quote(p.ylabel) << "\nplot " << plot << ", " << dat(f, p.name)
+      << " u 1:2:3:4 w yerrorbars pt 7 ps 1.4 lw 2 lc rgb '#000000'\n";
+  }
+  s << "unset multiplot\n";
+  f.script = s.str();
+  return f;
+}
+
+std::optional<Figure> capture_room_and_water_figure(const std::string& key, const Record& c) {
+  const Record& th = c.at("throw");
+  if (!th.flag("computed") || th.table("room_path").rows() == 0) return std::nullopt;
+  const Record& sim = c.at("simulation");
+  Figure f = make(key, "room_and_water",
+                  "The throw in the room and over the water: the stone's path in the room from the start of the still "
+                  "part to the release (integrated from the accelerometer" +
+                      std::string(th.flag("clipped") ? ", which clipped: the path falls short" : "") +
+                      "; from above to scale, from the side), and the virtual stone's flight from the height the "
+                      "thrower maps it to; arrows: the release velocity used × " +
+                      std::to_string(int(1000 * kArrow_s)) + " ms",
+                  1400, 760);
+  const Table path = th.table("room_path");
+  add(f, "room", pick(path, {"x_m", "y_m", "z_m"}));
+  // The release velocities as vectors (so that autoscaling takes in their heads): in the room from
+  // the last sample before the release, over the water from the virtual release point.
+  const std::size_t last = path.rows() - 1;
+  Table arrows{{"x_m", "y_m", "z_m", "dx_m", "dy_m", "dz_m"}, {}};
+  arrows.add_row({path.column("x_m")[last], path.column("y_m")[last], path.column("z_m")[last],
+                  kArrow_s * th.number("measured_vx_m_s"), kArrow_s * th.number("measured_vy_m_s"),
+                  kArrow_s * th.number("measured_vz_m_s")});
+  arrows.add_row({0.0, 0.0, th.at("virtual").at("height_m").number("nominal"), kArrow_s * th.number("virtual_vx_m_s"),
+                  kArrow_s * th.number("virtual_vy_m_s"), kArrow_s * th.number("virtual_vz_m_s")});
+  add(f, "velocity", arrows);
+  const std::string room = dat(f, "room"), v = dat(f, "velocity");
+  const std::string vector_style = " w vectors head filled size screen 0.012,20 lw 2 lc rgb '" + std::string(kRealtime) + "'";
+  std::ostringstream s;
+  s << "set multiplot\nset grid\nset key top left\n"
+    << "set origin 0, 0.5\nset size 0.42, 0.5\nset size ratio -1\n"
+    << "set title 'in the room, from above'\nset xlabel 'along the throw (m)'\nset ylabel 'to the left (m)'\n"
+    << "plot " << room << " u 1:2 w l lw 2 lc rgb '" << kAxis[0] << "' t 'stone centre', " << room
+    << " every ::0::0 u 1:2 w p pt 7 ps 1 lc rgb '" << kAxis[2] << "' t 'still part', " << v
+    << " every ::0::0 u 1:2:4:5" << vector_style << " t 'release velocity'\n"
+    << "set origin 0, 0\nset size 0.42, 0.5\nset size noratio\n"
+    << "set title 'in the room, from the side'\nset ylabel 'up, from the still part (m)'\n"
+    << "plot " << room << " u 1:3 w l lw 2 lc rgb '" << kAxis[0] << "' t 'stone centre', " << room
+    << " every ::0::0 u 1:3 w p pt 7 ps 1 lc rgb '" << kAxis[2] << "' t 'still part', " << v
+    << " every ::0::0 u 1:3:4:6" << vector_style << " t 'release velocity'\n"
+    << "set origin 0.42, 0\nset size 0.58, 1\nset key top right\n"
+    << "set title 'the virtual stone over the water'\nset xlabel 'distance (m)'\nset ylabel 'height of the centre (m)'\n"
+    << "plot 0 w l lw 1.5 lc rgb '#3060c0' t 'water', " << v << " every ::1::1 u 1:3:4:6" << vector_style
+    << " t 'release velocity'";
+  s << solver_paths(f, sim, ContactMarks::none) << "\nunset multiplot\n";
+  f.script = s.str();
+  return f;
+}
+
+std::optional<Figure> capture_trajectory_figure(const std::string& key, const Record& c) {
+  const Record& sim = c.at("simulation");
+  if (!sim.has_child("realtime") && !sim.has_child("reference")) return std::nullopt;
+  Figure f = make(key, "trajectory",
+                  "Height of the stone's centre against distance for the nominal throw: real-time model and reference "
+                  "(CVODE); points on the water: where each contact began",
+                  1100, 480);
+  std::ostringstream s;
+  s << "set grid\nset key top right\nset xlabel 'distance (m)'\nset ylabel 'height of the centre (m)'\n"
+    << "plot 0 w l lw 1.5 lc rgb '#3060c0' t 'water'";
+  s << solver_paths(f, sim, ContactMarks::where_they_began) << "\n";
+  f.script = s.str();
+  return f;
+}
+
+std::optional<Figure> capture_bounce_figure(const std::string& key, const Record& c) {
+  const Record& sim = c.at("simulation");
+  if (!sim.has_child("ensemble")) return std::nullopt;
+  const Record& e = sim.at("ensemble");
+  Figure f = make(key, "bounce_distribution",
+                  "Bounce counts of the throws drawn from the capture's intervals (real-time model), with the nominal "
+                  "throw's counts",
+                  900, 560);
+  const Table& h = e.table("histogram");
+  add(f, "histogram", h);
+  const auto counts = h.column("bounces");
+  double lo = counts.empty() ? 0 : *std::min_element(counts.begin(), counts.end());
+  double hi = counts.empty() ? 0 : *std::max_element(counts.begin(), counts.end());
+  // The nominal throw's counts as lines beside the bar of their count (real-time left, reference right).
+  std::string marks, arrows;
+  for (const auto& [solver, colour, title, shift] :
+       {std::tuple{"realtime", kRealtime, "nominal throw, real-time model", -0.15},
+        std::tuple{"reference", kReference, "nominal throw, reference (CVODE)", 0.15}}) {
+    if (!sim.has_child(solver)) continue;
+    const double b = sim.at(solver).number("bounces");
+    lo = std::min(lo, b);
+    hi = std::max(hi, b);
+    arrows += "set arrow from " + g(b + shift) + ", graph 0 to " + g(b + shift) + ", graph 0.85 nohead lw 3 dt 2 lc rgb '" +
+              colour + "' front\n";
+    marks += ", keyentry w l lw 3 dt 2 lc rgb '" + std::string(colour) + "' t " + gnuplot_quote(title);
+  }
+  std::ostringstream s;
+  s << "set grid y\nset key top right\nset xlabel 'bounces'\nset ylabel 'throws of the ensemble'\nset xtics 1\n"
+    << "set xrange [" << g(lo - 0.6) << ":" << g(hi + 0.6) << "]\nset yrange [0:*]\nset offsets 0, 0, graph 0.3, 0\n"
+    << "set style fill solid 0.6\n"
+    << "set boxwidth 0.8\n" << arrows << "plot " << dat(f, "histogram") << " u 1:2 w boxes lc rgb '" << kAxis[0]
+    << "' t 'ensemble'" << marks << "\n";
+  f.script = s.str();
+  return f;
+}
+
+std::optional<Figure> capture_scene_stone_figure(const std::string& key, const Record& c) {
+  if (!c.has_child("scene")) return std::nullopt;
+  const Record& st = c.at("scene").at("stone");
+  Figure f = make(key, "scene_stone",
+                  "The throw through the coupled scene: height of the stone's centre against distance for the scene's "
+                  "stone (real-time model on the live water), the same model on still water and the reference (CVODE, "
+                  "still water); points on the water: where each contact ended",
+                  1100, 480);
+  std::ostringstream s;
+  s << "set grid\nset key top right\nset xlabel 'distance (m)'\nset ylabel 'height of the centre (m)'\n"
+    << "plot 0 w l lw 1.5 lc rgb '#3060c0' t 'still water level'";
+  for (const auto& [part, colour, style, title] :
+       {std::tuple{"scene_path", kRealtime, "lw 3", "scene (real-time model, live water)"},
+        std::tuple{"still_path", kAxis[0], "lw 1.5", "real-time model, still water"},
+        std::tuple{"reference_path", kReference, "lw 1.5 dt 2", "reference (CVODE, still water)"}}) {
+    add(f, part, pick(st.table(part), {"x_m", "z_m"}));
+    s << ", " << dat(f, part) << " u 1:2 w l " << style << " lc rgb '" << colour << "' t " << gnuplot_quote(title);
+  }
+  add(f, "contacts", pick(st.table("contacts"), {"scene_exit_x_m", "reference_exit_x_m"}));
+  s << ", " << dat(f, "contacts") << " u 1:(0) w p pt 6 ps 1.4 lc rgb '" << kRealtime << "' t 'contact ends (scene)', "
+    << dat(f, "contacts") << " u 2:(0) w p pt 2 ps 1.4 lc rgb '" << kReference << "' t 'contact ends (CVODE)'\n";
+  f.script = s.str();
+  return f;
+}
+
+std::optional<Figure> capture_scene_wave_figure(const std::string& key, const Record& c) {
+  if (!c.has_child("scene") || !c.at("scene").at("waves").flag("compared")) return std::nullopt;
+  const Record& w = c.at("scene").at("waves");
+  Figure f = make(key, "scene_waves",
+                  "The waves the stone made, along the grid row through its first contact at the scene's last frame: "
+                  "the scene, the forced leapfrog driven by the reference's draught, and the forced spectral reference "
+                  "(the stencil's exact semi-discrete solution, and the continuum one)",
+                  1100, 520);
+  add(f, "profile", w.table("profile"));
+  const std::string d = dat(f, "profile");
+  std::ostringstream s;
+  s << "set grid\nset key outside right top\nset xlabel 'x (m)'\nset ylabel 'surface height (mm)'\n"
+    << "plot " << d << " u 1:($2*1e3) w l lw 3 lc rgb '" << kRealtime << "' t 'scene (two-way)', " << d
+    << " u 1:($3*1e3) w l lw 2 lc rgb '" << kAxis[0] << "' t 'leapfrog, reference draught', " << d
+    << " u 1:($4*1e3) w l lw 1.5 dt 2 lc rgb '" << kAxis[2] << "' t 'semi-discrete reference', " << d
+    << " u 1:($5*1e3) w l lw 1.5 dt 3 lc rgb '" << kReference << "' t 'continuum reference'\n";
+  f.script = s.str();
+  return f;
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,281 @@
+#include "verification/captures/capture_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+
+#include "model/coupling/draught.hpp"
+#include "solvers/realtime/clocks.hpp"
+#include "solvers/realtime/stone_stepper.hpp"
+#include "solvers/reference/cvode_stone.hpp"
+#include "solvers/scene/draught_window.hpp"
+
+namespace stoneskip {
+
+bool CaptureSceneOptions::valid(std::string* why) const {
+  auto fail = [&](const std::string& w) {
+    if (why) *why = w;
+    return false;
+  };
+  if (!scene.valid(why)) return false;
+  if (scene.end != SceneEnd::at_duration) return fail("the scene must run to its duration (SceneEnd::at_duration)");
+  if (!(reference_output_dt_s > 0) || !std::isfinite(reference_output_dt_s))
+    return fail("reference_output_dt_s must be > 0");
+  if (!(quadrature_interval_s > 0) || !std::isfinite(quadrature_interval_s))
+    return fail("quadrature_interval_s must be > 0");
+  if (quadrature_nodes < 1 || quadrature_nodes > 32) return fail("quadrature_nodes must be in [1, 32]");
+  if (!(max_reference_cell_transforms > 0)) return fail("max_reference_cell_transforms must be > 0");
+  return true;
+}
+
+// ---- the trajectory's pose between samples ----
+
+TrajectoryPose::TrajectoryPose(const std::vector<TrajectorySample>& samples) : samples_(samples) {
+  // Located events can repeat a time: keep the last sample of each time, so intervals have length > 0.
+  std::vector<TrajectorySample> kept;
+  for (const auto& s : samples_) {
+    if (!kept.empty() && s.t_s <= kept.back().t_s) kept.back() = s;
+    else kept.push_back(s);
+  }
+  samples_ = std::move(kept);
+}
+
+std::optional<RigidState> TrajectoryPose::at(double t_s) const {
+  if (samples_.empty() || t_s > samples_.back().t_s) return std::nullopt;
+  if (t_s <= samples_.front().t_s) return samples_.front().state;
+  const auto hi = std::upper_bound(samples_.begin(), samples_.end(), t_s,
+                                   [](double t, const TrajectorySample& s) { return t < s.t_s; });
+  if (hi == samples_.end()) return samples_.back().state;
+  const RigidState& a = (hi - 1)->state;
+  const RigidState& b = hi->state;
+  const double h = hi->t_s - (hi - 1)->t_s, u = (t_s - (hi - 1)->t_s) / h;
+  // Cubic Hermite basis on [0, 1].
+  const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u), h01 = u * u * (3 - 2 * u),
+               h11 = u * u * (u - 1);
+  RigidState s = a;
+  s.position_m = h00 * a.position_m + h10 * h * a.velocity_m_s + h01 * b.position_m + h11 * h * b.velocity_m_s;
+  s.velocity_m_s = (1 - u) * a.velocity_m_s + u * b.velocity_m_s;
+  s.orientation = a.orientation.normalized().slerp(u, b.orientation.normalized());
+  s.angular_momentum_kg_m2_s = (1 - u) * a.angular_momentum_kg_m2_s + u * b.angular_momentum_kg_m2_s;
+  return s;
+}
+
+DraughtField trajectory_draught(const Mesh& body_mesh, const HeightFieldOptions& field, const FieldPlacement& placement,
+                                const TrajectoryPose& pose) {
+  struct State {
+    State(const Mesh& mesh, const HeightFieldOptions& options) : draught(mesh), flat(options) {}
+    StoneDraught draught;
+    HeightField flat;  // at rest: the draught against the flat surface
+    DraughtPatch patch;
+  };
+  HeightFieldOptions flat_options = field;
+  flat_options.threads = 1;
+  flat_options.mode = StepMode::full;
+  auto st = std::make_shared<State>(body_mesh, flat_options);
+  const int nx = field.nx, ny = field.ny;
+  const bool periodic = field.boundary == Boundary::periodic;
+  return [st, nx, ny, periodic, placement, pose](double t_s, std::vector<double>& b) {
+    b.assign(static_cast<std::size_t>(nx) * ny, 0.0);
+    const std::optional<RigidState> s = pose.at(t_s);
+    if (!s) return;
+    st->draught.compute(*s, st->flat, placement, st->patch);
+    if (st->patch.empty()) return;
+    for (int c = 0; c < st->patch.nj; ++c)
+      for (int a = 0; a < st->patch.ni; ++a) {
+        int i = st->patch.i0 + a, j = st->patch.j0 + c;
+        if (periodic) {
+          i = ((i % nx) + nx) % nx;
+          j = ((j % ny) + ny) % ny;
+        } else if (i < 0 || j < 0 || i >= nx || j >= ny) {
+          continue;
+        }
+        b[static_cast<std::size_t>(j) * nx + i] += st->patch.at(a, c);
+      }
+  };
+}
+
+std::vector<double> prescribed_forced_leapfrog(const HeightFieldOptions& field, const std::vector<double>& initial_m,
+                                               const DraughtField& draught, int samples_per_step, long steps) {
+  HeightField f(field);
+  if (!initial_m.empty()) f.set_state(initial_m);
+  const bool periodic = field.boundary == Boundary::periodic;
+  DraughtWindow window(field.nx, field.ny, periodic);
+  std::vector<double> b;
+  DraughtPatch sample, step_patch;
+  const double dt = field.dt_s;
+  const int k = samples_per_step;
+  for (long n = 0; n < steps; ++n) {
+    const double t_n = f.time_s();
+    for (int q = 0; q < k; ++q) {
+      // The scene's node rule (draught_window.hpp); nodes before t = 0 see the stone at its release.
+      const double node = std::max(0.0, t_n - 0.5 * dt + (q + 0.5) * dt / k);
+      draught(node, b);
+      sample.reset(0, 0, field.nx, field.ny);
+      bool wet = false;
+      for (std::size_t c = 0; c < b.size(); ++c) {
+        sample.b_m[c] = b[c];
+        wet = wet || b[c] > 0;
+      }
+      if (wet) window.add(sample, 1.0 / k);
+    }
+    window.take(step_patch);
+    f.step(step_patch);
+  }
+  std::vector<double> z;
+  f.heights(z);
+  return z;
+}
+
+namespace {
+
+double max_abs_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  double m = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, std::abs(a[i] - b[i]));
+  return m;
+}
+
+std::vector<double> spectral(const HeightFieldOptions& field, SpectralSymbol symbol, const std::vector<double>& initial_m,
+                             const DraughtField& draught, const DuhamelQuadrature& q, double t_s, long& transforms) {
+  SpectralWaveOptions so;
+  so.nx = field.nx;
+  so.ny = field.ny;
+  so.cell_m = field.cell_m;
+  so.wave_speed_m_s = field.wave_speed_m_s;
+  so.damping_per_s = field.damping_per_s;
+  so.symbol = symbol;
+  so.stencil = field.stencil;
+  ForcedSpectralWave w(so, draught, q);
+  w.set_initial(initial_m.empty() ? std::vector<double>(static_cast<std::size_t>(field.nx) * field.ny, 0.0) : initial_m);
+  std::vector<double> z;
+  w.evaluate(t_s, z);
+  transforms += w.draught_transforms();
+  return z;
+}
+
+void compare_contacts(CaptureSceneComparison& out) {
+  const auto& sc = out.scene.stone.contacts;
+  const auto& rc = out.reference.contacts;
+  const auto& wc = out.still_water.contacts;
+  const std::size_t n = std::min(sc.size(), rc.size());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t i = 0; i < n; ++i) {
+    ContactComparison c;
+    c.index = static_cast<int>(i + 1);
+    c.scene_start_s = sc[i].start_s;
+    c.scene_end_s = sc[i].end_s;
+    c.reference_start_s = rc[i].start_s;
+    c.reference_end_s = rc[i].end_s;
+    c.still_start_s = i < wc.size() ? wc[i].start_s : nan;
+    c.still_end_s = i < wc.size() ? wc[i].end_s : nan;
+    c.scene_exit_x_m = sc[i].exit_position_m.x();
+    c.reference_exit_x_m = rc[i].exit_position_m.x();
+    c.scene_bounced = sc[i].bounced;
+    c.reference_bounced = rc[i].bounced;
+    out.max_start_difference_s = std::max(out.max_start_difference_s, std::abs(c.scene_start_s - c.reference_start_s));
+    out.max_end_difference_s = std::max(out.max_end_difference_s, std::abs(c.scene_end_s - c.reference_end_s));
+    out.contacts.push_back(c);
+  }
+  for (std::size_t i = 0; i < std::min(wc.size(), rc.size()); ++i)
+    out.still_max_start_difference_s = std::max(out.still_max_start_difference_s, std::abs(wc[i].start_s - rc[i].start_s));
+}
+
+}  // namespace
+
+CaptureSceneComparison compare_capture_scene(const CaptureSceneOptions& o) {
+  std::string why;
+  if (!o.valid(&why)) throw std::invalid_argument("capture scene: " + why);
+  CaptureSceneComparison out;
+  SceneOptions so = o.scene;
+  so.stone_steps.output_dt_s = o.reference_output_dt_s;  // the scene stone's path, for the draught it would make
+
+  // The scene, keeping the field at its last frame.
+  std::vector<double> last_field;
+  double field_t = 0;
+  long field_steps = 0;
+  const long frames = so.frames();
+  out.scene = run_scene(so, [&](const SceneFrame& f) {
+    if (f.index == frames && f.field) {
+      f.field->heights(last_field);
+      field_t = f.field->time_s();
+      field_steps = f.field->steps();
+    }
+  });
+  out.scene.frame_costs.clear();
+
+  // The stepper on still water, and CVODE.
+  RealtimeOptions still = so.stone_steps;
+  still.t_max_s = std::min(still.t_max_s, so.end_s());
+  out.still_water = run_realtime(so.stone, so.environment, so.initial, still);
+  ReferenceOptions ro = o.reference;
+  ro.t_max_s = std::min(ro.t_max_s, so.end_s());
+  ro.output_dt_s = o.reference_output_dt_s;
+  ro.record_trajectory = true;
+  out.reference = run_reference(so.stone, so.environment, so.initial, ro);
+  compare_contacts(out);
+
+  // The waves.
+  if (so.coupling != Coupling::two_way) {
+    out.waves_not_compared = std::string("the scene's coupling is ") + to_string(so.coupling) + ": the stone makes no waves";
+    return out;
+  }
+  if (so.water->field.boundary != Boundary::periodic) {
+    out.waves_not_compared = "the scene's water is not periodic, and the forced spectral reference solves only a periodic "
+                             "domain";
+    return out;
+  }
+  if (out.reference.outcome == Outcome::failed) {
+    out.waves_not_compared = "the CVODE reference failed (" + out.reference.outcome_detail + ")";
+    return out;
+  }
+  const HeightFieldOptions& field = so.water->field;
+  DuhamelQuadrature q;
+  q.nodes = o.quadrature_nodes;
+  q.intervals = std::max(1, static_cast<int>(std::ceil(field_t / o.quadrature_interval_s - 1e-9)));
+  const double work = 2.5 * q.intervals * q.nodes * static_cast<double>(field.nx) * field.ny;
+  if (work > o.max_reference_cell_transforms) {
+    char b[240];
+    std::snprintf(b, sizeof b,
+                  "the references would take %.3g cell-transforms of b (%d sub-intervals of %d nodes on %d × %d cells), "
+                  "more than the limit of %.3g",
+                  work, q.intervals, q.nodes, field.nx, field.ny, o.max_reference_cell_transforms);
+    out.waves_not_compared = b;
+    return out;
+  }
+  const CpuTimer cpu;
+  const WallTimer wall;
+  WaveComparison& w = out.waves;
+  w.t_s = field_t;
+  w.steps = field_steps;
+  w.scene_m = last_field;
+  const TrajectoryPose pose(out.reference.trajectory);
+  const DraughtField b = trajectory_draught(so.stone.body_mesh, field, so.water->placement, pose);
+  w.prescribed_m = prescribed_forced_leapfrog(field, so.water->initial_m, b, so.draught_samples, w.steps);
+  const TrajectoryPose own_pose(out.scene.stone.trajectory);
+  w.own_path_m = prescribed_forced_leapfrog(field, so.water->initial_m,
+                                            trajectory_draught(so.stone.body_mesh, field, so.water->placement, own_pose),
+                                            so.draught_samples, w.steps);
+  w.quadrature_intervals = q.intervals;
+  w.semi_discrete_m = spectral(field, SpectralSymbol::stencil, so.water->initial_m, b, q, w.t_s, w.transforms);
+  w.continuum_m = spectral(field, SpectralSymbol::continuum, so.water->initial_m, b, q, w.t_s, w.transforms);
+  DuhamelQuadrature coarse = q;
+  coarse.intervals = std::max(1, q.intervals / 2);
+  const std::vector<double> coarse_m =
+      spectral(field, SpectralSymbol::continuum, so.water->initial_m, b, coarse, w.t_s, w.transforms);
+  for (double z : w.continuum_m) w.amplitude_m = std::max(w.amplitude_m, std::abs(z));
+  w.model_m = max_abs_difference(w.scene_m, w.prescribed_m);
+  w.path_m = max_abs_difference(w.own_path_m, w.prescribed_m);
+  w.feedback_m = max_abs_difference(w.scene_m, w.own_path_m);
+  w.time_m = max_abs_difference(w.prescribed_m, w.semi_discrete_m);
+  w.space_m = max_abs_difference(w.semi_discrete_m, w.continuum_m);
+  w.total_m = max_abs_difference(w.scene_m, w.continuum_m);
+  w.quadrature_m = max_abs_difference(w.continuum_m, coarse_m);
+  w.reference_cpu_s = cpu.seconds();
+  w.reference_wall_s = wall.seconds();
+  out.waves_compared = true;
+  return out;
+}
+
+}  // namespace stoneskip

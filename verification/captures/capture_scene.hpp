@@ -1,0 +1,125 @@
+#pragma once
+// A measured throw through the coupled scene and both references (issue 13 item 5; spec §2.4–2.5):
+//   the stone: the scene's stone (the real-time stepper on the live water,
+//              solvers/scene/coupled_scene.hpp) against the CVODE reference on still water, contact
+//              by contact; beside it the same stepper on still water, so the gap splits into the
+//              stepper's own error (still water vs CVODE) and what the live surface changes (scene
+//              vs still water);
+//   the waves: the scene's field at its last frame against the forced spectral reference
+//              (solvers/spectral/forced_wave.hpp) driven by the CVODE trajectory's draught
+//              b(x, y, t) (model/coupling/draught.hpp, against the flat surface, as §2.5 prescribes
+//              it). The gap is split three ways on the scene's grid:
+//                time:  the forced leapfrog driven by the same prescribed draught, gathered over each
+//                       step's window as the scene does (solvers/scene/draught_window.hpp), against
+//                       the stencil's exact semi-discrete solution (no space error);
+//                space: the semi-discrete solution against the continuum one (no time error);
+//                model: the scene's field against that prescribed-draught leapfrog: what the stone's
+//                       own path (real-time stepper, live surface) and b measured against the moving
+//                       surface (two-way) change; split once more by a third leapfrog driven by the
+//                       scene stone's own trajectory against the flat surface:
+//                         path:     that leapfrog − the one driven by CVODE's trajectory;
+//                         feedback: the scene − that leapfrog (b measured against the moving surface,
+//                                   and the scene's samples at stone steps instead of at the nodes).
+// Order in time: a stone's draught is not smooth in time at a grid point. It grows from 0 where
+// the bottom goes under (a kink), but where the submerged rim of a moving stone sweeps over a grid
+// point b jumps from 0 to the rim's depth there, so the windowed leapfrog is first order in Δt on
+// such a run (the smooth patch of §2.5 gives second order; capture_scene_test measures the first),
+// and so is the reference's quadrature in its sub-interval length.
+// The reference's own quadrature error is measured by evaluating it again with sub-intervals twice
+// as long: the difference bounds the coarser one's error and is reported beside the errors.
+// The CVODE trajectory and the scene stone's are sampled every reference_output_dt_s; between
+// samples the pose is a cubic Hermite curve in position (from positions and velocities) and a
+// slerp in orientation.
+// The spectral reference is periodic: the waves are compared only on a periodic two-way scene (else
+// `waves_compared` is false and `waves_not_compared` says why).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "solvers/realtime/throw_result.hpp"
+#include "solvers/reference/reference_options.hpp"
+#include "solvers/scene/coupled_scene.hpp"
+#include "solvers/spectral/forced_wave.hpp"
+
+namespace stoneskip {
+
+struct CaptureSceneOptions {
+  SceneOptions scene;                    // stone, environment, steps, water, coupling, frames; scene.initial is the throw
+  ReferenceOptions reference;            // CVODE on still water (its t_max_s is cut to the scene's end)
+  double reference_output_dt_s = 1e-4;   // the CVODE trajectory's sampling, for the draught between samples
+  double quadrature_interval_s = 1e-4;   // the Duhamel integral's sub-intervals are at most this long …
+  int quadrature_nodes = 4;              // … with this many Gauss–Legendre nodes each
+  // The references take 2.5 · intervals · nodes transforms of b over the grid (fine, coarse,
+  // semi-discrete): beyond this many cell-transforms (about a minute of CPU at 1e9) the waves are
+  // not compared, and `waves_not_compared` says how many it would have taken.
+  double max_reference_cell_transforms = 5e9;
+  bool valid(std::string* why = nullptr) const;
+};
+
+// The pose of a sampled trajectory at any time inside it (cubic Hermite position, slerp orientation).
+class TrajectoryPose {
+ public:
+  explicit TrajectoryPose(const std::vector<TrajectorySample>& samples);
+  // The state at t; nullopt after the last sample (the stone has left); the first sample before it.
+  std::optional<RigidState> at(double t_s) const;
+  double end_s() const { return samples_.empty() ? 0 : samples_.back().t_s; }
+
+ private:
+  std::vector<TrajectorySample> samples_;
+};
+
+// The draught of a stone moving along a trajectory, against the flat surface of a grid (spec §2.5's
+// prescribed b): b at every grid point (row-major, x fastest), zero once the trajectory has ended.
+DraughtField trajectory_draught(const Mesh& body_mesh, const HeightFieldOptions& field, const FieldPlacement& placement,
+                                const TrajectoryPose& pose);
+
+// The forced leapfrog on `field`, `steps` steps from rest (or from `initial_m`), each step forced by
+// the window mean of K samples of the prescribed draught (DraughtWindow, as in the scene). The
+// heights after the last step.
+std::vector<double> prescribed_forced_leapfrog(const HeightFieldOptions& field, const std::vector<double>& initial_m,
+                                               const DraughtField& draught, int samples_per_step, long steps);
+
+struct ContactComparison {
+  int index = 0;                          // 1-based
+  double scene_start_s = 0, scene_end_s = 0;
+  double still_start_s = 0, still_end_s = 0;  // the stepper on still water (NaN when it has fewer contacts)
+  double reference_start_s = 0, reference_end_s = 0;
+  double scene_exit_x_m = 0, reference_exit_x_m = 0;
+  bool scene_bounced = false, reference_bounced = false;
+};
+
+struct WaveComparison {
+  double t_s = 0;                         // the field's time at the last frame
+  long steps = 0;
+  std::vector<double> scene_m, prescribed_m, semi_discrete_m, continuum_m;  // nx·ny each
+  std::vector<double> own_path_m;         // the leapfrog driven by the scene stone's own trajectory
+  double amplitude_m = 0;                 // max |continuum|
+  double model_m = 0;                     // max |scene − prescribed|
+  double path_m = 0;                      // max |own path − prescribed|
+  double feedback_m = 0;                  // max |scene − own path|
+  double time_m = 0;                      // max |prescribed − semi-discrete|
+  double space_m = 0;                     // max |semi-discrete − continuum|
+  double total_m = 0;                     // max |scene − continuum|
+  double quadrature_m = 0;                // max |continuum − continuum with twice the sub-interval|
+  int quadrature_intervals = 0;
+  long transforms = 0;                    // FFTs of b taken by the references
+  double reference_cpu_s = 0, reference_wall_s = 0;  // the spectral references and the prescribed leapfrog
+};
+
+struct CaptureSceneComparison {
+  SceneSummary scene;
+  ThrowResult still_water;                // the scene's stepper on still water
+  ThrowResult reference;                  // CVODE, still water
+  std::vector<ContactComparison> contacts;  // the first min(scene, reference) contacts
+  double max_start_difference_s = 0;      // over those: |scene − reference| contact start …
+  double max_end_difference_s = 0;        // … and end
+  double still_max_start_difference_s = 0;  // |still water − reference| over the contacts both have
+  bool waves_compared = false;
+  std::string waves_not_compared;         // why not, when not
+  WaveComparison waves;
+};
+
+// Throws std::invalid_argument for invalid options.
+CaptureSceneComparison compare_capture_scene(const CaptureSceneOptions& options);
+
+}  // namespace stoneskip

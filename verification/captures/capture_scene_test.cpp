@@ -1,0 +1,190 @@
+// A measured throw through the coupled scene against both references (capture_scene.hpp), checked
+// against closed forms and independent computations: the pose between samples exact for a
+// ballistic path (a cubic Hermite curve holds a parabola), the scene without water identical to the
+// stepper on still water, the scene's contacts against CVODE within what the stepper's flight step
+// explains, and the forced leapfrog driven by the CVODE trajectory's draught converging to the
+// stencil's exact semi-discrete forced solution at first order in time (what a draught that jumps
+// in time allows).
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+
+#include "model/stone/throw.hpp"
+#include "verification/captures/capture_scene.hpp"
+#include "verification/captures/capture_scene_findings.hpp"
+#include "verification/study/verdict_rules.hpp"
+
+using namespace stoneskip;
+
+namespace {
+
+Stone prism_stone() {
+  const Mesh m = make_prism(0.03, 0.008, 11);
+  return make_stone(m, mass_properties_from_density(m, 2500), 0.03, "prism");
+}
+
+// The skipping throw of the shipped capture skip_12ms_14revs.log, as its truth file gives it
+// (12 m/s, path 5°, attack 20°, 14 rev/s with the fingers' spin, 0.3 m above the water), onto a
+// small periodic pond of 4 cm cells around its first contacts, two-way coupled.
+CaptureSceneOptions skipping_options(double duration_s) {
+  CaptureSceneOptions o;
+  SceneOptions& s = o.scene;
+  s.stone = prism_stone();
+  ThrowParameters tp;
+  tp.speed_m_s = 12;
+  tp.path_angle_deg = 5;
+  tp.attack_angle_deg = 20;
+  tp.spin_rev_s = 14;
+  tp.height_m = 0.3;
+  s.initial = initial_state(s.stone, tp);
+  s.stone_steps.dt_s = 1e-3;
+  s.stone_steps.contact_dt_s = 1e-5;
+  s.coupling = Coupling::two_way;
+  s.draught_samples = 8;
+  s.frame_rate_hz = 100;
+  s.duration_s = duration_s;
+  SceneWater w;
+  w.field.nx = 48;
+  w.field.ny = 16;
+  w.field.cell_m = 0.04;
+  w.field.wave_speed_m_s = 0.5;
+  w.field.damping_per_s = 0.2;
+  w.field.dt_s = 0.01;  // σ = 0.125, below the coupled limit
+  w.field.stencil = named_stencil("nine_point_isotropic");
+  w.field.boundary = Boundary::periodic;
+  w.placement.origin_x_m = 0;
+  w.placement.origin_y_m = -0.32;
+  s.water = w;
+  o.reference.rtol = 1e-10;
+  o.quadrature_interval_s = 2.5e-5;  // fine enough that the reference's error lies below the finest leapfrog's
+  return o;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(capture_scene)
+
+BOOST_AUTO_TEST_CASE(pose_between_samples_is_exact_for_a_parabola) {
+  // Oracle: closed form — a ballistic path x = x0 + v t, z = z0 + w t − g t²/2 is a cubic, which
+  // Hermite interpolation from positions and velocities reproduces exactly; a constant rotation
+  // rate is reproduced by slerp.
+  constexpr double kRoundoff = 1e-13;  // a few hundred ulps of a unit quantity
+  const double g = 9.81;
+  std::vector<TrajectorySample> samples;
+  for (int k = 0; k <= 10; ++k) {
+    TrajectorySample s;
+    s.t_s = 0.01 * k * k;  // uneven spacing
+    s.state.position_m = Vec3(1 + 3 * s.t_s, 0.5, 2 + 4 * s.t_s - 0.5 * g * s.t_s * s.t_s);
+    s.state.velocity_m_s = Vec3(3, 0, 4 - g * s.t_s);
+    s.state.orientation = Quat(Eigen::AngleAxisd(2.0 * s.t_s, Vec3::UnitZ()));
+    samples.push_back(s);
+  }
+  const TrajectoryPose pose(samples);
+  for (double t : {0.003, 0.137, 0.5, 0.999}) {
+    const auto s = pose.at(t);
+    BOOST_REQUIRE(s);
+    BOOST_TEST(std::abs(s->position_m.x() - (1 + 3 * t)) < kRoundoff);
+    BOOST_TEST(std::abs(s->position_m.z() - (2 + 4 * t - 0.5 * g * t * t)) < kRoundoff);
+    BOOST_TEST(s->orientation.angularDistance(Quat(Eigen::AngleAxisd(2.0 * t, Vec3::UnitZ()))) < kRoundoff);
+  }
+  BOOST_TEST(!pose.at(1.0001));  // after the last sample the stone has left
+}
+
+BOOST_AUTO_TEST_CASE(scene_without_water_is_the_still_water_stepper) {
+  // Oracle: spec §2.4 — coupling none is the still-water throw bit for bit, so the scene's and the
+  // still-water stepper's contacts are the same numbers.
+  CaptureSceneOptions o = skipping_options(0.5);
+  o.scene.coupling = Coupling::none;
+  const CaptureSceneComparison c = compare_capture_scene(o);
+  BOOST_TEST(!c.waves_compared);
+  BOOST_REQUIRE(!c.contacts.empty());
+  for (const auto& k : c.contacts) {
+    BOOST_TEST(k.scene_start_s == k.still_start_s);
+    BOOST_TEST(k.scene_end_s == k.still_end_s);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(skipping_capture_through_the_scene_against_both_references) {
+  // Oracles: CVODE (rtol 1e-10) for the stone; the stencil's exact semi-discrete forced solution
+  // (spec §2.5) for the forced leapfrog driven by the CVODE trajectory's draught.
+  // The comparison ends at 0.3 s, after the first bounces.
+  CaptureSceneOptions o = skipping_options(0.3);
+  const CaptureSceneComparison c = compare_capture_scene(o);
+  BOOST_REQUIRE(c.waves_compared);
+  BOOST_TEST_MESSAGE("bounces scene " << c.scene.stone.bounces << " still " << c.still_water.bounces << " reference "
+                                      << c.reference.bounces << "; contacts compared " << c.contacts.size()
+                                      << ", start differences scene " << c.max_start_difference_s << " s, still "
+                                      << c.still_max_start_difference_s << " s");
+  BOOST_TEST_MESSAGE("waves at " << c.waves.t_s << " s: amplitude " << c.waves.amplitude_m << " m, total "
+                                 << c.waves.total_m << ", model " << c.waves.model_m << " (path " << c.waves.path_m
+                                 << ", feedback " << c.waves.feedback_m << "), time " << c.waves.time_m
+                                 << ", space " << c.waves.space_m << ", quadrature " << c.waves.quadrature_m);
+  // The stone: the stepper on still water starts each contact within a few contact steps of
+  // CVODE (the contact start is the step on which a vertex is found under water, interpolated; the
+  // flight before it is integrated with the 1 ms flight step, first order).
+  BOOST_REQUIRE(c.contacts.size() >= 2u);
+  BOOST_TEST(c.reference.bounces >= 1);
+  constexpr double kContactTimeTolerance_s = 1e-3;  // one flight step: the stepper's first-order flight error
+  BOOST_TEST(c.still_max_start_difference_s < kContactTimeTolerance_s);
+  BOOST_TEST(c.max_start_difference_s < kContactTimeTolerance_s);
+  // The waves: the stone made waves, and the split is consistent: each part is a max-norm
+  // difference, so the triangle inequality bounds the whole by its parts.
+  BOOST_TEST(c.waves.amplitude_m > 0);
+  constexpr double kSplitRoundoff = 1e-15;  // a few ulps of millimetre heights
+  BOOST_TEST(c.waves.total_m <= c.waves.model_m + c.waves.time_m + c.waves.space_m + kSplitRoundoff);
+  BOOST_TEST(c.waves.model_m <= c.waves.path_m + c.waves.feedback_m + kSplitRoundoff);
+  // Order in time: the forced leapfrog with Δt, Δt/2, Δt/4 (same grid, same K) against the same
+  // semi-discrete solution. The stone's submerged rim sweeps over grid points, so b jumps in time
+  // there (capture_scene.hpp): at least first order, not necessarily second.
+  const HeightFieldOptions& f = o.scene.water->field;
+  const TrajectoryPose pose(c.reference.trajectory);
+  const DraughtField b = trajectory_draught(o.scene.stone.body_mesh, f, o.scene.water->placement, pose);
+  std::vector<double> errors{c.waves.time_m};
+  for (int halvings = 1; halvings <= 2; ++halvings) {
+    HeightFieldOptions finer = f;
+    finer.dt_s = f.dt_s / (1 << halvings);
+    const auto z = prescribed_forced_leapfrog(finer, {}, b, o.scene.draught_samples, c.waves.steps << halvings);
+    double e = 0;
+    for (std::size_t i = 0; i < z.size(); ++i) e = std::max(e, std::abs(z[i] - c.waves.semi_discrete_m[i]));
+    errors.push_back(e);
+  }
+  // A forcing of bounded variation guarantees first order; second order (smooth b) is not claimed.
+  constexpr double kOrderTolerance = 0.2;  // pairwise orders from two points each, no interval
+  for (std::size_t k = 1; k < errors.size(); ++k) {
+    const double order = std::log2(errors[k - 1] / errors[k]);
+    BOOST_TEST_MESSAGE("time error " << errors[k - 1] << " → " << errors[k] << " m: order " << order);
+    BOOST_TEST(order > 1 - kOrderTolerance);
+  }
+  // Every error measured lies above the reference's own error (this is what makes them measurable).
+  BOOST_TEST(c.waves.quadrature_m * kReferenceMargin < errors.back());
+  // The findings: every verdict agrees with its rule.
+  const Record r = capture_scene_findings(c, o, "test");
+  BOOST_TEST(contradicted_verdicts(r).empty());
+  BOOST_TEST(r.at("waves").table("profile").rows() == std::size_t(f.nx));
+}
+
+BOOST_AUTO_TEST_CASE(waves_too_costly_to_reference_are_not_compared_and_say_why) {
+  // Oracle: the work estimate's definition — 2.5 · intervals · nodes · cells: 0.3 s in 1e-4 s
+  // sub-intervals of 4 nodes on 48 × 16 cells is 2.5 · 3000 · 4 · 768 = 2.304e7 cell-transforms.
+  CaptureSceneOptions o = skipping_options(0.3);
+  o.quadrature_interval_s = 1e-4;
+  o.max_reference_cell_transforms = 2.3e7;
+  const CaptureSceneComparison c = compare_capture_scene(o);
+  BOOST_TEST(!c.waves_compared);
+  BOOST_TEST(c.waves_not_compared.find("2.3e+07 cell-transforms") != std::string::npos, c.waves_not_compared);
+  BOOST_TEST(!c.contacts.empty());  // the stone is still compared
+  o.max_reference_cell_transforms = 2.31e7;
+  BOOST_TEST(compare_capture_scene(o).waves_compared);
+}
+
+BOOST_AUTO_TEST_CASE(invalid_options_are_refused) {
+  // Oracle: the input rules — invalid options name the option.
+  CaptureSceneOptions o = skipping_options(0.3);
+  o.quadrature_nodes = 0;
+  std::string why;
+  BOOST_TEST(!o.valid(&why));
+  BOOST_TEST(why.find("quadrature_nodes") != std::string::npos);
+  BOOST_CHECK_THROW(compare_capture_scene(o), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
