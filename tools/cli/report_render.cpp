@@ -1,10 +1,13 @@
 #include "tools/cli/report_render.hpp"
 
+#include <sys/stat.h>
+
 #include <cstdio>
 
 #include "reports/stones/stones_report.hpp"
 #include "reports/waves/waves_report.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
 
 namespace stoneskip::cli {
@@ -17,6 +20,11 @@ RenderedReport render_stored_report(const StoredReport& s) {
 
 std::pair<int, std::size_t> render_folder(const std::filesystem::path& dir) {
   const StoredReport stored = load_stored_report(dir / "data.h5");
+  // The figures go to DIR/figures: it must be a folder, or absent (then it is made).
+  struct stat st {};
+  const std::filesystem::path figures = dir / "figures";
+  if (::lstat(figures.c_str(), &st) == 0 && !S_ISDIR(st.st_mode))
+    throw_input_error(figures.string(), 0, "", "exists and is " + file_type_words(st.st_mode) + ", not a folder: cannot draw the figures into it");
   RenderedReport r;
   try {
     r = render_stored_report(stored);

@@ -1,8 +1,8 @@
 #include "tools/scene/scene_throw.hpp"
 
-#include <chrono>
 
 #include "model/water/height_field_surface.hpp"
+#include "solvers/realtime/clocks.hpp"
 
 namespace stoneskip {
 
@@ -22,9 +22,9 @@ SceneThrow run_scene_realtime(const StoneCase& c) {
   // The field is advanced to the nearest of its own time levels at the start of each stone step
   // (the surface is piecewise constant in time at the water's step, as in a game loop).
   auto advance = [&](double t_s) {
-    const auto start = std::chrono::steady_clock::now();
+    const CpuTimer timer;  // thread CPU, as stats.cpu_s
     while (field.time_s() + 0.5 * w.field.dt_s <= t_s) field.step();
-    water_cpu += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    water_cpu += timer.seconds();
   };
   out.result = run_realtime(c.stone, c.environment, c.initial, c.realtime, &surface, advance);
   out.result.solver += ", on a live " + std::to_string(w.field.nx) + "x" + std::to_string(w.field.ny) + " height field (" +
