@@ -179,7 +179,8 @@ nesting:
       const double wb = winding_number(m, shells[b], p);
       if (std::abs(wb - std::round(wb)) > 1e-6) {
         out.ok = false;
-        out.problem = "shells " + std::to_string(a + 1) + " and " + std::to_string(b + 1) + " touch (a vertex of one lies on the other)";
+        out.problem = "shells " + std::to_string(a + 1) + " and " + std::to_string(b + 1) +
+                      " touch or overlap (a vertex of one lies on the surface of the other)";
         return out;
       }
       w += std::round(wb);
