@@ -57,8 +57,10 @@ ReportBuild::ReportBuild(ReportBuildOptions options) : options_(std::move(option
   fs::path parent = out.parent_path();
   if (parent.empty()) parent = ".";
   struct stat st {};
-  if (::stat(parent.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+  if (::stat(parent.c_str(), &st) != 0)
     throw_input_error(out.string(), 0, "", "cannot write: folder '" + parent.string() + "' does not exist");
+  if (!S_ISDIR(st.st_mode))
+    throw_input_error(out.string(), 0, "", "cannot write: '" + parent.string() + "' is " + file_type_words(st.st_mode) + ", not a folder");
   if (::access(parent.c_str(), W_OK) != 0)
     throw_input_error(out.string(), 0, "", "cannot write: folder '" + parent.string() + "' is not writable");
   if (::lstat(out.c_str(), &st) == 0) {
