@@ -1,5 +1,6 @@
 #include "model/water/stencil.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -8,6 +9,22 @@ namespace stoneskip {
 double Stencil::symbol(double a, double b) const {
   const double ca = std::cos(a), cb = std::cos(b);
   return centre + 2 * orth * (ca + cb) + 4 * diag * ca * cb;
+}
+
+double Stencil::min_symbol() const {
+  double m = symbol(0, 0);
+  for (double a : {0.0, M_PI})
+    for (double b : {0.0, M_PI}) m = std::min(m, symbol(a, b));
+  return m;
+}
+
+double leapfrog_courant_limit(const Stencil& stencil) {
+  double max_symbol = stencil.symbol(0, 0);
+  for (double a : {0.0, M_PI})
+    for (double b : {0.0, M_PI}) max_symbol = std::max(max_symbol, stencil.symbol(a, b));
+  const double smin = stencil.min_symbol();
+  if (max_symbol > 1e-12 * std::abs(smin) || smin >= 0) return 0;  // a growing mode (round-off of a zero sum allowed)
+  return 2 / std::sqrt(-smin);
 }
 
 Stencil stencil_family(double gamma, std::string name) {

@@ -17,7 +17,18 @@ struct Stencil {
   // d² × the stencil's eigenvalue on the Fourier mode e^{i(a x + b y)/d}, a = kx d, b = ky d:
   // centre + 2 orth (cos a + cos b) + 4 diag cos a cos b. (The continuum's is −(a² + b²).)
   double symbol(double a, double b) const;
+  // The smallest symbol over all wavenumbers. symbol() is bilinear in (cos a, cos b) ∈ [−1, 1]²,
+  // so its extremes lie at the four corners (a, b ∈ {0, π}).
+  double min_symbol() const;
 };
+
+// The largest σ = cΔt/d for which the damped leapfrog of spec §2.1 is stable with this stencil:
+// a mode is multiplied per step by a root g of (2 + μΔt) g² − (4 + 2σ² s) g + (2 − μΔt) = 0, and
+// both roots lie in the unit disc iff −4 ≤ σ² s ≤ 0 (Schur–Cohn), whatever μΔt ∈ [0, 2): so
+// σ_max = 2/√(−min s), independent of damping (spec §2.2). 0 if some mode has s > 0 (it grows for
+// every σ > 0). Five-point 1/√2, γ = 1/3 √3/2, γ = 1/2 1; verification/waves/stability.hpp finds
+// the same limits by bisection on the amplification factors.
+double leapfrog_courant_limit(const Stencil& stencil);
 
 // The family of spec §2.2: (1 − γ)(Σ_orth − 4z) + (γ/2)(Σ_diag − 4z).
 Stencil stencil_family(double gamma, std::string name);

@@ -34,6 +34,17 @@ BOOST_AUTO_TEST_CASE(symbol_equals_the_stencil_applied_to_a_fourier_mode) {
   BOOST_TEST(std::abs(s.symbol(a, b) - direct) <= kRoundoff);
 }
 
+BOOST_AUTO_TEST_CASE(courant_limits_are_the_spec_values) {
+  // Oracle: spec §2.2 stability limits 1/√2 (5-point), √3/2 (γ = 1/3), 1 (γ = 1/2), found there by
+  // von Neumann analysis; paper_eq11's most negative symbol is −13/3 at (0, π), so 2/√(13/3).
+  BOOST_TEST(std::abs(leapfrog_courant_limit(named_stencil("five_point")) - 1 / std::sqrt(2.0)) <= kRoundoff);
+  BOOST_TEST(std::abs(leapfrog_courant_limit(named_stencil("nine_point_isotropic")) - std::sqrt(3.0) / 2) <= kRoundoff);
+  BOOST_TEST(std::abs(leapfrog_courant_limit(named_stencil("nine_point_half")) - 1.0) <= kRoundoff);
+  BOOST_TEST(std::abs(leapfrog_courant_limit(named_stencil("paper_eq11")) - 2 / std::sqrt(13.0 / 3)) <= kRoundoff);
+  // A stencil whose weights sum above zero has a growing mode for every σ: limit 0.
+  BOOST_TEST(leapfrog_courant_limit(Stencil{"raised", -3.5, 1, 0}) == 0);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace

@@ -4,7 +4,7 @@
 // the solvers' bounce counts when they ran).
 #include <nlohmann/json.hpp>
 
-#include "tools/capture/capture_throw.hpp"
+#include "verification/captures/capture_throw.hpp"
 
 namespace stoneskip {
 

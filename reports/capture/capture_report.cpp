@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "reports/common/markdown.hpp"
-#include "tools/capture/mounting.hpp"
+#include "verification/captures/mounting.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/hdf5_file.hpp"
 
@@ -263,7 +263,7 @@ std::string words(const CaptureAnalysis& a, const CaptureSimulation& sim, const 
       .row({"saturated fraction", fmt(a.saturated_fraction, 3)})
       .row({"clipped samples in the swing", std::to_string(a.saturated_in_swing) + " of " + std::to_string(a.swing_samples)})
       .row({"still part (s)", a.still_found ? fmt(a.still_t0_s, 4) + " – " + fmt(a.still_t1_s, 4) : "not found"})
-      .row({"still |a| (g)", a.still_found ? fmt(a.still_accel_g, 5) + " (tolerance ±" + fmt(a.options.calibration_tol_g, 2) + ")" : "–"})
+      .row({"still |a| (g)", a.still_found ? fmt(a.still_accel_g, 5) + " (tolerance ±" + fmt(a.options.rules.calibration_caveat_g, 2) + ")" : "–"})
       .row({"gyro bias (deg/s, x y z)", fmt(a.gyro_bias_deg_s.x(), 3) + " " + fmt(a.gyro_bias_deg_s.y(), 3) + " " +
                                             fmt(a.gyro_bias_deg_s.z(), 3)})
       .row({"MotionPlus range switches", std::to_string(a.gyro_range_switches) + (a.trace.gyro_mode_inferred ? " (inferred)" : "")})
@@ -276,7 +276,7 @@ std::string words(const CaptureAnalysis& a, const CaptureSimulation& sim, const 
         "its interval, the MotionPlus scale ±"
      << fmt(100 * a.options.gyro_scale_rel_uncertainty, 2) << " %, the lever arm ±"
      << fmt(100 * a.options.mounting.lever_arm_rel_uncertainty, 2) << " %, the start height ±"
-     << fmt(a.options.start_height_uncertainty_m, 2) << " m"
+     << fmt(a.options.thrower.height_uncertainty_m, 2) << " m"
      << (a.clipped ? ", and the clipped spans filled with random bumps up to " + fmt(a.options.max_accel_g, 3) + " g" : "")
      << ").";
   if (a.clipped)

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "reports/common/figure.hpp"
-#include "tools/capture/capture_throw.hpp"
+#include "verification/captures/capture_throw.hpp"
 
 namespace stoneskip {
 

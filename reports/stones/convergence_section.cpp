@@ -1,5 +1,6 @@
 // Section 1 of the stones report: how the real-time stepper converges to the CVODE reference, and
 // how the reference's own error follows its tolerance — formatted from the stored record.
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -46,10 +47,23 @@ Figure series_figure(const std::string& name, const std::string& title, const Re
   return line_figure(name, title, ax, ps, "h_s", "error");
 }
 
+// The runs of one series left out of its fit for a reason other than the reference's accuracy, as
+// "scheme, h = … s: reason" (with_quantity: prefixed by the quantity).
+std::vector<std::string> left_out(const Record& s, bool with_quantity) {
+  std::vector<std::string> out;
+  const auto h = s.table("points").column("h_s");
+  const auto& n = s.strings("notes");
+  for (std::size_t i = 0; i < h.size() && i < n.size(); ++i)
+    if (!n[i].empty() && n[i].find("below the reference") == std::string::npos)
+      out.push_back((with_quantity ? s.text("quantity") + ", " : std::string()) + s.text("scheme") + ", h = " +
+                    fmt(h[i], 3) + " s: " + n[i]);
+  return out;
+}
+
 }  // namespace
 
 SectionOutput convergence_section(const Record& c) {
-  SectionWriter w(c, "1. Convergence of the real-time model");
+  SectionWriter w(c, "1. Convergence of the real-time model, each water law");
   const std::string contact_step = "dt × " + fmt(c.number("contact_ratio"), 3);
   w.lead("What is measured.",
          "The real-time stepper (fixed steps; a finer *contact step* near and in the water) is run on one throw with "
@@ -94,11 +108,7 @@ SectionOutput convergence_section(const Record& c) {
       gci = fmt(100 * s.at("gci").number("gci_fine"), 2) + " % (" + s.at("gci").text("kind") + ")";
     table.row({s.text("description"), s.text("scheme"), fmt(s.number("formal_order")), observed(fit),
                list_text(fit.table("pairwise").column("order")), gci, verdict_markdown(fit.at("verdict"))});
-    const auto h = s.table("points").column("h_s");
-    const auto& n = s.strings("notes");
-    for (std::size_t i = 0; i < h.size() && i < n.size(); ++i)
-      if (!n[i].empty() && n[i].find("below the reference") == std::string::npos)
-        notes << "* " << s.text("quantity") << ", " << s.text("scheme") << ", h = " << fmt(h[i], 3) << " s: " << n[i] << "\n";
+    for (const auto& line : left_out(s, true)) notes << "* " << line << "\n";
   }
   w.table(table);
   if (!notes.str().empty()) w.text("Runs left out of the fits, with the reason:\n\n" + notes.str());
@@ -137,6 +147,55 @@ SectionOutput convergence_section(const Record& c) {
          "is pre-asymptotic and its verdict says so. The whole stepper adds its own event handling (contact start and "
          "end located by interpolation inside the step) and coarse steps can change the contact list itself (listed "
          "above): such runs have no bounce-position error.");
+
+  // Every other water law: the same series, compactly.
+  if (c.has("other_laws_list") && !c.strings("other_laws_list").empty()) {
+    w.subheading("The other water laws");
+    w.text("The same throw and the same measurements with each other law (its published C_w); the table above is for `" +
+           c.text("law") + "`. Same verdict rules; each cell is the observed order with its 95 % interval and the verdict.");
+    const Record& others = c.at("other_laws");
+    for (const auto& law : c.strings("other_laws_list")) {
+      const Record& l = others.at(law);
+      w.lead("`" + law + "`.", "Throw: " + l.text("case") + "; the reference makes " + fmt(l.number("reference_contacts")) +
+                                   " contacts and " + fmt(l.number("reference_bounces")) + " bounces and ends (" +
+                                   l.text("reference_outcome") + ") at " + fmt(l.number("reference_end_time_s"), 4) + " s.");
+      for (const auto& p : l.strings("problems")) w.text("> Could not measure: " + p);
+      // One row per quantity, one column per scheme: observed p [95 % CI] and the verdict.
+      const Record& ls = l.at("series");
+      std::vector<std::string> quantities, schemes;
+      for (const auto& key : l.strings("series_keys")) {
+        const Record& s = ls.at(key);
+        if (std::find(quantities.begin(), quantities.end(), s.text("quantity")) == quantities.end())
+          quantities.push_back(s.text("quantity"));
+        if (std::find(schemes.begin(), schemes.end(), s.text("scheme")) == schemes.end()) schemes.push_back(s.text("scheme"));
+      }
+      std::vector<std::string> head{"quantity"};
+      for (const auto& sc : schemes) head.push_back(sc + " (formal " + fmt(ls.at(quantities.front() + "." + sc).number("formal_order")) + ")");
+      MarkdownTable lt(head);
+      std::vector<std::string> dropped;
+      for (const auto& q : quantities) {
+        std::vector<std::string> cells{ls.at(q + "." + schemes.front()).text("description")};
+        for (const auto& sc : schemes) {
+          const std::string key = q + "." + sc;
+          if (!ls.has_child(key)) {
+            cells.push_back("–");
+            continue;
+          }
+          const Record& fit = ls.at(key).at("fit");
+          cells.push_back(observed(fit) + ": **" + fit.at("verdict").text("verdict") + "**");
+          for (const auto& line : left_out(ls.at(key), false))
+            if (std::find(dropped.begin(), dropped.end(), line) == dropped.end()) dropped.push_back(line);
+        }
+        lt.row(cells);
+      }
+      w.table(lt);
+      if (!dropped.empty()) {
+        std::string list;
+        for (const auto& line : dropped) list += "* " + line + "\n";
+        w.text("Runs left out of the fits, with the reason:\n\n" + list);
+      }
+    }
+  }
 
   // The reference's own error against its tolerance.
   const Record& t = c.at("reference_tolerance");

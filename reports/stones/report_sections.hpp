@@ -1,6 +1,7 @@
 #pragma once
 // The sections of the stones report, each a function of its stored record (verification/stones/
 // stone_studies.hpp says what each holds). None of them computes a result or decides a verdict.
+#include "reports/common/plot.hpp"
 #include "reports/common/section.hpp"
 
 namespace stoneskip {
@@ -10,5 +11,9 @@ SectionOutput work_precision_section(const Record& work_precision);
 SectionOutput sweeps_section(const Record& sweeps, const Record& fig9);
 SectionOutput hard_cases_section(const Record& hard_cases);
 SectionOutput validation_section(const Record& validation);
+SectionOutput ranking_section(const Record& validation);  // the validation record's "ranking" (issue 11)
+
+// A stored throw history's attack angle against time, as a plot series (validation_section.cpp).
+PlotSeries attack_angle_series(const Record& history, const std::string& title, const std::string& style);
 
 }  // namespace stoneskip

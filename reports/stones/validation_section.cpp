@@ -1,6 +1,7 @@
-// Section 5 of the stones report: the model beside experiments and analytic models (spec §3), and
-// why the two conventions disagree — formatted from the stored record. The measured values are
-// stored with the findings (they come from the study file), never typed in here.
+// Section 5 of the stones report: each water law beside experiments and analytic models (spec §3),
+// and why the two conventions disagree — formatted from the stored record. The measured values
+// (and the measured curve) are stored with the findings (they come from the study file), never
+// typed in here.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -13,22 +14,27 @@ namespace stoneskip {
 
 namespace {
 
-const char* kVariants[3] = {"reference", "realtime", "paper"};  // model columns of the table
-
 std::string bisected(const Record& b, const std::string& unit) {
   if (!b.flag("found")) return b.text("note");
   return fmt(b.number("value"), 3) + " ± " + fmt(b.number("half_width"), 1) + " " + unit;
 }
 
 // The contact time at the compared speed, or at the first faster speed with a bouncing first contact.
-std::string contact_time_text(const Table& t, const std::string& column, double at) {
-  const auto U = t.column("speed_m_s"), tau = t.column(column);
+std::string contact_time_text(const Table& t, double at) {
+  const auto U = t.column("speed_m_s"), tau = t.column("contact_s");
   for (std::size_t i = 0; i < U.size(); ++i)
     if (std::abs(U[i] - at) < 1e-9 && std::isfinite(tau[i])) return fmt(1000 * tau[i], 3) + " ms";
   for (std::size_t i = 0; i < U.size(); ++i)
     if (U[i] > at && std::isfinite(tau[i]))
       return "no bounce at " + fmt(at, 3) + " m/s; " + fmt(1000 * tau[i], 3) + " ms at " + fmt(U[i], 3) + " m/s";
   return "no bouncing first contact at the speeds tried";
+}
+
+// "−0.98 [−1.1, −0.86]" or "– (1 point with a positive value)".
+std::string exponent_text(const Record& e) {
+  if (!e.flag("valid")) return "– (" + e.text("problem") + ")";
+  if (e.number("points") < 3) return fmt(e.number("exponent"), 3) + " (" + fmt(e.number("points")) + " points, no interval)";
+  return fmt(e.number("exponent"), 3) + " [" + fmt(e.number("exponent_low"), 3) + ", " + fmt(e.number("exponent_high"), 3) + "]";
 }
 
 std::string regime_text(const Record& g) {
@@ -44,45 +50,44 @@ std::string counts_text(const Table& t, const std::string& x, const std::string&
   return s;
 }
 
-// The model's three cells of a validation row (reference physical, real-time physical, paper reference).
-std::vector<std::string> model_cells(const Record& v, const std::string& key) {
-  const Record& cl = v.at("clanet");
-  const Record& bq = v.at("bocquet");
-  const Record& seed = v.at("seed");
-  std::vector<std::string> out(3, "–");
-  const double at = v.number("contact_time_speed_m_s");
-  for (int k = 0; k < 3; ++k) {
-    const std::string var = kVariants[k];
-    const std::string conv = var == "paper" ? "paper" : "physical";
-    const std::string seed_key = conv + (var == "realtime" ? "_realtime" : "_reference");
-    if (key == "clanet_min_speed" && cl.at("min_speed_" + var).has_child("at_compared_attack"))
-      out[k] = bisected(cl.at("min_speed_" + var).at("at_compared_attack"), "m/s");
-    else if (key == "clanet_best_attack")
-      out[k] = fmt(cl.at("min_speed_" + var).number("best_attack_deg"), 3) + "°";
-    else if (key == "clanet_max_path_angle")
-      out[k] = bisected(cl.at("largest_path_angle_" + var), "°");
-    else if (key == "clanet_contact_time")
-      out[k] = contact_time_text(cl.table("contact_time"), "contact_" + var + "_s", at);
-    else if (key == "clanet_contact_exponent" && var == "reference")
-      out[k] = fmt(cl.number("contact_time_exponent"), 3);
-    else if (key.rfind("clanet_regime_", 0) == 0 && var != "realtime") {
-      const std::string r = "regime_" + key.substr(14) + "_" + conv;
-      if (cl.has_child(r)) out[k] = regime_text(cl.at(r));
-    } else if (key == "bocquet_speed_exponent" && var != "realtime")
-      out[k] = fmt(bq.number("speed_exponent_" + conv), 3);
-    else if (key == "bocquet_spin_exponent" && var != "realtime")
-      out[k] = fmt(bq.number("spin_exponent_" + conv), 3);
-    else if (key == "bocquet_counts" && var != "realtime")
-      out[k] = counts_text(bq.table("spin"), "spin_rev_s", "count_" + conv);
-    else if (key == "seed_no_spin" && seed.has_child(seed_key))
-      out[k] = fmt(seed.at(seed_key).number("bounces_without_spin")) + " bounces";
-    else if (key == "seed_spin" && seed.has_child(seed_key))
-      out[k] = fmt(seed.at(seed_key).number("bounces_with_spin")) + " bounces";
-    else if (key == "seed_curved" && seed.has_child(seed_key))
-      out[k] = "lateral " + fmt(100 * seed.at(seed_key).number("lateral_with_spin_m"), 3) + " cm with spin, " +
-               fmt(100 * seed.at(seed_key).number("lateral_without_spin_m"), 3) + " cm without";
+// One variant's cell of a validation row.
+std::string model_cell(const Record& g, const std::string& key, const Record& v) {
+  const Record& seed = g.at("seed");
+  if (key == "clanet_min_speed")
+    return g.has_child("min_speed_at_compared_attack") ? bisected(g.at("min_speed_at_compared_attack"), "m/s") : "–";
+  if (key == "clanet_best_attack") return fmt(g.number("best_attack_deg"), 3) + "°";
+  if (key == "clanet_max_path_angle") return bisected(g.at("largest_path_angle"), "°");
+  if (key == "clanet_contact_time") return contact_time_text(g.table("contact_time"), v.number("contact_time_speed_m_s"));
+  if (key == "clanet_contact_exponent") return exponent_text(g.at("contact_exponent"));
+  if (key.rfind("clanet_regime_", 0) == 0) {
+    const std::string r = "regime_" + key.substr(14);
+    return g.has_child(r) ? regime_text(g.at(r)) : "–";
   }
-  return out;
+  if (key == "bocquet_speed_exponent") return exponent_text(g.at("speed_exponent"));
+  if (key == "bocquet_spin_exponent") return exponent_text(g.at("spin_exponent"));
+  if (key == "bocquet_counts") return counts_text(g.table("bocquet_spin"), "spin_rev_s", "count");
+  if (key == "seed_no_spin") return fmt(seed.number("bounces_without_spin")) + " bounces";
+  if (key == "seed_spin") return fmt(seed.number("bounces_with_spin")) + " bounces";
+  if (key == "seed_curved")
+    return "lateral " + fmt(100 * seed.number("lateral_with_spin_m"), 3) + " cm with spin, " +
+           fmt(100 * seed.number("lateral_without_spin_m"), 3) + " cm without";
+  return "–";
+}
+
+// A curve of every variant: x from `x_column` of table `table`, y from `y_column` (times `scale`).
+std::vector<PlotSeries> variant_curves(const Record& vars, const std::string& table, const std::string& x_column,
+                                       const std::string& y_column, double scale, bool square_x) {
+  std::vector<PlotSeries> ps;
+  for (const auto& key : vars.strings("keys")) {
+    const Record& g = vars.at(key);
+    PlotSeries p;
+    p.title = "model: " + g.text("title");
+    if (g.text("solver") == "realtime") p.style = "linespoints dt 2";
+    for (double x : g.table(table).column(x_column)) p.x.push_back(square_x ? x * x : x);
+    for (double y : g.table(table).column(y_column)) p.y.push_back(scale * y);
+    ps.push_back(p);
+  }
+  return ps;
 }
 
 std::string first_contact_text(const Record& h) {
@@ -96,108 +101,145 @@ std::string first_contact_text(const Record& h) {
 
 }  // namespace
 
+PlotSeries attack_angle_series(const Record& history, const std::string& title, const std::string& style) {
+  PlotSeries p;
+  p.title = title;
+  p.style = style;
+  p.x = history.table("history").column("t_s");
+  p.y = history.table("history").column("attack_deg");
+  return p;
+}
+
 SectionOutput validation_section(const Record& v) {
   SectionWriter w(v, "5. Validation against experiments (spec §3)");
+  const Record& vars = v.at("variants");
+  std::string titles;
+  for (const auto& key : vars.strings("keys")) titles += (titles.empty() ? "" : ", ") + code(vars.at(key).text("title"));
   w.lead("What is compared.",
-         "The model's values — computed with the spec's force law, nothing tuned — beside measured ones. The model is not "
-         "expected to match: the differences are model-form error (a Newtonian impact law on a triangle mesh, no splash, "
-         "no cavity, no added mass). The `reference` column is the model itself (CVODE, rtol " +
-             fmt(v.number("reference_rtol"), 2) +
-             "); the `real-time` column adds the stepper's discretisation error; `paper` is the model with the paper's "
-             "printed equations. Minimum speeds and the largest path angle are bisected (smallest speed / largest angle "
-             "with at least one bounce) to " + fmt(v.number("speed_tolerance_m_s"), 2) + " m/s and " +
-             fmt(v.number("angle_tolerance_deg"), 2) + "°.");
+         "The model's values, nothing tuned, beside measured ones, for each water law with the coefficient its source "
+         "publishes (model/stone/water_laws.hpp): " + titles +
+             ". A `reference` column is the model itself (CVODE, physical convention, rtol " + fmt(v.number("reference_rtol"), 2) +
+             "); the `real-time` column adds the stepper's discretisation error to the default law (" +
+             code(v.text("default_law")) +
+             "); the paper convention is the model with the paper's printed equations (their own law, Eq. 2). The "
+             "model is not expected to match: the differences are model-form error (a force law on a triangle mesh, no "
+             "splash, no cavity, no added mass). Minimum speeds and the largest path angle are bisected (smallest speed / "
+             "largest angle with at least one bounce) to " + fmt(v.number("speed_tolerance_m_s"), 2) + " m/s and " +
+             fmt(v.number("angle_tolerance_deg"), 2) + "°; exponents are least-squares fits of the logarithms with their "
+             "95 % interval.");
   const Record& m = v.at("measured");
-  MarkdownTable t({"quantity", "measured", "expected (spec §3)", "source", "model: reference (physical)",
-                   "model: real-time (physical)", "model: paper convention (reference)"});
+  std::vector<std::string> head{"quantity", "measured", "expected (spec §3)", "source"};
+  for (const auto& key : vars.strings("keys")) head.push_back("model: " + vars.at(key).text("title"));
+  MarkdownTable t(head);
   for (const auto& key : m.strings("keys")) {
     const Record& row = m.at(key);
-    const auto cells = model_cells(v, key);
-    t.row({row.text("quantity"), row.text("measured"), row.text("expected"), row.text("source"), cells[0], cells[1], cells[2]});
+    std::vector<std::string> cells{row.text("quantity"), row.text("measured"), row.text("expected"), row.text("source")};
+    for (const auto& vk : vars.strings("keys")) cells.push_back(model_cell(vars.at(vk), key, v));
+    t.row(cells);
   }
   w.table(t);
   const Record& bq = v.at("bocquet");
   w.text("Stone for Bocquet's trends: " + bq.text("stone") + ". Bocquet's N_Ω ≈ RΩ²/g gives " +
          counts_text(bq.table("spin"), "spin_rev_s", "bocquet_N_omega") + " bounces at these spins.");
 
-  const Record& cl = v.at("clanet");
+  // The fitted exponents and their verdicts, per variant (the reasons: the intervals in the table above).
   {
-    const Table& ms = cl.table("min_speed");
-    PlotSeries a, b, c;
-    a.title = "model, reference (physical)";
-    b.title = "model, real-time (physical)";
-    c.title = "model, paper convention";
-    a.x = b.x = c.x = ms.column("attack_deg");
-    a.y = ms.column("min_speed_reference_m_s");
-    b.y = ms.column("min_speed_realtime_m_s");
-    c.y = ms.column("min_speed_paper_m_s");
+    const Record& first = vars.at(vars.strings("keys").front());
+    w.lead("Fitted exponents.", "Each against the expected value ± " + fmt(v.number("exponent_tolerance"), 2) +
+                                    ": the whole 95 % interval must lie within it (rule `power_law_exponent`).");
+    MarkdownTable e({"model", "contact time against U (expected " +
+                                  fmt(first.at("contact_exponent").at("verdict").number("expected"), 3) + ")",
+                     "N against V² (expected " + fmt(first.at("speed_exponent").at("verdict").number("expected"), 3) + ")",
+                     "N against Ω² (expected " + fmt(first.at("spin_exponent").at("verdict").number("expected"), 3) + ")"});
+    for (const auto& key : vars.strings("keys")) {
+      const Record& g = vars.at(key);
+      std::vector<std::string> cells{g.text("title")};
+      for (const char* fit : {"contact_exponent", "speed_exponent", "spin_exponent"})
+        cells.push_back(exponent_text(g.at(fit)) + ": **" + g.at(fit).at("verdict").text("verdict") + "**");
+      e.row(cells);
+    }
+    w.table(e);
+  }
+
+  {
+    std::vector<PlotSeries> ps = variant_curves(vars, "min_speed", "attack_deg", "min_speed_m_s", 1, false);
+    const Record& curves = v.at("curves");
+    for (const auto& ck : curves.strings("keys")) {
+      const Record& c = curves.at(ck);
+      if (c.text("quantity") != "clanet_min_speed") continue;
+      const Table& pts = c.table("points");
+      PlotSeries lo, hi;
+      lo.title = "measured, low end";
+      hi.title = "measured, high end";
+      lo.style = "points pt 7 ps 1.5";
+      hi.style = "points pt 5 ps 1.5";
+      lo.x = hi.x = pts.column("x");
+      lo.y = pts.column("low");
+      hi.y = pts.column("high");
+      ps.push_back(lo);
+      ps.push_back(hi);
+    }
     PlotAxes ax;
     ax.x_label = "attack angle α (deg)";
     ax.y_label = "minimum speed for a bounce (m/s)";
     ax.extra = "set yrange [0:*]";
-    w.figure(line_figure("clanet_min_speed", "Clanet's disk: minimum bouncing speed against attack angle", ax, {a, b, c},
-                         "attack_deg", "speed_m_s"));
+    w.figure(line_figure("clanet_min_speed", "Clanet's disk: minimum bouncing speed against attack angle, measured and each law",
+                         ax, ps, "attack_deg", "speed_m_s"));
+    for (const auto& ck : curves.strings("keys")) {
+      const Record& c = curves.at(ck);
+      if (c.text("quantity") == "clanet_min_speed")
+        w.text("Measured points in the figure: " + c.text("label") + " (" + c.text("source") + ").");
+    }
   }
   {
-    const Table& ct = cl.table("contact_time");
-    PlotSeries a, b, c;
-    a.title = "model, reference (physical)";
-    b.title = "model, real-time (physical)";
-    c.title = "model, paper convention";
-    a.x = b.x = c.x = ct.column("speed_m_s");
-    for (auto [p, col] : {std::pair{&a, "contact_reference_s"}, {&b, "contact_realtime_s"}, {&c, "contact_paper_s"}})
-      for (double x : ct.column(col)) p->y.push_back(1000 * x);
     PlotAxes ax;
     ax.x_label = "speed U (m/s)";
     ax.y_label = "duration of the first contact (ms)";
-    w.figure(line_figure("clanet_contact_time", "Clanet's disk: contact time against speed", ax, {a, b, c}, "speed_m_s",
-                         "contact_ms"));
+    w.figure(line_figure("clanet_contact_time", "Clanet's disk: contact time against speed", ax,
+                         variant_curves(vars, "contact_time", "speed_m_s", "contact_s", 1000, false), "speed_m_s", "contact_ms"));
   }
   {
+    // Attack angle through the spin regimes: the default law and the paper convention, every spin.
     std::vector<PlotSeries> ps;
-    for (const auto& key : cl.strings("regimes")) {
-      const Record& h = cl.at(key);
-      PlotSeries p;
-      p.title = h.text("label");
-      p.style = h.text("convention") == "paper" ? "lines dt 2" : "lines";
-      p.x = h.table("history").column("t_s");
-      p.y = h.table("history").column("attack_deg");
-      ps.push_back(p);
+    for (const auto& key : vars.strings("keys")) {
+      const Record& g = vars.at(key);
+      if (g.text("solver") != "reference" || (g.text("convention") != "paper" && g.text("law") != v.text("default_law")))
+        continue;
+      for (const auto& rk : g.strings("regimes")) {
+        const Record& h = g.at(rk);
+        ps.push_back(attack_angle_series(h, h.text("label"), h.text("convention") == "paper" ? "lines dt 2" : "lines"));
+      }
     }
     PlotAxes ax;
     ax.x_label = "time (s)";
     ax.y_label = "attack angle (deg)";
-    w.figure(line_figure("clanet_spin_regimes",
-                         "Clanet's disk at α = " + fmt(cl.number("regime_attack_deg"), 3) + "°: attack angle for each spin",
-                         ax, ps, "t_s", "attack_deg"));
+    Figure f = line_figure("clanet_spin_regimes",
+                           "Clanet's disk at α = " + fmt(v.number("regime_attack_deg"), 3) + "°: attack angle for each spin",
+                           ax, ps, "t_s", "attack_deg");
+    f.data_path = vars.path();
+    w.figure(f);
   }
   {
+    std::vector<PlotSeries> ps = variant_curves(vars, "bocquet_speed", "speed_m_s", "count", 1, true);
     const Table& s = bq.table("speed");
-    std::vector<PlotSeries> ps(3);
-    ps[0].title = "model, physical";
-    ps[1].title = "model, paper convention";
-    ps[2].title = "Bocquet's V² shape (scaled to N_Ω at the base speed)";
-    ps[2].style = "lines dt 3";
-    for (double V : s.column("speed_m_s"))
-      for (auto& p : ps) p.x.push_back(V * V);
-    ps[0].y = s.column("count_physical");
-    ps[1].y = s.column("count_paper");
-    ps[2].y = s.column("bocquet_shape");
+    PlotSeries b;
+    b.title = "Bocquet's V² shape (scaled to N_Ω at the base speed)";
+    b.style = "lines dt 3";
+    for (double V : s.column("speed_m_s")) b.x.push_back(V * V);
+    b.y = s.column("bocquet_shape");
+    ps.push_back(b);
     PlotAxes ax;
     ax.x_label = "V² (m²/s²)";
     ax.y_label = "bounces";
     w.figure(line_figure("bocquet_speed", "Bounce count against V² (Bocquet's stone)", ax, ps, "V2_m2_s2", "bounces"));
+    std::vector<PlotSeries> qs = variant_curves(vars, "bocquet_spin", "spin_rev_s", "count", 1, true);
     const Table& o = bq.table("spin");
-    std::vector<PlotSeries> qs(3);
-    qs[0].title = "model, physical";
-    qs[1].title = "model, paper convention";
-    qs[2].title = "Bocquet N_Ω = RΩ²/g";
-    qs[2].style = "lines dt 3";
-    for (double W : o.column("spin_rev_s"))
-      for (auto& p : qs) p.x.push_back(W * W);
-    qs[0].y = o.column("count_physical");
-    qs[1].y = o.column("count_paper");
-    qs[2].y = o.column("bocquet_N_omega");
+    PlotSeries n;
+    n.title = "Bocquet N_Ω = RΩ²/g";
+    n.style = "lines dt 3";
+    for (double W : o.column("spin_rev_s")) n.x.push_back(W * W);
+    n.y = o.column("bocquet_N_omega");
+    qs.push_back(n);
     ax.x_label = "Ω² (rev²/s²)";
     w.figure(line_figure("bocquet_spin", "Bounce count against Ω² (Bocquet's stone)", ax, qs, "spin2_rev2_s2", "bounces"));
   }

@@ -20,7 +20,7 @@ std::string range_text(const std::vector<double>& v) {
 }  // namespace
 
 SectionOutput work_precision_section(const Record& c) {
-  SectionWriter w(c, "2. Speed against error");
+  SectionWriter w(c, "2. Speed against error, each water law");
   w.lead("What is measured.",
          "Each throw is solved by the real-time stepper over a range of flight steps (" +
              range_text(c.table("realtime_dt_s").column("dt_s")) +
@@ -42,7 +42,7 @@ SectionOutput work_precision_section(const Record& c) {
     w.subheading("Throw: " + t.text("label"));
     const std::string what = t.text("headline") + " error (m)";
     const double unc = t.number("truth_uncertainty_m");
-    w.text("Reference (rtol " + fmt(c.number("truth_rtol"), 2) + "): " + fmt(t.number("truth_contacts")) + " contacts, " +
+    w.text("Water law: `" + t.text("law") + "`. Reference (rtol " + fmt(c.number("truth_rtol"), 2) + "): " + fmt(t.number("truth_contacts")) + " contacts, " +
            fmt(t.number("truth_bounces")) + " bounces, " + t.text("truth_outcome") + " at " +
            fmt(t.number("truth_end_time_s"), 4) + " s; " + fmt(t.number("truth_steps"), 8) + " steps, " +
            fmt(t.number("truth_rhs_evaluations"), 8) + " RHS evaluations, " + fmt(t.number("truth_segments"), 8) +
@@ -111,6 +111,47 @@ SectionOutput work_precision_section(const Record& c) {
       for (const auto& f : fails) list += "* " + f + "\n";
       w.text("Failures (no error plotted):\n\n" + list);
     }
+  }
+  if (c.has_child("restarts")) {
+    const Record& r = c.at("restarts");
+    const auto& strategies = r.strings("strategies");
+    const auto& methods = r.strings("methods");
+    w.subheading("CVODE's restart strategies");
+    std::string throws;
+    for (const auto& l : r.strings("throws")) throws += (throws.empty() ? "" : "; ") + ("*" + l + "*");
+    w.text("Where the right-hand side is only non-smooth (a vertex crossing or a face's switch leaves the force "
+           "continuous) a restart of CVODE's multistep history may not pay. Each strategy — `every_event` (locate every "
+           "vertex crossing and face switch and restart at each), `every_crossing` (restart at vertex crossings only), "
+           "`at_jumps` (restart only where the force jumps: a flat face reaching or leaving the surface, and a contact's "
+           "start), `never` — solves each throw at each method and rtol (atol = rtol × " +
+           fmt(r.number("atol_ratio"), 2) + "), against a truth that restarts at every event at rtol " +
+           fmt(r.number("truth_rtol"), 2) + ". A strategy keeps the contact times where, at every method and rtol, no run "
+           "fails or changes its contact list and its worst contact-start or -end error is at most the larger of " +
+           fmt(r.number("time_tolerance_s"), 2) + " s and " + fmt(r.number("error_factor"), 2) +
+           "× `every_event`'s own worst error there. Cost: right-hand-side evaluations (the verdict's measure) and " +
+           r.text("clock") + " (" + fmt(r.number("repeats")) + " repeats). The throws: " + throws + ".");
+    w.verdict("Cheapest strategy that keeps the contact times (the reference's default is `" + r.text("default") + "`)",
+              r.at("verdict"));
+    w.end_list();
+    MarkdownTable tot({"strategy", "failed runs", "worst error / tolerance", "RHS evaluations", "integration segments",
+                       "CPU (s)"});
+    for (const auto& name : strategies) {
+      const Record& g = r.at(name);
+      tot.row({code(name), fmt(g.number("failed")), fmt(g.number("error_ratio"), 3), fmt(g.number("rhs_evaluations"), 8),
+               fmt(g.number("segments"), 8), fmt(g.number("cpu_s"), 3)});
+    }
+    w.table(tot);
+    const Table& sum = r.table("summaries");
+    MarkdownTable st({"method", "rtol", "strategy", "throws", "failed", "RHS evaluations", "segments", "CPU (s)",
+                      "worst contact-time error (s)", "tolerance (s)", "keeps"});
+    for (std::size_t i = 0; i < sum.rows(); ++i) {
+      auto col = [&](const char* k) { return sum.column(k)[i]; };
+      st.row({methods.at(static_cast<std::size_t>(col("method"))), fmt(col("rtol"), 2),
+              code(strategies.at(static_cast<std::size_t>(col("strategy")))), fmt(col("throws")), fmt(col("failed")),
+              fmt(col("rhs_evaluations"), 8), fmt(col("segments"), 8), fmt(col("cpu_s"), 3),
+              fmt(col("worst_contact_time_error_s"), 2), fmt(col("tolerance_s"), 2), col("keeps") != 0 ? "yes" : "no"});
+    }
+    w.table(st);
   }
   w.lead("How to read it.",
          "Lower left is better. Each family's curve ends where its runs stop reproducing the reference's contacts: "

@@ -53,14 +53,28 @@ SpectralWave::~SpectralWave() = default;
 
 double SpectralWave::lambda(int i, int j) const { return lambda_[static_cast<std::size_t>(j) * nxc_ + i]; }
 
+void SpectralWave::transform(const std::vector<double>& field, std::vector<std::complex<double>>& spectrum) {
+  const std::size_t n = static_cast<std::size_t>(options_.nx) * options_.ny;
+  if (field.size() != n) throw std::invalid_argument("SpectralWave: wrong field size");
+  std::memcpy(plans_->real, field.data(), n * sizeof(double));
+  fftw_execute(plans_->forward);
+  spectrum.resize(lambda_.size());
+  std::memcpy(reinterpret_cast<void*>(spectrum.data()), plans_->spec, spectrum.size() * sizeof(fftw_complex));
+}
+
+void SpectralWave::synthesise(const std::vector<std::complex<double>>& spectrum, std::vector<double>& field) {
+  const std::size_t n = static_cast<std::size_t>(options_.nx) * options_.ny;
+  if (spectrum.size() != lambda_.size()) throw std::invalid_argument("SpectralWave: wrong spectrum size");
+  std::memcpy(reinterpret_cast<void*>(plans_->spec), spectrum.data(), spectrum.size() * sizeof(fftw_complex));
+  fftw_execute(plans_->backward);  // unnormalised: divide by nx·ny
+  field.resize(n);
+  const double scale = 1.0 / static_cast<double>(n);
+  for (std::size_t k = 0; k < n; ++k) field[k] = plans_->real[k] * scale;
+}
+
 void SpectralWave::set_initial(const std::vector<double>& z0, const std::vector<double>& v0) {
   const std::size_t n = static_cast<std::size_t>(options_.nx) * options_.ny;
   if (z0.size() != n || (!v0.empty() && v0.size() != n)) throw std::invalid_argument("SpectralWave: wrong field size");
-  auto transform = [&](const std::vector<double>& in, std::vector<std::complex<double>>& out) {
-    std::memcpy(plans_->real, in.data(), n * sizeof(double));
-    fftw_execute(plans_->forward);
-    std::memcpy(reinterpret_cast<void*>(out.data()), plans_->spec, out.size() * sizeof(fftw_complex));
-  };
   transform(z0, z0_hat_);
   if (v0.empty())
     std::fill(v0_hat_.begin(), v0_hat_.end(), 0.0);
@@ -68,17 +82,17 @@ void SpectralWave::set_initial(const std::vector<double>& z0, const std::vector<
     transform(v0, v0_hat_);
 }
 
-void SpectralWave::evaluate(double t_s, std::vector<double>& z) {
-  const std::size_t n = static_cast<std::size_t>(options_.nx) * options_.ny;
-  auto* spec = reinterpret_cast<std::complex<double>*>(plans_->spec);
+void SpectralWave::evaluate_spectrum(double t_s, std::vector<std::complex<double>>& spectrum) const {
+  spectrum.resize(lambda_.size());
   for (std::size_t k = 0; k < lambda_.size(); ++k) {
-    DampedModeFactors f = damped_mode(lambda_[k], options_.damping_per_s, t_s);
-    spec[k] = f.gz * z0_hat_[k] + f.gv * v0_hat_[k];
+    const DampedModeFactors f = damped_mode(lambda_[k], options_.damping_per_s, t_s);
+    spectrum[k] = f.gz * z0_hat_[k] + f.gv * v0_hat_[k];
   }
-  fftw_execute(plans_->backward);  // unnormalised: divide by nx·ny
-  z.resize(n);
-  const double scale = 1.0 / static_cast<double>(n);
-  for (std::size_t k = 0; k < n; ++k) z[k] = plans_->real[k] * scale;
+}
+
+void SpectralWave::evaluate(double t_s, std::vector<double>& z) {
+  evaluate_spectrum(t_s, work_);
+  synthesise(work_, z);
 }
 
 }  // namespace stoneskip

@@ -38,11 +38,21 @@ class SpectralWave {
   // λ of the mode (i, j) of the r2c layout (i < nx/2 + 1, j < ny).
   double lambda(int i, int j) const;
 
+  // The pieces of evaluate(), for references built on this one (solvers/spectral/forced_wave.hpp).
+  // Modes in the r2c layout: index j·(nx/2 + 1) + i.
+  const std::vector<double>& lambdas() const { return lambda_; }
+  const SpectralWaveOptions& options() const { return options_; }
+  // The free solution's spectrum at t (unnormalised, as transform() gives).
+  void evaluate_spectrum(double t_s, std::vector<std::complex<double>>& spectrum) const;
+  // field (nx·ny) → spectrum (FFTW r2c, unnormalised); spectrum → field (c2r, divided by nx·ny).
+  void transform(const std::vector<double>& field, std::vector<std::complex<double>>& spectrum);
+  void synthesise(const std::vector<std::complex<double>>& spectrum, std::vector<double>& field);
+
  private:
   SpectralWaveOptions options_;
   int nxc_;
   std::vector<double> lambda_;
-  std::vector<std::complex<double>> z0_hat_, v0_hat_;
+  std::vector<std::complex<double>> z0_hat_, v0_hat_, work_;
   struct Plans;
   std::unique_ptr<Plans> plans_;
 };

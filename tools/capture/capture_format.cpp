@@ -15,7 +15,7 @@
 namespace stoneskip {
 
 const std::vector<std::string>& capture_format_names() {
-  static const std::vector<std::string> names{"trace_csv", "report_log", "evemu", "gesture"};
+  static const std::vector<std::string> names{"trace_csv", "report_log", "evemu", "gesture", "csv"};
   return names;
 }
 
@@ -41,6 +41,7 @@ std::string detect(const std::string& text) {
     if (line.rfind("# EVEMU", 0) == 0 || line.rfind("N: ", 0) == 0 || line.rfind("E: ", 0) == 0) return "evemu";
     if (line.front() == '#') continue;
     ++looked;
+    if (is_header_csv_column_line(std::string(line))) return "csv";
     const auto f = split_fields(line, false);
     if (f.size() == 6) {
       bool numbers = true;
@@ -83,23 +84,40 @@ void check_sane(const Trace& t) {
 
 std::string detect_capture_format(const std::string& text) { return detect(text); }
 
-Trace parse_capture(const std::string& text, const std::string& file, const std::string& format_in) {
-  std::string format = format_in;
+Trace parse_capture(const std::string& text, const std::string& file, const CaptureReadOptions& o) {
+  std::string format = o.format;
+  const bool csv_options = o.csv.remote != 0 || !o.csv.columns.empty();
   if (format.empty() || format == "auto") {
     split_capture_lines(text, file);  // binary data is reported as such, not as an unknown format
     format = detect(text);
+    if (format.empty() && !o.csv.columns.empty()) format = "csv";  // mapped columns: it is a CSV
     if (format.empty())
       throw_input_error(file, 0, "",
-                        "unrecognised capture format (trace_csv, report_log, evemu, gesture); use --format NAME");
+                        "unrecognised capture format (trace_csv, report_log, evemu, gesture, csv); use --format NAME "
+                        "or --columns");
   }
+  if (csv_options && format != "csv")
+    throw_input_error(file, 0, o.csv.remote != 0 ? "--remote" : "--columns",
+                      "applies to the csv format only (this file reads as " + format + ")");
   Trace t;
   if (format == "trace_csv") t = read_trace_csv(text, file);
   else if (format == "report_log") t = read_report_log(text, file);
   else if (format == "evemu") t = read_evemu(text, file);
   else if (format == "gesture") t = read_gesture(text, file);
-  else throw_input_error(file, 0, "--format", "unknown format '" + format + "' (trace_csv, report_log, evemu, gesture)");
+  else if (format == "csv") t = read_header_csv(text, file, o.csv);
+  else throw_input_error(file, 0, "--format", "unknown format '" + format + "' (trace_csv, report_log, evemu, gesture, csv)");
   check_sane(t);
   return t;
+}
+
+Trace parse_capture(const std::string& text, const std::string& file, const std::string& format) {
+  CaptureReadOptions o;
+  o.format = format;
+  return parse_capture(text, file, o);
+}
+
+Trace read_capture(const std::string& path, const CaptureReadOptions& options) {
+  return parse_capture(read_text_file(path), path, options);
 }
 
 Trace read_capture(const std::string& path, const std::string& format) {

@@ -4,9 +4,10 @@
 #include <vector>
 
 #include "tools/capture/capture_text.hpp"
-#include "tools/capture/mounting.hpp"
 #include "tools/capture/wiimote_report.hpp"
 #include "tools/io/input_error.hpp"
+#include "verification/captures/mounting.hpp"
+#include "verification/captures/virtual_thrower.hpp"
 
 namespace stoneskip {
 
@@ -63,6 +64,13 @@ bool apply_header_key(Trace& t, const std::string& key, const std::string& value
     const std::string setting = key.substr(9) + "=" + value;
     apply_mounting_setting(probe, setting, input_location(file, line, ""));
     t.mounting.push_back(setting);
+    return true;
+  }
+  if (key.rfind("thrower.", 0) == 0) {
+    VirtualThrowerOptions probe;  // validate now, so the error names the line
+    const std::string setting = key.substr(8) + "=" + value;
+    apply_thrower_setting(probe, setting, input_location(file, line, ""));
+    t.thrower.push_back(setting);
     return true;
   }
   if (key.rfind("calibration.", 0) != 0) return false;
@@ -128,6 +136,10 @@ std::string header_lines(const Trace& t) {
   for (const auto& m : t.mounting) {
     const auto eq = m.find('=');
     s += "# mounting." + m.substr(0, eq) + ": " + m.substr(eq + 1) + "\n";
+  }
+  for (const auto& m : t.thrower) {
+    const auto eq = m.find('=');
+    s += "# thrower." + m.substr(0, eq) + ": " + m.substr(eq + 1) + "\n";
   }
   return s;
 }

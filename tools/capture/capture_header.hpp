@@ -8,11 +8,12 @@
 //                                                           gyro_fast_factor, gyro_sign)
 //   # nominal_rate_hz: 100
 //   # mounting.lever_arm_m: 0,0.6,0                        (any key of mounting.hpp)
-// Other comments are ignored; an unknown calibration.* or mounting.* key is an error.
+//   # thrower.release_height_m: 0.3                        (any key of virtual_thrower.hpp)
+// Other comments are ignored; an unknown calibration.*, mounting.* or thrower.* key is an error.
 #include <string>
 #include <string_view>
 
-#include "tools/capture/capture_trace.hpp"
+#include "verification/captures/capture_trace.hpp"
 
 namespace stoneskip {
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "tools/capture/capture_analysis.hpp"
+#include "verification/captures/capture_analysis.hpp"
 #include "tools/capture/capture_format.hpp"
 #include "tools/capture/synthetic_capture.hpp"
 #include "tools/capture/trace_csv.hpp"

@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "verification/captures/strict_numbers.hpp"  // trim, split_fields, parse_real, parse_integer
+
 namespace stoneskip {
 
 struct TextLine {
@@ -20,14 +22,6 @@ struct TextLine {
 // Splits text into lines. Throws InputError "FILE: binary data (byte 0x.. at line N)" when the text
 // holds a NUL or other control byte (tab, CR, LF excepted).
 std::vector<TextLine> split_capture_lines(const std::string& text, const std::string& file);
-
-// Whitespace- (or, with comma = true, comma-) separated fields.
-std::vector<std::string_view> split_fields(std::string_view line, bool comma);
-std::string_view trim(std::string_view s);
-
-// Strict numbers: the whole field must parse and be finite.
-std::optional<double> parse_real(std::string_view field);
-std::optional<long long> parse_integer(std::string_view field, int base = 10);
 
 // Reports a malformed line: a warning (recorded in warnings) when it is the unterminated last line,
 // an InputError otherwise.

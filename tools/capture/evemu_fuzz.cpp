@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <string>
 
-#include "tools/capture/capture_analysis.hpp"
 #include "tools/capture/capture_format.hpp"
 #include "tools/io/input_error.hpp"
+#include "verification/captures/capture_analysis.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

@@ -114,6 +114,28 @@ Trace read_evemu(const std::string& text, const std::string& file) {
   std::stable_sort(keys.begin(), keys.end(), [](const KeyEvent& a, const KeyEvent& b) { return a.t_s < b.t_s; });
   t.has_gyro = !gyro_frames.empty();
   const CaptureCalibration& c = t.calibration;
+  // The range mode the driver hid: it writes (raw − 8192)·9 in slow mode, an exact multiple of 9,
+  // and (raw − 8192)·18000/440 (integer division) in fast mode, which rarely is one (hid-wiimote-
+  // modules.c, wiimod_mp_in_mp). A value beyond the slow range is fast whatever it is; a run of
+  // fewer than kMinSlowRun multiples of 9 between fast frames is fast too (a fast value is a
+  // multiple of 9 about one time in nine).
+  constexpr std::size_t kMinSlowRun = 3;
+  std::vector<std::array<bool, 3>> gyro_fast(gyro_frames.size());
+  for (int i = 0; i < 3; ++i) {
+    for (std::size_t f = 0; f < gyro_frames.size(); ++f)
+      gyro_fast[f][i] = std::fmod(gyro_frames[f].v[i], 9.0) != 0.0 || std::abs(gyro_frames[f].v[i]) > 9.0 * 8192;
+    for (std::size_t f = 0; f < gyro_frames.size();) {
+      if (gyro_fast[f][i]) {
+        ++f;
+        continue;
+      }
+      std::size_t e = f;
+      while (e < gyro_frames.size() && !gyro_fast[e][i]) ++e;
+      if (f > 0 && e < gyro_frames.size() && e - f < kMinSlowRun)
+        for (std::size_t k = f; k < e; ++k) gyro_fast[k][i] = true;
+      f = e;
+    }
+  }
   const double t0 = accel_frames.front().t_s;
   std::size_t g = 0, k = 0;
   unsigned buttons = 0;
@@ -121,13 +143,13 @@ Trace read_evemu(const std::string& text, const std::string& file) {
   for (const Frame& a : accel_frames) {
     TraceSample x;
     x.t_s = a.t_s - t0;
-    for (int i = 0; i < 3; ++i) x.accel_g[i] = c.accel_g(i, a.v[i] + 0x200);
+    for (int i = 0; i < 3; ++i) x.accel_g[i] = c.accel_g_from_report(i, a.v[i] + 0x200);
     while (g + 1 < gyro_frames.size() && gyro_frames[g + 1].t_s <= a.t_s + kSameReport_s) ++g;
     if (t.has_gyro && gyro_frames[g].t_s <= a.t_s + kSameReport_s) {
       for (int i = 0; i < 3; ++i) {
         const double counts = gyro_frames[g].v[i] / 9.0;  // slow-mode counts from zero
         x.rate_deg_s[i] = c.gyro_sign[i] * counts / c.gyro_slow_counts_per_deg_s;
-        x.gyro_fast[i] = std::abs(counts) > 8192.0;
+        x.gyro_fast[i] = gyro_fast[g][i];
         if (std::abs(counts) >= 8191.0 * c.gyro_fast_factor) x.flags |= kGyroSaturated;
       }
     }

@@ -9,7 +9,7 @@
 // (gyro_range.hpp).
 #include <string>
 
-#include "tools/capture/capture_trace.hpp"
+#include "verification/captures/capture_trace.hpp"
 
 namespace stoneskip {
 

@@ -131,7 +131,7 @@ Trace read_report_log(const std::string& text, const std::string& file) {
   std::array<bool, 3> last_fast{};
   for (std::size_t k = 0; k < t.samples.size(); ++k) {
     TraceSample& x = t.samples[k];
-    for (int i = 0; i < 3; ++i) x.accel_g[i] = c.accel_g(i, x.accel_g[i]);
+    for (int i = 0; i < 3; ++i) x.accel_g[i] = c.accel_g_from_report(i, x.accel_g[i]);
     if (!t.has_gyro) continue;
     if (sample_has_gyro[k]) {
       for (int i = 0; i < 3; ++i) x.rate_deg_s[i] = c.gyro_deg_s(i, x.rate_deg_s[i], x.gyro_fast[i]);

@@ -11,7 +11,7 @@
 // to the previous one and less than half a nominal period after it is flagged as repeated.
 #include <string>
 
-#include "tools/capture/capture_trace.hpp"
+#include "verification/captures/capture_trace.hpp"
 
 namespace stoneskip {
 

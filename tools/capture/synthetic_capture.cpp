@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <numbers>
 #include <random>
 
@@ -77,13 +78,15 @@ struct Reading {
   bool button;
 };
 
-std::vector<Reading> record(const SyntheticThrow& th, const SyntheticSensor& s, SyntheticTruth& truth, bool allow_loss) {
+// The sensor chain on any motion: one reading per report of the remote over [0, end], the host
+// stamps offset by clock_offset_s; the recording counters go into truth.
+std::vector<Reading> sense(const std::function<SyntheticSample(double)>& at, double end, const SyntheticSensor& s,
+                           SyntheticTruth& truth, bool allow_loss, double clock_offset_s = 0) {
   std::mt19937_64 rng(s.seed);
   std::normal_distribution<double> gauss(0, 1);
   std::uniform_real_distribution<double> unit(0, 1);
   std::vector<Reading> out;
   std::array<bool, 3> fast{false, false, false};
-  const double end = synthetic_duration_s(th);
   truth.reports_sent = truth.dropped_reports = truth.repeated_reports = 0;
   truth.range_switches = truth.clipped_samples = 0;
   truth.received_stamps_s.clear();
@@ -91,10 +94,10 @@ std::vector<Reading> record(const SyntheticThrow& th, const SyntheticSensor& s, 
   const long reports = long(std::floor(end * s.rate_hz)) + 1;
   for (long n = 0; n < reports; ++n) {
     const double t = double(n) / s.rate_hz;
-    const SyntheticSample x = synthetic_sample(th, t);
+    const SyntheticSample x = at(t);
     Reading r{};
     r.t_s = t;
-    r.stamp_s = 12.5 + t + s.latency_s + s.jitter_s * (2 * unit(rng) - 1);
+    r.stamp_s = 12.5 + clock_offset_s + t + s.latency_s + s.jitter_s * (2 * unit(rng) - 1);
     r.button = x.button;
     bool clipped = false;
     for (int i = 0; i < 3; ++i) {
@@ -133,6 +136,11 @@ std::vector<Reading> record(const SyntheticThrow& th, const SyntheticSensor& s, 
       ++truth.repeated_reports;
     }
   }
+  return out;
+}
+
+std::vector<Reading> record(const SyntheticThrow& th, const SyntheticSensor& s, SyntheticTruth& truth, bool allow_loss) {
+  const auto out = sense([&th](double t) { return synthetic_sample(th, t); }, synthetic_duration_s(th), s, truth, allow_loss);
   // The truth at the release.
   const Geometry g = geometry(th);
   const double t_r = synthetic_release_time_s(th);
@@ -146,7 +154,11 @@ std::vector<Reading> record(const SyntheticThrow& th, const SyntheticSensor& s, 
   truth.path_angle_deg = ang.path_angle_deg;
   truth.attack_angle_deg = ang.attack_angle_deg;
   truth.spin_rev_s = (g.R_stone_r.transpose() * (turn.rate * g.k)).z() / (2 * std::numbers::pi);
+  truth.rise_m = synthetic_stone_position(th, t_r).z() - synthetic_stone_position(th, 0.0).z();
   truth.height_m = th.release_height_m;
+  truth.finger_spin_rev_s = th.finger_spin_rev_s;
+  truth.total_spin_rev_s = truth.spin_rev_s + (truth.spin_rev_s < 0 ? -1.0 : 1.0) * th.finger_spin_rev_s;
+  truth.still_s = th.still_s;
   return out;
 }
 }  // namespace
@@ -154,6 +166,29 @@ std::vector<Reading> record(const SyntheticThrow& th, const SyntheticSensor& s, 
 double synthetic_release_time_s(const SyntheticThrow& th) { return th.still_s + th.swing_duration_s; }
 double synthetic_duration_s(const SyntheticThrow& th) {
   return th.still_s + th.swing_duration_s + th.follow_through_s + th.after_s;
+}
+
+Vec3 synthetic_stone_position(const SyntheticThrow& th, double t) {
+  const Geometry g = geometry(th);
+  const Profile turn = profile(th, th.swing_rate_rad_s, t), pivot = profile(th, th.pivot_speed_m_s, t);
+  return pivot.pos * g.d + Eigen::AngleAxisd(turn.pos, g.k) * g.lever_world_r - g.lever_world_r;
+}
+
+SyntheticThrow skipping_throw(const SkippingThrowSpec& spec) {
+  SyntheticThrow th;
+  th.attack_angle_deg = spec.attack_angle_deg;
+  th.path_angle_deg = spec.path_angle_deg;
+  th.release_height_m = spec.release_height_m;
+  th.swing_duration_s = spec.swing_duration_s;
+  th.pivot_speed_m_s = spec.pivot_share * spec.speed_m_s;
+  // |V d + Ω k × L| = speed for Ω (the positive root).
+  const Geometry g = geometry(th);
+  const Vec3 u = g.k.cross(g.lever_world_r);
+  const double V = th.pivot_speed_m_s, du = g.d.dot(u), uu = u.squaredNorm();
+  th.swing_rate_rad_s = (-V * du + std::sqrt(V * V * du * du - uu * (V * V - spec.speed_m_s * spec.speed_m_s))) / uu;
+  const double arm_spin = std::abs((g.R_stone_r.transpose() * (th.swing_rate_rad_s * g.k)).z()) / (2 * std::numbers::pi);
+  th.finger_spin_rev_s = std::max(0.0, spec.spin_rev_s - arm_spin);
+  return th;
 }
 
 SyntheticSample synthetic_sample(const SyntheticThrow& th, double t) {
@@ -262,15 +297,99 @@ std::string synthetic_evemu(const SyntheticThrow& th, const SyntheticSensor& s, 
   return out;
 }
 
+std::string synthetic_wiiyourself_csv(const SyntheticThrow& th, const SyntheticSensor& s, const SyntheticSensor& idle,
+                                      SyntheticTruth& truth) {
+  // The thrower's reports, and those of a remote lying face up on the table, on its own clock.
+  const auto thrower = record(th, s, truth, true);
+  SyntheticTruth idle_counts;
+  const auto table = sense([](double) { return SyntheticSample{Vec3::UnitZ(), Vec3::Zero(), false}; },
+                           synthetic_duration_s(th), idle, idle_counts, true, 0.0037);
+  // What WiiYourself! holds for a remote after a report (wiimote.cpp: ParseAccel uses the 8 high
+  // bits and the 8-bit calibration; EstimateOrientationFrom updates pitch and roll only near 1 g;
+  // ParseExtension converts the MotionPlus words; Button.Bits reads the two bytes little-endian).
+  struct State {
+    double pitch_deg = 0, roll_deg = 0;
+    std::string fields;  // everything after the orientation, as written
+  };
+  auto update = [](State& st, const Reading& r, const SyntheticSensor& sensor) {
+    double a[3];
+    for (int i = 0; i < 3; ++i) {
+      const int zero8 = sensor.accel_zero_counts[i] >> 2, one8 = sensor.accel_one_g_counts[i] >> 2;
+      a[i] = double((r.accel_raw[i] >> 2) - zero8) / double(one8 - zero8);
+    }
+    const double len2 = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
+    if (std::abs(len2 - 1.0) <= 0.2) {
+      const double inv = 1.0 / std::sqrt(len2);
+      st.pitch_deg = -std::asin(std::clamp(a[1] * inv, -1.0, 1.0)) / kDeg;
+      st.roll_deg = std::atan2(a[0] * inv, a[2] * inv) / kDeg;
+    }
+    // WiiYourself! order: yaw (Z), pitch (X), roll (Y).
+    const int order[3] = {2, 0, 1};
+    char b[256];
+    int n = std::snprintf(b, sizeof b, "%f,%f,%f", a[0], a[1], a[2]);
+    for (int i : order) n += std::snprintf(b + n, sizeof b - std::size_t(n), ",%04hx", (unsigned short)r.gyro_raw[i]);
+    for (int i : order)
+      n += std::snprintf(b + n, sizeof b - std::size_t(n), ",%8.3f",
+                         -(r.gyro_raw[i] - 0x1F7F) * (r.slow[i] ? 0.05 : 0.25));
+    std::snprintf(b + n, sizeof b - std::size_t(n), ",%04x", r.button ? 0x0400u : 0u);
+    st.fields = b;
+  };
+  std::string out = "Sample,Time";
+  for (int remote = 1; remote <= 2; ++remote)
+    for (const char* c : {"Pitch", "Roll", "Acc X", "Acc Y", "Acc Z", "Raw Yaw", "Raw Pitch", "Raw Roll", "Speed Yaw",
+                          "Speed Pitch", "Speed Roll", "Buttons"})
+      out += std::string(",") + c + " #WM" + std::to_string(remote);
+  out += "\n";
+  // Both streams in host-time order; a row whenever a remote's state changes, once both reported.
+  struct Event {
+    double stamp_s;
+    int remote;
+    const Reading* r;
+  };
+  std::vector<Event> events;
+  for (const Reading& r : thrower)
+    if (!r.repeated) events.push_back({r.stamp_s, 1, &r});
+  for (const Reading& r : table)
+    if (!r.repeated) events.push_back({r.stamp_s, 2, &r});
+  std::stable_sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.stamp_s < b.stamp_s; });
+  State state[2];
+  bool seen[2] = {false, false};
+  constexpr long long kBootMs = 5234117;  // timeGetTime() counts from the host's boot
+  long row = 0;
+  char line[160];
+  for (const Event& e : events) {
+    State& st = state[e.remote - 1];
+    const std::string before = st.fields;
+    update(st, *e.r, e.remote == 1 ? s : idle);
+    const bool changed = st.fields != before || !seen[e.remote - 1];
+    seen[e.remote - 1] = true;
+    if (!changed || !seen[0] || !seen[1]) continue;
+    std::snprintf(line, sizeof line, "%ld,%lld", row++, kBootMs + std::llround(1e3 * e.stamp_s));
+    out += line;
+    for (const State& x : state) {
+      std::snprintf(line, sizeof line, ",%f,%f,", x.pitch_deg, x.roll_deg);
+      out += line + x.fields;
+    }
+    out += "\n";
+  }
+  truth.repeated_reports = 0;  // an unchanged report makes no row
+  return out;
+}
+
 std::string SyntheticTruth::toml() const {
-  char b[1024];
+  char b[2048];
   std::snprintf(b, sizeof b,
                 "# The truth behind a synthetic capture (tools/capture/synthetic_capture.cpp).\n"
+                "# [throw]: the stone at release as the remote can measure it (spin about the stone's normal\n"
+                "# from the arm; rise of the stone's centre since the still part). [stone]: the skipping stone\n"
+                "# the throw stands for (height above the water; the fingers' spin, which no sensor sees).\n"
                 "[throw]\nspeed_m_s = %.9g\npath_angle_deg = %.9g\nattack_angle_deg = %.9g\nspin_rev_s = %.9g\n"
-                "height_m = %.9g\nrelease_t_s = %.9g\n\n[recording]\nreports_sent = %ld\ndropped_reports = %ld\n"
+                "rise_m = %.9g\nrelease_t_s = %.9g\n\n[stone]\nheight_m = %.9g\nfinger_spin_rev_s = %.9g\n"
+                "total_spin_rev_s = %.9g\n\n[recording]\nstill_s = %.9g\nreports_sent = %ld\ndropped_reports = %ld\n"
                 "repeated_reports = %ld\nrange_switches = %d\nclipped_samples = %d\n",
-                speed_m_s, path_angle_deg, attack_angle_deg, spin_rev_s, height_m, release_t_s, reports_sent,
-                dropped_reports, repeated_reports, range_switches, clipped_samples);
+                speed_m_s, path_angle_deg, attack_angle_deg, spin_rev_s, rise_m, release_t_s, height_m, finger_spin_rev_s,
+                total_spin_rev_s, still_s, reports_sent, dropped_reports, repeated_reports, range_switches,
+                clipped_samples);
   return b;
 }
 

@@ -10,7 +10,7 @@
 // G (reports lost before this one) or '-'. Every reader's trace can be written out in this form.
 #include <string>
 
-#include "tools/capture/capture_trace.hpp"
+#include "verification/captures/capture_trace.hpp"
 
 namespace stoneskip {
 

@@ -16,7 +16,7 @@
 #include <optional>
 #include <vector>
 
-#include "tools/capture/capture_trace.hpp"
+#include "verification/captures/capture_trace.hpp"
 
 namespace stoneskip {
 

@@ -4,18 +4,21 @@
 //   stoneskip capture throw FILE --solver realtime|reference|both [--json] [--out FILE.h5]
 //   stoneskip capture convert FILE --out TRACE.csv               any format → stoneskip trace CSV
 //   stoneskip capture synthesize --out DIR                       the shipped synthetic captures + truth
+//   stoneskip capture columns                                    the csv reader's recognised column names
 //
 // Examples (regression runs):
 //   stoneskip capture validate cases/captures/*.log cases/captures/*.evemu --out out/captures
 //   stoneskip capture validate cases/captures/hard_sidearm_clipped.log --json --no-reference
 //   stoneskip capture throw cases/captures/gentle_sidearm.log --solver both
 // Common options: --format NAME (force a reader), --case FILE (stone and water, default
-// cases/paper_8ms_spin.toml), --mount key=value (mounting.hpp), --button A|B, --start-height M,
-// --saturation-g G, --max-accel-g G, --members N, --seed S.
+// cases/paper_8ms_spin.toml), --mount key=value (mounting.hpp), --thrower key=value
+// (virtual_thrower.hpp), --clock MODEL, --button A|B, --saturation-g G, --max-accel-g G, --members N,
+// --seed S.
 // Exit status: 0 done (whatever the verdicts, unless --strict and one is unusable), 1 --strict
 // with an unusable capture or a failed solve, 2 bad input.
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -25,12 +28,14 @@
 #include "reports/capture/capture_json.hpp"
 #include "reports/capture/capture_report.hpp"
 #include "tools/capture/capture_format.hpp"
-#include "tools/capture/capture_throw.hpp"
+#include "tools/capture/csv_columns.hpp"
+#include "verification/captures/capture_throw.hpp"
 #include "tools/capture/synthetic_capture.hpp"
 #include "tools/capture/trace_csv.hpp"
 #include "tools/cli/command_registry.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/progress.hpp"
 #include "tools/scene/stone_case.hpp"
 #include "tools/scene/throw_output.hpp"
 
@@ -42,11 +47,14 @@ namespace fs = std::filesystem;
 struct CaptureArgs {
   std::vector<std::string> files;
   std::string format;
+  int remote = 0;
+  std::string columns;
   std::string case_file = "cases/paper_8ms_spin.toml";
   std::vector<std::string> sets;
   std::vector<std::string> mounts;
+  std::vector<std::string> thrower;
+  std::string clock = "automatic";
   std::string button = "B";
-  double start_height_m = 1.0;
   double saturation_g = 3.4;
   double max_accel_g = 20.0;
   int members = 64;
@@ -60,12 +68,29 @@ struct CaptureArgs {
   bool progress = false;
 };
 
+void add_read(CLI::App* cmd, CaptureArgs& a) {
+  cmd->add_option("--format", a.format, "Force a reader: trace_csv, report_log, evemu, gesture, csv (default: recognised from the content)")
+      ->check(CLI::IsMember({"auto", "trace_csv", "report_log", "evemu", "gesture", "csv"}));
+  cmd->add_option("--remote", a.remote, "csv: the remote to read (the N of a '#WMN' column suffix; default: the first with data)")
+      ->check(CLI::Range(1, 999));
+  cmd->add_option("--columns", a.columns, "csv: map columns, key[unit]=Column Name,... (keys: t, ax, ay, az, wx, wy, wz, raw_pitch, raw_roll, raw_yaw, speed_pitch, speed_roll, speed_yaw, slow_*, fast_*, buttons, button_a, button_b, pitch, roll, seq)");
+}
+
+CaptureReadOptions read_options(const CaptureArgs& a) {
+  CaptureReadOptions o;
+  o.format = a.format;
+  o.csv.remote = a.remote;
+  o.csv.columns = a.columns;
+  return o;
+}
+
 void add_common(CLI::App* cmd, CaptureArgs& a) {
-  cmd->add_option("--format", a.format, "Force a reader: trace_csv, report_log, evemu, gesture (default: recognised from the content)")
-      ->check(CLI::IsMember({"auto", "trace_csv", "report_log", "evemu", "gesture"}));
+  add_read(cmd, a);
   cmd->add_option("--mount", a.mounts, "Mounting setting key=value (stone_normal, stone_forward, stone_offset_m, lever_arm_m, lever_arm_rel_uncertainty), repeatable");
+  cmd->add_option("--clock", a.clock, "automatic (default), regular_reports (the remote's clock fitted through the stamps) or stamps_as_given")
+      ->check(CLI::IsMember({"automatic", "regular_reports", "stamps_as_given"}));
   cmd->add_option("--button", a.button, "The action button held through the swing (default B)")->check(CLI::IsMember({"A", "B"}));
-  cmd->add_option("--start-height", a.start_height_m, "Height of the stone's centre during the still part, m (default 1.0)");
+  cmd->add_option("--thrower", a.thrower, "Virtual thrower setting key=value (height_mapping, release_height_m, still_height_m, height_uncertainty_m, speed_scale, spin_scale, finger_spin_rev_s), repeatable");
   cmd->add_option("--saturation-g", a.saturation_g, "An axis at or beyond this |a| is clipped, g (default 3.4)");
   cmd->add_option("--max-accel-g", a.max_accel_g, "Largest acceleration a clipped span may hide, g (default 20)");
   cmd->add_option("--members", a.members, "Ensemble size for the intervals and the bounce distribution (default 64)");
@@ -78,20 +103,44 @@ void add_case(CLI::App* cmd, CaptureArgs& a) {
 }
 
 CaptureOptions capture_options(const CaptureArgs& a, const Trace& t) {
-  if (!(a.saturation_g > 0 && a.saturation_g < 1000)) throw_input_error("--saturation-g", 0, "", "must be in (0, 1000)");
-  if (!(a.max_accel_g >= a.saturation_g && a.max_accel_g < 1000))
-    throw_input_error("--max-accel-g", 0, "", "must be at least --saturation-g and below 1000");
-  if (a.members < 0 || a.members > 100000) throw_input_error("--members", 0, "", "must be in [0, 100000]");
-  if (!(a.start_height_m > -100 && a.start_height_m < 100)) throw_input_error("--start-height", 0, "", "must be in (-100, 100) m");
   CaptureOptions o;
   o.mounting = resolve_mounting(t, a.mounts);
+  o.thrower = resolve_thrower(t, a.thrower);
+  o.timing.clock = a.clock == "regular_reports"   ? ClockModel::regular_reports
+                   : a.clock == "stamps_as_given" ? ClockModel::stamps_as_given
+                                                  : ClockModel::automatic;
   o.release_button = a.button == "A" ? kButtonA : kButtonB;
-  o.start_height_m = a.start_height_m;
   o.saturation_g = a.saturation_g;
   o.max_accel_g = a.max_accel_g;
   o.members = a.members;
   o.seed = a.seed;
+  std::string why;
+  if (!o.is_valid(&why)) throw_input_error("capture options", 0, "", why);
   return o;
+}
+
+// What capture_json (reports/capture) does not hold yet: the timing in detail, the throw as
+// measured in the room, and the virtual thrower's settings.
+void add_details(nlohmann::json& j, const CaptureAnalysis& an) {
+  const TimingStats& t = an.timing.stats;
+  auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+  j["timing"] = {{"clock", to_string(t.clock)},
+                 {"mean_rate_hz", number(t.mean_rate_hz)},
+                 {"min_interval_ms", number(1e3 * t.min_interval_s)},
+                 {"max_interval_ms", number(1e3 * t.max_interval_s)},
+                 {"max_jitter_ms", number(1e3 * t.max_jitter_s)},
+                 {"equal_stamps", t.equal_stamps},
+                 {"clock_residual_max_ms", number(1e3 * t.clock_residual_max_s)},
+                 {"longest_gap_ms", number(1e3 * t.longest_gap_s)}};
+  const bool ok = an.can_throw();
+  auto put = [&](const char* key, const Interval& v) {
+    j["measured"][key] = ok ? nlohmann::json{number(v.nominal), number(v.low), number(v.high)} : nlohmann::json(nullptr);
+  };
+  j["measured"] = nlohmann::json::object();
+  put("speed_m_s", an.measured_speed_m_s);
+  put("spin_rev_s", an.measured_spin_rev_s);
+  put("rise_m", an.rise_m);
+  j["thrower"] = thrower_settings(an.options.thrower);
 }
 
 std::string folder_name(const std::string& file, std::vector<std::string>& used) {
@@ -107,20 +156,32 @@ std::string folder_name(const std::string& file, std::vector<std::string>& used)
 void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
   std::printf("%s: %s\n", an.source.c_str(), to_string(an.verdict));
   for (const auto& r : an.reasons) std::printf("  - %s\n", r.c_str());
+  for (const auto& n : an.notes) std::printf("  note: %s\n", n.c_str());
   if (!an.can_throw()) return;
   const auto show = [](const char* name, const Interval& v, const char* unit) {
-    std::printf("  %-22s %8.3f  [%.3f, %.3f] %s\n", name, v.nominal, v.low, v.high, unit);
+    std::printf("    %-24s %8.3f  [%.3f, %.3f] %s\n", name, v.nominal, v.low, v.high, unit);
   };
   const TimingStats& t = an.timing.stats;
-  std::printf("  rate %.1f Hz, jitter %.2f ms, %d gaps (%ld reports lost), %zu repeats, saturated fraction %.3f\n",
-              t.rate_hz, 1e3 * t.jitter_s, t.gaps, t.dropped_reports, t.repeated, an.saturated_fraction);
-  show("release speed", an.speed_m_s, an.clipped ? "m/s (accelerometer clipped: lower bound from it)" : "m/s");
+  std::printf("  timing: rate %.1f Hz (mean %.1f Hz), jitter %.2f ms, intervals %.1f-%.1f ms, %d gaps (about %ld reports "
+              "lost), %zu repeats; clock %s\n",
+              t.rate_hz, t.mean_rate_hz, 1e3 * t.jitter_s, 1e3 * t.min_interval_s, 1e3 * t.max_interval_s, t.gaps,
+              t.dropped_reports, t.repeated, to_string(t.clock));
+  std::printf("  saturated fraction %.3f\n", an.saturated_fraction);
+  std::printf("  as measured (the stone at the remote's mounting, in the room):\n");
+  show("speed", an.measured_speed_m_s,
+       an.clipped ? "m/s (accelerometer clipped: the lever-arm value; the interval spans the accelerometer's bounds)" : "m/s");
   show("  accelerometer", an.accel_speed_m_s, "m/s");
   show("  angular rate x lever", an.lever_speed_m_s, "m/s");
   show("attack angle", an.attack_angle_deg, "deg");
   show("path angle", an.path_angle_deg, "deg");
+  show("spin about the normal", an.measured_spin_rev_s, "rev/s");
+  show("rise since still part", an.rise_m, "m");
+  const VirtualThrowerOptions& th = an.options.thrower;
+  std::printf("  as mapped (the virtual stone: %s, speed x%g, spin x%g + %g rev/s):\n", to_string(th.height_mapping),
+              th.speed_scale, th.spin_scale, th.finger_spin_rev_s);
+  show("speed", an.speed_m_s, "m/s");
   show("spin", an.spin_rev_s, "rev/s");
-  show("release height", an.height_m, "m");
+  show("height above the water", an.height_m, "m");
   if (sim) {
     if (sim->realtime) std::printf("  bounces: real-time %d", sim->realtime->bounces);
     if (sim->reference) std::printf(", reference %d", sim->reference->bounces);
@@ -154,7 +215,7 @@ void validate(const CaptureArgs& a) {
   for (const auto& file : a.files) {
     Trace trace;
     try {
-      trace = read_capture(file, a.format);
+      trace = read_capture(file, read_options(a));
     } catch (const InputError& e) {
       // One bad file does not stop the others; it is reported and the exit status says so.
       unreadable = true;
@@ -173,11 +234,20 @@ void validate(const CaptureArgs& a) {
       so.reference = !a.no_reference;
       so.realtime_options = c->realtime;
       so.reference_options = c->reference;
-      so.progress = a.progress;
+      std::optional<Progress> progress;
+      if (a.progress) {
+        progress.emplace("capture ensemble " + an->source, an->ensemble.size());
+        so.progress = [&progress](std::size_t, std::size_t) { progress->tick(); };
+      }
       *sim = simulate_capture(c->stone, c->environment, *an, so);
+      if (progress) progress->done();
     }
     unusable = unusable || !an->can_throw();
-    if (a.json) std::cout << capture_json(*an, c ? sim.get() : nullptr).dump() << std::endl;
+    if (a.json) {
+      nlohmann::json j = capture_json(*an, c ? sim.get() : nullptr);
+      add_details(j, *an);
+      std::cout << j.dump() << std::endl;
+    }
     else print_verdict(*an, c ? sim.get() : nullptr);
     if (!a.out.empty()) {
       const std::string folder = folder_name(file, used);
@@ -198,7 +268,7 @@ void validate(const CaptureArgs& a) {
 void throw_capture(const CaptureArgs& a) {
   StoneCase c = load_stone_case(a.case_file, a.sets);
   if (!a.out.empty()) AtomicOutput check(a.out);
-  const Trace trace = read_capture(a.files.front(), a.format);
+  const Trace trace = read_capture(a.files.front(), read_options(a));
   CaptureOptions o = capture_options(a, trace);
   o.members = 0;  // the intervals are validate's business; the throw is the nominal one
   const CaptureAnalysis an = analyse_capture(trace, o);
@@ -214,6 +284,7 @@ void throw_capture(const CaptureArgs& a) {
     results.emplace_back("reference", run_reference(c.stone, c.environment, c.initial, c.reference));
   if (a.json) {
     nlohmann::json j = capture_json(an, nullptr);
+    add_details(j, an);
     for (const auto& [name, r] : results) j[name] = json_summary(r);
     std::cout << j.dump(2) << std::endl;
   } else {
@@ -230,21 +301,24 @@ void throw_capture(const CaptureArgs& a) {
 }
 
 void convert(const CaptureArgs& a) {
-  Trace t = read_capture(a.files.front(), a.format);
+  Trace t = read_capture(a.files.front(), read_options(a));
   for (const auto& w : t.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   write_text_file(a.out, trace_csv_text(t));
   std::printf("wrote %s (%zu samples from %s)\n", a.out.c_str(), t.samples.size(), t.format.c_str());
 }
 
 // The shipped synthetic captures (cases/captures/): each with its .truth.toml.
+enum class CaptureKind { report_log, evemu, gesture, wiiyourself_csv };
+
 void synthesize(const CaptureArgs& a) {
   fs::create_directories(a.out);
   struct Item {
     std::string name;
     SyntheticThrow th;
     SyntheticSensor s;
-    int kind;  // 0 log, 1 evemu, 2 gesture
+    CaptureKind kind;
   };
+  // Gestures (a remote swung in a room; issue 5): release 0.9 m up, 5–10 m/s, 1–2 rev/s.
   SyntheticThrow gentle;
   gentle.swing_rate_rad_s = 7.0;
   gentle.pivot_speed_m_s = 1.0;
@@ -259,23 +333,80 @@ void synthesize(const CaptureArgs& a) {
   SyntheticSensor s37;
   s37.report_id = 0x37;
   s37.seed = 3;
-  const std::vector<Item> items{{"gentle_sidearm.log", gentle, {}, 0},
-                                {"hard_sidearm_clipped.log", hard, s37, 0},
-                                {"gentle_sidearm.evemu", gentle, {}, 1},
-                                {"gentle_sidearm_gesture.txt", gentle, {}, 2},
-                                {"lossy_sidearm.log", gentle, lossy, 0},
-                                {"no_still_part.log", no_still, {}, 0}};
+  // Skipping throws as published (synthetic_capture.hpp, skipping_throw).
+  SkippingThrowSpec bocquet;  // Bocquet 2003's example: 12 m/s, 14 rev/s; Clanet's α = 20°
+  // Near the physical convention's threshold for the measured throw: 14 m/s at α ≈ 31°, β ≈ 2°
+  // separates 0 from 1 bounce there (this model's optimum is α ≈ 25–30°, spec §3). A thrower whose
+  // trunk barely turns (pivot share 5 %), so the lever-arm estimate stays close to the speed.
+  SkippingThrowSpec threshold;
+  threshold.speed_m_s = 14.5;
+  threshold.spin_rev_s = 12.0;
+  threshold.attack_angle_deg = 31.0;
+  threshold.path_angle_deg = 2.0;
+  threshold.pivot_share = 0.05;
+  SkippingThrowSpec two_remotes;
+  two_remotes.speed_m_s = 10.0;
+  two_remotes.spin_rev_s = 12.0;
+  two_remotes.path_angle_deg = 8.0;
+  SyntheticSensor s_skip;
+  s_skip.report_id = 0x37;
+  s_skip.seed = 11;
+  SyntheticSensor s_threshold;
+  s_threshold.seed = 13;
+  SyntheticSensor s_wm1;  // a Windows host: larger jitter
+  s_wm1.jitter_s = 0.004;
+  s_wm1.seed = 17;
+  const std::vector<Item> items{{"gentle_sidearm.log", gentle, {}, CaptureKind::report_log},
+                                {"hard_sidearm_clipped.log", hard, s37, CaptureKind::report_log},
+                                {"gentle_sidearm.evemu", gentle, {}, CaptureKind::evemu},
+                                {"gentle_sidearm_gesture.txt", gentle, {}, CaptureKind::gesture},
+                                {"lossy_sidearm.log", gentle, lossy, CaptureKind::report_log},
+                                {"no_still_part.log", no_still, {}, CaptureKind::report_log},
+                                {"skip_12ms_14revs.log", skipping_throw(bocquet), s_skip, CaptureKind::report_log},
+                                {"skip_threshold_14ms.log", skipping_throw(threshold), s_threshold, CaptureKind::report_log},
+                                {"skip_two_remotes_wiiyourself.csv", skipping_throw(two_remotes), s_wm1,
+                                 CaptureKind::wiiyourself_csv}};
+  SyntheticSensor idle;  // the second remote, on the table
+  idle.rate_hz = 99.6;
+  idle.jitter_s = 0.004;
+  idle.accel_zero_counts = {511, 509, 515};
+  idle.accel_one_g_counts = {615, 613, 618};
+  idle.gyro_zero_counts = {8101, 8033, 8150};
+  idle.seed = 19;
   for (const auto& it : items) {
     SyntheticTruth truth;
-    const std::string text = it.kind == 0 ? synthetic_report_log(it.th, it.s, truth)
-                             : it.kind == 1 ? synthetic_evemu(it.th, it.s, truth)
-                                            : synthetic_gesture(it.th, it.s, truth);
+    std::string text;
+    switch (it.kind) {
+      case CaptureKind::report_log: text = synthetic_report_log(it.th, it.s, truth); break;
+      case CaptureKind::evemu: text = synthetic_evemu(it.th, it.s, truth); break;
+      case CaptureKind::gesture: text = synthetic_gesture(it.th, it.s, truth); break;
+      case CaptureKind::wiiyourself_csv: text = synthetic_wiiyourself_csv(it.th, it.s, idle, truth); break;
+    }
     write_text_file(fs::path(a.out) / it.name, text);
-    write_text_file(fs::path(a.out) / (fs::path(it.name).stem().string() + (it.kind == 2 ? "" : fs::path(it.name).extension().string()) + ".truth.toml"),
-                    truth.toml());
-    std::printf("wrote %s (truth: %.3f m/s, attack %.2f deg, path %.2f deg)\n", it.name.c_str(), truth.speed_m_s,
-                truth.attack_angle_deg, truth.path_angle_deg);
+    // gesture: name_gesture.truth.toml (the recorder's own extension is dropped); others: name.ext.truth.toml.
+    const fs::path p(it.name);
+    const std::string truth_name = it.kind == CaptureKind::gesture ? p.stem().string() : it.name;
+    write_text_file(fs::path(a.out) / (truth_name + ".truth.toml"), truth.toml());
+    std::printf("wrote %s (truth: %.3f m/s, attack %.2f deg, path %.2f deg, spin %.2f rev/s seen, %.2f in all)\n",
+                it.name.c_str(), truth.speed_m_s, truth.attack_angle_deg, truth.path_angle_deg, truth.spin_rev_s,
+                truth.total_spin_rev_s);
   }
+}
+
+// The header-driven CSV reader's table of recognised column names (from the code, so it cannot
+// drift from what the reader does).
+void print_columns() {
+  std::printf("key           meaning                                                        units (first: default)\n");
+  for (const auto& f : csv_fields()) {
+    std::string units;
+    for (CsvUnit u : f.units) units += std::string(units.empty() ? "" : ", ") + (u == CsvUnit::none ? "none" : to_string(u));
+    std::printf("%-13s %-62s %s\n", f.key, f.meaning, units.c_str());
+    std::string names;
+    for (const auto& n : csv_field_names(f.field)) names += std::string(names.empty() ? "" : ", ") + n;
+    std::printf("              names: %s\n", names.c_str());
+  }
+  std::printf("Names are compared in lowercase words (split at spaces, _ . - / : and camelCase); a unit in [ ] or ( )\n"
+              "or as trailing words (t_s, wx_deg_s), and a device suffix #WMn, may follow.\n");
 }
 
 void add_capture(CLI::App& app) {
@@ -307,8 +438,11 @@ void add_capture(CLI::App& app) {
   auto* c = cmd->add_subcommand("convert", "Write any capture as a stoneskip trace CSV");
   c->add_option("FILE", a->files, "Capture file")->required()->expected(1);
   c->add_option("--out", a->out, "Trace CSV to write")->required();
-  c->add_option("--format", a->format, "Force a reader")->check(CLI::IsMember({"auto", "trace_csv", "report_log", "evemu", "gesture"}));
+  add_read(c, *a);
   c->callback([a] { convert(*a); });
+
+  auto* cols = cmd->add_subcommand("columns", "List the column names the csv reader recognises, with their units");
+  cols->callback([] { print_columns(); });
 
   auto* s = cmd->add_subcommand("synthesize", "Write the shipped synthetic captures and their truth files");
   s->add_option("--out", a->out, "Folder (e.g. cases/captures)")->required();

@@ -95,4 +95,82 @@ BOOST_AUTO_TEST_CASE(a_capture_without_a_still_part_is_unusable) {
   BOOST_TEST(j["reasons"][0].get<std::string>().find("still") != std::string::npos);
 }
 
+BOOST_AUTO_TEST_CASE(a_two_remote_wiiyourself_log_is_read_without_a_format_and_judged_with_its_timing) {
+  // Oracle: the generator's truth for the file (two remotes, 100 Hz reports with ±4 ms host jitter
+  // in whole milliseconds, hex MotionPlus words, reports lost) and the thrower on remote #WM1; the
+  // second remote lay on the table and never pressed B. Issue 13's acceptance: read without
+  // --format, and --json gives the rate, the jitter and a verdict with reasons.
+  const std::string file = "cases/captures/skip_two_remotes_wiiyourself.csv";
+  const Run r = run("capture validate " + file + " --json --no-simulate --members 16");
+  BOOST_REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  BOOST_TEST(j["format"].get<std::string>() == "csv");
+  constexpr double kRateTol_hz = 0.5;  // the median of 1-ms-rounded intervals of a 100 Hz clock
+  BOOST_TEST(std::abs(j["rate_hz"].get<double>() - 100.0) <= kRateTol_hz);
+  // ±4 ms uniform on both stamps and 1 ms rounding: the intervals' σ is √2·(4/√3 ⊕ 0.29) ≈ 3.3 ms.
+  BOOST_TEST(j["jitter_ms"].get<double>() > 2.5);
+  BOOST_TEST(j["jitter_ms"].get<double>() < 4.0);
+  BOOST_TEST(j["verdict"].get<std::string>() == "usable with caveats");
+  BOOST_TEST(!j["reasons"].empty());
+  BOOST_TEST(j["timing"]["clock"].get<std::string>() == "regular_reports");
+  const auto truth = toml::parse(file + ".truth.toml");
+  const double speed = truth_number(truth, "throw", "speed_m_s");
+  BOOST_TEST(j["measured"]["speed_m_s"][1].get<double>() <= speed);
+  BOOST_TEST(j["measured"]["speed_m_s"][2].get<double>() >= speed);
+  // The other remote: read with --remote 2, it holds no press of B.
+  const Run r2 = run("capture validate " + file + " --remote 2 --json --no-simulate --members 0");
+  BOOST_REQUIRE(r2.status == 0);
+  const auto j2 = nlohmann::json::parse(r2.out);
+  BOOST_TEST(j2["verdict"].get<std::string>() == "unusable");
+  BOOST_TEST(j2["reasons"][0].get<std::string>().find("no press") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(the_published_skipping_throw_bounces_in_the_paper_convention) {
+  // Oracle: spec §3 — in the paper convention the reversed torque holds the attitude and a throw of
+  // this kind bounces (about 2 at 8 m/s without spin for a 3 cm stone); the measured throw of the
+  // 12 m/s preset, as mapped by the default virtual thrower, must bounce at least once in both
+  // solvers, and not at all in the physical convention (0–1 there, spec §3).
+  const std::string file = "cases/captures/skip_12ms_14revs.log";
+  const Run paper = run("capture throw " + file + " --solver both --json --set environment.convention=paper");
+  BOOST_REQUIRE(paper.status == 0);
+  const auto j = nlohmann::json::parse(paper.out);
+  BOOST_TEST(j["realtime"]["bounces"].get<int>() >= 1);
+  BOOST_TEST(j["reference"]["bounces"].get<int>() >= 1);
+  const Run physical = run("capture throw " + file + " --solver realtime --json");
+  BOOST_REQUIRE(physical.status == 0);
+  BOOST_TEST(nlohmann::json::parse(physical.out)["realtime"]["bounces"].get<int>() <= 1);
+}
+
+BOOST_AUTO_TEST_CASE(the_threshold_capture_straddles_the_physical_conventions_first_bounce) {
+  // Oracle: the physical convention's own threshold for this throw (0 bounces at the measured
+  // 13.7 m/s and 31° attack, 1 or more at 14.0 m/s and 32°: stoneskip run). The nominal throw must
+  // sink at its first contact while part of the capture's ensemble, within its intervals, bounces.
+  const Run r = run("capture validate cases/captures/skip_threshold_14ms.log --json --no-reference --members 64");
+  BOOST_REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  BOOST_TEST(j["bounces_realtime"].get<int>() == 0);
+  int bouncing = 0, sinking = 0;
+  for (const auto& [bounces, members] : j["ensemble_bounce_histogram"].items())
+    (std::stoi(bounces) > 0 ? bouncing : sinking) += members.get<int>();
+  BOOST_TEST(sinking > 0);
+  BOOST_TEST(bouncing > 0);
+}
+
+BOOST_AUTO_TEST_CASE(the_virtual_thrower_and_the_reader_options_are_checked) {
+  // Oracle: the documented options. A finger spin adds to the measured spin; a misspelt thrower key
+  // or --remote on a format that has no remotes is bad input (exit 2, one line naming it).
+  const std::string file = "cases/captures/gentle_sidearm.log";
+  const auto plain = validate(file);
+  const Run spun = run("capture validate " + file + " --json --no-reference --members 16 --thrower finger_spin_rev_s=10");
+  BOOST_REQUIRE(spun.status == 0);
+  const auto j = nlohmann::json::parse(spun.out);
+  constexpr double kSame = 1e-9;  // the same nominal chain, plus a constant
+  BOOST_TEST(std::abs(j["spin_rev_s"].get<double>() - (plain["spin_rev_s"].get<double>() + 10.0)) < kSame);
+  BOOST_TEST(std::abs(j["measured"]["spin_rev_s"][0].get<double>() - plain["spin_rev_s"].get<double>()) < kSame);
+  const Run bad = run("capture validate " + file + " --no-simulate --thrower finger_spin=10");
+  BOOST_TEST(bad.status == 2);
+  const Run remote = run("capture validate " + file + " --no-simulate --remote 2");
+  BOOST_TEST(remote.status == 2);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

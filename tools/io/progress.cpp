@@ -27,6 +27,14 @@ void Progress::tick(std::size_t n) {
   print(k);
 }
 
+// The time left at the mean rate so far: ", about N s left" (nothing before the first tick or at the end).
+std::string Progress::left(std::size_t k, double elapsed_s) const {
+  if (k == 0 || k >= total_) return "";
+  char b[48];
+  std::snprintf(b, sizeof b, ", about %.0f s left", elapsed_s / static_cast<double>(k) * static_cast<double>(total_ - k));
+  return b;
+}
+
 void Progress::print(std::size_t k) {
   if (finished_) return;
   auto now = std::chrono::steady_clock::now();
@@ -35,11 +43,11 @@ void Progress::print(std::size_t k) {
   int decile = total_ ? static_cast<int>(10 * k / total_) : 10;
   if (tty_) {
     if (now - last_print_ < kTerminalPeriod && k < total_) return;
-    std::fprintf(stderr, "\r%s: %zu/%zu (%.0f s)   ", label_.c_str(), k, total_, elapsed);
+    std::fprintf(stderr, "\r%s: %zu/%zu (%.0f s%s)   ", label_.c_str(), k, total_, elapsed, left(k, elapsed).c_str());
   } else {
     if (decile == last_decile_ && now - last_print_ < kLogPeriod) return;
     last_decile_ = decile;
-    std::fprintf(stderr, "%s: %zu/%zu (%.0f s)\n", label_.c_str(), k, total_, elapsed);
+    std::fprintf(stderr, "%s: %zu/%zu (%.0f s%s)\n", label_.c_str(), k, total_, elapsed, left(k, elapsed).c_str());
   }
   last_print_ = now;
   printed_ = true;

@@ -1,8 +1,9 @@
 #pragma once
 // Progress for long runs, on stderr: a single updating line when it is a terminal; otherwise a
 // line per 10 % and at least one every 10 s (so CI logs stay short but a long step still shows it
-// is alive). A Progress made with quiet_s > 0 prints nothing until that much wall time has passed,
-// so short runs stay silent. Thread-safe: workers call tick().
+// is alive), with the time left at the mean rate so far. A Progress made with quiet_s > 0 prints
+// nothing until that much wall time has passed, so short runs stay silent. Thread-safe: workers
+// call tick().
 //
 // Heartbeat is for work of unknown length (one solve): after quiet_s, a line every second on a
 // terminal (every 10 s otherwise) with the wall time elapsed and what status() says.
@@ -25,6 +26,7 @@ class Progress {
 
  private:
   void print(std::size_t k);
+  std::string left(std::size_t k, double elapsed_s) const;
   std::string label_;
   std::size_t total_;
   double quiet_s_;

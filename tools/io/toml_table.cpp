@@ -176,6 +176,12 @@ void apply_override(toml::value& root, const std::string& file, const std::strin
     }
   }
   check_numbers(parsed, path, file, nullptr);
+  set_value(root, file, path, std::move(parsed));
+}
+
+}  // namespace
+
+void set_value(toml::value& root, const std::string& file, const std::string& path, toml::value value) {
   toml::value* node = &root;
   std::size_t start = 0;
   while (true) {
@@ -185,7 +191,7 @@ void apply_override(toml::value& root, const std::string& file, const std::strin
     if (!node->is_table()) throw_input_error(file, 0, "--set " + path, "'" + part + "' is not inside a table");
     auto& tbl = node->as_table();
     if (dot == std::string::npos) {
-      tbl[part] = parsed;
+      tbl[part] = std::move(value);
       return;
     }
     if (tbl.find(part) == tbl.end()) tbl[part] = toml::table{};
@@ -193,8 +199,6 @@ void apply_override(toml::value& root, const std::string& file, const std::strin
     start = dot + 1;
   }
 }
-
-}  // namespace
 
 TomlTable::TomlTable(const toml::value* table, std::string file, std::string prefix, TomlLineMap lines)
     : table_(table), file_(std::move(file)), prefix_(std::move(prefix)), lines_(std::move(lines)) {}

@@ -93,6 +93,10 @@ struct TomlDocument {
 // title, or the file's stem when none is given.
 std::string read_case_title(TomlTable& top);
 
+// What --set does once its value is parsed: sets the dotted key ("section.key") to the value,
+// creating missing tables. For callers that hold the value already (a sweep's numbers).
+void set_value(toml::value& root, const std::string& file, const std::string& dotted_key, toml::value value);
+
 TomlDocument load_toml(const std::string& path, const std::vector<std::string>& overrides = {});
 TomlDocument parse_toml_text(const std::string& text, const std::string& name,
                              const std::vector<std::string>& overrides = {});

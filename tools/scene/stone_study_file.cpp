@@ -48,6 +48,41 @@ Scheme scheme_of(TomlTable& t, const std::string& key, const std::string& name) 
   return s;
 }
 
+// A list of water laws (unique; may be left out: `fallback`).
+std::vector<WaterLaw> laws_of(TomlTable& t, const std::string& key, const std::vector<WaterLaw>& fallback) {
+  auto names = t.maybe_strings(key);
+  if (!names) return fallback;
+  std::vector<WaterLaw> out;
+  for (const auto& n : *names) {
+    WaterLaw w;
+    if (!parse_water_law(n, w)) t.fail(key, "'" + n + "' is not one of newtonian, planing, lift_drag");
+    if (std::find(out.begin(), out.end(), w) != out.end()) t.fail(key, "'" + n + "' is listed twice");
+    out.push_back(w);
+  }
+  return out;
+}
+
+// Throws of the work-precision and restart studies ("nospin", "nospin@planing", "spin_paper").
+std::vector<std::string> throw_names(TomlTable& t, const std::string& key, const std::vector<std::string>& names) {
+  if (names.empty()) t.fail(key, "must not be empty");
+  for (const auto& n : names)
+    if (const std::string problem = study_throw_problem(n); !problem.empty()) t.fail(key, problem);
+  return names;
+}
+
+std::vector<ReferenceMethod> methods_of(TomlTable& t, const std::string& key, const std::vector<ReferenceMethod>& fallback) {
+  auto names = t.maybe_strings(key);
+  if (!names) return fallback;
+  if (names->empty()) t.fail(key, "must not be empty");
+  std::vector<ReferenceMethod> out;
+  for (const auto& n : *names) {
+    ReferenceMethod m;
+    if (!parse_reference_method(n, m)) t.fail(key, "'" + n + "' is not one of bdf, adams");
+    out.push_back(m);
+  }
+  return out;
+}
+
 StudyThrow load_throw(const fs::path& study_dir, TomlTable& t, const std::string& key) {
   StudyThrow st;
   st.file = t.string(key);
@@ -69,6 +104,7 @@ void read_throws(const fs::path& dir, TomlTable t, StoneStudiesOptions& o) {
   o.clanet = load_throw(dir, t, "clanet");
   o.bocquet = load_throw(dir, t, "bocquet");
   o.stable_step_base = load_throw(dir, t, "stable_step_base");
+  if (t.has("flat_drop")) o.flat_drop = load_throw(dir, t, "flat_drop");
   const std::string hard = t.string("hard");
   const int limit = count(t, "hard_limit", 0, 0, 1000);
   const fs::path hard_dir = dir / hard;
@@ -92,6 +128,7 @@ void read_throws(const fs::path& dir, TomlTable t, StoneStudiesOptions& o) {
 
 void read_convergence(TomlTable t, StoneStudiesOptions& o) {
   RealtimeConvergenceOptions& c = o.convergence;
+  o.convergence_laws = laws_of(t, "laws", o.convergence_laws);
   if (auto s = t.maybe_strings("schemes")) {
     c.schemes.clear();
     for (const auto& n : *s) c.schemes.push_back(scheme_of(t, "schemes", n));
@@ -132,7 +169,7 @@ void read_reference_tolerance(TomlTable t, StoneStudiesOptions& o) {
 
 void read_work_precision(TomlTable t, StoneStudiesOptions& o) {
   WorkPrecisionOptions& w = o.work_precision;
-  if (auto s = t.maybe_strings("throws")) o.work_precision_throws = *s;
+  if (auto s = t.maybe_strings("throws")) o.work_precision_throws = throw_names(t, "throws", *s);
   if (t.has("realtime")) {
     w.realtime.clear();
     for (TomlTable f : t.tables("realtime")) {
@@ -145,20 +182,35 @@ void read_work_precision(TomlTable t, StoneStudiesOptions& o) {
     t.maybe_table("realtime");  // mark as read
   }
   w.dt_s = positive_list(t, "dt_s", w.dt_s);
-  if (auto s = t.maybe_strings("methods")) {
-    w.methods.clear();
-    for (const auto& n : *s) {
-      ReferenceMethod m;
-      if (!parse_reference_method(n, m)) t.fail("methods", "'" + n + "' is not one of bdf, adams");
-      w.methods.push_back(m);
-    }
-  }
+  w.methods = methods_of(t, "methods", w.methods);
   w.rtol = positive_list(t, "rtol", w.rtol);
   w.atol_ratio = positive(t, "atol_ratio", w.atol_ratio);
   w.truth_rtol = positive(t, "truth_rtol", w.truth_rtol);
   w.truth_check_factor = positive(t, "truth_check_factor", w.truth_check_factor);
   w.repeats = count(t, "repeats", w.repeats, 1, 100);
   w.target_errors_m = positive_list(t, "target_errors_m", w.target_errors_m);
+  t.finish();
+}
+
+void read_restarts(TomlTable t, StoneStudiesOptions& o) {
+  RestartStudyOptions& r = o.restarts;
+  if (auto s = t.maybe_strings("throws")) r.throws = throw_names(t, "throws", *s);
+  if (auto names = t.maybe_strings("strategies")) {
+    r.strategies.clear();
+    for (const auto& n : *names) {
+      RestartStrategy rs;
+      if (!parse_restart_strategy(n, rs))
+        t.fail("strategies", "'" + n + "' is not one of every_event, every_crossing, at_jumps, never");
+      r.strategies.push_back(rs);
+    }
+    if (std::find(r.strategies.begin(), r.strategies.end(), RestartStrategy::every_event) == r.strategies.end())
+      t.fail("strategies", "must hold every_event (it sets the tolerance of the others)");
+  }
+  r.methods = methods_of(t, "methods", r.methods);
+  r.rtol = positive_list(t, "rtol", r.rtol);
+  r.repeats = count(t, "repeats", r.repeats, 1, 100);
+  r.time_tolerance_s = positive(t, "time_tolerance_s", r.time_tolerance_s);
+  r.error_factor = positive(t, "error_factor", r.error_factor);
   t.finish();
 }
 
@@ -193,6 +245,8 @@ void read_sweeps(TomlTable t, StoneStudiesOptions& o) {
 
 void read_validation(TomlTable t, StoneStudiesOptions& o) {
   ValidationOptions& v = o.validation;
+  v.laws = laws_of(t, "laws", v.laws);
+  if (v.laws.empty()) t.fail("laws", "must not be empty");
   v.reference_rtol = positive(t, "reference_rtol", v.reference_rtol);
   v.speed_tolerance_m_s = positive(t, "speed_tolerance_m_s", v.speed_tolerance_m_s);
   v.angle_tolerance_deg = positive(t, "angle_tolerance_deg", v.angle_tolerance_deg);
@@ -207,6 +261,52 @@ void read_validation(TomlTable t, StoneStudiesOptions& o) {
   v.regime_attack_deg = t.number_or("regime_attack_deg", v.regime_attack_deg);
   v.contact_time_speed_m_s = positive(t, "contact_time_speed_m_s", v.contact_time_speed_m_s);
   v.min_speed_attack_deg = t.number_or("min_speed_attack_deg", v.min_speed_attack_deg);
+  v.contact_exponent_expected = t.number_or("contact_exponent_expected", v.contact_exponent_expected);
+  v.count_exponent_expected = t.number_or("count_exponent_expected", v.count_exponent_expected);
+  v.exponent_tolerance = positive(t, "exponent_tolerance", v.exponent_tolerance);
+  v.history_dt_s = positive(t, "history_dt_s", v.history_dt_s);
+  if (auto r = t.maybe_table("ranking")) {
+    RankingOptions& k = v.ranking;
+    k.miss_distance = positive(*r, "miss_distance", k.miss_distance);
+    k.distance_bound = r->number_or("distance_bound", k.distance_bound);
+    r->require_non_negative("distance_bound", k.distance_bound);
+    k.held_spin_rev_s = r->number_or("held_spin_rev_s", k.held_spin_rev_s);
+    if (std::find(v.regime_spins_rev_s.begin(), v.regime_spins_rev_s.end(), k.held_spin_rev_s) == v.regime_spins_rev_s.end())
+      r->fail("held_spin_rev_s", "must be one of [validation] regime_spins_rev_s");
+    k.attack_bound_deg = r->number_or("attack_bound_deg", k.attack_bound_deg);
+    r->require_non_negative("attack_bound_deg", k.attack_bound_deg);
+    k.cost_repeats = count(*r, "cost_repeats", k.cost_repeats, 1, 100);
+    if (auto names = r->maybe_strings("cost_throws")) {
+      if (names->empty()) r->fail("cost_throws", "must not be empty");
+      for (const auto& n : *names)
+        if (std::find(cost_throw_names().begin(), cost_throw_names().end(), n) == cost_throw_names().end())
+          r->fail("cost_throws", "'" + n + "' is not one of clanet, seed_spin, seed_nospin");
+      k.cost_throws = *names;
+    }
+    r->finish();
+  }
+  v.curves.clear();
+  if (t.has("curve")) {
+    for (TomlTable c : t.tables("curve")) {
+      MeasuredCurve m;
+      m.key = c.string("key");
+      if (m.key != "clanet_min_speed") c.fail("key", "'" + m.key + "' is not a model curve (clanet_min_speed)");
+      m.label = c.string("label");
+      m.source = c.string("source");
+      m.x = c.numbers("x");
+      m.low = c.numbers("low");
+      m.high = c.numbers("high");
+      if (m.x.empty()) c.fail("x", "must not be empty");
+      if (m.low.size() != m.x.size()) c.fail("low", "needs one value per x");
+      if (m.high.size() != m.x.size()) c.fail("high", "needs one value per x");
+      for (std::size_t i = 0; i < m.x.size(); ++i)
+        if (!(m.low[i] <= m.high[i])) c.fail("high", "every high must be >= its low");
+      c.finish();
+      v.curves.push_back(m);
+    }
+  } else {
+    t.maybe_table("curve");
+  }
   v.measured.clear();
   if (t.has("measured")) {
     for (TomlTable m : t.tables("measured")) {
@@ -216,6 +316,19 @@ void read_validation(TomlTable t, StoneStudiesOptions& o) {
       x.measured = m.string("measured");
       x.expected = m.string_or("expected", "–");
       x.source = m.string("source");
+      const auto lo = m.maybe_number("score_low"), hi = m.maybe_number("score_high");
+      if (lo.has_value() != hi.has_value()) m.fail(lo ? "score_high" : "score_low", "give score_low and score_high together");
+      if (lo) {
+        const auto& known = scorable_quantities();
+        if (std::find(known.begin(), known.end(), x.key) == known.end())
+          m.fail("score_low", "'" + x.key + "' is not a quantity the ranking can score");
+        if (!(*lo <= *hi)) m.fail("score_high", "must be >= score_low");
+        if (!(*lo * *hi > 0)) m.fail("score_low", "score_low and score_high must be non-zero and of one sign");
+        x.score = MeasuredRange{*lo, *hi};
+        x.score_unit = m.string("score_unit");
+      } else if (m.has("score_unit")) {
+        m.fail("score_unit", "only with score_low and score_high");
+      }
       m.finish();
       v.measured.push_back(x);
     }
@@ -248,8 +361,8 @@ void read_stable_step(TomlTable t, StoneStudiesOptions& o) {
 
 }  // namespace
 
-StoneStudyFile load_stone_study_file(const std::string& path) {
-  const TomlDocument doc = load_toml(path);
+StoneStudyFile load_stone_study_file(const std::string& path, const std::vector<std::string>& overrides) {
+  const TomlDocument doc = load_toml(path, overrides);
   StoneStudyFile f;
   f.file = doc.file;
   f.text = doc.text;
@@ -268,6 +381,7 @@ StoneStudyFile load_stone_study_file(const std::string& path) {
   if (auto t = top.maybe_table("convergence")) read_convergence(*t, o);
   if (auto t = top.maybe_table("reference_tolerance")) read_reference_tolerance(*t, o);
   if (auto t = top.maybe_table("work_precision")) read_work_precision(*t, o);
+  if (auto t = top.maybe_table("restarts")) read_restarts(*t, o);
   read_sweeps(top.table("sweeps"), o);
   if (auto t = top.maybe_table("validation")) read_validation(*t, o);
   if (auto t = top.maybe_table("hard_cases")) read_hard_cases(*t, o);
@@ -276,8 +390,8 @@ StoneStudyFile load_stone_study_file(const std::string& path) {
   // Everything the findings depend on: the study file and the text of every case it names.
   f.settings_text = "# " + f.file + "\n" + f.text;
   for (const StudyThrow* t : {&o.convergence_throw, &o.spin_throw, &o.nospin_throw, &o.sweep_base, &o.clanet, &o.bocquet,
-                              &o.stable_step_base})
-    f.settings_text += "\n# case " + t->file + "\n" + t->case_text;
+                              &o.stable_step_base, &o.flat_drop})
+    if (!t->file.empty()) f.settings_text += "\n# case " + t->file + "\n" + t->case_text;
   for (const auto& h : o.hard) f.settings_text += "\n# hard case " + h.file + "\n" + h.case_text;
   std::string why;
   if (!o.valid(&why)) throw_input_error(f.file, 0, "", why);

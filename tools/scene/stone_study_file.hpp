@@ -5,6 +5,7 @@
 // unknown key is an error; a key left out keeps the library's default, and the shipped files
 // state every key.
 #include <string>
+#include <vector>
 
 #include "tools/io/toml_table.hpp"
 #include "verification/stones/stone_studies.hpp"
@@ -17,6 +18,7 @@ struct StoneStudyFile {
   StoneStudiesOptions options;
 };
 
-StoneStudyFile load_stone_study_file(const std::string& path);
+// overrides: "section.key=value" assignments applied after parsing (load_toml), for tests and --set.
+StoneStudyFile load_stone_study_file(const std::string& path, const std::vector<std::string>& overrides = {});
 
 }  // namespace stoneskip

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "tools/io/input_error.hpp"
+#include "tools/scene/study_keys.hpp"
 #include "tools/scene/wave_case.hpp"
 
 namespace stoneskip {
@@ -22,15 +23,6 @@ std::vector<int> grid_list(TomlTable& t, const std::string& key, const std::vect
   return out;
 }
 
-std::vector<double> positive_list(TomlTable& t, const std::string& key, const std::vector<double>& fallback) {
-  auto v = t.maybe_numbers(key);
-  if (!v) return fallback;
-  if (v->empty()) t.fail(key, "must not be empty");
-  for (double x : *v)
-    if (!(x > 0)) t.fail(key, "every value must be > 0");
-  return *v;
-}
-
 // kd values are given in units of π (kd_over_pi = 0.125 is π/8).
 std::vector<double> kd_list(TomlTable& t, const std::string& key, const std::vector<double>& fallback) {
   auto v = t.maybe_numbers(key);
@@ -42,12 +34,6 @@ std::vector<double> kd_list(TomlTable& t, const std::string& key, const std::vec
   }
   if (out.empty()) t.fail(key, "must not be empty");
   return out;
-}
-
-long long count(TomlTable& t, const std::string& key, long long fallback, long long lo, long long hi) {
-  const long long v = t.integer_or(key, fallback);
-  if (v < lo || v > hi) t.fail(key, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  return v;
 }
 
 void read_problem(TomlTable t, WaveProblem& p) {
@@ -91,8 +77,8 @@ WaveStudyFile load_wave_study_file(const std::string& path, const std::vector<st
   if (auto c = top.maybe_table("consistency")) {
     o.consistency.max_kd = c->number_or("max_kd", o.consistency.max_kd);
     c->require_in("max_kd", o.consistency.max_kd, 1e-4, 1.0);
-    o.consistency.samples = static_cast<int>(count(*c, "samples", o.consistency.samples, 4, 1000));
-    o.consistency.angles = static_cast<int>(count(*c, "angles", o.consistency.angles, 2, 10000));
+    o.consistency.samples = static_cast<int>(count_in(*c, "samples", o.consistency.samples, 4, 1000));
+    o.consistency.angles = static_cast<int>(count_in(*c, "angles", o.consistency.angles, 2, 10000));
     o.consistency.tolerance = c->number_or("tolerance", o.consistency.tolerance);
     c->require_positive("tolerance", o.consistency.tolerance);
     c->finish();
@@ -100,7 +86,7 @@ WaveStudyFile load_wave_study_file(const std::string& path, const std::vector<st
   if (auto c = top.maybe_table("convergence")) {
     ConvergenceStudyOptions& v = o.convergence;
     v.space_grids = grid_list(*c, "space_grids", v.space_grids);
-    v.time_grid = static_cast<int>(count(*c, "time_grid", v.time_grid, 8, 4096));
+    v.time_grid = static_cast<int>(count_in(*c, "time_grid", v.time_grid, 8, 4096));
     if (v.time_grid % 4 != 0) c->fail("time_grid", "must be a multiple of 4");
     if (auto steps = c->maybe_numbers("time_steps")) {
       v.time_steps.clear();
@@ -113,7 +99,7 @@ WaveStudyFile load_wave_study_file(const std::string& path, const std::vector<st
     v.both_grids = grid_list(*c, "both_grids", v.both_grids);
     v.both_sigma = c->number_or("both_sigma", v.both_sigma);
     c->require_in("both_sigma", v.both_sigma, 1e-3, 1.0);
-    v.fit_points = static_cast<int>(count(*c, "fit_points", v.fit_points, 0, 100));
+    v.fit_points = static_cast<int>(count_in(*c, "fit_points", v.fit_points, 0, 100));
     if (v.fit_points == 1) c->fail("fit_points", "a fit needs at least 2 points (0: all)");
     v.judgement.expected_order = c->number_or("expected_order", v.judgement.expected_order);
     c->require_positive("expected_order", v.judgement.expected_order);
@@ -126,30 +112,30 @@ WaveStudyFile load_wave_study_file(const std::string& path, const std::vector<st
   if (auto c = top.maybe_table("isotropy")) {
     WaveIsotropyOptions& v = o.isotropy;
     v.polar_kd = kd_list(*c, "polar_kd_over_pi", v.polar_kd);
-    v.polar_angles = static_cast<int>(count(*c, "polar_angles", v.polar_angles, 3, 100000));
+    v.polar_angles = static_cast<int>(count_in(*c, "polar_angles", v.polar_angles, 3, 100000));
     v.spread_kd_min = M_PI * c->number_or("spread_kd_min_over_pi", v.spread_kd_min / M_PI);
     v.spread_kd_max = M_PI * c->number_or("spread_kd_max_over_pi", v.spread_kd_max / M_PI);
     if (!(v.spread_kd_min > 0 && v.spread_kd_min < v.spread_kd_max && v.spread_kd_max <= M_PI))
       c->fail("spread_kd_max_over_pi", "need 0 < spread_kd_min_over_pi < spread_kd_max_over_pi <= 1");
-    v.spread_points = static_cast<int>(count(*c, "spread_points", v.spread_points, 2, 100000));
+    v.spread_points = static_cast<int>(count_in(*c, "spread_points", v.spread_points, 2, 100000));
     v.table_kd = M_PI * c->number_or("table_kd_over_pi", v.table_kd / M_PI);
     c->require_in("table_kd_over_pi", v.table_kd / M_PI, 1e-6, 1.0);
     v.baseline_stencil = c->string_or("baseline_stencil", v.baseline_stencil);
     v.measured_kd = kd_list(*c, "measured_kd_over_pi", v.measured_kd);
-    v.measured_angles = static_cast<int>(count(*c, "measured_angles", v.measured_angles, 2, 1000));
-    v.measured_grid = static_cast<int>(count(*c, "measured_grid", v.measured_grid, 16, 4096));
+    v.measured_angles = static_cast<int>(count_in(*c, "measured_angles", v.measured_angles, 2, 1000));
+    v.measured_grid = static_cast<int>(count_in(*c, "measured_grid", v.measured_grid, 16, 4096));
     v.measured_sigma = c->number_or("measured_sigma", v.measured_sigma);
     c->require_in("measured_sigma", v.measured_sigma, 1e-4, 0.5);
-    v.measured_steps = count(*c, "measured_steps", v.measured_steps, 16, 10000000);
+    v.measured_steps = count_in(*c, "measured_steps", v.measured_steps, 16, 10000000);
     if (auto r = c->maybe_table("ring")) {
-      v.ring.n = static_cast<int>(count(*r, "n", v.ring.n, 16, 4096));
+      v.ring.n = static_cast<int>(count_in(*r, "n", v.ring.n, 16, 4096));
       v.ring.width_m = r->number_or("width_m", v.ring.width_m);
       r->require_in("width_m", v.ring.width_m, 1e-4, 0.25);
       v.ring.t_s = r->number_or("t_s", v.ring.t_s);
       r->require_in("t_s", v.ring.t_s, 1e-3, 0.45);
       v.ring.sigma = r->number_or("sigma", v.ring.sigma);
       r->require_in("sigma", v.ring.sigma, 1e-3, 0.7);
-      v.ring.angles = static_cast<int>(count(*r, "angles", v.ring.angles, 2, 10000));
+      v.ring.angles = static_cast<int>(count_in(*r, "angles", v.ring.angles, 2, 10000));
       r->finish();
     }
     c->finish();
@@ -158,7 +144,7 @@ WaveStudyFile load_wave_study_file(const std::string& path, const std::vector<st
     WaveStabilityOptions& v = o.stability;
     v.mu_dt_max = c->number_or("mu_dt_max", v.mu_dt_max);
     c->require_in("mu_dt_max", v.mu_dt_max, 0.0, 1.99);
-    v.mu_dt_points = static_cast<int>(count(*c, "mu_dt_points", v.mu_dt_points, 2, 10000));
+    v.mu_dt_points = static_cast<int>(count_in(*c, "mu_dt_points", v.mu_dt_points, 2, 10000));
     if (auto m = c->maybe_numbers("check_mu_dt")) {
       for (double x : *m)
         if (!(x >= 0 && x < 2)) c->fail("check_mu_dt", "every μΔt must be in [0, 2)");
@@ -168,14 +154,14 @@ WaveStudyFile load_wave_study_file(const std::string& path, const std::vector<st
     c->require_in("check_factor", v.check_factor, 1e-4, 0.5);
     v.measured_tolerance = c->number_or("measured_tolerance", v.measured_tolerance);
     c->require_in("measured_tolerance", v.measured_tolerance, 1e-8, 0.1);
-    v.measured_steps = count(*c, "measured_steps", v.measured_steps, 10, 10000000);
+    v.measured_steps = count_in(*c, "measured_steps", v.measured_steps, 10, 10000000);
     v.damping_independence_tolerance = c->number_or("damping_independence_tolerance", v.damping_independence_tolerance);
     c->require_positive("damping_independence_tolerance", v.damping_independence_tolerance);
     v.lengyel_sigma = c->number_or("lengyel_sigma", v.lengyel_sigma);
     c->require_positive("lengyel_sigma", v.lengyel_sigma);
     v.lengyel_mu_dt = c->number_or("lengyel_mu_dt", v.lengyel_mu_dt);
     c->require_in("lengyel_mu_dt", v.lengyel_mu_dt, 0.0, 1.99);
-    v.lengyel_steps = count(*c, "lengyel_steps", v.lengyel_steps, 10, 10000000);
+    v.lengyel_steps = count_in(*c, "lengyel_steps", v.lengyel_steps, 10, 10000000);
     c->finish();
   }
   if (auto c = top.maybe_table("speed")) {

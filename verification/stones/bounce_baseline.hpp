@@ -3,7 +3,7 @@
 // `stoneskip regress` prints. A baseline file holds the settings that made it ([baseline]: the
 // case, swept parameter and grid, convention, water law, solver, tolerances) and the result
 // ([result]: the count at each grid value and every bisected threshold); reading and writing the
-// file is the command line's (tools/scene/baseline_file.hpp), comparing is here.
+// file is the command line's (the CLI's case parsing), comparing is here.
 //
 // What counts as a regression:
 //  * a count at a grid value differs, unless a stored threshold lies within compare_tolerance of

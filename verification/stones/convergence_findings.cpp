@@ -1,6 +1,7 @@
 // Findings of the convergence study (section "convergence" of the stones report): every series
 // of errors against step with its order fit and verdict (interval-based, verification/study/
 // order_record.hpp), the GCI of scalar series, the reference's own error against its tolerance.
+// For each water law of the study the series are found alike (convergence_series_findings).
 #include <cmath>
 #include <sstream>
 
@@ -38,8 +39,7 @@ void store_series(Record& parent, const ConvergenceSeries& s, OrderJudgement j) 
 
 }  // namespace
 
-Record convergence_findings(const RealtimeConvergenceResult& c, const ReferenceToleranceResult& tol,
-                            const OrderJudgement& judgement, double required_drop) {
+Record convergence_series_findings(const RealtimeConvergenceResult& c, const OrderJudgement& judgement) {
   Record r;
   r.set("case", c.case_label);
   r.set("reference_rtol", c.reference_rtol);
@@ -75,6 +75,12 @@ Record convergence_findings(const RealtimeConvergenceResult& c, const ReferenceT
   for (const auto& k : c.events.scheme_alone)
     crowd.add_row({k.h_s, double(k.steps_in_window), double(k.steps_with_two_or_more), k.fraction()});
   ev.set_table("crowding", crowd);
+  return r;
+}
+
+Record convergence_findings(const RealtimeConvergenceResult& c, const ReferenceToleranceResult& tol,
+                            const OrderJudgement& judgement, double required_drop) {
+  Record r = convergence_series_findings(c, judgement);
 
   // The reference's own error against its tolerance (tolerance proportionality: slope 1).
   Record& t = r.child("reference_tolerance");

@@ -10,22 +10,46 @@ namespace stoneskip {
 namespace {
 
 std::vector<const StudyThrow*> named_throws(const StoneStudiesOptions& o) {
-  return {&o.convergence_throw, &o.spin_throw, &o.nospin_throw, &o.sweep_base, &o.clanet, &o.bocquet, &o.stable_step_base};
+  return {&o.convergence_throw, &o.spin_throw, &o.nospin_throw, &o.sweep_base, &o.clanet, &o.bocquet, &o.stable_step_base,
+          &o.flat_drop};
 }
-const char* kThrowNames[] = {"convergence", "spin", "nospin", "sweep_base", "clanet", "bocquet", "stable_step_base"};
+const char* kThrowNames[] = {"convergence", "spin",  "nospin",           "sweep_base",
+                             "clanet",      "bocquet", "stable_step_base", "flat_drop"};
 
-// The throws of the work-precision study, by name; "spin_paper" is the spinning throw in the
-// paper convention.
-ThrowProblem work_throw(const StoneStudiesOptions& o, const std::string& name) {
+ThrowProblem work_throw(const StoneStudiesOptions& o, const std::string& entry) {
+  const std::size_t at = entry.find('@');
+  const std::string name = entry.substr(0, at);
+  ThrowProblem p;
   if (name == "spin_paper") {
-    ThrowProblem p = with_convention(o.spin_throw.problem, Convention::paper);
+    p = with_convention(o.spin_throw.problem, Convention::paper);
     p.label += " (paper convention)";
-    return p;
+  } else {
+    const auto all = named_throws(o);
+    const auto it = std::find(std::begin(kThrowNames), std::end(kThrowNames), name);
+    if (it == std::end(kThrowNames)) throw std::invalid_argument("no study throw named '" + name + "'");
+    p = all[static_cast<std::size_t>(it - std::begin(kThrowNames))]->problem;
   }
-  const auto all = named_throws(o);
-  for (std::size_t i = 0; i < all.size(); ++i)
-    if (name == kThrowNames[i]) return all[i]->problem;
-  throw std::invalid_argument("no study throw named '" + name + "'");
+  if (at != std::string::npos) {
+    WaterLaw law = WaterLaw::newtonian;
+    parse_water_law(entry.substr(at + 1), law);
+    set_water_law(p.environment, law);
+    p.label += std::string(" (") + to_string(law) + ")";
+  }
+  return p;
+}
+
+// The throw under each law with its published C_w (labelled with the law), or as given when no
+// law is named.
+std::vector<ThrowProblem> under_laws(const ThrowProblem& p, const std::vector<WaterLaw>& laws) {
+  if (laws.empty()) return {p};
+  std::vector<ThrowProblem> out;
+  for (WaterLaw law : laws) {
+    ThrowProblem q = p;
+    set_water_law(q.environment, law);
+    q.label += std::string(" (") + to_string(law) + ")";
+    out.push_back(q);
+  }
+  return out;
 }
 
 Record settings_findings(const StoneStudiesOptions& o) {
@@ -44,13 +68,27 @@ Record settings_findings(const StoneStudiesOptions& o) {
     c.set("mass_kg", t.problem.stone.mass.mass_kg);
     c.set("convention", std::string(to_string(t.problem.environment.convention)));
   };
-  for (std::size_t i = 0; i < all.size(); ++i) store(kThrowNames[i], *all[i]);
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (!all[i]->file.empty()) store(kThrowNames[i], *all[i]);  // an optional throw left out is not stored
   for (const auto& h : o.hard) store("hard_" + record_key(h.file), h);
   r.set_strings("throws", names);
   return r;
 }
 
 }  // namespace
+
+std::string study_throw_problem(const std::string& entry) {
+  const std::size_t at = entry.find('@');
+  const std::string name = entry.substr(0, at);
+  if (name != "spin_paper" && std::find(std::begin(kThrowNames), std::end(kThrowNames), name) == std::end(kThrowNames))
+    return "'" + name + "' is not one of the study's throws (or spin_paper)";
+  if (at == std::string::npos) return "";
+  WaterLaw law;
+  if (!parse_water_law(entry.substr(at + 1), law))
+    return "'" + entry.substr(at + 1) + "' in '" + entry + "' is not one of newtonian, planing, lift_drag";
+  if (name == "spin_paper") return "'" + entry + "': the paper convention has only its printed law";
+  return "";
+}
 
 bool StoneStudiesOptions::valid(std::string* why) const {
   auto fail = [&](const std::string& w) {
@@ -60,11 +98,22 @@ bool StoneStudiesOptions::valid(std::string* why) const {
   if (workers < 1) return fail("workers must be >= 1");
   if (convergence.dt_s.empty() || convergence.interval_steps.empty()) return fail("convergence needs steps");
   if (work_precision.dt_s.empty() || work_precision.rtol.empty()) return fail("work_precision needs steps and tolerances");
-  for (const auto& n : work_precision_throws) {
-    if (n == "spin_paper") continue;
-    if (std::find(std::begin(kThrowNames), std::end(kThrowNames), n) == std::end(kThrowNames))
-      return fail("work_precision throw '" + n + "' is not one of the study's throws");
-  }
+  for (const auto* list : {&work_precision_throws, &restarts.throws})
+    for (const auto& n : *list) {
+      const std::string study = list == &restarts.throws ? "restarts" : "work_precision";
+      if (const std::string problem = study_throw_problem(n); !problem.empty()) return fail(study + " throw " + problem);
+      const std::string name = n.substr(0, n.find('@'));
+      if (name == "flat_drop" && flat_drop.file.empty())
+        return fail(study + " throw 'flat_drop': the study file names no flat_drop case in [throws]");
+      if (n.find('@') != std::string::npos && name != "spin_paper") {
+        const auto all = named_throws(*this);
+        const auto it = std::find(std::begin(kThrowNames), std::end(kThrowNames), name);
+        if (all[static_cast<std::size_t>(it - std::begin(kThrowNames))]->problem.environment.convention == Convention::paper)
+          return fail(study + " throw '" + n + "': its case is in the paper convention, which has only its printed law");
+      }
+    }
+  if (restarts.rtol.empty() || restarts.methods.empty()) return fail("the restart study needs methods and tolerances");
+  if (!validation.valid(why)) return false;
   for (const auto& a : sweep_axes) {
     if (a.values.size() < 2) return fail(std::string("sweep over ") + to_string(a.parameter) + " needs at least 2 values");
     if (!std::is_sorted(a.values.begin(), a.values.end())) return fail("sweep values must ascend");
@@ -87,12 +136,23 @@ Record run_stone_studies(const StoneStudiesOptions& o, StudySink& sink) {
     ReferenceToleranceOptions to = o.reference_tolerance;
     to.workers = o.workers;
     to.progress = progress;
-    const RealtimeConvergenceResult conv = run_realtime_convergence(o.convergence_throw.problem, co);
-    const ReferenceToleranceResult tol = run_reference_tolerance(o.convergence_throw.problem, to);
+    // The first law in full (with the reference's own tolerance study), every other law's series.
+    const std::vector<ThrowProblem> throws = under_laws(o.convergence_throw.problem, o.convergence_laws);
+    const RealtimeConvergenceResult conv = run_realtime_convergence(throws.front(), co);
+    const ReferenceToleranceResult tol = run_reference_tolerance(throws.front(), to);
     Record r = convergence_findings(conv, tol, o.convergence_judgement, o.required_tolerance_drop);
     r.child("reference_tolerance").set("truth_rtol", to.truth_rtol);
     r.child("reference_tolerance").set("atol_ratio", to.atol_ratio);
     r.set("contact_ratio", co.contact_ratio);
+    r.set("law", std::string(to_string(throws.front().environment.water_law)));
+    std::vector<std::string> others;
+    for (std::size_t k = 1; k < throws.size(); ++k) {
+      const std::string law = to_string(throws[k].environment.water_law);
+      others.push_back(law);
+      r.child("other_laws").add_child(law, convergence_series_findings(run_realtime_convergence(throws[k], co),
+                                                                         o.convergence_judgement));
+    }
+    r.set_strings("other_laws_list", others);
     return r;
   });
 
@@ -100,9 +160,26 @@ Record run_stone_studies(const StoneStudiesOptions& o, StudySink& sink) {
     WorkPrecisionOptions wo = o.work_precision;
     wo.workers = o.workers;
     wo.progress = progress;
+    wo.laws.clear();  // each throw's law is named with it ("nospin@planing")
     std::vector<ThrowProblem> throws;
     for (const auto& n : o.work_precision_throws) throws.push_back(work_throw(o, n));
-    return work_precision_findings(run_work_precision(throws, wo), wo);
+    Record r = work_precision_findings(run_work_precision(throws, wo), wo);
+    // The restart strategies: CVODE only, on spinning and non-spinning throws, under their laws.
+    const RestartStudyOptions& ro = o.restarts;
+    WorkPrecisionOptions rs = wo;
+    rs.realtime.clear();
+    rs.dt_s.clear();
+    rs.methods = ro.methods;
+    rs.restarts = ro.strategies;
+    rs.rtol = ro.rtol;
+    rs.repeats = ro.repeats;
+    rs.restart_time_tolerance_s = ro.time_tolerance_s;
+    rs.restart_error_factor = ro.error_factor;
+    std::vector<ThrowProblem> restart_throws;
+    for (const auto& n : ro.throws) restart_throws.push_back(work_throw(o, n));
+    if (!restart_throws.empty() && !ro.strategies.empty())
+      r.add_child("restarts", restart_findings(run_work_precision(restart_throws, rs), rs, ReferenceOptions{}.restart));
+    return r;
   });
 
   run_section(sink, "validation", [&] {
@@ -112,12 +189,16 @@ Record run_stone_studies(const StoneStudiesOptions& o, StudySink& sink) {
     const ValidationResult v =
         run_validation(o.clanet.problem, o.bocquet.problem, o.nospin_throw.problem, o.spin_throw.problem, vo);
     Record r = validation_findings(v, vo);
-    // The paper's Fig. 9 histories (shown with the sweeps).
+    // The paper's Fig. 9 histories (shown with the sweeps): the seed's throws with the default law
+    // and with the paper's printed equations, both solvers.
     Record& f = r.child("fig9");
     std::vector<std::string> keys;
-    for (const auto& h : v.fig9) {
-      keys.push_back(record_key(h.label));
-      f.add_child(keys.back(), history_record(h));
+    for (const auto& run : v.variants) {
+      if (run.variant.convention != Convention::paper && run.variant.law != vo.laws.front()) continue;
+      for (const ThrowHistory* h : {&run.without_spin, &run.with_spin}) {
+        keys.push_back(record_key(h->label));
+        f.add_child(keys.back(), history_record(*h));
+      }
     }
     f.set_strings("histories", keys);
     return r;

@@ -1,11 +1,12 @@
 #include "verification/stones/validation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <numbers>
+#include <set>
 
-#include "verification/convergence/order_fit.hpp"
 #include "verification/stones/bounce_sweep.hpp"
 #include "verification/stones/parallel_runs.hpp"
 
@@ -29,6 +30,18 @@ SolverChoice realtime_of(const ThrowProblem& p, bool trajectory) {
   return realtime_choice(r);
 }
 
+// The solver of a variant for a problem (the validation's rtol for the reference).
+SolverChoice solver_of(const ModelVariant& v, const ThrowProblem& p, double rtol, bool trajectory) {
+  return v.solver == SolverKind::reference ? reference_of(p, rtol, trajectory) : realtime_of(p, trajectory);
+}
+
+// The problem as a variant sees it: its law with the published C_w, its convention.
+ThrowProblem as_variant(const ThrowProblem& p, const ModelVariant& v) {
+  ThrowProblem q = with_convention(p, v.convention);
+  set_water_law(q.environment, v.law);
+  return q;
+}
+
 ThrowProblem vary(const ThrowProblem& p, SweepParameter which, double value) {
   ThrowParameters tp = p.parameters;
   parameter_of(tp, which) = value;
@@ -37,37 +50,66 @@ ThrowProblem vary(const ThrowProblem& p, SweepParameter which, double value) {
 
 int bounces(const ThrowProblem& p, const SolverChoice& s) { return solve(p, s).bounces; }
 
+// The throw solved up to an early time first (kEarlyLook_s, or t_max if sooner), and again to
+// t_max only when `decided` says that early part does not settle the question: the answer is the
+// same as from the whole throw, without the seconds-long planing runs after a bounce.
+constexpr double kEarlyLook_s = 0.5;
+ThrowResult solve_until_decided(const ThrowProblem& p, const SolverChoice& s,
+                                const std::function<bool(const ThrowResult&)>& decided) {
+  SolverChoice early = s;
+  double& t_max = s.kind == SolverKind::realtime ? early.realtime.t_max_s : early.reference.t_max_s;
+  if (t_max <= kEarlyLook_s) return solve(p, s);
+  t_max = kEarlyLook_s;
+  ThrowResult r = solve(p, early);
+  return r.outcome != Outcome::time_limit || decided(r) ? r : solve(p, s);
+}
+
+// Whether the throw bounces at all: decided once it has bounced (the count never falls).
+bool bounces_at_all(const ThrowProblem& p, const SolverChoice& s) {
+  return solve_until_decided(p, s, [](const ThrowResult& r) { return r.bounces > 0; }).bounces > 0;
+}
+
+std::string fmt_value(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", x);
+  return buf;
+}
+
 // The smallest value of the parameter in [lo, hi] at which the throw bounces at least once
-// (direction +1), or the largest at which it still does (direction −1), by bisection.
+// (smallest = true), or the largest at which it still does, by bisection.
 BisectedValue bisect_bounce(const ThrowProblem& p, const SolverChoice& s, SweepParameter which, double lo, double hi,
                             double tol, bool smallest, const std::string& unit) {
   BisectedValue b;
-  const bool at_lo = bounces(vary(p, which, lo), s) > 0;
-  const bool at_hi = bounces(vary(p, which, hi), s) > 0;
+  const bool at_lo = bounces_at_all(vary(p, which, lo), s);
+  const bool at_hi = bounces_at_all(vary(p, which, hi), s);
   b.runs = 2;
   if (smallest) {
     if (!at_hi) {
-      b.note = "no bounce up to " + std::to_string(static_cast<int>(hi)) + " " + unit;
+      b.note = "no bounce up to " + fmt_value(hi) + " " + unit;
       return b;
     }
     if (at_lo) {
-      b.note = "bounces already at " + std::to_string(lo) + " " + unit;
+      b.note = "bounces already at " + fmt_value(lo) + " " + unit;
+      b.bounces_at_both_ends = true;
+      b.lo = b.hi = lo;
       return b;
     }
   } else {
     if (!at_lo) {
-      b.note = "no bounce even at " + std::to_string(static_cast<int>(lo)) + " " + unit;
+      b.note = "no bounce even at " + fmt_value(lo) + " " + unit;
       return b;
     }
     if (at_hi) {
-      b.note = "still bounces at " + std::to_string(static_cast<int>(hi)) + " " + unit;
+      b.note = "still bounces at " + fmt_value(hi) + " " + unit;
+      b.bounces_at_both_ends = true;
+      b.lo = b.hi = hi;
       return b;
     }
   }
   // Invariant: the bouncing side and the non-bouncing side bracket the change.
   while (hi - lo > tol) {
     const double mid = 0.5 * (lo + hi);
-    const bool bounce = bounces(vary(p, which, mid), s) > 0;
+    const bool bounce = bounces_at_all(vary(p, which, mid), s);
     ++b.runs;
     if (bounce == at_lo)
       lo = mid;
@@ -82,197 +124,245 @@ BisectedValue bisect_bounce(const ThrowProblem& p, const SolverChoice& s, SweepP
 
 // Duration of the first contact when it ends in a bounce (Clanet's contact time is that of a
 // bounce; a contact that ends in sinking is a planing run of another kind): NaN otherwise.
-double first_contact_duration(const ThrowResult& r) {
+double first_contact_duration(const ThrowProblem& p, const SolverChoice& s) {
+  // Decided once the first contact has ended (a contact still open at the early look is not).
+  const ThrowResult r = solve_until_decided(p, s, [](const ThrowResult& e) {
+    return e.contacts.size() > 1 || (e.contacts.size() == 1 && e.bounces > 0);
+  });
   return r.contacts.empty() || !r.contacts[0].bounced ? kNaN : r.contacts[0].duration_s();
 }
 
-std::string spin_label(double U, double spin, Convention c, const std::string& solver) {
-  char buf[128];
-  std::snprintf(buf, sizeof buf, "%g m/s, %g rev/s, %s, %s", U, spin, to_string(c), solver.c_str());
+std::string history_label(const ThrowProblem& q, const ModelVariant& v) {
+  char buf[160];
+  const std::string model = v.convention == Convention::paper ? "paper" : std::string("physical ") + to_string(v.law);
+  std::snprintf(buf, sizeof buf, "%g m/s, %g rev/s, %s, %s", q.parameters.speed_m_s, q.parameters.spin_rev_s, model.c_str(),
+                v.solver == SolverKind::realtime ? "real-time" : "reference");
   return buf;
 }
 
-double momentum_after_last_bounce(const ThrowHistory& h, double mass) {
-  // Momentum at the end of the last contact that ended in a bounce, over the release momentum.
-  const auto& c = h.result.contacts;
-  double t_end = -1;
-  for (const auto& k : c)
-    if (k.bounced) t_end = k.end_s;
-  const auto t = h.table.column("t_s");
-  const auto p = h.table.column("momentum_kg_m_s");
-  if (t.empty()) return kNaN;
-  if (t_end < 0) {
-    // No bounce: momentum at the end of the first contact.
-    if (c.empty()) return kNaN;
-    t_end = c[0].end_s;
-  }
-  std::size_t i = 0;
-  while (i + 1 < t.size() && t[i] < t_end) ++i;
-  (void)mass;
-  return p[i] / p[0];
+// Least-squares exponent of y against x over the points with x > 0 and y > 0 (95 % interval).
+OrderFit exponent_fit(const std::vector<double>& x, const std::vector<double>& y) {
+  std::vector<double> xs, ys;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (x[i] > 0 && y[i] > 0 && std::isfinite(y[i])) {
+      xs.push_back(x[i]);
+      ys.push_back(y[i]);
+    }
+  OrderFit f = fit_order(xs, ys);
+  if (!f.valid) f.problem = std::to_string(xs.size()) + (xs.size() == 1 ? " point" : " points") + " with a positive value";
+  return f;
 }
 
+std::vector<double> squares(const std::vector<double>& v) {
+  std::vector<double> out;
+  for (double x : v) out.push_back(x * x);
+  return out;
+}
+
+std::vector<double> as_doubles(const std::vector<int>& v) { return {v.begin(), v.end()}; }
+
 }  // namespace
+
+const std::vector<std::string>& scorable_quantities() {
+  static const std::vector<std::string> k{"clanet_min_speed",        "clanet_best_attack",     "clanet_max_path_angle",
+                                          "clanet_contact_time",     "clanet_contact_exponent", "bocquet_speed_exponent",
+                                          "bocquet_spin_exponent"};
+  return k;
+}
+
+const std::vector<std::string>& cost_throw_names() {
+  static const std::vector<std::string> k{"clanet", "seed_spin", "seed_nospin"};
+  return k;
+}
+
+bool ValidationOptions::valid(std::string* why) const {
+  auto fail = [&](const std::string& w) {
+    if (why) *why = w;
+    return false;
+  };
+  if (laws.empty()) return fail("validation needs at least one water law");
+  if (std::set<WaterLaw>(laws.begin(), laws.end()).size() != laws.size()) return fail("validation laws repeat");
+  if (clanet_attack_deg.empty() || clanet_contact_speeds_m_s.empty() || bocquet_speeds_m_s.empty() ||
+      bocquet_spins_rev_s.empty() || regime_spins_rev_s.empty())
+    return fail("validation grids must not be empty");
+  if (std::find(regime_spins_rev_s.begin(), regime_spins_rev_s.end(), ranking.held_spin_rev_s) == regime_spins_rev_s.end())
+    return fail("validation ranking held_spin_rev_s must be one of regime_spins_rev_s");
+  if (!(ranking.miss_distance > 0) || !(ranking.distance_bound >= 0) || !(ranking.attack_bound_deg >= 0) ||
+      ranking.cost_repeats < 1)
+    return fail("validation ranking bounds must be positive and cost_repeats >= 1");
+  if (ranking.cost_throws.empty()) return fail("validation ranking needs at least one cost throw");
+  for (const auto& n : ranking.cost_throws)
+    if (std::find(cost_throw_names().begin(), cost_throw_names().end(), n) == cost_throw_names().end())
+      return fail("validation ranking cost throw '" + n + "' is not one of clanet, seed_spin, seed_nospin");
+  std::set<std::string> keys;
+  for (const auto& m : measured) {
+    if (!keys.insert(m.key).second) return fail("validation measured key '" + m.key + "' repeats");
+    if (!m.score) continue;
+    const auto& s = scorable_quantities();
+    if (std::find(s.begin(), s.end(), m.key) == s.end())
+      return fail("validation measured '" + m.key + "' has a score range but is not a scorable quantity");
+    if (!(m.score->low <= m.score->high) || !(m.score->low * m.score->high > 0))
+      return fail("validation measured '" + m.key + "': score_low <= score_high, both non-zero and of one sign");
+  }
+  for (const auto& c : curves) {
+    if (c.key != "clanet_min_speed") return fail("validation curve '" + c.key + "' is not clanet_min_speed");
+    if (c.x.empty() || c.x.size() != c.low.size() || c.x.size() != c.high.size())
+      return fail("validation curve '" + c.label + "': x, low and high need one value per point");
+    for (std::size_t i = 0; i < c.x.size(); ++i)
+      if (!(c.low[i] <= c.high[i])) return fail("validation curve '" + c.label + "': low > high");
+  }
+  return true;
+}
+
+std::string ModelVariant::key() const {
+  const std::string model = convention == Convention::paper ? "paper" : to_string(law);
+  return model + (solver == SolverKind::realtime ? "_realtime" : "_reference");
+}
+
+std::string ModelVariant::title() const {
+  const std::string model = convention == Convention::paper ? "paper convention" : to_string(law);
+  return model + (solver == SolverKind::realtime ? ", real-time" : ", reference");
+}
+
+std::vector<ModelVariant> validation_variants(const std::vector<WaterLaw>& laws) {
+  std::vector<ModelVariant> v;
+  for (WaterLaw law : laws) v.push_back({law, Convention::physical, SolverKind::reference, VariantUse::table});
+  if (!laws.empty()) v.push_back({laws.front(), Convention::physical, SolverKind::realtime, VariantUse::table});
+  // The paper's printed equations have one law, their Eq. 2 (environment_problem refuses others).
+  v.push_back({WaterLaw::newtonian, Convention::paper, SolverKind::reference, VariantUse::table});
+  v.push_back({WaterLaw::newtonian, Convention::paper, SolverKind::realtime, VariantUse::seed_only});
+  return v;
+}
+
+const VariantResult* ValidationResult::find(WaterLaw law, Convention c, SolverKind s) const {
+  for (const auto& v : variants)
+    if ((c == Convention::paper || v.variant.law == law) && v.variant.convention == c && v.variant.solver == s) return &v;
+  return nullptr;
+}
 
 ValidationResult run_validation(const ThrowProblem& clanet, const ThrowProblem& bocquet, const ThrowProblem& without_spin,
                                 const ThrowProblem& with_spin, const ValidationOptions& o) {
   ValidationResult res;
-  const ThrowProblem clanet_paper = with_convention(clanet, Convention::paper);
+  const std::vector<ModelVariant> variants = validation_variants(o.laws);
+  res.variants.resize(variants.size());
   std::vector<std::function<void()>> jobs;
+  const double rtol = o.reference_rtol;
 
-  // Clanet: minimum bouncing speed against attack angle (β = 20° from the case), largest β.
-  ClanetResult& C = res.clanet;
-  C.attack_deg = o.clanet_attack_deg;
-  const std::size_t na = C.attack_deg.size();
-  C.min_speed_reference.resize(na);
-  C.min_speed_realtime.resize(na);
-  C.min_speed_paper.resize(na);
-  for (std::size_t i = 0; i < na; ++i) {
-    auto job = [&, i](const ThrowProblem& base, const SolverChoice& s, BisectedValue& out) {
-      jobs.push_back([&, i, s, &base = base] {
-        out = bisect_bounce(vary(base, SweepParameter::attack_angle_deg, C.attack_deg[i]), s, SweepParameter::speed_m_s,
-                            o.clanet_speed_low_m_s, o.clanet_speed_high_m_s, o.speed_tolerance_m_s, true, "m/s");
+  for (std::size_t k = 0; k < variants.size(); ++k) {
+    const ModelVariant& v = variants[k];
+    VariantResult& R = res.variants[k];
+    R.variant = v;
+    // The seed's 8 m/s throws, with their histories (every variant).
+    for (const auto* seed : {&without_spin, &with_spin}) {
+      ThrowHistory& out = seed == &without_spin ? R.without_spin : R.with_spin;
+      jobs.push_back([&, seed, &out = out] {
+        const ThrowProblem q = as_variant(*seed, v);
+        out = make_history(q, solve(q, solver_of(v, q, rtol, true)), history_label(q, v));
       });
-    };
-    job(clanet, reference_of(clanet, o.reference_rtol, false), C.min_speed_reference[i]);
-    job(clanet, realtime_of(clanet, false), C.min_speed_realtime[i]);
-    job(clanet_paper, reference_of(clanet_paper, o.reference_rtol, false), C.min_speed_paper[i]);
-  }
-  auto beta_job = [&](const ThrowProblem& base, const SolverChoice& s, BisectedValue& out) {
-    jobs.push_back([&, s, &base = base] {
-      out = bisect_bounce(base, s, SweepParameter::path_angle_deg, 5.0, 80.0, o.angle_tolerance_deg, false, "deg");
+    }
+    if (v.use != VariantUse::table) continue;
+
+    // Clanet: minimum bouncing speed against attack angle (β from the case), largest β.
+    const ThrowProblem C = as_variant(clanet, v);
+    const SolverChoice Cs = solver_of(v, C, rtol, false);
+    R.min_speed.resize(o.clanet_attack_deg.size());
+    for (std::size_t i = 0; i < o.clanet_attack_deg.size(); ++i)
+      jobs.push_back([&, C, Cs, i] {
+        R.min_speed[i] = bisect_bounce(vary(C, SweepParameter::attack_angle_deg, o.clanet_attack_deg[i]), Cs,
+                                       SweepParameter::speed_m_s, o.clanet_speed_low_m_s, o.clanet_speed_high_m_s,
+                                       o.speed_tolerance_m_s, true, "m/s");
+      });
+    jobs.push_back([&, C, Cs] {
+      R.largest_path_angle = bisect_bounce(C, Cs, SweepParameter::path_angle_deg, 5.0, 80.0, o.angle_tolerance_deg, false, "deg");
     });
+    // Contact time against speed.
+    R.contact_time_s.assign(o.clanet_contact_speeds_m_s.size(), kNaN);
+    for (std::size_t i = 0; i < o.clanet_contact_speeds_m_s.size(); ++i)
+      jobs.push_back([&, C, Cs, i] {
+        R.contact_time_s[i] = first_contact_duration(vary(C, SweepParameter::speed_m_s, o.clanet_contact_speeds_m_s[i]), Cs);
+      });
+    // The spin regimes at α = regime_attack_deg (Clanet et al.: tumbles / dips and recovers / held).
+    R.regimes.resize(o.regime_spins_rev_s.size());
+    for (std::size_t i = 0; i < o.regime_spins_rev_s.size(); ++i)
+      jobs.push_back([&, C, i] {
+        const ThrowProblem q = vary(vary(C, SweepParameter::attack_angle_deg, o.regime_attack_deg), SweepParameter::spin_rev_s,
+                                    o.regime_spins_rev_s[i]);
+        R.regimes[i] = make_history(q, solve(q, solver_of(v, q, rtol, true)), history_label(q, v));
+      });
+
+    // Bocquet: count against V and Ω.
+    const ThrowProblem B = as_variant(bocquet, v);
+    const SolverChoice Bs = solver_of(v, B, rtol, false);
+    R.count_vs_speed.assign(o.bocquet_speeds_m_s.size(), 0);
+    R.count_vs_spin.assign(o.bocquet_spins_rev_s.size(), 0);
+    for (std::size_t i = 0; i < o.bocquet_speeds_m_s.size(); ++i)
+      jobs.push_back([&, B, Bs, i] { R.count_vs_speed[i] = bounces(vary(B, SweepParameter::speed_m_s, o.bocquet_speeds_m_s[i]), Bs); });
+    for (std::size_t i = 0; i < o.bocquet_spins_rev_s.size(); ++i)
+      jobs.push_back([&, B, Bs, i] { R.count_vs_spin[i] = bounces(vary(B, SweepParameter::spin_rev_s, o.bocquet_spins_rev_s[i]), Bs); });
+  }
+
+  // The cost of a throw with each law, both solvers (thread CPU time: the other worker's runs do
+  // not count, though they share the caches).
+  struct CostThrowSpec {
+    const char* name;
+    const ThrowProblem* problem;
   };
-  beta_job(clanet, reference_of(clanet, o.reference_rtol, false), C.largest_path_angle_reference);
-  beta_job(clanet, realtime_of(clanet, false), C.largest_path_angle_realtime);
-  beta_job(clanet_paper, reference_of(clanet_paper, o.reference_rtol, false), C.largest_path_angle_paper);
-  // Contact time against speed.
-  C.contact_speeds_m_s = o.clanet_contact_speeds_m_s;
-  const std::size_t nc = C.contact_speeds_m_s.size();
-  C.contact_time_reference_s.assign(nc, kNaN);
-  C.contact_time_realtime_s.assign(nc, kNaN);
-  C.contact_time_paper_s.assign(nc, kNaN);
-  for (std::size_t i = 0; i < nc; ++i) {
-    jobs.push_back([&, i] {
-      const ThrowProblem q = vary(clanet, SweepParameter::speed_m_s, C.contact_speeds_m_s[i]);
-      C.contact_time_reference_s[i] = first_contact_duration(solve(q, reference_of(q, o.reference_rtol, false)));
-    });
-    jobs.push_back([&, i] {
-      const ThrowProblem q = vary(clanet, SweepParameter::speed_m_s, C.contact_speeds_m_s[i]);
-      C.contact_time_realtime_s[i] = first_contact_duration(solve(q, realtime_of(q, false)));
-    });
-    jobs.push_back([&, i] {
-      const ThrowProblem q = vary(clanet_paper, SweepParameter::speed_m_s, C.contact_speeds_m_s[i]);
-      C.contact_time_paper_s[i] = first_contact_duration(solve(q, reference_of(q, o.reference_rtol, false)));
-    });
-  }
-  // The three spin regimes at α = 35°, β = 20° (Clanet et al.: tumbles / dips and recovers / held).
-  const std::vector<double>& regimes = o.regime_spins_rev_s;
-  C.spin_regimes.resize(2 * regimes.size());
-  for (std::size_t i = 0; i < regimes.size(); ++i) {
-    for (int c = 0; c < 2; ++c) {
-      jobs.push_back([&, i, c] {
-        ThrowProblem q = vary(c ? clanet_paper : clanet, SweepParameter::attack_angle_deg, o.regime_attack_deg);
-        q = vary(q, SweepParameter::spin_rev_s, regimes[i]);
-        ThrowResult r = solve(q, reference_of(q, o.reference_rtol, true));
-        C.spin_regimes[2 * i + c] =
-            make_history(q, std::move(r), spin_label(q.parameters.speed_m_s, regimes[i], q.environment.convention, "reference"));
+  const CostThrowSpec known[] = {{"clanet", &clanet}, {"seed_spin", &with_spin}, {"seed_nospin", &without_spin}};
+  std::vector<CostThrowSpec> cost_throws;
+  for (const auto& name : o.ranking.cost_throws)
+    for (const auto& k : known)
+      if (name == k.name) cost_throws.push_back(k);
+  res.costs.resize(o.laws.size());
+  for (std::size_t l = 0; l < o.laws.size(); ++l) {
+    LawCost& L = res.costs[l];
+    L.law = o.laws[l];
+    L.throws.resize(cost_throws.size());
+    for (std::size_t t = 0; t < cost_throws.size(); ++t) {
+      L.throws[t].throw_name = cost_throws[t].name;
+      jobs.push_back([&, l, t] {
+        const ModelVariant ref{o.laws[l], Convention::physical, SolverKind::reference, VariantUse::table};
+        const ThrowProblem q = as_variant(*cost_throws[t].problem, ref);
+        const ThrowResult r = solve_min_cpu(q, reference_of(q, rtol, false), o.ranking.cost_repeats);
+        res.costs[l].throws[t].reference_cpu_s = r.stats.cpu_s;
+        res.costs[l].throws[t].reference_rhs_evaluations = r.stats.rhs_evaluations;
+        const ThrowResult s = solve_min_cpu(q, realtime_of(q, false), o.ranking.cost_repeats);
+        res.costs[l].throws[t].realtime_cpu_s = s.stats.cpu_s;
+        res.costs[l].throws[t].realtime_steps = s.stats.steps;
       });
     }
   }
-
-  // Bocquet: count against V and Ω (reference, both conventions).
-  BocquetResult& B = res.bocquet;
-  B.stone = bocquet.stone.description;
-  B.speeds_m_s = o.bocquet_speeds_m_s;
-  B.spins_rev_s = o.bocquet_spins_rev_s;
-  B.count_vs_speed_physical.assign(B.speeds_m_s.size(), 0);
-  B.count_vs_speed_paper.assign(B.speeds_m_s.size(), 0);
-  B.count_vs_spin_physical.assign(B.spins_rev_s.size(), 0);
-  B.count_vs_spin_paper.assign(B.spins_rev_s.size(), 0);
-  for (int c = 0; c < 2; ++c) {
-    const ThrowProblem base = with_convention(bocquet, c ? Convention::paper : Convention::physical);
-    for (std::size_t i = 0; i < B.speeds_m_s.size(); ++i)
-      jobs.push_back([&, c, i, base] {
-        const ThrowProblem q = vary(base, SweepParameter::speed_m_s, B.speeds_m_s[i]);
-        (c ? B.count_vs_speed_paper : B.count_vs_speed_physical)[i] = bounces(q, reference_of(q, o.reference_rtol, false));
-      });
-    for (std::size_t i = 0; i < B.spins_rev_s.size(); ++i)
-      jobs.push_back([&, c, i, base] {
-        const ThrowProblem q = vary(base, SweepParameter::spin_rev_s, B.spins_rev_s[i]);
-        (c ? B.count_vs_spin_paper : B.count_vs_spin_physical)[i] = bounces(q, reference_of(q, o.reference_rtol, false));
-      });
-  }
-
-  // The seed's Fig. 9 throws: with and without spin, both conventions, both solvers.
-  res.fig9.resize(8);
-  for (int spin = 0; spin < 2; ++spin)
-    for (int c = 0; c < 2; ++c)
-      for (int s = 0; s < 2; ++s)
-        jobs.push_back([&, spin, c, s] {
-          const ThrowProblem q = with_convention(spin ? with_spin : without_spin, c ? Convention::paper : Convention::physical);
-          const SolverChoice choice = s ? realtime_of(q, true) : reference_of(q, o.reference_rtol, true);
-          ThrowResult r = solve(q, choice);
-          res.fig9[4 * spin + 2 * c + s] = make_history(
-              q, std::move(r),
-              spin_label(q.parameters.speed_m_s, q.parameters.spin_rev_s, q.environment.convention, s ? "real-time" : "reference"));
-        });
 
   run_jobs(jobs, ParallelOptions{o.workers, "stones: validation", o.progress});
 
-  // Fits and predictions.
-  {
-    std::vector<double> u, t;
-    for (std::size_t i = 0; i < nc; ++i)
-      if (std::isfinite(C.contact_time_reference_s[i])) {
-        u.push_back(C.contact_speeds_m_s[i]);
-        t.push_back(C.contact_time_reference_s[i]);
-      }
-    const OrderFit f = fit_order(u, t);
-    C.contact_time_exponent = f.valid ? f.order : kNaN;
+  // Fits, predictions, means.
+  for (auto& R : res.variants) {
+    if (R.variant.use != VariantUse::table) continue;
+    R.contact_time_fit = exponent_fit(o.clanet_contact_speeds_m_s, R.contact_time_s);
+    R.speed_fit = exponent_fit(squares(o.bocquet_speeds_m_s), as_doubles(R.count_vs_speed));
+    R.spin_fit = exponent_fit(squares(o.bocquet_spins_rev_s), as_doubles(R.count_vs_spin));
+  }
+  for (auto& L : res.costs) {
+    for (const auto& t : L.throws) {
+      L.mean_reference_cpu_s += t.reference_cpu_s / double(L.throws.size());
+      L.mean_realtime_cpu_s += t.realtime_cpu_s / double(L.throws.size());
+      L.mean_realtime_cpu_per_step_s += t.realtime_cpu_s / double(std::max(1L, t.realtime_steps)) / double(L.throws.size());
+      L.mean_reference_cpu_per_rhs_s +=
+          t.reference_cpu_s / double(std::max(1L, t.reference_rhs_evaluations)) / double(L.throws.size());
+    }
   }
   {
     // Bocquet 2003: N_V = V² / (2 μ g ℓ) needs his friction μ; we show the shape V² scaled to
-    // the model's count at the reference speed instead, and N_Ω ≈ R Ω² / g in absolute terms.
+    // N_Ω at the base speed instead, and N_Ω ≈ R Ω² / g in absolute terms.
+    res.bocquet_stone = bocquet.stone.description;
     const double R = bocquet.stone.disk_radius_m, g = bocquet.environment.gravity_m_s2;
-    for (double w : B.spins_rev_s) {
+    for (double w : o.bocquet_spins_rev_s) {
       const double omega = 2 * std::numbers::pi * w;
-      B.bocquet_spin_prediction.push_back(R * omega * omega / g);
+      res.bocquet_spin_prediction.push_back(R * omega * omega / g);
     }
     const double V0 = bocquet.parameters.speed_m_s;
     const double N_ref = R * std::pow(2 * std::numbers::pi * bocquet.parameters.spin_rev_s, 2) / g;
-    for (double V : B.speeds_m_s) B.bocquet_speed_prediction.push_back(N_ref * (V * V) / (V0 * V0));
-    auto exponent = [](const std::vector<double>& x, const std::vector<int>& n) {
-      std::vector<double> xs, ns;
-      for (std::size_t i = 0; i < x.size(); ++i)
-        if (n[i] > 0 && x[i] > 0) {
-          xs.push_back(x[i]);
-          ns.push_back(n[i]);
-        }
-      const OrderFit f = fit_order(xs, ns);
-      return f.valid ? f.order : kNaN;
-    };
-    B.speed_exponent_physical = exponent(B.speeds_m_s, B.count_vs_speed_physical);
-    B.speed_exponent_paper = exponent(B.speeds_m_s, B.count_vs_speed_paper);
-    B.spin_exponent_physical = exponent(B.spins_rev_s, B.count_vs_spin_physical);
-    B.spin_exponent_paper = exponent(B.spins_rev_s, B.count_vs_spin_paper);
+    for (double V : o.bocquet_speeds_m_s) res.bocquet_speed_prediction.push_back(N_ref * (V * V) / (V0 * V0));
   }
-  for (int c = 0; c < 2; ++c)
-    for (int s = 0; s < 2; ++s) {
-      SeedClaim k;
-      k.claim = "3 bounces without spin at 8 m/s; more with spin; a curved path";
-      const ThrowHistory& a = res.fig9[2 * c + s];
-      const ThrowHistory& b = res.fig9[4 + 2 * c + s];
-      k.convention = c ? "paper" : "physical";
-      k.solver = s ? "real-time" : "reference";
-      k.bounces_without_spin = a.result.bounces;
-      k.bounces_with_spin = b.result.bounces;
-      k.lateral_without_spin_m = a.result.lateral_m;
-      k.lateral_with_spin_m = b.result.lateral_m;
-      k.momentum_drop_without_spin = momentum_after_last_bounce(a, without_spin.stone.mass.mass_kg);
-      k.momentum_drop_with_spin = momentum_after_last_bounce(b, with_spin.stone.mass.mass_kg);
-      res.seed.push_back(k);
-    }
   return res;
 }
 

@@ -1,11 +1,16 @@
 // Findings of the speed-against-error study (section "work_precision" of the stones report): per
 // throw, every run's error and cost, the runs that failed with their reasons, the cheapest setting
 // of each solver family for each target error, and the answer: the cheapest real-time setting and
-// the cheapest CVODE setting for each target (picked here, not in the report).
+// the cheapest CVODE setting for each target (picked here, not in the report). The restart
+// strategies' summaries and the verdict that names the cheapest strategy keeping the contact times
+// (restart_findings).
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "verification/stones/stone_studies.hpp"
 #include "verification/study/order_record.hpp"
+#include "verification/study/verdict_rules.hpp"
 #include "verification/study/words.hpp"
 
 namespace stoneskip {
@@ -33,6 +38,7 @@ Record work_precision_findings(const WorkPrecisionResult& wp, const WorkPrecisio
     throws.push_back(key);
     Record& g = r.child(key);
     g.set("label", t.label);
+    g.set("law", std::string(to_string(t.law)));
     g.set("headline", std::string(to_string(t.headline)));
     g.set("truth_contacts", t.truth.contacts.size());
     g.set("truth_bounces", t.truth.bounces);
@@ -91,6 +97,72 @@ Record work_precision_findings(const WorkPrecisionResult& wp, const WorkPrecisio
     g.set_strings("families", families);  // after every family_index call
   }
   r.set_strings("throws", throws);
+  return r;
+}
+
+Record restart_findings(const WorkPrecisionResult& wp, const WorkPrecisionOptions& o, RestartStrategy default_restart) {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  Record r;
+  r.set("truth_rtol", o.truth_rtol);
+  r.set("atol_ratio", o.atol_ratio);
+  r.set("repeats", o.repeats);
+  r.set("time_tolerance_s", o.restart_time_tolerance_s);
+  r.set("error_factor", o.restart_error_factor);
+  r.set("default", std::string(to_string(default_restart)));
+  r.set("clock", std::string("CPU time of the solving thread, the minimum over the repeats, summed over the throws"));
+  std::vector<std::string> labels;
+  for (const auto& t : wp.throws) labels.push_back(t.label);
+  r.set_strings("throws", labels);
+  std::vector<std::string> strategies, methods;
+  for (RestartStrategy s : o.restarts) strategies.push_back(to_string(s));
+  for (ReferenceMethod m : o.methods) methods.push_back(to_string(m));
+  r.set_strings("strategies", strategies);
+  r.set_strings("methods", methods);
+  // One row per method × rtol × strategy; method and strategy as positions in the lists above.
+  Table t{{"method", "rtol", "strategy", "throws", "failed", "rhs_evaluations", "steps", "segments", "cpu_s",
+           "worst_contact_time_error_s", "tolerance_s", "keeps"},
+          {}};
+  auto position = [](const std::vector<std::string>& list, const std::string& name) {
+    return double(std::find(list.begin(), list.end(), name) - list.begin());
+  };
+  for (const RestartSummary& s : wp.restarts)
+    t.add_row({position(methods, to_string(s.method)), s.rtol, position(strategies, to_string(s.restart)), double(s.throws),
+               double(s.failed), double(s.rhs_evaluations), double(s.steps), double(s.segments), s.cpu_s,
+               s.worst_contact_time_error_s, s.tolerance_s, s.keeps_contact_times ? 1.0 : 0.0});
+  r.set_table("summaries", t);
+  // Per strategy over the whole study: failures, the worst error against its tolerance, the cost.
+  Record in;
+  std::string reason;
+  for (RestartStrategy rs : o.restarts) {
+    const std::string name = to_string(rs);
+    double failed = 0, ratio = 0, rhs = 0, cpu = 0, segments = 0;
+    for (const RestartSummary& s : wp.restarts) {
+      if (s.restart != rs) continue;
+      failed += s.failed;
+      rhs += double(s.rhs_evaluations);
+      cpu += s.cpu_s;
+      segments += double(s.segments);
+      const double q = s.worst_contact_time_error_s / s.tolerance_s;
+      ratio = std::isnan(ratio) || std::isnan(q) ? kNaN : std::max(ratio, q);
+    }
+    Record& g = r.child(name);
+    g.set("failed", failed);
+    g.set("error_ratio", ratio);
+    g.set("rhs_evaluations", rhs);
+    g.set("cpu_s", cpu);
+    g.set("segments", segments);
+    in.set(name + ".failed", failed);
+    in.set(name + ".error_ratio", ratio);
+    in.set(name + ".rhs_evaluations", rhs);
+    reason += (reason.empty() ? "" : "; ") + name + ": " + num(rhs, 6) + " right-hand sides, " + num(segments, 6) +
+              " integration segments, " + num(cpu) + " s CPU, " +
+              (failed > 0 ? num(failed, 4) + " failed runs or changed contact lists"
+                          : "worst contact-time error " + num(ratio) + "× its tolerance");
+  }
+  reason += std::string("; the reference's default is ") + to_string(default_restart);
+  decide_verdict(r, "verdict", "restart_strategy", in, reason);
+  // The study's own choice (work_precision.hpp RestartVerdict), for comparison with the rule's.
+  r.set("study_choice", wp.restart_verdict.found ? std::string(to_string(wp.restart_verdict.restart)) : std::string("none"));
   return r;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <vector>
 
 #include "verification/convergence/order_fit.hpp"
 
@@ -11,6 +12,33 @@ namespace stoneskip {
 namespace {
 
 using Rule = std::function<std::string(const Record&)>;
+
+// The names P of the inputs "P.field" that have the given field (the variants a rule compares).
+std::vector<std::string> prefixes_with(const Record& in, const std::string& field) {
+  std::vector<std::string> out;
+  const std::string tail = "." + field;
+  for (const auto& [key, value] : in.numbers())
+    if (key.size() > tail.size() && key.compare(key.size() - tail.size(), tail.size(), tail) == 0)
+      out.push_back(key.substr(0, key.size() - tail.size()));
+  return out;  // sorted by name (numbers() is ordered)
+}
+
+// skips_like_a_stone: within the distance bound, and the attitude held through the contact.
+bool near_measurements(double distance, double bound) { return distance <= bound; }
+bool holds_attitude(double attack_change_deg, double bound_deg) { return std::abs(attack_change_deg) <= bound_deg; }
+
+// The cheapest of the named candidates that pass: by cost, ties to the smaller tie_break, then by
+// name. Empty when none passes.
+struct Candidate {
+  std::string name;
+  double cost = 0, tie_break = 0;
+};
+std::string cheapest(const std::vector<Candidate>& passing) {
+  const Candidate* best = nullptr;
+  for (const auto& c : passing)
+    if (!best || c.cost < best->cost || (c.cost == best->cost && c.tie_break < best->tie_break)) best = &c;
+  return best ? best->name : std::string();
+}
 
 const std::map<std::string, Rule>& rules() {
   static const std::map<std::string, Rule> r{
@@ -64,9 +92,9 @@ const std::map<std::string, Rule>& rules() {
        }},
       {"minimum_ratio",
        [](const Record& in) {
-         const double r = in.number("ratio");
-         if (std::isnan(r)) return std::string("not measured");
-         return std::string(r >= in.number("required") ? "error control works" : "error control falls short");
+         const double ratio = in.number("ratio");
+         if (std::isnan(ratio)) return std::string("not measured");
+         return std::string(ratio >= in.number("required") ? "error control works" : "error control falls short");
        }},
       {"thresholds_near_grid",
        [](const Record& in) {
@@ -82,6 +110,48 @@ const std::map<std::string, Rule>& rules() {
       {"max_fluid_power",
        [](const Record& in) {
          return std::string(in.number("max_fluid_power_W") <= in.number("round_off_W") ? "passive" : "creates energy");
+       }},
+      {"power_law_exponent",
+       [](const Record& in) {
+         if (!in.flag("valid") || in.number("points") < 3) return std::string("too few points to fit");
+         const double lo = in.number("exponent_low"), hi = in.number("exponent_high");
+         const double band_lo = in.number("expected") - in.number("tolerance"),
+                      band_hi = in.number("expected") + in.number("tolerance");
+         if (lo >= band_lo && hi <= band_hi) return std::string("consistent with the expected exponent");
+         if (hi < band_lo || lo > band_hi) return std::string("excludes the expected exponent");
+         return std::string("exponent not established");
+       }},
+      {"skips_like_a_stone",
+       [](const Record& in) {
+         const bool near = near_measurements(in.number("distance"), in.number("distance_bound"));
+         const bool holds = holds_attitude(in.number("attack_change_deg"), in.number("attack_bound_deg"));
+         if (near && holds) return std::string("skips like a real stone");
+         if (near) return std::string("does not hold its attitude");
+         if (holds) return std::string("too far from the measurements");
+         return std::string("too far from the measurements and does not hold its attitude");
+       }},
+      {"cheapest_skipping_law",
+       [](const Record& in) {
+         const double bound = in.number("distance_bound"), attack_bound = in.number("attack_bound_deg");
+         std::vector<Candidate> passing;
+         for (const auto& law : prefixes_with(in, "distance")) {
+           const double d = in.number(law + ".distance");
+           if (near_measurements(d, bound) && holds_attitude(in.number(law + ".attack_change_deg"), attack_bound))
+             passing.push_back({law, in.number(law + ".cost_s"), d});
+         }
+         const std::string best = cheapest(passing);
+         return best.empty() ? std::string("no law skips like a real stone")
+                             : best + " is the cheapest law that skips like a real stone";
+       }},
+      {"restart_strategy",
+       [](const Record& in) {
+         std::vector<Candidate> passing;
+         for (const auto& s : prefixes_with(in, "rhs_evaluations"))
+           if (in.number(s + ".failed") == 0 && in.number(s + ".error_ratio") <= 1)
+             passing.push_back({s, in.number(s + ".rhs_evaluations"), 0});
+         const std::string best = cheapest(passing);
+         return best.empty() ? std::string("no strategy keeps the contact times")
+                             : best + " is the cheapest strategy that keeps the contact times";
        }},
       {"error_split",
        [](const Record& in) {

@@ -20,6 +20,25 @@
 //   attack_change        change_deg → nose-down | nose-up | unchanged
 //   max_fluid_power      max_fluid_power_W, round_off_W → passive | creates energy
 //   error_split          space_converges (0/1), time_at_expected (0/1) → (see verdict_rules.cpp)
+//   power_law_exponent   valid, exponent, exponent_low, exponent_high, points, expected, tolerance →
+//                        too few points to fit | consistent with the expected exponent |
+//                        excludes the expected exponent | exponent not established
+//                        (the 95 % interval decides, as for order_fit: within expected ± tolerance,
+//                        entirely outside it, or neither; fewer than 3 points or no fit: too few)
+//   skips_like_a_stone   distance, distance_bound, attack_change_deg, attack_bound_deg →
+//                        skips like a real stone | too far from the measurements |
+//                        does not hold its attitude | too far from the measurements and does not
+//                        hold its attitude (holds: |attack change| ≤ bound; NaN: no contact, does not)
+//   cheapest_skipping_law  per law L: L.distance, L.attack_change_deg, L.cost_s; distance_bound,
+//                        attack_bound_deg → "L is the cheapest law that skips like a real stone" |
+//                        no law skips like a real stone (a law skips as in skips_like_a_stone;
+//                        the cheapest by cost_s, ties to the smaller distance, then by name)
+//   restart_strategy     per strategy S: S.failed, S.error_ratio, S.rhs_evaluations →
+//                        "S is the cheapest strategy that keeps the contact times" |
+//                        no strategy keeps the contact times (S keeps them with no failed run and
+//                        error_ratio — its worst contact-time error over its tolerance, the largest
+//                        over every method and rtol — at most 1; cheapest by rhs_evaluations, ties
+//                        by name)
 #include <string>
 
 #include "verification/study/record.hpp"

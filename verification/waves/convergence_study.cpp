@@ -26,6 +26,13 @@ void fit_sequence(ConvergenceSequence& s, int fit_points, const OrderJudgement& 
   s.verdict = judge_order(s.fit, judgement).verdict;
 }
 
+void attach_gci(ConvergenceSequence& s) {
+  const auto& b = s.points;
+  if (b.size() < 3) return;
+  const std::size_t k = b.size();
+  s.gci = grid_convergence_index(b[k - 1].point_m, b[k - 2].point_m, b[k - 3].point_m, b[k - 1].h, b[k - 2].h, b[k - 3].h);
+}
+
 std::size_t convergence_study_work(const ConvergenceStudyOptions& o) {
   std::size_t w = 0;
   for (int n : o.space_grids) w += static_cast<std::size_t>(n) * n * 20;  // two FFT solves
@@ -104,12 +111,7 @@ ConvergenceStudy run_convergence_study(const Stencil& stencil, const Convergence
     tick(static_cast<std::size_t>(n) * n * steps);
   }
   fit_sequence(study.both, o.fit_points, o.judgement);
-  const auto& b = study.both.points;
-  if (b.size() >= 3) {
-    const std::size_t k = b.size();
-    study.both.gci = grid_convergence_index(b[k - 1].point_m, b[k - 2].point_m, b[k - 3].point_m, b[k - 1].h,
-                                            b[k - 2].h, b[k - 3].h);
-  }
+  attach_gci(study.both);
   return study;
 }
 

@@ -25,7 +25,7 @@ std::vector<double> initial_surface(const WaveProblem& p, int n) {
   return z;
 }
 
-LeapfrogResult solve_leapfrog(const WaveProblem& p, const Stencil& stencil, int n, long steps) {
+HeightFieldOptions leapfrog_options(const WaveProblem& p, const Stencil& stencil, int n, long steps) {
   HeightFieldOptions o;
   o.nx = o.ny = n;
   o.cell_m = p.length_m / n;
@@ -34,6 +34,22 @@ LeapfrogResult solve_leapfrog(const WaveProblem& p, const Stencil& stencil, int 
   o.dt_s = p.t_end_s / steps;
   o.stencil = stencil;
   o.boundary = Boundary::periodic;
+  return o;
+}
+
+SpectralWaveOptions spectral_options(const WaveProblem& p, int n, SpectralSymbol symbol, const Stencil& stencil) {
+  SpectralWaveOptions o;
+  o.nx = o.ny = n;
+  o.cell_m = p.length_m / n;
+  o.wave_speed_m_s = p.wave_speed_m_s;
+  o.damping_per_s = p.damping_per_s;
+  o.symbol = symbol;
+  o.stencil = stencil;
+  return o;
+}
+
+LeapfrogResult solve_leapfrog(const WaveProblem& p, const Stencil& stencil, int n, long steps) {
+  const HeightFieldOptions o = leapfrog_options(p, stencil, n, steps);
   HeightField f(o);
   f.set_state(initial_surface(p, n));
   LeapfrogResult r;
@@ -48,14 +64,7 @@ LeapfrogResult solve_leapfrog(const WaveProblem& p, const Stencil& stencil, int 
 }
 
 std::vector<double> solve_spectral(const WaveProblem& p, int n, SpectralSymbol symbol, const Stencil& stencil) {
-  SpectralWaveOptions o;
-  o.nx = o.ny = n;
-  o.cell_m = p.length_m / n;
-  o.wave_speed_m_s = p.wave_speed_m_s;
-  o.damping_per_s = p.damping_per_s;
-  o.symbol = symbol;
-  o.stencil = stencil;
-  SpectralWave w(o);
+  SpectralWave w(spectral_options(p, n, symbol, stencil));
   w.set_initial(initial_surface(p, n));
   std::vector<double> z;
   w.evaluate(p.t_end_s, z);

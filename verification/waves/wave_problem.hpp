@@ -37,6 +37,11 @@ struct LeapfrogResult {
   double t_s = 0;     // steps · dt
   double cpu_s = 0;   // stepping only
 };
+// The problem's n × n periodic height field with `steps` equal steps to t_end, and its spectral
+// reference's options (continuum symbol, or the stencil's).
+HeightFieldOptions leapfrog_options(const WaveProblem& p, const Stencil& stencil, int n, long steps);
+SpectralWaveOptions spectral_options(const WaveProblem& p, int n, SpectralSymbol symbol, const Stencil& stencil = {});
+
 // Leapfrog with `steps` equal steps to t_end on an n × n periodic grid.
 LeapfrogResult solve_leapfrog(const WaveProblem& p, const Stencil& stencil, int n, long steps);
 

@@ -1,0 +1,64 @@
+#pragma once
+// The inner loop of the height field (spec §2.1): one row segment of the damped leapfrog
+//   z⁺ = (4z − (2 − μΔt) z⁻ + 2σ² d²L[z]) / (2 + μΔt),
+// with s = 2σ²/(2 + μΔt) and the 3×3 stencil of model/water/stencil.hpp, evaluated
+//   float64: z⁺ = wc z + wo Σ_orth + wd Σ_diag − wp z⁻ (wc = 4/(2 + μΔt) + s·centre),
+//   float32: z⁺ = z + [wp (z − z⁻) + wo (Σ_orth − 4z) + wd (Σ_diag − 4z) + wx z],
+// wo = s·orth, wd = s·diag, wp = (2 − μΔt)/(2 + μΔt), wx = s·(centre + 4 orth + 4 diag). The two
+// agree in exact arithmetic. The increment form keeps a uniform level exactly whatever the
+// rounding of the weights (for a consistent stencil wx = 0 and every bracket vanishes); the direct
+// form does not: with weights rounded to float, wc + 4wo + 4wd − wp misses 1 by ~1e-7 and the mean
+// mode, whose other root is wp ≈ 1 − μΔt, drifts by ~1e-7/(μΔt) per step — 7 % of the amplitude
+// in 5000 steps at μΔt = 5e-4 (measured: verification/waves/precision_error.hpp). In float64 that
+// drift is ~1e-13 per step, and the direct form has fewer operations (≈ 30 % faster in cache).
+// z⁺ overwrites z⁻ in place (each cell reads only its own z⁻).
+//
+// Written with explicit SIMD (GCC vector extensions, 64-byte vectors) and compiled three times
+// (x86-64-v4 = AVX-512, x86-64-v3 = AVX2 + FMA, baseline SSE2) with a run-time choice of the
+// best the CPU has (GCC target_clones): no -march flag, so the binary runs on any x86-64. The
+// file is compiled with -ffp-contract=off and the vector body and the scalar tail evaluate the
+// same expression in the same order, so every cell gets the same bits whichever variant, vector
+// lane or row segment computes it (the active-tile mode relies on that: spec §2.6, ε = 0).
+#include <cmath>
+#include <cstddef>
+
+namespace stoneskip {
+
+template <class Real>
+struct LeapfrogWeights {
+  Real centre = 0, orth = 0, diag = 0, previous = 0, defect = 0;  // wc, wo, wd, wp, wx above
+};
+// The weights for a stencil, σ = cΔt/d and μΔt.
+template <class Real>
+LeapfrogWeights<Real> leapfrog_weights(double centre, double orth, double diag, double sigma, double mu_dt) {
+  const double inv = 1.0 / (2 + mu_dt), s = 2 * sigma * sigma * inv;
+  // Weights that sum to zero up to their own rounding (γ = 1/3's thirds) are a consistent stencil.
+  double sum = centre + 4 * orth + 4 * diag;
+  if (std::abs(sum) <= 1e-14 * (std::abs(centre) + 4 * std::abs(orth) + 4 * std::abs(diag))) sum = 0;
+  return {static_cast<Real>(s * centre + 4 * inv), static_cast<Real>(s * orth), static_cast<Real>(s * diag),
+          static_cast<Real>((2 - mu_dt) * inv), static_cast<Real>(s * sum)};
+}
+
+// Updates a block of `rows` row segments of n cells: zp[r·w + k], k ∈ [0, n), r ∈ [0, rows)
+// (zp and z point at the block's first cell; w is the row stride, so z[k ± w] are the rows above
+// and below). `diagonal` false skips the corner terms (wd = 0). When z, zp and w are aligned to
+// 64 bytes the kernel reads whole aligned vectors, including up to one vector before and after
+// each row segment of rows −1…rows: that memory must exist (the height field pads for it).
+void leapfrog_block(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
+                    const LeapfrogWeights<double>& c, bool diagonal);
+void leapfrog_block(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
+                    const LeapfrogWeights<float>& c, bool diagonal);
+
+// The update of one row segment of n cells that consists of consecutive chunks of `chunk` cells
+// (tiles; the last may be shorter), raising activity[q] to the largest max(|z⁺|, |z⁺ − z|) over
+// chunk q's cells (spec §2.6). The values are compared as bit patterns, in which NaN > ∞ > any
+// finite value, so a blown-up chunk reports NaN and is never taken for a quiet one.
+void leapfrog_row_chunks(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<double>& c,
+                         bool diagonal, std::ptrdiff_t chunk, double* activity);
+void leapfrog_row_chunks(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<float>& c,
+                         bool diagonal, std::ptrdiff_t chunk, float* activity);
+
+// Which variant the run-time dispatch chose on this CPU: "x86-64-v4", "x86-64-v3" or "baseline".
+const char* leapfrog_kernel_isa();
+
+}  // namespace stoneskip

@@ -1,0 +1,176 @@
+// Sweep maps against hand-computed answers: cell edges midway between grid values (in ln x on a
+// log axis), threshold contours on the cell edges where a step field passes the level, means over
+// the other axes of a grid, and the figures a design gets (names, cells, histogram totals).
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+
+#include "reports/sweep/sweep_maps.hpp"
+#include "verification/sweep/sweep_run.hpp"
+
+using namespace stoneskip;
+
+namespace {
+
+constexpr double kRoundoff = 1e-14;  // a few ulps of the values involved
+
+SweepData grid_data(std::vector<long long> counts, SweepSolvers solvers) {
+  SweepData d;
+  d.solvers = solvers;
+  for (std::size_t k = 0; k < counts.size(); ++k) {
+    SweepAxis a;
+    a.key = "k" + std::to_string(k);
+    a.from = 1;
+    a.to = static_cast<double>(counts[k]);
+    a.count = counts[k];
+    d.design.axes.push_back(a);
+  }
+  d.throws.columns = sweep_record(d.design, solvers).columns();
+  return d;
+}
+
+// Fills the table: bounces(point) for each solver present, outcome "sank".
+template <class F>
+void fill(SweepData& d, F bounces) {
+  const std::size_t w = d.throws.columns.size();
+  d.throws.values.assign(d.design.size() * w, 0.0);
+  for (std::size_t i = 0; i < d.design.size(); ++i) {
+    const auto p = d.design.point(i);
+    double* row = &d.throws.values[i * w];
+    row[0] = static_cast<double>(i);
+    for (std::size_t k = 0; k < p.size(); ++k) row[1 + k] = p[k];
+    for (std::size_t c = 0; c < w; ++c) {
+      if (d.throws.columns[c] == "realtime_bounces") row[c] = bounces(p, 0);
+      if (d.throws.columns[c] == "reference_bounces") row[c] = bounces(p, 1);
+    }
+  }
+}
+
+const Figure& figure(const std::vector<Figure>& figs, const std::string& name) {
+  for (const auto& f : figs)
+    if (f.name == name) return f;
+  BOOST_FAIL("no figure " << name);
+  return figs.front();
+}
+
+const Table& table(const Figure& f, const std::string& name) {
+  for (const auto& [n, t] : f.tables)
+    if (n == name) return t;
+  BOOST_FAIL("no table " << name << " in " << f.name);
+  return f.tables.front().second;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(sweep_maps)
+
+BOOST_AUTO_TEST_CASE(cell_edges_lie_midway_between_grid_values) {
+  // Oracle: arithmetic midpoints (linear), geometric ones (log), half a step beyond the ends.
+  const auto lin = cell_edges({1, 2, 4}, false);
+  BOOST_TEST(lin == std::vector<double>({0.5, 1.5, 3, 5}));
+  const auto log = cell_edges({1, 10, 100}, true);
+  const std::vector<double> expect = {std::pow(10, -0.5), std::pow(10, 0.5), std::pow(10, 1.5), std::pow(10, 2.5)};
+  for (std::size_t i = 0; i < 4; ++i) BOOST_TEST(std::abs(log[i] / expect[i] - 1) < kRoundoff);
+}
+
+BOOST_AUTO_TEST_CASE(a_step_field_has_its_threshold_on_the_cell_edges_between_the_steps) {
+  // Oracle: value 1 for x >= 3, else 0, on x = 1..4, y = 1..3: the level ½ is the line x = 2.5,
+  // made of one edge per row; a NaN cell breaks it.
+  GridMap m;
+  m.x_values = {1, 2, 3, 4};
+  m.y_values = {1, 2, 3};
+  for (double y : m.y_values)
+    for (double x : m.x_values) m.value.push_back(x >= 3 ? 1 : 0 * y);
+  auto e = threshold_edges(m, 0.5, false, false);
+  BOOST_REQUIRE_EQUAL(e.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    BOOST_TEST(e[i].x0 == 2.5);
+    BOOST_TEST(e[i].x1 == 2.5);
+    BOOST_TEST(e[i].y0 == 0.5 + i);
+    BOOST_TEST(e[i].y1 == 1.5 + i);
+  }
+  m.value[1 * 4 + 2] = NAN;  // (x = 3, y = 2)
+  BOOST_TEST(threshold_edges(m, 0.5, false, false).size() == 2u);
+  BOOST_TEST(threshold_edges(m, 1.5, false, false).empty());
+}
+
+BOOST_AUTO_TEST_CASE(a_pair_map_is_the_mean_over_the_other_axes) {
+  // Oracle: column = x0 + 10 x1 + 100 x2 on a 2 × 3 × 4 grid (values 1..count); the mean over x2
+  // is x0 + 10 x1 + 100 · 2.5.
+  SweepData d = grid_data({2, 3, 4}, SweepSolvers::realtime);
+  fill(d, [](const std::vector<double>&, int) { return 0.0; });
+  std::vector<double> column;
+  for (std::size_t i = 0; i < d.design.size(); ++i) {
+    const auto p = d.design.point(i);
+    column.push_back(p[0] + 10 * p[1] + 100 * p[2]);
+  }
+  const GridMap m = grid_mean(d, column, 0, 1);
+  BOOST_REQUIRE_EQUAL(m.value.size(), 6u);
+  for (std::size_t iy = 0; iy < 3; ++iy)
+    for (std::size_t ix = 0; ix < 2; ++ix)
+      BOOST_TEST(std::abs(m.at(ix, iy) - (m.x_values[ix] + 10 * m.y_values[iy] + 250)) < kRoundoff * 300);
+}
+
+BOOST_AUTO_TEST_CASE(a_two_key_grid_with_both_solvers_gets_count_and_disagreement_maps) {
+  // Oracle: bounces = k0 + k1 (real-time) and k0 (reference) on a 3 × 4 grid; the disagreement
+  // is k1; count thresholds are drawn between the counts present.
+  SweepData d = grid_data({3, 4}, SweepSolvers::both);
+  fill(d, [](const std::vector<double>& p, int solver) { return solver == 0 ? p[0] + p[1] : p[0]; });
+  const auto figs = sweep_map_figures(d);
+  BOOST_TEST(figs.size() == 3u);
+  const Table& cells = table(figure(figs, "sweep_bounces_realtime_0_1"), "sweep_bounces_realtime_0_1_cells");
+  const Table& diff = table(figure(figs, "sweep_disagreement_0_1"), "sweep_disagreement_0_1_cells");
+  BOOST_REQUIRE_EQUAL(cells.rows(), 12u);
+  for (std::size_t r = 0; r < cells.rows(); ++r) {
+    BOOST_TEST(cells.values[r * 6 + 4] == cells.values[r * 6 + 2] + cells.values[r * 6 + 3]);
+    BOOST_TEST(diff.values[r * 6 + 4] == diff.values[r * 6 + 3]);
+  }
+  // Counts 2..7: five thresholds, every one drawn (fewer than max_contour_levels).
+  const Figure& f = figure(figs, "sweep_bounces_realtime_0_1");
+  std::size_t levels = 0;
+  for (const auto& [name, t] : f.tables) levels += name.find("_level") != std::string::npos ? 1 : 0;
+  BOOST_TEST(levels == 5u);  // thresholds 2|3, 3|4, 4|5, 5|6, 6|7
+}
+
+BOOST_AUTO_TEST_CASE(a_throw_without_a_result_is_a_grey_cell_not_a_hole_in_the_image) {
+  // Oracle: one failed throw at grid point (1, 2) of a 3 × 4 grid.
+  SweepData d = grid_data({3, 4}, SweepSolvers::realtime);
+  fill(d, [](const std::vector<double>& p, int) { return p[0]; });
+  const std::size_t w = d.throws.columns.size(), failed = 1 * 4 + 2;
+  for (std::size_t c = 0; c < w; ++c)
+    if (d.throws.columns[c] == "realtime_outcome") d.throws.values[failed * w + c] = kOutcomeFailed;
+  const std::vector<Figure> figs = sweep_map_figures(d);
+  const Figure& f = figure(figs, "sweep_bounces_realtime_0_1");
+  const Table& cells = table(f, "sweep_bounces_realtime_0_1_cells");
+  BOOST_TEST(cells.rows() == 12u);  // every cell present: an image needs a full grid
+  const Table& empty = table(f, "sweep_bounces_realtime_0_1_empty");
+  BOOST_REQUIRE_EQUAL(empty.rows(), 1u);
+  BOOST_TEST(empty.values[0] == 1);
+  BOOST_TEST(empty.values[1] == 2);
+}
+
+BOOST_AUTO_TEST_CASE(a_random_design_gets_scatter_maps_and_histograms_that_count_every_throw) {
+  // Oracle: the number of throws.
+  SweepData d;
+  d.solvers = SweepSolvers::both;
+  d.design.kind = DesignKind::random;
+  d.design.samples = 50;
+  d.design.seed = 3;
+  for (const char* k : {"a", "b", "c"}) d.design.axes.push_back(SweepAxis{k, 0, 1, 0, AxisScale::linear});
+  d.throws.columns = sweep_record(d.design, d.solvers).columns();
+  fill(d, [](const std::vector<double>& p, int solver) { return std::floor(4 * p[0]) + solver; });
+  const auto figs = sweep_map_figures(d);
+  BOOST_TEST(figs.size() == 3u * 3u + 2u);  // 3 pairs × (2 solvers + disagreement) + 2 histograms
+  const Figure& h = figure(figs, "sweep_bounce_histogram");
+  for (std::size_t s = 0; s < 2; ++s) {
+    double total = 0;
+    for (double n : table(h, "sweep_bounce_histogram_" + std::to_string(s)).column("throws")) total += n;
+    BOOST_TEST(total == 50);
+  }
+  const Table& dh = table(figure(figs, "sweep_disagreement_histogram"), "sweep_disagreement_histogram_0");
+  BOOST_TEST(dh.rows() == 1u);  // every throw differs by exactly −1
+  BOOST_TEST(dh.values[0] == -1);
+  BOOST_TEST(dh.values[1] == 50);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -1,0 +1,149 @@
+// The whole capture path (report bytes → trace → timing → orientation → release state) against
+// synthetic captures whose truth is known exactly (synthetic_capture.hpp).
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+
+#include "verification/captures/capture_analysis.hpp"
+#include "tools/capture/capture_format.hpp"
+#include "tools/capture/synthetic_capture.hpp"
+
+using namespace stoneskip;
+
+namespace {
+// The acceptance tolerances for an unclipped capture.
+constexpr double kSpeedRelTol = 0.05;   // 5 % on the release speed
+constexpr double kAngleTol_deg = 3.0;   // 3° on attack and path angles
+
+CaptureOptions quick_options() {
+  CaptureOptions o;
+  o.members = 16;  // enough for the intervals these tests look at; keeps each test well under a second
+  return o;
+}
+
+// A throw hard enough to clip a real remote, recorded by a hypothetical ±16 g accelerometer (30
+// counts per g, so that ±16 g fits the 10-bit reading).
+SyntheticSensor wide_range_sensor() {
+  SyntheticSensor s;
+  s.clip_g = 16.0;
+  for (int i = 0; i < 3; ++i) s.accel_one_g_counts[i] = s.accel_zero_counts[i] + 30;
+  return s;
+}
+
+// A gentle throw (Ω = 7 rad/s ≈ 400 deg/s) that a real ±3.6 g remote records without clipping
+// while its MotionPlus still switches to fast mode.
+SyntheticThrow gentle_throw() {
+  SyntheticThrow th;
+  th.swing_rate_rad_s = 7.0;
+  th.pivot_speed_m_s = 1.0;
+  return th;
+}
+
+void check_unclipped(const CaptureAnalysis& a, const SyntheticTruth& truth) {
+  BOOST_TEST_INFO("verdict: " << to_string(a.verdict) << (a.reasons.empty() ? "" : ": " + a.reasons.front()));
+  BOOST_REQUIRE(a.can_throw());
+  BOOST_TEST_MESSAGE(a.format << ": speed " << a.nominal.speed_m_s << " (truth " << truth.speed_m_s << "), attack "
+                     << a.nominal.attack_angle_deg << " (" << truth.attack_angle_deg << "), path " << a.nominal.path_angle_deg
+                     << " (" << truth.path_angle_deg << "), spin " << a.nominal.spin_rev_s << " (" << truth.spin_rev_s
+                     << "), height " << a.nominal.height_m << " (" << truth.height_m << ")");
+  BOOST_TEST(!a.clipped);
+  BOOST_TEST(std::abs(a.nominal.speed_m_s - truth.speed_m_s) <= kSpeedRelTol * truth.speed_m_s,
+             "speed " << a.nominal.speed_m_s << " vs truth " << truth.speed_m_s);
+  BOOST_TEST(std::abs(a.nominal.attack_angle_deg - truth.attack_angle_deg) <= kAngleTol_deg,
+             "attack " << a.nominal.attack_angle_deg << " vs truth " << truth.attack_angle_deg);
+  BOOST_TEST(std::abs(a.nominal.path_angle_deg - truth.path_angle_deg) <= kAngleTol_deg,
+             "path " << a.nominal.path_angle_deg << " vs truth " << truth.path_angle_deg);
+}
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(capture_recovery)
+
+BOOST_AUTO_TEST_CASE(an_unclipped_hard_throw_is_recovered_within_five_percent_and_three_degrees) {
+  // Oracle: the generator's analytic release state (speed V + Ω|lever|, angles α and β).
+  SyntheticTruth truth;
+  const std::string log = synthetic_report_log(SyntheticThrow{}, wide_range_sensor(), truth);
+  CaptureOptions o = quick_options();
+  o.saturation_g = 15.9;  // this sensor clips at 16 g
+  const CaptureAnalysis a = analyse_capture(parse_capture(log, "hard_wide.log"), o);
+  check_unclipped(a, truth);
+  BOOST_TEST(truth.range_switches > 0);
+}
+
+BOOST_AUTO_TEST_CASE(a_gentle_throw_on_a_real_remote_is_recovered_from_every_format) {
+  // Oracle: the generator's analytic release state; the same motion written as a report log, an
+  // evemu recording and a gesture file must each give it back within the acceptance tolerances.
+  const SyntheticThrow th = gentle_throw();
+  SyntheticTruth t_log, t_evemu, t_gesture;
+  const SyntheticSensor sensor;
+  const auto log = analyse_capture(parse_capture(synthetic_report_log(th, sensor, t_log), "gentle.log"), quick_options());
+  check_unclipped(log, t_log);
+  BOOST_TEST(t_log.clipped_samples == 0);
+  BOOST_TEST(std::string(to_string(log.verdict)) == "usable", (log.reasons.empty() ? "" : log.reasons.front()));
+  const auto ev = analyse_capture(parse_capture(synthetic_evemu(th, sensor, t_evemu), "gentle.evemu"), quick_options());
+  BOOST_TEST(ev.format == "evemu");
+  check_unclipped(ev, t_evemu);
+  const auto ge = analyse_capture(parse_capture(synthetic_gesture(th, sensor, t_gesture), "gentle.txt"), quick_options());
+  BOOST_TEST(ge.format == "gesture");
+  check_unclipped(ge, t_gesture);
+  // The range modes inferred from the jumps are the ones the generator's MotionPlus used.
+  BOOST_REQUIRE(ge.trace.samples.size() == t_gesture.written_fast.size());
+  int switches = 0, mismatches = 0;
+  for (std::size_t k = 0; k < t_gesture.written_fast.size(); ++k) {
+    mismatches += ge.trace.samples[k].gyro_fast != t_gesture.written_fast[k];
+    if (k > 0) switches += t_gesture.written_fast[k] != t_gesture.written_fast[k - 1];
+  }
+  BOOST_TEST(switches > 0);
+  BOOST_TEST(mismatches == 0);
+}
+
+BOOST_AUTO_TEST_CASE(a_clipped_throw_is_flagged_and_its_speed_interval_contains_the_truth) {
+  // Oracle: the generator's analytic release speed, which the ±3.6 g clipping hides.
+  SyntheticTruth truth;
+  const std::string log = synthetic_report_log(SyntheticThrow{}, SyntheticSensor{}, truth);
+  const CaptureAnalysis a = analyse_capture(parse_capture(log, "hard.log"), quick_options());
+  BOOST_REQUIRE(truth.clipped_samples > 0);
+  BOOST_TEST(a.clipped);
+  BOOST_TEST(std::string(to_string(a.verdict)) == "usable with caveats");
+  BOOST_REQUIRE(!a.reasons.empty());
+  BOOST_TEST(a.reasons.front().find("clipped") != std::string::npos, a.reasons.front());
+  BOOST_TEST_MESSAGE("clipped: speed " << a.nominal.speed_m_s << " [" << a.speed_m_s.low << ", " << a.speed_m_s.high
+                     << "] truth " << truth.speed_m_s << "; accel lower bound " << a.accel_lower.accel_speed_m_s
+                     << ", attack " << a.attack_angle_deg.nominal << " [" << a.attack_angle_deg.low << ", "
+                     << a.attack_angle_deg.high << "] truth " << truth.attack_angle_deg << ", path "
+                     << a.path_angle_deg.nominal << " truth " << truth.path_angle_deg);
+  BOOST_TEST(a.speed_m_s.contains(truth.speed_m_s),
+             "[" << a.speed_m_s.low << ", " << a.speed_m_s.high << "] vs truth " << truth.speed_m_s);
+  // The clipped accelerometer alone underestimates the speed: its value is a lower bound.
+  BOOST_TEST(a.accel_lower.accel_speed_m_s < truth.speed_m_s);
+}
+
+BOOST_AUTO_TEST_CASE(dropped_and_repeated_reports_and_jitter_are_counted_exactly) {
+  // Oracle: the generator's own count of the reports it dropped and repeated, and the standard
+  // deviation of the intervals between the stamps it kept, computed here independently.
+  SyntheticSensor s;
+  s.drop_probability = 0.05;
+  s.repeat_probability = 0.05;
+  SyntheticTruth truth;
+  const std::string log = synthetic_report_log(gentle_throw(), s, truth);
+  const TimedSamples t = analyse_timing(parse_capture(log, "lossy.log"));
+  BOOST_REQUIRE(truth.dropped_reports > 0);
+  BOOST_REQUIRE(truth.repeated_reports > 0);
+  BOOST_TEST(t.stats.dropped_reports == truth.dropped_reports);
+  BOOST_TEST(t.stats.repeated == std::size_t(truth.repeated_reports));
+  BOOST_TEST(t.stats.used == truth.received_stamps_s.size());
+  // Intervals that span no lost report are the jitter's sample.
+  const double period = 1.0 / s.rate_hz;
+  std::vector<double> dt;
+  for (std::size_t k = 1; k < truth.received_stamps_s.size(); ++k) {
+    const double d = truth.received_stamps_s[k] - truth.received_stamps_s[k - 1];
+    if (d < 1.5 * period) dt.push_back(d);
+  }
+  double mean = 0, var = 0;
+  for (double d : dt) mean += d / double(dt.size());
+  for (double d : dt) var += (d - mean) * (d - mean) / double(dt.size() - 1);
+  constexpr double kStampRoundoff_s = 2e-6;  // stamps are written with 1 µs resolution
+  BOOST_TEST(std::abs(t.stats.jitter_s - std::sqrt(var)) < kStampRoundoff_s);
+  BOOST_TEST(t.stats.gaps > 0);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -1,0 +1,264 @@
+// The header-driven CSV reader. Oracles: the documented table of names (what a spelling must be
+// recognised as), the same synthetic readings written as a raw report log (what the CSV's rows must
+// read back as), and defects planted on known lines and columns (what the error must name).
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <regex>
+#include <string>
+
+#include "tools/capture/capture_format.hpp"
+#include "tools/capture/capture_text.hpp"
+#include "tools/capture/csv_columns.hpp"
+#include "tools/capture/header_csv.hpp"
+#include "tools/capture/synthetic_capture.hpp"
+#include "tools/io/input_error.hpp"
+
+using namespace stoneskip;
+
+namespace {
+
+std::string error_of(const std::string& text, const HeaderCsvOptions& o = {}) {
+  try {
+    CaptureReadOptions r;
+    r.csv = o;
+    parse_capture(text, "bad.csv", r);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+// The skipping throw the shipped WiiYourself-style capture records.
+SyntheticThrow throw_10ms() {
+  SkippingThrowSpec spec;
+  spec.speed_m_s = 10.0;
+  return skipping_throw(spec);
+}
+
+SyntheticSensor idle_remote() {
+  SyntheticSensor idle;
+  idle.rate_hz = 99.6;
+  idle.seed = 19;
+  return idle;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(header_csv)
+
+BOOST_AUTO_TEST_CASE(column_names_are_recognised_whatever_their_case_units_and_device_suffix) {
+  // Oracle: the table in tools/capture/README.md ("Header-driven CSV").
+  struct Case {
+    const char* header;
+    CsvField field;
+    int remote;
+    CsvUnit unit;
+  };
+  const Case cases[] = {
+      {"Acc X", CsvField::ax, 0, CsvUnit::none},
+      {"acc_x [g]", CsvField::ax, 0, CsvUnit::g},
+      {"Acc X #WM1", CsvField::ax, 1, CsvUnit::none},
+      {"AccelerationY (m/s^2)", CsvField::ay, 0, CsvUnit::m_s2},
+      {"accZ", CsvField::az, 0, CsvUnit::none},
+      {"Speed Yaw #WM2", CsvField::speed_yaw, 2, CsvUnit::none},
+      {"MotionPlus.Speed.Pitch", CsvField::speed_pitch, 0, CsvUnit::none},
+      {"Raw Roll #wm 3", CsvField::raw_roll, 3, CsvUnit::none},
+      {"MotionPlus.Raw.Yaw [dec]", CsvField::raw_yaw, 0, CsvUnit::dec},
+      {"Time", CsvField::time, 0, CsvUnit::none},
+      {"time_ms", CsvField::time, 0, CsvUnit::ms},
+      {"t_s", CsvField::time, 0, CsvUnit::s},
+      {"\"Timestamp (us)\"", CsvField::time, 0, CsvUnit::us},
+      {"wx_deg_s", CsvField::wx, 0, CsvUnit::deg_s},
+      {"gyro z [rad/s]", CsvField::wz, 0, CsvUnit::rad_s},
+      {"Yaw rate", CsvField::wz, 0, CsvUnit::none},
+      {"Pitch #WM1", CsvField::orientation_pitch, 1, CsvUnit::none},
+      {"Buttons #WM2", CsvField::buttons, 2, CsvUnit::none},
+      {"Button B", CsvField::button_b, 0, CsvUnit::none},
+      {"slow_yaw", CsvField::slow_yaw, 0, CsvUnit::none},
+  };
+  for (const auto& c : cases) {
+    BOOST_TEST_CONTEXT(c.header) {
+      const auto r = recognise_column(c.header);
+      BOOST_REQUIRE(r.has_value());
+      BOOST_TEST(int(r->field) == int(c.field));
+      BOOST_TEST(r->remote == c.remote);
+      BOOST_TEST(int(r->unit) == int(c.unit));
+    }
+  }
+  for (const char* unknown : {"Temperature", "Yaw", "Acc W", "acc x [furlong]", "Battery #WM1"})
+    BOOST_TEST(!recognise_column(unknown).has_value(), unknown);
+}
+
+BOOST_AUTO_TEST_CASE(the_table_in_the_readme_is_what_the_reader_recognises) {
+  // Oracle: tools/capture/README.md's table of recognised names: every name in a row must be
+  // recognised as one of that row's keys, and the row's units must be the field's.
+  std::ifstream in("tools/capture/README.md");
+  BOOST_REQUIRE(in.good());
+  const std::regex ticked("`([^`]+)`");
+  std::string line;
+  int rows = 0;
+  while (std::getline(in, line)) {
+    if (line.rfind("| `", 0) != 0) continue;
+    std::vector<std::string> cells;
+    for (std::size_t b = 1, e; (e = line.find('|', b)) != std::string::npos; b = e + 1) cells.push_back(line.substr(b, e - b));
+    if (cells.size() != 4) continue;  // the other tables of the README
+    std::vector<CsvField> keys;
+    for (std::sregex_iterator it(cells[0].begin(), cells[0].end(), ticked), end; it != end; ++it) {
+      const std::string key = (*it)[1];
+      if (key.back() == '*') {  // slow_*, fast_*
+        for (const char* axis : {"pitch", "roll", "yaw"}) keys.push_back(*csv_field_from_key(key.substr(0, key.size() - 1) + axis));
+      } else {
+        const auto f = csv_field_from_key(key);
+        BOOST_REQUIRE_MESSAGE(f.has_value(), "README key " << key);
+        keys.push_back(*f);
+      }
+    }
+    if (keys.empty()) continue;
+    ++rows;
+    for (std::sregex_iterator it(cells[2].begin(), cells[2].end(), ticked), end; it != end; ++it) {
+      const std::string name = (*it)[1];
+      const auto r = recognise_column(name);
+      BOOST_TEST_CONTEXT("README name '" << name << "'") {
+        BOOST_REQUIRE(r.has_value());
+        BOOST_TEST((std::find(keys.begin(), keys.end(), r->field) != keys.end()));
+      }
+    }
+    const auto& units = csv_field_info(keys.front()).units;
+    const std::string cell(trim(cells[3]));
+    BOOST_TEST(cell.rfind(units.front() == CsvUnit::none ? "none" : to_string(units.front()), 0) == 0u,
+               "default unit of " << cells[0] << ": README '" << cell << "'");
+    for (CsvUnit u : units)
+      if (u != CsvUnit::none) BOOST_TEST(cell.find(to_string(u)) != std::string::npos, cells[0] << " lacks " << to_string(u));
+  }
+  BOOST_TEST(rows == 10);
+}
+
+BOOST_AUTO_TEST_CASE(a_wiiyourself_log_reads_back_the_readings_the_report_log_of_the_same_throw_holds) {
+  // Oracle: the generator draws the same readings for the same throw and sensor; written as a raw
+  // report log and as a two-remote WiiYourself!-style CSV they must give the same samples: the
+  // same MotionPlus rates and range modes (raw words and WiiYourself!'s Speed), the accelerations
+  // to within WiiYourself!'s 8-bit step, the button, and times to within the CSV's 1 ms rounding.
+  const SyntheticThrow th = throw_10ms();
+  SyntheticSensor s;
+  s.repeat_probability = 0;  // a repeat makes no CSV row; keep the streams comparable
+  SyntheticTruth t_log, t_csv;
+  const std::string csv = synthetic_wiiyourself_csv(th, s, idle_remote(), t_csv);
+  BOOST_TEST(detect_capture_format(csv) == "csv");
+  const Trace wm = parse_capture(csv, "two.csv");
+  const Trace log = parse_capture(synthetic_report_log(th, s, t_log), "same.log");
+  BOOST_TEST(wm.format == "csv");
+  BOOST_TEST(wm.has_gyro);
+  BOOST_TEST(!wm.gyro_mode_inferred);  // the modes come from the Speed columns
+  // The CSV starts once both remotes have reported (its first row, written for #WM2, carries #WM1's
+  // first report at #WM2's time), and rows the thrower's remote did not change are not in it:
+  // align on the second CSV sample's words, then match samples by time.
+  constexpr double kRounding_s = 0.0011;        // two stamps rounded to 1 ms, against 1 µs stamps
+  constexpr double kEightBit_g = 1.0 / 25.0;    // one 8-bit step (one-g minus zero-g ≈ 26 counts)
+  constexpr double kRate_deg_s = 1e-9;          // the same words through the same calibration
+  std::size_t j = 0, matched = 0;
+  while (j < log.samples.size() && log.samples[j].rate_deg_s != wm.samples[1].rate_deg_s) ++j;
+  BOOST_REQUIRE(j < log.samples.size());
+  const double t0_log = log.samples[j].t_s, t0_wm = wm.samples[1].t_s;
+  for (std::size_t k = 1; k < wm.samples.size(); ++k) {
+    const TraceSample& x = wm.samples[k];
+    while (j < log.samples.size() && log.samples[j].t_s - t0_log < x.t_s - t0_wm - kRounding_s) ++j;
+    BOOST_REQUIRE(j < log.samples.size());
+    const TraceSample& y = log.samples[j];
+    BOOST_TEST(std::abs((y.t_s - t0_log) - (x.t_s - t0_wm)) <= kRounding_s);
+    BOOST_TEST((x.accel_g - y.accel_g).cwiseAbs().maxCoeff() <= kEightBit_g);
+    BOOST_TEST((x.rate_deg_s - y.rate_deg_s).cwiseAbs().maxCoeff() <= kRate_deg_s);
+    BOOST_TEST(x.gyro_fast == y.gyro_fast);
+    BOOST_TEST((x.buttons & kButtonB) == (y.buttons & kButtonB));
+    ++matched;
+  }
+  BOOST_TEST(matched + 5 >= log.samples.size());  // the first few reports and unchanged ones left no row
+  // The second remote is there, lying still on the table: --remote 2 reads it.
+  CaptureReadOptions two;
+  two.csv.remote = 2;
+  const Trace table = parse_capture(csv, "two.csv", two);
+  BOOST_TEST(std::abs(table.samples[table.samples.size() / 2].accel_g.z() - 1.0) <= kEightBit_g);
+  for (const auto& x : table.samples) BOOST_TEST(x.buttons == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(any_csv_can_be_mapped_with_columns_and_units) {
+  // Oracle: the values written (a German-language CSV with ';' separators, seconds, m/s² and rad/s).
+  const std::string text =
+      "Zeit;Beschl X;Beschl Y;Beschl Z;Dreh X;Dreh Y;Dreh Z;Taste\n"
+      "0.000;0;0;9.80665;0;0;0.5;0\n"
+      "0.010;1.0;0;9.80665;0;0;0.5;1\n"
+      "0.021;2.0;0;9.80665;0;0;0.5;1\n";
+  BOOST_TEST(detect_capture_format(text).empty());  // nothing recognisable without a map
+  CaptureReadOptions o;
+  o.csv.columns =
+      "t[s]=Zeit,ax[m/s2]=Beschl X,ay[m/s2]=Beschl Y,az[m/s2]=Beschl Z,wx[rad/s]=Dreh X,wy[rad/s]=Dreh Y,"
+      "wz[rad/s]=Dreh Z,button_b=Taste";
+  const Trace t = parse_capture(text, "de.csv", o);
+  BOOST_REQUIRE(t.samples.size() == 3u);
+  constexpr double kExact = 1e-12;
+  BOOST_TEST(std::abs(t.samples[2].t_s - 0.021) < kExact);
+  BOOST_TEST(std::abs(t.samples[1].accel_g.x() - 1.0 / 9.80665) < kExact);
+  BOOST_TEST(std::abs(t.samples[0].accel_g.z() - 1.0) < kExact);
+  BOOST_TEST(std::abs(t.samples[0].rate_deg_s.z() - 0.5 * 180.0 / std::numbers::pi) < kExact);
+  BOOST_TEST(t.samples[0].buttons == 0u);
+  BOOST_TEST(t.samples[1].buttons == kButtonB);
+}
+
+BOOST_AUTO_TEST_CASE(time_units_come_from_the_header_or_from_the_median_interval) {
+  // Oracle: the documented rule (below 0.5: s; 0.5–500: ms; above: µs) on 10 ms intervals.
+  auto second_sample = [](const std::string& time_header, const char* t1) {
+    const std::string text = time_header + ",ax,ay,az\n0,0,0,1\n" + t1 + ",0,0,1\n";
+    return parse_capture(text, "t.csv").samples[1].t_s;
+  };
+  BOOST_TEST(second_sample("Time", "0.01") == 0.01);
+  BOOST_TEST(std::abs(second_sample("Time", "10") - 0.01) < 1e-15);
+  BOOST_TEST(std::abs(second_sample("Time", "10000") - 0.01) < 1e-15);
+  BOOST_TEST(std::abs(second_sample("Time [ms]", "0.25") - 0.00025) < 1e-15);  // the header wins
+}
+
+BOOST_AUTO_TEST_CASE(wiiyourself_speed_columns_alone_give_the_rate_with_its_sign_reversed) {
+  // Oracle: WiiYourself! reports −(raw − 0x1F7F)·scale; stoneskip's rate is +(raw − zero)/scale.
+  const std::string text = "Time,Acc X,Acc Y,Acc Z,Speed Pitch,Speed Roll,Speed Yaw,Buttons\n"
+                           "100,0,0,1,1.5,-2.0,500.0,0400\n";
+  const Trace t = parse_capture(text, "speed.csv");
+  BOOST_TEST(t.samples[0].rate_deg_s.x() == -1.5);
+  BOOST_TEST(t.samples[0].rate_deg_s.y() == 2.0);
+  BOOST_TEST(t.samples[0].rate_deg_s.z() == -500.0);
+  BOOST_TEST(t.samples[0].gyro_fast[2]);   // beyond the slow range (±409.6 deg/s)
+  BOOST_TEST(!t.samples[0].gyro_fast[0]);
+  BOOST_TEST(t.samples[0].buttons == kButtonB);  // Button.Bits 0x0400 is B
+}
+
+BOOST_AUTO_TEST_CASE(bad_input_names_the_file_the_line_and_the_column) {
+  const std::string head = "Time,Acc X,Acc Y,Acc Z,Raw Yaw,Raw Pitch,Raw Roll\n";
+  BOOST_TEST(contains(error_of(head + "0,0,0,1,1f7f,1f7f,1f7f\n10,0,0,1,1f7f,zz,1f7f\n"), "bad.csv:3: Raw Pitch:"));
+  BOOST_TEST(contains(error_of(head + "0,0,0,1,1f7f,1f7f,4000\n"), "14-bit"));
+  BOOST_TEST(contains(error_of(head + "0,0,0,1,1f7f,1f7f\n20,0,0,1,1f7f,1f7f,1f7f\n"), "bad.csv:2"));
+  BOOST_TEST(contains(error_of(head + "10,0,0,1,1f7f,1f7f,1f7f\n5,0,0,1,1f7f,1f7f,1f7f\n"), "bad.csv:3: Time: time goes backwards"));
+  BOOST_TEST(contains(error_of(head + "0,0,nan,1,1f7f,1f7f,1f7f\n"), "bad.csv:2: Acc Y: not a number"));
+  BOOST_TEST(contains(error_of("Time,Acc X [ms],Acc Y,Acc Z\n0,0,0,1\n"), "bad.csv:1: Acc X [ms]: unit 'ms'"));
+  BOOST_TEST(contains(error_of("Time,Acc X,acc_x,Acc Y,Acc Z\n0,0,0,0,1\n"), "both give ax"));
+  BOOST_TEST(contains(error_of("Time,Acc X,Acc Y,Gyro X\n0,0,0,1\n"), "needs all three"));
+  BOOST_TEST(contains(error_of(head + "0,0,0,1,1f7f,1f7f,1f7f\n", {2, ""}), "--remote: no remote #WM2"));
+  BOOST_TEST(contains(error_of(head + "0,0,0,1,1f7f,1f7f,1f7f\n", {0, "ax=Acc Q"}), "no column 'Acc Q'"));
+  BOOST_TEST(contains(error_of(head + "0,0,0,1,1f7f,1f7f,1f7f\n", {0, "accel=Acc X"}), "unknown key"));
+  // A cut-short last line is a warning, as for every reader.
+  const Trace t = parse_capture(head + "0,0,0,1,1f7f,1f7f,1f7f\n10,0,0,1,1f7f,1f7f,1f7f\n20,0,0", "cut.csv");
+  BOOST_TEST(t.samples.size() == 2u);
+  BOOST_TEST(t.warnings.size() == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(the_first_remote_with_data_is_read_by_default) {
+  // Oracle: remote #WM1 is all zeros (not connected); #WM2 has data.
+  const std::string text = "Time,Acc X #WM1,Acc Y #WM1,Acc Z #WM1,Acc X #WM2,Acc Y #WM2,Acc Z #WM2\n"
+                           "0,0,0,0,0.1,0,1\n10,0,0,0,0.2,0,1\n";
+  const Trace t = parse_capture(text, "two.csv");
+  BOOST_TEST(t.samples[1].accel_g.x() == 0.2);
+  BOOST_TEST(contains(error_of(text, {1, ""}), "has no data"));
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -1,0 +1,213 @@
+// stoneskip sweep SWEEP.toml [--out FILE.h5] [--resume] [--threads N] [--max-chunk N] [--quiet]
+//
+// Runs every throw of a sweep file (a base stone case, the keys to vary on a grid or a random
+// design, the solvers) and writes one HDF5 file whose /throws table has a row per throw
+// (verification/sweep/sweep_result.hpp). On one machine it uses all cores; under an MPI launcher
+// it spreads the throws over the ranks, rank 0 scheduling and writing:
+//   stoneskip sweep cases/sweeps/paper_speed_spin.toml --out speed_spin.h5
+//   mpirun -n 8 stoneskip sweep cases/sweeps/paper_speed_spin.toml --out speed_spin.h5
+//   stoneskip sweep cases/sweeps/paper_speed_spin.toml --out speed_spin.h5 --resume   # after a crash
+// The table is the same bits whatever the number of ranks or threads, every column but cost_*.
+//
+// Steps: (1) every rank reads the sweep file and the base case and builds the case at the
+// design's extreme points (a bad file fails here, exit 2, nothing written); (2) rank 0 checks the
+// output and opens the journal (--resume: reads it back); (3) the throws run; (4) rank 0 writes
+// the file in throw order and removes the journal.
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <thread>
+
+#include "solvers/reference/cvode_stone.hpp"
+#include "tools/cli/command_registry.hpp"
+#include "tools/cli/terminal_progress.hpp"
+#include "tools/io/input_error.hpp"
+#include "tools/scene/scene_throw.hpp"
+#include "tools/scene/sweep_file.hpp"
+#include "verification/sweep/sweep_run.hpp"
+#include "solvers/realtime/clocks.hpp"
+
+namespace stoneskip::cli {
+namespace {
+
+struct SweepArgs {
+  std::string file;
+  std::string out;
+  bool resume = false;
+  int threads = -1;  // auto
+  std::size_t max_chunk = 32;
+  bool quiet = false;
+};
+
+// Collective: true when every rank got this far without an error. Otherwise the lowest failing
+// rank's error is printed once (by rank 0 as an InputError: exit 2) and every rank exits with 2.
+bool all_ranks_ok(const MpiSession& mpi, const std::string& error) {
+  const int failed = mpi.first_failed_rank(error.empty());
+  if (failed < 0) return true;
+  if (mpi.rank() == 0)
+    throw InputError(error.empty() ? "rank " + std::to_string(failed) + " could not set up the sweep (its message is above)"
+                                   : error);
+  if (failed == mpi.rank()) std::fprintf(stderr, "stoneskip: rank %d: %s\n", mpi.rank(), error.c_str());
+  set_exit_code(2);
+  return false;
+}
+
+std::string describe(const SweepFile& s, const SweepCases& cases) {
+  std::string d = "sweep     " + s.title + " (" + s.file + ")\nbase      " + cases.base().title + " (" + s.base_file + ")";
+  for (const auto& o : s.base_sets) d += " --set " + o;
+  d += "\ndesign    " + std::string(to_string(s.design.kind)) + ", " + std::to_string(s.design.size()) + " throws";
+  if (s.design.kind != DesignKind::grid) d += " (seed " + std::to_string(s.design.seed) + ")";
+  for (const auto& a : s.design.axes) {
+    char b[256];
+    std::snprintf(b, sizeof b, "\n  vary    %s from %.6g to %.6g%s", a.key.c_str(), a.from, a.to,
+                  a.scale == AxisScale::log ? " (log)" : "");
+    d += b;
+    if (s.design.kind == DesignKind::grid) d += ", " + std::to_string(a.count) + " points";
+  }
+  d += "\nsolvers   " + std::string(to_string(s.solvers)) + "\n";
+  return d;
+}
+
+// One throw: its case from the base and its values, the solvers, its row.
+ThrowEvaluator make_evaluator(const SweepFile& sweep, const SweepCases& cases, const ThrowRecord& record) {
+  return [&sweep, &cases, &record](std::uint64_t i, const ThrowSite& site, RowBatch& out) {
+    const std::vector<double> point = sweep.design.point(i);
+    ThrowCost cost;
+    cost.rank = site.rank;
+    cost.thread = site.thread;
+    cost.start_unix_s = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+    const auto t0 = std::chrono::steady_clock::now();
+    auto not_run = [&](const std::string& who, const std::string& why) {
+      out.add_row(record.not_run_row(i, point, cost));
+      out.notes.push_back({i, who, why});
+    };
+    StoneCase c;
+    try {
+      c = cases.at(point);
+    } catch (const InputError& e) {
+      cost.setup_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      return not_run("case", e.what());
+    }
+    cost.setup_wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::optional<ThrowResult> rt, ref;
+    try {
+      if (runs_realtime(sweep.solvers)) {
+        c.realtime.record_trajectory = false;  // the row needs contacts and the end state only
+        const CpuTimer cpu;
+        rt = run_scene_realtime(c).result;
+        cost.realtime_cpu_s = cpu.seconds();
+      }
+      if (runs_reference(sweep.solvers)) {
+        const CpuTimer cpu;  // the trajectory stays on: CVODE then stops where `stoneskip run` does
+        ref = run_reference(c.stone, c.environment, c.initial, c.reference);
+        cost.reference_cpu_s = cpu.seconds();
+      }
+    } catch (const std::exception& e) {
+      return not_run(rt ? "reference" : "realtime", std::string("the solver threw: ") + e.what());
+    }
+    out.add_row(record.row(i, point, rt ? &*rt : nullptr, ref ? &*ref : nullptr, cost, out.notes));
+  };
+}
+
+void compute(const SweepArgs& a, const SweepFile& sweep, const SweepCases& cases, SweepPlan& plan,
+             const ThrowEvaluator& evaluate, MpiSession& mpi);
+
+void run(const SweepArgs& a) {
+  MpiSession mpi;
+  // 1. Every rank: the sweep file, the base case, the case at the design's extreme points.
+  std::optional<SweepFile> sweep;
+  std::unique_ptr<SweepCases> cases;
+  std::string error;
+  try {
+    if (!MpiSession::built_with_mpi() && MpiSession::launched_size() > 1)
+      throw_input_error("mpirun", 0, "", "this stoneskip was built without MPI, so its " +
+                                             std::to_string(MpiSession::launched_size()) +
+                                             " processes cannot share a sweep: install libopenmpi-dev and rebuild");
+    sweep = load_sweep_file(a.file);
+    cases = std::make_unique<SweepCases>(*sweep);
+    if (a.threads < -1) throw_input_error("--threads", 0, "", "must be >= 0");
+    if (a.max_chunk < 1) throw_input_error("--max-chunk", 0, "", "must be >= 1");
+  } catch (const InputError& e) {
+    error = e.what();
+  }
+  if (!all_ranks_ok(mpi, error)) return;
+
+  SweepData spec;
+  spec.design = sweep->design;
+  spec.solvers = sweep->solvers;
+  SweepProvenance& p = spec.provenance;
+  p.title = sweep->title;
+  p.sweep_file = sweep->file;
+  p.sweep_text = sweep->text;
+  p.base_case_file = sweep->base_file;
+  p.base_case_text = cases->base().text;
+  p.base_overrides = sweep->base_sets;
+  p.resolved_settings = cases->base().resolved_settings();
+  SweepRunOptions options;
+  options.out = a.out.empty() ? std::filesystem::path(a.file).stem().string() + ".h5" : a.out;
+  options.resume = a.resume;
+  options.master_threads = a.threads;
+  options.max_chunk = a.max_chunk;
+  if (!a.quiet) options.progress = terminal_progress();
+
+  // 2. Rank 0: the output and the journal.
+  std::optional<SweepPlan> plan;
+  if (mpi.rank() == 0) {
+    try {
+      plan.emplace(SweepPlan::prepare(spec, options));
+    } catch (const InputError& e) {
+      error = e.what();
+    }
+  }
+  if (!all_ranks_ok(mpi, error)) return;
+
+  // 3. The throws.
+  const ThrowRecord record = sweep_record(sweep->design, sweep->solvers);
+  const ThrowEvaluator evaluate = make_evaluator(*sweep, *cases, record);
+  try {
+    if (mpi.rank() == 0)
+      compute(a, *sweep, *cases, *plan, evaluate, mpi);
+    else
+      run_worker(record.width(), evaluate, mpi);
+  } catch (const std::exception& e) {
+    if (mpi.size() == 1) throw;
+    // One rank cannot finish: the others would wait for it forever. The journal keeps what is done.
+    std::fprintf(stderr, "stoneskip: rank %d: internal error: %s (the sweep can be finished with --resume)\n",
+                 mpi.rank(), e.what());
+    mpi.abort(3);
+  }
+}
+
+void compute(const SweepArgs& a, const SweepFile& sweep, const SweepCases& cases, SweepPlan& plan,
+             const ThrowEvaluator& evaluate, MpiSession& mpi) {
+  if (!a.quiet) {
+    std::printf("%s", describe(sweep, cases).c_str());
+    std::printf("run       %d rank%s%s; %zu of %zu throws to compute; output %s\n", mpi.size(), mpi.size() == 1 ? "" : "s",
+                MpiSession::built_with_mpi() ? "" : " (built without MPI)", plan.pending(), sweep.design.size(),
+                plan.output().c_str());
+    std::fflush(stdout);
+  }
+  const SweepSummary summary = plan.run(evaluate, mpi);
+  std::printf("%s\n", summary.brief().c_str());
+}
+
+void add_sweep(CLI::App& app) {
+  auto a = std::make_shared<SweepArgs>();
+  auto* cmd = app.add_subcommand("sweep", "Run every throw of a sweep file (grid or random design) into one HDF5 table; "
+                                          "runs under mpirun across ranks");
+  cmd->add_option("SWEEP", a->file, "Sweep file (TOML, see cases/README.md)")->required();
+  cmd->add_option("--out", a->out, "Result file (default: SWEEP's stem + .h5 in the current folder)");
+  cmd->add_flag("--resume", a->resume, "Finish an interrupted sweep from its journal (FILE.h5.journal)");
+  cmd->add_option("--threads", a->threads,
+                  "Compute threads on rank 0 (default: every core when it runs alone, 1 beside MPI workers; "
+                  "0 with workers: rank 0 only schedules)");
+  cmd->add_option("--max-chunk", a->max_chunk, "Largest number of throws handed out at once (default 32)");
+  cmd->add_flag("--quiet", a->quiet, "No configuration, no progress line");
+  cmd->callback([a] { run(*a); });
+}
+
+const bool kRegistered = register_command(add_sweep);
+
+}  // namespace
+}  // namespace stoneskip::cli

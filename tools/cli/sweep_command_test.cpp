@@ -1,0 +1,329 @@
+// End-to-end tests of `stoneskip sweep` and `stoneskip sweep-plot`. Oracles: `stoneskip run` on the
+// same overridden case (an independent path: the case text parsed with --set, a solve recording
+// its trajectory, JSON out) for a throw's row; an uninterrupted run's table for a killed-and-
+// resumed one and for runs on 1, 2 and 3 MPI ranks (bit for bit, every column but cost_*); the
+// result table itself for the figures' data; the sweep file's text for bad-input messages.
+#include <boost/test/unit_test.hpp>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <thread>
+
+#include "tools/io/hdf5_file.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Outcome {
+  int status = -1;
+  std::string out, err;
+};
+
+fs::path work() {
+  const fs::path d = fs::temp_directory_path() / ("stoneskip_sweep_cli_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+// The suite's files go when it ends.
+struct RemoveScratch {
+  ~RemoveScratch() {
+    std::error_code ec;
+    fs::remove_all(work(), ec);
+  }
+};
+
+std::string text_of(const fs::path& p) {
+  std::ifstream f(p);
+  return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+}
+
+// Runs "PREFIX stoneskip ARGS" through the shell; PREFIX is an MPI launcher or empty.
+Outcome command(const std::string& args, const std::string& prefix = "") {
+  const fs::path o = work() / "stdout", e = work() / "stderr";
+  const std::string cmd = prefix + " " + STONESKIP_EXE + " " + args + " >" + o.string() + " 2>" + e.string();
+  const int raw = std::system(cmd.c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text_of(o), text_of(e)};
+}
+
+void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+// The shipped paper throw (physical convention: every throw sinks within about 0.1 s, so a throw
+// costs milliseconds), cut at 2 s, with a cheaper reference.
+const std::string kBaseSets = "--set solver.t_max_s=2.0 --set reference.rtol=1.0e-8";
+
+std::string base_lines() {
+  return "base = \"" + fs::absolute("cases/paper_8ms_spin.toml").string() +
+         "\"\nset = [\"solver.t_max_s=2.0\", \"reference.rtol=1.0e-8\"]\n";
+}
+
+// A speeds × spins grid.
+std::string grid_sweep(int speeds = 3, int spins = 3, const std::string& solvers = "[\"realtime\", \"reference\"]") {
+  return base_lines() + "solvers = " + solvers + "\n[design]\nkind = \"grid\"\n[[vary]]\nkey = \"throw.speed_m_s\"\n" +
+         "from = 6.0\nto = 10.0\ncount = " + std::to_string(speeds) + "\n[[vary]]\nkey = \"throw.spin_rev_s\"\nfrom = 0.0\n" +
+         "to = 20.0\ncount = " + std::to_string(spins) + "\n";
+}
+
+fs::path setup(const std::string& name, const std::string& sweep_text) {
+  const fs::path p = work() / (name + ".toml");
+  write(p, sweep_text);
+  return p;
+}
+
+stoneskip::Table table_of(const fs::path& h5) {
+  stoneskip::Hdf5Reader r(h5);
+  return r.root().read_table("throws");
+}
+
+double at(const stoneskip::Table& t, std::size_t row, const std::string& column) {
+  for (std::size_t c = 0; c < t.columns.size(); ++c)
+    if (t.columns[c] == column) return t.values[row * t.columns.size() + c];
+  BOOST_FAIL("no column " << column);
+  return 0;
+}
+
+// Bit-for-bit equality of every column that is not a cost_ column (NaN equal to the same NaN).
+void expect_same_results(const stoneskip::Table& a, const stoneskip::Table& b, const std::string& what) {
+  BOOST_REQUIRE(a.columns == b.columns);
+  BOOST_REQUIRE_EQUAL(a.rows(), b.rows());
+  std::size_t differ = 0, compared = 0;
+  for (std::size_t c = 0; c < a.columns.size(); ++c) {
+    if (a.columns[c].rfind("cost_", 0) == 0) continue;
+    for (std::size_t r = 0; r < a.rows(); ++r) {
+      const double x = a.values[r * a.columns.size() + c], y = b.values[r * b.columns.size() + c];
+      ++compared;
+      if (std::memcmp(&x, &y, sizeof x) != 0) {
+        if (differ++ < 5) BOOST_ERROR(what << ": row " << r << " column " << a.columns[c] << ": " << x << " vs " << y);
+      }
+    }
+  }
+  BOOST_TEST(differ == 0u, what << ": " << differ << " of " << compared << " values differ");
+}
+
+// Exit 2, one line naming every fragment, no throw started, no result file (and no journal, unless
+// one was there before: `had_journal`).
+void expect_bad_input(const Outcome& r, const std::vector<std::string>& fragments, const fs::path& out,
+                      bool had_journal = false) {
+  BOOST_TEST(r.status == 2, "exit status " << r.status << ", stderr: " << r.err);
+  BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, "stderr must be one line: " << r.err);
+  for (const auto& f : fragments) BOOST_TEST(r.err.find(f) != std::string::npos, "'" << f << "' not in: " << r.err);
+  BOOST_TEST(!fs::exists(out), out << " was written");
+  BOOST_TEST(fs::exists(fs::path(out.string() + ".journal")) == had_journal, "journal left or lost");
+  BOOST_TEST(r.out.find("run ") == std::string::npos, "throws were started: " << r.out);
+}
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  const auto at = s.find(from);
+  BOOST_REQUIRE(at != std::string::npos);
+  return s.replace(at, from.size(), to);
+}
+
+std::string mpiexec() {
+  const char* e = std::getenv("STONESKIP_MPIEXEC");
+  return e && *e ? e : "mpirun";
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(sweep_command, *boost::unit_test::fixture<RemoveScratch>())
+
+BOOST_AUTO_TEST_CASE(a_throws_row_equals_stoneskip_run_on_the_same_overridden_case) {
+  // Oracle: `stoneskip run BASE --set ... --solver both --json`, field by field, exactly.
+  const fs::path sweep = setup("rows", grid_sweep()), out = work() / "rows.h5";
+  const Outcome s = command("sweep " + sweep.string() + " --out " + out.string() + " --quiet");
+  BOOST_REQUIRE_MESSAGE(s.status == 0, s.err);
+  const stoneskip::Table t = table_of(out);
+  BOOST_REQUIRE_EQUAL(t.rows(), 9u);
+  for (std::size_t row : {0u, 4u, 8u}) {
+    BOOST_TEST(at(t, row, "throw") == double(row));
+    char set[256];
+    std::snprintf(set, sizeof set, "--set throw.speed_m_s=%.17g --set throw.spin_rev_s=%.17g", at(t, row, "throw.speed_m_s"),
+                  at(t, row, "throw.spin_rev_s"));
+    const Outcome run = command("run cases/paper_8ms_spin.toml " + kBaseSets + " " + set + " --solver both --json");
+    BOOST_REQUIRE_MESSAGE(run.status == 0, run.err);
+    const nlohmann::json j = nlohmann::json::parse(run.out);
+    for (const char* solver : {"realtime", "reference"}) {
+      const nlohmann::json& r = j[solver];
+      const std::string p = std::string(solver) + "_";
+      BOOST_TEST(at(t, row, p + "bounces") == r["bounces"].get<double>());
+      const std::string outcome = r["outcome"];
+      BOOST_TEST(at(t, row, p + "outcome") == (outcome == "sank" ? 0 : outcome == "time_limit" ? 1 : 2));
+      for (const char* f : {"distance_m", "lateral_m", "end_time_s", "max_energy_gain_J"})
+        BOOST_TEST(at(t, row, p + f) == r[f].get<double>(), p + f);
+      BOOST_TEST(at(t, row, p + "contacts") == double(r["contacts"].size()));
+      BOOST_REQUIRE(!r["contacts"].empty());
+      const nlohmann::json& c = r["contacts"][0];
+      for (const char* f : {"start_s", "end_s", "entry_speed_m_s", "exit_speed_m_s", "entry_path_angle_deg", "entry_attack_angle_deg"})
+        BOOST_TEST(at(t, row, p + "first_contact_" + f) == c[f].get<double>(), p + f);
+      for (const char* f : {"steps", "contact_steps", "rhs_evaluations", "root_evaluations", "error_test_failures",
+                            "nonlinear_iterations", "segments"})
+        BOOST_TEST(at(t, row, p + f) == r["stats"][f].get<double>(), p + f);
+    }
+    BOOST_TEST(at(t, row, "disagreement_bounces") ==
+               j["realtime"]["bounces"].get<double>() - j["reference"]["bounces"].get<double>());
+  }
+}
+
+BOOST_AUTO_TEST_CASE(bad_sweep_files_fail_before_any_throw_with_one_line_and_no_output) {
+  // Oracle: the line of the broken key in each file; no result file, no journal afterwards.
+  setup("bad", grid_sweep());
+  const fs::path out = work() / "bad.h5";
+  struct Bad {
+    std::string text, fragment;
+  };
+  const std::string g = grid_sweep();
+  const std::vector<Bad> bad = {
+      {g + "colour = \"red\"\n", "bad.toml:16: vary[2].colour: unknown key"},
+      {replace(g, "throw.spin_rev_s", "stone.shape"), "bad.toml:12: vary[2].key: \"stone.shape\" is not a numeric key"},
+      {replace(g, "count = 3\n[[vary]]", "count = 0\n[[vary]]"), "bad.toml:10: vary[1].count: must be >= 1"},
+      {replace(g, "to = 20.0\ncount = 3", "to = 20.0\ncount = 3\nscale = \"log\""), "bad.toml:13: vary[2].from: a log axis needs from > 0"},
+      {replace(g, "from = 6.0\nto = 10.0\ncount = 3", "from = 6.0\nto = 2.0\ncount = 3\nscale = \"log\""),
+       "bad.toml:9: vary[1].to: from (6) must not exceed to (2)"},
+      {replace(g, "paper_8ms_spin.toml", "no_such_case.toml"), "bad.toml:1: base: the base case does not load"},
+  };
+  for (const auto& b : bad) {
+    write(work() / "bad.toml", b.text);
+    expect_bad_input(command("sweep " + (work() / "bad.toml").string() + " --out " + out.string()), {b.fragment}, out);
+  }
+  write(work() / "bad.toml", g);
+  const fs::path nowhere = work() / "no_such_folder" / "x.h5";
+  expect_bad_input(command("sweep " + (work() / "bad.toml").string() + " --out " + nowhere.string()),
+                   {nowhere.string(), "does not exist"}, nowhere);
+}
+
+BOOST_AUTO_TEST_CASE(a_killed_sweep_resumes_to_the_same_table_computing_only_what_is_missing) {
+  // Oracle: the same sweep run without interruption.
+  const fs::path sweep = setup("kill", grid_sweep(8, 5, "[\"reference\"]"));
+  const fs::path whole = work() / "whole.h5", killed = work() / "killed.h5";
+  const fs::path journal = killed.string() + ".journal";
+  BOOST_REQUIRE(command("sweep " + sweep.string() + " --out " + whole.string() + " --quiet").status == 0);
+
+  // 1. Start, wait for rows in the journal, SIGKILL.
+  fs::remove(killed);
+  fs::remove(journal);
+  std::fflush(nullptr);  // the child must not print this process's buffered output again
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    std::freopen("/dev/null", "w", stdout);
+    std::freopen("/dev/null", "w", stderr);
+    ::execl(STONESKIP_EXE, STONESKIP_EXE, "sweep", sweep.c_str(), "--out", killed.c_str(), "--threads", "1", "--max-chunk", "2",
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  std::uintmax_t first = 0;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while (std::chrono::steady_clock::now() < deadline) {
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(journal, ec);
+    if (!ec && size > 0 && first == 0) first = size;  // the header
+    if (!ec && first > 0 && size > first) break;       // and at least one record of rows
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  BOOST_REQUIRE_MESSAGE(WIFSIGNALED(status), "the sweep ended before it could be killed");
+  BOOST_REQUIRE(fs::exists(journal));
+  BOOST_REQUIRE(!fs::exists(killed));
+  // A write torn by the kill: garbage after the last whole record is cut on resume.
+  std::ofstream(journal, std::ios::app | std::ios::binary) << "SWJ1\x02torn";
+
+  // 2. Without --resume the journal is protected; with it, only the missing throws run.
+  expect_bad_input(command("sweep " + sweep.string() + " --out " + killed.string()), {"--resume"}, killed, true);
+  const Outcome resumed = command("sweep " + sweep.string() + " --out " + killed.string() + " --resume --quiet");
+  BOOST_REQUIRE_MESSAGE(resumed.status == 0, resumed.err);
+  BOOST_TEST(!fs::exists(journal));
+  expect_same_results(table_of(whole), table_of(killed), "resumed");
+  stoneskip::Hdf5Reader r(killed);
+  const stoneskip::H5Group run = r.root().open_group("run");
+  const long long recovered = run.attr_int("throws_recovered"), computed = run.attr_int("throws_computed");
+  BOOST_TEST(recovered >= 1);
+  BOOST_TEST(recovered + computed == 40);
+  // Resuming a finished file computes nothing.
+  const Outcome again = command("sweep " + sweep.string() + " --out " + killed.string() + " --resume");
+  BOOST_TEST(again.status == 0);
+  BOOST_TEST(again.out.find("already complete") != std::string::npos, again.out);
+}
+
+BOOST_AUTO_TEST_CASE(sweep_plot_maps_hold_the_tables_counts) {
+  // Oracle: the result table: a map cell's value is the bounce count of the throw at that grid
+  // point; the disagreement cell is real-time minus reference; a histogram sums to the samples.
+  const fs::path sweep = setup("plot", grid_sweep()), out = work() / "plot.h5", dir = work() / "plot";
+  BOOST_REQUIRE(command("sweep " + sweep.string() + " --out " + out.string() + " --quiet").status == 0);
+  const Outcome p = command("sweep-plot " + out.string() + " --out " + dir.string() + " --no-render");
+  BOOST_REQUIRE_MESSAGE(p.status == 0, p.err);
+  const stoneskip::Table t = table_of(out);
+  stoneskip::Hdf5Reader figs(dir / "data.h5");
+  const stoneskip::H5Group f = figs.root().open_group("figures");
+  const stoneskip::Table cells = f.open_group("sweep_bounces_realtime_0_1").read_table("sweep_bounces_realtime_0_1_cells");
+  const stoneskip::Table diff = f.open_group("sweep_disagreement_0_1").read_table("sweep_disagreement_0_1_cells");
+  BOOST_REQUIRE_EQUAL(cells.rows(), 9u);
+  for (std::size_t c = 0; c < cells.rows(); ++c) {
+    for (std::size_t r = 0; r < t.rows(); ++r) {
+      if (at(t, r, "throw.speed_m_s") != at(cells, c, "x") || at(t, r, "throw.spin_rev_s") != at(cells, c, "y")) continue;
+      BOOST_TEST(at(cells, c, "value") == at(t, r, "realtime_bounces"));
+      BOOST_TEST(at(diff, c, "value") == at(t, r, "realtime_bounces") - at(t, r, "reference_bounces"));
+    }
+  }
+  BOOST_TEST(text_of(dir / "index.md").find("grid design, 9 throws") != std::string::npos);
+
+  const fs::path lhs = setup("lhs", base_lines() + "[design]\nkind = \"latin_hypercube\"\nsamples = 12\nseed = 5\n"
+                                    "[[vary]]\nkey = \"throw.attack_angle_deg\"\nfrom = 0.0\nto = 30.0\n"
+                                    "[[vary]]\nkey = \"stone.radius_m\"\nfrom = 0.02\nto = 0.05\nscale = \"log\"\n");
+  const fs::path lout = work() / "lhs.h5", ldir = work() / "lhs";
+  BOOST_REQUIRE(command("sweep " + lhs.string() + " --out " + lout.string() + " --quiet").status == 0);
+  BOOST_REQUIRE(command("sweep-plot " + lout.string() + " --out " + ldir.string() + " --no-render").status == 0);
+  stoneskip::Hdf5Reader lf(ldir / "data.h5");
+  const stoneskip::Table h = lf.root().open_group("figures").open_group("sweep_bounce_histogram").read_table("sweep_bounce_histogram_0");
+  double throws = 0;
+  for (double n : h.column("throws")) throws += n;
+  BOOST_TEST(throws == 12);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+// Run by ctest as `stoneskip_sweep_mpi` with what Open MPI needs to run as root (tools/CMakeLists.txt).
+BOOST_AUTO_TEST_SUITE(sweep_mpi, *boost::unit_test::disabled() * boost::unit_test::fixture<RemoveScratch>())
+
+BOOST_AUTO_TEST_CASE(one_two_and_three_ranks_give_the_table_of_a_threaded_run) {
+  // Oracle: the same sweep on threads in one process, bit for bit but the cost_ columns.
+  const fs::path sweep = setup("mpi", grid_sweep(4, 3));
+  const fs::path threads = work() / "threads.h5";
+  BOOST_REQUIRE(command("sweep " + sweep.string() + " --out " + threads.string() + " --quiet").status == 0);
+  const stoneskip::Table reference = table_of(threads);
+  for (int n : {1, 2, 3}) {
+    const fs::path out = work() / ("mpi" + std::to_string(n) + ".h5");
+    const Outcome r = command("sweep " + sweep.string() + " --out " + out.string() + " --quiet --max-chunk 2",
+                                mpiexec() + " --oversubscribe -n " + std::to_string(n));
+    BOOST_REQUIRE_MESSAGE(r.status == 0, "mpirun -n " << n << ": " << r.err);
+    const stoneskip::Table t = table_of(out);
+    expect_same_results(reference, t, std::to_string(n) + " ranks");
+    std::set<double> ranks;
+    for (double v : t.column("cost_rank")) ranks.insert(v);
+    if (n > 1) BOOST_TEST(ranks.size() >= 2u, n << " ranks: all throws ran on one rank");
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_bad_sweep_file_under_mpirun_fails_on_every_rank_with_one_message) {
+  // Oracle: the file's broken line; the message printed once, whatever the number of ranks.
+  const fs::path sweep = setup("mpibad", replace(grid_sweep(), "count = 3\n[[vary]]", "count = -1\n[[vary]]"));
+  const fs::path out = work() / "mpibad.h5";
+  const Outcome r = command("sweep " + sweep.string() + " --out " + out.string(), mpiexec() + " --oversubscribe -n 2");
+  BOOST_TEST(r.status == 2, r.err);
+  const std::string m = "mpibad.toml:10: vary[1].count: must be >= 1";
+  const auto first = r.err.find(m);
+  BOOST_TEST(first != std::string::npos, r.err);
+  BOOST_TEST(r.err.find(m, first + 1) == std::string::npos, "printed more than once: " << r.err);
+  BOOST_TEST(!fs::exists(out));
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -1,0 +1,82 @@
+// The keys issue 11 added to the stones study files (cases/README.md, "Study files"): the water
+// laws of the convergence and validation studies, "throw@law" in the work-precision and restart
+// studies, the restart study, the
+// validation's scored ranges, measured curve and ranking; strict one-line errors for bad values.
+#include <boost/test/unit_test.hpp>
+
+#include "tools/io/input_error.hpp"
+#include "tools/scene/stone_study_file.hpp"
+
+using namespace stoneskip;
+
+namespace {
+
+const char* kQuick = "cases/studies/stones_quick.toml";  // tests run in the source folder
+
+// The one-line message of the InputError thrown, or "" if none.
+std::string error_of(const std::vector<std::string>& overrides) {
+  try {
+    load_stone_study_file(kQuick, overrides);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(stone_study_file_keys)
+
+BOOST_AUTO_TEST_CASE(the_shipped_presets_name_their_laws_ranges_and_curve) {
+  // Oracle: the shipped files as written (cases/studies/stones.toml and stones_quick.toml).
+  const StoneStudiesOptions full = load_stone_study_file("cases/studies/stones.toml").options;
+  const std::vector<WaterLaw> all{WaterLaw::newtonian, WaterLaw::planing, WaterLaw::lift_drag};
+  BOOST_TEST((full.validation.laws == all));
+  BOOST_TEST((full.convergence_laws == all));
+  BOOST_TEST(full.work_precision_throws.size() == 6u);  // three throws, and three under another law
+  BOOST_TEST((full.flat_drop.problem.environment.convention == Convention::paper));
+  BOOST_TEST(full.restarts.strategies.size() == 4u);
+  BOOST_TEST((full.restarts.throws ==
+              std::vector<std::string>{"clanet", "spin", "nospin", "spin@planing", "nospin@planing", "flat_drop"}));
+  int scored = 0;
+  for (const auto& m : full.validation.measured) scored += m.score ? 1 : 0;
+  BOOST_TEST(scored == 5);
+  BOOST_TEST_REQUIRE(full.validation.curves.size() == 1u);
+  BOOST_TEST(full.validation.curves[0].low[0] == 2.5);
+  BOOST_TEST(full.validation.curves[0].high[0] == 2.6);
+  const StoneStudiesOptions quick = load_stone_study_file(kQuick).options;
+  BOOST_TEST((quick.validation.laws == std::vector<WaterLaw>{WaterLaw::newtonian, WaterLaw::lift_drag}));
+  BOOST_TEST(quick.validation.ranking.held_spin_rev_s == 65.0);
+}
+
+BOOST_AUTO_TEST_CASE(bad_laws_ranges_and_strategies_are_one_line_errors_naming_the_key) {
+  // Oracle: the strict-parsing rule of cases/README.md — file, key and what is wrong, one line.
+  auto names = [](const std::string& message, const std::string& key) {
+    BOOST_TEST(message.find(key) != std::string::npos, message);
+    BOOST_TEST(message.find('\n') == std::string::npos, message);
+  };
+  names(error_of({"validation.laws=[\"newtonian\", \"planning\"]"}), "validation.laws");
+  names(error_of({"convergence.laws=[\"planing\", \"planing\"]"}), "convergence.laws");
+  names(error_of({"validation.ranking.held_spin_rev_s=30.0"}), "validation.ranking.held_spin_rev_s");
+  names(error_of({"validation.ranking.cost_throws=[\"bocquet\"]"}), "validation.ranking.cost_throws");
+  names(error_of({"validation.ranking.colour=1"}), "colour");
+  names(error_of({"restarts.strategies=[\"at_jumps\", \"never\"]"}), "restarts.strategies");
+  names(error_of({"restarts.throws=[\"nospin@planning\"]"}), "restarts.throws");
+  names(error_of({"work_precision.throws=[\"spin_paper@planing\"]"}), "work_precision.throws");
+  names(error_of({"work_precision.throws=[\"sidespin\"]"}), "work_precision.throws");
+  names(error_of({"restarts.throws=[\"flat_drop@planing\"]"}), "paper convention");  // the case is the paper's
+  names(error_of({"restarts.strategies=[\"every_event\", \"sometimes\"]"}), "restarts.strategies");
+  // A measured row: a range on a row the ranking cannot score, half a range, a range across zero.
+  const std::string row = R"(validation.measured=[{key = "seed_spin", quantity = "q", measured = "m", source = "s", )";
+  names(error_of({row + R"(score_low = 1.0, score_high = 2.0, score_unit = ""}])"}), "score_low");
+  const std::string scorable = R"(validation.measured=[{key = "clanet_min_speed", quantity = "q", measured = "m", source = "s", )";
+  names(error_of({scorable + R"(score_low = 2.5}])"}), "score_high");
+  names(error_of({scorable + R"(score_low = -1.0, score_high = 1.0, score_unit = ""}])"}), "score_low");
+  names(error_of({scorable + R"(score_low = 2.5, score_high = 2.6}])"}), "score_unit");
+  // A measured curve whose points do not pair up.
+  names(error_of({R"(validation.curve=[{key = "clanet_min_speed", label = "l", source = "s", x = [20.0, 25.0], low = [2.5], high = [2.6, 2.7]}])"}),
+        "low");
+  BOOST_TEST(error_of({}).empty());
+}
+
+BOOST_AUTO_TEST_SUITE_END()

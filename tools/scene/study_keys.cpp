@@ -1,0 +1,31 @@
+#include "tools/scene/study_keys.hpp"
+
+namespace stoneskip {
+
+std::vector<double> positive_list(TomlTable& t, const std::string& key, const std::vector<double>& fallback) {
+  std::vector<double> v = any_list(t, key, fallback);
+  for (double x : v)
+    if (!(x > 0)) t.fail(key, "every value must be > 0");
+  return v;
+}
+
+std::vector<double> any_list(TomlTable& t, const std::string& key, const std::vector<double>& fallback) {
+  auto v = t.maybe_numbers(key);
+  if (!v) return fallback;
+  if (v->empty()) t.fail(key, "must not be empty");
+  return *v;
+}
+
+double positive(TomlTable& t, const std::string& key, double fallback) {
+  const double v = t.number_or(key, fallback);
+  t.require_positive(key, v);
+  return v;
+}
+
+long long count_in(TomlTable& t, const std::string& key, long long fallback, long long lo, long long hi) {
+  const long long v = t.integer_or(key, fallback);
+  if (v < lo || v > hi) t.fail(key, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return v;
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,222 @@
+#include "tools/scene/sweep_file.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <set>
+
+#include "tools/io/atomic_file.hpp"
+#include "tools/io/input_error.hpp"
+
+namespace stoneskip {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::set<std::string> kTopKeys = {"base", "set", "solvers", "title", "description", "design", "vary"};
+
+long line_of(const toml::value& v) { return static_cast<long>(v.location().line()); }
+
+// A top-level array of strings (`solvers`, `set`) with the line of the array.
+std::vector<std::string> strings(TomlTable& top, const toml::value& root, const std::string& key, long& line) {
+  std::vector<std::string> out;
+  if (!top.has(key)) return out;
+  const toml::value& v = root.as_table().at(key);
+  line = line_of(v);
+  if (!v.is_array()) top.fail(key, "expected an array of strings");
+  for (const auto& e : v.as_array()) {
+    if (!e.is_string()) top.fail(key, "expected an array of strings");
+    out.push_back(e.as_string().str);
+  }
+  return out;
+}
+
+SweepSolvers read_solvers(TomlTable& top, const toml::value& root, long& line) {
+  if (!top.has("solvers")) return SweepSolvers::realtime;
+  bool realtime = false, reference = false;
+  for (const auto& s : strings(top, root, "solvers", line)) {
+    bool& flag = s == "realtime" ? realtime : reference;
+    if (s != "realtime" && s != "reference")
+      top.fail("solvers", "each must be \"realtime\" or \"reference\" (got \"" + s + "\")");
+    if (flag) top.fail("solvers", "\"" + s + "\" is listed twice");
+    flag = true;
+  }
+  if (!realtime && !reference) top.fail("solvers", "name at least one solver: \"realtime\" and/or \"reference\"");
+  return realtime && reference ? SweepSolvers::both : realtime ? SweepSolvers::realtime : SweepSolvers::reference;
+}
+
+}  // namespace
+
+namespace {
+// Whole values (not −0) become TOML integers, as their literal would parse under --set.
+bool as_integer(double v) { return v == std::floor(v) && std::abs(v) < 9.0e15 && !(v == 0 && std::signbit(v)); }
+}  // namespace
+
+std::string sweep_override(const std::string& key, double value) {
+  char b[64];
+  if (as_integer(value))
+    std::snprintf(b, sizeof b, "%.0f", value);
+  else
+    std::snprintf(b, sizeof b, "%.17g", value);  // 17 significant digits: the same double back
+  std::string literal = b;
+  if (!as_integer(value) && literal.find_first_of(".eEn") == std::string::npos) literal += ".0";  // -0 → -0.0
+  return key + "=" + literal;
+}
+
+SweepFile sweep_file_from_text(const std::string& text, const std::string& name) {
+  const TomlDocument doc = parse_toml_text(text, name);
+  SweepFile s;
+  s.file = name;
+  s.text = text;
+  TomlTable top = doc.top();
+  for (const auto& k : top.keys())
+    if (!kTopKeys.count(k)) top.fail(k, "unknown key (a sweep file has base, set, solvers, title, description, [design], [[vary]])");
+  s.title = top.string_or("title", fs::path(name).stem().string());
+  top.string_or("description", "");
+  const std::string base = top.string("base");
+  s.base_line = line_of(doc.root.as_table().at("base"));
+  fs::path bp(base);
+  if (bp.is_relative()) bp = fs::path(name).parent_path() / bp;
+  s.base_file = bp.lexically_normal().string();
+  s.base_sets = strings(top, doc.root, "set", s.set_line);
+  s.solvers = read_solvers(top, doc.root, s.solvers_line);
+
+  // [design]
+  TomlTable design = top.table("design");
+  const std::string kind = design.string("kind");
+  if (!parse_design_kind(kind, s.design.kind))
+    design.fail("kind", "must be \"grid\", \"random\" or \"latin_hypercube\" (got \"" + kind + "\")");
+  const bool grid = s.design.kind == DesignKind::grid;
+  if (grid) {
+    for (const char* k : {"samples", "seed"})
+      if (design.has(k)) design.fail(k, "is for random designs; a grid's throws are the product of the [[vary]] counts");
+  } else {
+    s.design.samples = design.integer("samples");
+    const long long seed = design.integer("seed");
+    if (seed < 0) design.fail("seed", "must be an integer >= 0");
+    s.design.seed = static_cast<std::uint64_t>(seed);
+  }
+  design.finish();
+
+  // [[vary]]
+  if (!top.has("vary")) top.fail("vary", "missing: give one [[vary]] table per parameter to vary");
+  const toml::value& vary = doc.root.as_table().at("vary");
+  if (!vary.is_array()) top.fail("vary", "expected [[vary]] tables (an array of tables)");
+  std::vector<TomlTable> tables;
+  for (std::size_t i = 0; i < vary.as_array().size(); ++i) {
+    const toml::value& e = vary.as_array()[i];
+    if (!e.is_table()) top.fail("vary", "expected [[vary]] tables (an array of tables)");
+    tables.emplace_back(&e, name, "vary[" + std::to_string(i + 1) + "]");
+    TomlTable& v = tables.back();
+    SweepAxis a;
+    a.key = v.string("key");
+    s.axis_lines.push_back(line_of(e.as_table().at("key")));
+    a.from = v.number("from");
+    a.to = v.number("to");
+    const std::string scale = v.string_or("scale", "linear");
+    if (!parse_axis_scale(scale, a.scale)) v.fail("scale", "must be \"linear\" or \"log\" (got \"" + scale + "\")");
+    if (grid)
+      a.count = v.integer("count");
+    else if (v.has("count"))
+      v.fail("count", "is for grids; a " + kind + " design draws [design] samples");
+    v.finish();
+    s.design.axes.push_back(a);
+  }
+  DesignProblem problem;
+  if (!s.design.is_valid(&problem)) {
+    if (problem.axis >= 0) tables[static_cast<std::size_t>(problem.axis)].fail(problem.key, problem.what);
+    if (problem.key == "vary") top.fail("vary", problem.what);
+    design.fail(problem.key, problem.what);
+  }
+  return s;
+}
+
+SweepFile load_sweep_file(const std::string& path) { return sweep_file_from_text(read_text_file(path), path); }
+
+SweepCases::SweepCases(const SweepFile& sweep) : sweep_(sweep) {
+  // 1. The base case, with the sweep's fixed overrides.
+  try {
+    base_doc_ = parse_toml_text(read_text_file(sweep.base_file), sweep.base_file, sweep.base_sets);
+    base_ = stone_case_from_document(base_doc_);
+  } catch (const InputError& e) {
+    throw_input_error(sweep.file, sweep.base_line, "base", std::string("the base case does not load: ") + e.what());
+  }
+  if (base_.water && runs_reference(sweep.solvers))
+    throw_input_error(sweep.file, sweep.solvers_line, "solvers",
+                      "the base case has [water]; the CVODE reference supports still water only");
+
+  // 2. Every varied key must hold a number where the base case has it.
+  for (std::size_t k = 0; k < sweep.design.axes.size(); ++k) {
+    const std::string& key = sweep.design.axes[k].key;
+    const toml::value* node = &base_doc_.root;
+    std::size_t start = 0;
+    while (node && node->is_table()) {
+      const std::size_t dot = key.find('.', start);
+      const std::string part = key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+      const auto& t = node->as_table();
+      node = t.count(part) ? &t.at(part) : nullptr;
+      if (dot == std::string::npos) break;
+      start = dot + 1;
+    }
+    if (node && !node->is_integer() && !node->is_floating())
+      throw_input_error(sweep.file, sweep.axis_lines[k], "vary[" + std::to_string(k + 1) + "].key",
+                        "\"" + key + "\" is not a numeric key (the base case gives it a " +
+                            (node->is_string() ? "string" : node->is_table() ? "table" : "non-number") + ")");
+  }
+
+  // 3. The case at the design's extreme points and first throws.
+  const SweepDesign& d = sweep.design;
+  std::vector<std::vector<double>> probes;
+  const std::size_t n = d.axes.size();
+  if (n <= 10) {
+    for (std::size_t mask = 0; mask < (std::size_t{1} << n); ++mask) {
+      std::vector<double> p(n);
+      for (std::size_t k = 0; k < n; ++k) p[k] = (mask >> k & 1) ? d.axes[k].to : d.axes[k].from;
+      probes.push_back(p);
+    }
+  } else {
+    for (std::size_t k = 0; k < n; ++k)
+      for (bool hi : {false, true}) {
+        std::vector<double> p(n);
+        for (std::size_t j = 0; j < n; ++j) p[j] = d.axes[j].from;
+        p[k] = hi ? d.axes[k].to : d.axes[k].from;
+        probes.push_back(p);
+      }
+  }
+  for (std::size_t i = 0; i < std::min<std::size_t>(d.size(), 4); ++i) probes.push_back(d.point(i));
+  if (d.kind == DesignKind::grid)
+    for (std::size_t k = 0; k < n; ++k)
+      if (d.axes[k].count > 2) {  // an interior grid value (an integer key refuses a fraction)
+        std::vector<double> p = d.point(0);
+        p[k] = d.grid_values(k)[1];
+        probes.push_back(p);
+      }
+  for (const auto& p : probes) {
+    try {
+      at(p);
+    } catch (const InputError& e) {
+      // Blame the varied key the case reader named, or the first one.
+      const std::string what = e.what();
+      std::size_t k = 0;
+      for (std::size_t j = 0; j < n; ++j)
+        if (what.find(d.axes[j].key) != std::string::npos) k = j;
+      std::string values;
+      for (std::size_t j = 0; j < n; ++j) values += (j ? ", " : "") + sweep_override(d.axes[j].key, p[j]);
+      throw_input_error(sweep.file, sweep.axis_lines[k], "vary[" + std::to_string(k + 1) + "]",
+                        "the base case refuses the throw at " + values + ": " + what);
+    }
+  }
+}
+
+StoneCase SweepCases::at(const std::vector<double>& point) const {
+  TomlDocument doc = base_doc_;  // a copy of the parsed base: ~20× cheaper than parsing its text
+  for (std::size_t k = 0; k < point.size(); ++k) {
+    const double v = point[k];
+    set_value(doc.root, doc.file, sweep_.design.axes[k].key,
+              as_integer(v) ? toml::value(static_cast<toml::integer>(v)) : toml::value(v));
+  }
+  return stone_case_from_document(doc);
+}
+
+}  // namespace stoneskip

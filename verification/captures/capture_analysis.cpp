@@ -1,0 +1,232 @@
+#include "verification/captures/capture_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "verification/captures/capture_chain.hpp"
+
+namespace stoneskip {
+
+bool ReleaseKinematics::finite() const {
+  return velocity_m_s.allFinite() && accel_velocity_m_s.allFinite() && lever_velocity_m_s.allFinite() &&
+         measured.velocity_m_s.allFinite() && measured.omega_body_rad_s.allFinite() && std::isfinite(measured.rise_m) &&
+         omega_body_rad_s.allFinite() && std::isfinite(height_m) && std::isfinite(stone_orientation.w()) &&
+         stone_orientation.vec().allFinite();
+}
+
+bool CaptureOptions::is_valid(std::string* why) const {
+  auto fail = [&](const std::string& w) {
+    if (why) *why = w;
+    return false;
+  };
+  if (!(saturation_g > 0 && saturation_g < 1000)) return fail("saturation_g must be in (0, 1000) g");
+  if (!(max_accel_g >= saturation_g && max_accel_g < 1000)) return fail("max_accel_g must be at least saturation_g and below 1000 g");
+  if (!(gravity_m_s2 > 0 && gravity_m_s2 < 100)) return fail("gravity_m_s2 must be in (0, 100)");
+  if (!(min_still_s > 0 && min_still_s <= 10)) return fail("min_still_s must be in (0, 10] s");
+  if (!(still_accel_tol_g > 0 && still_accel_tol_g < 1)) return fail("still_accel_tol_g must be in (0, 1) g");
+  if (!(still_rate_tol_deg_s > 0 && still_rate_tol_deg_s < 100)) return fail("still_rate_tol_deg_s must be in (0, 100) deg/s");
+  if (!(accel_noise_g >= 0 && accel_noise_g < 1)) return fail("accel_noise_g must be in [0, 1) g");
+  if (!(accel_bias_g >= 0 && accel_bias_g < 1)) return fail("accel_bias_g must be in [0, 1) g");
+  if (!(gyro_noise_deg_s >= 0 && gyro_noise_deg_s < 100)) return fail("gyro_noise_deg_s must be in [0, 100) deg/s");
+  if (!(gyro_scale_rel_uncertainty >= 0 && gyro_scale_rel_uncertainty < 1))
+    return fail("gyro_scale_rel_uncertainty must be in [0, 1)");
+  if (members < 0 || members > 100000) return fail("members must be in [0, 100000]");
+  if (!(timing.gap_factor > 1 && timing.gap_factor < 100)) return fail("timing.gap_factor must be in (1, 100)");
+  if (!(timing.regular_max_residual_intervals > 0 && timing.regular_max_residual_intervals <= 1))
+    return fail("timing.regular_max_residual_intervals must be in (0, 1]");
+  return thrower.is_valid(why) && rules.is_valid(why);
+}
+
+Mounting resolve_mounting(const Trace& trace, const std::vector<std::string>& overrides) {
+  Mounting m;
+  for (const auto& s : trace.mounting) apply_mounting_setting(m, s, trace.source);
+  for (const auto& s : overrides) apply_mounting_setting(m, s, "--mount");
+  return m;
+}
+
+VirtualThrowerOptions resolve_thrower(const Trace& trace, const std::vector<std::string>& overrides) {
+  VirtualThrowerOptions o;
+  for (const auto& s : trace.thrower) apply_thrower_setting(o, s, trace.source);
+  for (const auto& s : overrides) apply_thrower_setting(o, s, "--thrower");
+  return o;
+}
+
+namespace {
+
+const char* axis_name(int i) { return i == 0 ? "X" : i == 1 ? "Y" : "Z"; }
+
+double percentile(std::vector<double> v, double p) {
+  if (v.empty()) return std::nan("");
+  std::sort(v.begin(), v.end());
+  const double x = p * double(v.size() - 1);
+  const std::size_t i = std::size_t(x);
+  const double f = x - double(i);
+  return i + 1 < v.size() ? v[i] * (1 - f) + v[i + 1] * f : v[i];
+}
+
+// The nominal value joined with the 2.5–97.5 % range of the members.
+template <class Get>
+Interval interval_of(const ReleaseKinematics& nominal, const std::vector<ReleaseKinematics>& e, Get get) {
+  std::vector<double> v;
+  for (const auto& m : e)
+    if (std::isfinite(get(m))) v.push_back(get(m));
+  const double x = get(nominal);
+  Interval r{x, x, x};
+  if (v.empty()) return r;
+  r.low = std::min(x, percentile(v, 0.025));
+  r.high = std::max(x, percentile(v, 0.975));
+  return r;
+}
+
+// Step 3: the release from the action button (or the file's end).
+void locate_release(CaptureAnalysis& a, const ChainInput& in, const Trace& trace, unsigned button) {
+  const std::size_t n = in.t_s.size();
+  if (n < 2) return;
+  if (trace.has_buttons) {
+    std::size_t last_down = n;
+    for (std::size_t k = n; k-- > 0;)
+      if (in.buttons[k] & button) {
+        last_down = k;
+        break;
+      }
+    if (last_down == n) return;  // no press
+    a.press_found = a.release_found = true;
+    a.release_sample = last_down;
+    if (last_down + 1 < n) {
+      a.release_t_low_s = in.t_s[last_down];
+      a.release_t_high_s = in.t_s[last_down + 1];
+      a.release_t_s = 0.5 * (a.release_t_low_s + a.release_t_high_s);
+    } else {
+      a.release_at_end = true;
+    }
+  } else {
+    a.press_found = a.release_found = a.release_at_end = true;
+  }
+  if (a.release_at_end) {
+    // The button went up after the last sample, before the next report would have come.
+    a.release_sample = n - 1;
+    a.release_t_low_s = in.t_s[n - 1];
+    a.release_t_high_s = in.t_s[n - 1] + (in.period_s > 0 ? in.period_s : in.t_s[n - 1] - in.t_s[n - 2]);
+    a.release_t_s = 0.5 * (a.release_t_low_s + a.release_t_high_s);
+  }
+}
+
+// Step 4 and the swing between the still part and the release.
+void locate_still_part(CaptureAnalysis& a, const ChainInput& in, const CaptureOptions& o) {
+  if (!a.release_found) return;
+  a.still_found = find_still(in, o, a.release_sample, a.still_begin, a.still_end);
+  if (!a.still_found) return;
+  const std::size_t n = in.t_s.size();
+  a.still_t0_s = in.t_s[a.still_begin];
+  a.still_t1_s = in.t_s[a.still_end];
+  for (std::size_t k = a.still_end; k <= std::min(a.release_sample + 1, n - 1); ++k) {
+    ++a.swing_samples;
+    if (in.flags[k] & kAccelSaturated) ++a.saturated_in_swing;
+    if (in.flags[k] & kGyroSaturated) a.gyro_saturated_in_swing = true;
+  }
+  a.clipped = a.saturated_in_swing > 0;
+  for (int i = 0; i < 3; ++i) {
+    bool on_axis = false;
+    for (const auto& s : a.spans)
+      if (s.axis == i && s.t1_s >= a.still_t1_s && s.t0_s <= a.release_t_high_s) on_axis = true;
+    if (on_axis) a.clipped_axes += std::string(a.clipped_axes.empty() ? "" : ", ") + axis_name(i);
+  }
+}
+
+// Steps 5–8 for the nominal throw, the accelerometer's bounds and the ensemble, with intervals.
+void estimate_throw(CaptureAnalysis& a, const ChainInput& in, const CaptureOptions& o) {
+  ChainDiagnostics d;
+  a.nominal = run_chain(in, o, Perturbation{}, &a.series, &d);
+  a.nominal_computed = true;
+  a.still_accel_g = d.still_accel_g;
+  a.still_accel_error_g = d.still_accel_g - 1.0;
+  a.gyro_bias_deg_s = d.gyro_bias_deg_s;
+  if (!a.nominal.finite()) return;
+  a.accel_lower = a.nominal;
+  a.accel_upper = a.clipped ? run_chain(in, o, Perturbation{Perturb::none, ClipFill::at_max, 0}, nullptr, nullptr) : a.nominal;
+  std::mt19937_64 seeds(o.seed);
+  for (int m = 0; m < o.members; ++m) {
+    const Perturbation p{Perturb::random, a.clipped ? ClipFill::random_bump : ClipFill::as_recorded, seeds()};
+    const ReleaseKinematics r = run_chain(in, o, p, nullptr, nullptr);
+    if (r.finite()) a.ensemble.push_back(r);
+  }
+  const auto& e = a.ensemble;
+  const ReleaseKinematics& nom = a.nominal;
+  using R = const ReleaseKinematics&;
+  a.speed_m_s = interval_of(nom, e, [](R r) { return r.speed_m_s; });
+  a.attack_angle_deg = interval_of(nom, e, [](R r) { return r.attack_angle_deg; });
+  a.path_angle_deg = interval_of(nom, e, [](R r) { return r.path_angle_deg; });
+  a.spin_rev_s = interval_of(nom, e, [](R r) { return r.spin_rev_s; });
+  a.height_m = interval_of(nom, e, [](R r) { return r.height_m; });
+  a.accel_speed_m_s = interval_of(nom, e, [](R r) { return r.accel_speed_m_s; });
+  a.lever_speed_m_s = interval_of(nom, e, [](R r) { return r.lever_speed_m_s; });
+  a.measured_speed_m_s = interval_of(nom, e, [](R r) { return r.measured_speed_m_s; });
+  a.measured_spin_rev_s = interval_of(nom, e, [](R r) { return r.measured_spin_rev_s; });
+  a.rise_m = interval_of(nom, e, [](R r) { return r.measured.rise_m; });
+  if (a.clipped) {
+    // The accelerometer alone bounds the speed and the rise: clipped spans as recorded … at
+    // max_accel_g. The measured (and so the virtual) speed spans them and the lever arm's interval.
+    auto widen = [](Interval& v, double x, double y) {
+      v.low = std::min({v.low, x, y});
+      v.high = std::max({v.high, x, y});
+    };
+    widen(a.accel_speed_m_s, a.accel_lower.accel_speed_m_s, a.accel_upper.accel_speed_m_s);
+    widen(a.rise_m, a.accel_lower.measured.rise_m, a.accel_upper.measured.rise_m);
+    widen(a.measured_speed_m_s, a.accel_speed_m_s.low, a.accel_speed_m_s.high);
+    widen(a.measured_speed_m_s, a.lever_speed_m_s.low, a.lever_speed_m_s.high);
+    const double scale = o.thrower.speed_scale;
+    widen(a.speed_m_s, scale * a.measured_speed_m_s.low, scale * a.measured_speed_m_s.high);
+    if (o.thrower.height_mapping == HeightMapping::still_part_height)
+      widen(a.height_m, o.thrower.still_height_m + a.rise_m.low - o.thrower.height_uncertainty_m,
+            o.thrower.still_height_m + a.rise_m.high + o.thrower.height_uncertainty_m);
+  }
+  a.speed_difference_m_s = nom.accel_speed_m_s - nom.lever_speed_m_s;
+}
+
+}  // namespace
+
+CaptureAnalysis analyse_capture(const Trace& trace, const CaptureOptions& options) {
+  CaptureAnalysis a;
+  a.source = trace.source;
+  a.format = trace.format;
+  a.trace = trace;
+  a.options = options;
+  a.notes = trace.notes;
+  // 1–2. Timing, the kept samples and their saturation flags.
+  a.timing = analyse_timing(trace, options.timing);
+  ChainInput in = make_chain_input(trace, a.timing, options);
+  const std::size_t n = in.t_s.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    for (int i = 0; i < 3; ++i)
+      if (in.flags[k] & (kSaturatedX << i)) ++a.saturated_samples[i];
+    if (in.flags[k] & kAccelSaturated) ++a.saturated_any;
+  }
+  a.saturated_fraction = n ? double(a.saturated_any) / double(n) : 0.0;
+  a.spans = saturated_spans(in);
+  a.gyro_range_switches = count_range_switches(in);
+  a.series.t_s = in.t_s;
+  a.series.accel_g = in.accel_g;
+  a.series.buttons = in.buttons;
+  a.series.flags = in.flags;
+  // 3–4. Release and still part.
+  locate_release(a, in, trace, options.release_button);
+  locate_still_part(a, in, options);
+  in.still_begin = a.still_begin;
+  in.still_end = a.still_end;
+  in.release_sample = a.release_sample;
+  in.release_t_s = a.release_t_s;
+  in.release_t_low_s = a.release_t_low_s;
+  in.release_t_high_s = a.release_t_high_s;
+  in.use_lever = a.clipped;
+  // 5–8. The throw, when the capture holds what it needs.
+  const TimingStats& ts = a.timing.stats;
+  const bool preconditions = trace.has_gyro && n >= options.rules.min_samples && ts.ok &&
+                             ts.rate_hz >= options.rules.min_rate_hz && a.release_found && a.still_found &&
+                             a.release_t_high_s - a.release_t_low_s <= options.rules.max_release_gap_s;
+  if (preconditions) estimate_throw(a, in, options);
+  // 9. The verdict.
+  judge_capture(a, options.rules);
+  return a;
+}
+
+}  // namespace stoneskip

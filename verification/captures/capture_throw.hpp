@@ -1,0 +1,42 @@
+#pragma once
+// A capture's throw through the solvers (spec §1.7: a throw given as a full state): the nominal
+// release state through the real-time model and/or the CVODE reference, and the ensemble of
+// perturbed release states (capture_analysis.hpp) through the real-time model only (cheap), which
+// turns the capture's uncertainty into a distribution of bounce counts.
+#include <functional>
+#include <map>
+#include <optional>
+
+#include "solvers/realtime/stone_stepper.hpp"
+#include "solvers/reference/cvode_stone.hpp"
+#include "verification/captures/capture_analysis.hpp"
+
+namespace stoneskip {
+
+// The stone's initial state from a release: position (0, 0, height), the release velocity, the
+// stone's orientation and its body angular velocity (rigid_state.hpp).
+RigidState capture_initial_state(const Stone& stone, const ReleaseKinematics& r);
+
+struct CaptureSimulationOptions {
+  bool realtime = true;
+  bool reference = true;
+  bool ensemble = true;        // the ensemble through the real-time model
+  RealtimeOptions realtime_options;
+  ReferenceOptions reference_options;
+  // Called after each ensemble member (done, total); empty: no progress. Nothing here prints.
+  std::function<void(std::size_t done, std::size_t total)> progress;
+};
+
+struct CaptureSimulation {
+  std::optional<ThrowResult> realtime;   // nominal throw
+  std::optional<ThrowResult> reference;  // nominal throw
+  std::vector<int> ensemble_bounces;     // one per ensemble member (real-time model)
+  std::map<int, int> bounce_histogram;   // bounces → members
+  double ensemble_cpu_s = 0;
+  int bounces_low = 0, bounces_high = 0, bounces_median = 0;  // 2.5 %, 97.5 %, 50 % of the ensemble
+};
+
+CaptureSimulation simulate_capture(const Stone& stone, const Environment& env, const CaptureAnalysis& a,
+                                   const CaptureSimulationOptions& options);
+
+}  // namespace stoneskip

@@ -1,0 +1,48 @@
+#pragma once
+// The verdict on a capture: unusable, usable with caveats, or usable, with the reasons — decided
+// from the analysis's findings alone by the thresholds below, each with why it is where it is.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace stoneskip {
+
+enum class Verdict { usable, usable_with_caveats, unusable };
+const char* to_string(Verdict v);
+
+struct CaptureVerdictRules {
+  // --- unusable ---
+  // A swing of ≈ 0.2 s at 100 Hz and a still part of min_still_s need more than this many samples.
+  std::size_t min_samples = 10;
+  // A throw's swing lasts ≈ 0.1–0.2 s (spec §4: 7–20 g over 0.1–0.15 s); below 20 Hz it holds 2–4
+  // samples and the rate integration cannot follow it.
+  double min_rate_hz = 20.0;
+  // The release falling in a longer gap is interpolated over half a swing: its state is unknown.
+  double max_release_gap_s = 0.1;
+  // Still-part |a| off 1 g by more: the calibration is wrong (3× the caveat level; an ADXL330
+  // zero-g offset alone stays within ≈ 0.05 g after the factory calibration).
+  double calibration_unusable_g = 0.15;
+  // --- caveats ---
+  // Still-part |a| off 1 g by more: check the calibration (a 0.05 g offset tilts gravity by 3°).
+  double calibration_caveat_g = 0.05;
+  // More reports lost than this fraction: the integration bridges gaps by straight lines.
+  double lost_fraction_caveat = 0.02;
+  // Interval jitter above 3 ms (30 % of a 100 Hz period): the clock is poorly known.
+  double jitter_caveat_s = 0.003;
+  // Accelerometer and lever-arm speeds differing by more than this fraction of the speed, without
+  // clipping: the mounting's lever arm is probably wrong (the lever model ignores the pivot's own
+  // motion, typically 10–20 % of a side-arm throw's speed).
+  double accel_lever_disagreement = 0.25;
+
+  bool is_valid(std::string* why) const;
+};
+
+struct CaptureAnalysis;
+struct Trace;
+
+// The verdict and its reasons (unusable reasons first, then caveats), from a's findings; notes
+// (information that does not change the verdict) are appended to a.notes. Fills a.verdict,
+// a.reasons.
+void judge_capture(CaptureAnalysis& a, const CaptureVerdictRules& rules);
+
+}  // namespace stoneskip

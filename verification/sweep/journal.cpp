@@ -1,0 +1,216 @@
+#include "verification/sweep/journal.hpp"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <stdexcept>
+
+#include "tools/io/input_error.hpp"
+
+namespace stoneskip {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::uint32_t kMagic = 0x314a5753;  // "SWJ1" little-endian
+constexpr std::uint32_t kHeader = 1, kRows = 2;
+constexpr std::size_t kFrame = 4 + 4 + 8 + 8;  // magic, type, length, checksum
+
+double now_s() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+std::string byte_order() {
+  const std::uint32_t one = 1;
+  unsigned char first = 0;
+  std::memcpy(&first, &one, 1);
+  return first ? "little-endian, 8-byte doubles" : "big-endian, 8-byte doubles";
+}
+
+JournalIdentity with_byte_order(const JournalIdentity& id) {
+  JournalIdentity out = id;
+  out.emplace_back("byte_order", byte_order());
+  return out;
+}
+
+std::vector<unsigned char> encode_identity(const JournalIdentity& id) {
+  // Reuses the batch encoding: one note per field (solver = name, detail = value).
+  RowBatch b;
+  for (const auto& [name, value] : id) b.notes.push_back({0, name, value});
+  return encode(b);
+}
+
+int lock_or_fail(const fs::path& path, int fd) {
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd);
+    throw_input_error(path.string(), 0, "", "another sweep is writing this journal (it is locked)");
+  }
+  return fd;
+}
+
+// Reads records from the start; returns the offset just past the last good record.
+std::size_t read_records(const std::vector<unsigned char>& bytes, std::vector<std::pair<std::uint32_t, std::vector<unsigned char>>>& out) {
+  std::size_t pos = 0;
+  while (bytes.size() - pos >= kFrame) {
+    std::uint32_t magic = 0, type = 0;
+    std::uint64_t len = 0, sum = 0;
+    std::memcpy(&magic, &bytes[pos], 4);
+    std::memcpy(&type, &bytes[pos + 4], 4);
+    std::memcpy(&len, &bytes[pos + 8], 8);
+    if (magic != kMagic || (type != kHeader && type != kRows) || len > bytes.size() - pos - kFrame) break;
+    const unsigned char* payload = &bytes[pos + 16];
+    std::memcpy(&sum, payload + len, 8);
+    if (sum != fnv1a64(payload, len)) break;
+    out.emplace_back(type, std::vector<unsigned char>(payload, payload + len));
+    pos += kFrame + len;
+  }
+  return pos;
+}
+
+}  // namespace
+
+fs::path journal_path_for(const fs::path& result_file) {
+  fs::path p = result_file;
+  p += ".journal";
+  return p;
+}
+
+SweepJournal::SweepJournal(fs::path path, int fd, double sync_interval_s)
+    : path_(std::move(path)), fd_(fd), sync_interval_s_(sync_interval_s), last_sync_s_(now_s()) {}
+
+// Moved only before the first append (create/resume return it by value): no sync thread yet.
+SweepJournal::SweepJournal(SweepJournal&& o) noexcept
+    : path_(std::move(o.path_)), fd_(o.fd_), sync_interval_s_(o.sync_interval_s_), last_sync_s_(o.last_sync_s_),
+      write_wall_s_(o.write_wall_s_) {
+  o.fd_ = -1;
+}
+
+SweepJournal::~SweepJournal() {
+  stop_syncing();
+  if (fd_ >= 0) {
+    ::fdatasync(fd_);
+    ::close(fd_);
+  }
+}
+
+void SweepJournal::request_sync() {
+  if (!syncer_.joinable()) {
+    syncer_ = std::thread([this] {
+      std::unique_lock<std::mutex> lock(sync_mutex_);
+      for (;;) {
+        sync_wanted_.wait(lock, [this] { return sync_pending_ || stopping_; });
+        if (stopping_) return;
+        sync_pending_ = false;
+        lock.unlock();
+        ::fdatasync(fd_);
+        lock.lock();
+      }
+    });
+  }
+  std::lock_guard<std::mutex> lock(sync_mutex_);
+  sync_pending_ = true;
+  sync_wanted_.notify_one();
+}
+
+void SweepJournal::stop_syncing() {
+  if (!syncer_.joinable()) return;
+  {
+    std::lock_guard<std::mutex> lock(sync_mutex_);
+    stopping_ = true;
+    sync_wanted_.notify_one();
+  }
+  syncer_.join();
+}
+
+SweepJournal SweepJournal::create(const fs::path& path, const JournalIdentity& identity, double sync_interval_s) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_APPEND | O_CLOEXEC, 0644);
+  if (fd < 0)
+    throw_input_error(path.string(), 0, "", std::string("cannot create the sweep journal: ") + std::strerror(errno));
+  SweepJournal j(path, lock_or_fail(path, fd), sync_interval_s);
+  j.write_record(kHeader, encode_identity(with_byte_order(identity)));
+  j.sync();
+  return j;
+}
+
+SweepJournal SweepJournal::resume(const fs::path& path, const JournalIdentity& identity, double sync_interval_s,
+                                  JournalRecovery& recovered) {
+  const int fd = ::open(path.c_str(), O_RDWR | O_APPEND | O_CLOEXEC);
+  if (fd < 0) throw_input_error(path.string(), 0, "", std::string("cannot open the sweep journal: ") + std::strerror(errno));
+  SweepJournal j(path, lock_or_fail(path, fd), sync_interval_s);
+  std::vector<unsigned char> bytes(static_cast<std::size_t>(::lseek(fd, 0, SEEK_END)));
+  if (::pread(fd, bytes.data(), bytes.size(), 0) != static_cast<ssize_t>(bytes.size()))
+    throw_input_error(path.string(), 0, "", "cannot read the sweep journal");
+  std::vector<std::pair<std::uint32_t, std::vector<unsigned char>>> records;
+  const std::size_t good = read_records(bytes, records);
+  if (records.empty() || records.front().first != kHeader)
+    throw_input_error(path.string(), 0, "", "not a sweep journal (no header record): delete it and run without --resume");
+  RowBatch header;
+  if (!decode(records.front().second.data(), records.front().second.size(), header))
+    throw_input_error(path.string(), 0, "", "the journal's header is malformed: delete it and run without --resume");
+  const JournalIdentity want = with_byte_order(identity);
+  for (const auto& [name, value] : want) {
+    const ThrowNote* have = nullptr;
+    for (const auto& n : header.notes)
+      if (n.solver == name) have = &n;
+    if (!have || have->detail != value)
+      throw_input_error(path.string(), 0, name,
+                        "differs from this sweep's (the journal belongs to another sweep, file version or build): "
+                        "delete it and run without --resume");
+  }
+  for (std::size_t i = 1; i < records.size(); ++i) {
+    RowBatch b;
+    if (!decode(records[i].second.data(), records[i].second.size(), b))
+      throw_input_error(path.string(), 0, "", "record " + std::to_string(i) + " is malformed despite its checksum");
+    recovered.rows.append(b);
+    ++recovered.records;
+  }
+  recovered.dropped_bytes = bytes.size() - good;
+  if (recovered.dropped_bytes > 0 && ::ftruncate(fd, static_cast<off_t>(good)) != 0)
+    throw_input_error(path.string(), 0, "", std::string("cannot cut the journal's torn tail: ") + std::strerror(errno));
+  return j;
+}
+
+void SweepJournal::write_record(std::uint32_t type, const std::vector<unsigned char>& payload) {
+  const double start = now_s();
+  std::vector<unsigned char> rec(kFrame + payload.size());
+  const std::uint64_t len = payload.size(), sum = fnv1a64(payload.data(), payload.size());
+  std::memcpy(&rec[0], &kMagic, 4);
+  std::memcpy(&rec[4], &type, 4);
+  std::memcpy(&rec[8], &len, 8);
+  if (!payload.empty()) std::memcpy(&rec[16], payload.data(), payload.size());
+  std::memcpy(&rec[16 + payload.size()], &sum, 8);
+  std::size_t done = 0;
+  while (done < rec.size()) {
+    const ssize_t w = ::write(fd_, rec.data() + done, rec.size() - done);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) throw std::runtime_error("cannot append to the sweep journal " + path_.string() + ": " + std::strerror(errno));
+    done += static_cast<std::size_t>(w);
+  }
+  write_wall_s_ += now_s() - start;
+  if (now_s() - last_sync_s_ >= sync_interval_s_) {
+    last_sync_s_ = now_s();
+    request_sync();
+  }
+}
+
+void SweepJournal::append(const RowBatch& b) { write_record(kRows, encode(b)); }
+
+void SweepJournal::sync() {
+  ::fdatasync(fd_);
+  last_sync_s_ = now_s();
+}
+
+void SweepJournal::close_and_remove() {
+  stop_syncing();
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
+  std::error_code ec;
+  fs::remove(path_, ec);
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,80 @@
+#pragma once
+// The journal of a running sweep: "<result>.h5.journal", an append-only file of checksummed
+// records beside the result file, written by rank 0 as throws finish. The result file itself is
+// written whole (atomically) at the end; the journal is then removed.
+//
+// Why a journal and not an extendible HDF5 dataset: a process killed inside an HDF5 write can
+// leave the file's metadata unreadable, while an append-only file killed at any byte keeps every
+// record before the torn one, and each record carries its length and an FNV-1a checksum, so a
+// torn or garbled tail is recognised and cut off on resume.
+//
+// Record: u32 magic "SWJ1", u32 type (1 header, 2 rows), u64 payload bytes, payload, u64 FNV-1a
+// of the payload. The header's payload is a list of (name, value) strings — the sweep file's
+// text, the base case's text, the code version and a fingerprint of the executable, the columns,
+// the byte order — which a resume must match exactly; a rows payload is an encoded RowBatch.
+//
+// Durability: every append is one write(2) (a SIGKILL loses nothing already appended: the data is
+// in the kernel's page cache); fdatasync(2) runs at most once per sync interval (a lost node or
+// power cut loses at most that interval), on a thread of its own so that a slow disk never stalls
+// the scheduler that appends. The file is locked (flock) while a sweep writes it, so two runs
+// cannot interleave records.
+#include <condition_variable>
+#include <filesystem>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "verification/sweep/row_batch.hpp"
+
+namespace stoneskip {
+
+using JournalIdentity = std::vector<std::pair<std::string, std::string>>;
+
+std::filesystem::path journal_path_for(const std::filesystem::path& result_file);
+
+struct JournalRecovery {
+  RowBatch rows;                 // every complete record's rows and notes, in file order
+  std::size_t records = 0;
+  std::size_t dropped_bytes = 0; // a torn or corrupt tail that was cut off
+};
+
+class SweepJournal {
+ public:
+  // A new journal; InputError if it exists or cannot be created or locked.
+  static SweepJournal create(const std::filesystem::path& path, const JournalIdentity& identity, double sync_interval_s);
+  // An existing journal, for --resume: checks it was written for the same identity (InputError
+  // naming the first field that differs), reads every complete record, and truncates a torn tail
+  // so that appends continue after the last good record.
+  static SweepJournal resume(const std::filesystem::path& path, const JournalIdentity& identity, double sync_interval_s,
+                             JournalRecovery& recovered);
+
+  SweepJournal(SweepJournal&&) noexcept;
+  SweepJournal& operator=(SweepJournal&&) = delete;
+  SweepJournal(const SweepJournal&) = delete;
+  ~SweepJournal();
+
+  void append(const RowBatch& b);  // throws std::runtime_error on a failed write
+  void sync();                      // fdatasync now, on the calling thread
+  double write_wall_s() const { return write_wall_s_; }  // spent appending (the syncs run aside)
+  const std::filesystem::path& path() const { return path_; }
+  void close_and_remove();
+
+ private:
+  SweepJournal(std::filesystem::path path, int fd, double sync_interval_s);
+  void write_record(std::uint32_t type, const std::vector<unsigned char>& payload);
+  void request_sync();  // wakes the sync thread (started on first use, once the journal is in place)
+  void stop_syncing();
+  std::filesystem::path path_;
+  int fd_ = -1;
+  double sync_interval_s_ = 1;
+  double last_sync_s_ = 0;
+  double write_wall_s_ = 0;
+  std::thread syncer_;
+  std::mutex sync_mutex_;
+  std::condition_variable sync_wanted_;
+  bool sync_pending_ = false, stopping_ = false;
+};
+
+}  // namespace stoneskip
