@@ -1,6 +1,6 @@
 // Property (issue 10), end to end: for every key documented in cases/README.md, a value the
 // documentation makes bad goes through the command that reads it (`run` with --out for stone
-// cases and scenes, `wave` for wave cases, `regress` for baselines) and must give exit 2, exactly
+// cases and scenes, `wave` for wave cases, `regress` for baselines, `sweep` for sweep files) and must give exit 2, exactly
 // one line on stderr naming the key, nothing on stdout, no output or temporary file, within 30 s.
 // Oracle: the README (tools/scene/documented_keys.hpp). One bad value per key, chosen by the
 // key's position among its bad values so that every kind (types, NaN, inf, 1e±400, 64-bit
@@ -107,6 +107,14 @@ BOOST_AUTO_TEST_CASE(one_bad_value_per_documented_key_through_its_command) {
       else if (k.key == "radius_m") base = "cases/wave_ring_paper_eq11.toml";
       else if (k.key == "wavelength_m" || k.key == "angle_deg") base = "cases/wave_plane_wave_30deg.toml";
       args = "wave " + base + " --set " + shell_quoted(k.full() + "=" + v.text);
+    } else if (k.block == "sweep") {
+      // The README's sweep block, its base made absolute, the key's line rewritten.
+      std::string text = sweep_text_with(k, v.text);
+      BOOST_REQUIRE(!text.empty());
+      if (text.find("base = \"../") != std::string::npos)
+        text = replace_once(text, "base = \"../", "base = \"" + (fs::current_path() / "cases").string() + "/");
+      std::ofstream(dir / "sweep.toml") << text;
+      args = "sweep " + (dir / "sweep.toml").string() + " --quiet --out " + (out / "x.h5").string();
     } else {
       std::string text = baseline;
       const auto p = text.find("\n" + k.key + " = ");
@@ -119,12 +127,13 @@ BOOST_AUTO_TEST_CASE(one_bad_value_per_documented_key_through_its_command) {
     BOOST_TEST_CONTEXT(k.block << ": " << k.full() << " = " << v.text << " (" << v.why << ")") {
       BOOST_TEST(r.status == 2, "exit " << r.status << ": " << r.err);
       BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, r.err);
-      BOOST_TEST(r.err.find(k.section + ".") != std::string::npos, r.err);
+      BOOST_TEST(r.err.find(k.block == "sweep" ? k.key : k.section + ".") != std::string::npos, r.err);
       BOOST_TEST(r.out.empty(), r.out);
       BOOST_TEST(fs::is_empty(out));
     }
   }
   BOOST_TEST(per_block["stone"] + per_block["scene"] + per_block["wave"] + per_block["baseline"] >= 85);
+  BOOST_TEST(per_block["sweep"] == 12);
   fs::remove_all(dir);
 }
 

@@ -33,9 +33,11 @@
 #include "tools/capture/synthetic_capture.hpp"
 #include "tools/capture/trace_csv.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "tools/cli/limit_options.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/progress.hpp"
+#include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/stone_case.hpp"
 #include "tools/scene/throw_output.hpp"
 
@@ -66,6 +68,7 @@ struct CaptureArgs {
   bool no_simulate = false;
   bool strict = false;
   bool progress = false;
+  ResourceLimits limits;
 };
 
 void add_read(CLI::App* cmd, CaptureArgs& a) {
@@ -195,7 +198,20 @@ void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
 void validate(const CaptureArgs& a) {
   std::optional<StoneCase> c;
   if (!a.no_simulate) c = load_stone_case(a.case_file, a.sets);
-  if (!a.out.empty()) fs::create_directories(a.out);
+  if (a.members < 0) throw_input_error("--members", 0, "", "must be >= 0 (got " + std::to_string(a.members) + ")");
+  if (c) {
+    // Limits before any work (cases/README.md, Limits): every capture's ensemble is a throw per member.
+    ResourceEstimate e = estimate_run(*c, RunSolvers{true, !a.no_reference, false});
+    const double members = static_cast<double>(a.members) * static_cast<double>(a.files.size());
+    e.add_work(members * e.work.front().count, kMaxRegressTriangleEvaluations,
+               "triangle evaluations in the ensembles (" + std::to_string(a.files.size()) + " captures × " +
+                   std::to_string(a.members) + " members, each a throw of the case)");
+    enforce_limits(e, a.limits, "--members");
+  }
+  // The report folder is built whole in a work folder and moved into place at the end: a capture
+  // that cannot be read, an error or a signal leaves nothing (an index.md marks a folder we made).
+  std::optional<AtomicFolder> out;
+  if (!a.out.empty()) out.emplace(a.out, [](const fs::path& d) { return fs::is_regular_file(d / "index.md"); });
   std::vector<std::unique_ptr<CaptureAnalysis>> analyses;
   std::vector<std::unique_ptr<CaptureSimulation>> sims;
   std::vector<CaptureIndexEntry> index;
@@ -234,13 +250,11 @@ void validate(const CaptureArgs& a) {
       so.reference = !a.no_reference;
       so.realtime_options = c->realtime;
       so.reference_options = c->reference;
-      std::optional<Progress> progress;
-      if (a.progress) {
-        progress.emplace("capture ensemble " + an->source, an->ensemble.size());
-        so.progress = [&progress](std::size_t, std::size_t) { progress->tick(); };
-      }
+      // Shown at once with --progress, otherwise once the ensemble has run 2 s (issue 10).
+      Progress progress("capture ensemble " + an->source, an->ensemble.size(), a.progress ? 0.0 : 2.0);
+      so.progress = [&progress](std::size_t, std::size_t) { progress.tick(); };
       *sim = simulate_capture(c->stone, c->environment, *an, so);
-      if (progress) progress->done();
+      progress.done();
     }
     unusable = unusable || !an->can_throw();
     if (a.json) {
@@ -251,17 +265,20 @@ void validate(const CaptureArgs& a) {
     else print_verdict(*an, c ? sim.get() : nullptr);
     if (!a.out.empty()) {
       const std::string folder = folder_name(file, used);
-      const auto r = write_capture_report(fs::path(a.out) / folder, *an, *sim, ctx);
+      const auto r = write_capture_report(out->work_dir() / folder, *an, *sim, ctx);
       for (const auto& f : r.figures.failures) std::fprintf(stderr, "figure failed: %s\n", f.c_str());
       if (!r.gnuplot) std::fprintf(stderr, "gnuplot not found: figures stored in data.h5 but not drawn\n");
-      if (!a.json) std::printf("  report: %s\n", r.index_md.c_str());
+      if (!a.json) std::printf("  report: %s\n", (fs::path(a.out) / folder / "index.md").c_str());
       index.push_back({folder, an.get(), sim.get()});
     }
     analyses.push_back(std::move(an));
     sims.push_back(std::move(sim));
   }
-  if (!a.out.empty() && !index.empty()) write_capture_index(a.out, index, ctx);
   if (unreadable) throw InputError("capture validate: at least one capture could not be read (see above)");
+  if (out && !index.empty()) {
+    write_capture_index(out->work_dir(), index, ctx);
+    out->commit();
+  }
   if (a.strict && unusable) set_exit_code(1);
 }
 
@@ -278,6 +295,7 @@ void throw_capture(const CaptureArgs& a) {
   c.throw_from_parameters = false;
   c.title = "capture " + a.files.front();
   std::vector<std::pair<std::string, ThrowResult>> results;
+  const Heartbeat alive("capture throw");  // a line on stderr once the solves take more than 2 s
   if (a.solver == "realtime" || a.solver == "both")
     results.emplace_back("realtime", run_realtime(c.stone, c.environment, c.initial, c.realtime));
   if (a.solver == "reference" || a.solver == "both")
@@ -291,13 +309,16 @@ void throw_capture(const CaptureArgs& a) {
     print_verdict(an, nullptr);
     for (const auto& [name, r] : results) std::cout << text_summary(c, r) << "\n";
   }
-  if (!a.out.empty()) {
+  bool failed = false;
+  for (const auto& [name, r] : results) failed = failed || r.outcome == Outcome::failed;
+  if (failed) set_exit_code(1);
+  if (!a.out.empty() && failed) {
+    std::fprintf(stderr, "stoneskip: %s not written: the solve failed (a failed run leaves no result file)\n", a.out.c_str());
+  } else if (!a.out.empty()) {
     std::vector<std::pair<std::string, const ThrowResult*>> refs;
     for (const auto& [name, r] : results) refs.emplace_back(name, &r);
     write_throw_file(a.out, c, refs);
   }
-  for (const auto& [name, r] : results)
-    if (r.outcome == Outcome::failed) set_exit_code(1);
 }
 
 void convert(const CaptureArgs& a) {
@@ -421,9 +442,10 @@ void add_capture(CLI::App& app) {
   v->add_flag("--no-reference", a->no_reference, "Skip the CVODE reference run of the nominal throw");
   v->add_flag("--no-simulate", a->no_simulate, "Skip the solvers (no case file needed)");
   v->add_flag("--strict", a->strict, "Exit with status 1 if a capture is unusable");
-  v->add_flag("--progress", a->progress, "Show the ensemble's progress on stderr");
+  v->add_flag("--progress", a->progress, "Show the ensemble's progress on stderr at once (otherwise after 2 s)");
   add_common(v, *a);
   add_case(v, *a);
+  add_limit_options(v, a->limits);
   v->callback([a] { validate(*a); });
 
   auto* t = cmd->add_subcommand("throw", "Run the throw a capture records through the solvers");

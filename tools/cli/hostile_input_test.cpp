@@ -339,6 +339,82 @@ BOOST_AUTO_TEST_CASE(the_smaller_ones) {
   BOOST_TEST(s.holds_only({"good.toml", "empty_mesh.toml", "case_fifo"}));
 }
 
+BOOST_AUTO_TEST_CASE(items_14_15_16_a_capture_with_an_impossible_mounting_or_ensemble) {
+  // main: --mount stone_offset_m=1e300,0,0 gave an infinite speed called "usable" and `capture
+  // throw` exited 1 writing its .h5; lever_arm_m=0,0,0 gave a lever-arm speed of 0 beside 5.18 m/s;
+  // --members 100000 ran for minutes. Oracle: the plausibility bounds and the ensemble's estimate
+  // (100000 members × 1e6 steps × 44 triangles = 4.4e12 > 1e11).
+  Scratch s;
+  const std::string cap = "cases/captures/gentle_sidearm.log";
+  expect_refused(run_apart("capture validate " + cap + " --mount stone_offset_m=1e300,0,0"),
+                 {"--mount: mounting.stone_offset_m: must be at most 1 m long", "(got 1e300,0,0)"});
+  expect_refused(run_apart("capture throw " + cap + " --mount stone_offset_m=1e300,0,0 --out " + (s.dir / "t.h5").string()),
+                 {"mounting.stone_offset_m"});
+  expect_refused(run_apart("capture validate " + cap + " --mount lever_arm_m=0,0,0"), {"mounting.lever_arm_m: must be 0.05 to 3 m long"});
+  expect_refused(run_apart("capture validate " + cap + " --members 100000 --out " + (s.dir / "cv").string()),
+                 {"--members: about 4.4e+12 triangle evaluations in the ensembles", "--allow-large"});
+  expect_refused(run_apart("capture validate " + cap + " --members -1"), {"--members: must be >= 0"});
+  // A failed solve writes no .h5 (the README: a failed run leaves none).
+  const RanApart failed = run_apart("capture throw " + cap + " --set reference.max_steps=1 --out " + (s.dir / "f.h5").string());
+  BOOST_TEST(failed.status == 1, failed.err);
+  BOOST_TEST(failed.err.find("not written: the solve failed") != std::string::npos, failed.err);
+  BOOST_TEST(s.holds_only({}));
+}
+
+BOOST_AUTO_TEST_CASE(item_10_capture_validate_with_a_bad_capture_leaves_no_folder) {
+  // main: exit 2 and an empty (or half-filled) --out folder. The folder is now built under a work
+  // name and moved into place only when every capture was read; a second run replaces a folder it
+  // made (index.md) but not someone else's.
+  Scratch s;
+  const std::string cap = "cases/captures/gentle_sidearm.log";
+  const RanApart bad = run_apart("capture validate nope.log " + cap + " --no-simulate --out " + (s.dir / "cv").string());
+  BOOST_TEST(bad.status == 2, bad.err);
+  BOOST_TEST(bad.err.find("nope.log: cannot read: no such file") != std::string::npos, bad.err);
+  BOOST_TEST(s.holds_only({}));
+  const RanApart good = run_apart("capture validate " + cap + " --no-simulate --out " + (s.dir / "cv").string());
+  BOOST_TEST(good.status == 0, good.err);
+  BOOST_TEST(fs::is_regular_file(s.dir / "cv" / "index.md"));
+  BOOST_TEST(run_apart("capture validate " + cap + " --no-simulate --out " + (s.dir / "cv").string()).status == 0);
+  fs::create_directories(s.dir / "mine");
+  s.write("mine/notes.txt", "x");
+  expect_refused(run_apart("capture validate " + cap + " --no-simulate --out " + (s.dir / "mine").string()),
+                 {"not a folder stoneskip made: refusing to replace it"});
+  BOOST_TEST(s.holds_only({"cv", "mine"}));
+}
+
+BOOST_AUTO_TEST_CASE(sweeps_too_large_or_written_where_they_must_not_be) {
+  // Commands that landed after the first pass, held to the same rule. Oracle: the estimate,
+  // 1e5 × 100 throws × (10 s / 1e-5 s × 44 triangles) = 4.4e14 worst-case triangle evaluations
+  // against 5000 × 2e9 = 1e13; a design beyond 2^32 throws; the output checks.
+  Scratch s;
+  const std::string base = (fs::current_path() / "cases" / "paper_8ms_spin.toml").string();
+  auto sweep = [&](const std::string& name, const std::string& count1, const std::string& count2) {
+    return s.write(name, "base = \"" + base + "\"\n[design]\nkind = \"grid\"\n[[vary]]\nkey = \"throw.speed_m_s\"\nfrom = 4.0\nto = 14.0\ncount = " +
+                             count1 + "\n[[vary]]\nkey = \"throw.spin_rev_s\"\nfrom = 0.0\nto = 40.0\ncount = " + count2 + "\n");
+  };
+  const fs::path big = sweep("big.toml", "100000", "100");
+  expect_refused(run_apart("sweep " + big.string() + " --quiet --out " + (s.dir / "b.h5").string()),
+                 {"big.toml: about 4.4e+14 worst-case triangle evaluations", "1e+07 throws", "above the limit of 1e+13", "--allow-large"});
+  expect_refused(run_apart("sweep " + sweep("huge.toml", "1000000", "1000000").string() + " --quiet"),
+                 {"huge.toml:8: vary[1].count: the design has 1e+12 throws"});
+  const fs::path small = sweep("small.toml", "2", "2");
+  expect_refused(run_apart("sweep " + small.string() + " --quiet --out ''"), {"--out: needs a file name"});
+  const fs::path fifo = s.dir / "fifo";
+  BOOST_REQUIRE(::mkfifo(fifo.c_str(), 0644) == 0);
+  expect_refused(run_apart("sweep " + small.string() + " --quiet --out " + fifo.string()), {"a FIFO", "refusing to replace it"});
+  const RanApart ok = run_apart("sweep " + small.string() + " --quiet --out " + (s.dir / "s.h5").string());
+  BOOST_REQUIRE(ok.status == 0);
+  // sweep-plot: a file, an empty name, someone's folder are refused; its own page is replaced.
+  const std::string plot = "sweep-plot " + (s.dir / "s.h5").string() + " --no-render --out ";
+  expect_refused(run_apart(plot + fifo.string()), {"a FIFO, not a folder"});
+  expect_refused(run_apart(plot + "''"), {"--out: needs a folder name"});
+  expect_refused(run_apart(plot + fs::current_path().string() + "/cases"), {"not a folder stoneskip made"});
+  BOOST_TEST(run_apart(plot + (s.dir / "page").string()).status == 0);
+  BOOST_TEST(run_apart(plot + (s.dir / "page").string()).status == 0);
+  BOOST_TEST(fs::is_regular_file(s.dir / "page" / "index.md"));
+  BOOST_TEST(s.holds_only({"big.toml", "huge.toml", "small.toml", "fifo", "s.h5", "page"}));
+}
+
 BOOST_AUTO_TEST_CASE(the_limits_are_lifted_by_their_flags) {
   // Oracle: the same estimate against a raised limit: the swell on water steps of 1e-6 s needs
   // 2.5e12 cell updates, refused; with --allow-large the limit is gone, so the run starts (stopped

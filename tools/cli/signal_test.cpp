@@ -1,5 +1,5 @@
-// SIGINT and SIGTERM at random moments (issue 10, items 8 and 9): main left partial report folders
-// (a data.h5 and figures without index.md, or an empty folder) and `run --out big.h5` left
+// SIGINT and SIGTERM at random moments (issue 10, items 8 and 9): main left partial report and
+// capture folders (a data.h5 and figures without index.md, or an empty folder) and `run --out big.h5` left
 // big.h5.tmp-PID. Oracle: the folder afterwards. A command stopped by the signal exits 128 +
 // signal and leaves nothing at all there (tools/io/signal_cleanup.hpp: the work folder and every
 // temporary are registered and removed); one that finished first exits 0 and leaves exactly the
@@ -192,6 +192,28 @@ output_dt_s = 0.0
     BOOST_TEST_CONTEXT("run --out, signal " << sig << " at " << at << " s of " << whole.wall_s) {
       check_left(interrupt(run, s.dir, sig, at), sig, s.out, {"big.h5"}, s.dir);
       fs::remove(s.out / "big.h5");
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(an_interrupted_capture_validation_leaves_no_folder) {
+  // main left a data.h5 and figures without index.md, or an empty folder (item 8).
+  Scratch s;
+  const std::vector<std::string> validate = {"capture", "validate", "cases/captures/gentle_sidearm.log",
+                                             "cases/captures/lossy_sidearm.log", "--out", (s.out / "cv").string()};
+  const auto t0 = std::chrono::steady_clock::now();
+  const Ended whole = finish(start(validate, s.dir), t0);
+  BOOST_REQUIRE(whole.status == 0);
+  BOOST_REQUIRE(joined(names_in(s.out)) == "cv");
+  fs::remove_all(s.out / "cv");
+  std::mt19937 rng(seed());
+  std::uniform_real_distribution<double> moment(0.02, 1.05);
+  for (int i = 0; i < 3; ++i) {
+    const int sig = i % 2 ? SIGINT : SIGTERM;
+    const double at = moment(rng) * whole.wall_s;
+    BOOST_TEST_CONTEXT("capture validate --out, signal " << sig << " at " << at << " s of " << whole.wall_s) {
+      check_left(interrupt(validate, s.dir, sig, at), sig, s.out, {"cv"}, s.dir);
+      fs::remove_all(s.out / "cv");
     }
   }
 }

@@ -112,6 +112,71 @@ void AtomicOutput::commit() {
   });
 }
 
+AtomicFolder::AtomicFolder(fs::path final_dir, const std::function<bool(const fs::path&)>& replaceable)
+    : final_(std::move(final_dir)), replaceable_(replaceable) {
+  if (final_.empty()) throw_input_error("--out", 0, "", "an output folder is required (got an empty name)");
+  while (final_.has_parent_path() && !final_.has_filename()) final_ = final_.parent_path();  // "dir/" → "dir"
+  check_destination();
+  work_ = final_;
+  work_ += ".partial-" + std::to_string(::getpid());
+  with_registry_lock([&] {
+    RegisteredTemporary reg(work_, TemporaryKind::folder);
+    if (::mkdir(work_.c_str(), 0755) != 0) {
+      const int e = errno;
+      refuse(final_, "cannot create the work folder '" + work_.string() + "': " + errno_words(e));
+    }
+    registered_ = std::move(reg);
+  });
+}
+
+void AtomicFolder::check_destination() const {
+  fs::path dir = final_.parent_path();
+  if (dir.empty()) dir = ".";
+  struct stat st {};
+  if (::stat(dir.c_str(), &st) != 0) refuse(final_, "cannot write: folder '" + dir.string() + "' does not exist");
+  if (!S_ISDIR(st.st_mode)) refuse(final_, "cannot write: '" + dir.string() + "' is " + file_type_words(st.st_mode) + ", not a folder");
+  if (::access(dir.c_str(), W_OK) != 0) refuse(final_, "cannot write: folder '" + dir.string() + "' is not writable");
+  if (::lstat(final_.c_str(), &st) == 0) {
+    if (!S_ISDIR(st.st_mode))
+      refuse(final_, "exists and is " + file_type_words(st.st_mode) + ", not a folder: refusing to replace it");
+    std::error_code ec;
+    if (!fs::is_empty(final_, ec) && !(replaceable_ && replaceable_(final_)))
+      refuse(final_, "exists and is not a folder stoneskip made: refusing to replace it");
+  }
+}
+
+AtomicFolder::~AtomicFolder() {
+  if (committed_) return;
+  std::error_code ec;
+  with_registry_lock([&] {
+    fs::remove_all(work_, ec);
+    registered_.release();
+  });
+}
+
+void AtomicFolder::commit() {
+  check_destination();  // again: time has passed
+  std::error_code ec;
+  fs::path old = final_;
+  old += ".old-" + std::to_string(::getpid());
+  RegisteredTemporary old_registered;
+  // Under the registry's lock: a signal sees the old folder in place or already replaced.
+  with_registry_lock([&] {
+    if (fs::exists(final_, ec)) {
+      old_registered = RegisteredTemporary(old, TemporaryKind::folder);
+      if (::rename(final_.c_str(), old.c_str()) != 0) refuse(final_, std::string("cannot replace: ") + errno_words(errno));
+    }
+    if (::rename(work_.c_str(), final_.c_str()) != 0) {
+      const int e = errno;
+      if (old_registered.registered()) ::rename(old.c_str(), final_.c_str());
+      refuse(final_, "cannot write: " + errno_words(e));
+    }
+    registered_.release();
+    committed_ = true;
+  });
+  if (old_registered.registered()) fs::remove_all(old, ec);
+}
+
 void write_text_file(const fs::path& path, const std::string& text) {
   AtomicOutput out(path);
   {

@@ -9,6 +9,7 @@
 // the rename), so `--out /dev/null` run as root cannot replace the device node.
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <string>
 
@@ -35,6 +36,32 @@ class AtomicOutput {
   std::filesystem::path tmp_;
   RegisteredTemporary registered_;
   bool committed_ = false;
+};
+
+// An output folder that appears whole or not at all (`capture validate --out`, `sweep-plot`):
+// everything is written into "<DIR>.partial-<pid>" beside it, registered with the signal cleanup,
+// and renamed to DIR on commit(). Destroyed before commit() (an error) or stopped by a signal, the
+// work folder is removed. An existing DIR is replaced only if it is an empty folder or
+// `replaceable(DIR)` says stoneskip made it; anything else (a file, a link, a device, someone's
+// folder) is refused with an InputError before any work.
+class AtomicFolder {
+ public:
+  AtomicFolder(std::filesystem::path final_dir, const std::function<bool(const std::filesystem::path&)>& replaceable);
+  ~AtomicFolder();
+  AtomicFolder(const AtomicFolder&) = delete;
+  AtomicFolder& operator=(const AtomicFolder&) = delete;
+
+  const std::filesystem::path& work_dir() const { return work_; }
+  const std::filesystem::path& final_dir() const { return final_; }
+  void commit();
+
+ private:
+  std::filesystem::path final_;
+  std::filesystem::path work_;
+  std::function<bool(const std::filesystem::path&)> replaceable_;
+  RegisteredTemporary registered_;
+  bool committed_ = false;
+  void check_destination() const;
 };
 
 // Throws InputError unless `path` may be written: a non-empty name, in an existing folder, and

@@ -195,4 +195,42 @@ BOOST_AUTO_TEST_CASE(the_signal_cleanup_removes_registered_files_and_folders) {
   BOOST_TEST(fs::exists(outside / "canary"));  // the link was not followed
 }
 
+BOOST_AUTO_TEST_CASE(an_atomic_folder_appears_whole_and_replaces_only_what_it_may) {
+  // Oracle: the folder listing. Before commit only the registered work folder exists (and the
+  // signal cleanup would remove it); an error removes it; commit puts it in place; an existing
+  // folder is replaced only when empty or when the predicate says stoneskip made it.
+  Scratch s;
+  const auto ours = [](const fs::path& d) { return fs::is_regular_file(d / "index.md"); };
+  const int registered = registered_temporary_count();
+  {
+    AtomicFolder f(s.dir / "page", ours);
+    std::ofstream(f.work_dir() / "index.md") << "half";
+    BOOST_TEST(registered_temporary_count() == registered + 1);
+    BOOST_TEST(!fs::exists(s.dir / "page"));
+  }  // destroyed before commit: an error
+  BOOST_TEST(fs::is_empty(s.dir));
+  BOOST_TEST(registered_temporary_count() == registered);
+  for (const char* text : {"first", "second"}) {
+    AtomicFolder f(s.dir / "page", ours);
+    std::ofstream(f.work_dir() / "index.md") << text;
+    f.commit();
+  }
+  std::ifstream in(s.dir / "page" / "index.md");
+  std::string text;
+  in >> text;
+  BOOST_TEST(text == "second");
+  fs::create_directories(s.dir / "theirs");
+  std::ofstream(s.dir / "theirs" / "notes.txt") << "x";
+  std::ofstream(s.dir / "afile") << "x";
+  BOOST_CHECK_THROW(AtomicFolder(s.dir / "theirs", ours), InputError);
+  BOOST_CHECK_THROW(AtomicFolder(s.dir / "afile", ours), InputError);
+  BOOST_CHECK_THROW(AtomicFolder(s.dir / "nowhere" / "x", ours), InputError);
+  BOOST_CHECK_THROW(AtomicFolder("", ours), InputError);
+  std::size_t n = 0;
+  for (const auto& e : fs::directory_iterator(s.dir)) n += e.path().filename().string().find(".partial") == std::string::npos;
+  BOOST_TEST(n == 3u);  // page, theirs, afile: no work folder left
+  BOOST_TEST(std::distance(fs::directory_iterator(s.dir), fs::directory_iterator()) == 3);
+  BOOST_TEST(registered_temporary_count() == registered);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -95,7 +95,10 @@ void check_numbers(const toml::value& v, const std::string& key, const std::stri
     for (const auto& kv : v.as_table()) check_numbers(kv.second, key.empty() ? kv.first : key + "." + kv.first, file, map);
   } else if (v.is_array()) {
     const auto& a = v.as_array();
-    for (std::size_t i = 0; i < a.size(); ++i) check_numbers(a[i], key + "[" + std::to_string(i) + "]", file, map);
+    // A component of a vector counts from 0 (position_m[2]); a table of an array of tables from 1,
+    // as its readers name it ([[vary]] → vary[1]).
+    for (std::size_t i = 0; i < a.size(); ++i)
+      check_numbers(a[i], key + "[" + std::to_string(a[i].is_table() ? i + 1 : i) + "]", file, map);
   } else {
     const std::string problem = number_problem(v);
     if (problem.empty()) return;

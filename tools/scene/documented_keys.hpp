@@ -17,7 +17,7 @@ namespace stoneskip::test {
 enum class KeyKind { number, integer, string, array };
 
 struct DocumentedKey {
-  std::string block;    // "stone", "scene", "wave", "baseline": the README section it is in
+  std::string block;    // "stone", "scene", "wave", "baseline", "sweep": the README section it is in
   std::string section;  // "stone", "throw.state", "water.initial", ...
   std::string key;      // "radius_m"
   KeyKind kind = KeyKind::number;
@@ -52,7 +52,13 @@ inline void read_bounds(const std::string& comment, DocumentedKey& k) {
   static const std::regex pair(R"(\[([^\[\],]+),([^\[\],]+)\])");
   std::vector<std::pair<std::string, std::string>> found;
   for (std::sregex_iterator it(comment.begin(), comment.end(), pair), end; it != end; ++it) found.emplace_back((*it)[1], (*it)[2]);
-  if (found.empty()) return;
+  if (found.empty()) {
+    // ">= 1" (sweep files) is a lower bound alone.
+    static const std::regex at_least(R"(>=\s*(-?[0-9.eE+-]+))");
+    std::smatch m;
+    if (std::regex_search(comment, m, at_least)) k.has_lo = parse_double(m[1], k.lo);
+    return;
+  }
   const auto& b = k.kind == KeyKind::array ? found.front() : found.back();
   k.has_lo = parse_double(b.first, k.lo);
   k.has_hi = parse_double(b.second, k.hi);
@@ -64,7 +70,7 @@ inline std::vector<DocumentedKey> documented_keys(const std::string& readme_path
   std::string line, heading, block, section;
   bool in_toml = false;
   static const std::regex key_line(R"(^#?\s*([a-z_]+)\s*=\s*("[^"]*"|\[[^\]]*\]|[^#\s]+)\s*(#.*)?$)");
-  static const std::regex header(R"(^#?\s*\[([a-z_.]+)\]\s*(#.*)?$)");
+  static const std::regex header(R"(^#?\s*\[?\[([a-z_.]+)\]\]?\s*(#.*)?$)");  // [table] or [[array]]
   while (std::getline(in, line)) {
     if (line.rfind("## ", 0) == 0 || line.rfind("### ", 0) == 0) heading = line;
     if (line.rfind("```", 0) == 0) {
@@ -74,6 +80,7 @@ inline std::vector<DocumentedKey> documented_keys(const std::string& readme_path
       else if (heading.find("live water") != std::string::npos) block = "scene";
       else if (heading.find("Wave cases") != std::string::npos) block = "wave";
       else if (heading.find("golden baselines") != std::string::npos) block = "baseline";
+      else if (heading.find("Sweep files") != std::string::npos) block = "sweep";
       else block.clear();
       continue;
     }
@@ -104,6 +111,47 @@ inline std::vector<DocumentedKey> documented_keys(const std::string& readme_path
     keys.push_back(k);
   }
   return keys;
+}
+
+// The README's TOML block under the heading that contains `heading` (a valid file of that kind).
+inline std::string readme_block(const std::string& heading, const std::string& readme_path = "cases/README.md") {
+  std::ifstream in(readme_path);
+  std::string line, text;
+  bool in_block = false, after_heading = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("## ", 0) == 0) after_heading = line.find(heading) != std::string::npos;
+    if (!after_heading && !in_block) continue;
+    if (line == "```toml") {
+      in_block = true;
+      continue;
+    }
+    if (in_block && line.rfind("```", 0) == 0) break;
+    if (in_block) text += line + "\n";
+  }
+  return text;
+}
+
+// The README's sweep block as a sweep file in which `k` can be set: a random design for its
+// random-only keys (samples, seed), with the key's line replaced by `key = value`.
+inline std::string sweep_text_with(const DocumentedKey& k, const std::string& value) {
+  std::string t = "\n" + readme_block("Sweep files");
+  if (k.section == "design" && (k.key == "samples" || k.key == "seed")) {
+    t = replace_all(t, "kind = \"grid\"", "kind = \"random\"");
+    t = replace_all(t, "# samples = ", "samples = ");
+    t = replace_all(t, "# seed = ", "seed = ");
+    const auto c = t.find("\ncount = ");
+    t.erase(c, t.find('\n', c + 1) - c);
+  }
+  const auto p = t.find("\n" + k.key + " = ");
+  if (p == std::string::npos) return "";
+  t.replace(p + 1, t.find('\n', p + 1) - p - 1, k.key + " = " + value);
+  return t.substr(1);
+}
+
+// How an error names the key: a [[vary]] table by its number.
+inline std::string error_name(const DocumentedKey& k) {
+  if (k.block == "sweep" && k.section == "vary") return "vary[1]." + k.key;
+  return k.full();
 }
 
 inline std::string number_text(double v) {
@@ -149,6 +197,11 @@ inline std::vector<BadValue> bad_values(const DocumentedKey& k) {
       if (k.enumerated) v.push_back({"\"no_such_value\"", "not one of the documented values"});
       break;
     case KeyKind::array: {
+      if (k.example.size() > 1 && k.example[1] == '"') {  // an array of strings: names or overrides
+        for (const char* t : {"1.0", "\"x\"", "[1.0]", "[[\"a\"]]"}) v.push_back({t, "wrong type"});
+        v.push_back({"[\"no_such_value\"]", "an element that is not one of the documented values"});
+        break;
+      }
       // The example with its first element replaced.
       const std::string inner = k.example.substr(1, k.example.size() - 2);
       const auto comma = inner.find(',');

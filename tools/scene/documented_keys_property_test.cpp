@@ -1,5 +1,5 @@
 // Property (issue 10): every key documented in cases/README.md — stone cases, a stone on live
-// water, wave cases, golden baselines — refuses every value the documentation makes bad (another
+// water, wave cases, golden baselines, sweep files — refuses every value the documentation makes bad (another
 // type; NaN, ±inf; 1e±400; integers beyond 64 bits and huge counts; zero, signs and numbers just
 // outside the documented bounds) with an InputError of one line naming the key, within a time
 // bound. Oracle: the README itself (tools/scene/documented_keys.hpp reads its TOML blocks), so a
@@ -19,6 +19,7 @@
 #include "tools/scene/baseline_file.hpp"
 #include "tools/scene/documented_keys.hpp"
 #include "tools/scene/stone_case.hpp"
+#include "tools/scene/sweep_file.hpp"
 #include "tools/scene/wave_case.hpp"
 
 using namespace stoneskip;
@@ -168,6 +169,7 @@ BOOST_AUTO_TEST_CASE(the_readme_documents_the_keys_with_their_bounds) {
   BOOST_TEST(per_block["scene"] >= 13);
   BOOST_TEST(per_block["wave"] >= 22);
   BOOST_TEST(per_block["baseline"] >= 14);
+  BOOST_TEST(per_block["sweep"] == 12);  // title, base, set, solvers; kind, samples, seed; key, from, to, count, scale
   BOOST_TEST(bounded >= 44);
 }
 
@@ -187,6 +189,12 @@ BOOST_AUTO_TEST_CASE(every_documented_key_refuses_every_bad_value_in_one_line) {
       } else if (k.block == "wave") {
         const std::string text = bases.wave_text(k);
         e = refusal([&] { wave_case_from_document(parse_toml_text(text, "w.toml", std::vector<std::string>{k.full() + "=" + bad.text})); }, seconds);
+      } else if (k.block == "sweep") {
+        // Sweep files: the README's block with the key's line rewritten, read and probed as
+        // `stoneskip sweep` does before any throw (the base resolves from cases/sweeps/).
+        const std::string text = sweep_text_with(k, bad.text);
+        BOOST_REQUIRE_MESSAGE(!text.empty(), k.full());
+        e = refusal([&] { SweepCases cases(sweep_file_from_text(text, "cases/sweeps/s.toml")); }, seconds);
       } else {
         // Baselines are files: the key's line is rewritten.
         std::string text = baseline;
@@ -203,8 +211,8 @@ BOOST_AUTO_TEST_CASE(every_documented_key_refuses_every_bad_value_in_one_line) {
         BOOST_TEST(e.find('\n') == std::string::npos, e);
         // The key's table is named; a scalar key by its own name (a [result] array may be
         // blamed on its partner when their lengths differ).
-        BOOST_TEST(e.find(k.section + ".") != std::string::npos, e);
-        if (k.kind != KeyKind::array) BOOST_TEST(e.find(k.full()) != std::string::npos, e);
+        if (!k.section.empty()) BOOST_TEST(e.find(k.block == "sweep" ? error_name(k).substr(0, error_name(k).rfind('.') + 1) : k.section + ".") != std::string::npos, e);
+        if (k.kind != KeyKind::array) BOOST_TEST(e.find(error_name(k)) != std::string::npos, e);
         BOOST_TEST(seconds < kMaxSecondsPerValue);
       }
       if (std::getenv("STONESKIP_SHOW_REFUSALS")) BOOST_TEST_MESSAGE(k.full() << " = " << bad.text << " -> " << e);

@@ -93,6 +93,18 @@ ResourceEstimate estimate_wave(const WaveCase& c) {
   return e;
 }
 
+ResourceEstimate estimate_sweep(const ResourceEstimate& heaviest_throw, double throws, double row_bytes, double threads) {
+  ResourceEstimate e;
+  e.add_memory(throws * row_bytes, "the table of " + sci(throws) + " throws");
+  e.add_memory(threads * heaviest_throw.memory_bytes, sci(threads) + " throws at once");
+  for (const auto& w : heaviest_throw.work) {
+    e.add_work(w.count, w.limit, w.what + " in the heaviest throw of the design");
+    e.add_work(throws * w.count, kSweepWorkFactor * w.limit, "worst-case " + w.what.substr(0, w.what.find(" (")) + " in all (" +
+                                                                  sci(throws) + " throws × " + sci(w.count) + ")");
+  }
+  return e;
+}
+
 ResourceEstimate estimate_regress(const std::vector<BounceSweepSpec>& sweeps) {
   ResourceEstimate e;
   double total = 0, throws = 0;

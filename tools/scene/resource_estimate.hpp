@@ -34,6 +34,12 @@ struct RunSolvers {
 
 ResourceEstimate estimate_run(const StoneCase& c, const RunSolvers& solvers);
 ResourceEstimate estimate_wave(const WaveCase& c);
+// A sweep: every throw held to the one-throw limits at the heaviest case the design's corners give
+// (SweepCases::heaviest_throw), all throws together to kSweepWorkFactor times them; its table in
+// memory (throws × row_bytes) beside one throw's memory per compute thread.
+constexpr double kSweepWorkFactor = 5000;
+ResourceEstimate estimate_sweep(const ResourceEstimate& heaviest_throw, double throws, double row_bytes, double threads);
+
 ResourceEstimate estimate_regress(const std::vector<BounceSweepSpec>& sweeps);
 
 }  // namespace stoneskip
