@@ -225,3 +225,4 @@ BOOST_AUTO_TEST_CASE(every_documented_key_refuses_every_bad_value_in_one_line) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
