@@ -28,6 +28,23 @@ struct DocumentedKey {
   std::string full() const { return section.empty() ? key : section + "." + key; }
 };
 
+// A plain stone case (the paper's prism, 1 s) that the bad values are set into.
+inline constexpr const char* kPlainStoneCase = R"([stone]
+shape = "prism"
+radius_m = 0.03
+thickness_m = 0.008
+density_kg_m3 = 2500.0
+[throw]
+speed_m_s = 8.0
+path_angle_deg = 10.0
+attack_angle_deg = 10.0
+height_m = 0.1
+[solver]
+dt_s = 1.0e-3
+contact_dt_s = 1.0e-5
+t_max_s = 1.0
+)";
+
 struct BadValue {
   std::string text;  // TOML
   std::string why;   // "wrong type", "below the bound", ...

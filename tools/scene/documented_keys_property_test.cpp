@@ -32,21 +32,7 @@ namespace {
 // run started by mistake.
 constexpr double kMaxSecondsPerValue = 1.0;
 
-const char* kStone = R"([stone]
-shape = "prism"
-radius_m = 0.03
-thickness_m = 0.008
-density_kg_m3 = 2500.0
-[throw]
-speed_m_s = 8.0
-path_angle_deg = 10.0
-attack_angle_deg = 10.0
-height_m = 0.1
-[solver]
-dt_s = 1.0e-3
-contact_dt_s = 1.0e-5
-t_max_s = 1.0
-)";
+const char* const kStone = stoneskip::test::kPlainStoneCase;
 
 const char* kWater = R"(
 [water]
