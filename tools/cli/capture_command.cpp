@@ -322,7 +322,9 @@ void throw_capture(const CaptureArgs& a) {
 }
 
 void convert(const CaptureArgs& a) {
+  std::optional<Heartbeat> alive(std::in_place, "capture convert");  // a line once reading takes more than 2 s
   Trace t = read_capture(a.files.front(), read_options(a));
+  alive.reset();
   for (const auto& w : t.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   write_text_file(a.out, trace_csv_text(t));
   std::printf("wrote %s (%zu samples from %s)\n", a.out.c_str(), t.samples.size(), t.format.c_str());

@@ -9,6 +9,7 @@
 #include "tools/cli/command_registry.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/progress.hpp"
 
 namespace stoneskip::cli {
 
@@ -31,6 +32,7 @@ std::pair<int, std::size_t> render_folder(const std::filesystem::path& dir) {
   } catch (const RecordError& e) {
     throw_input_error((dir / "data.h5").string(), 0, "", std::string("incomplete report data: ") + e.what());
   }
+  const Heartbeat alive("drawing " + std::to_string(r.figures.size()) + " figures");  // a line after 2 s
   const RenderSummary s = write_rendered_report(dir, r);
   for (const auto& f : s.failures) std::fprintf(stderr, "figure failed: %s\n", f.c_str());
   if (!s.failures.empty()) set_exit_code(1);

@@ -13,6 +13,7 @@
 #include "tools/cli/command_registry.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/progress.hpp"
 
 namespace stoneskip::cli {
 namespace {
@@ -37,7 +38,12 @@ void run(const PlotArgs& a) {
   AtomicFolder out(dir, [](const std::filesystem::path& d) {
     return std::filesystem::is_regular_file(d / "index.md") && std::filesystem::is_regular_file(d / "data.h5");
   });
-  const SweepPageSummary s = write_sweep_page(out.work_dir(), data, a.file, maps, !a.no_render);
+  std::optional<SweepPageSummary> page;
+  {
+    const Heartbeat alive("sweep-plot");  // a line on stderr once drawing takes more than 2 s
+    page = write_sweep_page(out.work_dir(), data, a.file, maps, !a.no_render);
+  }
+  const SweepPageSummary& s = *page;
   out.commit();
   std::printf("wrote %s/index.md and %zu figures (%d drawn) from %zu throws\n", dir.c_str(), s.figures, s.render.rendered,
               data.throws.rows());
