@@ -440,7 +440,8 @@ void add_capture(CLI::App& app) {
   auto* v = cmd->add_subcommand("validate", "Judge captures (verdict, timing, clipping, still part, release, throw with intervals, bounce counts)");
   v->add_option("FILE", a->files, "Capture files (any format)")->required();
   v->add_flag("--json", a->json, "One JSON object per capture (one per line)");
-  v->add_option("--out", a->out, "Write a report page per capture into DIR/<capture>/ and DIR/index.md");
+  v->add_option("--out", a->out, "Write a report page per capture into DIR/<capture>/ and DIR/index.md")
+      ->check([](const std::string& d) { return d.empty() ? std::string("needs a folder name (got an empty one)") : std::string(); });
   v->add_flag("--no-reference", a->no_reference, "Skip the CVODE reference run of the nominal throw");
   v->add_flag("--no-simulate", a->no_simulate, "Skip the solvers (no case file needed)");
   v->add_flag("--strict", a->strict, "Exit with status 1 if a capture is unusable");
@@ -454,7 +455,8 @@ void add_capture(CLI::App& app) {
   t->add_option("FILE", a->files, "Capture file")->required()->expected(1);
   t->add_option("--solver", a->solver, "realtime, reference or both (default)")->check(CLI::IsMember({"realtime", "reference", "both"}));
   t->add_flag("--json", a->json, "Print one JSON object");
-  t->add_option("--out", a->out, "Write the trajectories and the case to this HDF5 file");
+  t->add_option("--out", a->out, "Write the trajectories and the case to this HDF5 file")
+      ->check([](const std::string& f) { return f.empty() ? std::string("needs a file name (got an empty one)") : std::string(); });
   add_common(t, *a);
   add_case(t, *a);
   t->callback([a] { throw_capture(*a); });

@@ -354,6 +354,8 @@ BOOST_AUTO_TEST_CASE(items_14_15_16_a_capture_with_an_impossible_mounting_or_ens
   expect_refused(run_apart("capture validate " + cap + " --members 100000 --out " + (s.dir / "cv").string()),
                  {"--members: about 4.4e+12 triangle evaluations in the ensembles", "--allow-large"});
   expect_refused(run_apart("capture validate " + cap + " --members -1"), {"--members: must be >= 0"});
+  expect_refused(run_apart("capture validate " + cap + " --out ''"), {"--out", "needs a folder name"});
+  expect_refused(run_apart("capture throw " + cap + " --out ''"), {"--out", "needs a file name"});
   // A failed solve writes no .h5 (the README: a failed run leaves none).
   const RanApart failed = run_apart("capture throw " + cap + " --set reference.max_steps=1 --out " + (s.dir / "f.h5").string());
   BOOST_TEST(failed.status == 1, failed.err);
