@@ -79,6 +79,20 @@ void add_read(CLI::App* cmd, CaptureArgs& a) {
   cmd->add_option("--columns", a.columns, "csv: map columns, key[unit]=Column Name,... (keys: t, ax, ay, az, wx, wy, wz, raw_pitch, raw_roll, raw_yaw, speed_pitch, speed_roll, speed_yaw, slow_*, fast_*, buttons, button_a, button_b, pitch, roll, seq)");
 }
 
+// A capture is seconds to minutes of reports (a minute at 100 Hz is about 0.5 MB of text), and
+// reading one takes about 7 times its size in memory (1.44 GB for a 218 MB, 3-million-row trace):
+// a larger file is refused before it is read (cases/README.md, Limits).
+constexpr double kMaxCaptureBytes = 64e6;
+
+void check_capture_size(const std::string& file, const ResourceLimits& limits) {
+  std::error_code ec;
+  const auto bytes = fs::file_size(file, ec);
+  if (ec || limits.allow_large) return;  // not a regular file: the reader says what it is
+  if (static_cast<double>(bytes) > kMaxCaptureBytes)
+    throw_input_error(file, 0, "", "is " + human_bytes(static_cast<double>(bytes)) + ", above the " + human_bytes(kMaxCaptureBytes) +
+                                       " a capture may be (hours of reports; cases/README.md, Limits); --allow-large lifts it");
+}
+
 CaptureReadOptions read_options(const CaptureArgs& a) {
   CaptureReadOptions o;
   o.format = a.format;
@@ -231,6 +245,7 @@ void validate(const CaptureArgs& a) {
   for (const auto& file : a.files) {
     Trace trace;
     try {
+      check_capture_size(file, a.limits);
       trace = read_capture(file, read_options(a));
     } catch (const InputError& e) {
       // One bad file does not stop the others; it is reported and the exit status says so.
@@ -285,6 +300,7 @@ void validate(const CaptureArgs& a) {
 void throw_capture(const CaptureArgs& a) {
   StoneCase c = load_stone_case(a.case_file, a.sets);
   if (!a.out.empty()) AtomicOutput check(a.out);
+  check_capture_size(a.files.front(), a.limits);
   const Trace trace = read_capture(a.files.front(), read_options(a));
   CaptureOptions o = capture_options(a, trace);
   o.members = 0;  // the intervals are validate's business; the throw is the nominal one
@@ -322,6 +338,7 @@ void throw_capture(const CaptureArgs& a) {
 }
 
 void convert(const CaptureArgs& a) {
+  check_capture_size(a.files.front(), a.limits);
   std::optional<Heartbeat> alive(std::in_place, "capture convert");  // a line once reading takes more than 2 s
   Trace t = read_capture(a.files.front(), read_options(a));
   alive.reset();
@@ -459,12 +476,14 @@ void add_capture(CLI::App& app) {
       ->check([](const std::string& f) { return f.empty() ? std::string("needs a file name (got an empty one)") : std::string(); });
   add_common(t, *a);
   add_case(t, *a);
+  add_limit_options(t, a->limits);
   t->callback([a] { throw_capture(*a); });
 
   auto* c = cmd->add_subcommand("convert", "Write any capture as a stoneskip trace CSV");
   c->add_option("FILE", a->files, "Capture file")->required()->expected(1);
   c->add_option("--out", a->out, "Trace CSV to write")->required();
   add_read(c, *a);
+  add_limit_options(c, a->limits);
   c->callback([a] { convert(*a); });
 
   auto* cols = cmd->add_subcommand("columns", "List the column names the csv reader recognises, with their units");

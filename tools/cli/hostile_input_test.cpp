@@ -356,6 +356,15 @@ BOOST_AUTO_TEST_CASE(items_14_15_16_a_capture_with_an_impossible_mounting_or_ens
   expect_refused(run_apart("capture validate " + cap + " --members -1"), {"--members: must be >= 0"});
   expect_refused(run_apart("capture validate " + cap + " --out ''"), {"--out", "needs a folder name"});
   expect_refused(run_apart("capture throw " + cap + " --out ''"), {"--out", "needs a file name"});
+  // A 3-million-row trace took 1.44 GB to read: a capture file over 64 MB is refused unread (a
+  // sparse file of 65 MB here).
+  {
+    std::ofstream(s.dir / "long.csv");
+    fs::resize_file(s.dir / "long.csv", 65'000'000);
+    expect_refused(run_apart("capture convert " + (s.dir / "long.csv").string() + " --out " + (s.dir / "c.csv").string()),
+                   {"long.csv: is 65 MB, above the 64 MB a capture may be", "--allow-large"});
+    fs::remove(s.dir / "long.csv");
+  }
   // A failed solve writes no .h5 (the README: a failed run leaves none).
   const RanApart failed = run_apart("capture throw " + cap + " --set reference.max_steps=1 --out " + (s.dir / "f.h5").string());
   BOOST_TEST(failed.status == 1, failed.err);
