@@ -248,7 +248,9 @@ void validate(const CaptureArgs& a) {
       check_capture_size(file, a.limits);
       trace = read_capture(file, read_options(a));
     } catch (const InputError& e) {
-      // One bad file does not stop the others; it is reported and the exit status says so.
+      // One bad file does not stop the others; it is reported and the exit status says so. A
+      // single capture's error is the command's one line.
+      if (a.files.size() == 1 && !a.json) throw;
       unreadable = true;
       if (a.json) {
         nlohmann::json j{{"file", file}, {"verdict", "unusable"}, {"reasons", {e.what()}}, {"error", e.what()}};

@@ -390,6 +390,8 @@ BOOST_AUTO_TEST_CASE(item_10_capture_validate_with_a_bad_capture_leaves_no_folde
   s.write("mine/notes.txt", "x");
   expect_refused(run_apart("capture validate " + cap + " --no-simulate --out " + (s.dir / "mine").string()),
                  {"not a folder stoneskip made: refusing to replace it"});
+  expect_refused(run_apart("capture validate /dev/zero --no-simulate --out " + (s.dir / "z").string()),
+                 {"/dev/zero: cannot read: it is a character device"});
   BOOST_TEST(s.holds_only({"cv", "mine"}));
 }
 
