@@ -46,6 +46,13 @@ BOOST_AUTO_TEST_CASE(one_bad_value_per_documented_key_through_its_command) {
   const fs::path out = dir / "out";
   fs::remove_all(dir);
   fs::create_directories(out);
+  struct Remove {
+    fs::path p;
+    ~Remove() {
+      std::error_code ec;
+      fs::remove_all(p, ec);  // also when a requirement fails
+    }
+  } remove{dir};
   std::ofstream(dir / "stone.obj") << "v 0 0 0\nv 0.03 0 0\nv 0 0.03 0\nv 0 0 0.01\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
   const std::string state = replace_once(kStone, "speed_m_s = 8.0\npath_angle_deg = 10.0\nattack_angle_deg = 10.0\nheight_m = 0.1\n",
                                          "[throw.state]\nposition_m = [0.0, 0.0, 0.1]\nvelocity_m_s = [7.9, 0.0, -1.4]\n"
@@ -120,7 +127,6 @@ BOOST_AUTO_TEST_CASE(one_bad_value_per_documented_key_through_its_command) {
   }
   BOOST_TEST(per_block["stone"] + per_block["scene"] + per_block["wave"] + per_block["baseline"] >= 85);
   BOOST_TEST(per_block["sweep"] == 12);
-  fs::remove_all(dir);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
