@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/hdf5_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/signal_cleanup.hpp"
 
 namespace stoneskip {
 
@@ -50,17 +52,20 @@ bool is_report_folder(const fs::path& dir) {
 
 ReportBuild::ReportBuild(ReportBuildOptions options) : options_(std::move(options)) {
   const fs::path& out = options_.out_dir;
-  if (out.empty()) throw_input_error("--out", 0, "", "an output folder is required");
+  if (out.empty()) throw_input_error("--out", 0, "", "an output folder is required (got an empty name)");
   std::error_code ec;
   fs::path parent = out.parent_path();
   if (parent.empty()) parent = ".";
-  if (!fs::is_directory(parent, ec))
+  struct stat st {};
+  if (::stat(parent.c_str(), &st) != 0)
     throw_input_error(out.string(), 0, "", "cannot write: folder '" + parent.string() + "' does not exist");
+  if (!S_ISDIR(st.st_mode))
+    throw_input_error(out.string(), 0, "", "cannot write: '" + parent.string() + "' is " + file_type_words(st.st_mode) + ", not a folder");
   if (::access(parent.c_str(), W_OK) != 0)
     throw_input_error(out.string(), 0, "", "cannot write: folder '" + parent.string() + "' is not writable");
-  if (fs::exists(fs::symlink_status(out, ec))) {
-    if (fs::is_symlink(fs::symlink_status(out, ec)) || !fs::is_directory(out, ec))
-      throw_input_error(out.string(), 0, "", "exists and is not a folder: refusing to replace it");
+  if (::lstat(out.c_str(), &st) == 0) {
+    if (!S_ISDIR(st.st_mode))
+      throw_input_error(out.string(), 0, "", "exists and is " + file_type_words(st.st_mode) + ", not a folder: refusing to replace it");
     if (!fs::is_empty(out, ec) && !is_report_folder(out))
       throw_input_error(out.string(), 0, "", "exists and is not a stoneskip report folder: refusing to replace it");
   }
@@ -69,15 +74,25 @@ ReportBuild::ReportBuild(ReportBuildOptions options) : options_(std::move(option
   key_ = settings_key(options_);
 
   // A work folder left by an earlier run: resume it if it was built with these settings.
-  if (fs::exists(fs::symlink_status(work_, ec))) {
-    if (!fs::is_directory(fs::symlink_status(work_, ec)) || !fs::is_regular_file(work_ / kManifest, ec))
+  if (::lstat(work_.c_str(), &st) == 0) {
+    if (!S_ISDIR(st.st_mode) || !fs::is_regular_file(work_ / kManifest, ec))
       throw_input_error(work_.string(), 0, "", "exists and is not a stoneskip work folder: remove it first");
+  } else {
+    // Made here: registered first, so that a signal removes it (tools/io/signal_cleanup.hpp).
+    created_work_ = true;
   }
-  fs::create_directories(work_ / "sections", ec);
-  if (ec) throw_input_error(work_.string(), 0, "", "cannot create the work folder: " + ec.message());
+  registered_ = RegisteredTemporary(work_, TemporaryKind::folder);
+  with_registry_lock([&] { fs::create_directories(work_ / "sections", ec); });
+  if (ec) {
+    if (created_work_) fs::remove_all(work_, ec);
+    registered_.release();
+    throw_input_error(work_.string(), 0, "", "cannot create the work folder: " + ec.message());
+  }
   lock_fd_ = ::open((work_ / kLock).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (lock_fd_ < 0 || ::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0)
+  if (lock_fd_ < 0 || ::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+    registered_.release();  // another process's folder: not ours to remove
     throw_input_error(out.string(), 0, "", "another stoneskip process is building this report");
+  }
   std::string old;
   if (fs::is_regular_file(work_ / kManifest, ec)) old = read_text_file(work_ / kManifest);
   if (old != manifest_text(options_.kind, key_)) {
@@ -92,6 +107,13 @@ ReportBuild::ReportBuild(ReportBuildOptions options) : options_(std::move(option
 
 ReportBuild::~ReportBuild() {
   if (lock_fd_ >= 0) ::close(lock_fd_);
+  // Stopped by an error before any section was finished: a work folder this run made holds
+  // nothing worth resuming, so it goes (bad input leaves no folder behind). With finished
+  // sections it stays for the next run to resume (README, "Reports").
+  if (!committed_ && created_work_ && stored_ == 0) {
+    std::error_code ec;
+    with_registry_lock([&] { fs::remove_all(work_, ec); });
+  }
 }
 
 std::optional<Record> ReportBuild::resume(const std::string& section) {
@@ -116,6 +138,7 @@ void ReportBuild::store(const std::string& section, const Record& record) {
   w.root().set_attr("section", section);
   store_record(w.root().create_group("record"), record);
   w.commit();
+  ++stored_;
   if (std::find(order_.begin(), order_.end(), section) == order_.end()) order_.push_back(section);
 }
 
@@ -146,22 +169,31 @@ void ReportBuild::commit() {
   fs::remove(work_ / kLock, ec);
   const fs::path& out = options_.out_dir;
   fs::path old;
-  if (fs::exists(fs::symlink_status(out, ec))) {
-    // Checked in the constructor; checked again, since time has passed.
-    if (!fs::is_directory(fs::symlink_status(out, ec)) || (!fs::is_empty(out, ec) && !is_report_folder(out)))
-      throw_input_error(out.string(), 0, "", "exists and is not a stoneskip report folder: refusing to replace it");
-    old = out;
-    old += ".old-" + std::to_string(::getpid());
-    fs::rename(out, old, ec);
-    if (ec) throw_input_error(out.string(), 0, "", "cannot replace: " + ec.message());
-  }
-  fs::rename(work_, out, ec);
-  if (ec) {
-    if (!old.empty()) fs::rename(old, out, ec);
-    throw_input_error(out.string(), 0, "", "cannot move the finished report into place");
-  }
+  RegisteredTemporary old_registered;
+  // Under the registry's lock: a signal sees the old report either in place or already replaced,
+  // never moved aside with nothing in its place.
+  with_registry_lock([&] {
+    struct stat st {};
+    if (::lstat(out.c_str(), &st) == 0) {
+      // Checked in the constructor; checked again, since time has passed.
+      if (!S_ISDIR(st.st_mode) || (!fs::is_empty(out, ec) && !is_report_folder(out)))
+        throw_input_error(out.string(), 0, "", "exists and is not a stoneskip report folder: refusing to replace it");
+      old = out;
+      old += ".old-" + std::to_string(::getpid());
+      old_registered = RegisteredTemporary(old, TemporaryKind::folder);
+      fs::rename(out, old, ec);
+      if (ec) throw_input_error(out.string(), 0, "", "cannot replace: " + ec.message());
+    }
+    fs::rename(work_, out, ec);
+    if (ec) {
+      if (!old.empty()) fs::rename(old, out, ec);
+      old_registered.release();
+      throw_input_error(out.string(), 0, "", "cannot move the finished report into place");
+    }
+    registered_.release();
+    committed_ = true;
+  });
   if (!old.empty()) fs::remove_all(old, ec);
-  committed_ = true;
 }
 
 }  // namespace stoneskip

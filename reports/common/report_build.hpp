@@ -13,11 +13,19 @@
 // settings is discarded. Only one process may build a folder at a time (a lock file).
 // An existing <DIR> is replaced only if it is a report folder stoneskip made (it holds a data.h5
 // with a `report` attribute) or an empty folder; anything else is refused with an InputError.
+//
+// What stops a build, and what it leaves:
+//  * an error (bad input found late, an internal error): the work folder stays if it holds
+//    finished sections (to be resumed); one this run made and stored nothing in is removed;
+//  * SIGINT, SIGTERM, SIGHUP: the work folder is registered with tools/io/signal_cleanup.hpp and
+//    removed whole — an interrupted report leaves nothing partial, even finished sections;
+//  * a crash, SIGKILL, a lost node: the work folder stays and the next run resumes it.
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "tools/io/signal_cleanup.hpp"
 #include "verification/study/study_sink.hpp"
 
 namespace stoneskip {
@@ -58,7 +66,10 @@ class ReportBuild : public StudySink {
   std::vector<std::string> order_;
   int lock_fd_ = -1;
   int resumed_ = 0;
+  int stored_ = 0;             // sections stored by this run
+  bool created_work_ = false;  // the work folder did not exist before this run
   bool committed_ = false;
+  RegisteredTemporary registered_;  // the work folder, while it is one
 };
 
 // True if `dir` is a folder this program made: it holds data.h5 with a `report` attribute.

@@ -41,11 +41,13 @@
 #include "tools/capture/synthetic_capture.hpp"
 #include "tools/capture/trace_csv.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "tools/cli/limit_options.hpp"
 #include "tools/cli/report_render.hpp"
 #include "tools/cli/terminal_progress.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/progress.hpp"
+#include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/stone_case.hpp"
 #include "tools/scene/throw_output.hpp"
 #include "tools/scene/scene_throw.hpp"
@@ -82,6 +84,7 @@ struct CaptureArgs {
   bool progress = false;
   std::string scene;
   std::vector<std::string> scene_sets;
+  ResourceLimits limits;
 };
 
 void add_read(CLI::App* cmd, CaptureArgs& a) {
@@ -90,6 +93,20 @@ void add_read(CLI::App* cmd, CaptureArgs& a) {
   cmd->add_option("--remote", a.remote, "csv: the remote to read (the N of a '#WMN' column suffix; default: the first with data)")
       ->check(CLI::Range(1, 999));
   cmd->add_option("--columns", a.columns, "csv: map columns, key[unit]=Column Name,... (keys: t, ax, ay, az, wx, wy, wz, raw_pitch, raw_roll, raw_yaw, speed_pitch, speed_roll, speed_yaw, slow_*, fast_*, buttons, button_a, button_b, pitch, roll, seq)");
+}
+
+// A capture is seconds to minutes of reports (a minute at 100 Hz is about 0.5 MB of text), and
+// reading one takes about 7 times its size in memory (1.44 GB for a 218 MB, 3-million-row trace):
+// a larger file is refused before it is read (cases/README.md, Limits).
+constexpr double kMaxCaptureBytes = 64e6;
+
+void check_capture_size(const std::string& file, const ResourceLimits& limits) {
+  std::error_code ec;
+  const auto bytes = fs::file_size(file, ec);
+  if (ec || limits.allow_large) return;  // not a regular file: the reader says what it is
+  if (static_cast<double>(bytes) > kMaxCaptureBytes)
+    throw_input_error(file, 0, "", "is " + human_bytes(static_cast<double>(bytes)) + ", above the " + human_bytes(kMaxCaptureBytes) +
+                                       " a capture may be (hours of reports; cases/README.md, Limits); --allow-large lifts it");
 }
 
 CaptureReadOptions read_options(const CaptureArgs& a) {
@@ -311,14 +328,28 @@ void validate(const CaptureArgs& a) {
   if (!a.no_simulate) c = load_stone_case(a.case_file, a.sets);
   const std::optional<StoneCase> scene = load_scene_case(a);
   if (scene && a.no_simulate) throw InputError("capture validate: --scene and --no-simulate cannot be given together");
+  if (a.members < 0) throw_input_error("--members", 0, "", "must be >= 0 (got " + std::to_string(a.members) + ")");
+  if (c) {
+    // Limits before any work (cases/README.md, Limits): every capture's ensemble is a throw per member.
+    ResourceEstimate e = estimate_run(*c, RunSolvers{true, !a.no_reference, false});
+    const double members = static_cast<double>(a.members) * static_cast<double>(a.files.size());
+    e.add_work(members * e.work.front().count, kMaxRegressTriangleEvaluations,
+               "triangle evaluations in the ensembles (" + std::to_string(a.files.size()) + " captures × " +
+                   std::to_string(a.members) + " members, each a throw of the case)");
+    enforce_limits(e, a.limits, "--members");
+  }
   // 1. Every file read first: a report holds every capture asked for, or there is none. Without
   //    --out one bad file does not stop the others; it is reported and the exit status says so.
   std::vector<std::optional<Trace>> traces;
   bool unreadable = false;
   for (const auto& file : a.files) {
     try {
+      check_capture_size(file, a.limits);
       traces.emplace_back(read_capture(file, read_options(a)));
     } catch (const InputError& e) {
+      // One bad file does not stop the others; it is reported and the exit status says so. A
+      // single capture's error is the command's one line.
+      if (a.files.size() == 1 && !a.json) throw;
       unreadable = true;
       traces.emplace_back(std::nullopt);
       if (a.json) {
@@ -361,13 +392,11 @@ void validate(const CaptureArgs& a) {
         so.reference = !a.no_reference;
         so.realtime_options = c->realtime;
         so.reference_options = c->reference;
-        std::optional<Progress> progress;
-        if (a.progress) {
-          progress.emplace("capture ensemble " + an.source, an.ensemble.size());
-          so.progress = [&progress](std::size_t, std::size_t) { progress->tick(); };
-        }
+        // Shown at once with --progress, otherwise once the ensemble has run 2 s (issue 10).
+        Progress progress("capture ensemble " + an.source, an.ensemble.size(), a.progress ? 0.0 : 2.0);
+        so.progress = [&progress](std::size_t, std::size_t) { progress.tick(); };
         sim = simulate_capture(c->stone, c->environment, an, so);
-        if (progress) progress->done();
+        progress.done();
       }
       unusable = unusable || !an.can_throw();
       if (a.json) {
@@ -410,6 +439,7 @@ void throw_capture(const CaptureArgs& a) {
   if (scene && !a.out.empty()) throw InputError("capture throw: --out is not written with --scene (use capture validate --scene --out DIR for the report)");
   StoneCase c = load_stone_case(a.case_file, a.sets);
   if (!a.out.empty()) AtomicOutput check(a.out);
+  check_capture_size(a.files.front(), a.limits);
   const Trace trace = read_capture(a.files.front(), read_options(a));
   CaptureOptions o = capture_options(a, trace);
   o.members = 0;  // the intervals are validate's business; the throw is the nominal one
@@ -433,6 +463,7 @@ void throw_capture(const CaptureArgs& a) {
   c.throw_from_parameters = false;
   c.title = "capture " + a.files.front();
   std::vector<std::pair<std::string, ThrowResult>> results;
+  const Heartbeat alive("capture throw");  // a line on stderr once the solves take more than 2 s
   if (a.solver == "realtime" || a.solver == "both")
     results.emplace_back("realtime", run_realtime(c.stone, c.environment, c.initial, c.realtime));
   if (a.solver == "reference" || a.solver == "both")
@@ -446,17 +477,23 @@ void throw_capture(const CaptureArgs& a) {
     print_verdict(an, nullptr);
     for (const auto& [name, r] : results) std::cout << text_summary(c, r) << "\n";
   }
-  if (!a.out.empty()) {
+  bool failed = false;
+  for (const auto& [name, r] : results) failed = failed || r.outcome == Outcome::failed;
+  if (failed) set_exit_code(1);
+  if (!a.out.empty() && failed) {
+    std::fprintf(stderr, "stoneskip: %s not written: the solve failed (a failed run leaves no result file)\n", a.out.c_str());
+  } else if (!a.out.empty()) {
     std::vector<std::pair<std::string, const ThrowResult*>> refs;
     for (const auto& [name, r] : results) refs.emplace_back(name, &r);
     write_throw_file(a.out, c, refs);
   }
-  for (const auto& [name, r] : results)
-    if (r.outcome == Outcome::failed) set_exit_code(1);
 }
 
 void convert(const CaptureArgs& a) {
+  check_capture_size(a.files.front(), a.limits);
+  std::optional<Heartbeat> alive(std::in_place, "capture convert");  // a line once reading takes more than 2 s
   Trace t = read_capture(a.files.front(), read_options(a));
+  alive.reset();
   for (const auto& w : t.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   write_text_file(a.out, trace_csv_text(t));
   std::printf("wrote %s (%zu samples from %s)\n", a.out.c_str(), t.samples.size(), t.format.c_str());
@@ -572,32 +609,37 @@ void add_capture(CLI::App& app) {
   auto* v = cmd->add_subcommand("validate", "Judge captures (verdict, timing, clipping, still part, release, throw with intervals, bounce counts)");
   v->add_option("FILE", a->files, "Capture files (any format)")->required();
   v->add_flag("--json", a->json, "One JSON object per capture (one per line)");
-  v->add_option("--out", a->out, "Write the captures report into DIR (index.md, figures/, data.h5; an existing report folder is replaced)");
+  v->add_option("--out", a->out, "Write the captures report into DIR (index.md, figures/, data.h5; an existing report folder is replaced)")
+      ->check([](const std::string& d) { return d.empty() ? std::string("needs a folder name (got an empty one)") : std::string(); });
   v->add_flag("--no-reference", a->no_reference, "Skip the CVODE reference run of the nominal throw");
   v->add_flag("--no-simulate", a->no_simulate, "Skip the solvers (no case file needed)");
   v->add_flag("--strict", a->strict, "Exit with status 1 if a capture is unusable");
-  v->add_flag("--progress", a->progress, "Show the ensemble's progress on stderr");
+  v->add_flag("--progress", a->progress, "Show the ensemble's progress on stderr at once (otherwise after 2 s)");
   v->add_option("--scene", a->scene, "Also throw each usable capture into this scene case against both references (its report section shows them)");
   v->add_option("--scene-set", a->scene_sets, "Override a key of the scene case: section.key=value (repeatable)");
   add_common(v, *a);
   add_case(v, *a);
+  add_limit_options(v, a->limits);
   v->callback([a] { validate(*a); });
 
   auto* t = cmd->add_subcommand("throw", "Run the throw a capture records through the solvers");
   t->add_option("FILE", a->files, "Capture file")->required()->expected(1);
   t->add_option("--solver", a->solver, "realtime, reference or both (default)")->check(CLI::IsMember({"realtime", "reference", "both"}));
   t->add_flag("--json", a->json, "Print one JSON object");
-  t->add_option("--out", a->out, "Write the trajectories and the case to this HDF5 file");
+  t->add_option("--out", a->out, "Write the trajectories and the case to this HDF5 file")
+      ->check([](const std::string& f) { return f.empty() ? std::string("needs a file name (got an empty one)") : std::string(); });
   t->add_option("--scene", a->scene, "Throw it into this scene case ([water], [scene]) against the CVODE and the forced spectral references");
   t->add_option("--scene-set", a->scene_sets, "Override a key of the scene case: section.key=value (repeatable)");
   add_common(t, *a);
   add_case(t, *a);
+  add_limit_options(t, a->limits);
   t->callback([a] { throw_capture(*a); });
 
   auto* c = cmd->add_subcommand("convert", "Write any capture as a stoneskip trace CSV");
   c->add_option("FILE", a->files, "Capture file")->required()->expected(1);
   c->add_option("--out", a->out, "Trace CSV to write")->required();
   add_read(c, *a);
+  add_limit_options(c, a->limits);
   c->callback([a] { convert(*a); });
 
   auto* cols = cmd->add_subcommand("columns", "List the column names the csv reader recognises, with their units");

@@ -6,13 +6,18 @@
 //   stoneskip --help                                   # every command
 //
 // Exit status: 0 success, 1 a check failed (e.g. a regression), 2 bad input (one-line message
-// naming the file and the line or key), 3 an internal error.
+// naming the file and the line or key; an output place that cannot be written is bad input too),
+// 3 an internal error, 128 + N stopped by signal N (SIGINT 130, SIGTERM 143: temporaries removed,
+// tools/io/signal_cleanup.hpp).
 #include <cstdio>
 #include <exception>
+#include <filesystem>
+#include <string>
 #include <vector>
 
 #include "tools/cli/command_registry.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/signal_cleanup.hpp"
 
 namespace stoneskip::cli {
 
@@ -44,6 +49,8 @@ int exit_code() { return g_exit_code; }
 }  // namespace stoneskip::cli
 
 int main(int argc, char** argv) {
+  // First, before any thread exists: SIGINT, SIGTERM and SIGHUP remove the temporaries.
+  stoneskip::install_signal_cleanup();
   CLI::App app{"stoneskip: verification and validation of real-time stone-skipping simulation"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "stoneskip 0.1.0");
@@ -62,6 +69,14 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const stoneskip::InputError& e) {
     std::fprintf(stderr, "stoneskip: %s\n", e.what());
+    return 2;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A path the user named that cannot be read or written (the commands check the ones they
+    // know; this catches the rest): bad input, not a bug.
+    std::string what = e.what();
+    for (char& c : what)
+      if (c == '\n') c = ' ';
+    std::fprintf(stderr, "stoneskip: %s\n", what.c_str());
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "stoneskip: internal error: %s\n", e.what());

@@ -8,6 +8,8 @@
 //
 //   stoneskip regress                                     # all stored baselines (< 1 min)
 //   stoneskip regress --baseline cases/baselines/spin_paper_realtime.toml
+// Every baseline and its case are read and checked, and the work of all the throws (grids and
+// bisections) estimated and held to the limits of cases/README.md, before any throw is run.
 #include <algorithm>
 #include <chrono>
 #include <ctime>
@@ -17,10 +19,12 @@
 
 #include "stoneskip_version.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "tools/cli/limit_options.hpp"
 #include "tools/cli/terminal_progress.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
-#include "verification/stones/bounce_baseline.hpp"
+#include "tools/scene/baseline_file.hpp"
+#include "tools/scene/resource_estimate.hpp"
 
 namespace stoneskip::cli {
 namespace {
@@ -54,7 +58,9 @@ void add_regress(CLI::App& app) {
   cmd->add_option("--baseline", *files, "Baseline files (default: cases/baselines/*.toml)");
   cmd->add_flag("--update", *update, "Rewrite each baseline's [result] from the recomputed curve");
   cmd->add_option("--workers", *workers, "Worker threads")->capture_default_str()->check(CLI::Range(1, 64));
-  cmd->callback([files, update, workers] {
+  auto limits = std::make_shared<ResourceLimits>();
+  add_limit_options(cmd, *limits);
+  cmd->callback([files, update, workers, limits] {
     const auto t0 = std::chrono::steady_clock::now();
     const std::vector<std::string> paths = files->empty() ? default_baselines() : *files;
     // Read everything first: bad input is reported before any work.
@@ -63,7 +69,9 @@ void add_regress(CLI::App& app) {
     for (const auto& p : paths) {
       stored.push_back(read_baseline(p));
       specs.push_back(sweep_of(stored.back()));
+      enforce_limits(estimate_regress({specs.back()}), *limits, p);
     }
+    enforce_limits(estimate_regress(specs), *limits, "regress");
     std::printf("regress: %zu baseline%s\n", paths.size(), paths.size() == 1 ? "" : "s");
     const auto results = run_bounce_sweeps(specs, ParallelOptions{*workers, "regress", terminal_progress()});
     int failed = 0;

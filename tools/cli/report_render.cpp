@@ -1,5 +1,7 @@
 #include "tools/cli/report_render.hpp"
 
+#include <sys/stat.h>
+
 #include <cstdio>
 
 #include "reports/capture/capture_report.hpp"
@@ -7,7 +9,9 @@
 #include "reports/stones/stones_report.hpp"
 #include "reports/waves/waves_report.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/progress.hpp"
 
 namespace stoneskip::cli {
 
@@ -21,12 +25,18 @@ RenderedReport render_stored_report(const StoredReport& s) {
 
 std::pair<int, std::size_t> render_folder(const std::filesystem::path& dir) {
   const StoredReport stored = load_stored_report(dir / "data.h5");
+  // The figures go to DIR/figures: it must be a folder, or absent (then it is made).
+  struct stat st {};
+  const std::filesystem::path figures = dir / "figures";
+  if (::lstat(figures.c_str(), &st) == 0 && !S_ISDIR(st.st_mode))
+    throw_input_error(figures.string(), 0, "", "exists and is " + file_type_words(st.st_mode) + ", not a folder: cannot draw the figures into it");
   RenderedReport r;
   try {
     r = render_stored_report(stored);
   } catch (const RecordError& e) {
     throw_input_error((dir / "data.h5").string(), 0, "", std::string("incomplete report data: ") + e.what());
   }
+  const Heartbeat alive("drawing " + std::to_string(r.figures.size()) + " figures");  // a line after 2 s
   const RenderSummary s = write_rendered_report(dir, r);
   for (const auto& f : s.failures) std::fprintf(stderr, "figure failed: %s\n", f.c_str());
   if (!s.failures.empty()) set_exit_code(1);

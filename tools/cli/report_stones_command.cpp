@@ -12,6 +12,7 @@
 
 #include "tools/cli/command_registry.hpp"
 #include "tools/cli/report_render.hpp"
+#include "tools/io/input_error.hpp"
 #include "tools/cli/terminal_progress.hpp"
 #include "tools/scene/stone_study_file.hpp"
 
@@ -31,6 +32,8 @@ void report_stones(const ReportStonesArgs& a) {
       !a.study.empty() ? a.study : a.cases + (a.quick ? "/studies/stones_quick.toml" : "/studies/stones.toml");
   StoneStudyFile f = load_stone_study_file(study);
   f.options.workers = a.workers;
+  // Settings the study itself would refuse are bad input: refused before the folder is made.
+  if (std::string why; !f.options.valid(&why)) throw_input_error(study, 0, "", why);
   ReportBuild build({a.out, "stones", f.settings_text,
                      "stoneskip report stones --out " + a.out +
                          (a.study.empty() ? (a.quick ? " --quick" : "") : " --study " + a.study) +

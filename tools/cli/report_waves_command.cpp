@@ -11,6 +11,7 @@
 
 #include "tools/cli/command_registry.hpp"
 #include "tools/cli/report_render.hpp"
+#include "tools/io/input_error.hpp"
 #include "tools/scene/wave_study_file.hpp"
 
 namespace stoneskip::cli {
@@ -27,6 +28,8 @@ void report_waves(const ReportWavesArgs& a) {
   const std::string study =
       !a.study.empty() ? a.study : a.cases + (a.quick ? "/studies/waves_quick.toml" : "/studies/waves.toml");
   const WaveStudyFile f = load_wave_study_file(study);
+  // Settings the study itself would refuse are bad input: refused before the folder is made.
+  if (std::string why; !f.options.valid(&why)) throw_input_error(study, 0, "", why);
   ReportBuild build({a.out, "waves", "# " + study + "\n" + f.text,
                      "stoneskip report waves --out " + a.out + (a.study.empty() ? (a.quick ? " --quick" : "") : " --study " + a.study),
                      terminal_progress()});

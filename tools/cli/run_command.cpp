@@ -1,4 +1,5 @@
 // stoneskip run CASE [--set key=value ...] [--solver realtime|reference|both] [--rtol R] [--json] [--out FILE.h5]
+//                    [--max-memory-gb G] [--allow-large]
 //
 // One throw of a stone case: prints a readable summary (bounces, each contact's times and speeds,
 // distance, lateral deviation, why the throw ended, what it cost) or, with --json, one JSON object
@@ -6,14 +7,20 @@
 //   stoneskip run cases/paper_8ms_spin.toml
 //   stoneskip run cases/paper_8ms_spin.toml --set environment.convention=paper --json
 //   stoneskip run cases/clanet_disk.toml --solver both --out clanet.h5
+// Before any work: the case is validated, the run's memory and work are estimated and held to the
+// limits of cases/README.md ("Limits"), and the --out file's place is checked by creating its
+// temporary. A failed solve (exit 1) writes no result file.
 #include <cstdio>
 #include <iostream>
 #include <memory>
 
 #include "solvers/reference/cvode_stone.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "tools/cli/limit_options.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/progress.hpp"
+#include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/scene_throw.hpp"
 #include "tools/scene/throw_output.hpp"
 
@@ -25,25 +32,41 @@ struct RunArgs {
   std::vector<std::string> sets;
   std::string solver = "realtime";
   double rtol = 0;
+  CLI::Option* rtol_option = nullptr;
   bool json = false;
   std::string out;
+  CLI::Option* out_option = nullptr;
+  ResourceLimits limits;
 };
 
 void run(const RunArgs& a) {
   StoneCase c = load_stone_case(a.case_file, a.sets);
-  if (a.rtol != 0) {
-    if (!(a.rtol >= 1e-15 && a.rtol <= 1e-2)) throw_input_error("--rtol", 0, "", "must be in [1e-15, 1e-2]");
+  const bool realtime = a.solver == "realtime" || a.solver == "both";
+  const bool reference = a.solver == "reference" || a.solver == "both";
+  if (a.rtol_option->count() > 0) {
+    if (!reference) throw_input_error("--rtol", 0, "", "only the reference solver has a tolerance: add --solver reference or both");
+    if (!(a.rtol >= 1e-15 && a.rtol <= 1e-2)) {
+      char got[32];
+      std::snprintf(got, sizeof got, "%g", a.rtol);
+      throw_input_error("--rtol", 0, "", std::string("must be in [1e-15, 1e-2] (got ") + got + ")");
+    }
     c.reference.rtol = a.rtol;
   }
-  if (!a.out.empty()) AtomicOutput check(a.out);  // fail on an unwritable path before computing
-  if (c.water && a.solver != "realtime")
+  const bool writes = a.out_option->count() > 0;
+  if (writes && a.out.empty()) throw_input_error("--out", 0, "", "needs a file name (got an empty one)");
+  if (c.water && reference)
     throw_input_error(c.file, 0, "water", "the CVODE reference supports still water only: use --solver realtime with [water]");
+  enforce_limits(estimate_run(c, RunSolvers{realtime, reference, writes}), a.limits, c.file);
+  if (writes) AtomicOutput probe(a.out);  // an unwritable place is refused before any work
 
   std::vector<std::pair<std::string, ThrowResult>> results;
-  if (a.solver == "realtime" || a.solver == "both")
-    results.emplace_back("realtime", run_scene_realtime(c).result);
-  if (a.solver == "reference" || a.solver == "both")
-    results.emplace_back("reference", run_reference(c.stone, c.environment, c.initial, c.reference));
+  {
+    const Heartbeat alive("run");
+    if (realtime) results.emplace_back("realtime", run_scene_realtime(c).result);
+    if (reference) results.emplace_back("reference", run_reference(c.stone, c.environment, c.initial, c.reference));
+  }
+  bool failed = false;
+  for (const auto& [name, r] : results) failed = failed || r.outcome == Outcome::failed;
 
   if (a.json) {
     nlohmann::json j;
@@ -55,18 +78,22 @@ void run(const RunArgs& a) {
       for (const auto& [name, r] : results) j[name] = json_summary(r);
     }
     j["convention"] = to_string(c.environment.convention);
-    std::cout << j.dump(2) << std::endl;
+    // A title from a file name need not be UTF-8: replace what is not, never throw.
+    std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl;
   } else {
     for (const auto& [name, r] : results) std::cout << text_summary(c, r) << (results.size() > 1 ? "\n" : "");
   }
-  if (!a.out.empty()) {
-    std::vector<std::pair<std::string, const ThrowResult*>> refs;
-    for (const auto& [name, r] : results) refs.emplace_back(name, &r);
-    write_throw_file(a.out, c, refs);
-    if (!a.json) std::cout << "wrote " << a.out << "\n";
+  if (writes) {
+    if (failed) {
+      std::fprintf(stderr, "stoneskip: %s not written: the solve failed (a failed run leaves no result file)\n", a.out.c_str());
+    } else {
+      std::vector<std::pair<std::string, const ThrowResult*>> refs;
+      for (const auto& [name, r] : results) refs.emplace_back(name, &r);
+      write_throw_file(a.out, c, refs);
+      if (!a.json) std::cout << "wrote " << a.out << "\n";
+    }
   }
-  for (const auto& [name, r] : results)
-    if (r.outcome == Outcome::failed) set_exit_code(1);
+  if (failed) set_exit_code(1);
 }
 
 void add_run(CLI::App& app) {
@@ -76,9 +103,10 @@ void add_run(CLI::App& app) {
   cmd->add_option("--set", a->sets, "Override a case key: section.key=value (repeatable)");
   cmd->add_option("--solver", a->solver, "realtime (default), reference (CVODE) or both")
       ->check(CLI::IsMember({"realtime", "reference", "both"}));
-  cmd->add_option("--rtol", a->rtol, "Relative tolerance of the reference solver (default from the case, 1e-10)");
+  a->rtol_option = cmd->add_option("--rtol", a->rtol, "Relative tolerance of the reference solver, in [1e-15, 1e-2] (default from the case, 1e-10)");
   cmd->add_flag("--json", a->json, "Print one JSON object instead of the summary");
-  cmd->add_option("--out", a->out, "Write the trajectory, contacts and case to this HDF5 file");
+  a->out_option = cmd->add_option("--out", a->out, "Write the trajectory, contacts and case to this HDF5 file (not on a failed solve)");
+  add_limit_options(cmd, a->limits);
   cmd->callback([a] { run(*a); });
 }
 

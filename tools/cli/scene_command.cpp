@@ -19,9 +19,11 @@
 
 #include "reports/scene/scene_movie.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "tools/cli/limit_options.hpp"
 #include "tools/cli/terminal_progress.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/scene_throw.hpp"
 #include "tools/scene/throw_output.hpp"
 
@@ -37,6 +39,7 @@ struct SceneArgs {
   std::string movie;
   std::string movie_size = "1280x540";
   double movie_rate_hz = 0;
+  ResourceLimits limits;
 };
 
 // A folder for the movie's frames, removed with the object.
@@ -151,6 +154,16 @@ void run(const SceneArgs& a) {
   const SceneOptions o = scene_options(c, SceneEnd::at_duration);
   std::string why;
   if (!o.valid(&why)) throw_input_error(c.file, 0, "scene", why);
+  // Limits before any work (cases/README.md, Limits): the stone and its water over the scene's
+  // duration (the stone stops at its t_max_s, the water runs on), and a cost record per frame.
+  {
+    StoneCase over = c;
+    over.realtime.t_max_s = std::max(c.realtime.t_max_s, o.duration_s);
+    ResourceEstimate e = estimate_run(over, RunSolvers{true, false, false});
+    const double frames = o.duration_s * o.frame_rate_hz;
+    e.add_memory(frames * 64.0, std::to_string(static_cast<long long>(frames)) + " frames' records");
+    enforce_limits(e, a.limits, c.file);
+  }
   // The movie's settings and tools are checked before any work.
   std::unique_ptr<MovieRecorder> movie;
   std::unique_ptr<WorkFolder> work;
@@ -209,6 +222,7 @@ void add_scene(CLI::App& app) {
   cmd->add_option("--movie-size", a->movie_size, "Movie frame size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--movie-rate", a->movie_rate_hz,
                   "Movie frames per second: the scene's frame rate divided by a whole number (default: every frame for MP4, ≤ 30/s for GIF)");
+  add_limit_options(cmd, a->limits);
   cmd->callback([a] { run(*a); });
 }
 

@@ -13,6 +13,7 @@
 // design's extreme points (a bad file fails here, exit 2, nothing written); (2) rank 0 checks the
 // output and opens the journal (--resume: reads it back); (3) the throws run; (4) rank 0 writes
 // the file in throw order and removes the journal.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -21,8 +22,10 @@
 
 #include "solvers/reference/cvode_stone.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "tools/cli/limit_options.hpp"
 #include "tools/cli/terminal_progress.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/scene_throw.hpp"
 #include "tools/scene/sweep_file.hpp"
 #include "verification/sweep/sweep_run.hpp"
@@ -33,11 +36,12 @@ namespace {
 
 struct SweepArgs {
   std::string file;
-  std::string out;
+  std::optional<std::string> out;
   bool resume = false;
   int threads = -1;  // auto
   std::size_t max_chunk = 32;
   bool quiet = false;
+  ResourceLimits limits;
 };
 
 // Collective: true when every rank got this far without an error. Otherwise the lowest failing
@@ -128,6 +132,13 @@ void run(const SweepArgs& a) {
     cases = std::make_unique<SweepCases>(*sweep);
     if (a.threads < -1) throw_input_error("--threads", 0, "", "must be >= 0");
     if (a.max_chunk < 1) throw_input_error("--max-chunk", 0, "", "must be >= 1");
+    if (a.out && a.out->empty()) throw_input_error("--out", 0, "", "needs a file name (got an empty one)");
+    // Limits decided before any throw (cases/README.md, Limits): the table, the heaviest throw, all.
+    const double width = static_cast<double>(sweep_record(sweep->design, sweep->solvers).width());
+    const double threads = a.threads > 0 ? a.threads : std::max(1u, std::thread::hardware_concurrency());
+    enforce_limits(estimate_sweep(cases->heaviest_throw(), static_cast<double>(sweep->design.size()),
+                                  (width + 1) * sizeof(double), threads),
+                   a.limits, sweep->file);
   } catch (const InputError& e) {
     error = e.what();
   }
@@ -145,7 +156,7 @@ void run(const SweepArgs& a) {
   p.base_overrides = sweep->base_sets;
   p.resolved_settings = cases->base().resolved_settings();
   SweepRunOptions options;
-  options.out = a.out.empty() ? std::filesystem::path(a.file).stem().string() + ".h5" : a.out;
+  options.out = a.out ? *a.out : std::filesystem::path(a.file).stem().string() + ".h5";
   options.resume = a.resume;
   options.master_threads = a.threads;
   options.max_chunk = a.max_chunk;
@@ -204,6 +215,7 @@ void add_sweep(CLI::App& app) {
                   "0 with workers: rank 0 only schedules)");
   cmd->add_option("--max-chunk", a->max_chunk, "Largest number of throws handed out at once (default 32)");
   cmd->add_flag("--quiet", a->quiet, "No configuration, no progress line");
+  add_limit_options(cmd, a->limits);
   cmd->callback([a] { run(*a); });
 }
 

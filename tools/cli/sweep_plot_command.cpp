@@ -7,30 +7,44 @@
 //   stoneskip sweep-plot speed_spin.h5 --out out/speed_spin --map realtime_distance_m --map cost_realtime_wall_s
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "reports/sweep/sweep_page.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/progress.hpp"
 
 namespace stoneskip::cli {
 namespace {
 
 struct PlotArgs {
   std::string file;
-  std::string out;
+  std::optional<std::string> out;
   bool no_render = false;
   std::vector<std::string> columns;
 };
 
 void run(const PlotArgs& a) {
   const SweepData data = read_sweep_file(a.file);
-  std::filesystem::path dir = a.out;
-  if (dir.empty()) dir = std::filesystem::path(a.file).replace_extension("").string() + "_plots";
+  if (a.out && a.out->empty()) throw_input_error("--out", 0, "", "needs a folder name (got an empty one)");
+  const std::filesystem::path dir =
+      a.out ? std::filesystem::path(*a.out) : std::filesystem::path(std::filesystem::path(a.file).replace_extension("").string() + "_plots");
   if (!a.no_render && !gnuplot_available())
     throw_input_error("gnuplot", 0, "", "not found on PATH (apt-get install gnuplot-nox), or use --no-render");
   SweepMapOptions maps;
   maps.columns = a.columns;
-  const SweepPageSummary s = write_sweep_page(dir, data, a.file, maps, !a.no_render);
+  // Built whole in a work folder, then moved into place; a page made before may be replaced.
+  AtomicFolder out(dir, [](const std::filesystem::path& d) {
+    return std::filesystem::is_regular_file(d / "index.md") && std::filesystem::is_regular_file(d / "data.h5");
+  });
+  std::optional<SweepPageSummary> page;
+  {
+    const Heartbeat alive("sweep-plot");  // a line on stderr once drawing takes more than 2 s
+    page = write_sweep_page(out.work_dir(), data, a.file, maps, !a.no_render);
+  }
+  const SweepPageSummary& s = *page;
+  out.commit();
   std::printf("wrote %s/index.md and %zu figures (%d drawn) from %zu throws\n", dir.c_str(), s.figures, s.render.rendered,
               data.throws.rows());
   for (const auto& f : s.render.failures) std::fprintf(stderr, "figure failed: %s\n", f.c_str());

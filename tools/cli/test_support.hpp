@@ -2,8 +2,12 @@
 // What the end-to-end tests of the command share: running the built executable and reading files.
 #include <sys/wait.h>
 
+#include <unistd.h>
+
 #include <array>
+#include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -26,6 +30,33 @@ inline Ran run_stoneskip(const std::string& args, bool keep_stderr = true) {
   while (std::fgets(buf.data(), buf.size(), p)) r.out += buf.data();
   const int st = pclose(p);
   r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return r;
+}
+
+// A run with stdout and stderr apart, its wall time, under a time limit (`timeout`: status 124
+// when the command ran past it).
+struct RanApart {
+  int status = -1;
+  std::string out, err;
+  double wall_s = 0;
+};
+
+inline std::string read_file(const std::filesystem::path& p);
+
+inline RanApart run_apart(const std::string& args, int timeout_s = 60) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("stoneskip_apart_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string cmd = "timeout " + std::to_string(timeout_s) + " " + std::string(STONESKIP_EXE) + " " + args + " >" +
+                          (dir / "o").string() + " 2>" + (dir / "e").string();
+  RanApart r;
+  const auto t0 = std::chrono::steady_clock::now();
+  const int raw = std::system(cmd.c_str());
+  r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.out = read_file(dir / "o");
+  r.err = read_file(dir / "e");
+  std::filesystem::remove_all(dir);
   return r;
 }
 

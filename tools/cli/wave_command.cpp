@@ -9,7 +9,10 @@
 //   stoneskip wave cases/wave_lengyel_counterexample.toml      # an unstable run, shown as such
 // Prints the resolved configuration, the RMS ("L2") and max errors in metres, the solution's own
 // RMS for scale, the steps and the CPU time. Without a periodic boundary there is no reference
-// and only the run's own figures are printed (errors are null in JSON).
+// and only the run's own figures are printed (errors are null in JSON). A run whose surface
+// overflows says so ("BLEW UP", JSON finite = false, blew_up_by_step, errors null) and exits 1.
+// Memory and cell updates are estimated first and held to the limits of cases/README.md.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -20,6 +23,9 @@
 #include "solvers/realtime/clocks.hpp"
 #include "solvers/spectral/spectral_wave.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "tools/cli/limit_options.hpp"
+#include "tools/io/progress.hpp"
+#include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/wave_case.hpp"
 #include "verification/waves/stability.hpp"
 #include "verification/waves/wave_problem.hpp"
@@ -31,6 +37,7 @@ struct WaveArgs {
   std::string case_file;
   std::vector<std::string> sets;
   bool json = false;
+  ResourceLimits limits;
 };
 
 double rms(const std::vector<double>& z) {
@@ -39,27 +46,48 @@ double rms(const std::vector<double>& z) {
   return std::sqrt(s / static_cast<double>(z.size()));
 }
 
+bool all_finite(const std::vector<double>& z) {
+  return std::all_of(z.begin(), z.end(), [](double v) { return std::isfinite(v); });
+}
+
 void run_wave(const WaveArgs& a) {
   WaveCase c = load_wave_case(a.case_file, a.sets);
+  enforce_limits(estimate_wave(c), a.limits, c.file);
   const HeightFieldOptions& w = c.water;
   const long steps = c.steps();
   const double sigma = w.courant(), mu_dt = w.damping_per_s * w.dt_s;
   const double limit = stability_limit(w.stencil, mu_dt);
 
-  // 1. Initial surface and the run.
+  // 1. Initial surface and the run, in up to 100 chunks: progress, and a surface that overflows
+  //    is caught by the end of the chunk where it did (then nothing is compared: its error is not 0).
   std::vector<double> z0, z;
   sample_disturbance(c.initial, w.nx, w.ny, w.cell_m, z0);
   HeightField field(w);
   field.set_state(z0);
   CpuTimer timer;
-  field.advance(steps);
+  long blown_up_by = -1;  // the step by which the surface was no longer finite
+  {
+    Progress progress("wave", static_cast<std::size_t>(steps), 2.0);
+    const long chunk = std::max(1L, steps / 100);
+    for (long done = 0; done < steps;) {
+      const long n = std::min(chunk, steps - done);
+      field.advance(n);
+      done += n;
+      progress.tick(static_cast<std::size_t>(n));
+      field.heights(z);
+      if (!all_finite(z)) {
+        blown_up_by = field.steps();
+        break;
+      }
+    }
+  }
   const double cpu_s = timer.seconds();
-  field.heights(z);
+  const bool finite = blown_up_by < 0;
 
   // 2. The reference on the same grid and at the same time (periodic only).
   const bool periodic = w.boundary == Boundary::periodic;
   FieldError err{NAN, NAN};
-  if (periodic) {
+  if (periodic && finite) {
     SpectralWaveOptions so;
     so.nx = w.nx;
     so.ny = w.ny;
@@ -74,7 +102,6 @@ void run_wave(const WaveArgs& a) {
     ref.evaluate(field.time_s(), zr);
     err = field_error(z, zr);
   }
-  const bool finite = std::isfinite(rms(z));
 
   if (a.json) {
     nlohmann::json j;
@@ -96,11 +123,12 @@ void run_wave(const WaveArgs& a) {
     auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
     j["l2_error"] = num(err.l2_m);
     j["max_error"] = num(err.max_m);
-    j["solution_rms_m"] = num(rms(z));
+    j["solution_rms_m"] = finite ? num(rms(z)) : nlohmann::json(nullptr);
     j["finite"] = finite;
+    j["blew_up_by_step"] = finite ? nlohmann::json(nullptr) : nlohmann::json(blown_up_by);
     j["cpu_s"] = cpu_s;
     j["cell_updates_per_s"] = cpu_s > 0 ? static_cast<double>(w.nx) * w.ny * steps / cpu_s : 0.0;
-    std::cout << j.dump(2) << std::endl;
+    std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl;
   } else {
     std::printf("%s: %s stencil (centre %.6g, orth %.6g, diag %.6g)/d², %d x %d cells of %.6g m, %s boundary\n",
                 c.title.c_str(), w.stencil.name.c_str(), w.stencil.centre, w.stencil.orth, w.stencil.diag, w.nx, w.ny,
@@ -110,7 +138,10 @@ void run_wave(const WaveArgs& a) {
     std::printf("  initial %s, amplitude %.6g m; %ld steps to t = %.6g s in %.3g s CPU (%.3g cell updates/s)\n",
                 to_string(c.initial.kind), c.initial.amplitude_m, steps, field.time_s(), cpu_s,
                 cpu_s > 0 ? static_cast<double>(w.nx) * w.ny * steps / cpu_s : 0.0);
-    if (periodic)
+    if (!finite)
+      std::printf("  BLEW UP: the surface was no longer finite by step %ld (t = %.6g s); no error is reported\n",
+                  blown_up_by, field.time_s());
+    else if (periodic)
       std::printf("  error vs the %s spectral reference: L2 (RMS) %.4g m, max %.4g m (solution RMS %.4g m)\n",
                   c.reference_semi_discrete ? "semi-discrete (stencil symbol)" : "continuum", err.l2_m, err.max_m, rms(z));
     else
@@ -120,6 +151,7 @@ void run_wave(const WaveArgs& a) {
   if (sigma > limit)
     std::fprintf(stderr, "note: sigma = %.4f exceeds the von Neumann limit %.4f of %s at mu dt = %.4g: the run is unstable\n",
                  sigma, limit, w.stencil.name.c_str(), mu_dt);
+  if (!finite) set_exit_code(1);  // a run that blew up is a failed run, like a failed solve
 }
 
 void add_wave(CLI::App& app) {
@@ -128,6 +160,7 @@ void add_wave(CLI::App& app) {
   cmd->add_option("CASE", a->case_file, "Wave case file (TOML, see cases/README.md)")->required();
   cmd->add_option("--set", a->sets, "Override a case key: section.key=value (repeatable)");
   cmd->add_flag("--json", a->json, "Print one JSON object (l2_error, max_error, steps, stencil, ...)");
+  add_limit_options(cmd, a->limits);
   cmd->callback([a] { run_wave(*a); });
 }
 

@@ -1,7 +1,12 @@
 #include "tools/io/atomic_file.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <system_error>
@@ -12,41 +17,170 @@ namespace stoneskip {
 
 namespace fs = std::filesystem;
 
-AtomicOutput::AtomicOutput(fs::path final_path) : final_(std::move(final_path)) {
-  fs::path dir = final_.parent_path();
+namespace {
+
+[[noreturn]] void refuse(const fs::path& p, const std::string& what) { throw_input_error(p.string(), 0, "", what); }
+
+std::string errno_words(int e) { return std::strerror(e); }
+
+// A unique temporary name beside the destination: "<name>.tmp-PID", then "<name>.tmp-PID-N" if
+// another writer of this process (or a file left by an earlier process with the same id) has it.
+fs::path temporary_name(const fs::path& final_path, int attempt) {
+  fs::path t = final_path;
+  t += ".tmp-" + std::to_string(::getpid());
+  if (attempt > 0) t += "-" + std::to_string(attempt);
+  return t;
+}
+
+}  // namespace
+
+std::string file_type_words(unsigned mode) {
+  switch (mode & S_IFMT) {
+    case S_IFREG: return "a regular file";
+    case S_IFDIR: return "a folder";
+    case S_IFLNK: return "a symbolic link";
+    case S_IFIFO: return "a FIFO";
+    case S_IFCHR: return "a character device";
+    case S_IFBLK: return "a block device";
+    case S_IFSOCK: return "a socket";
+  }
+  return "not a regular file";
+}
+
+void check_output_destination(const fs::path& path) {
+  if (path.empty()) throw_input_error("--out", 0, "", "an output file name is required (got an empty name)");
+  fs::path dir = path.parent_path();
   if (dir.empty()) dir = ".";
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) {
-    throw_input_error(final_.string(), 0, "", "cannot write: folder '" + dir.string() + "' does not exist");
+  struct stat st {};
+  if (::stat(dir.c_str(), &st) != 0) refuse(path, "cannot write: folder '" + dir.string() + "' does not exist");
+  if (!S_ISDIR(st.st_mode)) refuse(path, "cannot write: '" + dir.string() + "' is " + file_type_words(st.st_mode) + ", not a folder");
+  if (::lstat(path.c_str(), &st) == 0) {
+    if (S_ISDIR(st.st_mode)) refuse(path, "cannot write: it is a folder");
+    if (!S_ISREG(st.st_mode))
+      refuse(path, "cannot write: it exists and is " + file_type_words(st.st_mode) +
+                       ", not a regular file: refusing to replace it");
+  } else if (errno != ENOENT) {
+    refuse(path, "cannot write: " + errno_words(errno));
   }
-  if (::access(dir.c_str(), W_OK) != 0) {
-    throw_input_error(final_.string(), 0, "", "cannot write: folder '" + dir.string() + "' is not writable");
-  }
-  if (fs::is_directory(final_, ec)) {
-    throw_input_error(final_.string(), 0, "", "cannot write: it is a folder");
-  }
-  tmp_ = final_;
-  tmp_ += ".tmp-" + std::to_string(::getpid());
+}
+
+AtomicOutput::AtomicOutput(fs::path final_path) : final_(std::move(final_path)) {
+  check_output_destination(final_);
+  // Create the temporary now (registered first, so a signal between the two finds it), so that a
+  // place we cannot write is reported before any work.
+  with_registry_lock([&] {
+    for (int attempt = 0; attempt < 100; ++attempt) {
+      fs::path t = temporary_name(final_, attempt);
+      RegisteredTemporary reg(t, TemporaryKind::file);
+      const int fd = ::open(t.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0644);
+      if (fd >= 0) {
+        ::close(fd);
+        tmp_ = std::move(t);
+        registered_ = std::move(reg);
+        return;
+      }
+      if (errno != EEXIST) {
+        const int e = errno;
+        fs::path dir = final_.parent_path();
+        if (dir.empty()) dir = ".";
+        refuse(final_, "cannot write in folder '" + dir.string() + "': " + errno_words(e));
+      }
+    }
+    refuse(final_, "cannot write: no free temporary name beside it");
+  });
 }
 
 AtomicOutput::~AtomicOutput() {
   if (!committed_) {
-    std::error_code ec;
-    fs::remove(tmp_, ec);
+    with_registry_lock([&] {
+      ::unlink(tmp_.c_str());
+      registered_.release();
+    });
   }
 }
 
 void AtomicOutput::commit() {
+  // Checked when opened; checked again, since time has passed (a FIFO may have appeared).
+  check_output_destination(final_);
+  with_registry_lock([&] {
+    if (::rename(tmp_.c_str(), final_.c_str()) != 0) {
+      const int e = errno;
+      refuse(final_, "cannot write: " + errno_words(e));
+    }
+    registered_.release();
+    committed_ = true;
+  });
+}
+
+AtomicFolder::AtomicFolder(fs::path final_dir, const std::function<bool(const fs::path&)>& replaceable)
+    : final_(std::move(final_dir)), replaceable_(replaceable) {
+  if (final_.empty()) throw_input_error("--out", 0, "", "an output folder is required (got an empty name)");
+  while (final_.has_parent_path() && !final_.has_filename()) final_ = final_.parent_path();  // "dir/" → "dir"
+  check_destination();
+  work_ = final_;
+  work_ += ".partial-" + std::to_string(::getpid());
+  with_registry_lock([&] {
+    RegisteredTemporary reg(work_, TemporaryKind::folder);
+    if (::mkdir(work_.c_str(), 0755) != 0) {
+      const int e = errno;
+      refuse(final_, "cannot create the work folder '" + work_.string() + "': " + errno_words(e));
+    }
+    registered_ = std::move(reg);
+  });
+}
+
+void AtomicFolder::check_destination() const {
+  fs::path dir = final_.parent_path();
+  if (dir.empty()) dir = ".";
+  struct stat st {};
+  if (::stat(dir.c_str(), &st) != 0) refuse(final_, "cannot write: folder '" + dir.string() + "' does not exist");
+  if (!S_ISDIR(st.st_mode)) refuse(final_, "cannot write: '" + dir.string() + "' is " + file_type_words(st.st_mode) + ", not a folder");
+  if (::access(dir.c_str(), W_OK) != 0) refuse(final_, "cannot write: folder '" + dir.string() + "' is not writable");
+  if (::lstat(final_.c_str(), &st) == 0) {
+    if (!S_ISDIR(st.st_mode))
+      refuse(final_, "exists and is " + file_type_words(st.st_mode) + ", not a folder: refusing to replace it");
+    std::error_code ec;
+    if (!fs::is_empty(final_, ec) && !(replaceable_ && replaceable_(final_)))
+      refuse(final_, "exists and is not a folder stoneskip made: refusing to replace it");
+  }
+}
+
+AtomicFolder::~AtomicFolder() {
+  if (committed_) return;
   std::error_code ec;
-  fs::rename(tmp_, final_, ec);
-  if (ec) throw_input_error(final_.string(), 0, "", "cannot write: " + ec.message());
-  committed_ = true;
+  with_registry_lock([&] {
+    fs::remove_all(work_, ec);
+    registered_.release();
+  });
+}
+
+void AtomicFolder::commit() {
+  check_destination();  // again: time has passed
+  std::error_code ec;
+  fs::path old = final_;
+  old += ".old-" + std::to_string(::getpid());
+  RegisteredTemporary old_registered;
+  // Under the registry's lock: a signal sees the old folder in place or already replaced.
+  with_registry_lock([&] {
+    if (fs::exists(final_, ec)) {
+      old_registered = RegisteredTemporary(old, TemporaryKind::folder);
+      if (::rename(final_.c_str(), old.c_str()) != 0) refuse(final_, std::string("cannot replace: ") + errno_words(errno));
+    }
+    if (::rename(work_.c_str(), final_.c_str()) != 0) {
+      const int e = errno;
+      if (old_registered.registered()) ::rename(old.c_str(), final_.c_str());
+      refuse(final_, "cannot write: " + errno_words(e));
+    }
+    registered_.release();
+    committed_ = true;
+  });
+  if (old_registered.registered()) fs::remove_all(old, ec);
 }
 
 void write_text_file(const fs::path& path, const std::string& text) {
   AtomicOutput out(path);
   {
-    std::ofstream f(out.temporary_path(), std::ios::binary);
+    std::ofstream f(out.temporary_path(), std::ios::binary | std::ios::trunc);
     f << text;
     f.close();
     if (!f) throw_input_error(path.string(), 0, "", "cannot write");
@@ -54,14 +188,56 @@ void write_text_file(const fs::path& path, const std::string& text) {
   out.commit();
 }
 
-std::string read_text_file(const fs::path& path) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw_input_error(path.string(), 0, "", "cannot read: no such file");
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw_input_error(path.string(), 0, "", "cannot read");
-  std::ostringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
+void require_regular_file(const fs::path& path) {
+  if (path.empty()) throw_input_error("", 0, "", "an input file name is required (got an empty name)");
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) {
+    const int e = errno;
+    throw_input_error(path.string(), 0, "", e == ENOENT ? "cannot read: no such file" : "cannot read: " + errno_words(e));
+  }
+  if (!S_ISREG(st.st_mode))
+    throw_input_error(path.string(), 0, "", "cannot read: it is " + file_type_words(st.st_mode) + ", not a regular file");
+}
+
+std::string read_text_file(const fs::path& path, std::size_t max_bytes) {
+  require_regular_file(path);
+  // Opened without blocking and checked again on the descriptor: the name may have been replaced
+  // by a FIFO since the check.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) {
+    const int e = errno;
+    throw_input_error(path.string(), 0, "", "cannot read: " + errno_words(e));
+  }
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    throw_input_error(path.string(), 0, "", "cannot read: not a regular file");
+  }
+  if (static_cast<unsigned long long>(st.st_size) > max_bytes) {
+    ::close(fd);
+    throw_input_error(path.string(), 0, "", "is " + std::to_string(st.st_size) + " bytes, larger than the limit of " +
+                                                  std::to_string(max_bytes) + " bytes for this kind of file");
+  }
+  std::string text;
+  text.reserve(static_cast<std::size_t>(st.st_size));
+  char buf[65536];
+  for (;;) {
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n == 0) break;
+    if (n < 0) {
+      if (errno == EINTR || errno == EAGAIN) continue;
+      const int e = errno;
+      ::close(fd);
+      throw_input_error(path.string(), 0, "", "cannot read: " + errno_words(e));
+    }
+    text.append(buf, static_cast<std::size_t>(n));
+    if (text.size() > max_bytes) {
+      ::close(fd);
+      throw_input_error(path.string(), 0, "", "is larger than the limit of " + std::to_string(max_bytes) + " bytes");
+    }
+  }
+  ::close(fd);
+  return text;
 }
 
 }  // namespace stoneskip

@@ -285,6 +285,7 @@ long long H5Group::attr_int(const std::string& name) const {
 }
 
 Hdf5Writer::Hdf5Writer(const std::filesystem::path& path) : out_(path) {
+  // The temporary exists (AtomicOutput made it, empty): H5F_ACC_TRUNC takes it over.
   hid_t f = H5Fcreate(out_.temporary_path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (f < 0) throw_input_error(path.string(), 0, "", "cannot create HDF5 file");
   H5Id file(f, H5Fclose);
@@ -301,8 +302,7 @@ void Hdf5Writer::commit() {
 }
 
 Hdf5Reader::Hdf5Reader(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw_input_error(path.string(), 0, "", "cannot read: no such file");
+  require_regular_file(path);
   if (H5Fis_hdf5(path.c_str()) <= 0) throw_input_error(path.string(), 0, "", "not an HDF5 file");
   hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (f < 0) throw_input_error(path.string(), 0, "", "cannot open HDF5 file");

@@ -1,20 +1,162 @@
 #include "tools/io/toml_table.hpp"
 
+#include <cerrno>
+#include <charconv>
+#include <cfloat>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/toml_prescan.hpp"
 
 namespace stoneskip {
 
 namespace {
 
+constexpr const char* kSetName = "--set";
+
 std::string short_type(const toml::value& v) {
   std::ostringstream s;
   s << v.type();
   return s.str();
+}
+
+// A number in a message: %g, never std::to_string's fixed 6 decimals or 309 digits.
+std::string num(double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.6g", v);
+  return b;
+}
+
+// The text of a value as written (toml11 keeps the line and the column of each value's region).
+std::string token_of(const toml::value& v) {
+  const auto loc = v.location();
+  const std::string& l = loc.line_str();
+  if (loc.column() == 0 || loc.column() - 1 >= l.size()) return "";
+  std::string t = l.substr(loc.column() - 1, loc.region());
+  std::string out;
+  for (char c : t)
+    if (c != '_') out.push_back(c);
+  return out;
+}
+
+bool nonzero_mantissa(const std::string& t) {
+  for (char c : t) {
+    if (c == 'e' || c == 'E') break;
+    if (c >= '1' && c <= '9') return true;
+  }
+  return false;
+}
+
+// What is wrong with a number toml11 read, or "" (toml11 3.7 clamps an overflowing float to
+// ±DBL_MAX, an overflowing integer to INT64_MAX, and reads 1e-400 as 0: each is checked against
+// the text as written).
+std::string number_problem(const toml::value& v) {
+  if (v.is_floating()) {
+    const double x = v.as_floating();
+    const bool suspect = std::abs(x) == DBL_MAX || x == 0 || (std::isfinite(x) && std::abs(x) < DBL_MIN);
+    if (!suspect) return "";
+    const std::string t = token_of(v);
+    if (t.empty()) return "";
+    errno = 0;
+    const double r = std::strtod(t.c_str(), nullptr);
+    if (errno == ERANGE && std::isinf(r)) return "the number " + t + " is beyond the range of a double (about ±1.8e308)";
+    if (r == 0 && nonzero_mantissa(t)) return "the number " + t + " is too small for a double: it would be read as 0";
+    return "";
+  }
+  if (v.is_integer()) {
+    const auto x = v.as_integer();
+    if (x != INT64_MAX && x != INT64_MIN) return "";
+    std::string t = token_of(v);
+    if (t.empty()) return "";
+    int base = 10;
+    std::size_t start = 0;
+    if (t[0] == '+') start = 1;
+    if (t.size() > 2 && t[0] == '0' && (t[1] == 'x' || t[1] == 'o' || t[1] == 'b')) {
+      base = t[1] == 'x' ? 16 : t[1] == 'o' ? 8 : 2;
+      start = 2;
+    }
+    std::int64_t parsed = 0;
+    const auto res = std::from_chars(t.data() + start, t.data() + t.size(), parsed, base);
+    if (res.ec == std::errc::result_out_of_range)
+      return "the integer " + t + " does not fit in 64 bits (at most 9223372036854775807)";
+  }
+  return "";
+}
+
+// Every number of a parsed value, checked against its text.
+void check_numbers(const toml::value& v, const std::string& key, const std::string& file, const PrescannedToml* map) {
+  if (v.is_table()) {
+    for (const auto& kv : v.as_table()) check_numbers(kv.second, key.empty() ? kv.first : key + "." + kv.first, file, map);
+  } else if (v.is_array()) {
+    const auto& a = v.as_array();
+    // A component of a vector counts from 0 (position_m[2]); a table of an array of tables from 1,
+    // as its readers name it ([[vary]] → vary[1]).
+    for (std::size_t i = 0; i < a.size(); ++i)
+      check_numbers(a[i], key + "[" + std::to_string(a[i].is_table() ? i + 1 : i) + "]", file, map);
+  } else {
+    const std::string problem = number_problem(v);
+    if (problem.empty()) return;
+    const auto loc = v.location();
+    if (loc.file_name() == kSetName) throw_input_error(file, 0, "--set " + key, problem);
+    throw_input_error(file, map ? map->line_of(loc.line()) : loc.line(), key, problem);
+  }
+}
+
+// toml11's syntax error text holds " --> NAME" and then a line " LINE | text"; the first line is
+// the reason. Returns the reason and the line (0 if not found).
+std::pair<std::string, long> syntax_error_of(const std::string& what, const std::string& name) {
+  long line = 0;
+  std::string detail = what.substr(0, what.find('\n'));
+  const auto pos = what.find(" --> " + name);
+  if (pos != std::string::npos) {
+    const auto line_pos = what.find('\n', pos);
+    if (line_pos != std::string::npos) {
+      std::istringstream rest(what.substr(line_pos + 1));
+      std::string l;
+      while (std::getline(rest, l)) {
+        const auto bar = l.find('|');
+        if (bar == std::string::npos) continue;
+        try {
+          line = std::stol(l.substr(0, bar));
+          break;
+        } catch (...) {
+        }
+      }
+    }
+  }
+  if (detail.rfind("[error] ", 0) == 0) detail = detail.substr(8);
+  return {detail, line};
+}
+
+// Parses "v = TEXT" as an override's value, its location named "--set".
+toml::value parse_override_value(const std::string& text, const std::string& path, const std::string& file) {
+  const PrescannedToml pre = prescan_toml("v = " + text, file + ": --set " + path, false);
+  std::istringstream in(pre.text);
+  return toml::find(toml::parse(in, kSetName), "v");
+}
+
+// A TOML basic string holding s (quotes, backslashes and control characters escaped).
+std::string toml_string_literal(const std::string& s) {
+  std::string out = "\"";
+  for (unsigned char c : s) {
+    if (c == '"' || c == '\\') {
+      out.push_back('\\');
+      out.push_back(static_cast<char>(c));
+    } else if (c < 0x20 || c == 0x7f) {
+      char b[8];
+      std::snprintf(b, sizeof b, "\\u%04x", c);
+      out += b;
+    } else {
+      out.push_back(static_cast<char>(c));
+    }
+  }
+  return out + "\"";
 }
 
 // Apply "a.b.c=value" to the document. The value is parsed as TOML; if that fails it is a string.
@@ -26,11 +168,17 @@ void apply_override(toml::value& root, const std::string& file, const std::strin
   std::string raw = assignment.substr(eq + 1);
   toml::value parsed;
   try {
-    std::istringstream in("v = " + raw);
-    parsed = toml::find(toml::parse(in, "--set"), "v");
+    parsed = parse_override_value(raw, path, file);
+  } catch (const InputError&) {
+    throw;  // nested too deep, a line too long
   } catch (const std::exception&) {
-    parsed = toml::value(raw);
+    try {
+      parsed = parse_override_value(toml_string_literal(raw), path, file);
+    } catch (const std::exception&) {
+      throw_input_error(file, 0, "--set " + path, "the value is neither TOML nor a plain string (not UTF-8?)");
+    }
   }
+  check_numbers(parsed, path, file, nullptr);
   set_value(root, file, path, std::move(parsed));
 }
 
@@ -55,8 +203,8 @@ void set_value(toml::value& root, const std::string& file, const std::string& pa
   }
 }
 
-TomlTable::TomlTable(const toml::value* table, std::string file, std::string prefix)
-    : table_(table), file_(std::move(file)), prefix_(std::move(prefix)) {}
+TomlTable::TomlTable(const toml::value* table, std::string file, std::string prefix, TomlLineMap lines)
+    : table_(table), file_(std::move(file)), prefix_(std::move(prefix)), lines_(std::move(lines)) {}
 
 std::string TomlTable::full(const std::string& key) const { return prefix_.empty() ? key : prefix_ + "." + key; }
 
@@ -66,22 +214,34 @@ bool TomlTable::has(const std::string& key) const {
 
 const toml::value& TomlTable::at(const std::string& key) const {
   used_.insert(key);
-  if (!has(key)) throw_input_error(file_, line_of(""), full(key), "missing key");
+  if (!has(key)) {
+    const auto [f, line] = where("");
+    throw_input_error(f == kSetName ? file_ : f, f == kSetName ? 0 : line, full(key), "missing key");
+  }
   return table_->as_table().at(key);
 }
 
-long TomlTable::line_of(const std::string& key) const {
+std::pair<std::string, long> TomlTable::where(const std::string& key) const {
   const toml::value* v = table_;
   if (!key.empty() && has(key)) v = &table_->as_table().at(key);
-  auto loc = v->location();
-  if (loc.file_name() == "--set") return 0;
-  return static_cast<long>(loc.line());
+  const auto loc = v->location();
+  if (loc.file_name() == kSetName) return {kSetName, 0};
+  if (loc.file_name() != file_) return {file_, 0};  // made by an override: no line of the file
+  long line = static_cast<long>(loc.line());
+  if (lines_ && line > 0) {
+    const auto& m = *lines_;
+    line = static_cast<std::size_t>(line) < m.size() ? m[static_cast<std::size_t>(line)] : (m.empty() ? line : m.back());
+  }
+  return {file_, line};
 }
 
+long TomlTable::line_of(const std::string& key) const { return where(key).second; }
+
 void TomlTable::fail(const std::string& key, const std::string& what) const {
-  std::string where = file_;
-  if (has(key) && table_->as_table().at(key).location().file_name() == "--set") where = "--set";
-  throw_input_error(where, where == "--set" ? 0 : line_of(key), full(key), what);
+  const auto [f, line] = where(key);
+  // A value from an override names the case file and the override: "case.toml: --set a.b: ...".
+  if (f == kSetName) throw_input_error(file_, 0, "--set " + full(key), what);
+  throw_input_error(f, line, full(key), what);
 }
 
 double TomlTable::number(const std::string& key) {
@@ -182,7 +342,7 @@ std::optional<std::vector<std::string>> TomlTable::maybe_strings(const std::stri
 TomlTable TomlTable::table(const std::string& key) {
   const toml::value& v = at(key);
   if (!v.is_table()) fail(key, "expected a table [" + full(key) + "], got " + short_type(v));
-  return TomlTable(&v, file_, full(key));
+  return TomlTable(&v, file_, full(key), lines_);
 }
 
 std::vector<TomlTable> TomlTable::tables(const std::string& key) {
@@ -192,7 +352,7 @@ std::vector<TomlTable> TomlTable::tables(const std::string& key) {
   const auto& a = v.as_array();
   for (std::size_t i = 0; i < a.size(); ++i) {
     if (!a[i].is_table()) fail(key, "expected an array of tables [[" + full(key) + "]], found " + short_type(a[i]));
-    out.emplace_back(&a[i], file_, full(key) + "[" + std::to_string(i) + "]");
+    out.emplace_back(&a[i], file_, full(key) + "[" + std::to_string(i) + "]", lines_);
   }
   return out;
 }
@@ -211,19 +371,33 @@ std::vector<std::string> TomlTable::keys() const {
 }
 
 void TomlTable::require_positive(const std::string& key, double value) const {
-  if (!(value > 0)) fail(key, "must be > 0 (got " + std::to_string(value) + ")");
+  if (!(value > 0)) fail(key, "must be > 0 (got " + num(value) + ")");
 }
 
 void TomlTable::require_non_negative(const std::string& key, double value) const {
-  if (!(value >= 0)) fail(key, "must be >= 0 (got " + std::to_string(value) + ")");
+  if (!(value >= 0)) fail(key, "must be >= 0 (got " + num(value) + ")");
 }
 
 void TomlTable::require_in(const std::string& key, double value, double lo, double hi) const {
-  if (!(value >= lo && value <= hi)) {
-    std::ostringstream s;
-    s << "must be in [" << lo << ", " << hi << "] (got " << value << ")";
-    fail(key, s.str());
-  }
+  if (!(value >= lo && value <= hi)) fail(key, "must be in [" + num(lo) + ", " + num(hi) + "] (got " + num(value) + ")");
+}
+
+double TomlTable::bounded(const std::string& key, double lo, double hi) {
+  const double v = number(key);
+  require_in(key, v, lo, hi);
+  return v;
+}
+
+double TomlTable::bounded_or(const std::string& key, double fallback, double lo, double hi) {
+  used_.insert(key);
+  return has(key) ? bounded(key, lo, hi) : fallback;
+}
+
+long long TomlTable::bounded_integer_or(const std::string& key, long long fallback, long long lo, long long hi) {
+  const long long v = integer_or(key, fallback);
+  if (v < lo || v > hi)
+    fail(key, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " + std::to_string(v) + ")");
+  return v;
 }
 
 void TomlTable::finish() const {
@@ -239,38 +413,19 @@ TomlDocument parse_toml_text(const std::string& text, const std::string& name,
   doc.file = name;
   doc.text = text;
   doc.overrides = overrides;
+  auto pre = std::make_shared<PrescannedToml>(prescan_toml(text, name));
   try {
-    std::istringstream in(text);
+    std::istringstream in(pre->text);
     doc.root = toml::parse(in, name);
   } catch (const toml::syntax_error& e) {
-    // toml11's message is multi-line with the location inside; keep its first lines, folded.
-    std::string what = e.what();
-    long line = 0;
-    auto pos = what.find(" --> " + name);
-    std::string detail = what.substr(0, what.find('\n'));
-    if (pos != std::string::npos) {
-      auto line_pos = what.find("\n", pos);
-      // toml11 prints " --> FILE" then a line " LINE | text"
-      if (line_pos != std::string::npos) {
-        std::istringstream rest(what.substr(line_pos + 1));
-        std::string l;
-        while (std::getline(rest, l)) {
-          auto bar = l.find('|');
-          if (bar != std::string::npos) {
-            try {
-              line = std::stol(l.substr(0, bar));
-              break;
-            } catch (...) {
-            }
-          }
-        }
-      }
-    }
-    if (detail.rfind("[error] ", 0) == 0) detail = detail.substr(8);
-    throw_input_error(name, line, "", "TOML syntax error: " + detail);
+    // toml11's message is multi-line with the location inside; keep its first line.
+    const auto [detail, line] = syntax_error_of(e.what(), name);
+    throw_input_error(name, pre->line_of(static_cast<std::uint32_t>(line)), "", "TOML syntax error: " + detail);
   } catch (const std::exception& e) {
     throw_input_error(name, 0, "", std::string("TOML error: ") + e.what());
   }
+  check_numbers(doc.root, "", name, pre.get());
+  doc.lines = TomlLineMap(pre, &pre->source_line);
   for (const auto& o : overrides) apply_override(doc.root, name, o);
   return doc;
 }
@@ -286,7 +441,7 @@ std::string read_case_title(TomlTable& top) {
 }
 
 TomlDocument load_toml(const std::string& path, const std::vector<std::string>& overrides) {
-  return parse_toml_text(read_text_file(path), path, overrides);
+  return parse_toml_text(read_text_file(path, kMaxTomlFileBytes), path, overrides);
 }
 
 }  // namespace stoneskip

@@ -2,6 +2,8 @@
 // Strict reading of TOML case files. Every key a reader asks for is recorded; finish() rejects any
 // key that was not asked for (a misspelt key is an error, never a silent default). Every error is
 // one line: "FILE:LINE: section.key: what is wrong".
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -11,9 +13,13 @@
 
 namespace stoneskip {
 
+// Maps a line of the text toml11 parsed to the line of the file as written (the pre-scan breaks
+// long arrays over lines: tools/io/toml_prescan.hpp). Null: the same lines.
+using TomlLineMap = std::shared_ptr<const std::vector<std::uint32_t>>;
+
 class TomlTable {
  public:
-  TomlTable(const toml::value* table, std::string file, std::string prefix);
+  TomlTable(const toml::value* table, std::string file, std::string prefix, TomlLineMap lines = nullptr);
 
   bool has(const std::string& key) const;
   // Numbers: integers are accepted where a real is asked for; NaN and infinities are rejected.
@@ -38,6 +44,11 @@ class TomlTable {
   void require_positive(const std::string& key, double value) const;        // > 0
   void require_non_negative(const std::string& key, double value) const;    // >= 0
   void require_in(const std::string& key, double value, double lo, double hi) const;  // [lo, hi]
+  // A number in [lo, hi], the key's documented plausibility bounds (cases/README.md): read (with
+  // a fallback when given) and checked, "must be in [lo, hi] (got v)".
+  double bounded(const std::string& key, double lo, double hi);
+  double bounded_or(const std::string& key, double fallback, double lo, double hi);
+  long long bounded_integer_or(const std::string& key, long long fallback, long long lo, long long hi);
   // Throws InputError naming this key: "FILE:LINE: prefix.key: what".
   [[noreturn]] void fail(const std::string& key, const std::string& what) const;
 
@@ -52,20 +63,30 @@ class TomlTable {
   long line_of(const std::string& key) const;
   std::string full(const std::string& key) const;
 
+  // Where a key's value (or, if absent, this table) came from: "--set" for an override, the file
+  // and its line otherwise (line 0 when unknown, e.g. a table an override created).
+  std::pair<std::string, long> where(const std::string& key) const;
+
   const toml::value* table_;
   std::string file_;
   std::string prefix_;
+  TomlLineMap lines_;
   mutable std::set<std::string> used_;
 };
 
 // A parsed case file with its original text (attached to results) and any command-line overrides
 // ("section.key=value", value in TOML syntax; a bare word is taken as a string) applied.
+//
+// Before parsing, the text is pre-scanned (nesting depth, long lines: tools/io/toml_prescan.hpp);
+// after, every number is checked against its text: a float beyond ±1.8e308 (1e400), a non-zero
+// float that rounds to 0 (1e-400) or an integer beyond 64 bits is an error, never clamped.
 struct TomlDocument {
   std::string file;
   std::string text;
   std::vector<std::string> overrides;
   toml::value root;
-  TomlTable top() const { return TomlTable(&root, file, ""); }
+  TomlLineMap lines;
+  TomlTable top() const { return TomlTable(&root, file, "", lines); }
 };
 
 // The optional [case] table every case file may open with (title, description); returns the

@@ -22,6 +22,8 @@ Mesh parse_obj(const std::string& text, const std::string& name) {
       double x, y, z;
       if (!(ls >> x >> y >> z) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
         throw_input_error(name, line_no, "", "a vertex needs three finite numbers");
+      if (std::abs(x) > kMaxObjCoordinate_m || std::abs(y) > kMaxObjCoordinate_m || std::abs(z) > kMaxObjCoordinate_m)
+        throw_input_error(name, line_no, "", "a vertex coordinate beyond ±1e6 m");
       m.vertices.emplace_back(x, y, z);
     } else if (tag == "f") {
       std::vector<int> idx;
@@ -44,12 +46,14 @@ Mesh parse_obj(const std::string& text, const std::string& name) {
       }
       if (idx.size() < 3) throw_input_error(name, line_no, "", "a face needs at least three vertices");
       for (std::size_t k = 1; k + 1 < idx.size(); ++k) m.triangles.push_back({idx[0], idx[k], idx[k + 1]});
+      if (m.triangles.size() > kMaxObjTriangles)
+        throw_input_error(name, line_no, "", "more than " + std::to_string(kMaxObjTriangles) + " triangles (a limit)");
     }
   }
   if (m.triangles.empty()) throw_input_error(name, 0, "", "no faces found (is this a Wavefront OBJ file?)");
   return m;
 }
 
-Mesh read_obj(const std::string& path) { return parse_obj(read_text_file(path), path); }
+Mesh read_obj(const std::string& path) { return parse_obj(read_text_file(path, kMaxObjBytes), path); }
 
 }  // namespace stoneskip

@@ -3,7 +3,9 @@
 #include <sstream>
 
 #include "model/coupling/draught.hpp"
+#include "tools/scene/stone_case.hpp"
 #include "tools/scene/wave_case.hpp"
+#include "verification/waves/stability.hpp"
 
 namespace stoneskip {
 
@@ -11,8 +13,8 @@ namespace {
 
 WaterScene read_water(TomlTable w, TomlTable& top) {
   WaterScene scene;
-  scene.origin_x_m = w.number_or("origin_x_m", 0.0);
-  scene.origin_y_m = w.number_or("origin_y_m", 0.0);
+  scene.origin_x_m = w.bounded_or("origin_x_m", 0.0, -kMaxWaterOrigin_m, kMaxWaterOrigin_m);
+  scene.origin_y_m = w.bounded_or("origin_y_m", 0.0, -kMaxWaterOrigin_m, kMaxWaterOrigin_m);
   if (auto i = w.maybe_table("initial")) scene.initial = read_disturbance(*i);
   const std::string coupling = w.string_or("coupling", to_string(scene.coupling));
   if (!parse_coupling(coupling, scene.coupling)) w.fail("coupling", "'" + coupling + "' is not one of none, one_way, two_way");
@@ -39,6 +41,22 @@ WaterScene read_water(TomlTable w, TomlTable& top) {
   scene.field.mode = how.mode;
   scene.field.tiles.tile_cells = static_cast<int>(tile);
   scene.field.tiles.epsilon_m = how.tiles.epsilon_m;
+  // A scene's water must be stable (a wave case may be unstable on purpose; a scene's water that
+  // blows up would be blamed on the stone): the free von Neumann limit at μΔt (verification/waves/stability).
+  {
+    const HeightFieldOptions& f = scene.field;
+    const double mu_dt = f.damping_per_s * f.dt_s, sigma = f.courant();
+    const double limit = stability_limit(f.stencil, mu_dt);
+    if (sigma > limit) {
+      std::ostringstream m;
+      m.precision(6);
+      m << "the water would be unstable: sigma = c dt_s / cell_m = " << sigma << " exceeds the " << f.stencil.name
+        << " stencil's limit " << limit << " at mu dt = " << mu_dt;
+      if (limit > 0) m << "; take dt_s <= " << limit * f.cell_m / f.wave_speed_m_s;
+      else m << "; it is unstable at any step";
+      checked.fail("dt_s", m.str());
+    }
+  }
   if (scene.coupling == Coupling::two_way) {
     // Spec §2.4: under the stone the Courant number is √2 σ; refused rather than run unstable.
     const double sigma = scene.field.courant(), limit = coupled_courant_limit(scene.field.stencil);

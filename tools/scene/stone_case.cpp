@@ -1,16 +1,25 @@
 #include "tools/scene/stone_case.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 
+#include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/scene/mesh_solid.hpp"
 #include "tools/scene/obj_reader.hpp"
 #include "tools/scene/wave_case.hpp"
 
 namespace stoneskip {
 
 namespace {
+
+std::string num(double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.6g", v);
+  return b;
+}
 
 const char* to_string(StoneShape s) {
   switch (s) {
@@ -34,29 +43,26 @@ StoneSpec read_stone(TomlTable t, const std::string& file) {
     t.fail("shape", "must be \"prism\", \"lens\" or \"mesh\" (got \"" + shape + "\")");
   if (s.shape == StoneShape::mesh_file) {
     s.mesh_file = t.string("mesh_file");
+    if (s.mesh_file.empty()) t.fail("mesh_file", "must name a Wavefront OBJ file (got an empty string)");
     std::filesystem::path p(s.mesh_file);
     if (p.is_relative()) s.mesh_file = (std::filesystem::path(file).parent_path() / p).lexically_normal().string();
-    s.radius_m = t.number_or("disk_radius_m", 0.0);
-    if (t.has("disk_radius_m")) t.require_positive("disk_radius_m", s.radius_m);
+    try {
+      require_regular_file(s.mesh_file);
+    } catch (const InputError& e) {
+      t.fail("mesh_file", e.what());
+    }
+    s.radius_m = t.bounded_or("disk_radius_m", 0.0, kStoneRadius.lo, kStoneRadius.hi);
   } else {
-    s.radius_m = t.number("radius_m");
-    t.require_positive("radius_m", s.radius_m);
-    s.thickness_m = t.number("thickness_m");
-    t.require_positive("thickness_m", s.thickness_m);
-    const long long n = t.integer_or("segments", s.shape == StoneShape::prism ? 11 : 22);
-    if (n < 3) t.fail("segments", "must be at least 3 (got " + std::to_string(n) + ")");
-    if (n > 100000) t.fail("segments", "must be at most 100000 (got " + std::to_string(n) + ")");
-    s.segments = static_cast<int>(n);
+    s.radius_m = t.bounded("radius_m", kStoneRadius.lo, kStoneRadius.hi);
+    s.thickness_m = t.bounded("thickness_m", kStoneThickness.lo, kStoneThickness.hi);
+    s.segments = static_cast<int>(t.bounded_integer_or("segments", s.shape == StoneShape::prism ? 11 : 22, 3, kMaxSegments));
   }
   const bool has_density = t.has("density_kg_m3"), has_mass = t.has("mass_kg");
   if (has_density == has_mass) t.fail(has_mass ? "mass_kg" : "density_kg_m3", "give exactly one of density_kg_m3 and mass_kg");
-  if (has_density) {
-    s.density_kg_m3 = t.number("density_kg_m3");
-    t.require_positive("density_kg_m3", s.density_kg_m3);
-  } else {
-    s.mass_kg = t.number("mass_kg");
-    t.require_positive("mass_kg", s.mass_kg);
-  }
+  if (has_density)
+    s.density_kg_m3 = t.bounded("density_kg_m3", kStoneDensity.lo, kStoneDensity.hi);
+  else
+    s.mass_kg = t.bounded("mass_kg", kStoneMass.lo, kStoneMass.hi);
   t.finish();
   return s;
 }
@@ -65,10 +71,8 @@ Environment read_environment(TomlTable t) {
   Environment e;
   const std::string conv = t.string_or("convention", "physical");
   if (!parse_convention(conv, e.convention)) t.fail("convention", "must be \"physical\" or \"paper\" (got \"" + conv + "\")");
-  e.water_density_kg_m3 = t.number_or("water_density_kg_m3", e.water_density_kg_m3);
-  t.require_non_negative("water_density_kg_m3", e.water_density_kg_m3);
-  e.air_density_kg_m3 = t.number_or("air_density_kg_m3", e.air_density_kg_m3);
-  t.require_non_negative("air_density_kg_m3", e.air_density_kg_m3);
+  e.water_density_kg_m3 = t.bounded_or("water_density_kg_m3", e.water_density_kg_m3, 1, 1e5);
+  e.air_density_kg_m3 = t.bounded_or("air_density_kg_m3", e.air_density_kg_m3, 0, 100);
   const std::string law = t.string_or("water_law", to_string(e.water_law));
   WaterLaw water_law = WaterLaw::newtonian;
   if (!parse_water_law(law, water_law))
@@ -76,19 +80,19 @@ Environment read_environment(TomlTable t) {
   set_water_law(e, water_law);  // the law's published C_w unless water_coefficient is given
   if (e.convention == Convention::paper && water_law != WaterLaw::newtonian)
     t.fail("water_law", environment_problem(e));
-  e.water_coefficient = t.number_or("water_coefficient", e.water_coefficient);
-  t.require_non_negative("water_coefficient", e.water_coefficient);
-  e.air_coefficient = t.number_or("air_coefficient", e.air_coefficient);
-  t.require_non_negative("air_coefficient", e.air_coefficient);
-  e.gravity_m_s2 = t.number_or("gravity_m_s2", e.gravity_m_s2);
-  t.require_non_negative("gravity_m_s2", e.gravity_m_s2);
+  e.water_coefficient = t.bounded_or("water_coefficient", e.water_coefficient, 0, 100);
+  e.air_coefficient = t.bounded_or("air_coefficient", e.air_coefficient, 0, 100);
+  e.gravity_m_s2 = t.bounded_or("gravity_m_s2", e.gravity_m_s2, 0, 1000);
   t.finish();
   return e;
 }
 
-Vec3 vec3(TomlTable& t, const std::string& key) {
+// Three numbers, each in [lo, hi].
+Vec3 vec3(TomlTable& t, const std::string& key, double lo, double hi) {
   const std::vector<double> v = t.numbers(key);
   if (v.size() != 3) t.fail(key, "expected 3 numbers, got " + std::to_string(v.size()));
+  for (double x : v)
+    if (!(x >= lo && x <= hi)) t.fail(key, "each component must be in [" + num(lo) + ", " + num(hi) + "] (got " + num(x) + ")");
   return Vec3(v[0], v[1], v[2]);
 }
 
@@ -97,14 +101,17 @@ void read_throw(TomlTable t, StoneCase& c) {
     // A full initial state (what the Wii Remote path produces): world frame.
     c.throw_from_parameters = false;
     RigidState s;
-    s.position_m = vec3(*st, "position_m");
-    s.velocity_m_s = vec3(*st, "velocity_m_s");
+    s.position_m = vec3(*st, "position_m", -kMaxPosition_m, kMaxPosition_m);
+    if (!(s.position_m.z() >= kReleaseHeight.lo && s.position_m.z() <= kReleaseHeight.hi))
+      st->fail("position_m", "the height z must be in [" + num(kReleaseHeight.lo) + ", " + num(kReleaseHeight.hi) +
+                                 "] (got " + num(s.position_m.z()) + ")");
+    s.velocity_m_s = vec3(*st, "velocity_m_s", -kMaxSpeed_m_s, kMaxSpeed_m_s);
     const std::vector<double> q = st->numbers("quaternion_wxyz");
     if (q.size() != 4) st->fail("quaternion_wxyz", "expected 4 numbers (w, x, y, z)");
     const double qn = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    if (!(qn > 0)) st->fail("quaternion_wxyz", "must not be zero");
+    if (!(qn > 1e-150 && std::isfinite(qn))) st->fail("quaternion_wxyz", "must not be zero");
     s.orientation = Quat(q[0] / qn, q[1] / qn, q[2] / qn, q[3] / qn);
-    const Vec3 w = vec3(*st, "angular_velocity_rad_s");
+    const Vec3 w = vec3(*st, "angular_velocity_rad_s", -kMaxAngularSpeed_rad_s, kMaxAngularSpeed_rad_s);
     const Mat3 R = s.orientation.toRotationMatrix();
     set_body_angular_velocity(c.stone, s, R.transpose() * w);
     st->finish();
@@ -115,15 +122,12 @@ void read_throw(TomlTable t, StoneCase& c) {
     return;
   }
   ThrowParameters& p = c.throw_parameters;
-  p.speed_m_s = t.number("speed_m_s");
-  t.require_non_negative("speed_m_s", p.speed_m_s);
-  p.path_angle_deg = t.number("path_angle_deg");
-  t.require_in("path_angle_deg", p.path_angle_deg, -90, 90);
-  p.attack_angle_deg = t.number("attack_angle_deg");
-  t.require_in("attack_angle_deg", p.attack_angle_deg, -90, 90);
-  p.spin_rev_s = t.number_or("spin_rev_s", 0.0);
-  p.height_m = t.number("height_m");
-  p.wobble_rad_s = t.number_or("wobble_rad_s", 0.0);
+  p.speed_m_s = t.bounded("speed_m_s", 0, kMaxSpeed_m_s);
+  p.path_angle_deg = t.bounded("path_angle_deg", -90, 90);
+  p.attack_angle_deg = t.bounded("attack_angle_deg", -90, 90);
+  p.spin_rev_s = t.bounded_or("spin_rev_s", 0.0, -kMaxSpin_rev_s, kMaxSpin_rev_s);
+  p.height_m = t.bounded("height_m", kReleaseHeight.lo, kReleaseHeight.hi);
+  p.wobble_rad_s = t.bounded_or("wobble_rad_s", 0.0, -kMaxAngularSpeed_rad_s, kMaxAngularSpeed_rad_s);
   t.finish();
   c.initial = initial_state(c.stone, p);
 }
@@ -134,15 +138,10 @@ RealtimeOptions read_solver(TomlTable t) {
   if (!parse_scheme(scheme, o.scheme))
     t.fail("scheme", "must be \"semi_implicit_euler\", \"midpoint\" or \"rk4\" (got \"" + scheme + "\")");
   o.dt_s = t.number("dt_s");
-  t.require_positive("dt_s", o.dt_s);
   o.contact_dt_s = t.number("contact_dt_s");
-  t.require_positive("contact_dt_s", o.contact_dt_s);
-  if (o.contact_dt_s > o.dt_s) t.fail("contact_dt_s", "must not exceed dt_s");
   o.t_max_s = t.number("t_max_s");
-  t.require_positive("t_max_s", o.t_max_s);
-  if (o.t_max_s / o.contact_dt_s > 1e9) t.fail("t_max_s", "t_max_s / contact_dt_s exceeds 1e9 steps");
   o.output_dt_s = t.number_or("output_dt_s", o.dt_s);
-  t.require_non_negative("output_dt_s", o.output_dt_s);
+  if (const auto problem = realtime_options_problem(o)) t.fail(problem->first, problem->second);
   t.finish();
   return o;
 }
@@ -155,28 +154,38 @@ ReferenceOptions read_reference(std::optional<TomlTable> maybe, double t_max_s, 
   TomlTable& t = *maybe;
   const std::string m = t.string_or("method", to_string(o.method));
   if (!parse_reference_method(m, o.method)) t.fail("method", "must be \"bdf\" or \"adams\" (got \"" + m + "\")");
-  o.rtol = t.number_or("rtol", o.rtol);
-  t.require_in("rtol", o.rtol, 1e-15, 1e-2);
-  o.atol = t.number_or("atol", o.atol);
-  t.require_positive("atol", o.atol);
-  o.max_steps = t.integer_or("max_steps", o.max_steps);
-  if (o.max_steps < 1) t.fail("max_steps", "must be at least 1");
+  o.rtol = t.bounded_or("rtol", o.rtol, 1e-15, 1e-2);
+  o.atol = t.bounded_or("atol", o.atol, 1e-20, 1);
+  o.max_steps = t.bounded_integer_or("max_steps", o.max_steps, 1, 1000000000);
   const std::string scaling = t.string_or("atol_scaling", to_string(o.atol_scaling));
   if (!parse_tolerance_scaling(scaling, o.atol_scaling))
     t.fail("atol_scaling", "must be \"per_component\" or \"uniform\" (got \"" + scaling + "\")");
   const std::string restart = t.string_or("restart", to_string(o.restart));
   if (!parse_restart_strategy(restart, o.restart))
     t.fail("restart", "must be \"every_event\", \"every_crossing\", \"at_jumps\" or \"never\" (got \"" + restart + "\")");
-  o.max_step_s = t.number_or("max_step_s", o.max_step_s);
-  t.require_non_negative("max_step_s", o.max_step_s);
-  const long long events = t.integer_or("max_events_per_ms", o.max_events_per_ms);
-  if (events < 1 || events > 1000000) t.fail("max_events_per_ms", "must be in [1, 1000000]");
-  o.max_events_per_ms = static_cast<int>(events);
+  o.max_step_s = t.bounded_or("max_step_s", o.max_step_s, 0, t_max_s);
+  o.max_events_per_ms = static_cast<int>(t.bounded_integer_or("max_events_per_ms", o.max_events_per_ms, 1, 1000000));
   t.finish();
   return o;
 }
 
 }  // namespace
+
+std::optional<std::pair<std::string, std::string>> realtime_options_problem(const RealtimeOptions& o) {
+  auto range = [](const char* key, double v, double lo, double hi) -> std::optional<std::pair<std::string, std::string>> {
+    if (v >= lo && v <= hi) return std::nullopt;
+    return std::make_pair(std::string(key), "must be in [" + num(lo) + ", " + num(hi) + "] (got " + num(v) + ")");
+  };
+  if (auto p = range("dt_s", o.dt_s, kMinStep_s, kMaxStep_s)) return p;
+  if (auto p = range("contact_dt_s", o.contact_dt_s, kMinStep_s, kMaxStep_s)) return p;
+  if (o.contact_dt_s > o.dt_s) return std::make_pair(std::string("contact_dt_s"), std::string("must not exceed dt_s"));
+  if (auto p = range("t_max_s", o.t_max_s, kMinDuration_s, kMaxDuration_s)) return p;
+  if (auto p = range("output_dt_s", o.output_dt_s, 0, o.t_max_s)) return p;
+  if (o.t_max_s / o.contact_dt_s > kMaxStepsPerThrow)
+    return std::make_pair(std::string("t_max_s"), "t_max_s / contact_dt_s = " + num(o.t_max_s / o.contact_dt_s) +
+                                                      " steps exceeds " + num(kMaxStepsPerThrow));
+  return std::nullopt;
+}
 
 Stone build_stone(const StoneSpec& spec, const std::string& file) {
   Mesh mesh;
@@ -194,6 +203,8 @@ Stone build_stone(const StoneSpec& spec, const std::string& file) {
       mesh = read_obj(spec.mesh_file);
       const MeshCheck check = check_mesh(mesh);
       if (!check.ok) throw_input_error(file, 0, "stone.mesh_file", spec.mesh_file + ": " + check.problem);
+      const SolidCheck solid = check_solid(mesh);
+      if (!solid.ok) throw_input_error(file, 0, "stone.mesh_file", spec.mesh_file + ": " + solid.problem);
       d << "mesh " << spec.mesh_file;
       break;
     }
@@ -203,7 +214,21 @@ Stone build_stone(const StoneSpec& spec, const std::string& file) {
                                                    : mass_properties_from_mass(mesh, spec.mass_kg);
   if (!(mp.mass_kg > 0) || !mp.inertia_kg_m2.allFinite())
     throw_input_error(file, 0, "stone", "the mesh has no positive volume");
-  return make_stone(mesh, mp, spec.radius_m, d.str());
+  // Plausibility of what the keys only imply (cases/README.md, Limits).
+  if (!(mp.density_kg_m3 >= kStoneDensity.lo && mp.density_kg_m3 <= kStoneDensity.hi))
+    throw_input_error(file, 0, "stone", "mass " + num(mp.mass_kg) + " kg in a volume of " + num(mp.volume_m3) +
+                                            " m^3 is a density of " + num(mp.density_kg_m3) + " kg/m^3, outside [" +
+                                            num(kStoneDensity.lo) + ", " + num(kStoneDensity.hi) + "]");
+  if (!(mp.mass_kg >= kStoneMass.lo && mp.mass_kg <= kStoneMass.hi))
+    throw_input_error(file, 0, "stone", "the stone's mass " + num(mp.mass_kg) + " kg is outside [" + num(kStoneMass.lo) +
+                                            ", " + num(kStoneMass.hi) + "] kg");
+  Stone stone = make_stone(mesh, mp, spec.radius_m, d.str());
+  if (spec.shape == StoneShape::mesh_file &&
+      !(stone.bounding_radius_m >= kStoneRadius.lo && stone.bounding_radius_m <= kStoneRadius.hi))
+    throw_input_error(file, 0, "stone.mesh_file",
+                      spec.mesh_file + ": the stone reaches " + num(stone.bounding_radius_m) + " m from its centre of mass, outside [" +
+                          num(kStoneRadius.lo) + ", " + num(kStoneRadius.hi) + "] m (a mesh in millimetres?)");
+  return stone;
 }
 
 StoneCase stone_case_from_document(const TomlDocument& doc) {

@@ -2,10 +2,10 @@
 // A stone case file (TOML, documented in cases/README.md) resolved into the model and solver
 // structs: [stone], [environment], [throw] (or [throw.state]), [solver], optional [reference].
 // Every error is a one-line InputError naming the file and the line or key.
-#include <string>
-#include <vector>
-
 #include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "model/stone/throw.hpp"
 #include "model/water/disturbance.hpp"
@@ -16,6 +16,26 @@
 #include "tools/io/toml_table.hpp"
 
 namespace stoneskip {
+
+// Plausibility bounds of the keys (documented per key in cases/README.md): inputs outside them are
+// not a stone throw (a stone of 1e-30 m, water of density 0), and refused with the bound.
+struct Bounds {
+  double lo, hi;
+};
+constexpr Bounds kStoneRadius{1e-3, 10};        // radius_m, disk_radius_m, an OBJ stone's extent (m)
+constexpr Bounds kStoneThickness{1e-4, 10};     // thickness_m (m)
+constexpr Bounds kStoneDensity{1, 1e5};         // density_kg_m3, also as implied by mass_kg
+constexpr Bounds kStoneMass{1e-6, 1e7};         // mass_kg, also as implied by density_kg_m3
+constexpr long long kMaxSegments = 100000;      // segments
+constexpr Bounds kReleaseHeight{0, 1e4};        // throw.height_m, the z of throw.state.position_m (m)
+constexpr double kMaxPosition_m = 1e4;          // |x|, |y| of throw.state.position_m
+constexpr double kMaxSpeed_m_s = 1000;          // throw.speed_m_s, each velocity component
+constexpr double kMaxSpin_rev_s = 1000;         // |throw.spin_rev_s|
+constexpr double kMaxAngularSpeed_rad_s = 1e4;  // |wobble_rad_s|, each angular velocity component
+constexpr double kMinStep_s = 1e-9, kMaxStep_s = 1;            // solver dt_s, contact_dt_s
+constexpr double kMinDuration_s = 1e-6, kMaxDuration_s = 1e5;  // solver t_max_s
+constexpr double kMaxStepsPerThrow = 1e9;       // t_max_s / contact_dt_s
+constexpr double kMaxWaterOrigin_m = 1e6;       // |water.origin_x_m|, |water.origin_y_m|
 
 enum class StoneShape { prism, lens, mesh_file };
 
@@ -48,6 +68,10 @@ struct StoneCase {
 };
 
 StoneCase load_stone_case(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// The first [solver] setting of the real-time stepper outside its bounds, as (key, what is wrong);
+// none if all are in. Used for the case's [solver] and for a baseline's overrides of it.
+std::optional<std::pair<std::string, std::string>> realtime_options_problem(const RealtimeOptions& o);
 StoneCase stone_case_from_document(const TomlDocument& doc);
 
 // Builds the stone of a spec (mesh, mass properties). Throws InputError (key "stone.*").

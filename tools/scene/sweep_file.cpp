@@ -7,6 +7,7 @@
 
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/scene/resource_estimate.hpp"
 
 namespace stoneskip {
 
@@ -192,9 +193,17 @@ SweepCases::SweepCases(const SweepFile& sweep) : sweep_(sweep) {
         p[k] = d.grid_values(k)[1];
         probes.push_back(p);
       }
+  const RunSolvers solvers{runs_realtime(sweep.solvers), runs_reference(sweep.solvers), false};
   for (const auto& p : probes) {
     try {
-      at(p);
+      const ResourceEstimate e = estimate_run(at(p), solvers);
+      if (e.work.size() > heaviest_throw_.work.size()) heaviest_throw_.work = e.work;
+      for (std::size_t i = 0; i < e.work.size(); ++i)
+        if (e.work[i].count > heaviest_throw_.work[i].count || std::isnan(e.work[i].count)) heaviest_throw_.work[i] = e.work[i];
+      if (!(e.memory_bytes <= heaviest_throw_.memory_bytes)) {
+        heaviest_throw_.memory_bytes = e.memory_bytes;
+        heaviest_throw_.memory_detail = e.memory_detail;
+      }
     } catch (const InputError& e) {
       // Blame the varied key the case reader named, or the first one.
       const std::string what = e.what();

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "tools/io/resource_limits.hpp"
 #include "tools/scene/stone_case.hpp"
 #include "verification/sweep/design.hpp"
 #include "verification/sweep/throw_record.hpp"
@@ -62,8 +63,12 @@ class SweepCases {
   explicit SweepCases(const SweepFile& sweep);
   const StoneCase& base() const { return base_; }
   StoneCase at(const std::vector<double>& point) const;
+  // The largest one-throw estimate (tools/scene/resource_estimate.hpp) over the cases built above,
+  // item by item: what the limits of a whole sweep are computed from.
+  const ResourceEstimate& heaviest_throw() const { return heaviest_throw_; }
 
  private:
+  ResourceEstimate heaviest_throw_;
   SweepFile sweep_;
   TomlDocument base_doc_;
   StoneCase base_;

@@ -87,6 +87,7 @@ Table trajectory_table(const Stone& stone, const ThrowResult& r) {
   Table t;
   t.columns = {"t_s", "x_m", "y_m", "z_m", "vx_m_s", "vy_m_s", "vz_m_s", "qw", "qx", "qy", "qz",
                "wx_rad_s", "wy_rad_s", "wz_rad_s", "energy_J", "momentum_kg_m_s", "wetted_area_m2"};
+  t.values.reserve(r.trajectory.size() * t.columns.size());
   for (const auto& p : r.trajectory) {
     const auto& s = p.state;
     const auto& w = p.angular_velocity_rad_s;

@@ -2,30 +2,36 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 
 namespace stoneskip {
 
+namespace {
+std::string num(double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.6g", v);
+  return b;
+}
+}  // namespace
+
 HeightFieldOptions read_height_field(TomlTable t, TomlTable& top, double* t_end_s) {
   HeightFieldOptions w;
-  const long long nx = t.integer("nx"), ny = t.integer("ny");
-  if (nx < 4 || nx > 16384) t.fail("nx", "must be in [4, 16384]");
-  if (ny < 4 || ny > 16384) t.fail("ny", "must be in [4, 16384]");
-  w.nx = static_cast<int>(nx);
-  w.ny = static_cast<int>(ny);
-  w.cell_m = t.number("cell_m");
-  t.require_positive("cell_m", w.cell_m);
-  w.wave_speed_m_s = t.number("wave_speed_m_s");
-  t.require_positive("wave_speed_m_s", w.wave_speed_m_s);
-  w.damping_per_s = t.number_or("damping_per_s", 0.0);
-  t.require_non_negative("damping_per_s", w.damping_per_s);
-  w.dt_s = t.number("dt_s");
-  t.require_positive("dt_s", w.dt_s);
+  for (const char* key : {"nx", "ny"}) {
+    const long long n = t.integer(key);
+    if (n < kMinCells || n > kMaxCells)
+      t.fail(key, "must be in [" + std::to_string(kMinCells) + ", " + std::to_string(kMaxCells) + "] (got " + std::to_string(n) + ")");
+    (key[1] == 'x' ? w.nx : w.ny) = static_cast<int>(n);
+  }
+  w.cell_m = t.bounded("cell_m", kCellSize_m.lo, kCellSize_m.hi);
+  w.wave_speed_m_s = t.bounded("wave_speed_m_s", kWaveSpeed_m_s.lo, kWaveSpeed_m_s.hi);
+  w.damping_per_s = t.bounded_or("damping_per_s", 0.0, 0, kMaxDamping_per_s);
+  w.dt_s = t.bounded("dt_s", kWaterStep_s.lo, kWaterStep_s.hi);
   if (t_end_s) {
-    *t_end_s = t.number("t_end_s");
-    t.require_positive("t_end_s", *t_end_s);
-    if (*t_end_s / w.dt_s > 1e8) t.fail("t_end_s", "more than 1e8 steps of dt_s");
+    *t_end_s = t.bounded("t_end_s", kWaterStep_s.lo, kMaxWaterDuration_s);
+    if (*t_end_s / w.dt_s > kMaxWaveSteps)
+      t.fail("t_end_s", "t_end_s / dt_s = " + num(*t_end_s / w.dt_s) + " steps exceeds " + num(kMaxWaveSteps));
   }
   const std::string boundary = t.string_or("boundary", "periodic");
   if (!parse_boundary(boundary, w.boundary)) t.fail("boundary", "'" + boundary + "' is not one of periodic, reflecting, fixed");
@@ -33,9 +39,9 @@ HeightFieldOptions read_height_field(TomlTable t, TomlTable& top, double* t_end_
   if (stencil == "custom") {
     TomlTable s = top.table("stencil");
     w.stencil.name = s.string_or("name", "custom");
-    w.stencil.centre = s.number("centre");
-    w.stencil.orth = s.number("orth");
-    w.stencil.diag = s.number("diag");
+    w.stencil.centre = s.bounded("centre", -kMaxStencilWeight, kMaxStencilWeight);
+    w.stencil.orth = s.bounded("orth", -kMaxStencilWeight, kMaxStencilWeight);
+    w.stencil.diag = s.bounded("diag", -kMaxStencilWeight, kMaxStencilWeight);
     s.finish();
   } else if (is_stencil_name(stencil)) {
     w.stencil = named_stencil(stencil);
@@ -51,25 +57,20 @@ Disturbance read_disturbance(TomlTable t) {
   Disturbance d;
   const std::string kind = t.string("kind");
   if (!parse_disturbance_kind(kind, d.kind)) t.fail("kind", "'" + kind + "' is not one of gaussian, plane_wave, ring, impulse");
-  d.amplitude_m = t.number("amplitude_m");
+  d.amplitude_m = t.bounded("amplitude_m", -kMaxAmplitude_m, kMaxAmplitude_m);
   switch (d.kind) {
     case DisturbanceKind::gaussian:
     case DisturbanceKind::ring:
-      d.width_m = t.number("width_m");
-      t.require_positive("width_m", d.width_m);
-      if (d.kind == DisturbanceKind::ring) {
-        d.radius_m = t.number("radius_m");
-        t.require_non_negative("radius_m", d.radius_m);
-      }
+      d.width_m = t.bounded("width_m", kDisturbanceLength_m.lo, kDisturbanceLength_m.hi);
+      if (d.kind == DisturbanceKind::ring) d.radius_m = t.bounded("radius_m", 0, kDisturbanceLength_m.hi);
       [[fallthrough]];
     case DisturbanceKind::impulse:
-      d.x_m = t.number("x_m");
-      d.y_m = t.number("y_m");
+      d.x_m = t.bounded("x_m", -kDisturbanceLength_m.hi, kDisturbanceLength_m.hi);
+      d.y_m = t.bounded("y_m", -kDisturbanceLength_m.hi, kDisturbanceLength_m.hi);
       break;
     case DisturbanceKind::plane_wave:
-      d.wavelength_m = t.number("wavelength_m");
-      t.require_positive("wavelength_m", d.wavelength_m);
-      d.angle_deg = t.number_or("angle_deg", 0.0);
+      d.wavelength_m = t.bounded("wavelength_m", kDisturbanceLength_m.lo, kDisturbanceLength_m.hi);
+      d.angle_deg = t.bounded_or("angle_deg", 0.0, -360, 360);
       break;
   }
   t.finish();  // a key the kind does not use is an error, not silently ignored

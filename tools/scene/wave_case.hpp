@@ -12,6 +12,21 @@
 
 namespace stoneskip {
 
+// Plausibility bounds of the water keys (documented per key in cases/README.md).
+struct WaterBounds {
+  double lo, hi;
+};
+constexpr long long kMinCells = 4, kMaxCells = 16384;     // nx, ny
+constexpr WaterBounds kCellSize_m{1e-6, 1e3};             // cell_m
+constexpr WaterBounds kWaveSpeed_m_s{1e-6, 1e4};          // wave_speed_m_s
+constexpr double kMaxDamping_per_s = 1e6;                 // damping_per_s in [0, this]
+constexpr WaterBounds kWaterStep_s{1e-12, 1e3};           // dt_s (and the least t_end_s)
+constexpr double kMaxWaterDuration_s = 1e6;               // t_end_s
+constexpr double kMaxWaveSteps = 1e8;                     // t_end_s / dt_s
+constexpr double kMaxStencilWeight = 1e6;                 // |centre|, |orth|, |diag| of [stencil]
+constexpr double kMaxAmplitude_m = 1e3;                   // |amplitude_m|
+constexpr WaterBounds kDisturbanceLength_m{1e-9, 1e6};    // width_m, wavelength_m; |x_m|, |y_m|, radius_m <= hi
+
 struct WaveCase {
   std::string file;
   std::string text;

@@ -2,7 +2,8 @@
 // Golden baselines of bounce-count curves (cases/baselines/*.toml) and the comparison that
 // `stoneskip regress` prints. A baseline file holds the settings that made it ([baseline]: the
 // case, swept parameter and grid, convention, water law, solver, tolerances) and the result
-// ([result]: the count at each grid value and every bisected threshold).
+// ([result]: the count at each grid value and every bisected threshold); reading and writing the
+// file is the command line's (the CLI's case parsing), comparing is here.
 //
 // What counts as a regression:
 //  * a count at a grid value differs, unless a stored threshold lies within compare_tolerance of
@@ -12,7 +13,6 @@
 // Bisection brackets a threshold to threshold_tolerance, so two runs of correct code agree to
 // within that; compare_tolerance (default 2 × threshold_tolerance) leaves room for round-off
 // moving a threshold across a bisection point.
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -47,20 +47,6 @@ struct BounceBaseline {
   std::vector<int> counts;
   std::vector<CountThreshold> thresholds;
 };
-
-// Reads a baseline file; InputError ("FILE:LINE: key: what") on anything malformed. A file
-// without [result] is accepted (has_result = false) so that `regress --update` can fill it.
-BounceBaseline read_baseline(const std::string& path);
-
-// The case file of a baseline: as written if it exists relative to the working directory, else
-// relative to the repository root two folders above the baseline (cases/baselines/X.toml).
-std::filesystem::path resolve_case_file(const BounceBaseline& b);
-
-// The sweep a baseline describes (loads the case; InputError on a bad case).
-BounceSweepSpec sweep_of(const BounceBaseline& b);
-
-// The baseline file's text with the result of a new run.
-std::string baseline_text(const BounceBaseline& settings, const BounceSweepResult& result, const std::string& generated);
 
 struct BaselineComparison {
   std::string name;

@@ -17,6 +17,14 @@ const char* to_string(SweepParameter p) {
   return "?";
 }
 
+const char* unit_of(SweepParameter p) {
+  switch (p) {
+    case SweepParameter::spin_rev_s: return "rev/s";
+    case SweepParameter::speed_m_s: return "m/s";
+    default: return "deg";
+  }
+}
+
 bool parse_sweep_parameter(const std::string& s, SweepParameter& out) {
   for (SweepParameter p : {SweepParameter::spin_rev_s, SweepParameter::speed_m_s, SweepParameter::attack_angle_deg,
                            SweepParameter::path_angle_deg}) {
@@ -107,7 +115,10 @@ std::vector<BounceSweepResult> run_bounce_sweeps(const std::vector<BounceSweepSp
       bisect_jobs.push_back([&, k, j] {
         CountThreshold& t = out[k].thresholds[j];
         while (t.hi - t.lo > specs[k].threshold_tolerance) {
-          const double mid = 0.5 * (t.lo + t.hi);
+          const double mid = t.lo + 0.5 * (t.hi - t.lo);
+          // No double strictly between the ends (a tolerance below the values' spacing, e.g.
+          // 1e-300): the bracket is as narrow as the arithmetic allows. Stop, or it never would.
+          if (!(mid > t.lo && mid < t.hi)) break;
           const int n = counters[k]->count(specs[k], mid, nullptr);
           if (n == t.count_below) {
             t.lo = mid;

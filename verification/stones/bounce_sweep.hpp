@@ -13,6 +13,7 @@ namespace stoneskip {
 
 enum class SweepParameter { spin_rev_s, speed_m_s, attack_angle_deg, path_angle_deg };
 const char* to_string(SweepParameter p);          // the [throw] key: "spin_rev_s", ...
+const char* unit_of(SweepParameter p);            // "rev/s", "m/s", "deg"
 bool parse_sweep_parameter(const std::string& s, SweepParameter& out);
 double& parameter_of(ThrowParameters& tp, SweepParameter p);
 
@@ -23,7 +24,8 @@ struct BounceSweepSpec {
   std::vector<double> values;       // ascending grid
   Convention convention = Convention::physical;
   SolverChoice solver;
-  double threshold_tolerance = 0.1; // bisection stops when the bracket is narrower (parameter units)
+  double threshold_tolerance = 0.1; // bisection stops when the bracket is narrower (parameter units),
+                                    // or when no double lies strictly between its ends
   int max_thresholds = 12;          // changes beyond this many are listed but not bisected
 };
 

@@ -1,0 +1,221 @@
+// SIGINT and SIGTERM at random moments (issue 10, items 8 and 9): main left partial report and
+// capture folders (a data.h5 and figures without index.md, or an empty folder) and `run --out big.h5` left
+// big.h5.tmp-PID. Oracle: the folder afterwards. A command stopped by the signal exits 128 +
+// signal and leaves nothing at all there (tools/io/signal_cleanup.hpp: the work folder and every
+// temporary are registered and removed); one that finished first exits 0 and leaves exactly the
+// finished output. The moments are drawn from a seeded generator (the seed is printed) over the
+// command's own measured duration, so every phase — sections, data.h5, figures, the final
+// rename — gets hit across runs.
+#include <boost/test/unit_test.hpp>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <thread>
+#include <vector>
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Scratch {
+  fs::path dir = fs::temp_directory_path() / ("stoneskip_signal_" + std::to_string(::getpid()));
+  fs::path out = dir / "out";  // what the commands write into: nothing else lives here
+  Scratch() {
+    fs::remove_all(dir);
+    fs::create_directories(out);
+  }
+  ~Scratch() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+};
+
+// Starts the executable with stdout and stderr to files in `logs`.
+pid_t start(const std::vector<std::string>& args, const fs::path& logs) {
+  std::vector<std::string> all = {STONESKIP_EXE};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, 1, (logs / "stdout").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&fa, 2, (logs / "stderr").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = -1;
+  const int rc = posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  BOOST_REQUIRE(rc == 0);
+  return pid;
+}
+
+struct Ended {
+  int status = -1;      // exit status, or -1 if killed
+  double wall_s = 0;
+};
+
+Ended finish(pid_t pid, std::chrono::steady_clock::time_point t0) {
+  int raw = 0;
+  ::waitpid(pid, &raw, 0);
+  Ended e;
+  e.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  e.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return e;
+}
+
+// Runs the command, sends `sig` after `delay_s` (if it is still running), and returns how it ended.
+Ended interrupt(const std::vector<std::string>& args, const fs::path& logs, int sig, double delay_s) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const pid_t pid = start(args, logs);
+  std::this_thread::sleep_for(std::chrono::duration<double>(delay_s));
+  ::kill(pid, sig);
+  return finish(pid, t0);
+}
+
+std::vector<std::string> names_in(const fs::path& dir) {
+  std::vector<std::string> n;
+  for (const auto& e : fs::directory_iterator(dir)) n.push_back(e.path().filename().string());
+  std::sort(n.begin(), n.end());
+  return n;
+}
+
+std::string joined(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : " ") + x;
+  return s;
+}
+
+// Exit 128 + sig and nothing left; or exit 0 and only the finished output.
+void check_left(const Ended& e, int sig, const fs::path& out, const std::vector<std::string>& finished, const fs::path& logs) {
+  const std::vector<std::string> left = names_in(out);
+  std::ifstream err(logs / "stderr");
+  const std::string stderr_text((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  BOOST_TEST_MESSAGE("  exit " << e.status << " after " << e.wall_s << " s");
+  BOOST_TEST((e.status == 128 + sig || e.status == 0), "exit " << e.status << "; stderr: " << stderr_text);
+  if (e.status == 128 + sig) {
+    BOOST_TEST(left.empty(), "left behind: " << joined(left));
+    BOOST_TEST(stderr_text.find("interrupted by") != std::string::npos, stderr_text);
+  } else {
+    BOOST_TEST(joined(left) == joined(finished), "left: " << joined(left));
+  }
+}
+
+unsigned seed() {
+  const unsigned s = static_cast<unsigned>(std::chrono::system_clock::now().time_since_epoch().count() % 1000003);
+  BOOST_TEST_MESSAGE("signal moments drawn with seed " << s);
+  return s;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(signals)
+
+BOOST_AUTO_TEST_CASE(an_interrupted_report_leaves_nothing_partial) {
+  Scratch s;
+  std::mt19937 rng(seed());
+  // The whole run once: how long it takes here, and what a finished one leaves.
+  const std::vector<std::string> waves = {"report", "waves", "--quick", "--out", (s.out / "waves").string()};
+  const auto t0 = std::chrono::steady_clock::now();
+  const Ended whole = finish(start(waves, s.dir), t0);
+  BOOST_REQUIRE(whole.status == 0);
+  BOOST_REQUIRE(joined(names_in(s.out)) == "waves");
+  BOOST_TEST(joined(names_in(s.out / "waves")) == "data.h5 figures index.md");
+  fs::remove_all(s.out / "waves");
+  std::uniform_real_distribution<double> moment(0.02, 1.05);
+  for (int i = 0; i < 4; ++i) {
+    const int sig = i % 2 ? SIGTERM : SIGINT;
+    const double at = moment(rng) * whole.wall_s;
+    BOOST_TEST_CONTEXT("report waves, " << (sig == SIGINT ? "SIGINT" : "SIGTERM") << " at " << at << " s of " << whole.wall_s) {
+      const Ended e = interrupt(waves, s.dir, sig, at);
+      check_left(e, sig, s.out, {"waves"}, s.dir);
+      if (e.status == 0) BOOST_TEST(joined(names_in(s.out / "waves")) == "data.h5 figures index.md");
+      fs::remove_all(s.out / "waves");
+    }
+  }
+  // The stones report runs its sections on two worker threads: stopped while they work.
+  const std::vector<std::string> stones = {"report", "stones", "--quick", "--workers", "2", "--out", (s.out / "stones").string()};
+  std::uniform_real_distribution<double> early(0.3, 6.0);
+  for (int sig : {SIGTERM, SIGINT}) {
+    const double at = early(rng);
+    BOOST_TEST_CONTEXT("report stones, signal " << sig << " at " << at << " s") {
+      check_left(interrupt(stones, s.dir, sig, at), sig, s.out, {"stones"}, s.dir);
+      fs::remove_all(s.out / "stones");
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(an_interrupted_run_leaves_no_temporary_file) {
+  // A throw that records 300 000 samples (a stone in free flight without gravity, 1 µs steps,
+  // every step kept) and writes a 41 MB result file.
+  Scratch s;
+  const fs::path c = s.dir / "long.toml";
+  std::ofstream(c) << R"([stone]
+shape = "prism"
+radius_m = 0.03
+thickness_m = 0.008
+density_kg_m3 = 2500.0
+[environment]
+gravity_m_s2 = 0.0
+[throw]
+speed_m_s = 8.0
+path_angle_deg = 0.0
+attack_angle_deg = 0.0
+height_m = 1.0
+[solver]
+dt_s = 1.0e-6
+contact_dt_s = 1.0e-6
+t_max_s = 0.3
+output_dt_s = 0.0
+)";
+  const std::vector<std::string> run = {"run", c.string(), "--out", (s.out / "big.h5").string()};
+  const auto t0 = std::chrono::steady_clock::now();
+  const Ended whole = finish(start(run, s.dir), t0);
+  BOOST_REQUIRE(whole.status == 0);
+  BOOST_REQUIRE(joined(names_in(s.out)) == "big.h5");
+  fs::remove(s.out / "big.h5");
+  std::mt19937 rng(seed());
+  std::uniform_real_distribution<double> moment(0.02, 1.05);
+  for (int i = 0; i < 6; ++i) {
+    const int sig = i % 2 ? SIGINT : SIGTERM;
+    const double at = moment(rng) * whole.wall_s;
+    BOOST_TEST_CONTEXT("run --out, signal " << sig << " at " << at << " s of " << whole.wall_s) {
+      check_left(interrupt(run, s.dir, sig, at), sig, s.out, {"big.h5"}, s.dir);
+      fs::remove(s.out / "big.h5");
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(an_interrupted_capture_validation_leaves_no_folder) {
+  // main left a data.h5 and figures without index.md, or an empty folder (item 8).
+  Scratch s;
+  const std::vector<std::string> validate = {"capture", "validate", "cases/captures/gentle_sidearm.log",
+                                             "cases/captures/lossy_sidearm.log", "--out", (s.out / "cv").string()};
+  const auto t0 = std::chrono::steady_clock::now();
+  const Ended whole = finish(start(validate, s.dir), t0);
+  BOOST_REQUIRE(whole.status == 0);
+  BOOST_REQUIRE(joined(names_in(s.out)) == "cv");
+  fs::remove_all(s.out / "cv");
+  std::mt19937 rng(seed());
+  std::uniform_real_distribution<double> moment(0.02, 1.05);
+  for (int i = 0; i < 3; ++i) {
+    const int sig = i % 2 ? SIGINT : SIGTERM;
+    const double at = moment(rng) * whole.wall_s;
+    BOOST_TEST_CONTEXT("capture validate --out, signal " << sig << " at " << at << " s of " << whole.wall_s) {
+      check_left(interrupt(validate, s.dir, sig, at), sig, s.out, {"cv"}, s.dir);
+      fs::remove_all(s.out / "cv");
+    }
+  }
+}
+
+BOOST_AUTO_TEST_SUITE_END()

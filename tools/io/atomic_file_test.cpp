@@ -1,0 +1,236 @@
+// Atomic outputs replace nothing but a regular file, and inputs that are not regular files are
+// named for what they are (issue 10, items 5, 11 and the input items). Oracles: the file types
+// made here with mkfifo, mknod and symlink (lstat says what they are), and the POSIX rename rule
+// that a rename replaces whatever the destination name is — so a refusal must come first.
+#include <boost/test/unit_test.hpp>
+
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tools/io/atomic_file.hpp"
+#include "tools/io/hdf5_file.hpp"
+#include "tools/io/input_error.hpp"
+#include "tools/io/signal_cleanup.hpp"
+
+using namespace stoneskip;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Scratch {
+  fs::path dir = fs::temp_directory_path() / ("stoneskip_atomic_" + std::to_string(::getpid()));
+  Scratch() {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  ~Scratch() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+};
+
+std::string refusal(const fs::path& p) {
+  try {
+    write_text_file(p, "text");
+    return "";
+  } catch (const InputError& e) {
+    return e.what();
+  }
+}
+
+unsigned type_of(const fs::path& p) {
+  struct stat st {};
+  ::lstat(p.c_str(), &st);
+  return st.st_mode & S_IFMT;
+}
+
+bool no_temporaries(const fs::path& dir) {
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename().string().find(".tmp-") != std::string::npos) return false;
+  return true;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(atomic_outputs)
+
+BOOST_AUTO_TEST_CASE(only_a_regular_file_is_ever_replaced) {
+  // Oracle: lstat before and after. A FIFO, a character device (a copy of /dev/null's numbers,
+  // made with mknod when we are root: the machine's own /dev/null is never touched), a symbolic
+  // link to either and a folder keep their type; a regular file is replaced by the new text.
+  Scratch s;
+  const fs::path fifo = s.dir / "fifo", dev = s.dir / "null", link = s.dir / "link", folder = s.dir / "folder";
+  BOOST_REQUIRE(::mkfifo(fifo.c_str(), 0644) == 0);
+  const bool root = ::geteuid() == 0;
+  if (root) BOOST_REQUIRE(::mknod(dev.c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0);
+  fs::create_symlink(root ? dev : fifo, link);
+  fs::create_directories(folder);
+  struct Case {
+    fs::path path;
+    unsigned type;
+    std::string words;
+  };
+  std::vector<Case> cases = {{fifo, S_IFIFO, "a FIFO"}, {link, S_IFLNK, "a symbolic link"}, {folder, S_IFDIR, "a folder"}};
+  if (root) cases.push_back({dev, S_IFCHR, "a character device"});
+  for (const auto& c : cases) {
+    BOOST_TEST_CONTEXT(c.path) {
+      const std::string e = refusal(c.path);
+      BOOST_TEST(e.find(c.path.string()) == 0u, e);
+      BOOST_TEST(e.find(c.words) != std::string::npos, e);
+      BOOST_TEST(type_of(c.path) == c.type);
+      BOOST_TEST(e.find('\n') == std::string::npos);
+    }
+  }
+  BOOST_TEST(no_temporaries(s.dir));
+  const fs::path regular = s.dir / "plain.txt";
+  { std::ofstream(regular) << "old"; }
+  BOOST_TEST(refusal(regular) == "");
+  std::ifstream in(regular);
+  std::string got;
+  std::getline(in, got);
+  BOOST_TEST(got == "text");
+}
+
+BOOST_AUTO_TEST_CASE(an_unwritable_place_is_refused_before_any_work) {
+  // Oracle: what the kernel says when a file is created there. The output is opened (its
+  // temporary created) in the constructor, so the error comes before the caller computes
+  // anything; an empty name and a missing folder are named as such.
+  Scratch s;
+  auto error_of = [](const fs::path& p) {
+    try {
+      AtomicOutput o(p);
+      return std::string();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+  };
+  BOOST_TEST(error_of("").find("an output file name is required") != std::string::npos);
+  BOOST_TEST(error_of(s.dir / "none" / "x.h5").find("does not exist") != std::string::npos);
+  BOOST_TEST(error_of("/proc/stoneskip_cannot_exist.h5").find("cannot write in folder '/proc'") != std::string::npos);
+  const fs::path file = s.dir / "afile";
+  { std::ofstream(file) << "x"; }
+  BOOST_TEST(error_of(file / "x.h5").find("not a folder") != std::string::npos);
+  // The temporary exists while the output is open, is registered for the signal cleanup, and is
+  // gone (unregistered) when the output is dropped uncommitted.
+  const int registered = registered_temporary_count();
+  {
+    AtomicOutput o(s.dir / "out.h5");
+    BOOST_TEST(fs::is_regular_file(o.temporary_path()));
+    BOOST_TEST(registered_temporary_count() == registered + 1);
+  }
+  BOOST_TEST(registered_temporary_count() == registered);
+  BOOST_TEST(no_temporaries(s.dir));
+  BOOST_TEST(!fs::exists(s.dir / "out.h5"));
+}
+
+BOOST_AUTO_TEST_CASE(a_destination_turned_into_a_fifo_before_commit_is_not_replaced) {
+  // Oracle: the type checked again at commit: a FIFO made after the output was opened survives,
+  // and the temporary is removed.
+  Scratch s;
+  const fs::path p = s.dir / "late";
+  {
+    Hdf5Writer w(p);
+    w.root().set_attr("x", 1.0);
+    BOOST_REQUIRE(::mkfifo(p.c_str(), 0644) == 0);
+    BOOST_CHECK_THROW(w.commit(), InputError);
+  }
+  BOOST_TEST(type_of(p) == static_cast<unsigned>(S_IFIFO));
+  BOOST_TEST(no_temporaries(s.dir));
+}
+
+BOOST_AUTO_TEST_CASE(inputs_that_are_not_regular_files_are_named_for_what_they_are) {
+  // Oracle: lstat's type. A folder, a FIFO (never opened: reading it would wait forever) and a
+  // character device are "not a regular file", a missing name is "no such file", and a file
+  // above the caller's limit is refused by its size.
+  Scratch s;
+  const fs::path fifo = s.dir / "fifo";
+  BOOST_REQUIRE(::mkfifo(fifo.c_str(), 0644) == 0);
+  auto error_of = [](const fs::path& p, std::size_t limit) {
+    try {
+      read_text_file(p, limit);
+      return std::string();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+  };
+  const std::size_t any = static_cast<std::size_t>(-1);
+  BOOST_TEST(error_of(s.dir, any).find("it is a folder, not a regular file") != std::string::npos);
+  BOOST_TEST(error_of(fifo, any).find("it is a FIFO, not a regular file") != std::string::npos);
+  BOOST_TEST(error_of("/dev/zero", any).find("it is a character device, not a regular file") != std::string::npos);
+  BOOST_TEST(error_of(s.dir / "missing.toml", any).find("no such file") != std::string::npos);
+  const fs::path big = s.dir / "big.txt";
+  { std::ofstream(big) << std::string(1000, 'x'); }
+  BOOST_TEST(error_of(big, 999).find("larger than the limit of 999 bytes") != std::string::npos);
+  BOOST_TEST(error_of(big, 1000) == "");
+}
+
+BOOST_AUTO_TEST_CASE(the_signal_cleanup_removes_registered_files_and_folders) {
+  // Oracle: the file system afterwards. What the cleanup thread does on SIGINT before _exit
+  // (remove every registered path, folders with all they hold, with system calls only) leaves
+  // nothing of them; an unregistered file beside them stays. (The signal itself is sent to the
+  // command in tools/cli/signal_test.cpp.)
+  Scratch s;
+  const fs::path folder = s.dir / "report.partial", file = s.dir / "x.h5.tmp-1", keep = s.dir / "keep";
+  fs::create_directories(folder / "sections" / "deeper");
+  for (int i = 0; i < 300; ++i) std::ofstream(folder / "sections" / ("s" + std::to_string(i) + ".h5")) << i;
+  std::ofstream(folder / "sections" / "deeper" / "f") << 1;
+  const fs::path outside = s.dir / "outside";
+  fs::create_directories(outside);
+  std::ofstream(outside / "canary") << 1;
+  fs::create_symlink(outside, folder / "a_link_outside");  // removed as a link, never followed
+  std::ofstream(file) << 1;
+  std::ofstream(keep) << 1;
+  {
+    RegisteredTemporary a(folder, TemporaryKind::folder), b(file, TemporaryKind::file);
+    BOOST_TEST(remove_registered_temporaries() == 2);
+  }
+  BOOST_TEST(!fs::exists(fs::symlink_status(folder)));
+  BOOST_TEST(!fs::exists(file));
+  BOOST_TEST(fs::exists(keep));
+  BOOST_TEST(fs::exists(outside / "canary"));  // the link was not followed
+}
+
+BOOST_AUTO_TEST_CASE(an_atomic_folder_appears_whole_and_replaces_only_what_it_may) {
+  // Oracle: the folder listing. Before commit only the registered work folder exists (and the
+  // signal cleanup would remove it); an error removes it; commit puts it in place; an existing
+  // folder is replaced only when empty or when the predicate says stoneskip made it.
+  Scratch s;
+  const auto ours = [](const fs::path& d) { return fs::is_regular_file(d / "index.md"); };
+  const int registered = registered_temporary_count();
+  {
+    AtomicFolder f(s.dir / "page", ours);
+    std::ofstream(f.work_dir() / "index.md") << "half";
+    BOOST_TEST(registered_temporary_count() == registered + 1);
+    BOOST_TEST(!fs::exists(s.dir / "page"));
+  }  // destroyed before commit: an error
+  BOOST_TEST(fs::is_empty(s.dir));
+  BOOST_TEST(registered_temporary_count() == registered);
+  for (const char* text : {"first", "second"}) {
+    AtomicFolder f(s.dir / "page", ours);
+    std::ofstream(f.work_dir() / "index.md") << text;
+    f.commit();
+  }
+  std::ifstream in(s.dir / "page" / "index.md");
+  std::string text;
+  in >> text;
+  BOOST_TEST(text == "second");
+  fs::create_directories(s.dir / "theirs");
+  std::ofstream(s.dir / "theirs" / "notes.txt") << "x";
+  std::ofstream(s.dir / "afile") << "x";
+  BOOST_CHECK_THROW(AtomicFolder(s.dir / "theirs", ours), InputError);
+  BOOST_CHECK_THROW(AtomicFolder(s.dir / "afile", ours), InputError);
+  BOOST_CHECK_THROW(AtomicFolder(s.dir / "nowhere" / "x", ours), InputError);
+  BOOST_CHECK_THROW(AtomicFolder("", ours), InputError);
+  std::size_t n = 0;
+  for (const auto& e : fs::directory_iterator(s.dir)) n += e.path().filename().string().find(".partial") == std::string::npos;
+  BOOST_TEST(n == 3u);  // page, theirs, afile: no work folder left
+  BOOST_TEST(std::distance(fs::directory_iterator(s.dir), fs::directory_iterator()) == 3);
+  BOOST_TEST(registered_temporary_count() == registered);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

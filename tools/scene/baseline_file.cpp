@@ -1,0 +1,257 @@
+#include "tools/scene/baseline_file.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+#include "tools/io/input_error.hpp"
+#include "tools/io/toml_table.hpp"
+#include "tools/scene/case_problem.hpp"
+
+namespace stoneskip {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string num(double v) {
+  // The shortest of %.15g / %.17g that reads back exactly.
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.15g", v);
+  if (std::strtod(buf, nullptr) != v) std::snprintf(buf, sizeof buf, "%.17g", v);
+  std::string s = buf;
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // keep TOML floats floats
+  return s;
+}
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+template <class T, class F>
+std::string array(const std::vector<T>& v, F f) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + f(v[i]);
+  return s + "]";
+}
+
+
+// The bounds of a swept parameter: those of its key in a case's [throw] (stone_case.hpp).
+Bounds parameter_bounds(SweepParameter p) {
+  switch (p) {
+    case SweepParameter::spin_rev_s: return {-kMaxSpin_rev_s, kMaxSpin_rev_s};
+    case SweepParameter::speed_m_s: return {0, kMaxSpeed_m_s};
+    default: return {-90, 90};
+  }
+}
+
+std::string text(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", v);
+  return b;
+}
+
+}  // namespace
+
+BounceBaseline read_baseline(const std::string& path) {
+  const TomlDocument doc = load_toml(path);
+  TomlTable top = doc.top();
+  BounceBaseline b;
+  b.file = path;
+  TomlTable t = top.table("baseline");
+  b.name = t.string("name");
+  for (char c : b.name)
+    if (!(std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '_'))
+      t.fail("name", "use only a-z, 0-9 and _");
+  b.description = t.string_or("description", "");
+  b.case_file = t.string("case");
+  const std::string param = t.string("parameter");
+  if (!parse_sweep_parameter(param, b.parameter))
+    t.fail("parameter", "'" + param + "' is not one of spin_rev_s, speed_m_s, attack_angle_deg, path_angle_deg");
+  b.values = t.numbers("values");
+  if (b.values.size() < 2) t.fail("values", "need at least two grid values");
+  for (std::size_t i = 1; i < b.values.size(); ++i)
+    if (!(b.values[i] > b.values[i - 1])) t.fail("values", "must be strictly ascending");
+  const Bounds range = parameter_bounds(b.parameter);
+  if (!(b.values.front() >= range.lo && b.values.back() <= range.hi))
+    t.fail("values", std::string("the values of ") + to_string(b.parameter) + " must be in [" + text(range.lo) + ", " +
+                         text(range.hi) + "] (as the case key)");
+  const std::string conv = t.string("convention");
+  if (!parse_convention(conv, b.convention)) t.fail("convention", "'" + conv + "' is not physical or paper");
+  const std::string law = t.string_or("water_law", to_string(b.water_law));
+  if (!parse_water_law(law, b.water_law)) t.fail("water_law", "'" + law + "' is not newtonian, planing or lift_drag");
+  if (b.convention == Convention::paper && b.water_law != WaterLaw::newtonian)
+    t.fail("water_law", "the paper convention has the printed (newtonian) law only");
+  const std::string solver = t.string("solver");
+  if (solver == "realtime") {
+    b.solver = SolverKind::realtime;
+    b.scheme = t.string_or("scheme", "");
+    Scheme sc;
+    if (!b.scheme.empty() && !parse_scheme(b.scheme, sc))
+      t.fail("scheme", "'" + b.scheme + "' is not semi_implicit_euler, midpoint or rk4");
+    // 0 or absent: the case's; otherwise checked with the case's [solver] in sweep_of().
+    b.dt_s = t.number_or("dt_s", 0);
+    b.contact_dt_s = t.number_or("contact_dt_s", 0);
+    t.require_non_negative("dt_s", b.dt_s);
+    t.require_non_negative("contact_dt_s", b.contact_dt_s);
+  } else if (solver == "reference") {
+    b.solver = SolverKind::reference;
+    b.method = t.string_or("method", "");
+    ReferenceMethod m;
+    if (!b.method.empty() && !parse_reference_method(b.method, m)) t.fail("method", "'" + b.method + "' is not bdf or adams");
+    b.rtol = t.number_or("rtol", 0);
+    b.atol = t.number_or("atol", 0);
+    if (b.rtol != 0) t.require_in("rtol", b.rtol, 1e-15, 1e-2);
+    if (b.atol != 0) t.require_in("atol", b.atol, 1e-20, 1);
+    b.restart = t.string_or("restart", "");
+    RestartStrategy rs;
+    if (!b.restart.empty() && !parse_restart_strategy(b.restart, rs))
+      t.fail("restart", "'" + b.restart + "' is not every_event, every_crossing, at_jumps or never");
+  } else {
+    t.fail("solver", "'" + solver + "' is not realtime or reference");
+  }
+  b.t_max_s = t.number_or("t_max_s", 0);
+  if (b.t_max_s != 0) t.require_in("t_max_s", b.t_max_s, kMinDuration_s, kMaxDuration_s);
+  // The bisection halves a bracket of at most the grid's span down to threshold_tolerance: at
+  // most log2(span / tolerance) ≤ 30 halvings per threshold with this lower bound (a tolerance of
+  // 1e-300 would never be reached: the midpoint rounds onto an end).
+  const double span = b.values.back() - b.values.front();
+  b.threshold_tolerance = t.number("threshold_tolerance");
+  t.require_in("threshold_tolerance", b.threshold_tolerance, kMinRelativeThresholdTolerance * span, span);
+  b.compare_tolerance = t.number_or("compare_tolerance", 2 * b.threshold_tolerance);
+  t.require_in("compare_tolerance", b.compare_tolerance, kMinRelativeThresholdTolerance * span, span);
+  t.finish();
+
+  if (auto r = top.maybe_table("result")) {
+    b.has_result = true;
+    b.generated = r->string_or("generated", "");
+    auto whole = [&](const std::string& key, double c) {
+      if (c != std::floor(c) || c < -1 || c > kMaxBounceCount)
+        r->fail(key, "bounce counts are whole numbers in [-1, 1000000] (-1: the solver failed)");
+      return static_cast<int>(c);
+    };
+    for (double c : r->numbers("counts")) b.counts.push_back(whole("counts", c));
+    if (b.counts.size() != b.values.size()) r->fail("counts", "needs one count per value of baseline.values");
+    const auto lo = r->numbers("threshold_lo"), hi = r->numbers("threshold_hi");
+    const auto below = r->numbers("threshold_count_below"), above = r->numbers("threshold_count_above");
+    if (hi.size() != lo.size() || below.size() != lo.size() || above.size() != lo.size())
+      r->fail("threshold_lo", "threshold_lo, threshold_hi, threshold_count_below and threshold_count_above need equal lengths");
+    for (std::size_t i = 0; i < lo.size(); ++i) {
+      CountThreshold th;
+      th.lo = lo[i];
+      th.hi = hi[i];
+      th.count_below = whole("threshold_count_below", below[i]);
+      th.count_above = whole("threshold_count_above", above[i]);
+      th.bisected = true;
+      if (!(th.hi >= th.lo)) r->fail("threshold_hi", "each threshold_hi must be >= its threshold_lo");
+      b.thresholds.push_back(th);
+    }
+    r->finish();
+  }
+  top.finish();
+  return b;
+}
+
+fs::path resolve_case_file(const BounceBaseline& b) {
+  fs::path c(b.case_file);
+  if (c.is_absolute() || fs::exists(c)) return c;
+  fs::path root = fs::path(b.file).parent_path().parent_path().parent_path();
+  fs::path alt = root / c;
+  if (fs::exists(alt)) return alt;
+  throw_input_error(b.file, 0, "baseline.case", "case file '" + b.case_file + "' not found (relative to the working directory or to " +
+                                                     (root.empty() ? std::string(".") : root.string()) + ")");
+}
+
+BounceSweepSpec sweep_of(const BounceBaseline& b) {
+  std::vector<std::string> overrides;
+  if (b.water_law != WaterLaw::newtonian) overrides.push_back(std::string("environment.water_law=") + to_string(b.water_law));
+  const StoneCase c = load_stone_case(resolve_case_file(b).string(), overrides);
+  BounceSweepSpec s;
+  s.name = b.name;
+  s.base = problem_from_case(c);
+  if (!s.base.from_parameters)
+    throw_input_error(b.file, 0, "baseline.case", "the case gives a full [throw.state]; a sweep needs [throw] parameters");
+  s.parameter = b.parameter;
+  s.values = b.values;
+  s.convention = b.convention;
+  if (b.solver == SolverKind::realtime) {
+    RealtimeOptions o = c.realtime;
+    if (!b.scheme.empty()) parse_scheme(b.scheme, o.scheme);
+    if (b.dt_s > 0) o.dt_s = b.dt_s;
+    if (b.contact_dt_s > 0) o.contact_dt_s = b.contact_dt_s;
+    if (b.t_max_s > 0) o.t_max_s = b.t_max_s;
+    o.output_dt_s = std::min(o.output_dt_s, o.t_max_s);
+    // The steps as [solver] would check them (a contact_dt_s of 1e-300 must not reach the stepper).
+    if (const auto problem = realtime_options_problem(o))
+      throw_input_error(b.file, 0, "baseline." + problem->first, problem->second + " (the baseline's settings over the case's [solver])");
+    s.solver = realtime_choice(o);
+  } else {
+    ReferenceOptions o = c.reference;
+    if (!b.method.empty()) parse_reference_method(b.method, o.method);
+    if (b.rtol > 0) o.rtol = b.rtol;
+    if (b.atol > 0) o.atol = b.atol;
+    if (!b.restart.empty()) parse_restart_strategy(b.restart, o.restart);
+    if (b.t_max_s > 0) o.t_max_s = b.t_max_s;
+    s.solver = reference_choice(o);
+  }
+  s.threshold_tolerance = b.threshold_tolerance;
+  s.max_thresholds = 1000;  // a baseline bisects every change
+  return s;
+}
+
+std::string baseline_text(const BounceBaseline& b, const BounceSweepResult& r, const std::string& generated) {
+  std::ostringstream s;
+  s << "# Golden baseline: bounce count against " << to_string(b.parameter) << " (" << unit_of(b.parameter) << ").\n"
+    << "# Checked by `stoneskip regress`; rewritten (the [result] part) by `stoneskip regress --update --baseline "
+       "THIS_FILE`.\n"
+    << "# Counts must match exactly except within compare_tolerance of a threshold; thresholds must match\n"
+    << "# (same counts on both sides) within compare_tolerance.\n\n";
+  s << "[baseline]\n";
+  s << "name = " << quoted(b.name) << "\n";
+  if (!b.description.empty()) s << "description = " << quoted(b.description) << "\n";
+  s << "case = " << quoted(b.case_file) << "\n";
+  s << "parameter = " << quoted(to_string(b.parameter)) << "\n";
+  s << "values = " << array(b.values, num) << "\n";
+  s << "convention = " << quoted(to_string(b.convention)) << "\n";
+  if (b.water_law != WaterLaw::newtonian) s << "water_law = " << quoted(to_string(b.water_law)) << "\n";
+  if (b.solver == SolverKind::realtime) {
+    s << "solver = \"realtime\"\n";
+    if (!b.scheme.empty()) s << "scheme = " << quoted(b.scheme) << "\n";
+    if (b.dt_s > 0) s << "dt_s = " << num(b.dt_s) << "\n";
+    if (b.contact_dt_s > 0) s << "contact_dt_s = " << num(b.contact_dt_s) << "\n";
+  } else {
+    s << "solver = \"reference\"\n";
+    if (!b.method.empty()) s << "method = " << quoted(b.method) << "\n";
+    if (b.rtol > 0) s << "rtol = " << num(b.rtol) << "\n";
+    if (b.atol > 0) s << "atol = " << num(b.atol) << "\n";
+    if (!b.restart.empty()) s << "restart = " << quoted(b.restart) << "\n";
+  }
+  if (b.t_max_s > 0) s << "t_max_s = " << num(b.t_max_s) << "\n";
+  s << "threshold_tolerance = " << num(b.threshold_tolerance) << "\n";
+  s << "compare_tolerance = " << num(b.compare_tolerance) << "\n\n";
+  s << "[result]\n";
+  s << "generated = " << quoted(generated) << "\n";
+  s << "counts = " << array(r.counts, [](int c) { return std::to_string(c); }) << "\n";
+  std::vector<double> lo, hi, below, above;
+  for (const auto& t : r.thresholds) {
+    lo.push_back(t.lo);
+    hi.push_back(t.hi);
+    below.push_back(t.count_below);
+    above.push_back(t.count_above);
+  }
+  s << "threshold_lo = " << array(lo, num) << "\n";
+  s << "threshold_hi = " << array(hi, num) << "\n";
+  s << "threshold_count_below = " << array(below, [](double c) { return std::to_string(static_cast<int>(c)); }) << "\n";
+  s << "threshold_count_above = " << array(above, [](double c) { return std::to_string(static_cast<int>(c)); }) << "\n";
+  return s.str();
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,33 @@
+#pragma once
+// Golden baseline files (cases/baselines/*.toml, documented in cases/README.md): reading one into a
+// BounceBaseline (verification/stones/bounce_baseline.hpp, where the comparison lives), the sweep
+// it describes (its stone case loaded and its solver settings applied), and the file's text after
+// a new run (`stoneskip regress --update`).
+#include <filesystem>
+#include <string>
+
+#include "verification/stones/bounce_baseline.hpp"
+
+namespace stoneskip {
+
+// threshold_tolerance and compare_tolerance must be at least this fraction of the grid's span
+// (values.back() − values.front()): the bisection then halves a bracket at most ~30 times.
+constexpr double kMinRelativeThresholdTolerance = 1e-9;
+constexpr double kMaxBounceCount = 1e6;  // a stored count beyond this is not a count
+
+// Reads a baseline file; InputError ("FILE:LINE: key: what") on anything malformed. A file
+// without [result] is accepted (has_result = false) so that `regress --update` can fill it.
+BounceBaseline read_baseline(const std::string& path);
+
+// The case file of a baseline: as written if it exists relative to the working directory, else
+// relative to the repository root two folders above the baseline (cases/baselines/X.toml).
+std::filesystem::path resolve_case_file(const BounceBaseline& b);
+
+// The sweep a baseline describes (loads the case; InputError on a bad case, or on solver settings
+// that the case's own [solver] would refuse).
+BounceSweepSpec sweep_of(const BounceBaseline& b);
+
+// The baseline file's text with the result of a new run.
+std::string baseline_text(const BounceBaseline& settings, const BounceSweepResult& result, const std::string& generated);
+
+}  // namespace stoneskip

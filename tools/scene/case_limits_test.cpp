@@ -1,0 +1,182 @@
+// Plausibility bounds and limits of stone and wave cases (issue 10): what main ran as a throw — a
+// stone of 1e-30 m (exit speed 7.6e22 m/s), water of density 0, a release 1 m under water, an
+// unstable scene water blamed on the stone — is refused with the key and the bound, and every
+// shipped case stays inside the bounds and the limits. Oracles: the bounds documented per key in
+// cases/README.md, the von Neumann limit of the stencil (verification/waves/stability.hpp), and
+// the arithmetic of the estimates (array counts × cells × 8 bytes).
+#include <boost/test/unit_test.hpp>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "tools/io/input_error.hpp"
+#include "tools/scene/documented_keys.hpp"
+#include "tools/scene/baseline_file.hpp"
+#include "tools/scene/resource_estimate.hpp"
+#include "tools/scene/stone_case.hpp"
+#include "tools/scene/wave_case.hpp"
+
+using namespace stoneskip;
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* const kCase = stoneskip::test::kPlainStoneCase;
+
+std::string error_of(const std::string& text, const std::vector<std::string>& overrides) {
+  try {
+    stone_case_from_document(parse_toml_text(text, "c.toml", overrides));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::vector<fs::path> shipped(const fs::path& dir, const std::string& prefix = "") {
+  std::vector<fs::path> out;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".toml" && e.path().filename().string().rfind(prefix, 0) == 0) out.push_back(e.path());
+  return out;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(case_limits)
+
+BOOST_AUTO_TEST_CASE(the_issues_implausible_throws_are_refused_with_key_and_bound) {
+  struct Case {
+    std::string set, fragment;
+  };
+  for (const Case& c : {Case{"stone.radius_m=1e-30", "c.toml: --set stone.radius_m: must be in [0.001, 10] (got 1e-30)"},
+                        Case{"environment.water_density_kg_m3=0", "--set environment.water_density_kg_m3: must be in [1, 100000]"},
+                        Case{"throw.height_m=-1", "--set throw.height_m: must be in [0, 10000] (got -1)"},
+                        Case{"throw.height_m=1e6", "--set throw.height_m: must be in [0, 10000]"},
+                        Case{"throw.speed_m_s=1e30", "--set throw.speed_m_s: must be in [0, 1000]"},
+                        Case{"solver.contact_dt_s=1e-300", "--set solver.contact_dt_s: must be in [1e-09, 1]"}}) {
+    const std::string e = error_of(kCase, {c.set});
+    BOOST_TEST(e.find(c.fragment) != std::string::npos, c.set << " -> " << e);
+    BOOST_TEST(e.find("c.toml: --set ") == 0u, e);
+  }
+  // What a key only implies: 1 kg in a 3 cm prism is a density of 44 000 kg/m³ (allowed), 100 kg
+  // is 4.4e6 (no stone).
+  std::string text = kCase;
+  text.replace(text.find("density_kg_m3 = 2500.0"), 22, "mass_kg = 100.0");
+  const std::string e = error_of(text, {});
+  BOOST_TEST(e.find("c.toml: stone: mass 100 kg in a volume of") == 0u, e);
+  BOOST_TEST(e.find("outside [1, 100000]") != std::string::npos, e);
+}
+
+BOOST_AUTO_TEST_CASE(a_mesh_file_that_is_no_file_names_the_key_and_the_path) {
+  // Oracle: the key as written: "" names nothing; a folder and a FIFO are not OBJ files.
+  const std::string dir = fs::temp_directory_path() / ("mesh_keys_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string fifo = dir + "/stone.obj";
+  ::mkfifo(fifo.c_str(), 0644);
+  std::string text = kCase;
+  const std::string dims = "shape = \"prism\"\nradius_m = 0.03\nthickness_m = 0.008\n";
+  text.replace(text.find(dims), dims.size(), "shape = \"mesh\"\n");
+  const std::string empty = error_of(text, {"stone.mesh_file=\"\""});
+  BOOST_TEST(empty == "c.toml: --set stone.mesh_file: must name a Wavefront OBJ file (got an empty string)");
+  const std::string folder = error_of(text, {"stone.mesh_file=\"" + dir + "\""});
+  BOOST_TEST(folder.find("stone.mesh_file: " + dir + ": cannot read: it is a folder") != std::string::npos, folder);
+  const std::string f = error_of(text, {"stone.mesh_file=\"" + fifo + "\""});
+  BOOST_TEST(f.find("it is a FIFO, not a regular file") != std::string::npos, f);
+  fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_CASE(an_unstable_scene_water_is_refused_naming_its_step) {
+  // Oracle: the nine-point isotropic stencil's von Neumann limit σ = √3/2 at μΔt = 0 (README,
+  // "The water surface"): the swell's 2 cm cells and c = 1.25 m/s allow Δt up to 0.866·0.02/1.25
+  // = 0.01386 s. At 0.05 s (σ = 3.1) main ran the throw on a blown-up surface and reported a sinking.
+  const std::string text = std::string(kCase) + R"(
+[water]
+stencil = "nine_point_isotropic"
+nx = 50
+ny = 50
+cell_m = 0.02
+wave_speed_m_s = 1.25
+boundary = "reflecting"
+dt_s = 0.005
+[water.initial]
+kind = "plane_wave"
+amplitude_m = 0.02
+wavelength_m = 1.0
+)";
+  BOOST_TEST(error_of(text, {}) == "");
+  const std::string e = error_of(text, {"water.dt_s=0.05"});
+  BOOST_TEST(e.find("c.toml: --set water.dt_s: the water would be unstable: sigma = c dt_s / cell_m = 3.125") == 0u, e);
+  BOOST_TEST(e.find("take dt_s <= 0.0138564") != std::string::npos, e);
+}
+
+BOOST_AUTO_TEST_CASE(estimates_count_what_the_run_will_hold) {
+  // Oracle: arithmetic. A periodic wave case holds 10.5 arrays of nx·ny doubles: 16384² cells are
+  // 22.5 GB, above the 8 GB default; its work is cells × ⌈t_end/Δt⌉. A throw of t_max / contact_dt
+  // = 1e8 steps recording every one (output_dt_s = 0) holds 1e8 samples.
+  const std::string wave = R"([water]
+stencil = "five_point"
+nx = 16384
+ny = 16384
+cell_m = 0.001
+wave_speed_m_s = 1.0
+dt_s = 0.0005
+t_end_s = 0.001
+[initial]
+kind = "impulse"
+amplitude_m = 0.01
+x_m = 0.5
+y_m = 0.5
+)";
+  const WaveCase w = wave_case_from_document(parse_toml_text(wave, "w.toml"));
+  const ResourceEstimate we = estimate_wave(w);
+  BOOST_TEST(we.memory_bytes == 10.5 * 8 * 16384.0 * 16384.0);
+  BOOST_TEST(we.work.at(0).count == 2 * 16384.0 * 16384.0);
+  BOOST_CHECK_THROW(enforce_limits(we, ResourceLimits{}, "w.toml"), InputError);
+  BOOST_CHECK_NO_THROW(enforce_limits(we, ResourceLimits{23e9, false}, "w.toml"));
+
+  const StoneCase c = stone_case_from_document(
+      parse_toml_text(kCase, "c.toml", {"solver.t_max_s=1000", "solver.dt_s=1e-5", "solver.output_dt_s=0", "throw.height_m=100"}));
+  const ResourceEstimate ce = estimate_run(c, RunSolvers{});
+  BOOST_TEST(ce.memory_bytes >= 1e8 * sizeof(TrajectorySample));
+  BOOST_TEST(ce.work.at(0).count == 1e8 * 44);  // steps × 1 right-hand side × 44 triangles
+  BOOST_CHECK_THROW(enforce_limits(ce, ResourceLimits{}, "c.toml"), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(every_shipped_case_and_baseline_is_inside_the_bounds_and_limits) {
+  // Oracle: the shipped cases are the documented examples (README, cases/README.md): each must
+  // load and pass the default limits with the solvers it is run with.
+  int stone = 0, wave = 0;
+  for (const fs::path& dir : {fs::path("cases"), fs::path("cases/hard"), fs::path("cases/scenes"), fs::path("cases/studies")}) {
+    for (const auto& f : shipped(dir)) {
+      const std::string name = f.filename().string();
+      if (name.rfind("wave_", 0) == 0) {
+        const WaveCase w = load_wave_case(f.string());
+        BOOST_CHECK_NO_THROW(enforce_limits(estimate_wave(w), ResourceLimits{}, f.string()));
+        ++wave;
+        continue;
+      }
+      if (dir == "cases/studies" &&
+          (name.rfind("stones", 0) == 0 || name.rfind("waves", 0) == 0 || name.rfind("scene", 0) == 0))
+        continue;  // study files
+      BOOST_TEST_CONTEXT(f) {
+        const StoneCase c = load_stone_case(f.string());
+        BOOST_CHECK_NO_THROW(enforce_limits(estimate_run(c, RunSolvers{true, !c.water, true}), ResourceLimits{}, f.string()));
+        ++stone;
+      }
+    }
+  }
+  BOOST_TEST(stone >= 15);
+  BOOST_TEST(wave >= 5);
+  std::vector<BounceSweepSpec> sweeps;
+  for (const auto& f : shipped("cases/baselines")) {
+    sweeps.push_back(sweep_of(read_baseline(f.string())));
+    BOOST_CHECK_NO_THROW(enforce_limits(estimate_regress({sweeps.back()}), ResourceLimits{}, f.string()));
+  }
+  const ResourceEstimate all = estimate_regress(sweeps);
+  BOOST_TEST_MESSAGE("shipped regress: " << all.work.back().count << " " << all.work.back().what);
+  BOOST_CHECK_NO_THROW(enforce_limits(all, ResourceLimits{}, "regress"));
+}
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -1,0 +1,130 @@
+#include "tools/scene/resource_estimate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace stoneskip {
+
+namespace {
+
+constexpr double kDouble = sizeof(double);
+constexpr double kTrajectoryColumns = 17;  // the result file's trajectory table (throw_output.hpp)
+
+std::string sci(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", v);
+  return b;
+}
+
+double rhs_per_step(Scheme s) {
+  switch (s) {
+    case Scheme::semi_implicit_euler: return 1;
+    case Scheme::midpoint: return 2;
+    case Scheme::rk4: return 4;
+  }
+  return 4;
+}
+
+// Worst-case steps of the real-time stepper: every step at contact_dt_s.
+double realtime_steps(const RealtimeOptions& o) { return std::ceil(o.t_max_s / o.contact_dt_s); }
+
+// Trajectory samples held in memory: one per output_dt_s (plus contact transitions), or every step.
+double samples(double t_max_s, double output_dt_s, double max_steps) {
+  if (output_dt_s <= 0) return max_steps;
+  return std::min(max_steps, std::floor(t_max_s / output_dt_s) + 1) + 64;
+}
+
+// A trajectory sample in memory (a vector grows by doubling: up to twice its size) and, with
+// --out, its row of the table written out.
+double sample_bytes(bool writes_file) {
+  return 2.0 * sizeof(TrajectorySample) + (writes_file ? kTrajectoryColumns * kDouble : 0.0);
+}
+
+}  // namespace
+
+ResourceEstimate estimate_run(const StoneCase& c, const RunSolvers& solvers) {
+  ResourceEstimate e;
+  const double triangles = static_cast<double>(c.stone.body_mesh.triangles.size());
+  e.add_memory(triangles * 64 * kDouble, "");  // mesh, normals, areas, clipping scratch: small
+  if (solvers.realtime) {
+    const RealtimeOptions& o = c.realtime;
+    const double steps = realtime_steps(o), rhs = rhs_per_step(o.scheme);
+    e.add_work(steps * rhs * triangles, kMaxTriangleEvaluations,
+               "triangle evaluations of the real-time stepper (t_max_s / contact_dt_s = " + sci(steps) + " steps × " +
+                   sci(rhs) + " right-hand sides × " + sci(triangles) + " triangles)");
+    const double n = samples(o.t_max_s, o.output_dt_s, steps);
+    e.add_memory(n * sample_bytes(solvers.writes_file), sci(n) + " trajectory samples of the real-time run");
+    if (c.water) {
+      const HeightFieldOptions& f = c.water->field;
+      const double cells = static_cast<double>(f.nx) * f.ny;
+      const double padded = static_cast<double>(f.nx + 2) * (f.ny + 2);
+      const double water_steps = std::ceil(o.t_max_s / f.dt_s);
+      e.add_work(cells * water_steps, kMaxCellUpdates,
+                 "cell updates of the scene's water (" + sci(cells) + " cells × t_max_s / water.dt_s = " + sci(water_steps) +
+                     " steps)");
+      e.add_memory((3 * padded + cells) * kDouble, "the water's " + std::to_string(f.nx) + " x " + std::to_string(f.ny) + " field");
+    }
+  }
+  if (solvers.reference) {
+    const ReferenceOptions& o = c.reference;
+    const double steps = static_cast<double>(o.max_steps);
+    e.add_work(steps * triangles, kMaxTriangleEvaluations,
+               "triangle evaluations of the reference ([reference] max_steps = " + sci(steps) + " × " + sci(triangles) +
+                   " triangles)");
+    const double n = samples(o.t_max_s, o.output_dt_s, steps);
+    e.add_memory(n * sample_bytes(solvers.writes_file) + steps * kDouble, sci(n) + " trajectory samples of the reference");
+  }
+  return e;
+}
+
+ResourceEstimate estimate_wave(const WaveCase& c) {
+  ResourceEstimate e;
+  const HeightFieldOptions& w = c.water;
+  const double cells = static_cast<double>(w.nx) * w.ny;
+  const bool periodic = w.boundary == Boundary::periodic;
+  // Initial and final surfaces, the field's two levels and the Laplacian of its start; with the
+  // reference: FFTW's real and half-complex buffers, the symbol, two transforms, its surface.
+  const double arrays = periodic ? 10.5 : 5;
+  e.add_memory(arrays * cells * kDouble, sci(arrays) + " arrays of " + std::to_string(w.nx) + " x " + std::to_string(w.ny) +
+                                             " cells" + (periodic ? ", the spectral reference included" : ""));
+  const double steps = static_cast<double>(c.steps());
+  e.add_work(cells * steps, kMaxCellUpdates, "cell updates (" + sci(cells) + " cells × " + sci(steps) + " steps)");
+  return e;
+}
+
+ResourceEstimate estimate_sweep(const ResourceEstimate& heaviest_throw, double throws, double row_bytes, double threads) {
+  ResourceEstimate e;
+  e.add_memory(throws * row_bytes, "the table of " + sci(throws) + " throws");
+  e.add_memory(threads * heaviest_throw.memory_bytes, sci(threads) + " throws at once");
+  for (const auto& w : heaviest_throw.work) {
+    e.add_work(w.count, w.limit, w.what + " in the heaviest throw of the design");
+    e.add_work(throws * w.count, kSweepWorkFactor * w.limit, "worst-case " + w.what.substr(0, w.what.find(" (")) + " in all (" +
+                                                                  sci(throws) + " throws × " + sci(w.count) + ")");
+  }
+  return e;
+}
+
+ResourceEstimate estimate_regress(const std::vector<BounceSweepSpec>& sweeps) {
+  ResourceEstimate e;
+  double total = 0, throws = 0;
+  for (const auto& s : sweeps) {
+    const double triangles = static_cast<double>(s.base.stone.body_mesh.triangles.size());
+    const double per_throw = s.solver.kind == SolverKind::realtime
+                                 ? realtime_steps(s.solver.realtime) * rhs_per_step(s.solver.realtime.scheme) * triangles
+                                 : static_cast<double>(s.solver.reference.max_steps) * triangles;
+    double widest = 0;
+    for (std::size_t i = 1; i < s.values.size(); ++i) widest = std::max(widest, s.values[i] - s.values[i - 1]);
+    const double halvings = widest > s.threshold_tolerance ? std::ceil(std::log2(widest / s.threshold_tolerance)) : 0;
+    const double thresholds = std::min<double>(s.values.size() - 1, s.max_thresholds);
+    const double n = static_cast<double>(s.values.size()) + thresholds * halvings;
+    e.add_work(per_throw, kMaxTriangleEvaluations, "triangle evaluations in one throw of baseline " + s.name);
+    throws += n;
+    total += n * per_throw;
+  }
+  e.add_work(total, kMaxRegressTriangleEvaluations,
+             "triangle evaluations in all (" + sci(throws) + " throws at most, grids and bisections)");
+  return e;
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,45 @@
+#pragma once
+// Estimates, from a validated case, of the memory a command will hold and the work it will do, and
+// the documented limits they are held to (cases/README.md, "Limits"; tools/io/resource_limits.hpp
+// refuses what exceeds them). Estimates are worst cases known before any work:
+//  * a real-time throw takes at most t_max_s / contact_dt_s steps (every step in contact), each of
+//    (1, 2 or 4 right-hand sides by scheme) × the stone's triangles; a reference throw at most
+//    [reference] max_steps steps of one right-hand side each;
+//  * its trajectory holds a sample per output_dt_s (every step with output_dt_s = 0);
+//  * a height field holds about 5 arrays of its cells, 10.5 with the spectral reference (FFTW
+//    buffers, transforms, the reference surface); a wave case steps cells × ⌈t_end/Δt⌉.
+#include <string>
+#include <vector>
+
+#include "tools/io/resource_limits.hpp"
+#include "tools/scene/stone_case.hpp"
+#include "tools/scene/wave_case.hpp"
+#include "verification/stones/bounce_baseline.hpp"
+
+namespace stoneskip {
+
+// Worst-case triangle evaluations (right-hand sides × triangles) of one throw: about 80 ns each
+// (measured, one core), so 2e9 is under three minutes even if every step were in contact.
+constexpr double kMaxTriangleEvaluations = 2e9;
+// Height-field cell updates of a wave run or of a scene's water (0.6–0.9 G/s measured: about a minute).
+constexpr double kMaxCellUpdates = 5e10;
+// Worst-case triangle evaluations of a whole `stoneskip regress` (every throw of every baseline).
+constexpr double kMaxRegressTriangleEvaluations = 1e11;
+
+struct RunSolvers {
+  bool realtime = true;
+  bool reference = false;
+  bool writes_file = false;  // --out: the trajectory is also held as a table
+};
+
+ResourceEstimate estimate_run(const StoneCase& c, const RunSolvers& solvers);
+ResourceEstimate estimate_wave(const WaveCase& c);
+// A sweep: every throw held to the one-throw limits at the heaviest case the design's corners give
+// (SweepCases::heaviest_throw), all throws together to kSweepWorkFactor times them; its table in
+// memory (throws × row_bytes) beside one throw's memory per compute thread.
+constexpr double kSweepWorkFactor = 5000;
+ResourceEstimate estimate_sweep(const ResourceEstimate& heaviest_throw, double throws, double row_bytes, double threads);
+
+ResourceEstimate estimate_regress(const std::vector<BounceSweepSpec>& sweeps);
+
+}  // namespace stoneskip

@@ -1,0 +1,47 @@
+// The bisection of a bounce-count threshold always ends (issue 10, item 2): with a tolerance below
+// the spacing of doubles (1e-300) the midpoint rounds onto an end and main looped forever; now the
+// bracket stops when no double lies strictly between its ends. Oracle: IEEE 754 — the stopped
+// bracket's ends are neighbouring doubles (std::nextafter of one is the other), and each end
+// still has the count the threshold says.
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+
+#include "verification/stones/bounce_sweep.hpp"
+#include "verification/stones/convergence_throw.hpp"
+
+namespace stoneskip {
+namespace {
+
+BOOST_AUTO_TEST_SUITE(bounce_sweep)
+
+BOOST_AUTO_TEST_CASE(a_tolerance_below_the_double_spacing_ends_at_neighbouring_doubles,
+                     *boost::unit_test::timeout(120)) {
+  BounceSweepSpec s;
+  s.name = "tiny_tolerance";
+  s.base = convergence_throw();
+  s.parameter = SweepParameter::spin_rev_s;
+  s.values = {0.0, 60.0};
+  RealtimeOptions o = s.base.realtime;
+  o.dt_s = 1e-3;
+  o.contact_dt_s = 1e-5;
+  o.t_max_s = 0.12;  // the first contact (53–96 ms) and the flight after it
+  s.solver = realtime_choice(o);
+  s.threshold_tolerance = 1e-300;
+  const auto r = run_bounce_sweeps({s}, ParallelOptions{1, "", {}});
+  BOOST_REQUIRE(r.at(0).counts.size() == 2u);
+  BOOST_REQUIRE_MESSAGE(r[0].counts[0] != r[0].counts[1], "the grid must straddle a threshold");
+  BOOST_REQUIRE(r[0].thresholds.size() == 1u);
+  const CountThreshold& t = r[0].thresholds[0];
+  BOOST_TEST(t.bisected);
+  BOOST_TEST(std::nextafter(t.lo, INFINITY) == t.hi);
+  BOOST_TEST(t.lo > 0.0);
+  BOOST_TEST(t.hi < 60.0);
+  // About 52 + log2(60 / |t|) halvings reach neighbouring doubles: the runs are bounded by that.
+  BOOST_TEST(r[0].runs <= 2 + 64);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace
+}  // namespace stoneskip
