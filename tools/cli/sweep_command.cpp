@@ -77,7 +77,7 @@ std::string describe(const SweepFile& s, const SweepCases& cases) {
 ThrowEvaluator make_evaluator(const SweepFile& sweep, const SweepCases& cases, const ThrowRecord& record) {
   return [&sweep, &cases, &record](std::uint64_t i, const ThrowSite& site, RowBatch& out) {
     const std::vector<double> point = sweep.design.point(i);
-    ThrowCost cost;
+    SweepThrowCost cost;
     cost.rank = site.rank;
     cost.thread = site.thread;
     cost.start_unix_s = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();

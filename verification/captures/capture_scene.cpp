@@ -162,7 +162,7 @@ void compare_contacts(CaptureSceneComparison& out) {
   const std::size_t n = std::min(sc.size(), rc.size());
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t i = 0; i < n; ++i) {
-    ContactComparison c;
+    SceneContactComparison c;
     c.index = static_cast<int>(i + 1);
     c.scene_start_s = sc[i].start_s;
     c.scene_end_s = sc[i].end_s;

@@ -79,7 +79,7 @@ DraughtField trajectory_draught(const Mesh& body_mesh, const HeightFieldOptions&
 std::vector<double> prescribed_forced_leapfrog(const HeightFieldOptions& field, const std::vector<double>& initial_m,
                                                const DraughtField& draught, int samples_per_step, long steps);
 
-struct ContactComparison {
+struct SceneContactComparison {
   int index = 0;                          // 1-based
   double scene_start_s = 0, scene_end_s = 0;
   double still_start_s = 0, still_end_s = 0;  // the stepper on still water (NaN when it has fewer contacts)
@@ -110,7 +110,7 @@ struct CaptureSceneComparison {
   SceneSummary scene;
   ThrowResult still_water;                // the scene's stepper on still water
   ThrowResult reference;                  // CVODE, still water
-  std::vector<ContactComparison> contacts;  // the first min(scene, reference) contacts
+  std::vector<SceneContactComparison> contacts;  // the first min(scene, reference) contacts
   double max_start_difference_s = 0;      // over those: |scene − reference| contact start …
   double max_end_difference_s = 0;        // … and end
   double still_max_start_difference_s = 0;  // |still water − reference| over the contacts both have

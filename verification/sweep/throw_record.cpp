@@ -134,7 +134,7 @@ ThrowRecord::ThrowRecord(std::vector<std::string> varied_keys, SweepSolvers solv
 bool ThrowRecord::is_cost_column(std::size_t c) const { return columns_.at(c).rfind(kCostPrefix, 0) == 0; }
 
 std::vector<double> ThrowRecord::row(std::uint64_t throw_index, const std::vector<double>& point, const ThrowResult* rt,
-                                     const ThrowResult* ref, const ThrowCost& cost, std::vector<ThrowNote>& notes) const {
+                                     const ThrowResult* ref, const SweepThrowCost& cost, std::vector<ThrowNote>& notes) const {
   std::vector<double> r;
   r.reserve(columns_.size());
   r.push_back(static_cast<double>(throw_index));
@@ -157,7 +157,7 @@ std::vector<double> ThrowRecord::row(std::uint64_t throw_index, const std::vecto
 }
 
 std::vector<double> ThrowRecord::not_run_row(std::uint64_t throw_index, const std::vector<double>& point,
-                                             const ThrowCost& cost) const {
+                                             const SweepThrowCost& cost) const {
   std::vector<double> r(columns_.size(), kNaN);
   r[0] = static_cast<double>(throw_index);
   for (std::size_t k = 0; k < point.size(); ++k) r[1 + k] = point[k];

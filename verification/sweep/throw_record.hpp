@@ -46,7 +46,7 @@ double outcome_code(Outcome o);
 bool is_outcome_column(const std::string& column);
 
 // Where a throw ran and what it cost (not part of the result proper).
-struct ThrowCost {
+struct SweepThrowCost {
   double setup_wall_s = 0;
   double realtime_cpu_s = 0, reference_cpu_s = 0;
   int rank = 0, thread = 0;
@@ -70,9 +70,9 @@ class ThrowRecord {
   // The row of a solved throw (rt / ref null when that solver did not run); appends notes for
   // failed solves.
   std::vector<double> row(std::uint64_t throw_index, const std::vector<double>& point, const ThrowResult* rt,
-                          const ThrowResult* ref, const ThrowCost& cost, std::vector<ThrowNote>& notes) const;
+                          const ThrowResult* ref, const SweepThrowCost& cost, std::vector<ThrowNote>& notes) const;
   // The row of a throw whose case could not be built: outcome kOutcomeNotRun, NaN elsewhere.
-  std::vector<double> not_run_row(std::uint64_t throw_index, const std::vector<double>& point, const ThrowCost& cost) const;
+  std::vector<double> not_run_row(std::uint64_t throw_index, const std::vector<double>& point, const SweepThrowCost& cost) const;
 
  private:
   std::vector<std::string> varied_;

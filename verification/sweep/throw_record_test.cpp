@@ -48,7 +48,7 @@ BOOST_AUTO_TEST_CASE(a_row_holds_what_its_columns_name) {
   const ThrowRecord rec({"throw.speed_m_s", "throw.spin_rev_s"}, SweepSolvers::both);
   const ThrowResult rt = result(3, 12.0, {{0.10, 0.11}, {0.30, 0.32}, {0.5, 0.6}});
   const ThrowResult ref = result(2, 10.5, {{0.1002, 0.1101}, {0.31, 0.33}});
-  ThrowCost cost;
+  SweepThrowCost cost;
   cost.rank = 2;
   cost.thread = 1;
   cost.setup_wall_s = 3e-5;
@@ -92,7 +92,7 @@ BOOST_AUTO_TEST_CASE(only_cost_columns_depend_on_where_a_throw_ran) {
   const ThrowRecord rec({"a"}, SweepSolvers::realtime);
   ThrowResult r1 = result(1, 2.0, {{0.1, 0.2}}), r2 = r1;
   r2.stats.cpu_s = 0.5;  // the solver's own wall clock is a cost
-  ThrowCost c1, c2;
+  SweepThrowCost c1, c2;
   c2.rank = 5;
   c2.thread = 3;
   c2.start_unix_s = 1.7e9;

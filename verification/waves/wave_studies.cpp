@@ -433,7 +433,7 @@ Record wave_stability_findings(const WaveStudiesOptions& o, const ProgressFactor
 
 Record wave_speed_findings(const WaveStudiesOptions& o, const ProgressFactory& progress) {
   const WaveSpeedOptions& so = o.speed;
-  WorkPrecisionOptions wo = so.work;
+  WaveWorkPrecisionOptions wo = so.work;
   Record r;
   store_problem(r.child("problem"), wo.problem);
   r.set_table("grids", value_list(to_doubles(wo.grids)));
@@ -450,11 +450,11 @@ Record wave_speed_findings(const WaveStudiesOptions& o, const ProgressFactory& p
     total += work_precision_work(wo);
   }
   auto ticker = start_progress(progress, "waves: speed against error", total);
-  std::vector<std::pair<std::string, std::vector<WorkPoint>>> all;
+  std::vector<std::pair<std::string, std::vector<WaveWorkPoint>>> all;
   std::vector<bool> consistent;
   for (const auto& st : stencils_of(o)) {
     wo.stability_limit = stability_limit(st, 0.0);
-    const std::vector<WorkPoint> pts = run_work_precision(st, wo, ticker.get());
+    const std::vector<WaveWorkPoint> pts = run_work_precision(st, wo, ticker.get());
     all.emplace_back(st.name, pts);
     consistent.push_back(analyse_consistency(st, o.consistency).consistent);
     Record& s = r.child(st.name);

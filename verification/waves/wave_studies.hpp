@@ -46,7 +46,7 @@ struct WaveStabilityOptions {
 };
 
 struct WaveSpeedOptions {
-  WorkPrecisionOptions work;             // problem, grids, σ fractions (the limit is set per stencil)
+  WaveWorkPrecisionOptions work;             // problem, grids, σ fractions (the limit is set per stencil)
   std::vector<double> targets_m{1e-4, 1e-5, 1e-6};  // errors whose cost is compared
   std::string baseline_stencil = "five_point";
   double material_gain = 1.5;            // a speed-up below this is "not material" (timing noise on a shared machine)

@@ -13,7 +13,7 @@ long steps_for(const WaveProblem& p, int n, double sigma) {
 }
 }  // namespace
 
-std::size_t work_precision_work(const WorkPrecisionOptions& o) {
+std::size_t work_precision_work(const WaveWorkPrecisionOptions& o) {
   std::size_t w = 0;
   for (int n : o.grids)
     for (double f : o.sigma_fractions)
@@ -21,8 +21,8 @@ std::size_t work_precision_work(const WorkPrecisionOptions& o) {
   return w;
 }
 
-std::vector<WorkPoint> run_work_precision(const Stencil& stencil, const WorkPrecisionOptions& o, ProgressTicker* progress) {
-  std::vector<WorkPoint> out;
+std::vector<WaveWorkPoint> run_work_precision(const Stencil& stencil, const WaveWorkPrecisionOptions& o, ProgressTicker* progress) {
+  std::vector<WaveWorkPoint> out;
   for (int n : o.grids) {
     auto cont = solve_spectral(o.problem, n, SpectralSymbol::continuum);
     for (double f : o.sigma_fractions) {
@@ -37,7 +37,7 @@ std::vector<WorkPoint> run_work_precision(const Stencil& stencil, const WorkPrec
         cpu += solve_leapfrog(o.problem, stencil, n, steps).cpu_s;
         ++reps;
       }
-      WorkPoint w;
+      WaveWorkPoint w;
       w.n = n;
       w.steps = steps;
       w.sigma = o.problem.wave_speed_m_s * r.dt_s / (o.problem.length_m / n);
@@ -51,7 +51,7 @@ std::vector<WorkPoint> run_work_precision(const Stencil& stencil, const WorkPrec
   return out;
 }
 
-double cpu_to_reach(const std::vector<WorkPoint>& points, double target_m) {
+double cpu_to_reach(const std::vector<WaveWorkPoint>& points, double target_m) {
   double best = std::numeric_limits<double>::quiet_NaN();
   for (const auto& p : points)
     if (p.l2_m <= target_m && (std::isnan(best) || p.cpu_s < best)) best = p.cpu_s;

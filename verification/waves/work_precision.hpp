@@ -13,7 +13,7 @@ namespace stoneskip {
 
 
 
-struct WorkPoint {
+struct WaveWorkPoint {
   int n = 0;
   double sigma = 0;
   long steps = 0;
@@ -21,7 +21,7 @@ struct WorkPoint {
   double cpu_s = 0;
 };
 
-struct WorkPrecisionOptions {
+struct WaveWorkPrecisionOptions {
   WaveProblem problem;
   std::vector<int> grids{32, 48, 64, 96, 128, 192, 256, 384};
   std::vector<double> sigma_fractions{0.3, 0.6, 0.95};  // of the stencil's own stability limit
@@ -29,11 +29,11 @@ struct WorkPrecisionOptions {
   double min_cpu_s = 0.02;       // short runs are repeated until this much CPU is spent
 };
 
-std::vector<WorkPoint> run_work_precision(const Stencil& stencil, const WorkPrecisionOptions& options,
+std::vector<WaveWorkPoint> run_work_precision(const Stencil& stencil, const WaveWorkPrecisionOptions& options,
                                           ProgressTicker* progress = nullptr);
-std::size_t work_precision_work(const WorkPrecisionOptions& options);
+std::size_t work_precision_work(const WaveWorkPrecisionOptions& options);
 
 // The least CPU time among points whose RMS error is at most `target_m` (NaN if none reaches it).
-double cpu_to_reach(const std::vector<WorkPoint>& points, double target_m);
+double cpu_to_reach(const std::vector<WaveWorkPoint>& points, double target_m);
 
 }  // namespace stoneskip
