@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev libsundials-dev libfftw3-dev libhdf5-dev
   libboost-test-dev libtoml11-dev libcli11-dev nlohmann-json3-dev libbenchmark-dev
   gnuplot-nox
+  ffmpeg                       # `stoneskip scene --movie` assembles the frames; ffprobe checks them in the tests
   openmpi-bin libopenmpi-dev   # `mpirun stoneskip sweep` (optional at build time: CMake says if absent)
 )
 
