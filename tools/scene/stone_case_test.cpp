@@ -4,27 +4,14 @@
 #include <boost/test/unit_test.hpp>
 
 #include "tools/io/input_error.hpp"
+#include "tools/scene/documented_keys.hpp"
 #include "tools/scene/stone_case.hpp"
 
 using namespace stoneskip;
 
 namespace {
 
-const char* kCase = R"([stone]
-shape = "prism"
-radius_m = 0.03
-thickness_m = 0.008
-density_kg_m3 = 2500.0
-[throw]
-speed_m_s = 8.0
-path_angle_deg = 10.0
-attack_angle_deg = 10.0
-height_m = 0.1
-[solver]
-dt_s = 1.0e-3
-contact_dt_s = 1.0e-5
-t_max_s = 1.0
-)";
+const char* const kCase = stoneskip::test::kPlainStoneCase;  // the paper's prism, 1 s (tools/scene/documented_keys.hpp)
 
 StoneCase parse(const std::vector<std::string>& overrides) {
   return stone_case_from_document(parse_toml_text(kCase, "law.toml", overrides));
