@@ -26,23 +26,7 @@ namespace {
 
 constexpr double kMaxWall_s = 60;  // the issue's bound for any of these commands
 
-const char* kGood = R"([stone]
-shape = "prism"
-radius_m = 0.03
-thickness_m = 0.008
-segments = 11
-density_kg_m3 = 2500.0
-[throw]
-speed_m_s = 8.0
-path_angle_deg = 10.0
-attack_angle_deg = 10.0
-spin_rev_s = 10.0
-height_m = 0.1
-[solver]
-dt_s = 1.0e-3
-contact_dt_s = 1.0e-5
-t_max_s = 3.0
-)";
+const char* const kGood = stoneskip::test::kGoodStoneCase;
 
 struct Scratch {
   fs::path dir = fs::temp_directory_path() / ("stoneskip_hostile_" + std::to_string(::getpid()));

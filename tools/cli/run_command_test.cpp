@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "tools/cli/test_support.hpp"
 #include "tools/io/hdf5_file.hpp"
 
 namespace fs = std::filesystem;
@@ -52,23 +53,7 @@ void write(const fs::path& p, const std::string& text) {
   f << text;
 }
 
-const char* kGoodCase = R"([stone]
-shape = "prism"
-radius_m = 0.03
-thickness_m = 0.008
-segments = 11
-density_kg_m3 = 2500.0
-[throw]
-speed_m_s = 8.0
-path_angle_deg = 10.0
-attack_angle_deg = 10.0
-spin_rev_s = 10.0
-height_m = 0.1
-[solver]
-dt_s = 1.0e-3
-contact_dt_s = 1.0e-5
-t_max_s = 3.0
-)";
+const char* const kGoodCase = stoneskip::test::kGoodStoneCase;
 
 // Asserts a bad-input run: exit 2, a single line on stderr that contains every fragment.
 void expect_bad_input(const Run& r, const std::vector<std::string>& fragments) {

@@ -15,6 +15,25 @@
 
 namespace stoneskip::test {
 
+// A good stone case: the paper's prism at 8 m/s with 10 rev/s of spin, 3 s.
+inline constexpr const char* kGoodStoneCase = R"([stone]
+shape = "prism"
+radius_m = 0.03
+thickness_m = 0.008
+segments = 11
+density_kg_m3 = 2500.0
+[throw]
+speed_m_s = 8.0
+path_angle_deg = 10.0
+attack_angle_deg = 10.0
+spin_rev_s = 10.0
+height_m = 0.1
+[solver]
+dt_s = 1.0e-3
+contact_dt_s = 1.0e-5
+t_max_s = 3.0
+)";
+
 struct Ran {
   int status = -1;
   std::string out;

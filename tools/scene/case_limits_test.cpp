@@ -91,20 +91,7 @@ BOOST_AUTO_TEST_CASE(an_unstable_scene_water_is_refused_naming_its_step) {
   // Oracle: the nine-point isotropic stencil's von Neumann limit σ = √3/2 at μΔt = 0 (README,
   // "The water surface"): the swell's 2 cm cells and c = 1.25 m/s allow Δt up to 0.866·0.02/1.25
   // = 0.01386 s. At 0.05 s (σ = 3.1) main ran the throw on a blown-up surface and reported a sinking.
-  const std::string text = std::string(kCase) + R"(
-[water]
-stencil = "nine_point_isotropic"
-nx = 50
-ny = 50
-cell_m = 0.02
-wave_speed_m_s = 1.25
-boundary = "reflecting"
-dt_s = 0.005
-[water.initial]
-kind = "plane_wave"
-amplitude_m = 0.02
-wavelength_m = 1.0
-)";
+  const std::string text = std::string(kCase) + stoneskip::test::kPlainWater;
   BOOST_TEST(error_of(text, {}) == "");
   const std::string e = error_of(text, {"water.dt_s=0.05"});
   BOOST_TEST(e.find("c.toml: --set water.dt_s: the water would be unstable: sigma = c dt_s / cell_m = 3.125") == 0u, e);

@@ -45,6 +45,22 @@ contact_dt_s = 1.0e-5
 t_max_s = 1.0
 )";
 
+// A plain live water for it: a plane wave on 50 × 50 cells, stable (σ = c dt / d = 0.3125).
+inline constexpr const char* kPlainWater = R"(
+[water]
+stencil = "nine_point_isotropic"
+nx = 50
+ny = 50
+cell_m = 0.02
+wave_speed_m_s = 1.25
+boundary = "reflecting"
+dt_s = 0.005
+[water.initial]
+kind = "plane_wave"
+amplitude_m = 0.02
+wavelength_m = 1.0
+)";
+
 struct BadValue {
   std::string text;  // TOML
   std::string why;   // "wrong type", "below the bound", ...

@@ -34,20 +34,7 @@ constexpr double kMaxSecondsPerValue = 1.0;
 
 const char* const kStone = stoneskip::test::kPlainStoneCase;
 
-const char* kWater = R"(
-[water]
-stencil = "nine_point_isotropic"
-nx = 50
-ny = 50
-cell_m = 0.02
-wave_speed_m_s = 1.25
-boundary = "reflecting"
-dt_s = 0.005
-[water.initial]
-kind = "plane_wave"
-amplitude_m = 0.02
-wavelength_m = 1.0
-)";
+const char* const kWater = stoneskip::test::kPlainWater;
 
 const char* kWave = R"([water]
 stencil = "five_point"

@@ -59,9 +59,7 @@ SceneStudyFile load_scene_study_file(const std::string& path, const std::vector<
   SceneStudiesOptions& o = f.options;
   {
     TomlTable s = top.table("study");
-    const std::string kind = s.string("kind");
-    if (kind != "scene") s.fail("kind", "'" + kind + "' is not a scene study (kind = \"scene\")");
-    o.preset = s.string("preset");
+    o.preset = study_preset(s, "scene");
     const auto files = s.strings("cases");
     if (files.empty()) s.fail("cases", "must name at least one scene case");
     for (const auto& file : files) {

@@ -7,6 +7,7 @@
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/scene/case_problem.hpp"
+#include "tools/scene/study_keys.hpp"
 
 namespace stoneskip {
 
@@ -14,32 +15,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<double> positive_list(TomlTable& t, const std::string& key, const std::vector<double>& fallback) {
-  auto v = t.maybe_numbers(key);
-  if (!v) return fallback;
-  if (v->empty()) t.fail(key, "must not be empty");
-  for (double x : *v)
-    if (!(x > 0)) t.fail(key, "every value must be > 0");
-  return *v;
-}
-
-std::vector<double> any_list(TomlTable& t, const std::string& key, const std::vector<double>& fallback) {
-  auto v = t.maybe_numbers(key);
-  if (!v) return fallback;
-  if (v->empty()) t.fail(key, "must not be empty");
-  return *v;
-}
-
-double positive(TomlTable& t, const std::string& key, double fallback) {
-  const double v = t.number_or(key, fallback);
-  t.require_positive(key, v);
-  return v;
-}
-
 int count(TomlTable& t, const std::string& key, long long fallback, long long lo, long long hi) {
-  const long long v = t.integer_or(key, fallback);
-  if (v < lo || v > hi) t.fail(key, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  return static_cast<int>(v);
+  return static_cast<int>(count_in(t, key, fallback, lo, hi));
 }
 
 Scheme scheme_of(TomlTable& t, const std::string& key, const std::string& name) {
@@ -371,9 +348,7 @@ StoneStudyFile load_stone_study_file(const std::string& path, const std::vector<
   StoneStudiesOptions& o = f.options;
   {
     TomlTable s = top.table("study");
-    const std::string kind = s.string("kind");
-    if (kind != "stones") s.fail("kind", "'" + kind + "' is not a stones study (kind = \"stones\")");
-    o.preset = s.string("preset");
+    o.preset = study_preset(s, "stones");
     s.finish();
   }
   const fs::path dir = fs::path(path).parent_path();

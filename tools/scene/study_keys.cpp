@@ -28,4 +28,10 @@ long long count_in(TomlTable& t, const std::string& key, long long fallback, lon
   return v;
 }
 
+std::string study_preset(TomlTable& study, const std::string& kind) {
+  const std::string k = study.string("kind");
+  if (k != kind) study.fail("kind", "'" + k + "' is not a " + kind + " study (kind = \"" + kind + "\")");
+  return study.string("preset");
+}
+
 }  // namespace stoneskip

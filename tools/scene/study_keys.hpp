@@ -15,5 +15,8 @@ std::vector<double> any_list(TomlTable& t, const std::string& key, const std::ve
 double positive(TomlTable& t, const std::string& key, double fallback);
 // A whole number in [lo, hi]; `fallback` if absent.
 long long count_in(TomlTable& t, const std::string& key, long long fallback, long long lo, long long hi);
+// The [study] table's kind, which must be `kind` ("waves", "stones", "scene"), and its preset;
+// the table is left open for the study's own keys.
+std::string study_preset(TomlTable& study, const std::string& kind);
 
 }  // namespace stoneskip

@@ -61,9 +61,7 @@ WaveStudyFile load_wave_study_file(const std::string& path, const std::vector<st
   WaveStudiesOptions& o = f.options;
   {
     TomlTable s = top.table("study");
-    const std::string kind = s.string("kind");
-    if (kind != "waves") s.fail("kind", "'" + kind + "' is not a waves study (kind = \"waves\")");
-    o.preset = s.string("preset");
+    o.preset = study_preset(s, "waves");
     if (auto names = s.maybe_strings("stencils")) {
       for (const auto& n : *names)
         if (!is_stencil_name(n))
