@@ -20,13 +20,13 @@ const char* to_string(WaterLaw w) {
   switch (w) {
     case WaterLaw::newtonian: return "newtonian";
     case WaterLaw::planing: return "planing";
-    case WaterLaw::lift_drag: return "lift_drag";
+    case WaterLaw::nagahiro_hayakawa: return "nagahiro_hayakawa";
   }
   return "unknown";
 }
 
 bool parse_water_law(const std::string& s, WaterLaw& out) {
-  for (WaterLaw w : {WaterLaw::newtonian, WaterLaw::planing, WaterLaw::lift_drag}) {
+  for (WaterLaw w : {WaterLaw::newtonian, WaterLaw::planing, WaterLaw::nagahiro_hayakawa}) {
     if (s == to_string(w)) {
       out = w;
       return true;
@@ -38,10 +38,40 @@ bool parse_water_law(const std::string& s, WaterLaw& out) {
 double published_water_coefficient(WaterLaw w) {
   switch (w) {
     case WaterLaw::newtonian: return 1.0;  // Lee & Baek 2013 Eq. 2 has no coefficient
-    case WaterLaw::planing: return 0.5;    // ½ C, C = 1 (Truscott, Belden & Hurd 2014: C_L = ½ for a disk)
-    case WaterLaw::lift_drag: return 0.7;  // ½ C_D, C_D = 1.4 (Nagahiro & Hayakawa 2005, fitted to SPH)
+    case WaterLaw::planing: return 0.5;    // C_L = ½ (Rosellini et al. 2005; Truscott, Belden & Hurd 2014)
+    case WaterLaw::nagahiro_hayakawa: return 0.7;  // ½ C_D, C_D = 1.4 (Nagahiro & Hayakawa 2005, fitted to SPH)
   }
   return 1.0;
+}
+
+const char* to_string(PressureDistribution d) {
+  switch (d) {
+    case PressureDistribution::uniform: return "uniform";
+    case PressureDistribution::savitsky: return "savitsky";
+    case PressureDistribution::savitsky_wagner: return "savitsky_wagner";
+  }
+  return "unknown";
+}
+
+bool parse_pressure_distribution(const std::string& s, PressureDistribution& out) {
+  for (PressureDistribution d :
+       {PressureDistribution::uniform, PressureDistribution::savitsky, PressureDistribution::savitsky_wagner}) {
+    if (s == to_string(d)) {
+      out = d;
+      return true;
+    }
+  }
+  return false;
+}
+
+const char* to_string(Attitude a) { return a == Attitude::held ? "held" : "free"; }
+
+bool parse_attitude(const std::string& s, Attitude& out) {
+  if (s == "free" || s == "held") {
+    out = s == "held" ? Attitude::held : Attitude::free;
+    return true;
+  }
+  return false;
 }
 
 void set_water_law(Environment& env, WaterLaw law) {
@@ -54,6 +84,10 @@ std::string environment_problem(const Environment& env) {
     return std::string("water law \"") + to_string(env.water_law) +
            "\" with the paper convention: the paper convention is Lee & Baek's Eq. 1-3 as printed, whose law is "
            "newtonian; the other laws exist in the physical convention only";
+  if (env.convention == Convention::paper && env.pressure_distribution != PressureDistribution::uniform)
+    return std::string("pressure distribution \"") + to_string(env.pressure_distribution) +
+           "\" with the paper convention: Lee & Baek's Eq. 2-3 act at each wetted face's centroid; the "
+           "distributions exist in the physical convention only";
   // NaN passes on purpose: the solvers meet it in the right-hand side and fail there, saying where.
   if (env.water_density_kg_m3 < 0) return "water density must be >= 0";
   if (env.air_density_kg_m3 < 0) return "air density must be >= 0";

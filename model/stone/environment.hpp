@@ -11,22 +11,47 @@ enum class Convention { physical, paper };
 const char* to_string(Convention c);
 bool parse_convention(const std::string& s, Convention& out);
 
-// The force of the water on one wetted triangle in the physical convention
-// (model/stone/water_laws.hpp has each equation beside its source):
-//   newtonian: F_i = −C_w ρ_w u_i² S_i n_i                 (Lee & Baek 2013 Eq. 2; the default)
-//   planing:   F_i = −C_w ρ_w u_i |v_i| S_i n_i            (Clanet, Hersen & Bocquet 2004; Rosellini et al. 2005)
-//   lift_drag: F_i = ½ ρ_w |v_i|² S_i (C_L(θ_i) e_L − C_D(θ_i) v̂_i)   (Nagahiro & Hayakawa 2005)
+// The pressure of the water on a wetted triangle advancing with normal velocity u_i > 0, in the
+// physical convention (model/stone/water_laws.hpp has each equation beside its source); the face
+// force is F_i = −p_i S_i n_i:
+//   newtonian:          p_i = C_w ρ_w u_i²        (Lee & Baek 2013 Eq. 2; C_w = 1; the default)
+//   planing:            p_i = C_w ρ_w U u_i       (Rosellini et al. 2005 eq. 4.2; C_w = C_L = ½,
+//                                                  U = |v| the stone's own translational speed)
+//   nagahiro_hayakawa:  p_i = C_w ρ_w u_i²        (newtonian with ½ C_D, C_D = 1.4 fitted to SPH by
+//                                                  Nagahiro & Hayakawa 2005: C_w = 0.7)
 // The paper convention is the printed Eq. 2 only: another law with it is refused
 // (environment_problem), since no paper prints that combination.
-enum class WaterLaw { newtonian, planing, lift_drag };
+enum class WaterLaw { newtonian, planing, nagahiro_hayakawa };
 
 const char* to_string(WaterLaw w);
 bool parse_water_law(const std::string& s, WaterLaw& out);
 
 // C_w of each law as published (model/stone/water_laws.hpp says where each comes from):
-// newtonian 1 (Lee & Baek: no coefficient), planing ½ (½ C with C = 1), lift_drag 0.7 (½ C_D with
+// newtonian 1 (Lee & Baek: no coefficient), planing ½ (C_L = ½), nagahiro_hayakawa 0.7 (½ C_D with
 // Nagahiro & Hayakawa's C_D = 1.4).
 double published_water_coefficient(WaterLaw w);
+
+// Where a physical law's pressure acts on the wetted region (model/stone/pressure_distribution.hpp):
+//   uniform:          p_i over each clipped face (the centre of pressure is the wetted centroid);
+//   savitsky:         weighted along the stone's horizontal velocity so that the centre of pressure
+//                     lies 0.75 of the wetted length ahead of the trailing edge (Savitsky 1964);
+//   savitsky_wagner:  the same over the wetted region lengthened π/2 by the water rising ahead of
+//                     the stone (Wagner 1932).
+// Each keeps the law's total force. The paper convention is uniform only.
+enum class PressureDistribution { uniform, savitsky, savitsky_wagner };
+
+const char* to_string(PressureDistribution d);
+bool parse_pressure_distribution(const std::string& s, PressureDistribution& out);
+
+// The stone's attitude: free (the rigid body of spec §1.3) or held (a model reduction: the
+// orientation and angular momentum stay as thrown, the torques are discarded, translation is free:
+// the high-spin limit in which Clanet, Hersen & Bocquet 2004 and Rosellini et al. 2005 analyse
+// skipping, where gyroscopic stiffness keeps the attack angle constant). The faces still move with
+// the thrown ω.
+enum class Attitude { free, held };
+
+const char* to_string(Attitude a);
+bool parse_attitude(const std::string& s, Attitude& out);
 
 struct Environment {
   Convention convention = Convention::physical;
@@ -34,6 +59,8 @@ struct Environment {
   double water_density_kg_m3 = 1000.0;  // ρ_w
   double air_density_kg_m3 = 1.2;       // ρ_a
   double water_coefficient = 1.0;       // C_w of the water law (newtonian default: Lee & Baek's 1, ½ C_D with C_D = 2)
+  PressureDistribution pressure_distribution = PressureDistribution::uniform;
+  Attitude attitude = Attitude::free;
   double air_coefficient = 1.0;         // C_a
   double gravity_m_s2 = 9.81;           // along −z
 };
@@ -41,8 +68,8 @@ struct Environment {
 // Chooses a law together with its published C_w (set water_coefficient afterwards to depart from it).
 void set_water_law(Environment& env, WaterLaw law);
 
-// Empty when the environment can be used; else what is wrong, in words (a non-newtonian law in the
-// paper convention, a negative density, coefficient or gravity).
+// Empty when the environment can be used; else what is wrong, in words (a non-newtonian law or a
+// non-uniform pressure distribution in the paper convention, a negative density, coefficient or gravity).
 std::string environment_problem(const Environment& env);
 
 }  // namespace stoneskip

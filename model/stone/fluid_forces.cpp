@@ -2,18 +2,139 @@
 
 #include <vector>
 
+#include "model/stone/pressure_distribution.hpp"
 #include "model/stone/triangle_clip.hpp"
 #include "model/stone/water_laws.hpp"
 
 namespace stoneskip {
 
-WaterLoads water_loads(const Stone& stone, const Environment& env, const RigidState& s, const WaterSurface* surface) {
+namespace {
+
+// The law's pressure redistributed along the wetted length (model/stone/pressure_distribution.hpp):
+// on face i, p(x) = K p_i w(ξ(x)) over its wetted polygon (below the raised waterline for the
+// Wagner variant), with p_i the law evaluated at the face's centre of pressure x_i = ∫w x dA / ∫w dA
+// (so the face's power −K p_i W_i u(x_i) is never positive) and K such that Σ K p_i W_i is the law's
+// total force on the geometric wetted area. F_i = −K p_i W_i n_i acts at x_i.
+void add_distributed_loads(const Stone& stone, const Environment& env, const RigidState& s, const Mat3& R,
+                           const Vec3& omega, const std::vector<Vec3>& world, const std::vector<double>& depth,
+                           double law_total_N, WaterLoads& out) {
+  struct FaceLoad {
+    double weight_m2;
+    Vec3 centre_m;
+    double pressure_Pa;
+  };
+  thread_local std::vector<ClippedPolygon> polys;
+  thread_local std::vector<FaceLoad> faces;
+  const auto& tris = stone.body_mesh.triangles;
+  const double rise = waterline_rise_m(env.pressure_distribution, out.deepest_depth_m);
+  polys.resize(tris.size());
+  // The wetted length is that of the loaded region: faces advancing into the water (a receding
+  // trailing rim or a dry-side face under the raised waterline would lengthen it for nothing).
+  WettedSpanBuilder span_builder(s.velocity_m_s);
+  for (std::size_t i = 0; i < tris.size(); ++i) {
+    const auto& t = tris[i];
+    polys[i] = clip_submerged_polygon(world[t[0]], world[t[1]], world[t[2]], depth[t[0]] + rise, depth[t[1]] + rise,
+                                      depth[t[2]] + rise);
+    if (polys[i].count == 0) continue;
+    const ClippedArea c = area_of(polys[i]);
+    const Vec3 n = R * stone.face_normals_body[i];
+    // A face sliding in its own plane to round-off (u below 1e-9 of its speed) is not advancing.
+    const Vec3 vc = s.velocity_m_s + omega.cross(c.centroid_m - s.position_m);
+    if (c.area_m2 > 0 && vc.dot(n) > 1e-9 * vc.norm())
+      span_builder.add(polys[i]);
+    else
+      polys[i].count = 0;
+  }
+  const WettedSpan span = span_builder.span();
+  const double k = power_weight_exponent(kSavitskyCentreFraction);
+  const double U = s.velocity_m_s.norm();
+  faces.assign(tris.size(), FaceLoad{0, Vec3::Zero(), 0});
+  double distributed_N = 0;  // Σ p_i W_i
+  for (std::size_t i = 0; i < tris.size() && span.valid(); ++i) {
+    if (polys[i].count == 0) continue;
+    const WeightedIntegrals w = integrate_weight(polys[i], span, k);
+    if (!(w.weight_m2 > 0)) continue;
+    const Vec3 centre = w.moment_m3 / w.weight_m2;
+    const Vec3 n = R * stone.face_normals_body[i];
+    const double p = law_pressure_Pa(env, (s.velocity_m_s + omega.cross(centre - s.position_m)).dot(n), U);
+    if (p == 0) continue;  // a NaN pressure passes on: the solvers fail on it, saying where
+    faces[i] = {w.weight_m2, centre, p};
+    distributed_N += p * w.weight_m2;
+  }
+  if (distributed_N == 0 || !span.valid()) {
+    // No extent along a horizontal velocity (a stone dropped straight down, a single wet point):
+    // nothing to distribute along, so the pressure is uniform on each face.
+    Environment uniform = env;
+    uniform.pressure_distribution = PressureDistribution::uniform;
+    const WaterLoads u = water_loads_from_depths(stone, uniform, s, R, omega, world, depth);
+    out.force_N = u.force_N;
+    out.torque_N_m = u.torque_N_m;
+    return;
+  }
+  const double scale = law_total_N / distributed_N;  // K
+  for (std::size_t i = 0; i < tris.size(); ++i) {
+    if (faces[i].pressure_Pa == 0) continue;
+    const Vec3 F = -(scale * faces[i].pressure_Pa * faces[i].weight_m2) * (R * stone.face_normals_body[i]);
+    out.force_N += F;
+    out.torque_N_m += (faces[i].centre_m - s.position_m).cross(F);
+  }
+}
+
+}  // namespace
+
+WaterLoads water_loads_from_depths(const Stone& stone, const Environment& env, const RigidState& s, const Mat3& R,
+                                   const Vec3& omega, const std::vector<Vec3>& world, const std::vector<double>& depth) {
   WaterLoads out;
-  const auto& verts = stone.body_mesh.vertices;
-  const int nv = static_cast<int>(verts.size());
+  const int nv = static_cast<int>(world.size());
   out.vertex_count = nv;
+  double deepest = -1e300;
+  for (int k = 0; k < nv; ++k) {
+    deepest = std::max(deepest, depth[k]);
+    if (depth[k] > 0) ++out.submerged_vertices;
+  }
+  out.deepest_depth_m = deepest;
+  if (deepest <= 0) return out;
+
+  const bool paper = env.convention == Convention::paper;
+  const bool distributed = !paper && env.pressure_distribution != PressureDistribution::uniform;
+  const double U = s.velocity_m_s.norm();  // the planing law's speed (model/stone/water_laws.hpp)
+  double law_total_N = 0;                  // Σ p_i S_i of the law on the geometric wetted area
+  const auto& tris = stone.body_mesh.triangles;
+  for (std::size_t i = 0; i < tris.size(); ++i) {
+    const auto& t = tris[i];
+    const ClippedArea c = clip_submerged(world[t[0]], world[t[1]], world[t[2]], depth[t[0]], depth[t[1]], depth[t[2]]);
+    if (c.area_m2 <= 0) continue;
+    ++out.wet_triangles;
+    out.wetted_area_m2 += c.area_m2;
+    const Vec3 n = R * stone.face_normals_body[i];
+    const Vec3 r = c.centroid_m - s.position_m;  // lever arm (spec §1.4 step 3)
+    if (paper) {
+      // Lee & Baek 2013 Eq. 1 as printed (v + r × ω), Eq. 2 on every submerged face, Eq. 3 F × r.
+      const Vec3 F = printed_face_force_N(env, n, s.velocity_m_s + r.cross(omega), c.area_m2);
+      out.force_N += F;
+      out.torque_N_m += F.cross(r);
+      continue;
+    }
+    // Physical: v_i = v + ω × r_i; the law's pressure, zero unless the face advances into the water.
+    const double p = law_pressure_Pa(env, (s.velocity_m_s + omega.cross(r)).dot(n), U);
+    if (p == 0) continue;  // a NaN pressure passes on: the solvers fail on it, saying where
+    if (distributed) {
+      law_total_N += p * c.area_m2;
+      continue;
+    }
+    const Vec3 F = -(p * c.area_m2) * n;
+    out.force_N += F;
+    out.torque_N_m += r.cross(F);  // Eq. 3, physical order
+  }
+  if (distributed && law_total_N != 0) add_distributed_loads(stone, env, s, R, omega, world, depth, law_total_N, out);
+  return out;
+}
+
+WaterLoads water_loads(const Stone& stone, const Environment& env, const RigidState& s, const WaterSurface* surface) {
   // Still water: a stone whose bounding sphere is above z = 0 cannot touch it.
   if (!surface && s.position_m.z() - stone.bounding_radius_m > 0) {
+    WaterLoads out;
+    out.vertex_count = static_cast<int>(stone.body_mesh.vertices.size());
     out.deepest_depth_m = -(s.position_m.z() - stone.bounding_radius_m);
     return out;
   }
@@ -24,40 +145,16 @@ WaterLoads water_loads(const Stone& stone, const Environment& env, const RigidSt
   // reused between calls: no allocation in a step loop once they have grown.
   thread_local std::vector<Vec3> world;
   thread_local std::vector<double> depth;
+  const auto& verts = stone.body_mesh.vertices;
+  const int nv = static_cast<int>(verts.size());
   world.resize(nv);
   depth.resize(nv);
-  double deepest = -1e300;
   for (int k = 0; k < nv; ++k) {
     world[k] = s.position_m + R * verts[k];
     const double eta = surface ? surface->height_m(world[k].x(), world[k].y()) : 0.0;
     depth[k] = eta - world[k].z();
-    deepest = std::max(deepest, depth[k]);
-    if (depth[k] > 0) ++out.submerged_vertices;
   }
-  out.deepest_depth_m = deepest;
-  if (deepest <= 0) return out;
-
-  const bool paper = env.convention == Convention::paper;
-  const auto& tris = stone.body_mesh.triangles;
-  for (std::size_t i = 0; i < tris.size(); ++i) {
-    const auto& t = tris[i];
-    const ClippedArea c = clip_submerged(world[t[0]], world[t[1]], world[t[2]], depth[t[0]], depth[t[1]], depth[t[2]]);
-    if (c.area_m2 <= 0) continue;
-    ++out.wet_triangles;
-    out.wetted_area_m2 += c.area_m2;
-    const Vec3 n = R * stone.face_normals_body[i];
-    const Vec3 r = c.centroid_m - s.position_m;  // lever arm (spec §1.4 step 3)
-    // Lee & Baek 2013 Eq. 1: printed v + r × ω; physical v + ω × r.
-    const Vec3 vi = paper ? Vec3(s.velocity_m_s + r.cross(omega)) : Vec3(s.velocity_m_s + omega.cross(r));
-    // Eq. 2: printed on every submerged face; physical: the case's water law, zero unless the face
-    // advances into the water (model/stone/water_laws.hpp).
-    const Vec3 F = paper ? printed_face_force_N(env, n, vi, c.area_m2) : face_force_N(env, n, vi, c.area_m2);
-    if (F.isZero(0)) continue;
-    out.force_N += F;
-    // Eq. 3: printed F × r; physical r × F.
-    out.torque_N_m += paper ? Vec3(F.cross(r)) : Vec3(r.cross(F));
-  }
-  return out;
+  return water_loads_from_depths(stone, env, s, R, omega, world, depth);
 }
 
 AirLoads air_loads(const Stone& stone, const Environment& env, const RigidState& s) {

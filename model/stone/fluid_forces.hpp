@@ -1,6 +1,8 @@
 #pragma once
 // Forces of the water and the air on the stone, as functions of a state (spec §1.4–1.6). Both the
 // real-time stepper and the CVODE reference call these.
+#include <vector>
+
 #include "model/stone/environment.hpp"
 #include "model/stone/rigid_state.hpp"
 #include "model/stone/water_surface.hpp"
@@ -25,15 +27,21 @@ struct AirLoads {
 
 // Σ over triangles of the water force (spec §1.4; Lee & Baek 2013 Eq. 1–5) on the exactly clipped
 // wetted part of each triangle.
-// physical: v_i = v + ω × r_i, only faces with u_i = v_i·n_i > 0 push, with env.water_law
-//           (model/stone/water_laws.hpp: newtonian F_i = −C_w ρ_w u_i² S_i n_i, planing, lift_drag),
-//           τ_i = r_i × F_i.
+// physical: v_i = v + ω × r_i, only faces with u_i = v_i·n_i > 0 push, with env.water_law's
+//           pressure (model/stone/water_laws.hpp: F_i = −p_i S_i n_i) acting where
+//           env.pressure_distribution puts it (model/stone/pressure_distribution.hpp), τ_i = r_i × F_i.
 // paper:    v_i = v + r_i × ω (Eq. 1 as printed), every submerged face pushes with −C_w ρ_w u_i² S_i n_i
 //           (Eq. 2 as printed, whatever env.water_law says: environment_problem() refuses another
 //           law with this convention), τ_i = F_i × r_i (Eq. 3 as printed).
 // surface == nullptr: still water η = 0. Below the stone's bounding sphere nothing is evaluated.
 WaterLoads water_loads(const Stone& stone, const Environment& env, const RigidState& s,
                        const WaterSurface* surface = nullptr);
+
+// The same from the vertices' world positions and signed depths (d_j = η − z_j), the rotation R
+// of s and the world angular velocity ω: for callers that already have them.
+WaterLoads water_loads_from_depths(const Stone& stone, const Environment& env, const RigidState& s, const Mat3& R,
+                                   const Vec3& omega, const std::vector<Vec3>& world_m,
+                                   const std::vector<double>& depth_m);
 
 // Disk air model (spec §1.5; Eq. 6): u = v·n_d;
 // physical: F = −C_a ρ_a u|u| S_d n_d;  paper: F = −C_a ρ_a u² S_d n_d (always along −n_d).

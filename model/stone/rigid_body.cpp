@@ -11,6 +11,11 @@ StateDerivative rigid_body_rhs(const Stone& stone, const Environment& env, const
   StateDerivative d;
   d.dposition = s.velocity_m_s;
   d.dvelocity = (g + a.force_N + w.force_N) / m;
+  if (env.attitude == Attitude::held) {
+    // Attitude held (model/stone/environment.hpp): L and q constant, the torques discarded.
+    if (loads) *loads = Loads{w, a, g};
+    return d;
+  }
   d.dangular_momentum = w.torque_N_m;  // τ_air = 0 (spec §1.6)
   const Vec3 omega = angular_velocity(stone, s);
   // dq/dt = ½ (0, ω) ⊗ q (world-frame ω, q body → world).
@@ -39,6 +44,7 @@ void rigid_body_rhs(const Stone& stone, const Environment& env, const double* y,
 double fluid_power_W(const Stone& stone, const Environment& env, const RigidState& s, const WaterSurface* surface) {
   const WaterLoads w = water_loads(stone, env, s, surface);
   const AirLoads a = air_loads(stone, env, s);
+  if (env.attitude == Attitude::held) return (w.force_N + a.force_N).dot(s.velocity_m_s);  // torques discarded
   const Vec3 omega = angular_velocity(stone, s);
   return (w.force_N + a.force_N).dot(s.velocity_m_s) + w.torque_N_m.dot(omega);
 }

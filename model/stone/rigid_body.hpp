@@ -2,7 +2,8 @@
 // The stone's equations of motion (spec §1.3):
 //   m dv/dt = F_gravity + F_air + Σ F_i      dx/dt = v
 //   dL/dt   = τ_air + Σ τ_i                  dq/dt = ½ (0, ω) ⊗ q,  ω = R I_body⁻¹ Rᵀ L
-// as a function of a state, shared by every integrator.
+// as a function of a state, shared by every integrator. With env.attitude == held, dL/dt = 0 and
+// dq/dt = 0 (the torques are discarded; model/stone/environment.hpp).
 #include "model/stone/fluid_forces.hpp"
 
 namespace stoneskip {

@@ -13,4 +13,14 @@ struct ClippedArea {
 
 ClippedArea clip_submerged(const Vec3& p0, const Vec3& p1, const Vec3& p2, double d0, double d1, double d2);
 
+// The wetted polygon itself (convex, at most 4 vertices, in the triangle's winding order; count 0
+// when the triangle is dry), for integrals over it other than area and centroid.
+struct ClippedPolygon {
+  Vec3 vertices[4];
+  int count = 0;
+};
+ClippedPolygon clip_submerged_polygon(const Vec3& p0, const Vec3& p1, const Vec3& p2, double d0, double d1, double d2);
+// Area and centroid of a clipped polygon.
+ClippedArea area_of(const ClippedPolygon& poly);
+
 }  // namespace stoneskip

@@ -72,7 +72,8 @@ RigidState realtime_step(const Stone& stone, const Environment& env, const Rigid
       const Vec3 w = angular_velocity(stone, tmp);
       const double angle = w.norm() * dt;
       const Quat dq = angle > 0 ? Quat(Eigen::AngleAxisd(angle, w.normalized())) : Quat::Identity();
-      out.orientation = dq * s.orientation;
+      // Attitude held (model/stone/environment.hpp): the orientation stays, like dq/dt = 0 in the rhs.
+      out.orientation = env.attitude == Attitude::held ? s.orientation : dq * s.orientation;
       break;
     }
     case Scheme::midpoint: {

@@ -33,6 +33,7 @@ ContactLog::Status ContactLog::start(double t_s, const RigidState& s, const Vec3
   const AttitudeAngles a = attitude_angles(s);
   c.entry_path_angle_deg = a.path_angle_deg;
   c.entry_attack_angle_deg = a.attack_angle_deg;
+  c.entry_roll_deg = a.roll_angle_deg;
   c.entry_energy_J = energy_J;
   c.first_touch_m = first_touch_m;
   c.entry_position_m = s.position_m;
@@ -49,6 +50,7 @@ ContactLog::Status ContactLog::end(double t_s, const RigidState& s, double energ
   const AttitudeAngles a = attitude_angles(s);
   c.exit_path_angle_deg = a.path_angle_deg;
   c.exit_attack_angle_deg = a.attack_angle_deg;
+  c.exit_roll_deg = a.roll_angle_deg;
   c.exit_energy_J = energy_J;
   c.exit_position_m = s.position_m;
   c.bounced = left_water;

@@ -23,6 +23,7 @@ struct ContactRecord {
   double entry_speed_m_s = 0, exit_speed_m_s = 0;
   double entry_path_angle_deg = 0, exit_path_angle_deg = 0;
   double entry_attack_angle_deg = 0, exit_attack_angle_deg = 0;
+  double entry_roll_deg = 0, exit_roll_deg = 0;  // sideways inclination (model/stone/throw.hpp)
   double entry_energy_J = 0, exit_energy_J = 0;
   Vec3 first_touch_m = Vec3::Zero();  // the vertex that crossed first, where it crossed
   Vec3 entry_position_m = Vec3::Zero();  // centre of mass when the contact started

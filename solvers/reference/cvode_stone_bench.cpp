@@ -83,7 +83,7 @@ BENCHMARK(BM_ReferenceThrow)
     ->Unit(benchmark::kMillisecond);
 
 // Clanet's disk, the whole throw (t_max 3 s). Args: spin (rev/s), water law (0 newtonian,
-// 1 planing, 2 lift_drag), restart (0 every_event, 1 every_crossing, 2 at_jumps, 3 never).
+// 1 planing, 2 nagahiro_hayakawa), restart (0 every_event, 1 every_crossing, 2 at_jumps, 3 never).
 void BM_ClanetDisk(benchmark::State& state) {
   static const Stone disk = [] {
     const Mesh m = make_prism(0.025, 0.00275, 32);
@@ -96,7 +96,7 @@ void BM_ClanetDisk(benchmark::State& state) {
   p.spin_rev_s = static_cast<double>(state.range(0));
   p.height_m = 0.03;
   Environment env;
-  const WaterLaw laws[] = {WaterLaw::newtonian, WaterLaw::planing, WaterLaw::lift_drag};
+  const WaterLaw laws[] = {WaterLaw::newtonian, WaterLaw::planing, WaterLaw::nagahiro_hayakawa};
   set_water_law(env, laws[state.range(1)]);
   ReferenceOptions o;
   o.t_max_s = 3;

@@ -11,11 +11,12 @@
 //       jumps, and so does the force. Root function g_j = z_j, vertex j's world height.
 //   (b) physical convention only: a wet face's normal velocity u_i = v_i·n_i changes sign, the
 //       switch of Eq. 2 (model/stone/water_laws.hpp). Every law is zero at u_i = 0, so the force is
-//       continuous; newtonian and lift_drag (∝ max(u_i, 0)²) are C¹ with a jump in the second
-//       derivative, planing (∝ max(u_i, 0) |v_i|) is C⁰ with a jump in the first. No law has another
-//       non-smooth point: |v_i| = 0 implies u_i = 0, and lift_drag's C_L(θ), C_D(θ) are polynomials
-//       in sin θ, cos θ. Root function g = u_i at the clipped centroid, live only while the face has
-//       a vertex under water. In the paper convention every wet face pushes with u_i² whatever its
+//       continuous; newtonian and nagahiro_hayakawa (∝ max(u_i, 0)²) are C¹ with a jump in the
+//       second derivative, planing (∝ max(u_i, 0) |v|) is C⁰ with a jump in the first. Root function
+//       g = u_i at the clipped centroid, live only while the face has a vertex under water. The
+//       pressure distributions (model/stone/pressure_distribution.hpp) add kinks this does not
+//       locate: the wetted span's ends change vertex, and a face switches at its centre of
+//       pressure; CVODE's error control steps through them. In the paper convention every wet face pushes with u_i² whatever its
 //       sign — smooth in u_i — so there is nothing to locate.
 //   (c) physical convention with air: the disk's normal velocity u = v·n_d changes sign; the
 //       air force −C_a ρ_a u|u| S_d n_d (§1.5) is C¹ there. In the paper convention u² is smooth.

@@ -78,6 +78,9 @@ void run(const RunArgs& a) {
       for (const auto& [name, r] : results) j[name] = json_summary(r);
     }
     j["convention"] = to_string(c.environment.convention);
+    // The paper convention is Eq. 2 as printed: its law is newtonian, its pressure uniform.
+    j["water_law"] = to_string(c.environment.water_law);
+    j["pressure_distribution"] = to_string(c.environment.pressure_distribution);
     // A title from a file name need not be UTF-8: replace what is not, never throw.
     std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl;
   } else {

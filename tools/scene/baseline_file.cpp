@@ -87,7 +87,7 @@ BounceBaseline read_baseline(const std::string& path) {
   const std::string conv = t.string("convention");
   if (!parse_convention(conv, b.convention)) t.fail("convention", "'" + conv + "' is not physical or paper");
   const std::string law = t.string_or("water_law", to_string(b.water_law));
-  if (!parse_water_law(law, b.water_law)) t.fail("water_law", "'" + law + "' is not newtonian, planing or lift_drag");
+  if (!parse_water_law(law, b.water_law)) t.fail("water_law", "'" + law + "' is not newtonian, planing or nagahiro_hayakawa");
   if (b.convention == Convention::paper && b.water_law != WaterLaw::newtonian)
     t.fail("water_law", "the paper convention has the printed (newtonian) law only");
   const std::string solver = t.string("solver");

@@ -76,11 +76,19 @@ Environment read_environment(TomlTable t) {
   const std::string law = t.string_or("water_law", to_string(e.water_law));
   WaterLaw water_law = WaterLaw::newtonian;
   if (!parse_water_law(law, water_law))
-    t.fail("water_law", "must be \"newtonian\", \"planing\" or \"lift_drag\" (got \"" + law + "\")");
+    t.fail("water_law", "must be \"newtonian\", \"planing\" or \"nagahiro_hayakawa\" (got \"" + law + "\")");
   set_water_law(e, water_law);  // the law's published C_w unless water_coefficient is given
   if (e.convention == Convention::paper && water_law != WaterLaw::newtonian)
     t.fail("water_law", environment_problem(e));
   e.water_coefficient = t.bounded_or("water_coefficient", e.water_coefficient, 0, 100);
+  const std::string dist = t.string_or("pressure_distribution", to_string(e.pressure_distribution));
+  if (!parse_pressure_distribution(dist, e.pressure_distribution))
+    t.fail("pressure_distribution",
+           "must be \"uniform\", \"savitsky\" or \"savitsky_wagner\" (got \"" + dist + "\")");
+  if (e.convention == Convention::paper && e.pressure_distribution != PressureDistribution::uniform)
+    t.fail("pressure_distribution", environment_problem(e));
+  const std::string att = t.string_or("attitude", to_string(e.attitude));
+  if (!parse_attitude(att, e.attitude)) t.fail("attitude", "must be \"free\" or \"held\" (got \"" + att + "\")");
   e.air_coefficient = t.bounded_or("air_coefficient", e.air_coefficient, 0, 100);
   e.gravity_m_s2 = t.bounded_or("gravity_m_s2", e.gravity_m_s2, 0, 1000);
   t.finish();
@@ -263,7 +271,8 @@ std::string StoneCase::resolved_settings() const {
   s << "density_kg_m3 = " << stone.mass.density_kg_m3 << "\nmass_kg = " << stone.mass.mass_kg << "\n";
   s << "disk_radius_m = " << stone.disk_radius_m << "\n";
   s << "\n[environment]\nconvention = \"" << to_string(environment.convention) << "\"\nwater_law = \""
-    << to_string(environment.water_law) << "\"\n"
+    << to_string(environment.water_law) << "\"\npressure_distribution = \"" << to_string(environment.pressure_distribution)
+    << "\"\nattitude = \"" << to_string(environment.attitude) << "\"\n"
     << "water_density_kg_m3 = " << environment.water_density_kg_m3 << "\nair_density_kg_m3 = " << environment.air_density_kg_m3
     << "\nwater_coefficient = " << environment.water_coefficient << "\nair_coefficient = " << environment.air_coefficient
     << "\ngravity_m_s2 = " << environment.gravity_m_s2 << "\n";

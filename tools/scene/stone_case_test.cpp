@@ -32,13 +32,13 @@ std::string error_of(const std::vector<std::string>& overrides) {
 BOOST_AUTO_TEST_SUITE(stone_case_keys)
 
 BOOST_AUTO_TEST_CASE(a_water_law_takes_its_published_coefficient_unless_one_is_given) {
-  // Oracle: cases/README.md — water_law defaults to newtonian (C_w 1); planing takes ½, lift_drag
+  // Oracle: cases/README.md — water_law defaults to newtonian (C_w 1); planing takes ½, nagahiro_hayakawa
   // 0.7 (environment.hpp's published values); an explicit water_coefficient wins.
   BOOST_TEST((parse({}).environment.water_law == WaterLaw::newtonian));
   BOOST_TEST(parse({}).environment.water_coefficient == 1.0);
   BOOST_TEST((parse({"environment.water_law=planing"}).environment.water_law == WaterLaw::planing));
   BOOST_TEST(parse({"environment.water_law=planing"}).environment.water_coefficient == 0.5);
-  BOOST_TEST(parse({"environment.water_law=lift_drag"}).environment.water_coefficient == 0.7);
+  BOOST_TEST(parse({"environment.water_law=nagahiro_hayakawa"}).environment.water_coefficient == 0.7);
   BOOST_TEST(parse({"environment.water_law=planing", "environment.water_coefficient=0.8"}).environment.water_coefficient == 0.8);
 }
 

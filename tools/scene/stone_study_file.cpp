@@ -32,7 +32,7 @@ std::vector<WaterLaw> laws_of(TomlTable& t, const std::string& key, const std::v
   std::vector<WaterLaw> out;
   for (const auto& n : *names) {
     WaterLaw w;
-    if (!parse_water_law(n, w)) t.fail(key, "'" + n + "' is not one of newtonian, planing, lift_drag");
+    if (!parse_water_law(n, w)) t.fail(key, "'" + n + "' is not one of newtonian, planing, nagahiro_hayakawa");
     if (std::find(out.begin(), out.end(), w) != out.end()) t.fail(key, "'" + n + "' is listed twice");
     out.push_back(w);
   }

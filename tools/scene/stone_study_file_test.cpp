@@ -30,7 +30,7 @@ BOOST_AUTO_TEST_SUITE(stone_study_file_keys)
 BOOST_AUTO_TEST_CASE(the_shipped_presets_name_their_laws_ranges_and_curve) {
   // Oracle: the shipped files as written (cases/studies/stones.toml and stones_quick.toml).
   const StoneStudiesOptions full = load_stone_study_file("cases/studies/stones.toml").options;
-  const std::vector<WaterLaw> all{WaterLaw::newtonian, WaterLaw::planing, WaterLaw::lift_drag};
+  const std::vector<WaterLaw> all{WaterLaw::newtonian, WaterLaw::planing, WaterLaw::nagahiro_hayakawa};
   BOOST_TEST((full.validation.laws == all));
   BOOST_TEST((full.convergence_laws == all));
   BOOST_TEST(full.work_precision_throws.size() == 6u);  // three throws, and three under another law
@@ -45,7 +45,7 @@ BOOST_AUTO_TEST_CASE(the_shipped_presets_name_their_laws_ranges_and_curve) {
   BOOST_TEST(full.validation.curves[0].low[0] == 2.5);
   BOOST_TEST(full.validation.curves[0].high[0] == 2.6);
   const StoneStudiesOptions quick = load_stone_study_file(kQuick).options;
-  BOOST_TEST((quick.validation.laws == std::vector<WaterLaw>{WaterLaw::newtonian, WaterLaw::lift_drag}));
+  BOOST_TEST((quick.validation.laws == std::vector<WaterLaw>{WaterLaw::newtonian, WaterLaw::nagahiro_hayakawa}));
   BOOST_TEST(quick.validation.ranking.held_spin_rev_s == 65.0);
 }
 

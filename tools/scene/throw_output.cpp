@@ -19,7 +19,10 @@ std::string text_summary(const StoneCase& c, const ThrowResult& r) {
   s << "case      " << c.title << " (" << c.file << ")\n";
   s << "stone     " << c.stone.description << ", mass " << num(c.stone.mass.mass_kg * 1e3) << " g\n";
   s << "model     " << to_string(c.environment.convention) << " convention, " << to_string(c.environment.water_law)
-    << " water law, C_w = " << c.environment.water_coefficient << "\n";
+    << " water law, C_w = " << c.environment.water_coefficient;
+  if (c.environment.convention == Convention::physical)
+    s << ", " << to_string(c.environment.pressure_distribution) << " pressure";
+  s << "\n";
   s << "solver    " << r.solver << "\n";
   s << "bounces   " << r.bounces << "\n";
   s << "outcome   " << to_string(r.outcome) << ": " << r.outcome_detail << "\n";
@@ -27,13 +30,14 @@ std::string text_summary(const StoneCase& c, const ThrowResult& r) {
   if (r.max_energy_gain_J > 0) s << "energy    a contact gained " << num(r.max_energy_gain_J) << " J (the model created energy)\n";
   if (!r.contacts.empty()) {
     s << "contacts:\n";
-    s << "   #   start_s     end_s  duration_ms  entry_m_s  exit_m_s  entry_path_deg  entry_attack_deg  bounced\n";
+    s << "   #   start_s     end_s  duration_ms  entry_m_s  exit_m_s  entry_path_deg  attack_deg in→out  roll_deg in→out  bounced\n";
     int i = 0;
     for (const auto& k : r.contacts) {
       char line[256];
-      std::snprintf(line, sizeof line, "%4d %9.5f %9.5f %12.3f %10.3f %9.3f %15.2f %17.2f  %s\n", ++i, k.start_s, k.end_s,
-                    1e3 * k.duration_s(), k.entry_speed_m_s, k.exit_speed_m_s, k.entry_path_angle_deg,
-                    k.entry_attack_angle_deg, k.bounced ? "yes" : "no");
+      std::snprintf(line, sizeof line, "%4d %9.5f %9.5f %12.3f %10.3f %9.3f %15.2f %8.2f→%-8.2f %7.2f→%-7.2f  %s\n", ++i,
+                    k.start_s, k.end_s, 1e3 * k.duration_s(), k.entry_speed_m_s, k.exit_speed_m_s,
+                    k.entry_path_angle_deg, k.entry_attack_angle_deg, k.exit_attack_angle_deg, k.entry_roll_deg,
+                    k.exit_roll_deg, k.bounced ? "yes" : "no");
       s << line;
     }
   }
@@ -66,6 +70,8 @@ nlohmann::json json_summary(const ThrowResult& r) {
                         {"exit_path_angle_deg", c.exit_path_angle_deg},
                         {"entry_attack_angle_deg", c.entry_attack_angle_deg},
                         {"exit_attack_angle_deg", c.exit_attack_angle_deg},
+                        {"entry_roll_deg", c.entry_roll_deg},
+                        {"exit_roll_deg", c.exit_roll_deg},
                         {"entry_energy_J", c.entry_energy_J},
                         {"exit_energy_J", c.exit_energy_J},
                         {"first_touch_m", {c.first_touch_m.x(), c.first_touch_m.y(), c.first_touch_m.z()}},
@@ -101,12 +107,13 @@ Table trajectory_table(const Stone& stone, const ThrowResult& r) {
 Table contacts_table(const ThrowResult& r) {
   Table t;
   t.columns = {"start_s", "end_s", "duration_s", "entry_speed_m_s", "exit_speed_m_s", "entry_path_angle_deg",
-               "exit_path_angle_deg", "entry_attack_angle_deg", "exit_attack_angle_deg", "entry_energy_J",
-               "exit_energy_J", "first_touch_x_m", "first_touch_y_m", "exit_x_m", "exit_y_m", "max_wetted_area_m2",
-               "bounced"};
+               "exit_path_angle_deg", "entry_attack_angle_deg", "exit_attack_angle_deg", "entry_roll_deg",
+               "exit_roll_deg", "entry_energy_J", "exit_energy_J", "first_touch_x_m", "first_touch_y_m", "exit_x_m",
+               "exit_y_m", "max_wetted_area_m2", "bounced"};
   for (const auto& c : r.contacts) {
     t.add_row({c.start_s, c.end_s, c.duration_s(), c.entry_speed_m_s, c.exit_speed_m_s, c.entry_path_angle_deg,
-               c.exit_path_angle_deg, c.entry_attack_angle_deg, c.exit_attack_angle_deg, c.entry_energy_J,
+               c.exit_path_angle_deg, c.entry_attack_angle_deg, c.exit_attack_angle_deg, c.entry_roll_deg,
+               c.exit_roll_deg, c.entry_energy_J,
                c.exit_energy_J, c.first_touch_m.x(), c.first_touch_m.y(), c.exit_position_m.x(), c.exit_position_m.y(),
                c.max_wetted_area_m2, c.bounced ? 1.0 : 0.0});
   }

@@ -14,7 +14,7 @@
 //                     wx_rad_s, wy_rad_s, wz_rad_s (world), energy_J, momentum_kg_m_s, wetted_area_m2
 //   /<solver>/contacts    table: start_s, end_s, duration_s, entry_speed_m_s, exit_speed_m_s,
 //                     entry_path_angle_deg, exit_path_angle_deg, entry_attack_angle_deg,
-//                     exit_attack_angle_deg, entry_energy_J, exit_energy_J, first_touch_x_m,
+//                     exit_attack_angle_deg, entry_roll_deg, exit_roll_deg, entry_energy_J, exit_energy_J, first_touch_x_m,
 //                     first_touch_y_m, exit_x_m, exit_y_m, max_wetted_area_m2, bounced (1/0)
 #include <nlohmann/json.hpp>
 #include <string>

@@ -85,7 +85,7 @@ std::string study_throw_problem(const std::string& entry) {
   if (at == std::string::npos) return "";
   WaterLaw law;
   if (!parse_water_law(entry.substr(at + 1), law))
-    return "'" + entry.substr(at + 1) + "' in '" + entry + "' is not one of newtonian, planing, lift_drag";
+    return "'" + entry.substr(at + 1) + "' in '" + entry + "' is not one of newtonian, planing, nagahiro_hayakawa";
   if (name == "spin_paper") return "'" + entry + "': the paper convention has only its printed law";
   return "";
 }

@@ -50,19 +50,19 @@ BOOST_AUTO_TEST_CASE(a_law_skips_like_a_stone_only_near_the_measurements_and_hol
 }
 
 BOOST_AUTO_TEST_CASE(the_cheapest_passing_law_is_named_and_failing_laws_are_not) {
-  // Oracle: by hand — of three laws, the cheapest (lift_drag) fails on attitude, so the next
+  // Oracle: by hand — of three laws, the cheapest (nagahiro_hayakawa) fails on attitude, so the next
   // cheapest that passes (planing) is named; when none passes, none is.
   Record in;
   in.set("distance_bound", 0.5).set("attack_bound_deg", 5.0);
   in.set("newtonian.distance", 0.9).set("newtonian.attack_change_deg", 1.0).set("newtonian.cost_s", 2e-3);
   in.set("planing.distance", 0.3).set("planing.attack_change_deg", -2.0).set("planing.cost_s", 3e-3);
-  in.set("lift_drag.distance", 0.2).set("lift_drag.attack_change_deg", -20.0).set("lift_drag.cost_s", 1e-3);
+  in.set("nagahiro_hayakawa.distance", 0.2).set("nagahiro_hayakawa.attack_change_deg", -20.0).set("nagahiro_hayakawa.cost_s", 1e-3);
   BOOST_TEST(decide("cheapest_skipping_law", in) == "planing is the cheapest law that skips like a real stone");
-  in.set("lift_drag.attack_change_deg", 4.0);  // now it passes and is cheaper
-  BOOST_TEST(decide("cheapest_skipping_law", in) == "lift_drag is the cheapest law that skips like a real stone");
-  in.set("lift_drag.cost_s", 3e-3);  // a tie in cost goes to the smaller distance
-  BOOST_TEST(decide("cheapest_skipping_law", in) == "lift_drag is the cheapest law that skips like a real stone");
-  in.set("lift_drag.distance", 0.6).set("planing.distance", 0.51);
+  in.set("nagahiro_hayakawa.attack_change_deg", 4.0);  // now it passes and is cheaper
+  BOOST_TEST(decide("cheapest_skipping_law", in) == "nagahiro_hayakawa is the cheapest law that skips like a real stone");
+  in.set("nagahiro_hayakawa.cost_s", 3e-3);  // a tie in cost goes to the smaller distance
+  BOOST_TEST(decide("cheapest_skipping_law", in) == "nagahiro_hayakawa is the cheapest law that skips like a real stone");
+  in.set("nagahiro_hayakawa.distance", 0.6).set("planing.distance", 0.51);
   BOOST_TEST(decide("cheapest_skipping_law", in) == "no law skips like a real stone");
 }
 

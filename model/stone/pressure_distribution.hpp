@@ -1,0 +1,66 @@
+#pragma once
+// Where a water law's pressure acts on the wetted region (spec §1.4, "Where the pressure acts").
+// Uniform pressure on each clipped face puts the centre of pressure at the wetted centroid, near
+// the trailing edge; planing theory puts it near the spray root. The distributions weight the
+// pressure along ξ ∈ [0, 1], the position along the stone's horizontal velocity ĥ from the
+// trailing edge of the wetted region (0) to its waterline ahead (1), with
+//     w(ξ) = (k + 1) ξ^k,   ∫₀¹ w dξ = 1,   centroid (k + 1)/(k + 2) = c  ⇒  k = (2c − 1)/(1 − c),
+// c = 0.75 the centre of pressure of a planing plate as a fraction of its wetted length from the
+// trailing edge (Savitsky 1964, the high-speed limit of l_p/(λb) = 0.75 − 1/(5.21 C_v²/λ² + 2.39)):
+// k = 2. Only c is Savitsky's; the power-law form is this code's, the lowest-order monomial with
+// that centroid per unit width. The Wagner variant first lengthens the wetted region by the water
+// rising ahead of the stone: a flat plate entering water wets π/2 times its geometric length
+// (Wagner 1932; essential to continual skipping in Hewitt, Balmforth & McElwaine, JFM 669, 2011),
+// i.e. the region below a waterline raised by (π/2 − 1) × the deepest vertex's depth. Either way
+// the law's total force (Σ p_i S_i over the geometric wetted area) is kept: only where it acts
+// moves. fluid_forces.cpp applies these; each face's force and torque are exact integrals.
+#include <numbers>
+
+#include "model/stone/environment.hpp"
+#include "model/stone/triangle_clip.hpp"
+
+namespace stoneskip {
+
+constexpr double kSavitskyCentreFraction = 0.75;             // Savitsky 1964, high-speed limit
+constexpr double kWagnerRiseFactor = std::numbers::pi / 2;    // Wagner 1932, flat plate
+
+// The exponent k of w(ξ) = (k + 1) ξ^k whose centroid is the fraction c of the length.
+constexpr double power_weight_exponent(double c) { return (2 * c - 1) / (1 - c); }
+
+// The wetted region's extent along the stone's horizontal velocity: s = direction·x runs from
+// start_m (trailing edge, ξ = 0) to start_m + length_m (waterline ahead, ξ = 1).
+struct WettedSpan {
+  Vec3 direction = Vec3::UnitX();  // unit, horizontal
+  double start_m = 0, length_m = 0;
+  bool valid() const { return length_m > 0; }
+  double xi(const Vec3& x) const { return (direction.dot(x) - start_m) / length_m; }
+};
+
+// The span of a set of wetted polygons along the horizontal part of velocity_m_s (invalid when the
+// velocity has no horizontal part or the polygons have no extent along it).
+class WettedSpanBuilder {
+ public:
+  explicit WettedSpanBuilder(const Vec3& velocity_m_s);
+  void add(const ClippedPolygon& p);
+  WettedSpan span() const;
+
+ private:
+  Vec3 direction_ = Vec3::Zero();
+  bool has_direction_ = false;
+  double lo_ = 1e300, hi_ = -1e300;
+};
+
+// ∫ w(ξ) dA and ∫ w(ξ) x dA over a convex polygon, w(ξ) = (k + 1) max(ξ, 0)^k.
+struct WeightedIntegrals {
+  double weight_m2 = 0;
+  Vec3 moment_m3 = Vec3::Zero();
+};
+// Exact for whole k ≤ 4 (the 7-point degree-5 rule of Radon 1948 on each fan triangle: w x is a
+// polynomial of degree k + 1 there, ξ being linear in x).
+WeightedIntegrals integrate_weight(const ClippedPolygon& poly, const WettedSpan& span, double exponent);
+
+// The depth offset that raises the waterline for a distribution (the Wagner rise): (π/2 − 1) d_max
+// for savitsky_wagner with d_max > 0, else 0.
+double waterline_rise_m(PressureDistribution d, double deepest_depth_m);
+
+}  // namespace stoneskip
