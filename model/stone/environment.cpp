@@ -79,6 +79,21 @@ void set_water_law(Environment& env, WaterLaw law) {
   env.water_coefficient = published_water_coefficient(law);
 }
 
+void set_default_water_model(Environment& env) {
+  if (env.convention == Convention::paper) {
+    set_water_law(env, WaterLaw::newtonian);
+    env.pressure_distribution = PressureDistribution::uniform;
+  } else {
+    set_water_law(env, WaterLaw::planing);
+    env.pressure_distribution = PressureDistribution::savitsky_wagner;
+  }
+}
+
+void set_convention(Environment& env, Convention c) {
+  env.convention = c;
+  if (c == Convention::paper) set_default_water_model(env);
+}
+
 std::string environment_problem(const Environment& env) {
   if (env.convention == Convention::paper && env.water_law != WaterLaw::newtonian)
     return std::string("water law \"") + to_string(env.water_law) +

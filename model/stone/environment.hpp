@@ -68,6 +68,15 @@ struct Environment {
 // Chooses a law together with its published C_w (set water_coefficient afterwards to depart from it).
 void set_water_law(Environment& env, WaterLaw law);
 
+// The water model a case gets when it names none (by env.convention): paper — the printed Eq. 2
+// (newtonian, C_w = 1, uniform); physical — planing with savitsky_wagner, the law and distribution
+// that come nearest the experiments in the stones report's validation (the only ones there whose
+// stone skips with its attitude held at high spin). A bare Environment{} is Lee & Baek's law.
+void set_default_water_model(Environment& env);
+// Sets the convention; the paper convention also takes its printed law (set_default_water_model),
+// which no other law or coefficient may replace.
+void set_convention(Environment& env, Convention c);
+
 // Empty when the environment can be used; else what is wrong, in words (a non-newtonian law or a
 // non-uniform pressure distribution in the paper convention, a negative density, coefficient or gravity).
 std::string environment_problem(const Environment& env);

@@ -86,10 +86,23 @@ BounceBaseline read_baseline(const std::string& path) {
                          text(range.hi) + "] (as the case key)");
   const std::string conv = t.string("convention");
   if (!parse_convention(conv, b.convention)) t.fail("convention", "'" + conv + "' is not physical or paper");
-  const std::string law = t.string_or("water_law", to_string(b.water_law));
-  if (!parse_water_law(law, b.water_law)) t.fail("water_law", "'" + law + "' is not newtonian, planing or nagahiro_hayakawa");
-  if (b.convention == Convention::paper && b.water_law != WaterLaw::newtonian)
-    t.fail("water_law", "the paper convention has the printed (newtonian) law only");
+  if (t.has("water_law")) {
+    const std::string law = t.string("water_law");
+    WaterLaw w;
+    if (!parse_water_law(law, w)) t.fail("water_law", "'" + law + "' is not newtonian, planing or nagahiro_hayakawa");
+    if (b.convention == Convention::paper && w != WaterLaw::newtonian)
+      t.fail("water_law", "the paper convention has the printed (newtonian) law only");
+    b.water_law = w;
+  }
+  if (t.has("pressure_distribution")) {
+    const std::string dist = t.string("pressure_distribution");
+    PressureDistribution d;
+    if (!parse_pressure_distribution(dist, d))
+      t.fail("pressure_distribution", "'" + dist + "' is not uniform, savitsky or savitsky_wagner");
+    if (b.convention == Convention::paper && d != PressureDistribution::uniform)
+      t.fail("pressure_distribution", "the paper convention has the printed (uniform) pressure only");
+    b.pressure_distribution = d;
+  }
   const std::string solver = t.string("solver");
   if (solver == "realtime") {
     b.solver = SolverKind::realtime;
@@ -172,7 +185,9 @@ fs::path resolve_case_file(const BounceBaseline& b) {
 
 BounceSweepSpec sweep_of(const BounceBaseline& b) {
   std::vector<std::string> overrides;
-  if (b.water_law != WaterLaw::newtonian) overrides.push_back(std::string("environment.water_law=") + to_string(b.water_law));
+  if (b.water_law) overrides.push_back(std::string("environment.water_law=") + to_string(*b.water_law));
+  if (b.pressure_distribution)
+    overrides.push_back(std::string("environment.pressure_distribution=") + to_string(*b.pressure_distribution));
   const StoneCase c = load_stone_case(resolve_case_file(b).string(), overrides);
   BounceSweepSpec s;
   s.name = b.name;
@@ -221,7 +236,8 @@ std::string baseline_text(const BounceBaseline& b, const BounceSweepResult& r, c
   s << "parameter = " << quoted(to_string(b.parameter)) << "\n";
   s << "values = " << array(b.values, num) << "\n";
   s << "convention = " << quoted(to_string(b.convention)) << "\n";
-  if (b.water_law != WaterLaw::newtonian) s << "water_law = " << quoted(to_string(b.water_law)) << "\n";
+  if (b.water_law) s << "water_law = " << quoted(to_string(*b.water_law)) << "\n";
+  if (b.pressure_distribution) s << "pressure_distribution = " << quoted(to_string(*b.pressure_distribution)) << "\n";
   if (b.solver == SolverKind::realtime) {
     s << "solver = \"realtime\"\n";
     if (!b.scheme.empty()) s << "scheme = " << quoted(b.scheme) << "\n";

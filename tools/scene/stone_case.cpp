@@ -73,20 +73,25 @@ Environment read_environment(TomlTable t) {
   if (!parse_convention(conv, e.convention)) t.fail("convention", "must be \"physical\" or \"paper\" (got \"" + conv + "\")");
   e.water_density_kg_m3 = t.bounded_or("water_density_kg_m3", e.water_density_kg_m3, 1, 1e5);
   e.air_density_kg_m3 = t.bounded_or("air_density_kg_m3", e.air_density_kg_m3, 0, 100);
-  const std::string law = t.string_or("water_law", to_string(e.water_law));
-  WaterLaw water_law = WaterLaw::newtonian;
-  if (!parse_water_law(law, water_law))
-    t.fail("water_law", "must be \"newtonian\", \"planing\" or \"nagahiro_hayakawa\" (got \"" + law + "\")");
-  set_water_law(e, water_law);  // the law's published C_w unless water_coefficient is given
-  if (e.convention == Convention::paper && water_law != WaterLaw::newtonian)
-    t.fail("water_law", environment_problem(e));
+  set_default_water_model(e);  // by convention; a named law or distribution replaces it
+  if (t.has("water_law")) {
+    const std::string law = t.string("water_law");
+    WaterLaw water_law = WaterLaw::newtonian;
+    if (!parse_water_law(law, water_law))
+      t.fail("water_law", "must be \"newtonian\", \"planing\" or \"nagahiro_hayakawa\" (got \"" + law + "\")" +
+                              (law == "lift_drag" ? ": lift_drag was newtonian with C_w 0.7 and is now named nagahiro_hayakawa" : ""));
+    set_water_law(e, water_law);  // the law's published C_w unless water_coefficient is given
+    if (e.convention == Convention::paper && water_law != WaterLaw::newtonian) t.fail("water_law", environment_problem(e));
+  }
   e.water_coefficient = t.bounded_or("water_coefficient", e.water_coefficient, 0, 100);
-  const std::string dist = t.string_or("pressure_distribution", to_string(e.pressure_distribution));
-  if (!parse_pressure_distribution(dist, e.pressure_distribution))
-    t.fail("pressure_distribution",
-           "must be \"uniform\", \"savitsky\" or \"savitsky_wagner\" (got \"" + dist + "\")");
-  if (e.convention == Convention::paper && e.pressure_distribution != PressureDistribution::uniform)
-    t.fail("pressure_distribution", environment_problem(e));
+  if (t.has("pressure_distribution")) {
+    const std::string dist = t.string("pressure_distribution");
+    if (!parse_pressure_distribution(dist, e.pressure_distribution))
+      t.fail("pressure_distribution",
+             "must be \"uniform\", \"savitsky\" or \"savitsky_wagner\" (got \"" + dist + "\")");
+    if (e.convention == Convention::paper && e.pressure_distribution != PressureDistribution::uniform)
+      t.fail("pressure_distribution", environment_problem(e));
+  }
   const std::string att = t.string_or("attitude", to_string(e.attitude));
   if (!parse_attitude(att, e.attitude)) t.fail("attitude", "must be \"free\" or \"held\" (got \"" + att + "\")");
   e.air_coefficient = t.bounded_or("air_coefficient", e.air_coefficient, 0, 100);
@@ -250,6 +255,8 @@ StoneCase stone_case_from_document(const TomlDocument& doc) {
   c.stone = build_stone(c.spec, doc.file);
   if (auto env = top.maybe_table("environment"))
     c.environment = read_environment(*env);
+  else
+    set_default_water_model(c.environment);  // physical convention: its default law and distribution
   read_throw(top.table("throw"), c);
   c.realtime = read_solver(top.table("solver"));
   c.reference = read_reference(top.maybe_table("reference"), c.realtime.t_max_s, c.realtime.output_dt_s);

@@ -32,10 +32,18 @@ std::string error_of(const std::vector<std::string>& overrides) {
 BOOST_AUTO_TEST_SUITE(stone_case_keys)
 
 BOOST_AUTO_TEST_CASE(a_water_law_takes_its_published_coefficient_unless_one_is_given) {
-  // Oracle: cases/README.md — water_law defaults to newtonian (C_w 1); planing takes ½, nagahiro_hayakawa
-  // 0.7 (environment.hpp's published values); an explicit water_coefficient wins.
-  BOOST_TEST((parse({}).environment.water_law == WaterLaw::newtonian));
-  BOOST_TEST(parse({}).environment.water_coefficient == 1.0);
+  // Oracle: cases/README.md — the physical convention defaults to planing (C_w ½) with savitsky_wagner,
+  // the paper convention to its printed newtonian law (C_w 1) with uniform pressure; a named law
+  // takes its published C_w (newtonian 1, planing ½, nagahiro_hayakawa 0.7, environment.hpp); an
+  // explicit water_coefficient wins.
+  BOOST_TEST((parse({}).environment.water_law == WaterLaw::planing));
+  BOOST_TEST(parse({}).environment.water_coefficient == 0.5);
+  BOOST_TEST((parse({}).environment.pressure_distribution == PressureDistribution::savitsky_wagner));
+  const Environment paper = parse({"environment.convention=paper"}).environment;
+  BOOST_TEST((paper.water_law == WaterLaw::newtonian));
+  BOOST_TEST(paper.water_coefficient == 1.0);
+  BOOST_TEST((paper.pressure_distribution == PressureDistribution::uniform));
+  BOOST_TEST((parse({"environment.water_law=newtonian"}).environment.water_coefficient == 1.0));
   BOOST_TEST((parse({"environment.water_law=planing"}).environment.water_law == WaterLaw::planing));
   BOOST_TEST(parse({"environment.water_law=planing"}).environment.water_coefficient == 0.5);
   BOOST_TEST(parse({"environment.water_law=nagahiro_hayakawa"}).environment.water_coefficient == 0.7);

@@ -13,6 +13,7 @@
 // Bisection brackets a threshold to threshold_tolerance, so two runs of correct code agree to
 // within that; compare_tolerance (default 2 × threshold_tolerance) leaves room for round-off
 // moving a threshold across a bisection point.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,9 +29,11 @@ struct BounceBaseline {
   SweepParameter parameter = SweepParameter::spin_rev_s;
   std::vector<double> values;
   Convention convention = Convention::physical;
-  // Optional in the file (default newtonian): the case is loaded with environment.water_law set to
-  // it, so the law's published C_w applies unless the case gives water_coefficient.
-  WaterLaw water_law = WaterLaw::newtonian;
+  // Optional in the file (default: the case's own): the case is loaded with environment.water_law
+  // and environment.pressure_distribution set to them, so the law's published C_w applies unless the
+  // case gives water_coefficient.
+  std::optional<WaterLaw> water_law;
+  std::optional<PressureDistribution> pressure_distribution;
   SolverKind solver = SolverKind::realtime;
   // Solver settings given in the file (else the case's own [solver] / [reference]).
   std::string scheme;            // realtime

@@ -18,7 +18,7 @@ ThrowProblem with_parameters(const ThrowProblem& p, const ThrowParameters& tp) {
 
 ThrowProblem with_convention(const ThrowProblem& p, Convention c) {
   ThrowProblem q = p;
-  q.environment.convention = c;
+  set_convention(q.environment, c);  // the paper convention takes its printed law and C_w
   return q;
 }
 
