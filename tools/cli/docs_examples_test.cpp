@@ -180,8 +180,11 @@ BOOST_AUTO_TEST_CASE(the_documents_hold_the_quick_start_and_stoneskip_commands) 
 }
 
 BOOST_AUTO_TEST_CASE(the_documents_refer_to_nothing_outside_the_repository) {
-  // Oracle: a reader has only the repository — no path above it, no issue tracker.
+  // Oracle: a reader has only the repository — no path above it, no issue tracker, and every
+  // relative link of a document names a file or folder that exists.
   static const std::regex issue_number(R"(\bissues? #?\d)", std::regex::icase);
+  static const std::regex link(R"(\]\(([^)#\s]*)(#[^)]*)?\))");
+  const fs::path root = fs::weakly_canonical(".");
   for (const auto& d : documents()) {
     std::ifstream in(d);
     int n = 0;
@@ -190,6 +193,14 @@ BOOST_AUTO_TEST_CASE(the_documents_refer_to_nothing_outside_the_repository) {
       BOOST_TEST_CONTEXT(d.string() << ":" << n << ": " << line) {
         BOOST_TEST(line.find("../shared") == std::string::npos);
         BOOST_TEST(!std::regex_search(line, issue_number));
+        for (std::sregex_iterator it(line.begin(), line.end(), link), end; it != end; ++it) {
+          const std::string target = (*it)[1];
+          if (target.empty() || target.find("://") != std::string::npos) continue;
+          const fs::path p = fs::weakly_canonical(d.parent_path() / target);
+          BOOST_TEST(fs::exists(p), target << " does not exist");
+          const std::string rel = p.lexically_relative(root).string();
+          BOOST_TEST(rel.rfind("..", 0) != 0, target << " lies outside the repository");
+        }
       }
     }
   }
