@@ -109,7 +109,7 @@ ReportBuild::~ReportBuild() {
   if (lock_fd_ >= 0) ::close(lock_fd_);
   // Stopped by an error before any section was finished: a work folder this run made holds
   // nothing worth resuming, so it goes (bad input leaves no folder behind). With finished
-  // sections it stays for the next run to resume (README, "Reports").
+  // sections it stays for the next run to resume (reports/README.md, "Reports").
   if (!committed_ && created_work_ && stored_ == 0) {
     std::error_code ec;
     with_registry_lock([&] { fs::remove_all(work_, ec); });

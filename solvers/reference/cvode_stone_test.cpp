@@ -403,7 +403,7 @@ BOOST_AUTO_TEST_CASE(every_restart_strategy_gives_the_same_contacts_on_a_65_rev_
   // Oracle: the same ODE solved by CVODE at rtol 1e-12 restarting at every event. Clanet's disk at
   // 3.5 m/s and 65 rev/s, its first 60 ms (entry at 16 ms, then hundreds of face switches and
   // vertex crossings), under each law, at the default rtol 1e-10. Under planing the first contact
-  // ends within the window (a bounce at 44.6 ms): its end must agree to 1e-7 s (the README's
+  // ends within the window (a bounce at 44.6 ms): its end must agree to 1e-7 s (solvers/README.md's
   // contact-time tolerance; measured ≲ 1e-9 s). Under every law the state at 60 ms must agree to
   // 1e-7 m and 1e-6 m/s (measured ≲ 1e-8 m). Cost, counted in right-hand sides (deterministic):
   // at_jumps must take fewer than every_event, since it keeps CVODE's history across the kinks.

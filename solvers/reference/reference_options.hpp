@@ -56,7 +56,7 @@ struct ReferenceOptions {
   long max_steps = 2000000;     // over the whole throw; exceeding it fails the solve
   bool record_trajectory = true;
   // The default is the cheapest strategy whose contact times stay within the stated tolerance of
-  // an every_event solve (measured in verification/stones/work_precision.hpp; README).
+  // an every_event solve (measured in verification/stones/work_precision.hpp; solvers/README.md).
   RestartStrategy restart = RestartStrategy::at_jumps;
   double max_step_s = 0;        // CVODE's largest step; 0: no limit
   // Chattering guard: the solve fails when more than this many events fall within 1 ms.

@@ -1,4 +1,4 @@
-// Oracle: the JSON schema of the README and identities between its own figures that a wrong
+// Oracle: the JSON schema of verification/README.md ("Benchmarks") and identities between its own figures that a wrong
 // measurement would break — not the speeds themselves (speed is quoted from the benchmark, never
 // asserted): thread CPU ≤ wall for the one-thread scene, the fraction of the copy bound is the
 // cell rate over the bound, the per-cell ratio is the 500² rate over the large grid's, the sweep's

@@ -2,7 +2,7 @@
 // run through the built executable (under `timeout 60`). Each must now give exit 2 with one line
 // on stderr naming the file or key and the reason, write nothing, and end within 60 s — or finish
 // correctly. What main did is in each test's first line; the oracle is the project's bad-input
-// rule (README: exit 2, one line, no partial output) and the numbers of each case.
+// rule (tools/README.md: exit 2, one line, no partial output) and the numbers of each case.
 #include <boost/test/unit_test.hpp>
 
 #include <sys/stat.h>
@@ -315,7 +315,7 @@ BOOST_AUTO_TEST_CASE(the_smaller_ones) {
   expect_refused(run_apart(run_good + " --rtol 1e-8"), {"--rtol: only the reference solver has a tolerance"});
   // run --out "" exited 0 writing nothing.
   expect_refused(run_apart(run_good + " --out ''"), {"--out: needs a file name"});
-  // A failed solve (exit 1) still wrote its .h5 though the README says a failed run leaves none.
+  // A failed solve (exit 1) still wrote its .h5 though reports/README.md says a failed run leaves none.
   const RanApart failed = run_apart(run_good + " --solver reference --set reference.max_steps=1 --out " + (s.dir / "f.h5").string());
   BOOST_TEST(failed.status == 1, failed.err);
   BOOST_TEST(failed.err.find("not written: the solve failed") != std::string::npos, failed.err);
@@ -349,7 +349,7 @@ BOOST_AUTO_TEST_CASE(items_14_15_16_a_capture_with_an_impossible_mounting_or_ens
                    {"long.csv: is 65 MB, above the 64 MB a capture may be", "--allow-large"});
     fs::remove(s.dir / "long.csv");
   }
-  // A failed solve writes no .h5 (the README: a failed run leaves none).
+  // A failed solve writes no .h5 (reports/README.md: a failed run leaves none).
   const RanApart failed = run_apart("capture throw " + cap + " --set reference.max_steps=1 --out " + (s.dir / "f.h5").string());
   BOOST_TEST(failed.status == 1, failed.err);
   BOOST_TEST(failed.err.find("not written: the solve failed") != std::string::npos, failed.err);

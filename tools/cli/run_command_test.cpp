@@ -1,6 +1,6 @@
 // End-to-end tests of `stoneskip run` and `stoneskip mesh`: JSON output, the two conventions, the
 // HDF5 result file, and bad input (one-line error naming file and key, exit status 2, no output
-// file left behind). Oracles: the JSON schema promised in the README, the case's own values, and
+// file left behind). Oracles: the JSON schema promised in tools/README.md, the case's own values, and
 // the library run in-process (an independent path to the same numbers).
 #include <boost/test/unit_test.hpp>
 
@@ -67,7 +67,7 @@ void expect_bad_input(const Run& r, const std::vector<std::string>& fragments) {
 BOOST_AUTO_TEST_SUITE(run_command)
 
 BOOST_AUTO_TEST_CASE(json_summary_has_the_promised_fields_and_consistent_values) {
-  // Oracle: the README's JSON schema; bounces equals the number of contacts that bounced;
+  // Oracle: tools/README.md's JSON schema; bounces equals the number of contacts that bounced;
   // contact times are ordered; distance is the horizontal distance to the final position.
   const Run r = run("run cases/paper_8ms_spin.toml --set environment.convention=paper --json");
   BOOST_REQUIRE(r.status == 0);

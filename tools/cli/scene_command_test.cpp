@@ -1,4 +1,4 @@
-// End-to-end tests of `stoneskip scene`: the JSON the README promises, the movie (ffprobe reads it
+// End-to-end tests of `stoneskip scene`: the JSON solvers/README.md promises, the movie (ffprobe reads it
 // and counts the frames), and bad input (one line naming the key, exit 2, no movie left behind).
 // The seed's case is shrunk with --set (a 60 × 60 pond, a fraction of a second, small frames) so
 // that each test runs in a second or two.
@@ -43,7 +43,7 @@ long probed_frames(const fs::path& movie) {
 BOOST_AUTO_TEST_SUITE(scene_command_)
 
 BOOST_AUTO_TEST_CASE(json_reports_frames_speed_and_parts) {
-  // Oracle: the README's schema and the scene's definitions — N = duration · rate frames, the
+  // Oracle: solvers/README.md's schema and the scene's definitions — N = duration · rate frames, the
   // frame rate per CPU and wall second equal to frames over the summed times, the parts (wall)
   // within the wall time, and the throw the same as `stoneskip run` gives on the same water
   // (the scene runs the same stepper; it only goes on after the stone has sunk, and stops at its

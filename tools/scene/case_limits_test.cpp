@@ -88,8 +88,8 @@ BOOST_AUTO_TEST_CASE(a_mesh_file_that_is_no_file_names_the_key_and_the_path) {
 }
 
 BOOST_AUTO_TEST_CASE(an_unstable_scene_water_is_refused_naming_its_step) {
-  // Oracle: the nine-point isotropic stencil's von Neumann limit σ = √3/2 at μΔt = 0 (README,
-  // "The water surface"): the swell's 2 cm cells and c = 1.25 m/s allow Δt up to 0.866·0.02/1.25
+  // Oracle: the nine-point isotropic stencil's von Neumann limit σ = √3/2 at μΔt = 0 (model/README.md,
+  // §2.2): the swell's 2 cm cells and c = 1.25 m/s allow Δt up to 0.866·0.02/1.25
   // = 0.01386 s. At 0.05 s (σ = 3.1) main ran the throw on a blown-up surface and reported a sinking.
   const std::string text = std::string(kCase) + stoneskip::test::kPlainWater;
   BOOST_TEST(error_of(text, {}) == "");
@@ -132,7 +132,7 @@ y_m = 0.5
 }
 
 BOOST_AUTO_TEST_CASE(every_shipped_case_and_baseline_is_inside_the_bounds_and_limits) {
-  // Oracle: the shipped cases are the documented examples (README, cases/README.md): each must
+  // Oracle: the shipped cases are the documented examples (cases/README.md): each must
   // load and pass the default limits with the solvers it is run with.
   int stone = 0, wave = 0;
   for (const fs::path& dir : {fs::path("cases"), fs::path("cases/hard"), fs::path("cases/scenes"), fs::path("cases/studies")}) {

@@ -1,7 +1,7 @@
 #pragma once
 // A throw's result as words (terminal summary), as JSON, and as an HDF5 result file.
 //
-// HDF5 schema (see README.md, "Result files"):
+// HDF5 schema (see reports/README.md, "Result files of a throw"):
 //   /                 attributes: code_version, created_utc, case_file, case_text, overrides,
 //                     resolved_settings, title
 //   /stone            attributes: description, mass_kg, volume_m3, density_kg_m3, disk_radius_m;
