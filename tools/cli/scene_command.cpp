@@ -23,6 +23,7 @@
 #include "tools/cli/terminal_progress.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/subprocess.hpp"
 #include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/scene_throw.hpp"
 #include "tools/scene/throw_output.hpp"
@@ -37,6 +38,7 @@ struct SceneArgs {
   std::vector<std::string> sets;
   bool json = false;
   std::string movie;
+  bool movie_given = false;  // `--movie ""` is refused, not read as "no movie"
   std::string movie_size = "1280x540";
   double movie_rate_hz = 0;
   ResourceLimits limits;
@@ -59,8 +61,6 @@ class WorkFolder {
  private:
   fs::path path_;
 };
-
-bool tool_available(const char* command) { return std::system((std::string(command) + " >/dev/null 2>&1").c_str()) == 0; }
 
 std::string fixed(double v, int digits) {
   char buf[64];
@@ -168,6 +168,7 @@ void run(const SceneArgs& a) {
   std::unique_ptr<MovieRecorder> movie;
   std::unique_ptr<WorkFolder> work;
   MovieOptions mo;
+  if (a.movie_given && a.movie.empty()) throw_input_error("--movie", 0, "", "needs a file name (got an empty name)");
   if (!a.movie.empty()) {
     mo.output = a.movie;
     int w = 0, h = 0;
@@ -180,8 +181,8 @@ void run(const SceneArgs& a) {
     const std::string problem = mo.problem(o.frame_rate_hz);
     if (!problem.empty()) throw_input_error("--movie", 0, "", problem);
     { AtomicOutput check(mo.output); }  // the folder exists and is writable
-    if (!tool_available("gnuplot --version")) throw_input_error("--movie", 0, "", "gnuplot not found (apt-get install gnuplot-nox)");
-    if (!tool_available("ffmpeg -version")) throw_input_error("--movie", 0, "", "ffmpeg not found (apt-get install ffmpeg)");
+    if (!program_runs({"gnuplot", "--version"})) throw_input_error("--movie", 0, "", "gnuplot not found (apt-get install gnuplot-nox)");
+    if (!program_runs({"ffmpeg", "-version"})) throw_input_error("--movie", 0, "", "ffmpeg not found (apt-get install ffmpeg)");
     work = std::make_unique<WorkFolder>();
     movie = std::make_unique<MovieRecorder>(mo, o, work->path());
   }
@@ -223,7 +224,10 @@ void add_scene(CLI::App& app) {
   cmd->add_option("--movie-rate", a->movie_rate_hz,
                   "Movie frames per second: the scene's frame rate divided by a whole number (default: every frame for MP4, ≤ 30/s for GIF)");
   add_limit_options(cmd, a->limits);
-  cmd->callback([a] { run(*a); });
+  cmd->callback([a, cmd] {
+    a->movie_given = cmd->count("--movie") > 0;
+    run(*a);
+  });
 }
 
 const bool kRegistered = register_command(add_scene);

@@ -22,17 +22,18 @@ std::string small_seed(double seconds) {
          std::to_string(seconds);
 }
 
-// ffprobe's count of the video frames in a file (−1 if it cannot read it).
+// ffprobe's count of the video frames in a file (−1 if it cannot read it). The name is passed as a
+// "file:" URL so that ffprobe reads no option or protocol in it.
 long probed_frames(const fs::path& movie) {
-  const std::string cmd = "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 '" +
-                          movie.string() + "' 2>/dev/null";
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return -1;
-  char buf[64] = {0};
-  const bool read = std::fgets(buf, sizeof buf, p) != nullptr;
-  if (pclose(p) != 0 || !read) return -1;
+  stoneskip::SubprocessOptions o;
+  o.stderr_to = stoneskip::SubprocessOptions::Stderr::discarded;
+  const stoneskip::SubprocessResult p =
+      stoneskip::run_program({"ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+                              "stream=nb_read_frames", "-of", "csv=p=0", "file:" + fs::absolute(movie).string()},
+                             o);
+  if (!p.ok() || p.out.empty()) return -1;
   try {
-    return std::stol(buf);
+    return std::stol(p.out);
   } catch (...) {
     return -1;
   }

@@ -1,7 +1,7 @@
 #pragma once
 // Starting another program (gnuplot, ffmpeg, ffprobe, the stoneskip executable in tests) without a
 // shell: the program and its arguments are an argument vector handed to posix_spawnp, so a file
-// name is always data, never a command (no quoting, no `sh -c`). The child reads /dev/null, may
+// name is always data, never a command (no quoting, no shell). The child reads /dev/null, may
 // start in another working folder, and its output comes back as a string or line by line.
 //
 // While a child runs it is registered with the signal cleanup (tools/io/signal_cleanup.hpp): if
