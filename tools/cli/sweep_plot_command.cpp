@@ -13,6 +13,7 @@
 #include "tools/cli/command_registry.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/output_over_input.hpp"
 #include "tools/io/progress.hpp"
 
 namespace stoneskip::cli {
@@ -30,6 +31,7 @@ void run(const PlotArgs& a) {
   if (a.out && a.out->empty()) throw_input_error("--out", 0, "", "needs a folder name (got an empty one)");
   const std::filesystem::path dir =
       a.out ? std::filesystem::path(*a.out) : std::filesystem::path(std::filesystem::path(a.file).replace_extension("").string() + "_plots");
+  refuse_output_over_inputs(dir, OutputKind::folder, {a.file});
   if (!a.no_render && !gnuplot_available())
     throw_input_error("gnuplot", 0, "", "not found on PATH (apt-get install gnuplot-nox), or use --no-render");
   SweepMapOptions maps;
