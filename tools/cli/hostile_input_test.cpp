@@ -16,6 +16,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include <hdf5.h>
+
 #include "tools/cli/test_support.hpp"
 
 namespace fs = std::filesystem;
@@ -75,6 +77,17 @@ fs::path baseline_with(const Scratch& s, const std::string& from, const std::str
   BOOST_REQUIRE(text.find(from) != std::string::npos);
   text.replace(text.find(from), from.size(), to);
   return s.write("baseline.toml", text);
+}
+
+// Damages a result file as an editor would: one integer attribute overwritten in place.
+void set_int_attribute(const fs::path& file, const char* object, const char* name, long long value) {
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  BOOST_REQUIRE(f >= 0);
+  const hid_t a = H5Aopen_by_name(f, object, name, H5P_DEFAULT, H5P_DEFAULT);
+  BOOST_REQUIRE(a >= 0);
+  BOOST_REQUIRE(H5Awrite(a, H5T_NATIVE_LLONG, &value) >= 0);
+  H5Aclose(a);
+  H5Fclose(f);
 }
 
 }  // namespace
@@ -409,6 +422,39 @@ BOOST_AUTO_TEST_CASE(sweeps_too_large_or_written_where_they_must_not_be) {
   BOOST_TEST(run_apart(plot + (s.dir / "page").string()).status == 0);
   BOOST_TEST(fs::is_regular_file(s.dir / "page" / "index.md"));
   BOOST_TEST(s.holds_only({"big.toml", "huge.toml", "small.toml", "fifo", "s.h5", "page"}));
+}
+
+BOOST_AUTO_TEST_CASE(a_damaged_sweep_design_is_refused_by_sweep_plot) {
+  // main: an axis count of 0 → SIGFPE, -3 → SIGSEGV, 1e6 → 2.9 GB and growing. Oracle: the 2 × 2
+  // grid written here has 4 rows; a count below 1 breaks the design's own rule, and 1e6 × 2
+  // throws disagree with the table's 4 rows.
+  Scratch s;
+  const std::string base = (fs::current_path() / "cases" / "paper_8ms_spin.toml").string();
+  const fs::path sweep = s.write("small.toml", "base = \"" + base +
+                                                   "\"\n[design]\nkind = \"grid\"\n[[vary]]\nkey = \"throw.speed_m_s\"\nfrom = 4.0\nto = "
+                                                   "14.0\ncount = 2\n[[vary]]\nkey = \"throw.spin_rev_s\"\nfrom = 0.0\nto = 40.0\ncount = 2\n");
+  const fs::path good = s.dir / "good.h5";
+  BOOST_REQUIRE(run_apart({"sweep", sweep.string(), "--quiet", "--out", good.string()}).status == 0);
+  for (const auto& [count, fragment] : std::vector<std::pair<long long, std::string>>{
+           {0, "design.axis_0.count: must be >= 1 (got 0)"}, {-3, "design.axis_0.count: must be >= 1 (got -3)"},
+           {1000000, "describes 2000000 throws but /throws has 4 rows"}}) {
+    const fs::path bad = s.dir / ("bad" + std::to_string(count) + ".h5");
+    fs::copy_file(good, bad);
+    set_int_attribute(bad, "/design/axis_0", "count", count);
+    expect_refused(run_apart({"sweep-plot", bad.string(), "--no-render", "--out", (s.dir / "page").string()}), {bad.string(), fragment});
+    BOOST_TEST(!fs::exists(s.dir / "page"));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(bad_movie_options_are_refused_before_the_scene_runs) {
+  // main: --movie-rate 1e-300 → SIGFPE (a stride of 1e302 frames); --movie "" → no movie and exit
+  // 0. Oracle: the movie options' rules (a stride of at most a million frames, a file name).
+  Scratch s;
+  const std::string scene = "scene cases/scenes/seed_8ms.toml --set water.nx=60 --set water.ny=60 --set scene.duration_s=0.05";
+  expect_refused(run_apart(words(scene, {"--movie", (s.dir / "m.mp4").string(), "--movie-rate", "1e-300"})),
+                 {"--movie", "at least the scene's frame rate / 1000000 (got 1e-300)"});
+  expect_refused(run_apart(words(scene, {"--movie", ""})), {"--movie: needs a file name"});
+  BOOST_TEST(s.holds_only({}));
 }
 
 BOOST_AUTO_TEST_CASE(the_limits_are_lifted_by_their_flags) {

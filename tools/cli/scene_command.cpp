@@ -23,6 +23,7 @@
 #include "tools/cli/terminal_progress.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/signal_cleanup.hpp"
 #include "tools/io/subprocess.hpp"
 #include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/scene_throw.hpp"
@@ -44,13 +45,17 @@ struct SceneArgs {
   ResourceLimits limits;
 };
 
-// A folder for the movie's frames, removed with the object.
+// A folder for the movie's frames, removed with the object, or by the signal cleanup if a signal
+// ends the command (made and registered in one step under the cleanup's lock).
 class WorkFolder {
  public:
   WorkFolder() {
-    std::string tmpl = (fs::temp_directory_path() / "stoneskip-movie-XXXXXX").string();
-    if (!mkdtemp(tmpl.data())) throw std::runtime_error("cannot make a temporary folder for the movie's frames");
-    path_ = tmpl;
+    with_registry_lock([&] {
+      std::string tmpl = (fs::temp_directory_path() / "stoneskip-movie-XXXXXX").string();
+      if (!mkdtemp(tmpl.data())) throw std::runtime_error("cannot make a temporary folder for the movie's frames");
+      path_ = tmpl;
+      registered_ = RegisteredTemporary(path_, TemporaryKind::folder);
+    });
   }
   ~WorkFolder() {
     std::error_code ec;
@@ -60,6 +65,7 @@ class WorkFolder {
 
  private:
   fs::path path_;
+  RegisteredTemporary registered_;
 };
 
 std::string fixed(double v, int digits) {
