@@ -54,12 +54,15 @@ void write_dat(const fs::path& path, const Table& t) {
 }
 
 // Runs gnuplot on a script in `dir` (its working folder, so the script's relative names resolve
-// there); the script is an argument, never part of a command line. gnuplot's messages on failure.
-bool run_gnuplot(const fs::path& dir, const std::string& script_file, std::string& errors) {
+// there) with its output redirected to `output` (a name in `dir`, through the script's variable
+// OUT); the script is an argument, never part of a command line. gnuplot's messages on failure.
+bool run_gnuplot(const fs::path& dir, const std::string& script_file, const std::string& output, std::string& errors) {
   SubprocessOptions o;
   o.working_dir = dir;
   o.stderr_to = SubprocessOptions::Stderr::merged;
-  const SubprocessResult r = run_program({"gnuplot", safe_file_argument(script_file)}, o);
+  std::string quoted;  // a gnuplot single-quoted string: a quote is doubled, nothing else is special
+  for (char c : output) quoted += c == '\'' ? std::string("''") : std::string(1, c);
+  const SubprocessResult r = run_program({"gnuplot", "-e", "OUT='" + quoted + "'", safe_file_argument(script_file)}, o);
   errors = r.started ? r.out : r.error;
   if (r.started && !r.ok() && errors.empty())
     errors = r.signal ? "gnuplot ended by signal " + std::to_string(r.signal) : "gnuplot exited with status " + std::to_string(r.exit_status);
@@ -112,12 +115,13 @@ RenderSummary render_figures(const fs::path& dir, const std::vector<Figure>& fig
         gp << "set terminal pngcairo size " << f.width_px << "," << f.height_px << " enhanced font 'Sans,10'\n";
       else
         gp << "set terminal svg size " << f.width_px << "," << f.height_px << " enhanced font 'Sans,10' background '#ffffff'\n";
-      gp << "set output '" << image.temporary_path().filename().string() << "'\n";
+      // The kept script draws <name>.<kind> when a reader runs it; render sets OUT to the temporary.
+      gp << "set output (exists('OUT') ? OUT : '" << f.name << "." << kind << "')\n";
       gp << "set encoding utf8\nset datafile missing 'NaN'\n";
       gp << f.script << "\nset output\n";
       write_text_file(fig_dir / script_name(f, kind), gp.str());
       std::string errors;
-      if (!run_gnuplot(fig_dir, script_name(f, kind), errors)) {
+      if (!run_gnuplot(fig_dir, script_name(f, kind), image.temporary_path().filename().string(), errors)) {
         summary.failures.push_back(f.name + "." + kind + ": " + errors.substr(0, errors.find('\n', 200)));
         continue;
       }

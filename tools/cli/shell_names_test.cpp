@@ -108,7 +108,7 @@ BOOST_AUTO_TEST_CASE(capture_validate_and_report_render_draw_into_a_folder_of_an
     if (made.status != 0) continue;
     BOOST_TEST(fs::is_regular_file(s.dir / name / "index.md"), name);
     BOOST_TEST(png_count(s.dir / name / "figures") > 0, name);
-    const Ran again = run_in(s.dir, {"report", "render", name});
+    const Ran again = run_in(s.dir, {"report", "render", "--", name});  // "--": "-x" is the folder, not an option
     expect_written_or_refused(s, before, again, name, "report render");
   }
 }
