@@ -103,6 +103,7 @@ BOOST_AUTO_TEST_CASE(capture_validate_refuses_a_report_folder_that_holds_its_rec
                           log, bytes, "holds the input");
   // capture convert and capture throw: the same rule for a file output.
   expect_refused_and_kept(run_apart({"capture", "convert", log.string(), "--out", log.string()}), log, bytes, "is the input");
+  expect_refused_and_kept(run_apart({"capture", "throw", log.string(), "--out", log.string()}), log, bytes, "is the input");
 }
 
 BOOST_AUTO_TEST_SUITE_END()
