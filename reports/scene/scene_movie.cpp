@@ -96,6 +96,16 @@ std::string MovieOptions::problem(double scene_rate_hz) const {
   return "";
 }
 
+int MovieOptions::stride(double scene_rate_hz) const {
+  MovieFormat f;
+  return movie_format_of(output, f) ? movie_stride(f, scene_rate_hz, rate_hz) : 1;
+}
+
+long MovieOptions::frames(const SceneOptions& scene) const {
+  MovieFormat f;
+  return movie_format_of(output, f) ? scene.frames() / stride(scene.frame_rate_hz) : 0;
+}
+
 MovieRecorder::MovieRecorder(const MovieOptions& options, const SceneOptions& scene, fs::path work_dir)
     : o_(options), dir_(std::move(work_dir)), scene_rate_hz_(scene.frame_rate_hz),
       has_field_(scene.coupling != Coupling::none && scene.water.has_value()), stone_radius_m_(scene.stone.disk_radius_m) {

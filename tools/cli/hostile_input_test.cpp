@@ -457,12 +457,16 @@ BOOST_AUTO_TEST_CASE(a_damaged_sweep_design_is_refused_by_sweep_plot) {
 
 BOOST_AUTO_TEST_CASE(bad_movie_options_are_refused_before_the_scene_runs) {
   // main: --movie-rate 1e-300 → SIGFPE (a stride of 1e302 frames); --movie "" → no movie and exit
-  // 0. Oracle: the movie options' rules (a stride of at most a million frames, a file name).
+  // 0; a scene shorter than one movie frame failed only after it had run. Oracle: the movie
+  // options' rules (a stride of at most a million frames, a file name, ⌊N / stride⌋ ≥ 1).
   Scratch s;
   const std::string scene = "scene cases/scenes/seed_8ms.toml --set water.nx=60 --set water.ny=60 --set scene.duration_s=0.05";
   expect_refused(run_apart(words(scene, {"--movie", (s.dir / "m.mp4").string(), "--movie-rate", "1e-300"})),
                  {"--movie", "at least the scene's frame rate / 1000000 (got 1e-300)"});
   expect_refused(run_apart(words(scene, {"--movie", ""})), {"--movie: needs a file name"});
+  // 0.05 s at 90 frames/s is 4 scene frames; one movie frame a second needs 90 of them.
+  expect_refused(run_apart(words(scene, {"--movie", (s.dir / "m.mp4").string(), "--movie-rate", "1"})),
+                 {"--movie: the scene's 4 frames make no movie frame (one is drawn every 90 scene frames)"});
   BOOST_TEST(s.holds_only({}));
 }
 

@@ -186,6 +186,10 @@ void run(const SceneArgs& a) {
     mo.rate_hz = a.movie_rate_hz;
     const std::string problem = mo.problem(o.frame_rate_hz);
     if (!problem.empty()) throw_input_error("--movie", 0, "", problem);
+    // Known now, not after the whole scene has run: a scene shorter than one movie frame.
+    if (mo.frames(o) < 1)
+      throw_input_error("--movie", 0, "", "the scene's " + std::to_string(o.frames()) + " frames make no movie frame (one is drawn every " +
+                                              std::to_string(mo.stride(o.frame_rate_hz)) + " scene frames)");
     { AtomicOutput check(mo.output); }  // the folder exists and is writable
     if (!program_runs({"gnuplot", "--version"})) throw_input_error("--movie", 0, "", "gnuplot not found (apt-get install gnuplot-nox)");
     if (!program_runs({"ffmpeg", "-version"})) throw_input_error("--movie", 0, "", "ffmpeg not found (apt-get install ffmpeg)");
