@@ -430,6 +430,13 @@ BOOST_AUTO_TEST_CASE(sweeps_too_large_or_written_where_they_must_not_be) {
   BOOST_TEST(run_apart(plot + (s.dir / "page").string()).status == 0);
   BOOST_TEST(run_apart(plot + (s.dir / "page").string()).status == 0);
   BOOST_TEST(fs::is_regular_file(s.dir / "page" / "index.md"));
+  // A page with a file of the user's in it, or a data.h5 that is no page's, is not replaced.
+  std::ofstream(s.dir / "page" / "notes.txt") << "mine\n";
+  expect_refused(run_apart(plot + (s.dir / "page").string()), {"not a folder stoneskip made"});
+  BOOST_TEST(fs::exists(s.dir / "page" / "notes.txt"));
+  fs::remove(s.dir / "page" / "notes.txt");
+  fs::copy_file(s.dir / "page" / "index.md", s.dir / "page" / "data.h5", fs::copy_options::overwrite_existing);
+  expect_refused(run_apart(plot + (s.dir / "page").string()), {"not a folder stoneskip made"});
   BOOST_TEST(s.holds_only({"big.toml", "huge.toml", "small.toml", "fifo", "s.h5", "page"}));
 }
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "reports/common/report_build.hpp"
 #include "reports/sweep/sweep_page.hpp"
 #include "tools/cli/command_registry.hpp"
 #include "tools/io/atomic_file.hpp"
@@ -37,8 +38,15 @@ void run(const PlotArgs& a) {
   SweepMapOptions maps;
   maps.columns = a.columns;
   // Built whole in a work folder, then moved into place; a page made before may be replaced.
+  // A page is an index.md, a data.h5 holding /figures, a figures/ folder and nothing else: a
+  // folder with the user's files in it (or a data.h5 that is not a page's) is never replaced.
   AtomicFolder out(dir, [](const std::filesystem::path& d) {
-    return std::filesystem::is_regular_file(d / "index.md") && std::filesystem::is_regular_file(d / "data.h5");
+    if (!std::filesystem::is_regular_file(d / "index.md") || !holds_only_report_files(d)) return false;
+    try {
+      return Hdf5Reader(d / "data.h5").root().has("figures");
+    } catch (const std::exception&) {
+      return false;
+    }
   });
   std::optional<SweepPageSummary> page;
   {
