@@ -1,6 +1,6 @@
 // Output names that a shell would read as commands, given to every command that writes through an
 // external program (gnuplot: `report render`, `capture validate --out`, `sweep-plot`; gnuplot and
-// ffmpeg: `scene --movie`). Oracle: through `sh -c` each name below runs `touch PWNED` (or is read
+// ffmpeg: `scene --movie`). Oracle: through a shell each name below runs `touch PWNED` (or is read
 // by gnuplot/ffmpeg as an option); started with an argument vector it is only a name, so the one
 // allowed outcomes are the named output written whole, or exit 2 with one line and nothing
 // written — and no file named PWNED anywhere.
