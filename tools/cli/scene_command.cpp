@@ -162,14 +162,7 @@ void run(const SceneArgs& a) {
   if (!o.valid(&why)) throw_input_error(c.file, 0, "scene", why);
   // Limits before any work (cases/README.md, Limits): the stone and its water over the scene's
   // duration (the stone stops at its t_max_s, the water runs on), and a cost record per frame.
-  {
-    StoneCase over = c;
-    over.realtime.t_max_s = std::max(c.realtime.t_max_s, o.duration_s);
-    ResourceEstimate e = estimate_run(over, RunSolvers{true, false, false});
-    const double frames = o.duration_s * o.frame_rate_hz;
-    e.add_memory(frames * 64.0, std::to_string(static_cast<long long>(frames)) + " frames' records");
-    enforce_limits(e, a.limits, c.file);
-  }
+  enforce_limits(estimate_scene(c, o.duration_s, o.frame_rate_hz), a.limits, c.file);
   // The movie's settings and tools are checked before any work.
   std::unique_ptr<MovieRecorder> movie;
   std::unique_ptr<WorkFolder> work;
@@ -190,6 +183,9 @@ void run(const SceneArgs& a) {
     if (mo.frames(o) < 1)
       throw_input_error("--movie", 0, "", "the scene's " + std::to_string(o.frames()) + " frames make no movie frame (one is drawn every " +
                                               std::to_string(mo.stride(o.frame_rate_hz)) + " scene frames)");
+    // The movie's drawing and its temporary frames are held to limits too (1e8 frames were accepted).
+    enforce_limits(estimate_movie(static_cast<double>(mo.frames(o)), mo.width_px, mo.height_px, mo.top_cells_max, mo.near_cells_max),
+                   a.limits, "--movie");
     { AtomicOutput check(mo.output); }  // the folder exists and is writable
     if (!program_runs({"gnuplot", "--version"})) throw_input_error("--movie", 0, "", "gnuplot not found (apt-get install gnuplot-nox)");
     if (!program_runs({"ffmpeg", "-version"})) throw_input_error("--movie", 0, "", "ffmpeg not found (apt-get install ffmpeg)");
