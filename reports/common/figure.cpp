@@ -1,13 +1,14 @@
 #include "reports/common/figure.hpp"
 
+#include <sys/stat.h>
+
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
 #include "tools/io/atomic_file.hpp"
+#include "tools/io/input_error.hpp"
+#include "tools/io/subprocess.hpp"
 
 namespace stoneskip {
 
@@ -28,7 +29,7 @@ void store_figure(const H5Group& figures_group, const Figure& fig) {
   g.write_strings("table_order", order);
 }
 
-bool gnuplot_available() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
+bool gnuplot_available() { return program_runs({"gnuplot", "--version"}); }
 
 namespace {
 
@@ -52,45 +53,80 @@ void write_dat(const fs::path& path, const Table& t) {
   write_text_file(path, s.str());
 }
 
-int run_gnuplot(const fs::path& dir, const std::string& script_file, std::string& errors) {
-  fs::path err = dir / (script_file + ".err");
-  std::string cmd = "cd '" + dir.string() + "' && gnuplot '" + script_file + "' 2>'" + err.filename().string() + "'";
-  int rc = std::system(cmd.c_str());
-  std::ifstream in(err);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  errors = ss.str();
-  std::error_code ec;
-  fs::remove(err, ec);
-  return rc;
+// Runs gnuplot on a script in `dir` (its working folder, so the script's relative names resolve
+// there) with its output redirected to `output` (a name in `dir`, through the script's variable
+// OUT); the script is an argument, never part of a command line. gnuplot's messages on failure.
+bool run_gnuplot(const fs::path& dir, const std::string& script_file, const std::string& output, std::string& errors) {
+  SubprocessOptions o;
+  o.working_dir = dir;
+  o.stderr_to = SubprocessOptions::Stderr::merged;
+  std::string quoted;  // a gnuplot single-quoted string: a quote is doubled, nothing else is special
+  for (char c : output) quoted += c == '\'' ? std::string("''") : std::string(1, c);
+  const SubprocessResult r = run_program({"gnuplot", "-e", "OUT='" + quoted + "'", safe_file_argument(script_file)}, o);
+  errors = r.started ? r.out : r.error;
+  if (r.started && !r.ok() && errors.empty())
+    errors = r.signal ? "gnuplot ended by signal " + std::to_string(r.signal) : "gnuplot exited with status " + std::to_string(r.exit_status);
+  return r.ok();
+}
+
+// The figures folder is made if absent; anything but a plain folder there (a link to somewhere
+// else, a file) is refused, since everything below is written inside it.
+void require_figures_folder(const fs::path& fig_dir) {
+  struct stat st {};
+  if (::lstat(fig_dir.c_str(), &st) != 0) {
+    fs::create_directory(fig_dir);
+    return;
+  }
+  if (!S_ISDIR(st.st_mode))
+    throw_input_error(fig_dir.string(), 0, "", "exists and is " + file_type_words(st.st_mode) + ", not a folder: cannot draw the figures into it");
+}
+
+const char* const kKinds[] = {"png", "svg"};
+
+std::string script_name(const Figure& f, const std::string& kind) { return f.name + (kind == "png" ? ".gp" : ".svg.gp"); }
+
+// Every file the figures will write, checked before the first is written (a link, a FIFO or a
+// device among them is refused with nothing changed).
+void check_figure_destinations(const fs::path& fig_dir, const std::vector<Figure>& figs) {
+  for (const auto& f : figs) {
+    for (const auto& [name, table] : f.tables) check_output_destination(fig_dir / (name + ".dat"));
+    for (const std::string kind : kKinds) {
+      check_output_destination(fig_dir / (f.name + "." + kind));
+      check_output_destination(fig_dir / script_name(f, kind));
+    }
+  }
 }
 
 }  // namespace
 
 RenderSummary render_figures(const fs::path& dir, const std::vector<Figure>& figs) {
   RenderSummary summary;
-  fs::path fig_dir = dir / "figures";
-  fs::create_directories(fig_dir);
+  const fs::path fig_dir = dir / "figures";
+  require_figures_folder(fig_dir);
+  check_figure_destinations(fig_dir, figs);
   for (const auto& f : figs) {
     for (const auto& [name, table] : f.tables) write_dat(fig_dir / (name + ".dat"), table);
-    for (const char* kind : {"png", "svg"}) {
+    for (const std::string kind : kKinds) {
+      // gnuplot draws into a temporary beside the final name, renamed over it when whole: never
+      // through a link or into a FIFO put there (AtomicOutput checks the name again on commit).
+      AtomicOutput image(fig_dir / (f.name + "." + kind));
       std::ostringstream gp;
-      if (std::string(kind) == "png")
+      if (kind == "png")
         gp << "set terminal pngcairo size " << f.width_px << "," << f.height_px << " enhanced font 'Sans,10'\n";
       else
         gp << "set terminal svg size " << f.width_px << "," << f.height_px << " enhanced font 'Sans,10' background '#ffffff'\n";
-      gp << "set output '" << f.name << "." << kind << "'\n";
+      // The kept script draws <name>.<kind> when a reader runs it; render sets OUT to the temporary.
+      gp << "set output (exists('OUT') ? OUT : '" << f.name << "." << kind << "')\n";
       gp << "set encoding utf8\nset datafile missing 'NaN'\n";
-      gp << f.script << "\n";
-      std::string script_name = f.name + (std::string(kind) == "png" ? ".gp" : ".svg.gp");
-      write_text_file(fig_dir / script_name, gp.str());
+      gp << f.script << "\nset output\n";
+      write_text_file(fig_dir / script_name(f, kind), gp.str());
       std::string errors;
-      int rc = run_gnuplot(fig_dir, script_name, errors);
-      if (rc != 0) {
+      if (!run_gnuplot(fig_dir, script_name(f, kind), image.temporary_path().filename().string(), errors)) {
         summary.failures.push_back(f.name + "." + kind + ": " + errors.substr(0, errors.find('\n', 200)));
-      } else if (std::string(kind) == "png") {
-        ++summary.rendered;
+        continue;
       }
+      image.commit();
+      if (kind == "png") ++summary.rendered;
     }
   }
   return summary;

@@ -30,7 +30,9 @@ struct RenderSummary {
 };
 
 // Writes <dir>/figures/<name>.{gp,png,svg} and the .dat files; runs gnuplot (PNG via pngcairo,
-// and SVG). A figure that gnuplot rejects is listed in the summary, never silently dropped.
+// and SVG). A figure that gnuplot rejects is listed in the summary, never silently dropped. Every
+// file is written beside its final name and renamed over it: a link, FIFO or device there (or a
+// `figures` that is not a plain folder) is refused with InputError before anything is written.
 RenderSummary render_figures(const std::filesystem::path& dir, const std::vector<Figure>& figs);
 
 // Markdown for a figure: ![title](figures/name.png) with a link to the SVG.

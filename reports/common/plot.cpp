@@ -9,6 +9,9 @@ std::string gnuplot_quote(const std::string& s) {
   std::string out;
   for (char c : s) {
     if (c == '\'') out += "''";
+    // A line break would end the quoted string and the command: the rest of a title from a data
+    // file would run as gnuplot commands (gnuplot's `system` starts programs). Shown as a space.
+    else if (c == '\n' || c == '\r') out += ' ';
     // Enhanced text reads these as markup (subscript, overprint, phantom, …); a backslash prints
     // them as written (gnuplot 5.4 "enhanced text": a single backslash inside single quotes).
     // ^ { } stay markup: labels use them for exponents (10^{-3}).

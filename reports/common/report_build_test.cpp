@@ -97,6 +97,37 @@ BOOST_AUTO_TEST_CASE(a_file_link_or_empty_name_as_the_folder_is_refused_before_a
   BOOST_TEST(fs::is_symlink(s.dir / "alink"));
 }
 
+BOOST_AUTO_TEST_CASE(a_report_folder_with_anything_of_the_users_in_it_is_not_replaced) {
+  // Oracle: the files a report writes (index.md, data.h5, figures/ of .png/.svg/.gp/.dat); one
+  // more file of any other name, a link among the figures or a folder inside figures/ makes the
+  // folder the user's, and a build refuses to replace it.
+  Scratch s;
+  const fs::path out = s.dir / "rep";
+  {
+    ReportBuild b(options(out));
+    b.store("first", section(1.5));
+    b.assemble(Record{});
+    b.commit();
+  }
+  fs::create_directories(out / "figures");
+  std::ofstream(out / "figures" / "a.png") << "png";
+  std::ofstream(out / "figures" / "a.png.tmp-123") << "left by a killed render";
+  std::ofstream(out / "index.md") << "# report\n";
+  BOOST_TEST(is_report_folder(out));
+  std::ofstream(out / "notes.txt") << "mine\n";
+  BOOST_TEST(!is_report_folder(out));
+  BOOST_CHECK_THROW(ReportBuild b(options(out)), InputError);
+  BOOST_TEST(fs::exists(out / "notes.txt"));
+  fs::remove(out / "notes.txt");
+  fs::create_symlink(s.dir / "elsewhere.png", out / "figures" / "b.png");
+  BOOST_TEST(!is_report_folder(out));
+  fs::remove(out / "figures" / "b.png");
+  fs::create_directory(out / "figures" / "mine");
+  BOOST_TEST(!is_report_folder(out));
+  fs::remove(out / "figures" / "mine");
+  BOOST_TEST(is_report_folder(out));
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace

@@ -1,17 +1,16 @@
 #include "reports/scene/scene_movie.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-#include <sys/wait.h>
 
 #include "reports/scene/frame_plot.hpp"
 #include "solvers/realtime/clocks.hpp"
 #include "tools/io/atomic_file.hpp"
+#include "tools/io/subprocess.hpp"
 #include "verification/scene/scene_still.hpp"
 
 namespace stoneskip {
@@ -28,6 +27,8 @@ bool movie_format_of(const fs::path& file, MovieFormat& out) {
 }
 
 namespace {
+
+constexpr int kMaxStride = 1000000;
 
 // The stride of scene frames between movie frames.
 int movie_stride(MovieFormat f, double scene_rate_hz, double rate_hz) {
@@ -55,19 +56,21 @@ double means(const HeightField* field, int i0, int j0, int n, int m, int b, std:
   return 0;
 }
 
-// Runs a shell command, calling on_line for every line it prints (stdout and stderr); its status.
-int run_lines(const std::string& cmd, const std::function<void(const std::string&)>& on_line) {
-  FILE* p = popen((cmd + " 2>&1").c_str(), "r");
-  if (!p) return -1;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), buf.size(), p)) {
-    std::string line = buf.data();
-    while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
-    on_line(line);
-  }
-  const int st = pclose(p);
-  return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+// Runs a program (argument vector, no shell) in `dir`, calling on_line for every line it prints
+// (stdout and stderr); its exit status, or -1 if it could not start or was killed.
+int run_lines(const std::vector<std::string>& argv, const fs::path& dir, const std::function<void(const std::string&)>& on_line) {
+  SubprocessOptions o;
+  o.working_dir = dir;
+  o.stderr_to = SubprocessOptions::Stderr::merged;
+  o.on_line = on_line;
+  const SubprocessResult r = run_program(argv, o);
+  if (!r.started) on_line(r.error);
+  return r.started ? r.exit_status : -1;
 }
+
+// ffmpeg reads a name with "proto:" as a protocol and one with a leading '-' as an option; a
+// "file:" URL with an absolute path is always the plain file.
+std::string ffmpeg_file(const fs::path& p) { return "file:" + fs::absolute(p).string(); }
 
 }  // namespace
 
@@ -79,12 +82,28 @@ std::string MovieOptions::problem(double scene_rate_hz) const {
   if (rate_hz < 0 || !std::isfinite(rate_hz)) return "the movie rate must be > 0";
   if (rate_hz > 0) {
     const double stride = scene_rate_hz / rate_hz;
+    // A stride beyond a million frames would not fit the frame counter (1e-300 frames/s: SIGFPE).
+    if (!(stride <= kMaxStride)) {
+      char got[64];
+      std::snprintf(got, sizeof got, "%g", rate_hz);
+      return "the movie rate must be at least the scene's frame rate / " + std::to_string(kMaxStride) + " (got " + got + ")";
+    }
     if (stride < 1 - 1e-9 || std::abs(stride - std::round(stride)) > 1e-6)
       return "the movie rate must be the scene's frame rate divided by a whole number";
     if (f == MovieFormat::gif && rate_hz > 50) return "a GIF plays at most 50 frames/s (delays are whole hundredths of a second)";
   }
   if (!(near_window_m > 0) || near_cells_max < 8 || top_cells_max < 16) return "bad movie window sizes";
   return "";
+}
+
+int MovieOptions::stride(double scene_rate_hz) const {
+  MovieFormat f;
+  return movie_format_of(output, f) ? movie_stride(f, scene_rate_hz, rate_hz) : 1;
+}
+
+long MovieOptions::frames(const SceneOptions& scene) const {
+  MovieFormat f;
+  return movie_format_of(output, f) ? scene.frames() / stride(scene.frame_rate_hz) : 0;
 }
 
 MovieRecorder::MovieRecorder(const MovieOptions& options, const SceneOptions& scene, fs::path work_dir)
@@ -221,7 +240,7 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
   {
     auto ticker = start_progress(progress, "movie: drawing frames", frames_.size());
     std::string errors;
-    const int rc = run_lines("cd '" + dir_.string() + "' && gnuplot movie.gp", [&](const std::string& line) {
+    const int rc = run_lines({"gnuplot", "movie.gp"}, dir_, [&](const std::string& line) {
       if (line.rfind("frame ", 0) == 0) ticker->tick();
       else if (errors.size() < 2000) errors += line + "\n";
     });
@@ -231,15 +250,18 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
   // 5. Assemble.
   const WallTimer encode;
   AtomicOutput out(o_.output);
-  std::ostringstream cmd;
-  cmd << "ffmpeg -nostdin -y -loglevel error -framerate " << s.rate_hz << " -i '" << (dir_ / "frame_%05d.png").string() << "' ";
+  std::ostringstream rate;
+  rate.precision(12);
+  rate << s.rate_hz;
+  std::vector<std::string> ffmpeg = {"ffmpeg", "-nostdin", "-y", "-loglevel", "error", "-framerate", rate.str(),
+                                     "-i", fs::absolute(dir_ / "frame_%05d.png").string()};
   if (format_ == MovieFormat::mp4)
-    cmd << "-c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -f mp4 ";
+    ffmpeg.insert(ffmpeg.end(), {"-c:v", "libx264", "-pix_fmt", "yuv420p", "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-f", "mp4"});
   else
-    cmd << "-vf 'split[a][b];[a]palettegen[p];[b][p]paletteuse' -f gif ";
-  cmd << "'" << out.temporary_path().string() << "'";
+    ffmpeg.insert(ffmpeg.end(), {"-vf", "split[a][b];[a]palettegen[p];[b][p]paletteuse", "-f", "gif"});
+  ffmpeg.push_back(ffmpeg_file(out.temporary_path()));
   std::string errors;
-  const int rc = run_lines(cmd.str(), [&](const std::string& line) {
+  const int rc = run_lines(ffmpeg, dir_, [&](const std::string& line) {
     if (errors.size() < 2000) errors += line + "\n";
   });
   if (rc != 0) throw std::runtime_error("movie: ffmpeg failed (status " + std::to_string(rc) + "): " + errors);

@@ -35,6 +35,10 @@ struct MovieOptions {
   // Empty when usable with a scene of this frame rate; else what is wrong (a rate that does not
   // divide the scene's, a size out of range, an unknown format).
   std::string problem(double scene_rate_hz) const;
+  // For a usable scene (problem() empty): scene frames per movie frame, and the movie's frames
+  // ⌊N / stride⌋ (0 for an unknown format).
+  int stride(double scene_rate_hz) const;
+  long frames(const SceneOptions& scene) const;
 };
 
 struct MovieSummary {

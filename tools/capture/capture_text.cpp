@@ -12,7 +12,9 @@ std::vector<TextLine> split_capture_lines(const std::string& text, const std::st
   std::size_t begin = 0;
   for (std::size_t i = 0; i < text.size(); ++i) {
     const unsigned char c = static_cast<unsigned char>(text[i]);
-    if (c == '\n') {
+    // A line ends at LF, CR LF, or a lone CR (classic Mac OS files, some loggers).
+    const bool lone_cr = c == '\r' && (i + 1 == text.size() || text[i + 1] != '\n');
+    if (c == '\n' || lone_cr) {
       std::string_view t(text.data() + begin, i - begin);
       if (!t.empty() && t.back() == '\r') t.remove_suffix(1);
       lines.push_back({number, t, false});

@@ -105,6 +105,11 @@ std::vector<Column> mapped_columns(const std::string& spec, const std::vector<st
       const auto u = parse_csv_unit(parts.unit_text);
       if (u) unit = *u;
     }
+    for (const Column& other : out)
+      if (other.index == found)
+        throw_input_error("--columns", 0, std::string(key),
+                          "column '" + std::string(headers[found]) + "' is already mapped to " +
+                              csv_field_info(other.rc.field).key + " (a column holds one quantity)");
     Column c;
     c.index = found;
     c.header = std::string(headers[found]);
@@ -212,6 +217,17 @@ Trace read_header_csv(const std::string& text, const std::string& file, const He
     if (std::any_of(columns.begin(), columns.end(), [&](const Column& c) { return c.index == i; })) continue;
     const auto rc = recognise_column(headers[i]);
     if (!rc) {
+      // A known name with a bracketed unit we cannot read ("Acc X [mg]"): say so, naming the unit.
+      const HeaderParts parts = split_header(headers[i]);
+      if (parts.has_bracket_unit && !parse_csv_unit(parts.unit_text))
+        if (const auto named = recognise_column(parts.name)) {
+          std::string allowed;
+          for (CsvUnit u : csv_field_info(named->field).units)
+            if (u != CsvUnit::none) allowed += std::string(allowed.empty() ? "" : ", ") + to_string(u);
+          throw_input_error(file, column_line.number, std::string(headers[i]),
+                            "unit '" + parts.unit_text + "' is not supported for " + csv_field_info(named->field).meaning +
+                                " (" + (allowed.empty() ? "no unit" : allowed) + ")");
+        }
       if (!headers[i].empty()) unrecognised.push_back("'" + std::string(headers[i]) + "'");
       continue;
     }

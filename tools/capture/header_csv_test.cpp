@@ -3,6 +3,8 @@
 // read back as), and defects planted on known lines and columns (what the error must name).
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
+
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -250,6 +252,30 @@ BOOST_AUTO_TEST_CASE(bad_input_names_the_file_the_line_and_the_column) {
   const Trace t = parse_capture(head + "0,0,0,1,1f7f,1f7f,1f7f\n10,0,0,1,1f7f,1f7f,1f7f\n20,0,0", "cut.csv");
   BOOST_TEST(t.samples.size() == 2u);
   BOOST_TEST(t.warnings.size() == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(a_column_mapped_to_several_keys_or_with_an_unknown_unit_is_refused_by_name) {
+  // Oracle: a column holds one quantity, so "Acc X" given as ax, ay and az is an error naming the
+  // column and its first key; a known name with a unit stoneskip cannot read names that unit.
+  const std::string head = "Time,Acc X,Acc Y,Acc Z\n0,0,0,1\n10,0,0,1\n";
+  const std::string twice = error_of(head, {0, "ax=Acc X,ay=Acc X,az=Acc X"});
+  BOOST_TEST(contains(twice, "--columns: ay: column 'Acc X' is already mapped to ax"), twice);
+  BOOST_TEST(twice.find('\n') == std::string::npos);
+  const std::string mg = error_of("Time,Acc X [mg],Acc Y [mg],Acc Z [mg],Gyro X,Gyro Y,Gyro Z\n0,0,0,1000,0,0,0\n");
+  BOOST_TEST(contains(mg, "bad.csv:1: Acc X [mg]: unit 'mg' is not supported"), mg);
+}
+
+BOOST_AUTO_TEST_CASE(cr_only_line_endings_read_as_lf_line_endings) {
+  // Oracle: the same file with LF endings; CR-only (classic Mac OS) must give the same samples.
+  const std::string lf = "Time,Acc X,Acc Y,Acc Z\n0,0,0,1\n10,0.5,0,1\n20,1,0,1\n";
+  std::string cr = lf;
+  std::replace(cr.begin(), cr.end(), '\n', '\r');
+  const Trace a = parse_capture(lf, "lf.csv"), b = parse_capture(cr, "cr.csv");
+  BOOST_REQUIRE(b.samples.size() == 3u);
+  for (std::size_t i = 0; i < a.samples.size(); ++i) {
+    BOOST_TEST(a.samples[i].t_s == b.samples[i].t_s);
+    BOOST_TEST(a.samples[i].accel_g.x() == b.samples[i].accel_g.x());
+  }
 }
 
 BOOST_AUTO_TEST_CASE(the_first_remote_with_data_is_read_by_default) {

@@ -27,12 +27,6 @@ constexpr int kTimeout_s = 30;
 
 const char* const kStone = stoneskip::test::kPlainStoneCase;
 
-std::string shell_quoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
 std::string replace_once(std::string s, const std::string& from, const std::string& to) {
   return s.replace(s.find(from), from.size(), to);
 }
@@ -86,20 +80,20 @@ BOOST_AUTO_TEST_CASE(one_bad_value_per_documented_key_through_its_command) {
     const auto bad = bad_values(k);
     BOOST_REQUIRE(!bad.empty());
     const BadValue& v = bad[static_cast<std::size_t>(per_block[k.block]++) % bad.size()];
-    std::string args;
+    stoneskip::test::Args args;
     if (k.block == "stone" || k.block == "scene") {
       std::string base = (dir / "stone.toml").string();
       if (k.block == "scene") base = "cases/scenes/swell_8ms.toml";
       else if (k.section == "throw.state") base = (dir / "state.toml").string();
       else if (k.full() == "stone.mass_kg") base = (dir / "mass.toml").string();
       else if (k.full() == "stone.mesh_file" || k.full() == "stone.disk_radius_m") base = (dir / "mesh.toml").string();
-      args = "run " + base + " --set " + shell_quoted(k.full() + "=" + v.text) + " --out " + (out / "x.h5").string();
+      args = {"run", base, "--set", k.full() + "=" + v.text, "--out", (out / "x.h5").string()};
     } else if (k.block == "wave") {
       std::string base = "cases/wave_gaussian_five_point.toml";
       if (k.section == "stencil") base = "cases/wave_custom_stencil_pool.toml";
       else if (k.key == "radius_m") base = "cases/wave_ring_paper_eq11.toml";
       else if (k.key == "wavelength_m" || k.key == "angle_deg") base = "cases/wave_plane_wave_30deg.toml";
-      args = "wave " + base + " --set " + shell_quoted(k.full() + "=" + v.text);
+      args = {"wave", base, "--set", k.full() + "=" + v.text};
     } else if (k.block == "sweep") {
       // The README's sweep block, its base made absolute, the key's line rewritten.
       std::string text = sweep_text_with(k, v.text);
@@ -107,14 +101,14 @@ BOOST_AUTO_TEST_CASE(one_bad_value_per_documented_key_through_its_command) {
       if (text.find("base = \"../") != std::string::npos)
         text = replace_once(text, "base = \"../", "base = \"" + (fs::current_path() / "cases").string() + "/");
       std::ofstream(dir / "sweep.toml") << text;
-      args = "sweep " + (dir / "sweep.toml").string() + " --quiet --out " + (out / "x.h5").string();
+      args = {"sweep", (dir / "sweep.toml").string(), "--quiet", "--out", (out / "x.h5").string()};
     } else {
       std::string text = baseline;
       const auto p = text.find("\n" + k.key + " = ");
       BOOST_REQUIRE(p != std::string::npos);
       text.replace(p + 1, text.find('\n', p + 1) - p - 1, k.key + " = " + v.text);
       std::ofstream(dir / "baseline.toml") << text;
-      args = "regress --baseline " + (dir / "baseline.toml").string();
+      args = {"regress", "--baseline", (dir / "baseline.toml").string()};
     }
     const RanApart r = run_apart(args, kTimeout_s);
     BOOST_TEST_CONTEXT(k.block << ": " << k.full() << " = " << v.text << " (" << v.why << ")") {

@@ -5,7 +5,12 @@
 // summed CPU fits in workers × wall, and the counts are duration × rate and spins × angles.
 #include <boost/test/unit_test.hpp>
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "tools/cli/test_support.hpp"
@@ -39,6 +44,36 @@ BOOST_AUTO_TEST_CASE(bench_json_names_every_headline_figure_and_they_agree) {
   BOOST_TEST(j["scene_frames"].get<long>() == 45);  // the quick scene: 0.5 s at 90 frames/s
   BOOST_TEST(j["sweep_throws"].get<long>() == 6);   // 3 spins × 2 attack angles
   BOOST_TEST(j["sweep_throws_per_s"].get<double>() * j["sweep_wall_s"].get<double>() == 6.0, boost::test_tools::tolerance(kRoundoff));
+}
+
+BOOST_AUTO_TEST_CASE(bench_scene_is_held_to_the_scene_limits) {
+  // Oracle: `scene` refuses this case (its 1e6 s of 500² water is 2e13 cell updates, past the
+  // 5e10 limit of tools/scene/resource_estimate.hpp); `bench --scene` runs the same scene, so it
+  // must refuse it the same way — exit 2, one line naming the case — before measuring anything.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("stoneskip_bench_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path heavy = dir / "heavy.toml";
+  std::string text = stoneskip::test::read_file("cases/scenes/seed_8ms.toml");
+  const auto at = text.find("duration_s = 3.0");
+  BOOST_REQUIRE(at != std::string::npos);
+  text.replace(at, 16, "duration_s = 1.0e6");
+  std::ofstream(heavy) << text;
+  for (const char* command : {"scene", "bench --repeats 1 --scene"}) {
+    const auto r = stoneskip::test::run_stoneskip(std::string(command) + " " + heavy.string());
+    BOOST_TEST(r.status == 2, command << ": exit " << r.status << ": " << r.out);
+    BOOST_TEST(r.out.find(heavy.string()) != std::string::npos, r.out);
+    BOOST_TEST(std::count(r.out.begin(), r.out.end(), '\n') == 1, r.out);
+  }
+  std::filesystem::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_CASE(bench_text_names_the_grid_it_measured) {
+  // Oracle: --quick measures the large stencil at 1024² (HeadlineSpeedOptions::stencil_large_n),
+  // so its text must say 1024² and never 2048².
+  const auto r = stoneskip::test::run_stoneskip("bench --quick --repeats 1", false);
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
+  BOOST_TEST(r.out.find("1024²") != std::string::npos, r.out);
+  BOOST_TEST(r.out.find("2048²") == std::string::npos, r.out);
 }
 
 BOOST_AUTO_TEST_CASE(bench_refuses_a_bad_repeat_count) {

@@ -46,6 +46,7 @@
 #include "tools/cli/terminal_progress.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/output_over_input.hpp"
 #include "tools/io/progress.hpp"
 #include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/stone_case.hpp"
@@ -323,12 +324,24 @@ nlohmann::json scene_json(const Record& r) {
   return j;
 }
 
+// Every file a capture command reads: the captures, and the case and scene files (with their mesh).
+std::vector<fs::path> inputs_of(const CaptureArgs& a, const StoneCase* c, const StoneCase* scene) {
+  std::vector<fs::path> in(a.files.begin(), a.files.end());
+  for (const StoneCase* k : {c, scene})
+    if (k) {
+      in.push_back(k->file);
+      in.push_back(k->spec.mesh_file);
+    }
+  return in;
+}
+
 void validate(const CaptureArgs& a) {
   std::optional<StoneCase> c;
   if (!a.no_simulate) c = load_stone_case(a.case_file, a.sets);
   const std::optional<StoneCase> scene = load_scene_case(a);
   if (scene && a.no_simulate) throw InputError("capture validate: --scene and --no-simulate cannot be given together");
   if (a.members < 0) throw_input_error("--members", 0, "", "must be >= 0 (got " + std::to_string(a.members) + ")");
+  refuse_output_over_inputs(a.out, OutputKind::folder, inputs_of(a, c ? &*c : nullptr, scene ? &*scene : nullptr));
   if (c) {
     // Limits before any work (cases/README.md, Limits): every capture's ensemble is a throw per member.
     ResourceEstimate e = estimate_run(*c, RunSolvers{true, !a.no_reference, false});
@@ -438,6 +451,7 @@ void throw_capture(const CaptureArgs& a) {
   const std::optional<StoneCase> scene = load_scene_case(a);
   if (scene && !a.out.empty()) throw InputError("capture throw: --out is not written with --scene (use capture validate --scene --out DIR for the report)");
   StoneCase c = load_stone_case(a.case_file, a.sets);
+  refuse_output_over_inputs(a.out, OutputKind::file, inputs_of(a, &c, nullptr));
   if (!a.out.empty()) AtomicOutput check(a.out);
   check_capture_size(a.files.front(), a.limits);
   const Trace trace = read_capture(a.files.front(), read_options(a));
@@ -490,6 +504,7 @@ void throw_capture(const CaptureArgs& a) {
 }
 
 void convert(const CaptureArgs& a) {
+  refuse_output_over_inputs(a.out, OutputKind::file, inputs_of(a, nullptr, nullptr));
   check_capture_size(a.files.front(), a.limits);
   std::optional<Heartbeat> alive(std::in_place, "capture convert");  // a line once reading takes more than 2 s
   Trace t = read_capture(a.files.front(), read_options(a));

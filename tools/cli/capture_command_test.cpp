@@ -3,7 +3,6 @@
 // release speed and angles that produced the recording, and what the recorder dropped.
 #include <boost/test/unit_test.hpp>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -16,6 +15,8 @@
 #include <string>
 #include <toml.hpp>
 
+#include "tools/cli/test_support.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -25,16 +26,12 @@ struct Run {
   std::string out;
 };
 
+// Runs the executable on plain words (test_support.hpp), stdout kept and stderr dropped.
 Run run(const std::string& args) {
-  const fs::path o = fs::temp_directory_path() / ("stoneskip_capture_cli_" + std::to_string(::getpid()));
-  const std::string cmd = std::string(STONESKIP_EXE) + " " + args + " >" + o.string() + " 2>/dev/null";
-  Run r;
-  const int raw = std::system(cmd.c_str());
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  std::ifstream f(o);
-  r.out.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
-  fs::remove(o);
-  return r;
+  stoneskip::SubprocessOptions o;
+  o.stderr_to = stoneskip::SubprocessOptions::Stderr::discarded;
+  const stoneskip::SubprocessResult p = stoneskip::run_program(stoneskip::test::stoneskip_argv(stoneskip::test::words(args)), o);
+  return {p.exit_status, p.out};
 }
 
 nlohmann::json validate(const std::string& capture) {

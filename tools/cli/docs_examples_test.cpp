@@ -133,16 +133,10 @@ std::vector<std::string> expand(const std::string& word) {
   return found.empty() ? std::vector<std::string>{word} : found;
 }
 
-// One argument vector through the helper of test_support.hpp: each word single-quoted, so it
-// reaches stoneskip exactly as written (no expansion, no splitting).
+// One argument vector through the helper of test_support.hpp: each word reaches stoneskip exactly
+// as written (no shell, no expansion, no splitting).
 stoneskip::test::RanApart run_words(const std::vector<std::string>& args) {
-  std::string line;
-  for (const auto& a : args) {
-    std::string q = "'";
-    for (char ch : a) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-    line += (line.empty() ? "" : " ") + q + "'";
-  }
-  return stoneskip::test::run_apart(line, kCommandTimeout_s);
+  return stoneskip::test::run_apart(args, kCommandTimeout_s);
 }
 
 // Runs in `dir` for the object's life.

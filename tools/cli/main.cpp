@@ -48,6 +48,22 @@ int exit_code() { return g_exit_code; }
 
 }  // namespace stoneskip::cli
 
+namespace {
+
+// A message on one line whatever names it quotes: a newline or carriage return in a file name is
+// written as \n or \r (the bad-input rule is one line on stderr).
+std::string one_line(std::string what) {
+  std::string out;
+  for (char c : what) {
+    if (c == '\n') out += "\\n";
+    else if (c == '\r') out += "\\r";
+    else out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   // First, before any thread exists: SIGINT, SIGTERM and SIGHUP remove the temporaries.
   stoneskip::install_signal_cleanup();
@@ -65,21 +81,18 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     // Usage errors are bad input: one line, exit 2.
-    std::fprintf(stderr, "stoneskip: %s (see --help)\n", e.what());
+    std::fprintf(stderr, "stoneskip: %s (see --help)\n", one_line(e.what()).c_str());
     return 2;
   } catch (const stoneskip::InputError& e) {
-    std::fprintf(stderr, "stoneskip: %s\n", e.what());
+    std::fprintf(stderr, "stoneskip: %s\n", one_line(e.what()).c_str());
     return 2;
   } catch (const std::filesystem::filesystem_error& e) {
     // A path the user named that cannot be read or written (the commands check the ones they
     // know; this catches the rest): bad input, not a bug.
-    std::string what = e.what();
-    for (char& c : what)
-      if (c == '\n') c = ' ';
-    std::fprintf(stderr, "stoneskip: %s\n", what.c_str());
+    std::fprintf(stderr, "stoneskip: %s\n", one_line(e.what()).c_str());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "stoneskip: internal error: %s\n", e.what());
+    std::fprintf(stderr, "stoneskip: internal error: %s\n", one_line(e.what()).c_str());
     return 3;
   }
   return stoneskip::cli::exit_code();

@@ -5,7 +5,6 @@
 // perturbation that no correct run can reproduce (every count shifted by 7).
 #include <boost/test/unit_test.hpp>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -16,6 +15,8 @@
 #include <regex>
 #include <sstream>
 #include <string>
+
+#include "tools/cli/test_support.hpp"
 
 namespace fs = std::filesystem;
 
@@ -38,15 +39,10 @@ std::string slurp(const fs::path& p) {
   return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
 }
 
+// Runs the executable on plain words (test_support.hpp), stdout and stderr apart.
 Run run(const std::string& args) {
-  const fs::path dir = scratch_dir();
-  const std::string cmd = std::string(STONESKIP_EXE) + " " + args + " >" + (dir / "o").string() + " 2>" + (dir / "e").string();
-  Run r;
-  const int raw = std::system(cmd.c_str());
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(dir / "o");
-  r.err = slurp(dir / "e");
-  return r;
+  const stoneskip::SubprocessResult p = stoneskip::run_program(stoneskip::test::stoneskip_argv(stoneskip::test::words(args)));
+  return {p.exit_status, p.out, p.err};
 }
 
 // A copy of a stored baseline in a temporary folder, its case path made absolute (the tests run

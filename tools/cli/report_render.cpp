@@ -12,6 +12,7 @@
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/progress.hpp"
+#include "verification/study/verdict_rules.hpp"
 
 namespace stoneskip::cli {
 
@@ -25,6 +26,18 @@ RenderedReport render_stored_report(const StoredReport& s) {
 
 std::pair<int, std::size_t> render_folder(const std::filesystem::path& dir) {
   const StoredReport stored = load_stored_report(dir / "data.h5");
+  // A stored verdict is printed only if its rule, applied to its stored inputs, still says it.
+  std::vector<std::string> contradicted;
+  try {
+    contradicted = contradicted_verdicts(stored.report);
+    for (auto& c : contradicted_verdicts(stored.sections)) contradicted.push_back(std::move(c));
+  } catch (const RecordError& e) {
+    throw_input_error((dir / "data.h5").string(), 0, "", std::string("a stored verdict cannot be re-checked: ") + e.what());
+  }
+  if (!contradicted.empty())
+    throw_input_error((dir / "data.h5").string(), 0, "",
+                      "a stored verdict contradicts its rule: " + contradicted.front() +
+                          (contradicted.size() > 1 ? " (and " + std::to_string(contradicted.size() - 1) + " more)" : ""));
   // The figures go to DIR/figures: it must be a folder, or absent (then it is made).
   struct stat st {};
   const std::filesystem::path figures = dir / "figures";

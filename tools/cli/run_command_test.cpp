@@ -4,8 +4,6 @@
 // the library run in-process (an independent path to the same numbers).
 #include <boost/test/unit_test.hpp>
 
-#include <sys/wait.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -25,21 +23,10 @@ struct Run {
   std::string err;  // stderr
 };
 
+// Runs the executable on plain words (test_support.hpp), stdout and stderr apart.
 Run run(const std::string& args) {
-  const fs::path dir = fs::temp_directory_path() / ("stoneskip_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const std::string cmd = std::string(STONESKIP_EXE) + " " + args + " >" + (dir / "o").string() + " 2>" + (dir / "e").string();
-  Run r;
-  const int raw = std::system(cmd.c_str());
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  auto slurp = [](const fs::path& p) {
-    std::ifstream f(p);
-    return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-  };
-  r.out = slurp(dir / "o");
-  r.err = slurp(dir / "e");
-  fs::remove_all(dir);
-  return r;
+  const stoneskip::SubprocessResult p = stoneskip::run_program(stoneskip::test::stoneskip_argv(stoneskip::test::words(args)));
+  return {p.exit_status, p.out, p.err};
 }
 
 fs::path scratch(const std::string& name) {

@@ -23,6 +23,8 @@
 #include "tools/cli/terminal_progress.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/signal_cleanup.hpp"
+#include "tools/io/subprocess.hpp"
 #include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/scene_throw.hpp"
 #include "tools/scene/throw_output.hpp"
@@ -37,18 +39,23 @@ struct SceneArgs {
   std::vector<std::string> sets;
   bool json = false;
   std::string movie;
+  bool movie_given = false;  // `--movie ""` is refused, not read as "no movie"
   std::string movie_size = "1280x540";
   double movie_rate_hz = 0;
   ResourceLimits limits;
 };
 
-// A folder for the movie's frames, removed with the object.
+// A folder for the movie's frames, removed with the object, or by the signal cleanup if a signal
+// ends the command (made and registered in one step under the cleanup's lock).
 class WorkFolder {
  public:
   WorkFolder() {
-    std::string tmpl = (fs::temp_directory_path() / "stoneskip-movie-XXXXXX").string();
-    if (!mkdtemp(tmpl.data())) throw std::runtime_error("cannot make a temporary folder for the movie's frames");
-    path_ = tmpl;
+    with_registry_lock([&] {
+      std::string tmpl = (fs::temp_directory_path() / "stoneskip-movie-XXXXXX").string();
+      if (!mkdtemp(tmpl.data())) throw std::runtime_error("cannot make a temporary folder for the movie's frames");
+      path_ = tmpl;
+      registered_ = RegisteredTemporary(path_, TemporaryKind::folder);
+    });
   }
   ~WorkFolder() {
     std::error_code ec;
@@ -58,9 +65,8 @@ class WorkFolder {
 
  private:
   fs::path path_;
+  RegisteredTemporary registered_;
 };
-
-bool tool_available(const char* command) { return std::system((std::string(command) + " >/dev/null 2>&1").c_str()) == 0; }
 
 std::string fixed(double v, int digits) {
   char buf[64];
@@ -156,18 +162,12 @@ void run(const SceneArgs& a) {
   if (!o.valid(&why)) throw_input_error(c.file, 0, "scene", why);
   // Limits before any work (cases/README.md, Limits): the stone and its water over the scene's
   // duration (the stone stops at its t_max_s, the water runs on), and a cost record per frame.
-  {
-    StoneCase over = c;
-    over.realtime.t_max_s = std::max(c.realtime.t_max_s, o.duration_s);
-    ResourceEstimate e = estimate_run(over, RunSolvers{true, false, false});
-    const double frames = o.duration_s * o.frame_rate_hz;
-    e.add_memory(frames * 64.0, std::to_string(static_cast<long long>(frames)) + " frames' records");
-    enforce_limits(e, a.limits, c.file);
-  }
+  enforce_limits(estimate_scene(c, o.duration_s, o.frame_rate_hz), a.limits, c.file);
   // The movie's settings and tools are checked before any work.
   std::unique_ptr<MovieRecorder> movie;
   std::unique_ptr<WorkFolder> work;
   MovieOptions mo;
+  if (a.movie_given && a.movie.empty()) throw_input_error("--movie", 0, "", "needs a file name (got an empty name)");
   if (!a.movie.empty()) {
     mo.output = a.movie;
     int w = 0, h = 0;
@@ -179,9 +179,16 @@ void run(const SceneArgs& a) {
     mo.rate_hz = a.movie_rate_hz;
     const std::string problem = mo.problem(o.frame_rate_hz);
     if (!problem.empty()) throw_input_error("--movie", 0, "", problem);
+    // Known now, not after the whole scene has run: a scene shorter than one movie frame.
+    if (mo.frames(o) < 1)
+      throw_input_error("--movie", 0, "", "the scene's " + std::to_string(o.frames()) + " frames make no movie frame (one is drawn every " +
+                                              std::to_string(mo.stride(o.frame_rate_hz)) + " scene frames)");
+    // The movie's drawing and its temporary frames are held to limits too (1e8 frames were accepted).
+    enforce_limits(estimate_movie(static_cast<double>(mo.frames(o)), mo.width_px, mo.height_px, mo.top_cells_max, mo.near_cells_max),
+                   a.limits, "--movie");
     { AtomicOutput check(mo.output); }  // the folder exists and is writable
-    if (!tool_available("gnuplot --version")) throw_input_error("--movie", 0, "", "gnuplot not found (apt-get install gnuplot-nox)");
-    if (!tool_available("ffmpeg -version")) throw_input_error("--movie", 0, "", "ffmpeg not found (apt-get install ffmpeg)");
+    if (!program_runs({"gnuplot", "--version"})) throw_input_error("--movie", 0, "", "gnuplot not found (apt-get install gnuplot-nox)");
+    if (!program_runs({"ffmpeg", "-version"})) throw_input_error("--movie", 0, "", "ffmpeg not found (apt-get install ffmpeg)");
     work = std::make_unique<WorkFolder>();
     movie = std::make_unique<MovieRecorder>(mo, o, work->path());
   }
@@ -223,7 +230,10 @@ void add_scene(CLI::App& app) {
   cmd->add_option("--movie-rate", a->movie_rate_hz,
                   "Movie frames per second: the scene's frame rate divided by a whole number (default: every frame for MP4, ≤ 30/s for GIF)");
   add_limit_options(cmd, a->limits);
-  cmd->callback([a] { run(*a); });
+  cmd->callback([a, cmd] {
+    a->movie_given = cmd->count("--movie") > 0;
+    run(*a);
+  });
 }
 
 const bool kRegistered = register_command(add_scene);

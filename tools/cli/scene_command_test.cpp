@@ -4,6 +4,8 @@
 // that each test runs in a second or two.
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
+
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -22,17 +24,18 @@ std::string small_seed(double seconds) {
          std::to_string(seconds);
 }
 
-// ffprobe's count of the video frames in a file (−1 if it cannot read it).
+// ffprobe's count of the video frames in a file (−1 if it cannot read it). The name is passed as a
+// "file:" URL so that ffprobe reads no option or protocol in it.
 long probed_frames(const fs::path& movie) {
-  const std::string cmd = "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 '" +
-                          movie.string() + "' 2>/dev/null";
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return -1;
-  char buf[64] = {0};
-  const bool read = std::fgets(buf, sizeof buf, p) != nullptr;
-  if (pclose(p) != 0 || !read) return -1;
+  stoneskip::SubprocessOptions o;
+  o.stderr_to = stoneskip::SubprocessOptions::Stderr::discarded;
+  const stoneskip::SubprocessResult p =
+      stoneskip::run_program({"ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+                              "stream=nb_read_frames", "-of", "csv=p=0", "file:" + fs::absolute(movie).string()},
+                             o);
+  if (!p.ok() || p.out.empty()) return -1;
   try {
-    return std::stol(buf);
+    return std::stol(p.out);
   } catch (...) {
     return -1;
   }
@@ -104,6 +107,21 @@ BOOST_AUTO_TEST_CASE(bad_scene_input_fails_before_any_work_and_leaves_no_movie) 
   r = run_stoneskip("scene " + small_seed(0.2) + " --movie " + mp4.string() + " --movie-rate 40");
   BOOST_TEST(r.status == 2);
   BOOST_TEST(r.out.find("divided by a whole number") != std::string::npos, r.out);
+  BOOST_TEST(fs::is_empty(tmp.path()));
+}
+
+BOOST_AUTO_TEST_CASE(a_movie_past_the_movie_limits_is_refused_before_the_scene_runs) {
+  // Oracle: tools/scene/resource_estimate.hpp — a still-water scene of 100 s at 1e5 frames/s
+  // is 1e7 movie frames, 5e11 pixels at 320×160 (limit 5e10): exit 2, one line naming --movie and
+  // the pixels, nothing written, and within seconds (the scene itself never runs).
+  TempDir tmp("stoneskip-movie-limit");
+  const fs::path mp4 = tmp.path() / "m.mp4";
+  const auto r = run_stoneskip("scene cases/paper_8ms_spin.toml --set scene.frame_rate_hz=1e5 --set scene.duration_s=100 --movie " +
+                               mp4.string() + " --movie-size 320x160");
+  BOOST_TEST(r.status == 2, r.out);
+  BOOST_TEST(r.out.find("--movie: ") != std::string::npos, r.out);
+  BOOST_TEST(r.out.find("movie pixels") != std::string::npos, r.out);
+  BOOST_TEST(std::count(r.out.begin(), r.out.end(), '\n') == 1, r.out);
   BOOST_TEST(fs::is_empty(tmp.path()));
 }
 

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -217,6 +218,49 @@ BOOST_AUTO_TEST_CASE(an_interrupted_capture_validation_leaves_no_folder) {
       check_left(interrupt(validate, s.dir, sig, at), sig, s.out, {"cv"}, s.dir);
       fs::remove_all(s.out / "cv");
     }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_movie_interrupted_while_gnuplot_draws_leaves_no_frames_and_no_gnuplot) {
+  // main left the frames' temporary folder (91 MB) and an orphaned gnuplot drawing into it
+  // (issue 18, item 13). Oracle: the temporary folder (TMPDIR is pointed at an empty scratch
+  // folder for the command) and /proc: after exit 143 no folder is left there and no process has
+  // its working folder inside it (gnuplot runs in the frames' folder).
+  Scratch s;
+  const fs::path tmp = s.dir / "tmp";
+  fs::create_directories(tmp);
+  const std::vector<std::string> movie = {"scene", "cases/scenes/seed_8ms.toml", "--set", "water.nx=60", "--set", "water.ny=60",
+                                          "--set", "scene.duration_s=3", "--movie", (s.out / "m.mp4").string(),
+                                          "--movie-size", "320x160"};
+  const char* old_tmpdir = std::getenv("TMPDIR");
+  const std::string saved = old_tmpdir ? old_tmpdir : "";
+  ::setenv("TMPDIR", tmp.c_str(), 1);
+  const auto t0 = std::chrono::steady_clock::now();
+  const pid_t pid = start(movie, s.dir);
+  if (old_tmpdir) ::setenv("TMPDIR", saved.c_str(), 1);
+  else ::unsetenv("TMPDIR");
+  // Wait until gnuplot has drawn its first frame in the frames' folder (or the command ended).
+  auto drawing = [&] {
+    for (const auto& d : fs::directory_iterator(tmp))
+      if (fs::exists(d.path() / "frame_00001.png")) return true;
+    return false;
+  };
+  int raw = 0;
+  bool ended = false;
+  for (int i = 0; i < 1200 && !(ended = ::waitpid(pid, &raw, WNOHANG) == pid) && !drawing(); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  BOOST_REQUIRE_MESSAGE(!ended, "the scene ended before gnuplot drew a frame");
+  ::kill(pid, SIGTERM);
+  const Ended e = finish(pid, t0);
+  BOOST_TEST(e.status == 128 + SIGTERM);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  BOOST_TEST(fs::is_empty(tmp), "left behind in TMPDIR: " << joined(names_in(tmp)));
+  BOOST_TEST(fs::is_empty(s.out), "left behind: " << joined(names_in(s.out)));
+  const std::string inside = fs::canonical(tmp).string();
+  for (const auto& p : fs::directory_iterator("/proc")) {
+    std::error_code ec;
+    const fs::path cwd = fs::read_symlink(p.path() / "cwd", ec);
+    if (!ec) BOOST_TEST(cwd.string().rfind(inside, 0) != 0, "process " << p.path().filename().string() << " still works in " << cwd);
   }
 }
 

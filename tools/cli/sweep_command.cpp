@@ -25,6 +25,7 @@
 #include "tools/cli/limit_options.hpp"
 #include "tools/cli/terminal_progress.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/output_over_input.hpp"
 #include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/scene_throw.hpp"
 #include "tools/scene/sweep_file.hpp"
@@ -43,6 +44,11 @@ struct SweepArgs {
   bool quiet = false;
   ResourceLimits limits;
 };
+
+// The result file: --out, or SWEEP's stem + .h5 in the current folder.
+std::filesystem::path out_file(const SweepArgs& a) {
+  return a.out ? std::filesystem::path(*a.out) : std::filesystem::path(std::filesystem::path(a.file).stem().string() + ".h5");
+}
 
 // Collective: true when every rank got this far without an error. Otherwise the lowest failing
 // rank's error is printed once (by rank 0 as an InputError: exit 2) and every rank exits with 2.
@@ -133,6 +139,7 @@ void run(const SweepArgs& a) {
     if (a.threads < -1) throw_input_error("--threads", 0, "", "must be >= 0");
     if (a.max_chunk < 1) throw_input_error("--max-chunk", 0, "", "must be >= 1");
     if (a.out && a.out->empty()) throw_input_error("--out", 0, "", "needs a file name (got an empty one)");
+    refuse_output_over_inputs(out_file(a), OutputKind::file, {sweep->file, sweep->base_file, cases->base().spec.mesh_file});
     // Limits decided before any throw (cases/README.md, Limits): the table, the heaviest throw, all.
     const double width = static_cast<double>(sweep_record(sweep->design, sweep->solvers).width());
     const double threads = a.threads > 0 ? a.threads : std::max(1u, std::thread::hardware_concurrency());
@@ -156,7 +163,7 @@ void run(const SweepArgs& a) {
   p.base_overrides = sweep->base_sets;
   p.resolved_settings = cases->base().resolved_settings();
   SweepRunOptions options;
-  options.out = a.out ? *a.out : std::filesystem::path(a.file).stem().string() + ".h5";
+  options.out = out_file(a);
   options.resume = a.resume;
   options.master_threads = a.threads;
   options.max_chunk = a.max_chunk;

@@ -17,6 +17,7 @@
 #include <set>
 #include <thread>
 
+#include "tools/cli/test_support.hpp"
 #include "tools/io/hdf5_file.hpp"
 
 namespace fs = std::filesystem;
@@ -47,12 +48,13 @@ std::string text_of(const fs::path& p) {
   return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
 }
 
-// Runs "PREFIX stoneskip ARGS" through the shell; PREFIX is an MPI launcher or empty.
+// Runs "PREFIX stoneskip ARGS" (plain words, no shell: test_support.hpp); PREFIX is an MPI
+// launcher or empty.
 Outcome command(const std::string& args, const std::string& prefix = "") {
-  const fs::path o = work() / "stdout", e = work() / "stderr";
-  const std::string cmd = prefix + " " + STONESKIP_EXE + " " + args + " >" + o.string() + " 2>" + e.string();
-  const int raw = std::system(cmd.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text_of(o), text_of(e)};
+  stoneskip::test::Args argv = stoneskip::test::words(prefix);
+  for (const auto& a : stoneskip::test::stoneskip_argv(stoneskip::test::words(args))) argv.push_back(a);
+  const stoneskip::SubprocessResult p = stoneskip::run_program(argv);
+  return {p.exit_status, p.out, p.err};
 }
 
 void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }

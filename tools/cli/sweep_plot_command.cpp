@@ -9,10 +9,12 @@
 #include <filesystem>
 #include <optional>
 
+#include "reports/common/report_build.hpp"
 #include "reports/sweep/sweep_page.hpp"
 #include "tools/cli/command_registry.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/output_over_input.hpp"
 #include "tools/io/progress.hpp"
 
 namespace stoneskip::cli {
@@ -30,13 +32,21 @@ void run(const PlotArgs& a) {
   if (a.out && a.out->empty()) throw_input_error("--out", 0, "", "needs a folder name (got an empty one)");
   const std::filesystem::path dir =
       a.out ? std::filesystem::path(*a.out) : std::filesystem::path(std::filesystem::path(a.file).replace_extension("").string() + "_plots");
+  refuse_output_over_inputs(dir, OutputKind::folder, {a.file});
   if (!a.no_render && !gnuplot_available())
     throw_input_error("gnuplot", 0, "", "not found on PATH (apt-get install gnuplot-nox), or use --no-render");
   SweepMapOptions maps;
   maps.columns = a.columns;
   // Built whole in a work folder, then moved into place; a page made before may be replaced.
+  // A page is an index.md, a data.h5 holding /figures, a figures/ folder and nothing else: a
+  // folder with the user's files in it (or a data.h5 that is not a page's) is never replaced.
   AtomicFolder out(dir, [](const std::filesystem::path& d) {
-    return std::filesystem::is_regular_file(d / "index.md") && std::filesystem::is_regular_file(d / "data.h5");
+    if (!std::filesystem::is_regular_file(d / "index.md") || !holds_only_report_files(d)) return false;
+    try {
+      return Hdf5Reader(d / "data.h5").root().has("figures");
+    } catch (const std::exception&) {
+      return false;
+    }
   });
   std::optional<SweepPageSummary> page;
   {

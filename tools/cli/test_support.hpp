@@ -1,17 +1,15 @@
 #pragma once
 // What the end-to-end tests of the command share: running the built executable and reading files.
-#include <sys/wait.h>
-
 #include <unistd.h>
 
-#include <array>
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
+
+#include "tools/io/subprocess.hpp"
 
 namespace stoneskip::test {
 
@@ -34,50 +32,61 @@ contact_dt_s = 1.0e-5
 t_max_s = 3.0
 )";
 
+// The executable's arguments, one string each: passed to it as they are (no shell reads them).
+using Args = std::vector<std::string>;
+
+// A command line of plain words ("run cases/x.toml --json") split at spaces, then `more` as they
+// are; no quoting and no shell. An argument with a space or a quote in it, or an empty one, goes
+// in `more` (or an Args) instead.
+inline Args words(const std::string& line, const Args& more = {}) {
+  Args a;
+  std::istringstream in(line);
+  for (std::string w; in >> w;) a.push_back(w);
+  a.insert(a.end(), more.begin(), more.end());
+  return a;
+}
+
+inline Args stoneskip_argv(const Args& args) {
+  Args argv{STONESKIP_EXE};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return argv;
+}
+
 struct Ran {
   int status = -1;
   std::string out;
 };
 
 // Runs the executable with arguments (stderr folded into stdout, or dropped); its exit status.
-inline Ran run_stoneskip(const std::string& args, bool keep_stderr = true) {
-  Ran r;
-  const std::string cmd = std::string(STONESKIP_EXE) + " " + args + (keep_stderr ? " 2>&1" : " 2>/dev/null");
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), buf.size(), p)) r.out += buf.data();
-  const int st = pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
+inline Ran run_stoneskip(const Args& args, bool keep_stderr = true) {
+  SubprocessOptions o;
+  o.stderr_to = keep_stderr ? SubprocessOptions::Stderr::merged : SubprocessOptions::Stderr::discarded;
+  const SubprocessResult p = run_program(stoneskip_argv(args), o);
+  return {p.exit_status, p.out};
 }
+inline Ran run_stoneskip(const std::string& line, bool keep_stderr = true) { return run_stoneskip(words(line), keep_stderr); }
 
-// A run with stdout and stderr apart, its wall time, under a time limit (`timeout`: status 124
-// when the command ran past it).
+// A run with stdout and stderr apart, its wall time, under a time limit (status 124, as
+// timeout(1) gives, when the command ran past it).
 struct RanApart {
   int status = -1;
   std::string out, err;
   double wall_s = 0;
 };
 
-inline std::string read_file(const std::filesystem::path& p);
-
-inline RanApart run_apart(const std::string& args, int timeout_s = 60) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("stoneskip_apart_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const std::string cmd = "timeout " + std::to_string(timeout_s) + " " + std::string(STONESKIP_EXE) + " " + args + " >" +
-                          (dir / "o").string() + " 2>" + (dir / "e").string();
+inline RanApart run_apart(const Args& args, int timeout_s = 60) {
+  SubprocessOptions o;
+  o.timeout_s = timeout_s;
   RanApart r;
   const auto t0 = std::chrono::steady_clock::now();
-  const int raw = std::system(cmd.c_str());
+  const SubprocessResult p = run_program(stoneskip_argv(args), o);
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = read_file(dir / "o");
-  r.err = read_file(dir / "e");
-  std::filesystem::remove_all(dir);
+  r.status = p.timed_out ? 124 : p.exit_status;
+  r.out = p.out;
+  r.err = p.err;
   return r;
 }
+inline RanApart run_apart(const std::string& line, int timeout_s = 60) { return run_apart(words(line), timeout_s); }
 
 inline std::string read_file(const std::filesystem::path& p) {
   std::ifstream f(p, std::ios::binary);

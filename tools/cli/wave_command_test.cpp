@@ -1,32 +1,17 @@
 // End-to-end tests of `stoneskip wave`: the built executable run on the shipped wave cases.
 #include <boost/test/unit_test.hpp>
 
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "tools/cli/test_support.hpp"
+
 namespace {
 
-struct Ran {
-  int status = -1;
-  std::string out;
-};
-
-// Runs the executable with arguments (stderr folded into stdout, or dropped) and returns its exit status.
-Ran run_stoneskip(const std::string& args, bool keep_stderr = true) {
-  Ran r;
-  std::string cmd = std::string(STONESKIP_EXE) + " " + args + (keep_stderr ? " 2>&1" : " 2>/dev/null");
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), buf.size(), p)) r.out += buf.data();
-  int st = pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
-}
+using stoneskip::test::Ran;
+using stoneskip::test::run_stoneskip;
 
 nlohmann::json run_json(const std::string& args) {
   Ran r = run_stoneskip(args + " --json", false);  // stderr may carry notes; stdout is the JSON

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/syscall.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -134,6 +135,23 @@ void stop_other_threads() {
   }
 }
 
+// --- Child processes ------------------------------------------------------------------------------
+
+// Fixed slots, so the cleanup reads them without allocating; 0 is a free slot.
+constexpr int kMaxChildren = 64;
+std::atomic<int> g_children[kMaxChildren];
+
+void kill_children() {
+  for (auto& c : g_children) {
+    const int pid = c.load();
+    if (pid <= 0) continue;
+    ::kill(pid, SIGKILL);
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+  }
+}
+
 // --- The signal handler and the cleanup thread -------------------------------------------------
 
 int g_pipe_write = -1;
@@ -188,6 +206,7 @@ void cleanup_thread(int read_fd) {
   Registry& r = registry();
   r.mutex.lock();  // held until _exit: nothing is registered, created or renamed from here on
   stop_other_threads();
+  kill_children();  // first: a child may still be writing into a registered folder
   const int removed = remove_entries(r.entries);
   say_interrupted(sig, removed);
   ::_exit(128 + sig);
@@ -225,6 +244,35 @@ void RegisteredTemporary::release() {
       break;
     }
   id_ = 0;
+}
+
+RegisteredChild::RegisteredChild(int pid) {
+  for (int i = 0; i < kMaxChildren; ++i) {
+    int free_slot = 0;
+    if (g_children[i].compare_exchange_strong(free_slot, pid)) {
+      slot_ = i;
+      return;
+    }
+  }
+}
+
+RegisteredChild::~RegisteredChild() { release(); }
+
+RegisteredChild::RegisteredChild(RegisteredChild&& o) noexcept : slot_(o.slot_) { o.slot_ = -1; }
+
+RegisteredChild& RegisteredChild::operator=(RegisteredChild&& o) noexcept {
+  if (this != &o) {
+    release();
+    slot_ = o.slot_;
+    o.slot_ = -1;
+  }
+  return *this;
+}
+
+void RegisteredChild::release() {
+  if (slot_ < 0) return;
+  g_children[slot_].store(0);
+  slot_ = -1;
 }
 
 void with_registry_lock(const std::function<void()>& f) {

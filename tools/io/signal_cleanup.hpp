@@ -12,8 +12,9 @@
 //  2. A cleanup thread blocked on the pipe wakes, takes the registry's mutex — so no registered
 //     path is half created or half renamed — and stops every other thread of the process (a
 //     SIGUSR2 whose handler never returns), so nothing can create a file behind it.
-//  3. It removes the registered paths with plain system calls (no allocation: a stopped thread may
-//     hold the allocator's lock), writes one line on stderr and calls _exit(128 + signal).
+//  3. It kills and reaps the registered child processes (RegisteredChild: gnuplot, ffmpeg), removes
+//     the registered paths with plain system calls (no allocation: a stopped thread may hold the
+//     allocator's lock), writes one line on stderr and calls _exit(128 + signal).
 // Registered paths are created, renamed into place and unregistered while holding the same mutex
 // (with_registry_lock), so the cleanup sees each one either absent, whole at its temporary name,
 // or already in place.
@@ -40,6 +41,24 @@ class RegisteredTemporary {
 
  private:
   long id_ = 0;
+};
+
+// A running child process (tools/io/subprocess.hpp): the cleanup kills it (SIGKILL) and reaps it
+// before removing the temporaries it may be writing into. Up to 64 children are held; more run
+// unregistered. Register while holding with_registry_lock, in the same step that starts the child.
+class RegisteredChild {
+ public:
+  RegisteredChild() = default;
+  explicit RegisteredChild(int pid);
+  ~RegisteredChild();
+  RegisteredChild(RegisteredChild&& o) noexcept;
+  RegisteredChild& operator=(RegisteredChild&& o) noexcept;
+  RegisteredChild(const RegisteredChild&) = delete;
+  RegisteredChild& operator=(const RegisteredChild&) = delete;
+  void release();
+
+ private:
+  int slot_ = -1;
 };
 
 // Runs f while holding the registry's mutex (recursive): create, rename or remove registered paths

@@ -166,6 +166,11 @@ void apply_override(toml::value& root, const std::string& file, const std::strin
     throw_input_error(file, 0, "--set " + assignment, "expected section.key=value");
   std::string path = assignment.substr(0, eq);
   std::string raw = assignment.substr(eq + 1);
+  // TOML would read the text after a line break as a further line (another key, a table header)
+  // or drop it: one --set is one key and one value.
+  if (assignment.find_first_of("\n\r") != std::string::npos)
+    throw_input_error(file, 0, "--set " + path.substr(0, path.find_first_of("\n\r")),
+                      "the assignment holds a line break (give each key its own --set)");
   toml::value parsed;
   try {
     parsed = parse_override_value(raw, path, file);

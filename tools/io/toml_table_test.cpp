@@ -133,6 +133,18 @@ BOOST_AUTO_TEST_CASE(numbers_beyond_a_double_or_64_bits_are_errors_not_clamped) 
   BOOST_TEST(o.find("hostile.toml: --set t.x: the number 1e400") == 0u, o);
 }
 
+BOOST_AUTO_TEST_CASE(an_override_with_a_line_break_is_refused) {
+  // Oracle: one --set is one key and one value; "t.x=1\nt.y=5" (the second line dropped on main)
+  // and a CR or a line break in a string value are refused, naming --set and the key.
+  const std::string text = "[t]\nx = 2.0\ny = 1\n";
+  for (const std::string& o : {std::string("t.x=1\nt.y=5"), std::string("t.x=1\r[u]"), std::string("t.s=a\nb")}) {
+    const std::string e = error_of(text, {o});
+    BOOST_TEST(e.find("hostile.toml: --set t.") == 0u, e);
+    BOOST_TEST(e.find("line break") != std::string::npos, e);
+    BOOST_TEST(e.find('\n') == std::string::npos, e);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(a_bad_override_is_blamed_on_the_override_not_on_line_1) {
   // Oracle: the value came from --set, not from the file. A bare word (read as a string), a
   // number and a key the file does not have are each blamed on "--set KEY"; no line number.

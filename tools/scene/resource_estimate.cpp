@@ -43,6 +43,31 @@ double sample_bytes(bool writes_file) {
 
 }  // namespace
 
+ResourceEstimate estimate_scene(const StoneCase& c, double duration_s, double frame_rate_hz) {
+  StoneCase over = c;
+  over.realtime.t_max_s = std::max(c.realtime.t_max_s, duration_s);
+  ResourceEstimate e = estimate_run(over, RunSolvers{true, false, false});
+  const double frames = duration_s * frame_rate_hz;
+  e.add_memory(frames * 64.0, std::to_string(static_cast<long long>(frames)) + " frames' records");
+  return e;
+}
+
+ResourceEstimate estimate_movie(double frames, double width_px, double height_px, double top_cells, double near_cells) {
+  ResourceEstimate e;
+  auto g = [](double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.3g", v);
+    return std::string(b);
+  };
+  const double pixels = width_px * height_px;
+  e.add_work(frames * pixels, kMaxMoviePixels, "movie pixels drawn (" + g(frames) + " frames × " + g(width_px) + "×" + g(height_px) + ")");
+  const double per_frame_bytes = 4 * (top_cells * top_cells + near_cells * near_cells) + 3 * pixels;
+  e.add_work(frames * per_frame_bytes, kMaxMovieTemporaryBytes,
+             "bytes of temporary disk (" + g(frames) + " frames × " + human_bytes(per_frame_bytes) + " of data and image)");
+  e.add_memory(frames * 96.0, g(frames) + " movie frames' records");
+  return e;
+}
+
 ResourceEstimate estimate_run(const StoneCase& c, const RunSolvers& solvers) {
   ResourceEstimate e;
   const double triangles = static_cast<double>(c.stone.body_mesh.triangles.size());

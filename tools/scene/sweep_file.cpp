@@ -168,33 +168,10 @@ SweepCases::SweepCases(const SweepFile& sweep) : sweep_(sweep) {
 
   // 3. The case at the design's extreme points and first throws.
   const SweepDesign& d = sweep.design;
-  std::vector<std::vector<double>> probes;
   const std::size_t n = d.axes.size();
-  if (n <= 10) {
-    for (std::size_t mask = 0; mask < (std::size_t{1} << n); ++mask) {
-      std::vector<double> p(n);
-      for (std::size_t k = 0; k < n; ++k) p[k] = (mask >> k & 1) ? d.axes[k].to : d.axes[k].from;
-      probes.push_back(p);
-    }
-  } else {
-    for (std::size_t k = 0; k < n; ++k)
-      for (bool hi : {false, true}) {
-        std::vector<double> p(n);
-        for (std::size_t j = 0; j < n; ++j) p[j] = d.axes[j].from;
-        p[k] = hi ? d.axes[k].to : d.axes[k].from;
-        probes.push_back(p);
-      }
-  }
-  for (std::size_t i = 0; i < std::min<std::size_t>(d.size(), 4); ++i) probes.push_back(d.point(i));
-  if (d.kind == DesignKind::grid)
-    for (std::size_t k = 0; k < n; ++k)
-      if (d.axes[k].count > 2) {  // an interior grid value (an integer key refuses a fraction)
-        std::vector<double> p = d.point(0);
-        p[k] = d.grid_values(k)[1];
-        probes.push_back(p);
-      }
   const RunSolvers solvers{runs_realtime(sweep.solvers), runs_reference(sweep.solvers), false};
-  for (const auto& p : probes) {
+  // Each probe's estimate raises heaviest_throw_; a case the reader refuses refuses the sweep.
+  auto probe = [&](const std::vector<double>& p) {
     try {
       const ResourceEstimate e = estimate_run(at(p), solvers);
       if (e.work.size() > heaviest_throw_.work.size()) heaviest_throw_.work = e.work;
@@ -204,6 +181,7 @@ SweepCases::SweepCases(const SweepFile& sweep) : sweep_(sweep) {
         heaviest_throw_.memory_bytes = e.memory_bytes;
         heaviest_throw_.memory_detail = e.memory_detail;
       }
+      return e;
     } catch (const InputError& e) {
       // Blame the varied key the case reader named, or the first one.
       const std::string what = e.what();
@@ -215,7 +193,48 @@ SweepCases::SweepCases(const SweepFile& sweep) : sweep_(sweep) {
       throw_input_error(sweep.file, sweep.axis_lines[k], "vary[" + std::to_string(k + 1) + "]",
                         "the base case refuses the throw at " + values + ": " + what);
     }
+  };
+  // How heavy a probe is against the limits: the largest fraction of any limit it uses.
+  auto load = [](const ResourceEstimate& e) {
+    double f = e.memory_bytes / kDefaultMaxMemoryBytes;
+    for (const auto& w : e.work) f = std::max(f, std::isnan(w.count) ? HUGE_VAL : w.count / w.limit);
+    return std::isnan(f) ? HUGE_VAL : f;
+  };
+  if (n <= 10) {
+    for (std::size_t mask = 0; mask < (std::size_t{1} << n); ++mask) {
+      std::vector<double> p(n);
+      for (std::size_t k = 0; k < n; ++k) p[k] = (mask >> k & 1) ? d.axes[k].to : d.axes[k].from;
+      probe(p);
+    }
+  } else {
+    // 2ⁿ corners are too many: each axis alone at either end, then the corner that takes every
+    // axis at its heavier end (the heaviest corner when each axis's effect is monotone).
+    std::vector<double> low(n), heaviest(n);
+    for (std::size_t j = 0; j < n; ++j) low[j] = d.axes[j].from;
+    const double base_load = load(probe(low));
+    for (std::size_t k = 0; k < n; ++k) {
+      std::vector<double> p = low;
+      p[k] = d.axes[k].to;
+      heaviest[k] = load(probe(p)) > base_load ? d.axes[k].to : d.axes[k].from;
+    }
+    probe(heaviest);
   }
+  for (std::size_t i = 0; i < std::min<std::size_t>(d.size(), 4); ++i) probe(d.point(i));
+  if (d.kind == DesignKind::grid)
+    for (std::size_t k = 0; k < n; ++k) {
+      // An interior grid value, the first that is not whole if any (an integer key refuses a fraction).
+      const std::vector<double> values = d.grid_values(k);
+      if (values.size() <= 2) continue;
+      std::size_t at_value = 1;
+      for (std::size_t i = 1; i + 1 < values.size(); ++i)
+        if (values[i] != std::floor(values[i])) {
+          at_value = i;
+          break;
+        }
+      std::vector<double> p = d.point(0);
+      p[k] = values[at_value];
+      probe(p);
+    }
 }
 
 StoneCase SweepCases::at(const std::vector<double>& point) const {

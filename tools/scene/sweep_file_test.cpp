@@ -11,6 +11,7 @@
 #include <fstream>
 
 #include "tools/io/input_error.hpp"
+#include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/sweep_file.hpp"
 
 using namespace stoneskip;
@@ -130,6 +131,50 @@ BOOST_AUTO_TEST_CASE(an_integer_key_can_be_swept_with_whole_values) {
   const SweepFile s = load_sweep_file(write_sweep(text).string());
   const SweepCases cases(s);
   BOOST_TEST(cases.at({8.0, 12.0}).stone.body_mesh.triangles.size() == 48u);  // 4N triangles
+}
+
+BOOST_AUTO_TEST_CASE(an_integer_key_takes_every_whole_value_of_a_long_grid) {
+  // Oracle: segments 3…30 in 28 points are the whole numbers 3…30 (4N triangles each); 3…30 in 11
+  // points has 5.7, which the case reader refuses: the sweep is refused before any throw runs.
+  const std::string whole = replace(kGrid, "key = \"environment.water_coefficient\"\nfrom = 0.5\nto = 2.0\ncount = 3\nscale = \"log\"",
+                                    "key = \"stone.segments\"\nfrom = 3\nto = 30\ncount = 28");
+  const SweepFile s = load_sweep_file(write_sweep(whole).string());
+  const SweepCases cases(s);
+  for (std::size_t i = 0; i < s.design.size(); ++i) {
+    const std::vector<double> p = s.design.point(i);
+    BOOST_TEST(cases.at(p).stone.body_mesh.triangles.size() == 4 * static_cast<std::size_t>(p[1]), "throw " << i);
+  }
+  const std::string m = error_of(replace(whole, "count = 28", "count = 11"));
+  BOOST_TEST(m.find("vary[2]") != std::string::npos, m);
+  BOOST_TEST(m.find("stone.segments=5.7") != std::string::npos, m);
+}
+
+BOOST_AUTO_TEST_CASE(a_sweep_of_more_than_ten_axes_is_held_to_its_heaviest_corner) {
+  // Oracle: estimate_run at the corner that is heaviest (t_max_s and segments at their top, the
+  // contact step at its bottom): the sweep's heaviest throw must be at least that heavy. Eight
+  // axes of one value make eleven, past the 2ⁿ corners probed up to ten.
+  std::string text = "base = \"" + fs::relative(kBase, dir() / "sweeps").string() + "\"\n[design]\nkind = \"grid\"\n";
+  auto vary = [&](const std::string& key, double from, double to, int count) {
+    text += "[[vary]]\nkey = \"" + key + "\"\nfrom = " + std::to_string(from) + "\nto = " + std::to_string(to) +
+            "\ncount = " + std::to_string(count) + "\n";
+  };
+  vary("solver.t_max_s", 1.0, 2.0, 2);
+  vary("solver.contact_dt_s", 1e-6, 1e-5, 2);
+  vary("stone.segments", 11, 40, 2);
+  struct Fixed { const char* key; double value; };
+  const Fixed fixed[] = {{"throw.speed_m_s", 8},         {"throw.path_angle_deg", 10}, {"throw.attack_angle_deg", 10},
+                         {"throw.spin_rev_s", 10},       {"throw.height_m", 0.1},      {"stone.radius_m", 0.03},
+                         {"stone.thickness_m", 0.008},   {"stone.density_kg_m3", 2500}};
+  for (const Fixed& f : fixed) vary(f.key, f.value, f.value, 1);
+  const SweepFile s = load_sweep_file(write_sweep(text).string());
+  BOOST_REQUIRE(s.design.axes.size() == 11u);
+  const SweepCases cases(s);
+  std::vector<double> corner = {2.0, 1e-6, 40};
+  for (const Fixed& f : fixed) corner.push_back(f.value);
+  const ResourceEstimate heaviest = estimate_run(cases.at(corner), RunSolvers{});
+  BOOST_REQUIRE(cases.heaviest_throw().work.size() == heaviest.work.size());
+  for (std::size_t i = 0; i < heaviest.work.size(); ++i)
+    BOOST_TEST(cases.heaviest_throw().work[i].count >= heaviest.work[i].count, heaviest.work[i].what);
 }
 
 BOOST_AUTO_TEST_CASE(bad_sweep_files_fail_with_one_line_naming_file_line_and_key) {

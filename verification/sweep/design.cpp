@@ -1,6 +1,7 @@
 #include "verification/sweep/design.hpp"
 
 #include <cmath>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -79,8 +80,19 @@ double grid_value(const SweepAxis& a, long long i) {
   if (a.count <= 1 || i == 0) return a.from;
   if (i == a.count - 1) return a.to;
   const double t = static_cast<double>(i) / static_cast<double>(a.count - 1);
-  if (a.scale == AxisScale::log) return a.from * std::pow(a.to / a.from, t);
-  return a.from * (1 - t) + a.to * t;
+  if (a.scale == AxisScale::log) {
+    // A value within round-off of a whole number is that number (1, 10, 100, 1000 come out as
+    // 9.999999999999998 …): an integer key must get whole values. 8 ulps: pow's error, a few ulps.
+    const double v = a.from * std::pow(a.to / a.from, t);
+    const double whole = std::round(v);
+    return std::abs(v - whole) <= 8 * std::numeric_limits<double>::epsilon() * std::abs(v) ? whole : v;
+  }
+  // from + i·(to − from)/(count − 1): whole when the exact value is (i·(to − from) and its quotient
+  // are exact), where from·(1 − t) + to·t gave 14.999999999999998 for 3…30 in 28 points; the
+  // old form only where the span overflows (±1e308).
+  const double span = a.to - a.from;
+  const double v = a.from + static_cast<double>(i) * span / static_cast<double>(a.count - 1);
+  return std::isfinite(v) ? v : a.from * (1 - t) + a.to * t;
 }
 
 }  // namespace

@@ -53,6 +53,18 @@ BOOST_AUTO_TEST_CASE(a_linear_grid_is_equally_spaced_with_exact_endpoints) {
   for (std::size_t i = 0; i < v.size(); ++i) BOOST_TEST(std::abs(v[i] - (4.0 + 0.2 * i)) < 12 * kUlps);
 }
 
+BOOST_AUTO_TEST_CASE(a_grid_of_whole_numbers_gives_whole_numbers_exactly) {
+  // Oracle: 3, 4, …, 30 (28 points) and 1, 10, 100, 1000 (log, 4 points) are whole numbers, and an
+  // integer key (stone.segments) refuses anything else: compared exactly, no tolerance.
+  SweepDesign d;
+  d.axes = {axis("stone.segments", 3.0, 30.0, 28), axis("stone.segments_b", 1.0, 1000.0, 4)};
+  d.axes[1].scale = AxisScale::log;
+  const std::vector<double> linear = d.grid_values(0), log = d.grid_values(1);
+  for (std::size_t i = 0; i < linear.size(); ++i) BOOST_TEST(linear[i] == 3.0 + static_cast<double>(i));
+  const double powers[] = {1, 10, 100, 1000};
+  for (std::size_t i = 0; i < log.size(); ++i) BOOST_TEST(log[i] == powers[i]);
+}
+
 BOOST_AUTO_TEST_CASE(grid_throws_are_numbered_row_major_with_the_first_axis_slowest) {
   // Oracle: nested loops over the axes in the order given.
   SweepDesign d;

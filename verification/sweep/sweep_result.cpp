@@ -125,6 +125,15 @@ SweepData read_sweep_file(const std::filesystem::path& path) {
       parse_axis_scale(g.attr_string("scale"), a.scale);
       d.design.axes.push_back(a);
     }
+    // A damaged or edited design is refused here, before anything sizes a figure or a map by it
+    // (an axis count of 0 divided by zero, -3 indexed out of bounds, 1e6 allocated gigabytes).
+    DesignProblem why;
+    if (!d.design.is_valid(&why))
+      throw_input_error(path.string(), 0, "design" + (why.axis >= 0 ? ".axis_" + std::to_string(why.axis) : std::string()) + "." + why.key,
+                        why.what);
+    if (d.design.size() != d.throws.rows())
+      throw_input_error(path.string(), 0, "design", "describes " + std::to_string(d.design.size()) + " throws but /throws has " +
+                                                       std::to_string(d.throws.rows()) + " rows");
     const H5Group notes = root.open_group("notes");
     const auto ids = notes.read_ints("throw");
     const auto solver = notes.read_strings("solver");

@@ -24,6 +24,22 @@ BOOST_AUTO_TEST_CASE(computed_limits_match_the_spec_and_do_not_grow_with_damping
     }
 }
 
+BOOST_AUTO_TEST_CASE(the_limit_is_independent_of_damping_down_to_round_off_damping) {
+  // Oracle: model/water/stencil.hpp (Schur–Cohn) — σ_max = 2/√(−min s) for every μΔt ∈ [0, 2),
+  // so 1/√2, √3/2, 1 at every μΔt of [0, 1], including 1e-11 … 1e-7 where the discriminant's
+  // μΔt² is below the round-off of 16 (the limit came out 0 there). Tolerance kLimit as above.
+  const double dampings[] = {0.0,  1e-14, 1e-12, 1e-11, 1.8e-11, 5e-11, 1e-10, 1e-9, 5.12e-9,
+                             1e-8, 5e-8,  1e-7,  1e-6,  1e-4,    1e-2,  0.1,   0.5,  1.0};
+  for (const char* name : {"five_point", "nine_point_isotropic", "nine_point_half"}) {
+    const Stencil s = named_stencil(name);
+    const double exact = leapfrog_courant_limit(s);
+    for (double mu_dt : dampings) {
+      const double limit = stability_limit(s, mu_dt);
+      BOOST_TEST(std::abs(limit - exact) <= kLimit, name << " at μΔt = " << mu_dt << ": " << limit);
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(runs_two_percent_above_the_limit_grow_and_two_percent_below_do_not) {
   // Oracle: the computed limit itself; a run (random noise, 400 steps) above it must be found to
   // grow (GrowthRun::grew: its measured rate exceeds 1 by more than the run resolves) and one below

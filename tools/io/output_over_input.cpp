@@ -1,0 +1,50 @@
+#include "tools/io/output_over_input.hpp"
+
+#include <algorithm>
+#include <system_error>
+
+#include "tools/io/input_error.hpp"
+
+namespace stoneskip {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path resolved(const fs::path& p) {
+  std::error_code ec;
+  fs::path r = fs::weakly_canonical(fs::absolute(p, ec), ec);
+  return ec ? fs::absolute(p).lexically_normal() : r;
+}
+
+bool same_file(const fs::path& a, const fs::path& b) {
+  std::error_code ec;
+  const bool same = fs::equivalent(a, b, ec);
+  return !ec && same;
+}
+
+// True if `inner` lies in `folder` (both resolved), at any depth.
+bool inside(const fs::path& inner, const fs::path& folder) {
+  const auto f = std::distance(folder.begin(), folder.end());
+  if (std::distance(inner.begin(), inner.end()) <= f) return false;
+  return std::equal(folder.begin(), folder.end(), inner.begin());
+}
+
+}  // namespace
+
+void refuse_output_over_inputs(const fs::path& output, OutputKind kind, const std::vector<fs::path>& inputs,
+                               const std::string& option) {
+  if (output.empty()) return;  // the commands refuse an empty name themselves
+  const fs::path out = resolved(output);
+  for (const auto& input : inputs) {
+    if (input.empty()) continue;
+    const fs::path in = resolved(input);
+    if (in == out || same_file(output, input))
+      throw_input_error(option, 0, "", "'" + output.string() + "' is the input '" + input.string() + "': refusing to overwrite it");
+    if (kind == OutputKind::folder && inside(in, out))
+      throw_input_error(option, 0, "",
+                        "folder '" + output.string() + "' holds the input '" + input.string() + "': refusing to replace it");
+  }
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,80 @@
+// An output that is one of the command's inputs, or a folder holding one, is refused however it is
+// spelt. Oracles: paths made here whose identity is known by construction (the same file through
+// "./", "..", a symbolic link and a hard link; a folder two levels above the input; a sibling whose
+// name only starts like the folder's).
+#include <boost/test/unit_test.hpp>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tools/io/input_error.hpp"
+#include "tools/io/output_over_input.hpp"
+
+using namespace stoneskip;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Scratch {
+  fs::path dir = fs::temp_directory_path() / ("stoneskip_over_input_" + std::to_string(::getpid()));
+  Scratch() {
+    fs::remove_all(dir);
+    fs::create_directories(dir / "sp1" / "deep");
+    fs::create_directories(dir / "sp10");
+    std::ofstream(dir / "case.toml") << "x\n";
+    std::ofstream(dir / "sp1" / "deep" / "results.h5") << "x\n";
+    std::ofstream(dir / "sp10" / "results.h5") << "x\n";
+  }
+  ~Scratch() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+};
+
+// The refusal's message, or "" if the output is allowed.
+std::string refusal(const fs::path& out, OutputKind kind, const fs::path& input) {
+  try {
+    refuse_output_over_inputs(out, kind, {input});
+    return "";
+  } catch (const InputError& e) {
+    return e.what();
+  }
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(output_over_input)
+
+BOOST_AUTO_TEST_CASE(the_input_under_any_spelling_is_refused_as_an_output_file) {
+  Scratch s;
+  const fs::path in = s.dir / "case.toml";
+  BOOST_TEST(refusal(in, OutputKind::file, in).find("is the input") != std::string::npos);
+  BOOST_TEST(!refusal(s.dir / "." / "case.toml", OutputKind::file, in).empty());
+  BOOST_TEST(!refusal(s.dir / "sp1" / ".." / "case.toml", OutputKind::file, in).empty());
+  fs::create_symlink(in, s.dir / "link.toml");
+  BOOST_TEST(!refusal(s.dir / "link.toml", OutputKind::file, in).empty());
+  fs::create_hard_link(in, s.dir / "hard.toml");
+  BOOST_TEST(!refusal(s.dir / "hard.toml", OutputKind::file, in).empty());
+  // Another name, existing or not, is no input.
+  BOOST_TEST(refusal(s.dir / "case.h5", OutputKind::file, in).empty());
+  BOOST_TEST(refusal(s.dir / "sp10" / "results.h5", OutputKind::file, in).empty());
+}
+
+BOOST_AUTO_TEST_CASE(a_folder_holding_the_input_is_refused_a_sibling_is_not) {
+  Scratch s;
+  const fs::path in = s.dir / "sp1" / "deep" / "results.h5";
+  const std::string why = refusal(s.dir / "sp1", OutputKind::folder, in);
+  BOOST_TEST(why.find("holds the input") != std::string::npos, why);
+  BOOST_TEST(why.find("--out") == 0u, why);
+  BOOST_TEST(!refusal(s.dir / "sp1" / "deep", OutputKind::folder, in).empty());
+  BOOST_TEST(!refusal(s.dir, OutputKind::folder, in).empty());
+  BOOST_TEST(refusal(s.dir / "sp10", OutputKind::folder, in).empty());  // "sp10" only starts like "sp1"
+  BOOST_TEST(refusal(s.dir / "sp1" / "other", OutputKind::folder, in).empty());
+  // An output file is not a folder: a file named like a parent is simply another name.
+  BOOST_TEST(refusal(s.dir / "sp2", OutputKind::file, in).empty());
+}
+
+BOOST_AUTO_TEST_SUITE_END()
