@@ -276,8 +276,10 @@ SectionOutput validation_section(const Record& v) {
       PlotSeries a, r;
       a.title = g.text("title") + ": pitch (attack)";
       r.title = g.text("title") + ": roll";
-      a.style = "lines";
-      r.style = "lines dt 2";
+      // One colour per variant: pitch solid, roll dashed.
+      const std::string colour = " lc " + std::to_string(ps.size() / 2 + 1);
+      a.style = "lines" + colour;
+      r.style = "lines dt 2" + colour;
       a.x = r.x = hist.column("t_s");
       a.y = hist.column("attack_deg");
       r.y = hist.column("roll_deg");

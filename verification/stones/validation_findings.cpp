@@ -640,7 +640,6 @@ Record validation_findings(const ValidationResult& v, const ValidationOptions& o
     store_first_contact(g, run->with_spin);
   }
   {
-    const Record& phys = why.at("physical");
     const Record& pap = why.at("paper");
     const double p_pap = pap.number("max_fluid_power_W");
     // Energy, a check that can fail: each contact's energy change against the integrated fluid
