@@ -246,6 +246,8 @@ void read_validation(TomlTable t, StoneStudiesOptions& o) {
         t.fail("distributions", "'" + n + "' repeats");
       v.distributions.push_back(d);
     }
+    if (std::find(v.distributions.begin(), v.distributions.end(), PressureDistribution::uniform) == v.distributions.end())
+      t.fail("distributions", "must include uniform (the model-beside-model rows and Fig. 9 use it)");
   }
   v.diving_spin_rev_s = t.number_or("diving_spin_rev_s", v.diving_spin_rev_s);
   v.trout_spin_rev_s = t.number_or("trout_spin_rev_s", v.trout_spin_rev_s);

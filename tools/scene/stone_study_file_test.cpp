@@ -70,6 +70,7 @@ BOOST_AUTO_TEST_CASE(bad_laws_ranges_and_strategies_are_one_line_errors_naming_t
   names(error_of({"validation.ranking.colour=1"}), "colour");
   names(error_of({"validation.distributions=[\"uniform\", \"wagner\"]"}), "validation.distributions");
   names(error_of({"validation.distributions=[\"uniform\", \"uniform\"]"}), "validation.distributions");
+  names(error_of({"validation.distributions=[\"savitsky\"]"}), "validation.distributions");
   names(error_of({"validation.trout_spin_rev_s=12.0"}), "validation.trout_spin_rev_s");
   names(error_of({"validation.ranking.attitude_bound_deg=-1.0"}), "attitude_bound_deg");
   names(error_of({R"(validation.measured=[{key = "seed_spin", quantity = "q", measured = "m", source = "s", kind = "guess"}])"}),

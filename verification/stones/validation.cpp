@@ -256,6 +256,9 @@ bool ValidationOptions::valid(std::string* why) const {
   if (distributions.empty()) return fail("validation needs at least one pressure distribution");
   if (std::set<PressureDistribution>(distributions.begin(), distributions.end()).size() != distributions.size())
     return fail("validation distributions repeat");
+  // The model-beside-model rows, the conventions' comparison and Fig. 9 use the uniform free variant.
+  if (std::find(distributions.begin(), distributions.end(), PressureDistribution::uniform) == distributions.end())
+    return fail("validation distributions must include uniform (the model-beside-model rows and Fig. 9 use it)");
   for (double w : {diving_spin_rev_s, trout_spin_rev_s})
     if (std::find(regime_spins_rev_s.begin(), regime_spins_rev_s.end(), w) == regime_spins_rev_s.end())
       return fail("validation diving_spin_rev_s and trout_spin_rev_s must be among regime_spins_rev_s");
