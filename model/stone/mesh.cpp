@@ -1,5 +1,6 @@
 #include "model/stone/mesh.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -47,6 +48,37 @@ Mesh make_lens(double radius_m, double thickness_m, int segments) {
     m.triangles.push_back({1, rim(k + 1), rim(k)});
   }
   return m;
+}
+
+Mesh make_icosphere(double radius_m, int subdivisions) {
+  // The icosahedron's 12 vertices are the cyclic permutations of (0, ±1, ±φ), φ the golden ratio.
+  const double phi = std::numbers::phi;
+  std::vector<Vec3> v{{-1, phi, 0}, {1, phi, 0}, {-1, -phi, 0}, {1, -phi, 0}, {0, -1, phi}, {0, 1, phi},
+                      {0, -1, -phi}, {0, 1, -phi}, {phi, 0, -1}, {phi, 0, 1}, {-phi, 0, -1}, {-phi, 0, 1}};
+  std::vector<std::array<int, 3>> t{{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                                    {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                                    {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  for (auto& x : v) x = radius_m * x.normalized();
+  for (int level = 0; level < subdivisions; ++level) {
+    std::map<std::pair<int, int>, int> midpoint;  // each shared edge split once
+    auto mid = [&](int a, int b) {
+      const auto key = std::minmax(a, b);
+      const auto it = midpoint.find(key);
+      if (it != midpoint.end()) return it->second;
+      v.push_back(radius_m * (v[a] + v[b]).normalized());
+      return midpoint[key] = static_cast<int>(v.size()) - 1;
+    };
+    std::vector<std::array<int, 3>> finer;
+    for (const auto& [a, b, c] : t) {
+      const int ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+      finer.push_back({a, ab, ca});
+      finer.push_back({b, bc, ab});
+      finer.push_back({c, ca, bc});
+      finer.push_back({ab, bc, ca});
+    }
+    t = std::move(finer);
+  }
+  return Mesh{std::move(v), std::move(t)};
 }
 
 MeshCheck check_mesh(const Mesh& mesh) {

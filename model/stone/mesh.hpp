@@ -2,6 +2,7 @@
 // A stone is a closed, outward-oriented triangle mesh (spec §1.1). Two parametric families:
 //   prism: regular N-gon prism, 4N triangles (N = 11 gives Lee & Baek's 44);
 //   lens:  biconvex stone, one rim ring and two apexes, 2N triangles (N = 22 gives 44).
+// And a sphere (Johnson & Reid's ricochet of spheres, spec §3): an icosphere, 20·4^n triangles.
 // A mesh may also come from a Wavefront OBJ file (tools/io/obj_reader.hpp); check_mesh() says
 // whether it is closed and outward-oriented.
 #include <Eigen/Dense>  // Core + Geometry (cross products, quaternions)
@@ -23,6 +24,10 @@ struct Mesh {
 Mesh make_prism(double radius_m, double thickness_m, int segments);
 // Biconvex lens: rim ring of N vertices at z = 0, apexes at z = ±h/2 (§1.1).
 Mesh make_lens(double radius_m, double thickness_m, int segments);
+// Sphere of radius R: the regular icosahedron inscribed in it, each triangle split `subdivisions`
+// times into four with the new vertices pushed out onto the sphere (20·4^n triangles, every vertex
+// on the sphere: the solid lies between the ball of radius R and that of its smallest face distance).
+Mesh make_icosphere(double radius_m, int subdivisions);
 
 struct MeshCheck {
   bool ok = false;                 // closed, consistently and outward oriented, non-degenerate

@@ -107,4 +107,39 @@ BOOST_AUTO_TEST_CASE(open_flipped_and_inward_meshes_are_rejected) {
   BOOST_TEST(c.problem.find("inward") != std::string::npos);
 }
 
+BOOST_AUTO_TEST_CASE(icosphere_volume_and_inertia_lie_between_its_inner_and_outer_balls) {
+  // Oracle: every vertex lies on the sphere and the solid is convex, so it contains the ball of
+  // radius r_in (its smallest face-plane distance) and lies inside the ball of radius R: its volume
+  // and polar moment lie between the balls' (4/3)πr³ and (8/15)πρr⁵ (the discretisation's known
+  // error, O(h²)), up to round-off. Icosahedral symmetry makes the inertia isotropic exactly.
+  const double R = 0.02, rho = 2650;
+  double previous_deficit = 1;
+  for (int n : {0, 1, 2, 3}) {
+    const Mesh m = make_icosphere(R, n);
+    BOOST_TEST(m.triangles.size() == 20u * (1u << (2 * n)));
+    const MeshCheck c = check_mesh(m);
+    BOOST_TEST(c.ok, c.problem);
+    double r_in = R;
+    for (const auto& t : m.triangles) {
+      const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &d = m.vertices[t[2]];
+      r_in = std::min(r_in, std::abs((b - a).cross(d - a).normalized().dot(a)));
+    }
+    const MassProperties mp = mass_properties_from_density(m, rho);
+    const double v_in = 4.0 / 3.0 * kPi * std::pow(r_in, 3), v_out = 4.0 / 3.0 * kPi * std::pow(R, 3);
+    BOOST_TEST(mp.volume_m3 >= v_in * (1 - kRoundoff), "n=" << n);
+    BOOST_TEST(mp.volume_m3 <= v_out * (1 + kRoundoff), "n=" << n);
+    const double i_in = 8.0 / 15.0 * kPi * rho * std::pow(r_in, 5), i_out = 8.0 / 15.0 * kPi * rho * std::pow(R, 5);
+    for (int k = 0; k < 3; ++k) {
+      BOOST_TEST(mp.inertia_kg_m2(k, k) >= i_in * (1 - kRoundoff), "n=" << n);
+      BOOST_TEST(mp.inertia_kg_m2(k, k) <= i_out * (1 + kRoundoff), "n=" << n);
+      BOOST_TEST(std::abs(mp.inertia_kg_m2(k, k) - mp.inertia_kg_m2(0, 0)) <= kRoundoff * i_out, "n=" << n);
+    }
+    BOOST_TEST(mp.center_of_mass_m.norm() <= kRoundoff * R);
+    // Each subdivision cuts the volume deficit by about 4 (h halves, the error is O(h²)): at least 3.
+    const double deficit = 1 - mp.volume_m3 / v_out;
+    if (n > 0) BOOST_TEST(deficit < previous_deficit / 3, "n=" << n);
+    previous_deficit = deficit;
+  }
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -50,9 +50,24 @@ std::string counts_text(const Table& t, const std::string& x, const std::string&
   return s;
 }
 
+std::string attitude_text(const Record& h) {
+  const Record& c = h.at("first_contact");
+  if (!c.flag("exists")) return "no contact";
+  return "pitch " + fmt(c.number("attack_change_deg"), 3) + "° (" + c.at("pitch").text("verdict") + "), roll " +
+         fmt(c.number("roll_change_deg"), 3) + "° (" + c.at("roll").text("verdict") + ")";
+}
+
 // One variant's cell of a validation row.
 std::string model_cell(const Record& g, const std::string& key, const Record& v) {
-  const Record& seed = g.at("seed");
+  if (!g.has_child("seed") && (key.rfind("bocquet_", 0) == 0 || key.rfind("seed_", 0) == 0)) return "not run";
+  if (key == "clanet_regime_surfing") return "**" + g.at("regime_verdicts").at("surfing").text("verdict") + "**";
+  if (key == "clanet_" + v.text("diving_regime"))
+    return "**" + g.at("regime_verdicts").at("diving").text("verdict") + "**: " + regime_text(g.at(v.text("diving_regime")));
+  if (key == "clanet_" + v.text("trout_regime"))
+    return "**" + g.at("regime_verdicts").at("trout").text("verdict") + "**: " + regime_text(g.at(v.text("trout_regime")));
+  if (key == "clanet_" + v.text("held_regime")) return attitude_text(g.at(v.text("held_regime")));
+  if (key == "sphere_ricochet") return bisected(g.at("sphere_path_angle"), "°");
+  if (key.rfind("seed_", 0) == 0 && !g.has_child("seed")) return "–";
   if (key == "clanet_min_speed")
     return g.has_child("min_speed_at_compared_attack") ? bisected(g.at("min_speed_at_compared_attack"), "m/s") : "–";
   if (key == "clanet_best_attack") return fmt(g.number("best_attack_deg"), 3) + "°";
@@ -66,6 +81,7 @@ std::string model_cell(const Record& g, const std::string& key, const Record& v)
   if (key == "bocquet_speed_exponent") return exponent_text(g.at("speed_exponent"));
   if (key == "bocquet_spin_exponent") return exponent_text(g.at("spin_exponent"));
   if (key == "bocquet_counts") return counts_text(g.table("bocquet_spin"), "spin_rev_s", "count");
+  const Record& seed = g.at("seed");
   if (key == "seed_no_spin") return fmt(seed.number("bounces_without_spin")) + " bounces";
   if (key == "seed_spin") return fmt(seed.number("bounces_with_spin")) + " bounces";
   if (key == "seed_curved")
@@ -80,6 +96,7 @@ std::vector<PlotSeries> variant_curves(const Record& vars, const std::string& ta
   std::vector<PlotSeries> ps;
   for (const auto& key : vars.strings("keys")) {
     const Record& g = vars.at(key);
+    if (!g.has_table(table)) continue;
     PlotSeries p;
     p.title = "model: " + g.text("title");
     if (g.text("solver") == "realtime") p.style = "linespoints dt 2";
@@ -94,7 +111,8 @@ std::string first_contact_text(const Record& h) {
   const Record& c = h.at("first_contact");
   if (!c.flag("exists")) return "no contact";
   return "first contact " + fmt(1000 * c.number("start_s"), 3) + "–" + fmt(1000 * c.number("end_s"), 3) +
-         " ms, pitching the stone " + verdict_markdown(c.at("pitch")) + "; speed " + fmt(c.number("entry_speed_m_s"), 3) +
+         " ms, pitching the stone " + verdict_markdown(c.at("pitch")) + ", its roll " + verdict_markdown(c.at("roll")) +
+         "; speed " + fmt(c.number("entry_speed_m_s"), 3) +
          " → " + fmt(c.number("exit_speed_m_s"), 3) + " m/s; energy " + fmt(c.number("entry_energy_J"), 3) + " → " +
          fmt(c.number("exit_energy_J"), 3) + " J; " + (c.flag("bounced") ? "it takes off again" : "it sinks");
 }
@@ -115,48 +133,93 @@ SectionOutput validation_section(const Record& v) {
   const Record& vars = v.at("variants");
   std::string titles;
   for (const auto& key : vars.strings("keys")) titles += (titles.empty() ? "" : ", ") + code(vars.at(key).text("title"));
+  std::string distributions;
+  for (const auto& d : v.strings("distributions")) distributions += (distributions.empty() ? "" : ", ") + code(d);
   w.lead("What is compared.",
          "The model's values, nothing tuned, beside measured ones, for each water law with the coefficient its source "
-         "publishes (model/stone/water_laws.hpp): " + titles +
-             ". A `reference` column is the model itself (CVODE, physical convention, rtol " + fmt(v.number("reference_rtol"), 2) +
-             "); the `real-time` column adds the stepper's discretisation error to the default law (" +
+         "publishes (model/stone/water_laws.hpp), each pressure distribution of the study (" + distributions +
+             ": model/stone/pressure_distribution.hpp) and both attitudes: `held` (orientation and angular momentum "
+             "as thrown, the torques discarded: the high-spin limit in which Clanet et al. and Rosellini et al. analyse "
+             "skipping) and `free` (the 6-DOF stone). Columns: " + titles +
+             ". Each is the model itself (CVODE, physical convention, rtol " + fmt(v.number("reference_rtol"), 2) +
+             ") unless named `real-time` (the stepper's discretisation error added to the default law, " +
              code(v.text("default_law")) +
-             "); the paper convention is the model with the paper's printed equations (their own law, Eq. 2). The "
+             ", uniform, free); the paper convention is the model with the paper's printed equations (their own law, "
+             "Eq. 2, uniform, free). To keep the report's run time, Bocquet's stone and the seed's throws are thrown "
+             "only for the uniform, free variants and the paper's (\"not run\" elsewhere). The "
              "model is not expected to match: the differences are model-form error (a force law on a triangle mesh, no "
-             "splash, no cavity, no added mass). Minimum speeds and the largest path angle are bisected (smallest speed / "
+             "splash, no cavity, no added mass). Minimum speeds and the largest path angles are bisected (smallest speed / "
              "largest angle with at least one bounce) to " + fmt(v.number("speed_tolerance_m_s"), 2) + " m/s and " +
              fmt(v.number("angle_tolerance_deg"), 2) + "°; exponents are least-squares fits of the logarithms with their "
-             "95 % interval.");
+             "95 % interval. An attitude change through a contact within ±" + fmt(v.number("attitude_held_deg"), 2) +
+             "° is called held (the verdicts `attack_change`, `roll_change`).");
   const Record& m = v.at("measured");
-  std::vector<std::string> head{"quantity", "measured", "expected (spec §3)", "source"};
-  for (const auto& key : vars.strings("keys")) head.push_back("model: " + vars.at(key).text("title"));
-  MarkdownTable t(head);
-  for (const auto& key : m.strings("keys")) {
-    const Record& row = m.at(key);
-    std::vector<std::string> cells{row.text("quantity"), row.text("measured"), row.text("expected"), row.text("source")};
-    for (const auto& vk : vars.strings("keys")) cells.push_back(model_cell(vars.at(vk), key, v));
-    t.row(cells);
+  auto rows_table = [&](const std::string& kind, bool beside_models_only) {
+    std::vector<std::string> head{"quantity", "measured", "expected (spec §3)", "source"};
+    std::vector<std::string> cols;
+    for (const auto& key : vars.strings("keys"))
+      if (!beside_models_only || vars.at(key).flag("beside_models") || vars.at(key).text("convention") == "paper") {
+        cols.push_back(key);
+        head.push_back("model: " + vars.at(key).text("title"));
+      }
+    MarkdownTable t(head);
+    for (const auto& key : m.strings("keys")) {
+      const Record& row = m.at(key);
+      if (row.text("kind") != kind) continue;
+      std::vector<std::string> cells{row.text("quantity"), row.text("measured"), row.text("expected"), row.text("source")};
+      for (const auto& vk : cols) cells.push_back(model_cell(vars.at(vk), key, v));
+      t.row(cells);
+    }
+    w.table(t);
+  };
+  rows_table("measurement", false);
+  {
+    const Record& sp = v.at("sphere");
+    w.text("Johnson & Reid's sphere: " + sp.text("stone") + ", thrown without spin at " + fmt(sp.number("speed_m_s"), 3) +
+           " m/s; their θ_max ≈ 18°/√σ gives " + fmt(sp.number("theta_max_deg"), 3) + "° (a number quoted by Nagahiro & "
+           "Hayakawa 2005, not read from Johnson & Reid here). Regimes at " + fmt(v.number("regime_attack_deg"), 3) +
+           "° unless stated: diving without spin (" + fmt(v.number("diving_spin_rev_s"), 3) + " rev/s), the trout (" +
+           fmt(v.number("trout_spin_rev_s"), 3) + " rev/s), surfing (α " + fmt(v.number("surfing_attack_deg"), 3) +
+           "°, β " + fmt(v.number("surfing_path_angle_deg"), 3) + "°); the rules `surfing`, `diving`, `trout` judge them.");
   }
-  w.table(t);
-  const Record& bq = v.at("bocquet");
-  w.text("Stone for Bocquet's trends: " + bq.text("stone") + ". Bocquet's N_Ω ≈ RΩ²/g gives " +
-         counts_text(bq.table("spin"), "spin_rev_s", "bocquet_N_omega") + " bounces at these spins.");
 
-  // The fitted exponents and their verdicts, per variant (the reasons: the intervals in the table above).
+  // The fitted exponent of the contact time and its verdict, per variant.
   {
     const Record& first = vars.at(vars.strings("keys").front());
     w.lead("Fitted exponents.", "Each against the expected value ± " + fmt(v.number("exponent_tolerance"), 2) +
                                     ": the whole 95 % interval must lie within it (rule `power_law_exponent`).");
     MarkdownTable e({"model", "contact time against U (expected " +
-                                  fmt(first.at("contact_exponent").at("verdict").number("expected"), 3) + ")",
-                     "N against V² (expected " + fmt(first.at("speed_exponent").at("verdict").number("expected"), 3) + ")",
-                     "N against Ω² (expected " + fmt(first.at("spin_exponent").at("verdict").number("expected"), 3) + ")"});
+                                  fmt(first.at("contact_exponent").at("verdict").number("expected"), 3) + ")"});
     for (const auto& key : vars.strings("keys")) {
       const Record& g = vars.at(key);
-      std::vector<std::string> cells{g.text("title")};
-      for (const char* fit : {"contact_exponent", "speed_exponent", "spin_exponent"})
-        cells.push_back(exponent_text(g.at(fit)) + ": **" + g.at(fit).at("verdict").text("verdict") + "**");
-      e.row(cells);
+      e.row({g.text("title"),
+             exponent_text(g.at("contact_exponent")) + ": **" + g.at("contact_exponent").at("verdict").text("verdict") + "**"});
+    }
+    w.table(e);
+  }
+  // Each contact's energy balance (a check that can fail: the passivity P ≤ 0 is an identity of the laws).
+  {
+    w.lead("Energy over each contact.",
+           "Clanet's reference throw, each reference variant: the stone's mechanical energy change ΔE over each contact "
+           "against the time integral of the fluids' power ∫(F·v + τ·ω) dt (trapezoidal, on samples 20 µs apart), "
+           "allowed the quadrature's estimated error plus " +
+               fmt(vars.at(vars.strings("keys").front()).at("energy").number("integrator_error_factor"), 3) +
+               " × rtol of the energy (rule `contact_energy`: balanced, and passive when no contact gains more than that).");
+    MarkdownTable e({"model", "contacts", "ΔE (mJ)", "∫P dt (mJ)", "|ΔE − ∫P dt| (µJ)", "tolerance (µJ)", "verdict"});
+    for (const auto& key : vars.strings("keys")) {
+      const Record& g = vars.at(key);
+      if (!g.has_child("energy")) continue;
+      const Record& en = g.at("energy");
+      const Table& t = en.table("contacts");
+      std::string de, wk, res, tol;
+      for (std::size_t i = 0; i < t.rows(); ++i) {
+        const std::string sep = i ? ", " : "";
+        de += sep + fmt(1000 * t.column("energy_change_J")[i], 4);
+        wk += sep + fmt(1000 * t.column("work_J")[i], 4);
+        res += sep + fmt(1e6 * std::abs(t.column("energy_change_J")[i] - t.column("work_J")[i]), 2);
+        tol += sep + fmt(1e6 * t.column("tolerance_J")[i], 2);
+      }
+      e.row({g.text("title"), fmt(double(t.rows())), de, wk, res, tol, "**" + en.at("verdict").text("verdict") + "**"});
     }
     w.table(e);
   }
@@ -183,7 +246,7 @@ SectionOutput validation_section(const Record& v) {
     ax.x_label = "attack angle α (deg)";
     ax.y_label = "minimum speed for a bounce (m/s)";
     ax.extra = "set yrange [0:*]";
-    w.figure(line_figure("clanet_min_speed", "Clanet's disk: minimum bouncing speed against attack angle, measured and each law",
+    w.figure(line_figure("clanet_min_speed", "Clanet's disk: minimum bouncing speed against attack angle at β = 20°, measured and each variant",
                          ax, ps, "attack_deg", "speed_m_s"));
     for (const auto& ck : curves.strings("keys")) {
       const Record& c = curves.at(ck);
@@ -198,12 +261,51 @@ SectionOutput validation_section(const Record& v) {
     w.figure(line_figure("clanet_contact_time", "Clanet's disk: contact time against speed", ax,
                          variant_curves(vars, "contact_time", "speed_m_s", "contact_s", 1000, false), "speed_m_s", "contact_ms"));
   }
+  // Attitude (pitch and roll) through the first contact at the trout's and the held spin: every
+  // free reference variant (a held one keeps both by construction).
+  for (const std::string regime : {v.text("trout_regime"), v.text("held_regime")}) {
+    std::vector<PlotSeries> ps;
+    double t_zoom = 0;
+    std::string spin;
+    for (const auto& key : vars.strings("keys")) {
+      const Record& g = vars.at(key);
+      if (g.text("solver") != "reference" || g.text("attitude") == "held" || !g.has_child(regime)) continue;
+      const Record& h = g.at(regime);
+      spin = fmt(h.number("spin_rev_s"), 3);
+      const Table& hist = h.table("history");
+      PlotSeries a, r;
+      a.title = g.text("title") + ": pitch (attack)";
+      r.title = g.text("title") + ": roll";
+      // One colour per variant: pitch solid, roll dashed.
+      const std::string colour = " lc " + std::to_string(ps.size() / 2 + 1);
+      a.style = "lines" + colour;
+      r.style = "lines dt 2" + colour;
+      a.x = r.x = hist.column("t_s");
+      a.y = hist.column("attack_deg");
+      r.y = hist.column("roll_deg");
+      ps.push_back(a);
+      ps.push_back(r);
+      if (h.at("first_contact").flag("exists")) t_zoom = std::max(t_zoom, 1.3 * h.at("first_contact").number("end_s"));
+    }
+    if (ps.empty()) continue;
+    PlotAxes ax;
+    ax.x_label = "time (s)";
+    ax.y_label = "angle (deg)";
+    if (t_zoom > 0) ax.extra = "set xrange [0:" + fmt(t_zoom, 3) + "]";
+    Figure f = line_figure("attitude_" + regime,
+                           "Clanet's disk at " + spin + " rev/s, α = " + fmt(v.number("regime_attack_deg"), 3) +
+                               "°: pitch and roll through the first contact, each free variant",
+                           ax, ps, "t_s", "angle_deg");
+    f.data_path = vars.path();
+    w.figure(f);
+  }
   {
     // Attack angle through the spin regimes: the default law and the paper convention, every spin.
     std::vector<PlotSeries> ps;
     for (const auto& key : vars.strings("keys")) {
       const Record& g = vars.at(key);
-      if (g.text("solver") != "reference" || (g.text("convention") != "paper" && g.text("law") != v.text("default_law")))
+      if (g.text("solver") != "reference" ||
+          (g.text("convention") != "paper" && (g.text("law") != v.text("default_law") || !g.flag("beside_models"))))
         continue;
       for (const auto& rk : g.strings("regimes")) {
         const Record& h = g.at(rk);
@@ -219,7 +321,33 @@ SectionOutput validation_section(const Record& v) {
     f.data_path = vars.path();
     w.figure(f);
   }
+  w.subheading("Model beside model (not scored)");
+  w.text("Bocquet's counts and trends are his model's estimates (N ≈ RΩ²/g), not measurements, and the seed's claims "
+         "are those of a simulation: compared for trends only, never as a gate.");
+  rows_table("model", true);
   {
+    const Record& bq = v.at("bocquet");
+    w.text("Stone for Bocquet's trends: " + bq.text("stone") + ". Bocquet's N_Ω ≈ RΩ²/g gives " +
+           counts_text(bq.table("spin"), "spin_rev_s", "bocquet_N_omega") + " bounces at these spins.");
+    std::string expected = "–";
+    for (const auto& key : vars.strings("keys"))
+      if (vars.at(key).has_child("speed_exponent")) {
+        expected = fmt(vars.at(key).at("speed_exponent").at("verdict").number("expected"), 3);
+        break;
+      }
+    MarkdownTable e({"model", "N against V² (expected " + expected + ")", "N against Ω² (expected " + expected + ")"});
+    for (const auto& key : vars.strings("keys")) {
+      const Record& g = vars.at(key);
+      if (!g.has_child("speed_exponent")) continue;
+      std::vector<std::string> cells{g.text("title")};
+      for (const char* fit : {"speed_exponent", "spin_exponent"})
+        cells.push_back(exponent_text(g.at(fit)) + ": **" + g.at(fit).at("verdict").text("verdict") + "**");
+      e.row(cells);
+    }
+    w.table(e);
+  }
+  {
+    const Record& bq = v.at("bocquet");
     std::vector<PlotSeries> ps = variant_curves(vars, "bocquet_speed", "speed_m_s", "count", 1, true);
     const Table& s = bq.table("speed");
     PlotSeries b;

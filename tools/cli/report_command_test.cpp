@@ -89,12 +89,20 @@ BOOST_AUTO_TEST_CASE(waves_quick_report_is_a_function_of_its_data) {
 }
 
 BOOST_AUTO_TEST_CASE(stones_quick_report_is_a_function_of_its_data) {
-  // Oracle: as for the waves report.
+  // Oracle: as for the waves report; and the validation's rows of the quick preset are there: a
+  // column per law × distribution × attitude, the regimes, the sphere, each contact's energy
+  // balance, the attitude figures at 10 and 65 rev/s, Bocquet's rows beside the model, the answer.
   TempDir tmp("stoneskip-report-stones");
   const fs::path dir = tmp.path() / "stones";
   const auto r = run_stoneskip("report stones --quick --out " + dir.string());
   BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
   check_report(dir);
+  const std::string index = read_file(dir / "index.md");
+  for (const char* text : {"model: planing, uniform, held", "model: planing, savitsky_wagner, free", "Rosellini: surfing",
+                           "Johnson & Reid: largest ricochet path angle of a sphere", "**Energy over each contact.**",
+                           "### Model beside model (not scored)", "figures/attitude_regime_10.png",
+                           "figures/attitude_regime_65.png", "* The answer: **"})
+    BOOST_TEST(index.find(text) != std::string::npos, text);
 }
 
 BOOST_AUTO_TEST_CASE(scene_quick_report_is_a_function_of_its_data) {

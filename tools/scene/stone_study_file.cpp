@@ -236,6 +236,33 @@ void read_validation(TomlTable t, StoneStudiesOptions& o) {
   v.bocquet_spins_rev_s = any_list(t, "bocquet_spins_rev_s", v.bocquet_spins_rev_s);
   v.regime_spins_rev_s = any_list(t, "regime_spins_rev_s", v.regime_spins_rev_s);
   v.regime_attack_deg = t.number_or("regime_attack_deg", v.regime_attack_deg);
+  if (auto names = t.maybe_strings("distributions")) {
+    if (names->empty()) t.fail("distributions", "must not be empty");
+    v.distributions.clear();
+    for (const auto& n : *names) {
+      PressureDistribution d;
+      if (!parse_pressure_distribution(n, d)) t.fail("distributions", "'" + n + "' is not one of uniform, savitsky, savitsky_wagner");
+      if (std::find(v.distributions.begin(), v.distributions.end(), d) != v.distributions.end())
+        t.fail("distributions", "'" + n + "' repeats");
+      v.distributions.push_back(d);
+    }
+    if (std::find(v.distributions.begin(), v.distributions.end(), PressureDistribution::uniform) == v.distributions.end())
+      t.fail("distributions", "must include uniform (the model-beside-model rows and Fig. 9 use it)");
+  }
+  v.diving_spin_rev_s = t.number_or("diving_spin_rev_s", v.diving_spin_rev_s);
+  v.trout_spin_rev_s = t.number_or("trout_spin_rev_s", v.trout_spin_rev_s);
+  for (const char* key : {"diving_spin_rev_s", "trout_spin_rev_s"}) {
+    const double w = std::string(key) == "diving_spin_rev_s" ? v.diving_spin_rev_s : v.trout_spin_rev_s;
+    if (std::find(v.regime_spins_rev_s.begin(), v.regime_spins_rev_s.end(), w) == v.regime_spins_rev_s.end())
+      t.fail(key, "must be one of regime_spins_rev_s");
+  }
+  v.surfing_attack_deg = t.number_or("surfing_attack_deg", v.surfing_attack_deg);
+  v.surfing_path_angle_deg = positive(t, "surfing_path_angle_deg", v.surfing_path_angle_deg);
+  v.sphere_radius_m = positive(t, "sphere_radius_m", v.sphere_radius_m);
+  v.sphere_density_ratio = positive(t, "sphere_density_ratio", v.sphere_density_ratio);
+  v.sphere_speed_m_s = positive(t, "sphere_speed_m_s", v.sphere_speed_m_s);
+  v.sphere_subdivisions = count(t, "sphere_subdivisions", v.sphere_subdivisions, 0, 5);
+  v.sphere_theta_coefficient_deg = positive(t, "sphere_theta_coefficient_deg", v.sphere_theta_coefficient_deg);
   v.contact_time_speed_m_s = positive(t, "contact_time_speed_m_s", v.contact_time_speed_m_s);
   v.min_speed_attack_deg = t.number_or("min_speed_attack_deg", v.min_speed_attack_deg);
   v.contact_exponent_expected = t.number_or("contact_exponent_expected", v.contact_exponent_expected);
@@ -245,13 +272,18 @@ void read_validation(TomlTable t, StoneStudiesOptions& o) {
   if (auto r = t.maybe_table("ranking")) {
     RankingOptions& k = v.ranking;
     k.miss_distance = positive(*r, "miss_distance", k.miss_distance);
-    k.distance_bound = r->number_or("distance_bound", k.distance_bound);
-    r->require_non_negative("distance_bound", k.distance_bound);
     k.held_spin_rev_s = r->number_or("held_spin_rev_s", k.held_spin_rev_s);
     if (std::find(v.regime_spins_rev_s.begin(), v.regime_spins_rev_s.end(), k.held_spin_rev_s) == v.regime_spins_rev_s.end())
       r->fail("held_spin_rev_s", "must be one of [validation] regime_spins_rev_s");
-    k.attack_bound_deg = r->number_or("attack_bound_deg", k.attack_bound_deg);
-    r->require_non_negative("attack_bound_deg", k.attack_bound_deg);
+    SkipBounds& b = k.bounds;
+    for (auto [key, x] : {std::pair<const char*, double*>{"min_speed_fraction", &b.min_speed_fraction},
+                          {"best_attack_bound_deg", &b.best_attack_deg},
+                          {"max_path_angle_bound_deg", &b.max_path_angle_deg},
+                          {"contact_time_fraction", &b.contact_time_fraction},
+                          {"attitude_bound_deg", &b.attitude_deg}}) {
+      *x = r->number_or(key, *x);
+      r->require_non_negative(key, *x);
+    }
     k.cost_repeats = count(*r, "cost_repeats", k.cost_repeats, 1, 100);
     if (auto names = r->maybe_strings("cost_throws")) {
       if (names->empty()) r->fail("cost_throws", "must not be empty");
@@ -293,6 +325,10 @@ void read_validation(TomlTable t, StoneStudiesOptions& o) {
       x.measured = m.string("measured");
       x.expected = m.string_or("expected", "–");
       x.source = m.string("source");
+      x.kind = m.string_or("kind", "measurement");
+      if (x.kind != "measurement" && x.kind != "model") m.fail("kind", "'" + x.kind + "' is not one of measurement, model");
+      if (x.kind == "model" && (m.has("score_low") || m.has("score_high")))
+        m.fail("kind", "a model's estimate is shown beside the model, never scored");
       const auto lo = m.maybe_number("score_low"), hi = m.maybe_number("score_high");
       if (lo.has_value() != hi.has_value()) m.fail(lo ? "score_high" : "score_low", "give score_low and score_high together");
       if (lo) {

@@ -45,7 +45,15 @@ BOOST_AUTO_TEST_CASE(the_shipped_presets_name_their_laws_ranges_and_curve) {
   BOOST_TEST(full.validation.curves[0].low[0] == 2.5);
   BOOST_TEST(full.validation.curves[0].high[0] == 2.6);
   const StoneStudiesOptions quick = load_stone_study_file(kQuick).options;
-  BOOST_TEST((quick.validation.laws == std::vector<WaterLaw>{WaterLaw::newtonian, WaterLaw::nagahiro_hayakawa}));
+  BOOST_TEST((quick.validation.laws == std::vector<WaterLaw>{WaterLaw::planing}));
+  BOOST_TEST((quick.validation.distributions ==
+              std::vector<PressureDistribution>{PressureDistribution::uniform, PressureDistribution::savitsky_wagner}));
+  BOOST_TEST(full.validation.distributions.size() == 3u);
+  BOOST_TEST(full.validation.ranking.bounds.min_speed_fraction == 0.10);
+  BOOST_TEST(full.validation.ranking.bounds.attitude_deg == 5.0);
+  int models = 0;
+  for (const auto& m : full.validation.measured) models += m.kind == "model" ? 1 : 0;
+  BOOST_TEST(models == 6);  // Bocquet's three rows and the seed's three: model beside model
   BOOST_TEST(quick.validation.ranking.held_spin_rev_s == 65.0);
 }
 
@@ -60,6 +68,13 @@ BOOST_AUTO_TEST_CASE(bad_laws_ranges_and_strategies_are_one_line_errors_naming_t
   names(error_of({"validation.ranking.held_spin_rev_s=30.0"}), "validation.ranking.held_spin_rev_s");
   names(error_of({"validation.ranking.cost_throws=[\"bocquet\"]"}), "validation.ranking.cost_throws");
   names(error_of({"validation.ranking.colour=1"}), "colour");
+  names(error_of({"validation.distributions=[\"uniform\", \"wagner\"]"}), "validation.distributions");
+  names(error_of({"validation.distributions=[\"uniform\", \"uniform\"]"}), "validation.distributions");
+  names(error_of({"validation.distributions=[\"savitsky\"]"}), "validation.distributions");
+  names(error_of({"validation.trout_spin_rev_s=12.0"}), "validation.trout_spin_rev_s");
+  names(error_of({"validation.ranking.attitude_bound_deg=-1.0"}), "attitude_bound_deg");
+  names(error_of({R"(validation.measured=[{key = "seed_spin", quantity = "q", measured = "m", source = "s", kind = "guess"}])"}),
+        "kind");
   names(error_of({"restarts.strategies=[\"at_jumps\", \"never\"]"}), "restarts.strategies");
   names(error_of({"restarts.throws=[\"nospin@planning\"]"}), "restarts.throws");
   names(error_of({"work_precision.throws=[\"spin_paper@planing\"]"}), "work_precision.throws");

@@ -194,7 +194,8 @@ Record run_stone_studies(const StoneStudiesOptions& o, StudySink& sink) {
     Record& f = r.child("fig9");
     std::vector<std::string> keys;
     for (const auto& run : v.variants) {
-      if (run.variant.convention != Convention::paper && run.variant.law != vo.laws.front()) continue;
+      if (run.variant.convention != Convention::paper && (run.variant.law != vo.laws.front() || !run.variant.beside_models()))
+        continue;
       for (const ThrowHistory* h : {&run.without_spin, &run.with_spin}) {
         keys.push_back(record_key(h->label));
         f.add_child(keys.back(), history_record(*h));

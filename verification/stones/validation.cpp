@@ -7,6 +7,8 @@
 #include <numbers>
 #include <set>
 
+#include "model/stone/mass_properties.hpp"
+#include "model/stone/rigid_body.hpp"
 #include "verification/stones/bounce_sweep.hpp"
 #include "verification/stones/parallel_runs.hpp"
 
@@ -15,6 +17,7 @@ namespace stoneskip {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kEarlyLook_s = 0.5;  // solve_until_decided: the early look
 
 SolverChoice reference_of(const ThrowProblem& p, double rtol, bool trajectory) {
   ReferenceOptions r = p.reference;
@@ -35,11 +38,77 @@ SolverChoice solver_of(const ModelVariant& v, const ThrowProblem& p, double rtol
   return v.solver == SolverKind::reference ? reference_of(p, rtol, trajectory) : realtime_of(p, trajectory);
 }
 
-// The problem as a variant sees it: its law with the published C_w, its convention.
+// The problem as a variant sees it: its law with the published C_w, its pressure distribution,
+// attitude and convention.
 ThrowProblem as_variant(const ThrowProblem& p, const ModelVariant& v) {
   ThrowProblem q = with_convention(p, v.convention);
   set_water_law(q.environment, v.law);
+  q.environment.pressure_distribution = v.distribution;
+  q.environment.attitude = v.attitude;
   return q;
+}
+
+// Clanet's problem with its stone replaced by a sphere of the options (no spin, no attack: a
+// sphere has none that matters).
+ThrowProblem sphere_problem(const ThrowProblem& clanet, const ValidationOptions& o) {
+  ThrowProblem q = clanet;
+  const Mesh m = make_icosphere(o.sphere_radius_m, o.sphere_subdivisions);
+  const double rho = o.sphere_density_ratio * clanet.environment.water_density_kg_m3;
+  char d[160];
+  std::snprintf(d, sizeof d, "icosphere R=%g m, %zu triangles, density %g kg/m³ (σ = %g)", o.sphere_radius_m,
+                m.triangles.size(), rho, o.sphere_density_ratio);
+  q.stone = make_stone(m, mass_properties_from_density(m, rho), o.sphere_radius_m, d);
+  q.label = d;
+  ThrowParameters tp = q.parameters;
+  tp.speed_m_s = o.sphere_speed_m_s;
+  tp.spin_rev_s = 0;
+  tp.attack_angle_deg = 0;
+  tp.height_m = std::max(tp.height_m, 2 * o.sphere_radius_m);
+  return with_parameters(q, tp);
+}
+
+// Sampling of the energy-balance run: fine enough that the trapezoidal rule's error over a
+// contact of tens of ms is far below the integrator's tolerance (checked: the estimate is stored).
+constexpr double kEnergySample_s = 2e-5;
+
+// The energy balance of each contact of a throw (ContactEnergy), from a run sampled finely up to
+// the early look.
+std::vector<ContactEnergy> contact_energy(const ThrowProblem& p, double rtol) {
+  ReferenceOptions r = p.reference;
+  r.rtol = rtol;
+  r.atol = rtol * 1e-2;
+  r.record_trajectory = true;
+  r.output_dt_s = kEnergySample_s;
+  r.t_max_s = std::min(r.t_max_s, kEarlyLook_s);
+  const ThrowResult res = solve(p, reference_choice(r));
+  std::vector<ContactEnergy> out;
+  for (const auto& c : res.contacts) {
+    ContactEnergy e;
+    e.start_s = c.start_s;
+    e.end_s = c.end_s;
+    std::vector<double> t, P, E;
+    for (const auto& s : res.trajectory)
+      if (s.t_s >= c.start_s && s.t_s <= c.end_s) {
+        t.push_back(s.t_s);
+        P.push_back(fluid_power_W(p.stone, p.environment, s.state));
+        E.push_back(s.energy_J);
+        e.energy_scale_J = std::max(e.energy_scale_J, std::abs(s.energy_J));
+      }
+    e.samples = static_cast<int>(t.size());
+    if (t.size() < 3) continue;
+    auto trapezoid = [&](std::size_t stride) {
+      double w = 0;
+      std::size_t i = 0;
+      for (; i + stride < t.size(); i += stride) w += 0.5 * (P[i] + P[i + stride]) * (t[i + stride] - t[i]);
+      if (i + 1 < t.size()) w += 0.5 * (P[i] + P.back()) * (t.back() - t[i]);
+      return w;
+    };
+    e.work_J = trapezoid(1);
+    e.quadrature_error_J = std::abs(trapezoid(2) - e.work_J);
+    e.energy_change_J = E.back() - E.front();
+    out.push_back(e);
+  }
+  return out;
 }
 
 ThrowProblem vary(const ThrowProblem& p, SweepParameter which, double value) {
@@ -53,7 +122,6 @@ int bounces(const ThrowProblem& p, const SolverChoice& s) { return solve(p, s).b
 // The throw solved up to an early time first (kEarlyLook_s, or t_max if sooner), and again to
 // t_max only when `decided` says that early part does not settle the question: the answer is the
 // same as from the whole throw, without the seconds-long planing runs after a bounce.
-constexpr double kEarlyLook_s = 0.5;
 ThrowResult solve_until_decided(const ThrowProblem& p, const SolverChoice& s,
                                 const std::function<bool(const ThrowResult&)>& decided) {
   SolverChoice early = s;
@@ -133,8 +201,11 @@ double first_contact_duration(const ThrowProblem& p, const SolverChoice& s) {
 }
 
 std::string history_label(const ThrowProblem& q, const ModelVariant& v) {
-  char buf[160];
-  const std::string model = v.convention == Convention::paper ? "paper" : std::string("physical ") + to_string(v.law);
+  char buf[200];
+  const std::string model = v.convention == Convention::paper
+                                ? "paper"
+                                : std::string("physical ") + to_string(v.law) + ", " + to_string(v.distribution) + ", " +
+                                      to_string(v.attitude);
   std::snprintf(buf, sizeof buf, "%g m/s, %g rev/s, %s, %s", q.parameters.speed_m_s, q.parameters.spin_rev_s, model.c_str(),
                 v.solver == SolverKind::realtime ? "real-time" : "reference");
   return buf;
@@ -182,14 +253,30 @@ bool ValidationOptions::valid(std::string* why) const {
   };
   if (laws.empty()) return fail("validation needs at least one water law");
   if (std::set<WaterLaw>(laws.begin(), laws.end()).size() != laws.size()) return fail("validation laws repeat");
+  if (distributions.empty()) return fail("validation needs at least one pressure distribution");
+  if (std::set<PressureDistribution>(distributions.begin(), distributions.end()).size() != distributions.size())
+    return fail("validation distributions repeat");
+  // The model-beside-model rows, the conventions' comparison and Fig. 9 use the uniform free variant.
+  if (std::find(distributions.begin(), distributions.end(), PressureDistribution::uniform) == distributions.end())
+    return fail("validation distributions must include uniform (the model-beside-model rows and Fig. 9 use it)");
+  for (double w : {diving_spin_rev_s, trout_spin_rev_s})
+    if (std::find(regime_spins_rev_s.begin(), regime_spins_rev_s.end(), w) == regime_spins_rev_s.end())
+      return fail("validation diving_spin_rev_s and trout_spin_rev_s must be among regime_spins_rev_s");
+  if (!(sphere_radius_m > 0) || !(sphere_density_ratio > 0) || !(sphere_speed_m_s > 0) || sphere_subdivisions < 0 ||
+      sphere_subdivisions > 5)
+    return fail("validation sphere: radius, density ratio and speed positive, subdivisions 0-5");
   if (clanet_attack_deg.empty() || clanet_contact_speeds_m_s.empty() || bocquet_speeds_m_s.empty() ||
       bocquet_spins_rev_s.empty() || regime_spins_rev_s.empty())
     return fail("validation grids must not be empty");
   if (std::find(regime_spins_rev_s.begin(), regime_spins_rev_s.end(), ranking.held_spin_rev_s) == regime_spins_rev_s.end())
     return fail("validation ranking held_spin_rev_s must be one of regime_spins_rev_s");
-  if (!(ranking.miss_distance > 0) || !(ranking.distance_bound >= 0) || !(ranking.attack_bound_deg >= 0) ||
-      ranking.cost_repeats < 1)
-    return fail("validation ranking bounds must be positive and cost_repeats >= 1");
+  const SkipBounds& b = ranking.bounds;
+  if (!(ranking.miss_distance > 0) || !(b.min_speed_fraction >= 0) || !(b.best_attack_deg >= 0) ||
+      !(b.max_path_angle_deg >= 0) || !(b.contact_time_fraction >= 0) || !(b.attitude_deg >= 0) || ranking.cost_repeats < 1)
+    return fail("validation ranking bounds must be non-negative and cost_repeats >= 1");
+  for (const auto& m : measured)
+    if (m.kind != "measurement" && m.kind != "model")
+      return fail("validation measured '" + m.key + "': kind must be measurement or model");
   if (ranking.cost_throws.empty()) return fail("validation ranking needs at least one cost throw");
   for (const auto& n : ranking.cost_throws)
     if (std::find(cost_throw_names().begin(), cost_throw_names().end(), n) == cost_throw_names().end())
@@ -215,35 +302,55 @@ bool ValidationOptions::valid(std::string* why) const {
 }
 
 std::string ModelVariant::key() const {
-  const std::string model = convention == Convention::paper ? "paper" : to_string(law);
-  return model + (solver == SolverKind::realtime ? "_realtime" : "_reference");
+  if (convention == Convention::paper) return solver == SolverKind::realtime ? "paper_realtime" : "paper_reference";
+  return std::string(to_string(law)) + "_" + to_string(distribution) + "_" + to_string(attitude) +
+         (solver == SolverKind::realtime ? "_realtime" : "");
 }
 
 std::string ModelVariant::title() const {
-  const std::string model = convention == Convention::paper ? "paper convention" : to_string(law);
-  return model + (solver == SolverKind::realtime ? ", real-time" : ", reference");
+  if (convention == Convention::paper) return solver == SolverKind::realtime ? "paper convention, real-time" : "paper convention, reference";
+  return std::string(to_string(law)) + ", " + to_string(distribution) + ", " + to_string(attitude) +
+         (solver == SolverKind::realtime ? ", real-time" : "");
 }
 
-std::vector<ModelVariant> validation_variants(const std::vector<WaterLaw>& laws) {
+bool ModelVariant::beside_models() const {
+  return distribution == PressureDistribution::uniform && attitude == Attitude::free;
+}
+
+bool ModelVariant::ranked() const { return convention == Convention::physical && solver == SolverKind::reference; }
+
+std::vector<ModelVariant> validation_variants(const std::vector<WaterLaw>& laws,
+                                              const std::vector<PressureDistribution>& distributions) {
   std::vector<ModelVariant> v;
-  for (WaterLaw law : laws) v.push_back({law, Convention::physical, SolverKind::reference, VariantUse::table});
-  if (!laws.empty()) v.push_back({laws.front(), Convention::physical, SolverKind::realtime, VariantUse::table});
-  // The paper's printed equations have one law, their Eq. 2 (environment_problem refuses others).
-  v.push_back({WaterLaw::newtonian, Convention::paper, SolverKind::reference, VariantUse::table});
-  v.push_back({WaterLaw::newtonian, Convention::paper, SolverKind::realtime, VariantUse::seed_only});
+  for (WaterLaw law : laws)
+    for (PressureDistribution d : distributions)
+      for (Attitude a : {Attitude::held, Attitude::free})
+        v.push_back({law, d, a, Convention::physical, SolverKind::reference, VariantUse::table});
+  if (!laws.empty())
+    v.push_back({laws.front(), PressureDistribution::uniform, Attitude::free, Convention::physical, SolverKind::realtime,
+                 VariantUse::table});
+  // The paper's printed equations have one law, their Eq. 2, uniform (environment_problem refuses others).
+  v.push_back({WaterLaw::newtonian, PressureDistribution::uniform, Attitude::free, Convention::paper, SolverKind::reference,
+               VariantUse::table});
+  v.push_back({WaterLaw::newtonian, PressureDistribution::uniform, Attitude::free, Convention::paper, SolverKind::realtime,
+               VariantUse::seed_only});
   return v;
 }
 
 const VariantResult* ValidationResult::find(WaterLaw law, Convention c, SolverKind s) const {
   for (const auto& v : variants)
-    if ((c == Convention::paper || v.variant.law == law) && v.variant.convention == c && v.variant.solver == s) return &v;
+    if ((c == Convention::paper || (v.variant.law == law && v.variant.beside_models())) && v.variant.convention == c &&
+        v.variant.solver == s)
+      return &v;
   return nullptr;
 }
 
 ValidationResult run_validation(const ThrowProblem& clanet, const ThrowProblem& bocquet, const ThrowProblem& without_spin,
                                 const ThrowProblem& with_spin, const ValidationOptions& o) {
   ValidationResult res;
-  const std::vector<ModelVariant> variants = validation_variants(o.laws);
+  const std::vector<ModelVariant> variants = validation_variants(o.laws, o.distributions);
+  const ThrowProblem sphere = sphere_problem(clanet, o);
+  res.sphere_stone = sphere.stone.description;
   res.variants.resize(variants.size());
   std::vector<std::function<void()>> jobs;
   const double rtol = o.reference_rtol;
@@ -252,8 +359,9 @@ ValidationResult run_validation(const ThrowProblem& clanet, const ThrowProblem& 
     const ModelVariant& v = variants[k];
     VariantResult& R = res.variants[k];
     R.variant = v;
-    // The seed's 8 m/s throws, with their histories (every variant).
+    // The seed's 8 m/s throws, with their histories (uniform free variants and the paper's).
     for (const auto* seed : {&without_spin, &with_spin}) {
+      if (!v.beside_models()) continue;
       ThrowHistory& out = seed == &without_spin ? R.without_spin : R.with_spin;
       jobs.push_back([&, seed, &out = out] {
         const ThrowProblem q = as_variant(*seed, v);
@@ -289,6 +397,27 @@ ValidationResult run_validation(const ThrowProblem& clanet, const ThrowProblem& 
                                     o.regime_spins_rev_s[i]);
         R.regimes[i] = make_history(q, solve(q, solver_of(v, q, rtol, true)), history_label(q, v));
       });
+    // Rosellini et al.'s surfing throw (the case's spin).
+    jobs.push_back([&, C] {
+      const ThrowProblem q =
+          vary(vary(C, SweepParameter::attack_angle_deg, o.surfing_attack_deg), SweepParameter::path_angle_deg, o.surfing_path_angle_deg);
+      R.surfing = make_history(q, solve(q, solver_of(v, q, rtol, true)), history_label(q, v));
+    });
+    // The energy balance of each contact of the reference throw (the reference's own run).
+    if (v.solver == SolverKind::reference)
+      jobs.push_back([&, C] {
+        R.energy = contact_energy(C, rtol);
+        R.energy_rtol = rtol;
+      });
+    // Johnson & Reid's sphere: the largest path angle that still bounces.
+    {
+      const ThrowProblem S = as_variant(sphere, v);
+      const SolverChoice Ss = solver_of(v, S, rtol, false);
+      jobs.push_back([&, S, Ss] {
+        R.sphere_path_angle = bisect_bounce(S, Ss, SweepParameter::path_angle_deg, 1.0, 60.0, o.angle_tolerance_deg, false, "deg");
+      });
+    }
+    if (!v.beside_models()) continue;
 
     // Bocquet: count against V and Ω.
     const ThrowProblem B = as_variant(bocquet, v);
@@ -312,15 +441,18 @@ ValidationResult run_validation(const ThrowProblem& clanet, const ThrowProblem& 
   for (const auto& name : o.ranking.cost_throws)
     for (const auto& k : known)
       if (name == k.name) cost_throws.push_back(k);
-  res.costs.resize(o.laws.size());
-  for (std::size_t l = 0; l < o.laws.size(); ++l) {
+  std::vector<ModelVariant> ranked;
+  for (const auto& v : variants)
+    if (v.use == VariantUse::table && v.ranked()) ranked.push_back(v);
+  res.costs.resize(ranked.size());
+  for (std::size_t l = 0; l < ranked.size(); ++l) {
     LawCost& L = res.costs[l];
-    L.law = o.laws[l];
+    L.variant = ranked[l];
     L.throws.resize(cost_throws.size());
     for (std::size_t t = 0; t < cost_throws.size(); ++t) {
       L.throws[t].throw_name = cost_throws[t].name;
       jobs.push_back([&, l, t] {
-        const ModelVariant ref{o.laws[l], Convention::physical, SolverKind::reference, VariantUse::table};
+        const ModelVariant& ref = res.costs[l].variant;
         const ThrowProblem q = as_variant(*cost_throws[t].problem, ref);
         const ThrowResult r = solve_min_cpu(q, reference_of(q, rtol, false), o.ranking.cost_repeats);
         res.costs[l].throws[t].reference_cpu_s = r.stats.cpu_s;
@@ -338,6 +470,7 @@ ValidationResult run_validation(const ThrowProblem& clanet, const ThrowProblem& 
   for (auto& R : res.variants) {
     if (R.variant.use != VariantUse::table) continue;
     R.contact_time_fit = exponent_fit(o.clanet_contact_speeds_m_s, R.contact_time_s);
+    if (!R.variant.beside_models()) continue;
     R.speed_fit = exponent_fit(squares(o.bocquet_speeds_m_s), as_doubles(R.count_vs_speed));
     R.spin_fit = exponent_fit(squares(o.bocquet_spins_rev_s), as_doubles(R.count_vs_spin));
   }

@@ -4,18 +4,17 @@
 // (model/stone/environment.hpp) and its values are set beside the measured ones; the difference
 // is model-form error.
 //
-// The model variants (law × convention × solver) are a list (validation_variants): the CVODE
-// reference in the physical convention for every law of the study, the real-time stepper for the
-// first (default) law, the paper's printed equations (their own law: Lee & Baek's Eq. 2), and the
-// paper convention's real-time stepper for the seed's Fig. 9 only. Each table variant measures:
-//  * Clanet, Hersen & Bocquet 2004 (aluminium disk): minimum speed for a bounce against attack
-//    angle at β = 20° (bisected), the largest path angle that still bounces (bisected), contact
-//    time against speed with the fitted exponent (95 % interval), attitude through the three spin
-//    regimes (0, 10, 65 rev/s);
-//  * Bocquet 2003: bounce count against V² and Ω², with the fitted exponents (95 % interval);
-//  * Lee & Baek 2013 (the seed): 8 m/s without and with spin.
-// For each law the cost of a throw is measured too (thread CPU time, minimum of repeats, of the
-// reference and of the real-time stepper on Clanet's reference throw and the seed's two throws).
+// The model variants are a list (validation_variants): the CVODE reference in the physical
+// convention for every law × pressure distribution × attitude (held, free) of the study, the
+// real-time stepper for the first law (uniform, free), the paper's printed equations (their own
+// law, uniform, free), and the paper convention's real-time stepper for the seed's Fig. 9 only.
+// Each table variant measures on Clanet's disk (Clanet, Hersen & Bocquet 2004; Rosellini et al.
+// 2005): U_min against α (bisected), the largest bouncing β, contact time against U with its
+// exponent, the spin regimes at α = regime_attack_deg, the surfing throw, the energy balance of
+// each contact of the reference throw; and the largest bouncing path angle of a sphere (Johnson &
+// Reid 1975). Bocquet's stone and the seed's throws only where the distribution is uniform and
+// the attitude free (the variants a model-beside-model comparison needs). The cost of a throw is
+// measured per reference variant (thread CPU time, minimum of repeats, both solvers).
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,6 +39,9 @@ struct MeasuredValue {
   // the ranking; only the quantities of scorable_quantities() can be.
   std::optional<MeasuredRange> score;
   std::string score_unit;  // of the range, as a reader would say it ("m/s", "s", "deg", "" for exponents)
+  // "measurement" (an experiment, read from its text, a figure or a secondary account: the quantity
+  // or source says which) or "model" (another model's estimate: shown "model beside model", never scored).
+  std::string kind = "measurement";
 };
 
 // The rows whose model value is a number the ranking can score (validation_findings.cpp computes
@@ -58,11 +60,20 @@ struct MeasuredCurve {
   std::vector<double> x, low, high;
 };
 
+// The bounds within which a variant "skips like a real stone" (issue 17, item 4): each row's
+// measured value (the study file's [[validation.measured]] score range) widened by these.
+struct SkipBounds {
+  double min_speed_fraction = 0.10;     // U_min within 10 % of the measured range
+  double best_attack_deg = 5;           // argmin α within 5°
+  double max_path_angle_deg = 5;        // β_max within 5°
+  double contact_time_fraction = 0.20;  // contact time within 20 %; its exponent's interval must contain the measured
+  double attitude_deg = 5;              // pitch and roll change per contact at held_spin_rev_s
+};
+
 struct RankingOptions {
   double miss_distance = 2.302585092994046;  // ln 10: what a quantity the model cannot produce costs
-  double distance_bound = 0.4054651081081644;  // ln 1.5: "skips like a real stone" needs a mean distance at most this
   double held_spin_rev_s = 65;     // the regime in which Clanet et al. see the attack angle held
-  double attack_bound_deg = 5;     // ... held: the first contact changes it by at most this
+  SkipBounds bounds;
   int cost_repeats = 3;            // CPU time per throw: minimum over this many runs
   std::vector<std::string> cost_throws{"clanet", "seed_spin", "seed_nospin"};  // of cost_throw_names()
 };
@@ -72,6 +83,7 @@ const std::vector<std::string>& cost_throw_names();
 
 struct ValidationOptions {
   std::vector<WaterLaw> laws{WaterLaw::newtonian};  // the first is the default: real-time column, Fig. 9
+  std::vector<PressureDistribution> distributions{PressureDistribution::uniform};  // of every physical law
   double reference_rtol = 1e-7;     // the model's value: accurate to far better than it matters here
   double speed_tolerance_m_s = 0.05;
   double angle_tolerance_deg = 0.5;
@@ -82,6 +94,14 @@ struct ValidationOptions {
   std::vector<double> bocquet_spins_rev_s{0, 5, 9, 14, 20, 30};
   std::vector<double> regime_spins_rev_s{0, 10, 65};  // Clanet's three spin regimes, at α = regime_attack_deg
   double regime_attack_deg = 35;
+  double diving_spin_rev_s = 0;   // Rosellini et al.'s diving regime: no spin (one of regime_spins_rev_s)
+  double trout_spin_rev_s = 10;   // ... the "trout": dips and still bounces (one of regime_spins_rev_s)
+  double surfing_attack_deg = 30, surfing_path_angle_deg = 35;  // ... surfing: never leaves the water
+  // Johnson & Reid 1975 (quoted by Nagahiro & Hayakawa 2005): a sphere of σ = ρ_s/ρ_w ricochets
+  // below θ_max ≈ 18°/√σ, a limit of high Froude numbers.
+  double sphere_radius_m = 0.01, sphere_density_ratio = 2.65, sphere_speed_m_s = 10;
+  int sphere_subdivisions = 2;
+  double sphere_theta_coefficient_deg = 18;  // Johnson & Reid's 18° (θ_max √σ)
   double contact_time_speed_m_s = 3.5;                // where a contact time is compared
   double min_speed_attack_deg = 20;                   // where a minimum speed is compared
   double contact_exponent_expected = -1;              // Rosellini et al.: τ ∝ 1/U
@@ -101,15 +121,33 @@ enum class VariantUse { table, seed_only };
 
 struct ModelVariant {
   WaterLaw law = WaterLaw::newtonian;
+  PressureDistribution distribution = PressureDistribution::uniform;
+  Attitude attitude = Attitude::free;
   Convention convention = Convention::physical;
   SolverKind solver = SolverKind::reference;
   VariantUse use = VariantUse::table;
-  std::string key() const;    // "planing_reference", "newtonian_realtime", "paper_reference", ...
-  std::string title() const;  // "planing, reference", "paper convention, reference"
+  // "planing_savitsky_wagner_held", "newtonian_uniform_free_realtime", "paper_reference", ...
+  std::string key() const;
+  // "planing, savitsky_wagner, held", "newtonian, uniform, free, real-time", "paper convention, reference"
+  std::string title() const;
+  // Bocquet's stone and the seed's throws: measured for uniform free variants only (cost).
+  bool beside_models() const;
+  bool ranked() const;  // the reference in the physical convention
 };
 
-// The variants of a study with these laws, in the order of the validation table.
-std::vector<ModelVariant> validation_variants(const std::vector<WaterLaw>& laws);
+// The variants of a study with these laws and distributions, in the order of the validation table.
+std::vector<ModelVariant> validation_variants(const std::vector<WaterLaw>& laws,
+                                              const std::vector<PressureDistribution>& distributions);
+
+// The energy balance of one contact (issue 17, item 5): the stone's mechanical energy change
+// against the time integral of the fluids' power (trapezoidal, on samples `sample_dt_s` apart and
+// the located events), and that integral's quadrature error estimated from every other sample.
+struct ContactEnergy {
+  double start_s = 0, end_s = 0;
+  double energy_change_J = 0, work_J = 0, quadrature_error_J = 0;
+  double energy_scale_J = 0;  // the largest |E| over the contact (what the integrator's rtol is relative to)
+  int samples = 0;
+};
 
 // A value found by bisection on one throw parameter, for one variant.
 struct BisectedValue {
@@ -129,6 +167,10 @@ struct VariantResult {
   std::vector<double> contact_time_s;     // per contact speed: the first contact's, if it bounced (else NaN)
   OrderFit contact_time_fit;              // log τ against log U over the bouncing first contacts
   std::vector<ThrowHistory> regimes;      // per regime spin, at α = regime_attack_deg
+  ThrowHistory surfing;                   // α = surfing_attack_deg, β = surfing_path_angle_deg
+  std::vector<ContactEnergy> energy;      // per contact of Clanet's reference throw (reference variants)
+  double energy_rtol = 0;                 // the integrator's tolerance of that run
+  BisectedValue sphere_path_angle;        // largest bouncing β of the sphere
   // Bocquet's stone (table variants).
   std::vector<int> count_vs_speed, count_vs_spin;
   OrderFit speed_fit, spin_fit;           // log N against log V², log Ω² (N > 0, V, Ω > 0)
@@ -143,7 +185,7 @@ struct ThrowCost {
   long reference_rhs_evaluations = 0, realtime_steps = 0;
 };
 struct LawCost {
-  WaterLaw law = WaterLaw::newtonian;
+  ModelVariant variant;
   std::vector<ThrowCost> throws;
   double mean_reference_cpu_s = 0, mean_realtime_cpu_s = 0;  // per throw
   // The law's own cost, apart from how long its throws last: per real-time step, per CVODE
@@ -153,7 +195,8 @@ struct LawCost {
 
 struct ValidationResult {
   std::vector<VariantResult> variants;   // in the order of validation_variants
-  std::vector<LawCost> costs;            // per law of the options
+  std::vector<LawCost> costs;            // per ranked variant, in the variants' order
+  std::string sphere_stone;              // description of the sphere
   std::string bocquet_stone;             // description of the stone used
   std::vector<double> bocquet_speed_prediction, bocquet_spin_prediction;  // N_V shape and N_Ω (spec §3)
   const VariantResult* find(WaterLaw law, Convention c, SolverKind s) const;  // nullptr if not run

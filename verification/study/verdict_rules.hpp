@@ -17,8 +17,19 @@
 //                        another stencil is faster
 //   minimum_ratio        ratio, required → not measured | error control works | error control falls short
 //   thresholds_near_grid near_grid, bisected → too few thresholds to tell | sensitive dependence | clean steps
-//   attack_change        change_deg → nose-down | nose-up | unchanged
+//   attack_change        change_deg, tolerance_deg → no contact (NaN) | nose-down | nose-up | held
+//                        (|change| ≤ tolerance)
+//   roll_change          change_deg, tolerance_deg → no contact | rolls (roll falls) | rolls (roll grows) | held
 //   max_fluid_power      max_fluid_power_W, round_off_W → passive | creates energy
+//   contact_energy       contacts, max_residual_ratio, max_gain_ratio (each contact's |ΔE − ∫P dt| and
+//                        ΔE over its tolerance, the largest) → no contact | unbalanced (a ratio above 1 or
+//                        NaN) | balanced, passive | balanced, creates energy
+//   surfing              contacts, bounces → no contact | never leaves the water | leaves the water
+//   diving               bounces, attack_change_deg, tolerance_deg → bounces | tumbles and dives
+//                        (|first contact's attack change| > tolerance) | sinks holding its attitude
+//   trout                bounces, entry_attack_deg, min_attack_deg, tolerance_deg → no bounce |
+//                        dips and still bounces (entry − min over the first contact > tolerance) |
+//                        bounces without a dip
 //   error_split          space_converges (0/1), time_at_expected (0/1) → (see verdict_rules.cpp)
 //   capture_verdict      the findings of a Wii Remote capture and CaptureVerdictRules' thresholds
 //                        (verification/captures/capture_verdict.hpp; inputs: capture_conditions
@@ -44,14 +55,25 @@
 //                        excludes the expected exponent | exponent not established
 //                        (the 95 % interval decides, as for order_fit: within expected ± tolerance,
 //                        entirely outside it, or neither; fewer than 3 points or no fit: too few)
-//   skips_like_a_stone   distance, distance_bound, attack_change_deg, attack_bound_deg →
-//                        skips like a real stone | too far from the measurements |
-//                        does not hold its attitude | too far from the measurements and does not
-//                        hold its attitude (holds: |attack change| ≤ bound; NaN: no contact, does not)
-//   cheapest_skipping_law  per law L: L.distance, L.attack_change_deg, L.cost_s; distance_bound,
-//                        attack_bound_deg → "L is the cheapest law that skips like a real stone" |
-//                        no law skips like a real stone (a law skips as in skips_like_a_stone;
-//                        the cheapest by cost_s, ties to the smaller distance, then by name)
+//   skips_like_a_stone   a variant's min_speed, best_attack, max_path_angle, contact_time,
+//                        contact_exponent_low/high, pitch_change_deg, roll_change_deg, surfing, diving,
+//                        trout (0/1: reproduced), max_residual_ratio, max_gain_ratio; the measured
+//                        ranges (min_speed_low/high, best_attack_low/high, max_path_angle_low/high,
+//                        contact_time_low/high, contact_exponent_measured) and the bounds
+//                        (min_speed_fraction, best_attack_bound, max_path_angle_bound,
+//                        contact_time_fraction, attitude_bound_deg) → not passive (as contact_energy:
+//                        unbalanced or creates energy) | skips like a real stone | "misses R, …"
+//                        (the rows: U_min within the range ± fraction, argmin α and β_max within
+//                        the range ± bound, contact time within the range ± fraction, the exponent's
+//                        interval containing the measured exponent, |pitch| and |roll| change ≤
+//                        bound, the three regimes; a NaN misses)
+//   cheapest_skipping_variant  per variant V: V.<the variant inputs above>, V.free (1: free attitude),
+//                        V.cost_s, V.distance; the ranges and bounds unprefixed →
+//                        "V is the cheapest passive law and distribution that skips like a real
+//                        stone" (free variants only; the cheapest by cost_s, ties to the smaller
+//                        distance) | "no variant skips like a real stone; no free variant meets
+//                        R, …; closest: V (k of 9 rows)" (the most rows met, then the smaller
+//                        distance, then the name)
 //   restart_strategy     per strategy S: S.failed, S.error_ratio, S.rhs_evaluations →
 //                        "S is the cheapest strategy that keeps the contact times" |
 //                        no strategy keeps the contact times (S keeps them with no failed run and

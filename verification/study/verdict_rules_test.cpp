@@ -1,5 +1,5 @@
-// Tests of the verdict rules added for issue 11 (the laws' validation, ranking and the restart
-// strategies): each rule at and beside its edges.
+// Tests of the verdict rules of the stones' validation (exponents, attitude, energy, regimes, the
+// ranking's bounds and answer) and the restart strategies: each rule at and beside its edges.
 #include <boost/test/unit_test.hpp>
 
 #include <limits>
@@ -33,37 +33,136 @@ BOOST_AUTO_TEST_CASE(a_power_law_exponent_is_judged_by_its_interval) {
   BOOST_TEST(decide("power_law_exponent", none) == "too few points to fit");
 }
 
-BOOST_AUTO_TEST_CASE(a_law_skips_like_a_stone_only_near_the_measurements_and_holding_its_attitude) {
-  // Oracle: distance ≤ bound and |attack change| ≤ bound (both inclusive); a NaN attack change (no
-  // contact) does not hold, a NaN distance is not near.
+// The measured ranges and bounds of the study file (Clanet et al., Rosellini et al.).
+Record bounds() {
   Record in;
-  in.set("distance", 0.4).set("distance_bound", 0.4).set("attack_change_deg", -5.0).set("attack_bound_deg", 5.0);
-  BOOST_TEST(decide("skips_like_a_stone", in) == "skips like a real stone");
-  in.set("attack_change_deg", 5.01);
-  BOOST_TEST(decide("skips_like_a_stone", in) == "does not hold its attitude");
-  in.set("attack_change_deg", kNaN);
-  BOOST_TEST(decide("skips_like_a_stone", in) == "does not hold its attitude");
-  in.set("attack_change_deg", 0.0).set("distance", 0.41);
-  BOOST_TEST(decide("skips_like_a_stone", in) == "too far from the measurements");
-  in.set("distance", kNaN).set("attack_change_deg", -30.0);
-  BOOST_TEST(decide("skips_like_a_stone", in) == "too far from the measurements and does not hold its attitude");
+  in.set("min_speed_low", 2.5).set("min_speed_high", 2.6).set("min_speed_fraction", 0.1);
+  in.set("best_attack_low", 20.0).set("best_attack_high", 20.0).set("best_attack_bound", 5.0);
+  in.set("max_path_angle_low", 45.0).set("max_path_angle_high", 45.0).set("max_path_angle_bound", 5.0);
+  in.set("contact_time_low", 0.032).set("contact_time_high", 0.032).set("contact_time_fraction", 0.2);
+  in.set("contact_exponent_measured", -1.0).set("attitude_bound_deg", 5.0);
+  return in;
 }
 
-BOOST_AUTO_TEST_CASE(the_cheapest_passing_law_is_named_and_failing_laws_are_not) {
-  // Oracle: by hand — of three laws, the cheapest (nagahiro_hayakawa) fails on attitude, so the next
-  // cheapest that passes (planing) is named; when none passes, none is.
+// A variant that meets every row, under prefix p.
+void passing(Record& in, const std::string& p) {
+  in.set(p + "min_speed", 2.6 * 1.1).set(p + "best_attack", 15.0).set(p + "max_path_angle", 50.0);
+  in.set(p + "contact_time", 0.032 * 0.81).set(p + "contact_exponent_low", -1.0).set(p + "contact_exponent_high", -0.5);
+  in.set(p + "pitch_change_deg", -5.0).set(p + "roll_change_deg", 5.0);
+  in.set(p + "surfing", 1.0).set(p + "diving", 1.0).set(p + "trout", 1.0);
+  in.set(p + "max_residual_ratio", 1.0).set(p + "max_gain_ratio", 1.0);
+}
+
+BOOST_AUTO_TEST_CASE(a_variant_skips_like_a_stone_only_within_every_bound) {
+  // Oracle: the rule's definition (verdict_rules.hpp), by hand at each edge: U_min within 10 % of
+  // [2.5, 2.6], argmin and β_max within 5°, contact time within 20 %, the exponent's interval
+  // containing −1, |pitch| and |roll| ≤ 5°, the three regimes; edges inclusive, a NaN misses, and
+  // an unbalanced or energy-creating contact is not passive.
+  Record in = bounds();
+  passing(in, "");
+  BOOST_TEST(decide("skips_like_a_stone", in) == "skips like a real stone");
+  in.set("min_speed", 2.5 * 0.9 - 1e-9);
+  BOOST_TEST(decide("skips_like_a_stone", in) == "misses U_min");
+  in.set("min_speed", 2.5).set("best_attack", 25.01).set("max_path_angle", 39.99);
+  BOOST_TEST(decide("skips_like_a_stone", in) == "misses argmin α, β_max");
+  in.set("best_attack", 25.0).set("max_path_angle", 40.0).set("contact_time", 0.032 * 1.2 + 1e-9);
+  BOOST_TEST(decide("skips_like_a_stone", in) == "misses contact time");
+  in.set("contact_time", 0.032).set("contact_exponent_high", -1.01);
+  BOOST_TEST(decide("skips_like_a_stone", in) == "misses contact exponent");
+  in.set("contact_exponent_high", kNaN);
+  BOOST_TEST(decide("skips_like_a_stone", in) == "misses contact exponent");
+  in.set("contact_exponent_high", -0.9).set("roll_change_deg", -5.01);
+  BOOST_TEST(decide("skips_like_a_stone", in) == "misses attitude");
+  in.set("roll_change_deg", 0.0).set("pitch_change_deg", kNaN);
+  BOOST_TEST(decide("skips_like_a_stone", in) == "misses attitude");
+  in.set("pitch_change_deg", 0.0).set("surfing", 0.0).set("trout", 0.0);
+  BOOST_TEST(decide("skips_like_a_stone", in) == "misses surfing, trout");
+  in.set("surfing", 1.0).set("trout", 1.0).set("max_gain_ratio", 1.01);
+  BOOST_TEST(decide("skips_like_a_stone", in) == "not passive");
+  in.set("max_gain_ratio", -3.0).set("max_residual_ratio", kNaN);
+  BOOST_TEST(decide("skips_like_a_stone", in) == "not passive");
+}
+
+BOOST_AUTO_TEST_CASE(the_cheapest_passing_free_variant_is_named_or_the_rows_none_meets_and_the_closest) {
+  // Oracle: by hand — of three variants, the cheapest passes but is held (not a candidate), the
+  // next passes and is free: it is named. When no free variant passes, the rows that every free
+  // variant misses are named and the variant meeting the most rows (ties: smaller distance).
+  Record in = bounds();
+  for (const char* v : {"a_held", "b_free", "c_free"}) {
+    passing(in, std::string(v) + ".");
+    in.set(std::string(v) + ".free", std::string(v) == "a_held" ? 0.0 : 1.0);
+    in.set(std::string(v) + ".distance", 0.1);
+  }
+  in.set("a_held.cost_s", 1e-3).set("b_free.cost_s", 3e-3).set("c_free.cost_s", 2e-3);
+  BOOST_TEST(decide("cheapest_skipping_variant", in) ==
+             "c_free is the cheapest passive law and distribution that skips like a real stone");
+  in.set("c_free.trout", 0.0);
+  BOOST_TEST(decide("cheapest_skipping_variant", in) ==
+             "b_free is the cheapest passive law and distribution that skips like a real stone");
+  in.set("b_free.trout", 0.0).set("b_free.min_speed", 1.0).set("c_free.distance", 0.2);
+  BOOST_TEST(decide("cheapest_skipping_variant", in) ==
+             "no variant skips like a real stone; no free variant meets trout; closest: c_free (8 of 9 rows)");
+  in.set("b_free.min_speed", 2.55).set("b_free.distance", 0.3);  // a tie in rows met goes to the smaller distance
+  BOOST_TEST(decide("cheapest_skipping_variant", in) ==
+             "no variant skips like a real stone; no free variant meets trout; closest: c_free (8 of 9 rows)");
+}
+
+BOOST_AUTO_TEST_CASE(attitude_changes_are_held_within_their_tolerance) {
+  // Oracle: the rules' definitions: |change| ≤ tolerance is held (inclusive), else the sign names
+  // the direction; NaN (no contact) is said.
   Record in;
-  in.set("distance_bound", 0.5).set("attack_bound_deg", 5.0);
-  in.set("newtonian.distance", 0.9).set("newtonian.attack_change_deg", 1.0).set("newtonian.cost_s", 2e-3);
-  in.set("planing.distance", 0.3).set("planing.attack_change_deg", -2.0).set("planing.cost_s", 3e-3);
-  in.set("nagahiro_hayakawa.distance", 0.2).set("nagahiro_hayakawa.attack_change_deg", -20.0).set("nagahiro_hayakawa.cost_s", 1e-3);
-  BOOST_TEST(decide("cheapest_skipping_law", in) == "planing is the cheapest law that skips like a real stone");
-  in.set("nagahiro_hayakawa.attack_change_deg", 4.0);  // now it passes and is cheaper
-  BOOST_TEST(decide("cheapest_skipping_law", in) == "nagahiro_hayakawa is the cheapest law that skips like a real stone");
-  in.set("nagahiro_hayakawa.cost_s", 3e-3);  // a tie in cost goes to the smaller distance
-  BOOST_TEST(decide("cheapest_skipping_law", in) == "nagahiro_hayakawa is the cheapest law that skips like a real stone");
-  in.set("nagahiro_hayakawa.distance", 0.6).set("planing.distance", 0.51);
-  BOOST_TEST(decide("cheapest_skipping_law", in) == "no law skips like a real stone");
+  in.set("change_deg", 0.5).set("tolerance_deg", 0.5);
+  BOOST_TEST(decide("attack_change", in) == "held");
+  BOOST_TEST(decide("roll_change", in) == "held");
+  in.set("change_deg", -0.51);
+  BOOST_TEST(decide("attack_change", in) == "nose-down");
+  BOOST_TEST(decide("roll_change", in) == "rolls (roll falls)");
+  in.set("change_deg", 0.51);
+  BOOST_TEST(decide("attack_change", in) == "nose-up");
+  BOOST_TEST(decide("roll_change", in) == "rolls (roll grows)");
+  in.set("change_deg", kNaN);
+  BOOST_TEST(decide("attack_change", in) == "no contact");
+}
+
+BOOST_AUTO_TEST_CASE(a_contact_energy_balance_can_fail) {
+  // Oracle: the rule's definition: a residual or gain ratio above 1 (or NaN) fails; at 1 it holds.
+  Record in;
+  in.set("contacts", 2.0).set("max_residual_ratio", 1.0).set("max_gain_ratio", -50.0);
+  BOOST_TEST(decide("contact_energy", in) == "balanced, passive");
+  in.set("max_gain_ratio", 1.5);
+  BOOST_TEST(decide("contact_energy", in) == "balanced, creates energy");
+  in.set("max_residual_ratio", 1.01);
+  BOOST_TEST(decide("contact_energy", in) == "unbalanced");
+  in.set("max_residual_ratio", kNaN);
+  BOOST_TEST(decide("contact_energy", in) == "unbalanced");
+  in.set("contacts", 0.0);
+  BOOST_TEST(decide("contact_energy", in) == "no contact");
+}
+
+BOOST_AUTO_TEST_CASE(the_three_regimes_are_judged_from_counts_and_angles) {
+  // Oracle: the rules' definitions, by hand: surfing is a contact without a bounce; diving, no
+  // bounce and an attack change beyond the tolerance; the trout, a bounce after a dip beyond it.
+  Record s;
+  s.set("contacts", 1.0).set("bounces", 0.0);
+  BOOST_TEST(decide("surfing", s) == "never leaves the water");
+  s.set("bounces", 1.0);
+  BOOST_TEST(decide("surfing", s) == "leaves the water");
+  s.set("contacts", 0.0);
+  BOOST_TEST(decide("surfing", s) == "no contact");
+  Record d;
+  d.set("bounces", 0.0).set("attack_change_deg", -5.01).set("tolerance_deg", 5.0);
+  BOOST_TEST(decide("diving", d) == "tumbles and dives");
+  d.set("attack_change_deg", 5.0);
+  BOOST_TEST(decide("diving", d) == "sinks holding its attitude");
+  d.set("bounces", 2.0);
+  BOOST_TEST(decide("diving", d) == "bounces");
+  Record t;
+  t.set("bounces", 1.0).set("entry_attack_deg", 35.0).set("min_attack_deg", 29.99).set("tolerance_deg", 5.0);
+  BOOST_TEST(decide("trout", t) == "dips and still bounces");
+  t.set("min_attack_deg", 30.0);
+  BOOST_TEST(decide("trout", t) == "bounces without a dip");
+  t.set("bounces", 0.0);
+  BOOST_TEST(decide("trout", t) == "no bounce");
 }
 
 BOOST_AUTO_TEST_CASE(the_cheapest_restart_strategy_that_keeps_the_contact_times_is_named) {
