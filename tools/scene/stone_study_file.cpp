@@ -39,6 +39,21 @@ std::vector<WaterLaw> laws_of(TomlTable& t, const std::string& key, const std::v
   return out;
 }
 
+// A list of pressure distributions (unique; may be left out: `fallback`).
+std::vector<PressureDistribution> distributions_of(TomlTable& t, const std::string& key,
+                                                   const std::vector<PressureDistribution>& fallback) {
+  auto names = t.maybe_strings(key);
+  if (!names) return fallback;
+  std::vector<PressureDistribution> out;
+  for (const auto& n : *names) {
+    PressureDistribution d;
+    if (!parse_pressure_distribution(n, d)) t.fail(key, "'" + n + "' is not one of uniform, savitsky, savitsky_wagner");
+    if (std::find(out.begin(), out.end(), d) != out.end()) t.fail(key, "'" + n + "' is listed twice");
+    out.push_back(d);
+  }
+  return out;
+}
+
 // Throws of the work-precision and restart studies ("nospin", "nospin@planing", "spin_paper").
 std::vector<std::string> throw_names(TomlTable& t, const std::string& key, const std::vector<std::string>& names) {
   if (names.empty()) t.fail(key, "must not be empty");
@@ -106,6 +121,7 @@ void read_throws(const fs::path& dir, TomlTable t, StoneStudiesOptions& o) {
 void read_convergence(TomlTable t, StoneStudiesOptions& o) {
   RealtimeConvergenceOptions& c = o.convergence;
   o.convergence_laws = laws_of(t, "laws", o.convergence_laws);
+  o.convergence_distributions = distributions_of(t, "distributions", o.convergence_distributions);
   if (auto s = t.maybe_strings("schemes")) {
     c.schemes.clear();
     for (const auto& n : *s) c.schemes.push_back(scheme_of(t, "schemes", n));

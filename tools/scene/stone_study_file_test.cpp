@@ -32,7 +32,10 @@ BOOST_AUTO_TEST_CASE(the_shipped_presets_name_their_laws_ranges_and_curve) {
   const StoneStudiesOptions full = load_stone_study_file("cases/studies/stones.toml").options;
   const std::vector<WaterLaw> all{WaterLaw::newtonian, WaterLaw::planing, WaterLaw::nagahiro_hayakawa};
   BOOST_TEST((full.validation.laws == all));
-  BOOST_TEST((full.convergence_laws == all));
+  BOOST_TEST((full.convergence_laws == std::vector<WaterLaw>{WaterLaw::planing, WaterLaw::newtonian, WaterLaw::nagahiro_hayakawa}));
+  BOOST_TEST((full.convergence_distributions ==
+              std::vector<PressureDistribution>{PressureDistribution::savitsky_wagner, PressureDistribution::uniform,
+                                                PressureDistribution::savitsky}));
   BOOST_TEST(full.work_precision_throws.size() == 6u);  // three throws, and three under another law
   BOOST_TEST((full.flat_drop.problem.environment.convention == Convention::paper));
   BOOST_TEST(full.restarts.strategies.size() == 4u);

@@ -38,18 +38,33 @@ ThrowProblem work_throw(const StoneStudiesOptions& o, const std::string& entry) 
   return p;
 }
 
-// The throw under each law with its published C_w (labelled with the law), or as given when no
-// law is named.
-std::vector<ThrowProblem> under_laws(const ThrowProblem& p, const std::vector<WaterLaw>& laws) {
-  if (laws.empty()) return {p};
+// The throw under each law with its published C_w and under each pressure distribution (labelled
+// with them), or as given when no law is named; a distribution left out is the throw's own.
+std::vector<ThrowProblem> under_laws(const ThrowProblem& p, const std::vector<WaterLaw>& laws,
+                                     const std::vector<PressureDistribution>& distributions) {
+  if (laws.empty() && distributions.empty()) return {p};
+  const std::vector<WaterLaw> ls = laws.empty() ? std::vector<WaterLaw>{p.environment.water_law} : laws;
   std::vector<ThrowProblem> out;
-  for (WaterLaw law : laws) {
+  for (WaterLaw law : ls) {
     ThrowProblem q = p;
     set_water_law(q.environment, law);
-    q.label += std::string(" (") + to_string(law) + ")";
-    out.push_back(q);
+    const std::vector<PressureDistribution> ds =
+        distributions.empty() ? std::vector<PressureDistribution>{q.environment.pressure_distribution} : distributions;
+    for (PressureDistribution d : ds) {
+      ThrowProblem r = q;
+      r.environment.pressure_distribution = d;
+      r.label += std::string(" (") + to_string(law) + ", " + to_string(d) + ")";
+      out.push_back(r);
+    }
   }
   return out;
+}
+
+// The name of a convergence series: its law, and its distribution when the study lists several.
+std::string series_name(const ThrowProblem& p, const std::vector<PressureDistribution>& distributions) {
+  std::string n = to_string(p.environment.water_law);
+  if (distributions.size() > 1) n += std::string("_") + to_string(p.environment.pressure_distribution);
+  return n;
 }
 
 Record settings_findings(const StoneStudiesOptions& o) {
@@ -137,17 +152,18 @@ Record run_stone_studies(const StoneStudiesOptions& o, StudySink& sink) {
     to.workers = o.workers;
     to.progress = progress;
     // The first law in full (with the reference's own tolerance study), every other law's series.
-    const std::vector<ThrowProblem> throws = under_laws(o.convergence_throw.problem, o.convergence_laws);
+    const std::vector<ThrowProblem> throws =
+        under_laws(o.convergence_throw.problem, o.convergence_laws, o.convergence_distributions);
     const RealtimeConvergenceResult conv = run_realtime_convergence(throws.front(), co);
     const ReferenceToleranceResult tol = run_reference_tolerance(throws.front(), to);
     Record r = convergence_findings(conv, tol, o.convergence_judgement, o.required_tolerance_drop);
     r.child("reference_tolerance").set("truth_rtol", to.truth_rtol);
     r.child("reference_tolerance").set("atol_ratio", to.atol_ratio);
     r.set("contact_ratio", co.contact_ratio);
-    r.set("law", std::string(to_string(throws.front().environment.water_law)));
+    r.set("law", series_name(throws.front(), o.convergence_distributions));
     std::vector<std::string> others;
     for (std::size_t k = 1; k < throws.size(); ++k) {
-      const std::string law = to_string(throws[k].environment.water_law);
+      const std::string law = series_name(throws[k], o.convergence_distributions);
       others.push_back(law);
       r.child("other_laws").add_child(law, convergence_series_findings(run_realtime_convergence(throws[k], co),
                                                                          o.convergence_judgement));

@@ -63,6 +63,8 @@ struct StoneStudiesOptions {
   // The studies.
   RealtimeConvergenceOptions convergence;
   std::vector<WaterLaw> convergence_laws;  // each with its published C_w; the first in full; empty: the throw's own
+  // Each law under each of these pressure distributions (the first pair in full); empty: the throw's own.
+  std::vector<PressureDistribution> convergence_distributions;
   OrderJudgement convergence_judgement{1, 0.25, 0.25, "formal"};  // expected order set per scheme; tolerance, minimum slope
   ReferenceToleranceOptions reference_tolerance;
   double required_tolerance_drop = 100;  // CVODE's bounce-position error should fall this much from rtol 1e-6 to 1e-10
