@@ -450,7 +450,15 @@ void validate(const CaptureArgs& a) {
 void throw_capture(const CaptureArgs& a) {
   const std::optional<StoneCase> scene = load_scene_case(a);
   if (scene && !a.out.empty()) throw InputError("capture throw: --out is not written with --scene (use capture validate --scene --out DIR for the report)");
+  // The throw is the capture's: a --set of the case's [throw] would be ignored without a word.
+  for (const std::string& set : a.sets)
+    if (set.rfind("throw.", 0) == 0)
+      throw_input_error("--set " + set.substr(0, set.find('=')), 0, "",
+                        "capture throw takes the throw from the capture; [throw] keys of the case are not used");
   StoneCase c = load_stone_case(a.case_file, a.sets);
+  // The solves are held to the limits of `run` (cases/README.md, Limits) before the capture is read.
+  enforce_limits(estimate_run(c, RunSolvers{a.solver != "reference", a.solver != "realtime", !a.out.empty()}), a.limits,
+                 c.file);
   refuse_output_over_inputs(a.out, OutputKind::file, inputs_of(a, &c, nullptr));
   if (!a.out.empty()) AtomicOutput check(a.out);
   check_capture_size(a.files.front(), a.limits);
