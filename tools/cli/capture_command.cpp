@@ -41,6 +41,7 @@
 #include "tools/capture/synthetic_capture.hpp"
 #include "tools/capture/trace_csv.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "tools/cli/json_output.hpp"
 #include "tools/cli/limit_options.hpp"
 #include "tools/cli/report_render.hpp"
 #include "tools/cli/terminal_progress.hpp"
@@ -367,7 +368,7 @@ void validate(const CaptureArgs& a) {
       traces.emplace_back(std::nullopt);
       if (a.json) {
         nlohmann::json j{{"file", file}, {"verdict", "unusable"}, {"reasons", {e.what()}}, {"error", e.what()}};
-        std::cout << j.dump() << std::endl;
+        std::cout << json_text(j, -1) << std::endl;
       } else {
         std::fprintf(stderr, "stoneskip: %s\n", e.what());
       }
@@ -415,7 +416,7 @@ void validate(const CaptureArgs& a) {
       if (a.json) {
         nlohmann::json j = capture_json(an, c ? &sim : nullptr);
         add_details(j, an);
-        std::cout << j.dump() << std::endl;
+        std::cout << json_text(j, -1) << std::endl;
       } else {
         print_verdict(an, c ? &sim : nullptr);
       }
@@ -474,7 +475,7 @@ void throw_capture(const CaptureArgs& a) {
       nlohmann::json j = capture_json(an, nullptr);
       add_details(j, an);
       j["scene"] = scene_json(r);
-      std::cout << j.dump(2) << std::endl;
+      std::cout << json_text(j) << std::endl;
     } else {
       print_verdict(an, nullptr);
       print_scene(r);
@@ -494,7 +495,7 @@ void throw_capture(const CaptureArgs& a) {
     nlohmann::json j = capture_json(an, nullptr);
     add_details(j, an);
     for (const auto& [name, r] : results) j[name] = json_summary(r);
-    std::cout << j.dump(2) << std::endl;
+    std::cout << json_text(j) << std::endl;
   } else {
     print_verdict(an, nullptr);
     for (const auto& [name, r] : results) std::cout << text_summary(c, r) << "\n";
