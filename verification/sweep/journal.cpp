@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -9,6 +10,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
 
 namespace stoneskip {
@@ -139,8 +141,16 @@ SweepJournal SweepJournal::create(const fs::path& path, const JournalIdentity& i
 
 SweepJournal SweepJournal::resume(const fs::path& path, const JournalIdentity& identity, double sync_interval_s,
                                   JournalRecovery& recovered) {
-  const int fd = ::open(path.c_str(), O_RDWR | O_APPEND | O_CLOEXEC);
+  // A journal is a regular file: a FIFO would block or read forever, a device is not ours to append to.
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+    throw_input_error(path.string(), 0, "", "is " + file_type_words(st.st_mode) + ", not a sweep journal: delete it and run without --resume");
+  const int fd = ::open(path.c_str(), O_RDWR | O_APPEND | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
   if (fd < 0) throw_input_error(path.string(), 0, "", std::string("cannot open the sweep journal: ") + std::strerror(errno));
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    throw_input_error(path.string(), 0, "", "is not a regular file: not a sweep journal");
+  }
   SweepJournal j(path, lock_or_fail(path, fd), sync_interval_s);
   std::vector<unsigned char> bytes(static_cast<std::size_t>(::lseek(fd, 0, SEEK_END)));
   if (::pread(fd, bytes.data(), bytes.size(), 0) != static_cast<ssize_t>(bytes.size()))

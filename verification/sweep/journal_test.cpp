@@ -5,6 +5,7 @@
 // round-trips NaN and negative zero exactly.
 #include <boost/test/unit_test.hpp>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -199,6 +200,29 @@ BOOST_AUTO_TEST_CASE(a_journal_with_a_second_header_or_a_foreign_field_is_refuse
   }
   fs::remove(p);
   fs::remove(q);
+}
+
+BOOST_AUTO_TEST_CASE(a_fifo_or_a_link_as_the_journal_is_refused_without_blocking) {
+  // Oracle: a journal is a regular file this sweep wrote; a FIFO (which would block or read
+  // forever) and a symbolic link are refused with an InputError naming what they are.
+  const fs::path p = scratch("fifo.journal");
+  fs::remove(p);
+  BOOST_REQUIRE(::mkfifo(p.c_str(), 0644) == 0);
+  JournalRecovery rec;
+  try {
+    SweepJournal::resume(p, kId, 1.0, rec);
+    BOOST_FAIL("resumed a FIFO");
+  } catch (const InputError& e) {
+    BOOST_TEST(std::string(e.what()).find("a FIFO") != std::string::npos, e.what());
+  }
+  fs::remove(p);
+  const fs::path target = scratch("target.journal");
+  fs::remove(target);
+  SweepJournal::create(target, kId, 1.0);
+  fs::create_symlink(target, p);
+  BOOST_CHECK_THROW(SweepJournal::resume(p, kId, 1.0, rec), InputError);
+  fs::remove(p);
+  fs::remove(target);
 }
 
 BOOST_AUTO_TEST_CASE(a_journal_being_written_cannot_be_opened_twice) {
