@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tools/cli/command_registry.hpp"
+#include "tools/cli/json_output.hpp"
 #include "tools/cli/terminal_progress.hpp"
 #include "tools/cli/limit_options.hpp"
 #include "tools/io/input_error.hpp"
@@ -128,7 +129,7 @@ void bench(const BenchArgs& a) {
                 "stencil: wall, best sample against the copy kernel's best sample";
   j["quick"] = a.quick;
   if (a.json) {
-    std::cout << j.dump(2) << std::endl;
+    std::cout << json_text(j) << std::endl;
     return;
   }
   auto line = [](const std::string& what, const std::string& value, const std::string& target, bool met) {

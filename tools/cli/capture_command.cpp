@@ -41,6 +41,7 @@
 #include "tools/capture/synthetic_capture.hpp"
 #include "tools/capture/trace_csv.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "tools/cli/json_output.hpp"
 #include "tools/cli/limit_options.hpp"
 #include "tools/cli/report_render.hpp"
 #include "tools/cli/terminal_progress.hpp"
@@ -367,7 +368,7 @@ void validate(const CaptureArgs& a) {
       traces.emplace_back(std::nullopt);
       if (a.json) {
         nlohmann::json j{{"file", file}, {"verdict", "unusable"}, {"reasons", {e.what()}}, {"error", e.what()}};
-        std::cout << j.dump() << std::endl;
+        std::cout << json_text(j, -1) << std::endl;
       } else {
         std::fprintf(stderr, "stoneskip: %s\n", e.what());
       }
@@ -415,7 +416,7 @@ void validate(const CaptureArgs& a) {
       if (a.json) {
         nlohmann::json j = capture_json(an, c ? &sim : nullptr);
         add_details(j, an);
-        std::cout << j.dump() << std::endl;
+        std::cout << json_text(j, -1) << std::endl;
       } else {
         print_verdict(an, c ? &sim : nullptr);
       }
@@ -450,7 +451,15 @@ void validate(const CaptureArgs& a) {
 void throw_capture(const CaptureArgs& a) {
   const std::optional<StoneCase> scene = load_scene_case(a);
   if (scene && !a.out.empty()) throw InputError("capture throw: --out is not written with --scene (use capture validate --scene --out DIR for the report)");
+  // The throw is the capture's: a --set of the case's [throw] would be ignored without a word.
+  for (const std::string& set : a.sets)
+    if (set.rfind("throw.", 0) == 0)
+      throw_input_error("--set " + set.substr(0, set.find('=')), 0, "",
+                        "capture throw takes the throw from the capture; [throw] keys of the case are not used");
   StoneCase c = load_stone_case(a.case_file, a.sets);
+  // The solves are held to the limits of `run` (cases/README.md, Limits) before the capture is read.
+  enforce_limits(estimate_run(c, RunSolvers{a.solver != "reference", a.solver != "realtime", !a.out.empty()}), a.limits,
+                 c.file);
   refuse_output_over_inputs(a.out, OutputKind::file, inputs_of(a, &c, nullptr));
   if (!a.out.empty()) AtomicOutput check(a.out);
   check_capture_size(a.files.front(), a.limits);
@@ -466,7 +475,7 @@ void throw_capture(const CaptureArgs& a) {
       nlohmann::json j = capture_json(an, nullptr);
       add_details(j, an);
       j["scene"] = scene_json(r);
-      std::cout << j.dump(2) << std::endl;
+      std::cout << json_text(j) << std::endl;
     } else {
       print_verdict(an, nullptr);
       print_scene(r);
@@ -486,7 +495,7 @@ void throw_capture(const CaptureArgs& a) {
     nlohmann::json j = capture_json(an, nullptr);
     add_details(j, an);
     for (const auto& [name, r] : results) j[name] = json_summary(r);
-    std::cout << j.dump(2) << std::endl;
+    std::cout << json_text(j) << std::endl;
   } else {
     print_verdict(an, nullptr);
     for (const auto& [name, r] : results) std::cout << text_summary(c, r) << "\n";

@@ -141,6 +141,22 @@ BOOST_AUTO_TEST_CASE(the_published_skipping_throw_bounces_in_the_paper_conventio
   BOOST_TEST(nlohmann::json::parse(physical.out)["realtime"]["bounces"].get<int>() <= 1);
 }
 
+BOOST_AUTO_TEST_CASE(capture_throw_refuses_a_throw_override_and_a_throw_past_the_limits) {
+  // Oracle: the throw comes from the capture, so --set throw.speed_m_s=100 would be ignored:
+  // refused naming it; and the solves are held to run's limits (2e9 triangle evaluations, cases/
+  // README.md): t_max_s = 100 s at a 1e-5 s contact step is 1e7 steps × 4000 triangles. Both exit 2
+  // with one line, before the capture is read.
+  const std::string file = "cases/captures/gentle_sidearm.log";
+  const auto speed = stoneskip::test::run_stoneskip("capture throw " + file + " --solver realtime --set throw.speed_m_s=100");
+  BOOST_TEST(speed.status == 2, speed.out);
+  BOOST_TEST(speed.out.find("--set throw.speed_m_s") != std::string::npos, speed.out);
+  BOOST_TEST(std::count(speed.out.begin(), speed.out.end(), '\n') == 1, speed.out);
+  const auto heavy = stoneskip::test::run_stoneskip("capture throw " + file + " --solver realtime --set solver.t_max_s=100 --set stone.segments=1000");
+  BOOST_TEST(heavy.status == 2, heavy.out);
+  BOOST_TEST(heavy.out.find("above the limit") != std::string::npos, heavy.out);
+  BOOST_TEST(std::count(heavy.out.begin(), heavy.out.end(), '\n') == 1, heavy.out);
+}
+
 BOOST_AUTO_TEST_CASE(the_threshold_capture_straddles_the_physical_conventions_first_bounce) {
   // Oracle: the threshold of the law this capture was made for, newtonian with uniform pressure in
   // the physical convention (0 bounces at the measured 13.7 m/s and 31° attack, 1 or more at

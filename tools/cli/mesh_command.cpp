@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tools/cli/command_registry.hpp"
+#include "tools/cli/json_output.hpp"
 #include "tools/scene/stone_case.hpp"
 
 namespace stoneskip::cli {
@@ -35,7 +36,7 @@ void add_mesh(CLI::App& app) {
       j["mass_kg"] = s.mass.mass_kg;
       j["disk_radius_m"] = s.disk_radius_m;
       j["inertia_body_kg_m2"] = {{I(0, 0), I(0, 1), I(0, 2)}, {I(1, 0), I(1, 1), I(1, 2)}, {I(2, 0), I(2, 1), I(2, 2)}};
-      std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl;
+      std::cout << json_text(j) << std::endl;
       return;
     }
     std::printf("stone        %s\n", s.description.c_str());

@@ -16,6 +16,7 @@
 
 #include "solvers/reference/cvode_stone.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "tools/cli/json_output.hpp"
 #include "tools/cli/limit_options.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
@@ -84,7 +85,7 @@ void run(const RunArgs& a) {
     j["water_law"] = to_string(c.environment.water_law);
     j["pressure_distribution"] = to_string(c.environment.pressure_distribution);
     // A title from a file name need not be UTF-8: replace what is not, never throw.
-    std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl;
+    std::cout << json_text(j) << std::endl;
   } else {
     for (const auto& [name, r] : results) std::cout << text_summary(c, r) << (results.size() > 1 ? "\n" : "");
   }

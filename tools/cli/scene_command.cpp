@@ -19,6 +19,7 @@
 
 #include "reports/scene/scene_movie.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "tools/cli/json_output.hpp"
 #include "tools/cli/limit_options.hpp"
 #include "tools/cli/terminal_progress.hpp"
 #include "tools/io/atomic_file.hpp"
@@ -202,7 +203,7 @@ void run(const SceneArgs& a) {
       j["movie"] = {{"file", m.file.string()}, {"frames", m.frames}, {"rate_hz", m.rate_hz}, {"bytes", m.bytes},
                     {"width_px", m.width_px}, {"height_px", m.height_px}, {"scale_m", m.scale_m}};
     }
-    std::cout << j.dump(2) << std::endl;
+    std::cout << json_text(j) << std::endl;
   } else {
     std::cout << text_of(c, o, s) << std::flush;
     if (movie) {

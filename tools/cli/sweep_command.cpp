@@ -24,11 +24,13 @@
 #include "tools/cli/command_registry.hpp"
 #include "tools/cli/limit_options.hpp"
 #include "tools/cli/terminal_progress.hpp"
+#include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/output_over_input.hpp"
 #include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/scene_throw.hpp"
 #include "tools/scene/sweep_file.hpp"
+#include "verification/sweep/row_batch.hpp"
 #include "verification/sweep/sweep_run.hpp"
 #include "solvers/realtime/clocks.hpp"
 
@@ -120,6 +122,17 @@ ThrowEvaluator make_evaluator(const SweepFile& sweep, const SweepCases& cases, c
   };
 }
 
+// The files a throw reads besides the sweep and base texts, by content (a resume must not mix
+// rows of an edited mesh with the new one's): "mesh PATH fnv1a64 HEX".
+std::string input_files_of(const StoneCase& base) {
+  if (base.spec.mesh_file.empty()) return "";
+  const std::string text = read_text_file(base.spec.mesh_file);
+  char hex[20];
+  std::snprintf(hex, sizeof hex, "%016llx",
+                static_cast<unsigned long long>(fnv1a64(reinterpret_cast<const unsigned char*>(text.data()), text.size())));
+  return "mesh " + base.spec.mesh_file + " fnv1a64 " + hex;
+}
+
 void compute(const SweepArgs& a, const SweepFile& sweep, const SweepCases& cases, SweepPlan& plan,
              const ThrowEvaluator& evaluate, MpiSession& mpi);
 
@@ -162,6 +175,7 @@ void run(const SweepArgs& a) {
   p.base_case_text = cases->base().text;
   p.base_overrides = sweep->base_sets;
   p.resolved_settings = cases->base().resolved_settings();
+  p.input_files = input_files_of(cases->base());
   SweepRunOptions options;
   options.out = out_file(a);
   options.resume = a.resume;
@@ -207,6 +221,7 @@ void compute(const SweepArgs& a, const SweepFile& sweep, const SweepCases& cases
     std::fflush(stdout);
   }
   const SweepSummary summary = plan.run(evaluate, mpi);
+  for (const auto& w : summary.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   std::printf("%s\n", summary.brief().c_str());
 }
 

@@ -256,6 +256,66 @@ BOOST_AUTO_TEST_CASE(a_killed_sweep_resumes_to_the_same_table_computing_only_wha
   BOOST_TEST(again.out.find("already complete") != std::string::npos, again.out);
 }
 
+// Starts `stoneskip sweep SWEEP --out OUT`, waits until its journal holds rows, SIGKILLs it.
+// True when it was killed with rows journalled and no result written.
+bool killed_with_rows(const fs::path& sweep, const fs::path& out) {
+  const fs::path journal = out.string() + ".journal";
+  std::fflush(nullptr);  // the child must not print this process's buffered output again
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    std::freopen("/dev/null", "w", stdout);
+    std::freopen("/dev/null", "w", stderr);
+    ::execl(STONESKIP_EXE, STONESKIP_EXE, "sweep", sweep.c_str(), "--out", out.c_str(), "--threads", "1", "--max-chunk", "1",
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  std::uintmax_t first = 0;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (std::chrono::steady_clock::now() < deadline) {
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(journal, ec);
+    if (!ec && size > 0 && first == 0) first = size;
+    if (!ec && first > 0 && size > first) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFSIGNALED(status) && fs::exists(journal) && !fs::exists(out);
+}
+
+BOOST_AUTO_TEST_CASE(a_resume_after_the_mesh_was_edited_is_refused) {
+  // Oracle: the rows depend on the OBJ mesh, so the journal's identity holds its content hash;
+  // after an edit between the kill and --resume the resume is refused (exit 2, one line naming
+  // the identity field), and so is a finished result taken as complete after such an edit.
+  const fs::path mesh = work() / "stone.obj", base = work() / "mesh_case.toml";
+  fs::copy_file("cases/hard/asymmetric_stone.obj", mesh, fs::copy_options::overwrite_existing);
+  std::string base_text = text_of("cases/hard/tumbling_asymmetric.toml");
+  const std::string key = "mesh_file = \"asymmetric_stone.obj\"";
+  BOOST_REQUIRE(base_text.find(key) != std::string::npos);
+  base_text.replace(base_text.find(key), key.size(), "mesh_file = \"stone.obj\"");
+  write(base, base_text);
+  const fs::path sweep = setup("mesh", "base = \"" + base.string() + "\"\nset = [\"solver.t_max_s=0.5\"]\n[design]\nkind = \"grid\"\n"
+                                       "[[vary]]\nkey = \"throw.speed_m_s\"\nfrom = 6.0\nto = 10.0\ncount = 60\n");
+  const fs::path out = work() / "mesh.h5";
+  BOOST_REQUIRE(killed_with_rows(sweep, out));
+  const std::string original = text_of(mesh);
+  write(mesh, original + "# edited\n");
+  const Outcome edited = command("sweep " + sweep.string() + " --out " + out.string() + " --resume --quiet");
+  BOOST_TEST(edited.status == 2, edited.err);
+  BOOST_TEST(edited.err.find("input_files") != std::string::npos, edited.err);
+  BOOST_TEST(std::count(edited.err.begin(), edited.err.end(), '\n') == 1, edited.err);
+  BOOST_TEST(!fs::exists(out));
+  // With the mesh as it was, the same resume finishes; after an edit it is no longer complete.
+  write(mesh, original);
+  const Outcome resumed = command("sweep " + sweep.string() + " --out " + out.string() + " --resume --quiet");
+  BOOST_REQUIRE_MESSAGE(resumed.status == 0, resumed.err);
+  write(mesh, original + "# edited\n");
+  const Outcome complete = command("sweep " + sweep.string() + " --out " + out.string() + " --resume");
+  BOOST_TEST(complete.status == 2, complete.out << complete.err);
+  BOOST_TEST(complete.out.find("already complete") == std::string::npos, complete.out);
+}
+
 BOOST_AUTO_TEST_CASE(sweep_plot_maps_hold_the_tables_counts) {
   // Oracle: the result table: a map cell's value is the bounce count of the throw at that grid
   // point; the disagreement cell is real-time minus reference; a histogram sums to the samples.

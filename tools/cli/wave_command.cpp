@@ -23,6 +23,7 @@
 #include "solvers/realtime/clocks.hpp"
 #include "solvers/spectral/spectral_wave.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "tools/cli/json_output.hpp"
 #include "tools/cli/limit_options.hpp"
 #include "tools/io/progress.hpp"
 #include "tools/scene/resource_estimate.hpp"
@@ -128,7 +129,7 @@ void run_wave(const WaveArgs& a) {
     j["blew_up_by_step"] = finite ? nlohmann::json(nullptr) : nlohmann::json(blown_up_by);
     j["cpu_s"] = cpu_s;
     j["cell_updates_per_s"] = cpu_s > 0 ? static_cast<double>(w.nx) * w.ny * steps / cpu_s : 0.0;
-    std::cout << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl;
+    std::cout << json_text(j) << std::endl;
   } else {
     std::printf("%s: %s stencil (centre %.6g, orth %.6g, diag %.6g)/d², %d x %d cells of %.6g m, %s boundary\n",
                 c.title.c_str(), w.stencil.name.c_str(), w.stencil.centre, w.stencil.orth, w.stencil.diag, w.nx, w.ny,

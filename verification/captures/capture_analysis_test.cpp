@@ -2,12 +2,15 @@
 // remote reads is computed exactly, so the release state the analysis must find is known exactly.
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <numbers>
 
 #include "model/stone/throw.hpp"
 #include "verification/captures/capture_analysis.hpp"
+#include "verification/captures/capture_verdict.hpp"
+#include "verification/study/verdict_rules.hpp"
 
 using namespace stoneskip;
 
@@ -222,6 +225,44 @@ BOOST_AUTO_TEST_CASE(the_verdict_follows_the_rules_thresholds) {
   o.rules.jitter_caveat_s = 2 * jitter;
   a = analyse_capture(trace, o);
   BOOST_TEST(to_string(a.verdict) == std::string("usable"));
+}
+
+BOOST_AUTO_TEST_CASE(a_throw_no_human_could_make_is_unusable_naming_the_quantity) {
+  // Oracle: the rules' plausibility bounds (capture_verdict.hpp: release speed 1–45 m/s, hand
+  // within 3 m of the still part). The analytic throw (a 20 m/s² triangle over 0.2 s: 2 m/s, a few
+  // cm of travel) is usable; the same findings with the WiiYourself numbers (47.5 m/s, 70 m)
+  // are unusable, and bounds moved past the analytic throw's own values make it unusable with a
+  // reason naming the quantity. A recording with no button column gets a caveat saying so.
+  std::vector<double> t;
+  for (int k = 0; k < 150; ++k) t.push_back(0.01 * k);
+  const Trace trace = make_trace(t, [](double s) {
+    return Reading{Vec3(Triangle{0.7, 0.8, 0.9, 20.0}(s) / kG, 0, 1), Vec3(0, 0, 0), s > 0.3 && s < 1.0};
+  });
+  CaptureOptions o = quick_options();
+  CaptureAnalysis a = analyse_capture(trace, o);
+  BOOST_REQUIRE(a.can_throw());
+  BOOST_TEST(to_string(a.verdict) == std::string("usable"));
+  Record in = capture_verdict_inputs(a, o.rules);
+  in.set("release_speed_m_s", 47.5);
+  BOOST_TEST(decide("capture_verdict", in) == "unusable");
+  in = capture_verdict_inputs(a, o.rules);
+  in.set("hand_displacement_m", 70.0);
+  BOOST_TEST(decide("capture_verdict", in) == "unusable");
+  in = capture_verdict_inputs(a, o.rules);
+  in.set("has_buttons", 0.0);
+  in.set("release_at_end", 1.0);
+  const CaptureConditions no_button = capture_conditions(in);
+  BOOST_TEST((std::find(no_button.caveats.begin(), no_button.caveats.end(), "no_release_signal") != no_button.caveats.end()));
+
+  o.rules.min_release_speed_m_s = 3.0;  // above the analytic 2 m/s
+  a = analyse_capture(trace, o);
+  BOOST_TEST(to_string(a.verdict) == std::string("unusable"));
+  BOOST_TEST(a.reasons.front().find("release speed") != std::string::npos, a.reasons.front());
+  o = quick_options();
+  o.rules.max_hand_displacement_m = 1e-4;  // below the analytic throw's travel
+  a = analyse_capture(trace, o);
+  BOOST_TEST(to_string(a.verdict) == std::string("unusable"));
+  BOOST_TEST(a.reasons.front().find("hand displacement") != std::string::npos, a.reasons.front());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,5 +1,6 @@
 #include "verification/captures/capture_verdict.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -30,6 +31,9 @@ bool CaptureVerdictRules::is_valid(std::string* why) const {
   if (!(lost_fraction_caveat >= 0 && lost_fraction_caveat <= 1)) return fail("rules.lost_fraction_caveat must be in [0, 1]");
   if (!(jitter_caveat_s >= 0)) return fail("rules.jitter_caveat_s must not be negative");
   if (!(accel_lever_disagreement > 0)) return fail("rules.accel_lever_disagreement must be positive");
+  if (!(min_release_speed_m_s >= 0 && max_release_speed_m_s > min_release_speed_m_s))
+    return fail("rules.max_release_speed_m_s must exceed rules.min_release_speed_m_s >= 0");
+  if (!(max_hand_displacement_m > 0)) return fail("rules.max_hand_displacement_m must be positive");
   return true;
 }
 
@@ -46,6 +50,19 @@ Verdict verdict_from_phrase(const std::string& phrase) {
     if (phrase == to_string(v)) return v;
   return Verdict::unusable;
 }
+
+namespace {
+// The largest distance of the stone from where it was held still, from the end of the still part
+// to the release (the series' kept samples; 0 when the chain did not run).
+double hand_displacement_m(const CaptureAnalysis& a) {
+  const auto& p = a.series.stone_position_m;
+  if (p.empty()) return 0.0;
+  const std::size_t last = std::min(a.release_sample, p.size() - 1);
+  double far = 0;
+  for (std::size_t i = std::min(a.still_end, last); i <= last; ++i) far = std::max(far, p[i].norm());
+  return far;
+}
+}  // namespace
 
 Record capture_verdict_inputs(const CaptureAnalysis& a, const CaptureVerdictRules& r) {
   const Trace& trace = a.trace;
@@ -86,6 +103,11 @@ Record capture_verdict_inputs(const CaptureAnalysis& a, const CaptureVerdictRule
   in.set("speed_difference_m_s", finite ? a.speed_difference_m_s : 0.0);
   in.set("accel_lever_disagreement", r.accel_lever_disagreement);
   in.set("reader_warnings", trace.warnings.size());
+  in.set("release_speed_m_s", finite ? a.nominal.measured_speed_m_s : 0.0);
+  in.set("min_release_speed_m_s", r.min_release_speed_m_s);
+  in.set("max_release_speed_m_s", r.max_release_speed_m_s);
+  in.set("hand_displacement_m", finite ? hand_displacement_m(a) : 0.0);
+  in.set("max_hand_displacement_m", r.max_hand_displacement_m);
   return in;
 }
 
@@ -140,6 +162,15 @@ std::string reason_for(const std::string& c, const CaptureAnalysis& a, const Rec
     return format("the accelerometer (%.3g m/s) and the lever arm (%.3g m/s) disagree by more than %.3g %%: "
                   "check the mounting's lever arm",
                   a.nominal.accel_speed_m_s, a.nominal.lever_speed_m_s, 100 * in.number("accel_lever_disagreement"));
+  if (c == "release_speed_implausible")
+    return format("the release speed %.3g m/s is outside a human throw's %.3g-%.3g m/s: not a hand's throw",
+                  in.number("release_speed_m_s"), in.number("min_release_speed_m_s"), in.number("max_release_speed_m_s"));
+  if (c == "hand_displacement_implausible")
+    return format("the hand displacement of %.3g m from the still part to the release is beyond an arm's reach "
+                  "(%.3g m): integration drift, not a throw",
+                  in.number("hand_displacement_m"), in.number("max_hand_displacement_m"));
+  if (c == "no_release_signal")
+    return "no release signal (no button column): the release is taken at the file's end";
   if (c == "reader_warnings")
     return format("%.0f reader warning(s), e.g. ", in.number("reader_warnings")) + a.trace.warnings.front();
   return c;

@@ -27,6 +27,17 @@ struct CaptureVerdictRules {
   // Still-part |a| off 1 g by more: the calibration is wrong (3× the caveat level; an ADXL330
   // zero-g offset alone stays within ≈ 0.05 g after the factory calibration).
   double calibration_unusable_g = 0.15;
+  // Plausible for a human throw. The hand moves no faster than a ball it releases, and the fastest
+  // human throws, elite baseball pitches, release the ball at ≈ 40–45 m/s (Fleisig et al. 1999,
+  // J. Biomech. 32, 1371): above max_release_speed_m_s the capture is not a hand's. Below
+  // min_release_speed_m_s it is no throw (a gentle underhand toss ≈ 3–5 m/s; skimming needs
+  // ≥ 5 m/s, Clanet, Hersen & Bocquet 2004).
+  double max_release_speed_m_s = 45.0;
+  double min_release_speed_m_s = 1.0;
+  // From the end of the still part to the release the hand stays within an arm's reach (≈ 1–2 m
+  // for an adult, shoulder to fingertip about 0.75 m, swung about a turning body) plus a stride:
+  // a stone further than this from where it was held still is integration drift, not a throw.
+  double max_hand_displacement_m = 3.0;
   // --- caveats ---
   // Still-part |a| off 1 g by more: check the calibration (a 0.05 g offset tilts gravity by 3°).
   double calibration_caveat_g = 0.05;

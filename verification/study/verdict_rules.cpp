@@ -333,7 +333,18 @@ CaptureConditions capture_conditions(const Record& in) {
   unusable(in.flag("release_found") && !in.flag("still_found"), "no_still_part");
   unusable(computed && !in.flag("throw_finite"), "state_not_finite");
   unusable(computed && calibration > in.number("calibration_unusable_g"), "calibration_wrong");
+  // Plausibility against a human throw (records stored before these inputs existed lack them).
+  if (in.has_number("max_release_speed_m_s"))
+    unusable(computed && in.flag("throw_finite") &&
+                 (in.number("release_speed_m_s") > in.number("max_release_speed_m_s") ||
+                  in.number("release_speed_m_s") < in.number("min_release_speed_m_s")),
+             "release_speed_implausible");
+  if (in.has_number("max_hand_displacement_m"))
+    unusable(computed && in.flag("throw_finite") && in.number("hand_displacement_m") > in.number("max_hand_displacement_m"),
+             "hand_displacement_implausible");
   caveat(in.flag("release_at_end") && in.flag("has_buttons"), "button_held_at_end");
+  if (in.has_number("max_release_speed_m_s"))  // stored with the plausibility inputs
+    caveat(in.flag("release_at_end") && !in.flag("has_buttons"), "no_release_signal");
   caveat(in.flag("clipped_in_swing"), "clipped_in_swing");
   caveat(in.flag("gyro_saturated_in_swing"), "gyro_saturated");
   caveat(in.flag("stamps_given") && in.number("lost_fraction") > in.number("lost_fraction_caveat"), "reports_lost");

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -9,6 +10,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
 
 namespace stoneskip {
@@ -139,14 +141,30 @@ SweepJournal SweepJournal::create(const fs::path& path, const JournalIdentity& i
 
 SweepJournal SweepJournal::resume(const fs::path& path, const JournalIdentity& identity, double sync_interval_s,
                                   JournalRecovery& recovered) {
-  const int fd = ::open(path.c_str(), O_RDWR | O_APPEND | O_CLOEXEC);
+  // A journal is a regular file: a FIFO would block or read forever, a device is not ours to append to.
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+    throw_input_error(path.string(), 0, "", "is " + file_type_words(st.st_mode) + ", not a sweep journal: delete it and run without --resume");
+  const int fd = ::open(path.c_str(), O_RDWR | O_APPEND | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
   if (fd < 0) throw_input_error(path.string(), 0, "", std::string("cannot open the sweep journal: ") + std::strerror(errno));
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    throw_input_error(path.string(), 0, "", "is not a regular file: not a sweep journal");
+  }
   SweepJournal j(path, lock_or_fail(path, fd), sync_interval_s);
   std::vector<unsigned char> bytes(static_cast<std::size_t>(::lseek(fd, 0, SEEK_END)));
   if (::pread(fd, bytes.data(), bytes.size(), 0) != static_cast<ssize_t>(bytes.size()))
     throw_input_error(path.string(), 0, "", "cannot read the sweep journal");
   std::vector<std::pair<std::uint32_t, std::vector<unsigned char>>> records;
   const std::size_t good = read_records(bytes, records);
+  // A damaged record with whole records after it is damage, not a torn tail: count what it costs.
+  std::size_t later = 0;
+  for (std::size_t at = good + 1; at + kFrame <= bytes.size() && later == 0; ++at) {
+    if (std::memcmp(&bytes[at], &kMagic, 4) != 0) continue;
+    std::vector<std::pair<std::uint32_t, std::vector<unsigned char>>> rest;
+    read_records(std::vector<unsigned char>(bytes.begin() + static_cast<std::ptrdiff_t>(at), bytes.end()), rest);
+    later = rest.size();
+  }
   if (records.empty() || records.front().first != kHeader)
     throw_input_error(path.string(), 0, "", "not a sweep journal (no header record): delete it and run without --resume");
   RowBatch header;
@@ -162,7 +180,22 @@ SweepJournal SweepJournal::resume(const fs::path& path, const JournalIdentity& i
                         "differs from this sweep's (the journal belongs to another sweep, file version or build): "
                         "delete it and run without --resume");
   }
+  // Only this sweep's identity: a header naming anything else, or any field twice, is foreign.
+  for (std::size_t i = 0; i < header.notes.size(); ++i) {
+    const std::string& name = header.notes[i].solver;
+    bool known = false, twice = false;
+    for (const auto& w : want) known = known || w.first == name;
+    for (std::size_t k = 0; k < i; ++k) twice = twice || header.notes[k].solver == name;
+    if (!known || twice)
+      throw_input_error(path.string(), 0, name,
+                        std::string(twice ? "is given twice" : "is not a field of this sweep's identity") +
+                            " in the journal's header (a foreign or edited journal): delete it and run without --resume");
+  }
   for (std::size_t i = 1; i < records.size(); ++i) {
+    if (records[i].first != kRows)
+      throw_input_error(path.string(), 0, "",
+                        "record " + std::to_string(i + 1) + " is a second header (another sweep's records appended): "
+                        "delete the journal and run without --resume");
     RowBatch b;
     if (!decode(records[i].second.data(), records[i].second.size(), b))
       throw_input_error(path.string(), 0, "", "record " + std::to_string(i) + " is malformed despite its checksum");
@@ -170,6 +203,7 @@ SweepJournal SweepJournal::resume(const fs::path& path, const JournalIdentity& i
     ++recovered.records;
   }
   recovered.dropped_bytes = bytes.size() - good;
+  recovered.damaged_records = later;
   if (recovered.dropped_bytes > 0 && ::ftruncate(fd, static_cast<off_t>(good)) != 0)
     throw_input_error(path.string(), 0, "", std::string("cannot cut the journal's torn tail: ") + std::strerror(errno));
   return j;

@@ -38,6 +38,9 @@ struct JournalRecovery {
   RowBatch rows;                 // every complete record's rows and notes, in file order
   std::size_t records = 0;
   std::size_t dropped_bytes = 0; // a torn or corrupt tail that was cut off
+  // Whole records found after the first bad one: the cut was damage mid-journal (a flipped byte),
+  // not a torn tail, and these records' throws are computed again. 0 for a torn tail.
+  std::size_t damaged_records = 0;
 };
 
 class SweepJournal {

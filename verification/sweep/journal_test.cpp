@@ -5,6 +5,7 @@
 // round-trips NaN and negative zero exactly.
 #include <boost/test/unit_test.hpp>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -103,6 +104,7 @@ BOOST_AUTO_TEST_CASE(a_journal_cut_at_any_byte_gives_back_exactly_the_whole_reco
       BOOST_TEST(rec.records == whole, "cut at " << cut);
       BOOST_TEST(rec.rows.rows() == 4 * whole);
       BOOST_TEST(rec.dropped_bytes == cut - ends[whole]);
+      BOOST_TEST(rec.damaged_records == 0u);  // a torn tail, not damage
       for (std::size_t r = 0; r < rec.rows.rows(); ++r) BOOST_TEST(rec.rows.throw_index(r) == 10 * (r / 4) + r % 4);
       // Appending continues right after the last whole record.
       j.append(batch(100, 1));
@@ -135,6 +137,7 @@ BOOST_AUTO_TEST_CASE(a_garbled_record_and_what_follows_it_are_dropped) {
   BOOST_TEST(rec.records == 1u);
   BOOST_TEST(rec.rows.rows() == 2u);
   BOOST_TEST(rec.dropped_bytes == b.size() - second);
+  BOOST_TEST(rec.damaged_records == 1u);  // the third record is whole: damage mid-journal, reported
   fs::remove(p);
 }
 
@@ -154,6 +157,72 @@ BOOST_AUTO_TEST_CASE(a_journal_of_another_sweep_is_refused_naming_the_field) {
   }
   BOOST_CHECK_THROW(SweepJournal::create(p, kId, 1.0), InputError);  // never overwritten
   fs::remove(p);
+}
+
+BOOST_AUTO_TEST_CASE(a_journal_with_a_second_header_or_a_foreign_field_is_refused) {
+  // Oracle: a journal holds one header, first, with this sweep's identity fields only once each.
+  // Another sweep's journal appended after ours (a second header and its rows) must be refused, not
+  // its rows taken; so must a header with a field this identity does not have.
+  const fs::path p = scratch("twice.journal"), q = scratch("foreign.journal");
+  fs::remove(p);
+  fs::remove(q);
+  {
+    SweepJournal j = SweepJournal::create(p, kId, 1.0);
+    j.append(batch(0, 2));
+  }
+  JournalIdentity other = kId;
+  other[0].second = "base = \"y.toml\"";
+  {
+    SweepJournal j = SweepJournal::create(q, other, 1.0);
+    j.append(batch(2, 2));
+  }
+  std::vector<char> joined = bytes_of(p);
+  const std::vector<char> foreign = bytes_of(q);
+  joined.insert(joined.end(), foreign.begin(), foreign.end());
+  write_bytes(p, joined, joined.size());
+  JournalRecovery rec;
+  try {
+    SweepJournal::resume(p, kId, 1.0, rec);
+    BOOST_FAIL("took another sweep's records");
+  } catch (const InputError& e) {
+    BOOST_TEST(std::string(e.what()).find("second header") != std::string::npos, e.what());
+  }
+  fs::remove(p);
+  // A header with one more field than this sweep's identity.
+  JournalIdentity more = kId;
+  more.emplace_back("rows_from", "elsewhere");
+  SweepJournal::create(p, more, 1.0);
+  try {
+    SweepJournal::resume(p, kId, 1.0, rec);
+    BOOST_FAIL("resumed a header with a foreign field");
+  } catch (const InputError& e) {
+    BOOST_TEST(std::string(e.what()).find("rows_from") != std::string::npos, e.what());
+  }
+  fs::remove(p);
+  fs::remove(q);
+}
+
+BOOST_AUTO_TEST_CASE(a_fifo_or_a_link_as_the_journal_is_refused_without_blocking) {
+  // Oracle: a journal is a regular file this sweep wrote; a FIFO (which would block or read
+  // forever) and a symbolic link are refused with an InputError naming what they are.
+  const fs::path p = scratch("fifo.journal");
+  fs::remove(p);
+  BOOST_REQUIRE(::mkfifo(p.c_str(), 0644) == 0);
+  JournalRecovery rec;
+  try {
+    SweepJournal::resume(p, kId, 1.0, rec);
+    BOOST_FAIL("resumed a FIFO");
+  } catch (const InputError& e) {
+    BOOST_TEST(std::string(e.what()).find("a FIFO") != std::string::npos, e.what());
+  }
+  fs::remove(p);
+  const fs::path target = scratch("target.journal");
+  fs::remove(target);
+  SweepJournal::create(target, kId, 1.0);
+  fs::create_symlink(target, p);
+  BOOST_CHECK_THROW(SweepJournal::resume(p, kId, 1.0, rec), InputError);
+  fs::remove(p);
+  fs::remove(target);
 }
 
 BOOST_AUTO_TEST_CASE(a_journal_being_written_cannot_be_opened_twice) {

@@ -36,6 +36,8 @@ void write_sweep_file(const std::filesystem::path& path, const SweepData& d) {
   root.set_attr("base_case_text", p.base_case_text);
   root.set_attr("base_overrides", join_lines(p.base_overrides));
   root.set_attr("resolved_settings", p.resolved_settings);
+  root.set_attr("input_files", p.input_files);
+  root.set_attr("build", p.build);
   root.set_attr("solvers", std::string(to_string(d.solvers)));
   root.set_attr("throws", static_cast<long long>(d.throws.rows()));
   root.set_attr("outcome_codes", std::string(kOutcomeCodes));
@@ -102,6 +104,9 @@ SweepData read_sweep_file(const std::filesystem::path& path) {
     p.base_case_text = root.attr_string("base_case_text");
     p.base_overrides = split_lines(root.attr_string("base_overrides"));
     p.resolved_settings = root.attr_string("resolved_settings");
+    // Absent from files of older builds: such a result is not this build's.
+    if (root.has_attr("input_files")) p.input_files = root.attr_string("input_files");
+    if (root.has_attr("build")) p.build = root.attr_string("build");
     p.code_version = root.attr_string("code_version");
     p.created_utc = root.attr_string("created_utc");
     const std::string solvers = root.attr_string("solvers");

@@ -35,6 +35,9 @@ struct SweepProvenance {
   std::string base_case_file, base_case_text;
   std::vector<std::string> base_overrides;
   std::string resolved_settings;
+  // Files the rows depend on beyond the texts above, by content: "mesh PATH fnv1a64 HEX" lines.
+  std::string input_files;
+  std::string build;  // version and executable fingerprint of the build that computed the rows
   std::string code_version, created_utc;  // set when the file is written (read back only)
 };
 

@@ -40,6 +40,11 @@ std::string executable_fingerprint() {
   return hex;
 }
 
+// The build that computes the rows: its version and its executable's bytes.
+std::string build_of_this_process() {
+  return std::string(kVersion) + " (git " + kGitDescribe + "), executable " + executable_fingerprint();
+}
+
 // What a journal must match to be resumed: everything that decides a row's bits.
 JournalIdentity identity_of(const SweepData& d) {
   return {{"sweep_text", d.provenance.sweep_text},
@@ -47,12 +52,14 @@ JournalIdentity identity_of(const SweepData& d) {
           {"base_overrides", joined(d.provenance.base_overrides, "\n")},
           {"code_version", std::string(kVersion) + " (git " + kGitDescribe + ")"},
           {"executable", executable_fingerprint()},
+          {"input_files", d.provenance.input_files},
           {"columns", joined(d.throws.columns, ",")},
           {"throws", std::to_string(d.design.size())}};
 }
 
 bool same_sweep(const SweepData& a, const SweepData& b) {
   return a.provenance.sweep_text == b.provenance.sweep_text && a.provenance.base_case_text == b.provenance.base_case_text &&
+         a.provenance.input_files == b.provenance.input_files && a.provenance.build == b.provenance.build &&
          a.provenance.base_overrides == b.provenance.base_overrides && a.throws.columns == b.throws.columns &&
          a.throws.rows() == b.design.size();
 }
@@ -81,6 +88,7 @@ SweepPlan SweepPlan::prepare(const SweepData& spec, const SweepRunOptions& optio
   { AtomicOutput check(options.out); }  // the folder exists and is writable; out is not a folder
   SweepPlan plan;
   plan.data_ = spec;
+  plan.data_.provenance.build = build_of_this_process();
   plan.options_ = options;
   const ThrowRecord record = sweep_record(spec.design, spec.solvers);
   const std::size_t total = spec.design.size(), width = record.width();
@@ -101,9 +109,21 @@ SweepPlan SweepPlan::prepare(const SweepData& spec, const SweepRunOptions& optio
     if (rec.rows.rows() > 0 && rec.rows.width != width)
       throw_input_error(jp.string(), 0, "", "its rows do not have this sweep's columns");
     plan.take(rec.rows);
+    if (rec.damaged_records > 0)
+      plan.warnings_.push_back(jp.string() + ": a damaged record (" + std::to_string(rec.dropped_bytes) + " bytes cut, " +
+                               std::to_string(rec.damaged_records) +
+                               " whole records after it dropped): their throws are computed again");
     plan.recovered_ = static_cast<std::size_t>(std::count(plan.have_.begin(), plan.have_.end(), true));
   } else if (options.resume && fs::exists(options.out, ec)) {
     const SweepData old = read_sweep_file(options.out);
+    if (old.provenance.build != plan.data_.provenance.build && same_sweep(old, [&] {
+          SweepData d = plan.data_;
+          d.provenance.build = old.provenance.build;
+          return d;
+        }()))
+      throw_input_error(options.out.string(), 0, "",
+                        "was computed by another build (" + (old.provenance.build.empty() ? std::string("unrecorded") : old.provenance.build) +
+                            "): run without --resume to compute it with this one");
     if (!same_sweep(old, plan.data_))
       throw_input_error(options.out.string(), 0, "",
                         "exists, has no journal and is not this sweep's result: nothing to resume (run without --resume to replace it)");
@@ -137,6 +157,7 @@ SweepSummary SweepPlan::run(const ThrowEvaluator& evaluate, MpiSession& mpi) {
   summary.throws = data_.design.size();
   summary.recovered = recovered_;
   summary.was_complete = was_complete_;
+  summary.warnings = warnings_;
   std::unique_ptr<ProgressTicker> progress;
   if (!pending_.empty()) progress = start_progress(options_.progress, "sweep", pending_.size());
   const BatchSink sink = [&](const RowBatch& b) {

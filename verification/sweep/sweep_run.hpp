@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "verification/study/progress.hpp"
 
@@ -36,6 +37,7 @@ struct SweepSummary {
   std::size_t throws = 0, computed = 0, recovered = 0;
   std::size_t failed_solves = 0, not_run = 0;
   bool was_complete = false;        // --resume found a finished result file: nothing to do
+  std::vector<std::string> warnings;  // one line each, for stderr (a journal damaged mid-file)
   ScheduleStats schedule;
   std::string brief() const;        // one line
 };
@@ -59,6 +61,7 @@ class SweepPlan {
   std::vector<bool> have_;
   std::size_t recovered_ = 0;
   bool was_complete_ = false;
+  std::vector<std::string> warnings_;
   void take(const RowBatch& b);     // rows into the table by throw index, notes kept
 };
 
