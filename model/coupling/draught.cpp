@@ -13,7 +13,7 @@ inline int wrap(int i, int n) {
 
 // One edge of a projected triangle, oriented so that the triangle's interior is where E > 0.
 // e(P) is evaluated from the lexicographically smaller endpoint, so two triangles sharing the
-// edge get the same |E| to the bit (spec §2.4 draught; the tie rule in draught.hpp).
+// edge get the same |E| to the bit (model/README.md §2.4 draught; the tie rule in draught.hpp).
 struct Edge {
   double lo_x, lo_y, ex, ey;  // e(P) = ex (P.y − lo_y) − ey (P.x − lo_x)
   double sign;                // E = sign · e

@@ -1,5 +1,5 @@
 #pragma once
-// The stone's draught on the water's grid (spec §2.4): at each grid point (x_i, y_j),
+// The stone's draught on the water's grid (model/README.md §2.4): at each grid point (x_i, y_j),
 //   b_ij = length of the vertical line through (x_i, y_j) that lies inside the stone and below the
 //          water surface z_ij,
 // from a closed, outward-oriented triangle mesh in a given pose. Any closed mesh: prism, lens or a
@@ -59,7 +59,7 @@ class StoneDraught {
 };
 
 // The largest σ = cΔt/d for which the leapfrog stays stable where a stone floats on the water
-// (spec §2.4): under the footprint b follows z with unit gain, L[z + b] = L[2z], so the Courant
+// (model/README.md §2.4): under the footprint b follows z with unit gain, L[z + b] = L[2z], so the Courant
 // number there is effectively √2 σ and the limit is the stencil's free limit / √2
 // (model/water/stencil.hpp: leapfrog_courant_limit). The coupled operator is L·(1 + χ) with χ the
 // footprint's indicator, whose spectral radius is at most twice L's: the limit is sufficient for

@@ -256,7 +256,7 @@ BOOST_AUTO_TEST_CASE(a_stone_in_flight_or_beyond_the_rim_has_no_draught) {
 }
 
 BOOST_AUTO_TEST_CASE(coupled_limit_is_the_free_limit_over_root_two) {
-  // Oracle: spec §2.4, the Courant number under the footprint is √2 σ: 5-point 1/2, γ = 1/3 √6/4.
+  // Oracle: model/README.md §2.4, the Courant number under the footprint is √2 σ: 5-point 1/2, γ = 1/3 √6/4.
   BOOST_TEST(std::abs(coupled_courant_limit(named_stencil("five_point")) - 0.5) <= 1e-15);
   BOOST_TEST(std::abs(coupled_courant_limit(named_stencil("nine_point_isotropic")) - std::sqrt(6.0) / 4) <= 1e-15);
 }

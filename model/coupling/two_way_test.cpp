@@ -1,4 +1,4 @@
-// The two-way model of spec §2.4 run end to end: a stone's draught computed from the field each
+// The two-way model of model/README.md §2.4 run end to end: a stone's draught computed from the field each
 // step (model/coupling/draught.hpp) drives the forced leapfrog (model/water/height_field.hpp).
 #include <boost/test/unit_test.hpp>
 
@@ -54,7 +54,7 @@ double abs_volume(const HeightField& f) {
 BOOST_AUTO_TEST_SUITE(two_way_)
 
 BOOST_AUTO_TEST_CASE(a_moving_stone_adds_no_water_with_a_consistent_stencil) {
-  // Oracle: spec §2.4 — a consistent stencil's weights sum to 0, so Σ L[z + b] = 0 on a periodic or
+  // Oracle: model/README.md §2.4 — a consistent stencil's weights sum to 0, so Σ L[z + b] = 0 on a periodic or
   // reflecting grid and Σ z d² keeps its start value (0, still water) to round-off: 1e-12 of the
   // displaced volume Σ|z| d² (a few ulps per cell per step, 4096 cells, 300 steps).
   constexpr double kVolumeRoundoff = 1e-12;
@@ -78,7 +78,7 @@ BOOST_AUTO_TEST_CASE(a_moving_stone_adds_no_water_with_a_consistent_stencil) {
 }
 
 BOOST_AUTO_TEST_CASE(paper_eq11_does_not_conserve_the_water) {
-  // Oracle: paper_eq11's weights sum to −1/3 (spec §2.2), so each step changes Σ z by
+  // Oracle: paper_eq11's weights sum to −1/3 (model/README.md §2.2), so each step changes Σ z by
   // −(2σ²/3)/(2 + μΔt) Σ (z + b): the volume drifts by a visible fraction of what the stone displaces.
   HeightField f(pond("paper_eq11", Boundary::periodic, 0.4));
   MovingStone stone;
@@ -89,7 +89,7 @@ BOOST_AUTO_TEST_CASE(paper_eq11_does_not_conserve_the_water) {
 }
 
 BOOST_AUTO_TEST_CASE(a_plate_held_still_settles_to_the_closed_form) {
-  // Oracle: spec §2.4 — a flat-bottomed plate held with its bottom at s < 0 over K grid points of
+  // Oracle: model/README.md §2.4 — a flat-bottomed plate held with its bottom at s < 0 over K grid points of
   // an N-point periodic grid settles (μ > 0) to z + b = C everywhere: z = C off the plate,
   // (C + s)/2 under it, b = (C − s)/2, C = −K s/(2N − K). μ = 12/s makes every mode decay at
   // least as e^{−μt/2} (all modes underdamped: μ²/4 = 36 < λ_min ≈ 4π²); after 8 s the transient
@@ -183,7 +183,7 @@ PlateGrowth plate_growth(const std::string& stencil, double sigma, bool with_pla
 }
 
 BOOST_AUTO_TEST_CASE(the_coupled_step_is_stable_below_the_coupled_limit_and_grows_above_it) {
-  // Oracle: spec §2.4 — under the plate the Courant number is √2 σ, so the limit is the free
+  // Oracle: model/README.md §2.4 — under the plate the Courant number is √2 σ, so the limit is the free
   // limit / √2 (coupled_courant_limit). 3 % below it the departure from equilibrium does not grow
   // over 400 steps (rate ≤ 1 + 1e-3: a bounded transient, as leapfrog modes near the limit have,
   // spread over the steps); 3 % above it grows geometrically from the first steps (rate > 1.05
@@ -204,7 +204,7 @@ BOOST_AUTO_TEST_CASE(the_coupled_step_is_stable_below_the_coupled_limit_and_grow
 }
 
 BOOST_AUTO_TEST_CASE(with_no_wave_speed_two_way_is_one_way_bit_for_bit) {
-  // Oracle: spec §2.4 — with c = 0 the forcing 2c²Δt² L[b] is zero and the field never moves, so
+  // Oracle: model/README.md §2.4 — with c = 0 the forcing 2c²Δt² L[b] is zero and the field never moves, so
   // a two-way run equals a run without draught to the bit; on still water z stays exactly 0, and
   // with μ = 0 a disturbed field stays exactly as it started.
   for (double mu : {0.0, 0.7}) {

@@ -1,5 +1,5 @@
 #pragma once
-// The fluids and gravity around the stone, which form of the force laws to use (spec §1.6), and
+// The fluids and gravity around the stone, which form of the force laws to use (model/README.md §1.6), and
 // which water force law acts on a wetted triangle (issue 11; model/stone/water_laws.hpp).
 #include <string>
 
@@ -43,7 +43,7 @@ enum class PressureDistribution { uniform, savitsky, savitsky_wagner };
 const char* to_string(PressureDistribution d);
 bool parse_pressure_distribution(const std::string& s, PressureDistribution& out);
 
-// The stone's attitude: free (the rigid body of spec §1.3) or held (a model reduction: the
+// The stone's attitude: free (the rigid body of model/README.md §1.3) or held (a model reduction: the
 // orientation and angular momentum stay as thrown, the torques are discarded, translation is free:
 // the high-spin limit in which Clanet, Hersen & Bocquet 2004 and Rosellini et al. 2005 analyse
 // skipping, where gyroscopic stiffness keeps the attack angle constant). The faces still move with

@@ -107,7 +107,7 @@ WaterLoads water_loads_from_depths(const Stone& stone, const Environment& env, c
     ++out.wet_triangles;
     out.wetted_area_m2 += c.area_m2;
     const Vec3 n = R * stone.face_normals_body[i];
-    const Vec3 r = c.centroid_m - s.position_m;  // lever arm (spec §1.4 step 3)
+    const Vec3 r = c.centroid_m - s.position_m;  // lever arm (model/README.md §1.4 step 3)
     if (paper) {
       // Lee & Baek 2013 Eq. 1 as printed (v + r × ω), Eq. 2 on every submerged face, Eq. 3 F × r.
       const Vec3 F = printed_face_force_N(env, n, s.velocity_m_s + r.cross(omega), c.area_m2);
@@ -141,7 +141,7 @@ WaterLoads water_loads(const Stone& stone, const Environment& env, const RigidSt
   const Mat3 R = s.orientation.normalized().toRotationMatrix();
   const Vec3 omega = R * (stone.inertia_body_inv * (R.transpose() * s.angular_momentum_kg_m2_s));
 
-  // Vertex positions and signed depths d_j = η(x_j, y_j) − z_j (spec §1.4 step 1). The buffers are
+  // Vertex positions and signed depths d_j = η(x_j, y_j) − z_j (model/README.md §1.4 step 1). The buffers are
   // reused between calls: no allocation in a step loop once they have grown.
   thread_local std::vector<Vec3> world;
   thread_local std::vector<double> depth;

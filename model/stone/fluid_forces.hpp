@@ -1,5 +1,5 @@
 #pragma once
-// Forces of the water and the air on the stone, as functions of a state (spec §1.4–1.6). Both the
+// Forces of the water and the air on the stone, as functions of a state (model/README.md §1.4–1.6). Both the
 // real-time stepper and the CVODE reference call these.
 #include <vector>
 
@@ -22,10 +22,10 @@ struct WaterLoads {
 };
 
 struct AirLoads {
-  Vec3 force_N = Vec3::Zero();  // torque is zero in both conventions (spec §1.6, Eq. 7)
+  Vec3 force_N = Vec3::Zero();  // torque is zero in both conventions (model/README.md §1.6, Eq. 7)
 };
 
-// Σ over triangles of the water force (spec §1.4; Lee & Baek 2013 Eq. 1–5) on the exactly clipped
+// Σ over triangles of the water force (model/README.md §1.4; Lee & Baek 2013 Eq. 1–5) on the exactly clipped
 // wetted part of each triangle.
 // physical: v_i = v + ω × r_i, only faces with u_i = v_i·n_i > 0 push, with env.water_law's
 //           pressure (model/stone/water_laws.hpp: F_i = −p_i S_i n_i) acting where
@@ -43,7 +43,7 @@ WaterLoads water_loads_from_depths(const Stone& stone, const Environment& env, c
                                    const Vec3& omega, const std::vector<Vec3>& world_m,
                                    const std::vector<double>& depth_m);
 
-// Disk air model (spec §1.5; Eq. 6): u = v·n_d;
+// Disk air model (model/README.md §1.5; Eq. 6): u = v·n_d;
 // physical: F = −C_a ρ_a u|u| S_d n_d;  paper: F = −C_a ρ_a u² S_d n_d (always along −n_d).
 AirLoads air_loads(const Stone& stone, const Environment& env, const RigidState& s);
 

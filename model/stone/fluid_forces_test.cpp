@@ -1,4 +1,4 @@
-// Water and air forces (spec §1.4–1.6): closed-form loads in both conventions. The sign of the
+// Water and air forces (model/README.md §1.4–1.6): closed-form loads in both conventions. The sign of the
 // fluid power over random states, per law and convention, is in water_laws_test.cpp.
 #include <boost/test/unit_test.hpp>
 

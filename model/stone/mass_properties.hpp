@@ -17,7 +17,7 @@ MassProperties mass_properties_from_density(const Mesh& mesh, double density_kg_
 MassProperties mass_properties_from_mass(const Mesh& mesh, double mass_kg);
 
 // The stone's principal frame as a proper rotation P (columns: body x, y, z in the mesh's frame):
-// body z is the principal axis of the LARGEST moment (a flat stone's normal, spec §1.1), body x the
+// body z is the principal axis of the LARGEST moment (a flat stone's normal, model/README.md §1.1), body x the
 // principal axis of the smallest, body y = z × x (right-handed), so Pᵀ I P is diagonal. Eigenvectors
 // have no sign and equal moments no direction; the choice:
 //  * body z points to the side the mesh calls up: positive along the mesh axis it is most nearly

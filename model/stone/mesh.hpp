@@ -1,8 +1,8 @@
 #pragma once
-// A stone is a closed, outward-oriented triangle mesh (spec §1.1). Two parametric families:
+// A stone is a closed, outward-oriented triangle mesh (model/README.md §1.1). Two parametric families:
 //   prism: regular N-gon prism, 4N triangles (N = 11 gives Lee & Baek's 44);
 //   lens:  biconvex stone, one rim ring and two apexes, 2N triangles (N = 22 gives 44).
-// And a sphere (Johnson & Reid's ricochet of spheres, spec §3): an icosphere, 20·4^n triangles.
+// And a sphere (Johnson & Reid's ricochet of spheres, model/README.md §3): an icosphere, 20·4^n triangles.
 // A mesh may also come from a Wavefront OBJ file (tools/io/obj_reader.hpp); check_mesh() says
 // whether it is closed and outward-oriented.
 #include <Eigen/Dense>  // Core + Geometry (cross products, quaternions)

@@ -1,4 +1,4 @@
-// Mesh construction, closure checks and mass properties against closed forms (spec §1.1–1.2).
+// Mesh construction, closure checks and mass properties against closed forms (model/README.md §1.1–1.2).
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -18,14 +18,14 @@ constexpr double kPi = std::numbers::pi;
 BOOST_AUTO_TEST_SUITE(stone_mesh)
 
 BOOST_AUTO_TEST_CASE(prism_and_lens_have_the_papers_44_triangles) {
-  // Oracle: spec §1.1 counts, 4N for the prism and 2N for the lens.
+  // Oracle: model/README.md §1.1 counts, 4N for the prism and 2N for the lens.
   BOOST_TEST(make_prism(0.03, 0.008, 11).triangles.size() == 44u);
   BOOST_TEST(make_lens(0.03, 0.008, 22).triangles.size() == 44u);
   BOOST_TEST(make_prism(0.03, 0.008, 11).vertices.size() == 24u);
 }
 
 BOOST_AUTO_TEST_CASE(prism_volume_is_exact) {
-  // Oracle: regular N-gon prism volume (N/2) R² sin(2π/N) h (spec §1.2).
+  // Oracle: regular N-gon prism volume (N/2) R² sin(2π/N) h (model/README.md §1.2).
   for (int n : {3, 5, 11, 64}) {
     const double R = 0.031, h = 0.0073;
     const MassProperties mp = mass_properties_from_density(make_prism(R, h, n), 1.0);
@@ -79,7 +79,7 @@ BOOST_AUTO_TEST_CASE(prism_inertia_tends_to_the_disk_as_n_grows) {
 }
 
 BOOST_AUTO_TEST_CASE(parametric_meshes_are_closed_and_outward) {
-  // Oracle: closure and orientation by construction (spec §1.1).
+  // Oracle: closure and orientation by construction (model/README.md §1.1).
   for (const Mesh& m : {make_prism(0.03, 0.008, 11), make_lens(0.03, 0.008, 22), make_prism(1, 1, 3)}) {
     const MeshCheck c = check_mesh(m);
     BOOST_TEST(c.ok, c.problem);

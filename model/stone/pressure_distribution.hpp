@@ -1,5 +1,5 @@
 #pragma once
-// Where a water law's pressure acts on the wetted region (spec §1.4, "Where the pressure acts").
+// Where a water law's pressure acts on the wetted region (model/README.md §1.4, "Where the pressure acts").
 // Uniform pressure on each clipped face puts the centre of pressure at the wetted centroid, near
 // the trailing edge; planing theory puts it near the spray root. The distributions weight the
 // pressure along ξ ∈ [0, 1], the position along the stone's horizontal velocity ĥ from the

@@ -16,7 +16,7 @@ StateDerivative rigid_body_rhs(const Stone& stone, const Environment& env, const
     if (loads) *loads = Loads{w, a, g};
     return d;
   }
-  d.dangular_momentum = w.torque_N_m;  // τ_air = 0 (spec §1.6)
+  d.dangular_momentum = w.torque_N_m;  // τ_air = 0 (model/README.md §1.6)
   const Vec3 omega = angular_velocity(stone, s);
   // dq/dt = ½ (0, ω) ⊗ q (world-frame ω, q body → world).
   const Quat wq(0, omega.x(), omega.y(), omega.z());

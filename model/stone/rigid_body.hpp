@@ -1,5 +1,5 @@
 #pragma once
-// The stone's equations of motion (spec §1.3):
+// The stone's equations of motion (model/README.md §1.3):
 //   m dv/dt = F_gravity + F_air + Σ F_i      dx/dt = v
 //   dL/dt   = τ_air + Σ τ_i                  dq/dt = ½ (0, ω) ⊗ q,  ω = R I_body⁻¹ Rᵀ L
 // as a function of a state, shared by every integrator. With env.attitude == held, dL/dt = 0 and
@@ -29,7 +29,7 @@ void rigid_body_rhs(const Stone& stone, const Environment& env, const double* y,
                     const WaterSurface* surface = nullptr);
 
 // Rate at which water and air do work on the stone: P = F·v + τ·ω with the total fluid force and
-// torque as applied (spec §1.6). Never positive in the physical convention.
+// torque as applied (model/README.md §1.6). Never positive in the physical convention.
 double fluid_power_W(const Stone& stone, const Environment& env, const RigidState& s,
                      const WaterSurface* surface = nullptr);
 

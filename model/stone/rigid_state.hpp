@@ -1,5 +1,5 @@
 #pragma once
-// The state of the rigid stone (spec §1.3): position and velocity of the centre of mass, the
+// The state of the rigid stone (model/README.md §1.3): position and velocity of the centre of mass, the
 // orientation (unit quaternion, body → world) and the angular momentum in the world frame.
 // As a flat vector (for CVODE and generic integrators): [x(3), v(3), q(w,x,y,z)(4), L(3)].
 #include <array>
@@ -27,7 +27,7 @@ using StateVector = std::array<double, kStateSize>;
 StateVector to_vector(const RigidState& s);
 RigidState from_vector(const double* y);  // the quaternion is taken as stored (not normalised)
 
-// ω = R I_body⁻¹ Rᵀ L (spec §1.3).
+// ω = R I_body⁻¹ Rᵀ L (model/README.md §1.3).
 Vec3 angular_velocity(const Stone& stone, const RigidState& s);
 // The same state with its body angular velocity given (L = R I ω_body).
 void set_body_angular_velocity(const Stone& stone, RigidState& s, const Vec3& omega_body_rad_s);

@@ -29,7 +29,7 @@ Stone make_stone(const Mesh& mesh, const MassProperties& mp, double disk_radius_
   }
   for (const auto& v : s.body_mesh.vertices) s.bounding_radius_m = std::max(s.bounding_radius_m, v.norm());
   s.disk_radius_m = disk_radius_m;
-  s.disk_area_m2 = std::numbers::pi * disk_radius_m * disk_radius_m;  // spec §1.5: S_d = π R²
+  s.disk_area_m2 = std::numbers::pi * disk_radius_m * disk_radius_m;  // model/README.md §1.5: S_d = π R²
   for (const auto& t : s.body_mesh.triangles) {
     const Vec3 cr = (s.body_mesh.vertices[t[1]] - s.body_mesh.vertices[t[0]])
                         .cross(s.body_mesh.vertices[t[2]] - s.body_mesh.vertices[t[0]]);

@@ -1,7 +1,7 @@
 #pragma once
 // A rigid stone ready for dynamics: its mesh in the body frame (origin at the centre of mass, axes
 // along the principal axes of inertia with body z the axis of the largest moment: a flat stone's
-// normal, spec §1.1), mass properties, and per-triangle data precomputed once.
+// normal, model/README.md §1.1), mass properties, and per-triangle data precomputed once.
 #include <Eigen/Geometry>
 #include <string>
 
@@ -19,7 +19,7 @@ struct Stone {
   Vec3 mesh_center_of_mass_m = Vec3::Zero();  // the centre of mass in the mesh's frame
   Mat3 inertia_body_kg_m2;        // = mass.inertia_kg_m2
   Mat3 inertia_body_inv;          // its inverse
-  double disk_radius_m = 0;       // air model's disk radius (spec §1.5)
+  double disk_radius_m = 0;       // air model's disk radius (model/README.md §1.5)
   double disk_area_m2 = 0;        // π R²
   double bounding_radius_m = 0;   // largest vertex distance from the centre of mass
   std::vector<Vec3> face_normals_body;  // outward unit normals

@@ -58,7 +58,7 @@ Stone stone_of(const Mesh& m) { return make_stone(m, mass_properties_from_densit
 BOOST_AUTO_TEST_SUITE(stone_frame)
 
 BOOST_AUTO_TEST_CASE(a_prism_built_on_its_axes_is_left_exactly_as_it_was) {
-  // Oracle: make_prism builds the body frame of spec §1.1 (I diagonal, I_zz largest); the frame
+  // Oracle: make_prism builds the body frame of model/README.md §1.1 (I diagonal, I_zz largest); the frame
   // must then be the identity and the body mesh the mesh minus its centre of mass, bit for bit, so
   // every result computed before principal frames existed is unchanged.
   for (int n : {3, 11, 32}) {

@@ -1,5 +1,5 @@
 #pragma once
-// A throw's initial conditions (spec §1.7): speed U, path angle β (velocity below horizontal),
+// A throw's initial conditions (model/README.md §1.7): speed U, path angle β (velocity below horizontal),
 // attack angle α (leading edge up: body x points to (cos α, 0, sin α)), spin Ω about body z
 // (rev/s, positive counter-clockwise seen from above), release height z0, optional wobble ω⊥
 // about body x. The throw is along +x.
@@ -18,7 +18,7 @@ struct ThrowParameters {
 
 RigidState initial_state(const Stone& stone, const ThrowParameters& p);
 
-// Angles of a state, for contact reports (spec §1.8):
+// Angles of a state, for contact reports (model/README.md §1.8):
 //   path angle: velocity below the horizontal, degrees;
 //   attack angle: inclination of the disk (body z) in the vertical plane of the horizontal velocity,
 //                 leading edge up positive, degrees (equals α of §1.7 at release);

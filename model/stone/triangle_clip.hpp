@@ -1,5 +1,5 @@
 #pragma once
-// The part of a triangle below the water surface (spec §1.4 step 2): the polygon where the
+// The part of a triangle below the water surface (model/README.md §1.4 step 2): the polygon where the
 // signed depth d = η − z is ≥ 0, cut along the edges where d, interpolated linearly, crosses
 // zero. Exact for still water (d is then linear over the triangle).
 #include "model/stone/mesh.hpp"

@@ -1,4 +1,4 @@
-// Clipping a triangle against the water surface (spec §1.4 step 2): exact areas and centroids.
+// Clipping a triangle against the water surface (model/README.md §1.4 step 2): exact areas and centroids.
 #include <boost/test/unit_test.hpp>
 
 #include <random>

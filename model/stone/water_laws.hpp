@@ -1,10 +1,10 @@
 #pragma once
 // The pressure of the water on one wetted triangle, one formula per law. water_loads()
-// (model/stone/fluid_forces.hpp) clips each triangle exactly (spec §1.4 steps 1–3), evaluates the
+// (model/stone/fluid_forces.hpp) clips each triangle exactly (model/README.md §1.4 steps 1–3), evaluates the
 // law with the face's normal velocity u_i = v_i·n_i and the stone's own speed U = |v|, and applies
 // F_i = −p_i S_i n_i (where the pressure acts: model/stone/pressure_distribution.hpp). Physical
 // convention: a face carries load only while it advances into the water, u_i > 0 (the leeward side
-// is ventilated, spec §1.4 step 4); every law is zero for u_i ≤ 0.
+// is ventilated, model/README.md §1.4 step 4); every law is zero for u_i ≤ 0.
 //
 // newtonian (Lee & Baek 2013, Eq. 2):            p_i = C_w ρ_w u_i²      published C_w = 1
 // planing (Rosellini, Hersen, Clanet & Bocquet, J. Fluid Mech. 543:137, 2005, eq. 4.2; Clanet,

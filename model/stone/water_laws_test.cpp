@@ -137,7 +137,7 @@ BOOST_AUTO_TEST_CASE(fluid_power_is_never_positive_for_any_law_and_distribution_
 }
 
 BOOST_AUTO_TEST_CASE(the_paper_convention_can_create_energy) {
-  // Oracle: spec §1.6 — with Eq. 1–3 as printed, P > 0 occurs (receding faces pushed, reversed
+  // Oracle: model/README.md §1.6 — with Eq. 1–3 as printed, P > 0 occurs (receding faces pushed, reversed
   // spin contribution and torque). Independent: the same states under every physical law never do (above).
   const Stone s = test_stone();
   Environment paper;
@@ -149,7 +149,7 @@ BOOST_AUTO_TEST_CASE(the_paper_convention_can_create_energy) {
 }
 
 BOOST_AUTO_TEST_CASE(the_paper_convention_keeps_the_printed_law_and_refuses_the_others) {
-  // Oracle: spec §1.6 — the paper convention is Eq. 2 as printed (−C_w ρ u² S n on every wet
+  // Oracle: model/README.md §1.6 — the paper convention is Eq. 2 as printed (−C_w ρ u² S n on every wet
   // face); environment_problem() refuses another law there and accepts every physical pairing.
   const Vec3 n(0, 0, -1), receding(5, 0, 1);
   Environment paper;

@@ -73,7 +73,7 @@ double pair_difference_norm(const HeightField& a, const HeightField& b) {
 BOOST_AUTO_TEST_SUITE(active_tiles_)
 
 BOOST_AUTO_TEST_CASE(exact_tiles_equal_the_full_field_at_every_step_with_a_moving_draught) {
-  // Oracle: spec §2.6 — with ε = 0 a tile is skipped only when it and its neighbours hold exact
+  // Oracle: model/README.md §2.6 — with ε = 0 a tile is skipped only when it and its neighbours hold exact
   // zeros, whose update is zero, so every value must be == the full field's, at every step of a
   // 700-step run with a draught crossing the domain, periodic and reflecting, on 1 and 2 threads.
   for (auto b : {Boundary::periodic, Boundary::reflecting})

@@ -1,5 +1,5 @@
 #pragma once
-// The stone's draught b ≥ 0 on the grid (spec §2.4), as the height field receives it: a box of
+// The stone's draught b ≥ 0 on the grid (model/README.md §2.4), as the height field receives it: a box of
 // grid points, so that a forced step costs O(box), not O(grid). Value (a, c) of the box belongs
 // to grid point (i0 + a, j0 + c); on a periodic field the index wraps, on other fields points
 // outside the grid are ignored (a stone beyond the rim does not touch the pond). Whoever fills a

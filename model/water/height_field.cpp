@@ -128,7 +128,7 @@ HeightField& HeightField::operator=(HeightField&&) noexcept = default;
 
 namespace {
 
-// Fills the ghost layer of a padded (nx+2)×(ny+2) array from its interior (spec §2.1 boundaries);
+// Fills the ghost layer of a padded (nx+2)×(ny+2) array from its interior (model/README.md §2.1 boundaries);
 // p points at the ghost corner (−1, −1), rows w apart.
 template <class Real>
 void fill_ghosts(Real* p, int nx, int ny, std::size_t w, Boundary boundary) {
@@ -166,7 +166,7 @@ inline int wrap(int i, int n) {
 }  // namespace
 
 void HeightField::build_forcing(const DraughtPatch& p) {
-  // C = d² L[b] (spec §2.4) on the box around the patch, b extended beyond the grid as the
+  // C = d² L[b] (model/README.md §2.4) on the box around the patch, b extended beyond the grid as the
   // boundary extends z: periodic images (accumulated when the box is wrapped onto the grid),
   // mirrored ghosts (reflecting: a point on the edge also feeds the cell it mirrors into) or zero
   // (fixed). Scatter form: b at grid point g feeds the target t = g' − δ for every offset δ of the
@@ -215,7 +215,7 @@ void HeightField::build_forcing(const DraughtPatch& p) {
 template <class Real>
 void HeightField::step_impl(std::vector<Real, CacheAligned<Real>>& curv, std::vector<Real, CacheAligned<Real>>& prevv,
                             const DraughtPatch* draught) {
-  // Lee & Baek 2013 Eq. 11 in the centred-damping form of spec §2.1, forced as in spec §2.4.
+  // Lee & Baek 2013 Eq. 11 in the centred-damping form of model/README.md §2.1, forced as in model/README.md §2.4.
   const double mdt = options_.damping_per_s * options_.dt_s;
   const double inv = 1.0 / (2 + mdt);
   const double s = 2 * options_.courant() * options_.courant() * inv;  // 2c²Δt²/d² /(2+μΔt)

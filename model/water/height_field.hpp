@@ -1,9 +1,9 @@
 #pragma once
-// The water surface as a height field (spec §2.1, Lee & Baek 2013 Eq. 8–11):
+// The water surface as a height field (model/README.md §2.1, Lee & Baek 2013 Eq. 8–11):
 //   z_tt = c² ∇²(z + b) − μ z_t  on nx × ny cells of size d,
 // stepped with the leapfrog of Lengyel's height field with centred damping
 //   z⁺ = (4 z − (2 − μΔt) z⁻ + 2 c²Δt² L[z + b]) / (2 + μΔt),
-// L any 3×3 stencil (model/water/stencil.hpp), b the stone's draught (spec §2.4; zero for free
+// L any 3×3 stencil (model/water/stencil.hpp), b the stone's draught (model/README.md §2.4; zero for free
 // water, model/water/draught_patch.hpp). Storage: two padded (nx+2)×(ny+2) arrays with a ghost
 // layer that the boundary condition fills before each step, so the interior update has no
 // branches and a step allocates nothing. z⁺ overwrites z⁻ in place (each cell reads only its own
@@ -14,7 +14,7 @@
 // free: on a shared 2-core machine they did not), in float64 or float32 storage (float32 steps
 // in an increment form that keeps a uniform level exact; verification/waves/precision_error.hpp
 // measures its error).
-// Active tiles (spec §2.6): StepMode::active_tiles steps only the tiles of tile_cells² cells that
+// Active tiles (model/README.md §2.6): StepMode::active_tiles steps only the tiles of tile_cells² cells that
 // hold |z| or |z − z⁻| above ε or have a neighbour that does (or lie under the draught). With
 // ε = 0 the result is bit-identical to StepMode::full (the update of a cell whose own and
 // neighbours' z and z⁻ are zero is zero). With ε > 0 the nonzero tiles that are not active are
@@ -92,7 +92,7 @@ struct HeightFieldOptions {
   bool is_valid(std::string* why = nullptr) const;
 };
 
-// What active-tile stepping did over a field's life (spec §2.6). In StepMode::full every tile is
+// What active-tile stepping did over a field's life (model/README.md §2.6). In StepMode::full every tile is
 // stepped at every step and nothing is dropped.
 struct ActiveTileSummary {
   long steps = 0;
@@ -128,7 +128,7 @@ class HeightField {
   void set_levels(const std::vector<double>& z, const std::vector<double>& z_previous);
 
   void step();                              // one free step (b = 0); no allocation
-  // One forced step with the draught b at the start of the step (spec §2.4): the free update plus
+  // One forced step with the draught b at the start of the step (model/README.md §2.4): the free update plus
   // 2c²Δt² L[b] / (2 + μΔt) on the box around b, O(box); an empty patch costs nothing. No
   // allocation once the scratch has grown to the largest patch seen.
   void step(const DraughtPatch& draught);
@@ -183,7 +183,7 @@ class HeightField {
   std::vector<double> forcing_;
   int fi0_ = 0, fj0_ = 0, fni_ = 0, fnj_ = 0;
 
-  // Active tiles (spec §2.6).
+  // Active tiles (model/README.md §2.6).
   int tiles_x_ = 0, tiles_y_ = 0;
   std::vector<unsigned char> holds_;      // max(|z|, |z − z⁻|) > ε in the tile
   std::vector<unsigned char> nonzero_;    // anything nonzero in the tile

@@ -109,7 +109,7 @@ template <class Real>
   if (m > old) std::memcpy(activity, &m, sizeof m);
 }
 
-// The update of spec §2.1 for one row segment. Two vector paths compute the same expression from
+// The update of model/README.md §2.1 for one row segment. Two vector paths compute the same expression from
 // the same operands, so they round alike: where the segment, z⁻ and the row stride are aligned to
 // a vector (the field's interior rows, tiles of a multiple of 8 cells), each row's vectors are
 // loaded aligned once and the ±1 neighbours are shuffled out of adjacent vectors (an unaligned

@@ -1,5 +1,5 @@
 #pragma once
-// The inner loop of the height field (spec §2.1): one row segment of the damped leapfrog
+// The inner loop of the height field (model/README.md §2.1): one row segment of the damped leapfrog
 //   z⁺ = (4z − (2 − μΔt) z⁻ + 2σ² d²L[z]) / (2 + μΔt),
 // with s = 2σ²/(2 + μΔt) and the 3×3 stencil of model/water/stencil.hpp, evaluated
 //   float64: z⁺ = wc z + wo Σ_orth + wd Σ_diag − wp z⁻ (wc = 4/(2 + μΔt) + s·centre),
@@ -18,7 +18,7 @@
 // best the CPU has (GCC target_clones): no -march flag, so the binary runs on any x86-64. The
 // file is compiled with -ffp-contract=off and the vector body and the scalar tail evaluate the
 // same expression in the same order, so every cell gets the same bits whichever variant, vector
-// lane or row segment computes it (the active-tile mode relies on that: spec §2.6, ε = 0).
+// lane or row segment computes it (the active-tile mode relies on that: model/README.md §2.6, ε = 0).
 #include <cmath>
 #include <cstddef>
 
@@ -51,7 +51,7 @@ void leapfrog_block(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t 
 
 // The update of one row segment of n cells that consists of consecutive chunks of `chunk` cells
 // (tiles; the last may be shorter), raising activity[q] to the largest max(|z⁺|, |z⁺ − z|) over
-// chunk q's cells (spec §2.6). The values are compared as bit patterns, in which NaN > ∞ > any
+// chunk q's cells (model/README.md §2.6). The values are compared as bit patterns, in which NaN > ∞ > any
 // finite value, so a blown-up chunk reports NaN and is never taken for a quiet one.
 void leapfrog_row_chunks(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<double>& c,
                          bool diagonal, std::ptrdiff_t chunk, double* activity);

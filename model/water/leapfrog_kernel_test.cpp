@@ -37,7 +37,7 @@ template <class Real>
 void check_segments_round_alike(bool diagonal) {
   // Oracle: the same row computed in one call (vector body + tail) and cell by cell (tail only)
   // must agree to the bit, and so must the plain block kernel — what active tiles rely on for
-  // ε = 0 (spec §2.6).
+  // ε = 0 (model/README.md §2.6).
   const std::ptrdiff_t n = 77, w = 96;  // n not a multiple of any vector width
   const auto c = weights<Real>(diagonal);
   const auto z = random_values<Real>(3 * w, 1);

@@ -1,5 +1,5 @@
 #pragma once
-// How much the free damped leapfrog (spec §2.1) can amplify a perturbation: on a mode of symbol s
+// How much the free damped leapfrog (model/README.md §2.1) can amplify a perturbation: on a mode of symbol s
 // the step is (z_{n+1}, z_n) = M (z_n, z_{n−1}),
 //   M = [[(4 + 2σ² s)/(2 + μΔt), −(2 − μΔt)/(2 + μΔt)], [1, 0]],
 // and K_N = max over the grid's modes and 0 ≤ p ≤ N of ‖Mᵖ‖₂ bounds the growth of the 2-norm of

@@ -28,7 +28,7 @@ double leapfrog_courant_limit(const Stencil& stencil) {
 }
 
 Stencil stencil_family(double gamma, std::string name) {
-  // spec §2.2: weights centre −4(1 − γ) − 2γ, orth 1 − γ, diag γ/2.
+  // model/README.md §2.2: weights centre −4(1 − γ) − 2γ, orth 1 − γ, diag γ/2.
   return Stencil{std::move(name), -4 * (1 - gamma) - 2 * gamma, 1 - gamma, gamma / 2};
 }
 

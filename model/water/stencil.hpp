@@ -1,6 +1,6 @@
 #pragma once
 // A 3×3 Laplacian stencil as data: L[z] = (1/d²)[centre·z + orth·Σ_orth + diag·Σ_diag]
-// (spec §2.2), Σ_orth the four edge neighbours, Σ_diag the four corner neighbours. The four
+// (model/README.md §2.2), Σ_orth the four edge neighbours, Σ_diag the four corner neighbours. The four
 // named stencils of the spec are built from their weights; a case file may define its own.
 #include <string>
 #include <vector>
@@ -22,15 +22,15 @@ struct Stencil {
   double min_symbol() const;
 };
 
-// The largest σ = cΔt/d for which the damped leapfrog of spec §2.1 is stable with this stencil:
+// The largest σ = cΔt/d for which the damped leapfrog of model/README.md §2.1 is stable with this stencil:
 // a mode is multiplied per step by a root g of (2 + μΔt) g² − (4 + 2σ² s) g + (2 − μΔt) = 0, and
 // both roots lie in the unit disc iff −4 ≤ σ² s ≤ 0 (Schur–Cohn), whatever μΔt ∈ [0, 2): so
-// σ_max = 2/√(−min s), independent of damping (spec §2.2). 0 if some mode has s > 0 (it grows for
+// σ_max = 2/√(−min s), independent of damping (model/README.md §2.2). 0 if some mode has s > 0 (it grows for
 // every σ > 0). Five-point 1/√2, γ = 1/3 √3/2, γ = 1/2 1; verification/waves/stability.hpp finds
 // the same limits by bisection on the amplification factors.
 double leapfrog_courant_limit(const Stencil& stencil);
 
-// The family of spec §2.2: (1 − γ)(Σ_orth − 4z) + (γ/2)(Σ_diag − 4z).
+// The family of model/README.md §2.2: (1 − γ)(Σ_orth − 4z) + (γ/2)(Σ_diag − 4z).
 Stencil stencil_family(double gamma, std::string name);
 
 // "five_point" (γ = 0, Figure 4a), "nine_point_half" (γ = 1/2, half of Eq. 10),

@@ -12,7 +12,7 @@ constexpr double kRoundoff = 1e-14;  // a few ulps of O(1) weights
 BOOST_AUTO_TEST_SUITE(stencil_)
 
 BOOST_AUTO_TEST_CASE(named_stencils_have_the_weights_of_the_spec_table) {
-  // Oracle: spec §2.2 table (centre, orth, diag) × 1/d².
+  // Oracle: model/README.md §2.2 table (centre, orth, diag) × 1/d².
   struct Row { const char* name; double c, o, d; };
   for (Row r : {Row{"five_point", -4, 1, 0}, Row{"nine_point_half", -3, 0.5, 0.25},
                 Row{"nine_point_isotropic", -10.0 / 3, 2.0 / 3, 1.0 / 6}, Row{"paper_eq11", -10.0 / 3, 0.5, 0.25}}) {
@@ -35,7 +35,7 @@ BOOST_AUTO_TEST_CASE(symbol_equals_the_stencil_applied_to_a_fourier_mode) {
 }
 
 BOOST_AUTO_TEST_CASE(courant_limits_are_the_spec_values) {
-  // Oracle: spec §2.2 stability limits 1/√2 (5-point), √3/2 (γ = 1/3), 1 (γ = 1/2), found there by
+  // Oracle: model/README.md §2.2 stability limits 1/√2 (5-point), √3/2 (γ = 1/3), 1 (γ = 1/2), found there by
   // von Neumann analysis; paper_eq11's most negative symbol is −13/3 at (0, π), so 2/√(13/3).
   BOOST_TEST(std::abs(leapfrog_courant_limit(named_stencil("five_point")) - 1 / std::sqrt(2.0)) <= kRoundoff);
   BOOST_TEST(std::abs(leapfrog_courant_limit(named_stencil("nine_point_isotropic")) - std::sqrt(3.0) / 2) <= kRoundoff);

@@ -285,7 +285,7 @@ void scene_part(SectionWriter& w, const std::string& key, const Record& c) {
     w.text("The waves are not compared: " + wv.text("not_compared") + ".");
   } else {
     w.text("The waves at " + fmt(wv.number("t_s"), 4) + " s (" + fmt(wv.number("steps")) +
-           " water steps) against the forced spectral reference (spec §2.5) driven by the draught of the CVODE "
+           " water steps) against the forced spectral reference (model/README.md §2.5) driven by the draught of the CVODE "
            "trajectory against the flat surface, evaluated on " + fmt(wv.number("quadrature_intervals"), 9) +
            " sub-intervals of " + fmt(s.number("quadrature_nodes")) + " Gauss–Legendre nodes each. Largest differences over the grid (the largest "
            "height of the reference is " + fmt(1e3 * wv.number("amplitude_m"), 3) + " mm):");
@@ -367,7 +367,7 @@ RenderedReport render_captures_report(const StoredReport& s) {
                        index.text("convention") + " convention)."
                  : std::string("not thrown (the solvers were switched off).")) +
       " A Wii Remote stamps nothing itself: the host stamps its reports, its accelerometer clips on real throws and its "
-      "MotionPlus changes range during fast swings (spec §4). Each section says how much of the throw its recording "
+      "MotionPlus changes range during fast swings (model/README.md §4). Each section says how much of the throw its recording "
       "still pins down.\n\n";
   append(out, index_section(index, secs));
   for (const auto& key : index.strings("captures")) {

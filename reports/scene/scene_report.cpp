@@ -57,9 +57,9 @@ std::string findings(const Record& secs) {
 SectionOutput coupling_section(const Record& c) {
   SectionWriter w(c, "1. What the stone's waves change: two-way against one-way against still water");
   w.text("Each shipped scene is run three times with the same stone, throw and frames: **two-way** (the stone's draught "
-         "forces the water, spec §2.4), **one-way** (the stone is clipped against the field, which it does not disturb: on a "
+         "forces the water, model/README.md §2.4), **one-way** (the stone is clipped against the field, which it does not disturb: on a "
          "still pond the field stays flat) and **still water** (no field at all). The contacts are compared in order (a "
-         "contact is a maximal interval with some triangle wet, spec §1.8); a change of the contact times beyond " +
+         "contact is a maximal interval with some triangle wet, model/README.md §1.8); a change of the contact times beyond " +
          us(c.number("time_tolerance_s")) + " counts as visible.");
   for (const auto& name : c.strings("cases")) {
     const Record& r = c.at(name);
@@ -120,7 +120,7 @@ SectionOutput stability_section(const Record& s) {
   SectionWriter w(s, "2. The coupled stability limit, shown on either side");
   w.text("Under a floating stone the draught follows the water with unit gain (b = (z − s)⁺ under a flat bottom at s), so the "
          "forced step acts there like a Laplacian of twice the strength: the Courant number under the footprint is √2 σ, and the "
-         "two-way step is stable only for σ ≤ the free limit / √2 (spec §2.4; " + code(s.text("stencil")) + ": free limit " +
+         "two-way step is stable only for σ ≤ the free limit / √2 (model/README.md §2.4; " + code(s.text("stencil")) + ": free limit " +
          fmt(s.number("free_limit"), 4) + ", coupled " + fmt(s.number("coupled_limit"), 4) + "). A scene above it is **refused** "
          "with a one-line error at `water.dt_s` (the stone cannot be lagged without changing the model's closed forms). Shown "
          "here: an 11-gon stone held on a periodic " + fmt(s.number("n")) + "² pond, started in its closed-form equilibrium plus "
@@ -144,7 +144,7 @@ SectionOutput convergence_section(const Record& c) {
          " m wide moves at " + fmt(c.number("draught_speed_m_s"), 3) + " m/s under a smooth envelope across a periodic " +
          fmt(c.number("length_m")) + " m square at rest (c = " + fmt(c.number("wave_speed_m_s"), 3) + " m/s, μ = " +
          fmt(c.number("damping_per_s"), 3) + " /s); the surface at t = " + fmt(c.number("t_end_s"), 3) +
-         " s is compared with the forced spectral reference (spec §2.5: each Fourier mode exact, the Duhamel integral by "
+         " s is compared with the forced spectral reference (model/README.md §2.5: each Fourier mode exact, the Duhamel integral by "
          "Gauss–Legendre quadrature). As for the free field, the error is split: space (the stencil's exact semi-discrete forced "
          "solution against the continuum's), time (the leapfrog against the semi-discrete solution on a " +
          fmt(c.number("time_grid")) + "² grid) and both (σ = " + fmt(c.number("both_sigma"), 3) + "). An order is granted when its "
@@ -241,7 +241,7 @@ SectionOutput shortcuts_section(const Record& s) {
   for (const auto& key : s.strings("shortcuts")) w.verdict(s.at(key).text("what"), s.at(key).at("verdict"));
   w.end_list();
   w.lead("How to read it.",
-         "A negative saving is a cost. ε = 0 steps only tiles that hold anything, which is exact (spec §2.6) but pays the tiles' "
+         "A negative saving is a cost. ε = 0 steps only tiles that hold anything, which is exact (model/README.md §2.6) but pays the tiles' "
          "bookkeeping; ε > 0 drops what the quiet tiles held. Leaving the field out entirely is exact only for a case that asks "
          "for bounces on still water.");
   return w.finish();
@@ -373,7 +373,7 @@ RenderedReport render_scene_report(const StoredReport& stored) {
   const Record& settings = secs.at("settings");
   m << "# The seed's scene, whole: the stone makes waves\n\n"
     << "Lee & Baek's system is a stone skipping over a 500 × 500 height field whose bounces make waves, at more than 90 frames "
-       "per second. This report runs that system — the real-time stone on a live, two-way coupled field (spec §2.4) — on the "
+       "per second. This report runs that system — the real-time stone on a live, two-way coupled field (model/README.md §2.4) — on the "
        "shipped scenes (";
   bool first = true;
   for (const auto& name : settings.strings("cases")) {
@@ -384,7 +384,7 @@ RenderedReport render_scene_report(const StoredReport& stored) {
        "right, how much each shortcut costs in accuracy, and how fast it runs.\n\n"
     << "**What the model is for.** The stone's draught acts on the water as a pressure patch: z_tt = c²∇²(z + b) − μ z_t. "
        "Measured against z, b makes a stone held still settle into a state where the surface under it sits halfway between its "
-       "bottom and the far water (spec §2.4's closed form), not at its bottom as a real resting plate's would. The model is "
+       "bottom and the far water (model/README.md §2.4's closed form), not at its bottom as a real resting plate's would. The model is "
        "therefore meant for contacts much shorter than footprint/c — a skipping stone's — where the water has no time to settle; "
        "section 1 gives each scene's contact time against footprint/c.\n\n";
   out.markdown = m.str() + findings(secs);

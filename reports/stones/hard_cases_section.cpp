@@ -31,7 +31,7 @@ SectionOutput hard_cases_section(const Record& c) {
              "over it: tunnelling) or report one the reference does not have; is the bounce count the same; and does the "
              "stone gain energy over a contact (more than " + fmt(c.number("energy_tolerance_fraction"), 2) +
              " of its release kinetic energy). In the `physical` convention the water and the air can only take energy "
-             "out (spec §1.6), so a gain there is a numerical artefact; in the `paper` convention the model itself can "
+             "out (model/README.md §1.6), so a gain there is a numerical artefact; in the `paper` convention the model itself can "
              "create energy.");
   MarkdownTable summary({"case", "reference (CVODE)", "real-time, case steps", "real-time, largest single step that is ok",
                          "first thing to go wrong as h grows"});

@@ -30,7 +30,7 @@ std::string count_text(double c) { return c < 0 ? std::string("failed") : fmt(c)
 SectionOutput sweeps_section(const Record& c, const Record& fig9) {
   SectionWriter w(c, "3. Bounce-count curves");
   w.lead("What is measured.",
-         "The bounce count (contacts that end with the stone leaving the water, spec §1.8) of one base throw as one "
+         "The bounce count (contacts that end with the stone leaving the water, model/README.md §1.8) of one base throw as one "
          "parameter varies, from the CVODE reference and from the real-time stepper with the case's settings, in both "
          "conventions (`physical`: the corrected force laws; `paper`: Lee & Baek's Eq. 1–3 and 6 as printed). Where the "
          "count changes between two grid values, the parameter is bisected until the bracket is narrower than the "

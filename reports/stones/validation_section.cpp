@@ -1,4 +1,4 @@
-// Section 5 of the stones report: each water law beside experiments and analytic models (spec §3),
+// Section 5 of the stones report: each water law beside experiments and analytic models (model/README.md §3),
 // and why the two conventions disagree — formatted from the stored record. The measured values
 // (and the measured curve) are stored with the findings (they come from the study file), never
 // typed in here.
@@ -129,7 +129,7 @@ PlotSeries attack_angle_series(const Record& history, const std::string& title, 
 }
 
 SectionOutput validation_section(const Record& v) {
-  SectionWriter w(v, "5. Validation against experiments (spec §3)");
+  SectionWriter w(v, "5. Validation against experiments (model/README.md §3)");
   const Record& vars = v.at("variants");
   std::string titles;
   for (const auto& key : vars.strings("keys")) titles += (titles.empty() ? "" : ", ") + code(vars.at(key).text("title"));
@@ -155,7 +155,7 @@ SectionOutput validation_section(const Record& v) {
              "° is called held (the verdicts `attack_change`, `roll_change`).");
   const Record& m = v.at("measured");
   auto rows_table = [&](const std::string& kind, bool beside_models_only) {
-    std::vector<std::string> head{"quantity", "measured", "expected (spec §3)", "source"};
+    std::vector<std::string> head{"quantity", "measured", "expected (model/README.md §3)", "source"};
     std::vector<std::string> cols;
     for (const auto& key : vars.strings("keys"))
       if (!beside_models_only || vars.at(key).flag("beside_models") || vars.at(key).text("convention") == "paper") {

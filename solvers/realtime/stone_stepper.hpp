@@ -6,11 +6,11 @@
 //   semi_implicit_euler (1)  v, L from the forces at the start of the step, then x with the new v
 //                            and q rotated by the new ω: the usual game-engine integrator and
 //                            the default.
-//   midpoint (2), rk4 (4)    explicit Runge–Kutta on the flat state (spec §1.3 right-hand side).
+//   midpoint (2), rk4 (4)    explicit Runge–Kutta on the flat state (model/README.md §1.3 right-hand side).
 // The step switches to contact_dt_s when the lowest vertex could reach the surface within one
 // flight step (clearance < (|v| + |ω| r_bound) dt_s), so a flight step cannot carry it deep.
 //
-// Contacts (spec §1.8) are located inside the step by linear interpolation of each vertex's depth
+// Contacts (model/README.md §1.8) are located inside the step by linear interpolation of each vertex's depth
 // between the step's ends (an O(dt²) location): a contact starts where the first vertex goes
 // under (the first-touch point is that vertex there), ends where the last comes out, and the stone
 // sinks where the last goes under; the state there is interpolated (position, velocity, angular

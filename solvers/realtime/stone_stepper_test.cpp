@@ -383,7 +383,7 @@ BOOST_AUTO_TEST_CASE(contacts_that_the_water_starts_and_ends_are_logged_when_the
 }
 
 BOOST_AUTO_TEST_CASE(the_contact_log_refuses_a_start_while_open_and_an_end_while_closed) {
-  // Oracle: spec §1.8 — contacts are disjoint intervals, each started once and ended once. A
+  // Oracle: model/README.md §1.8 — contacts are disjoint intervals, each started once and ended once. A
   // second start while a contact is open, or an end with none open, is refused and leaves the
   // list as it was.
   ContactLog log;

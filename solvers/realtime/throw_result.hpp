@@ -1,5 +1,5 @@
 #pragma once
-// What a solver returns for one throw (spec §1.8): the sampled trajectory, the contacts (a
+// What a solver returns for one throw (model/README.md §1.8): the sampled trajectory, the contacts (a
 // contact is a maximal interval during which some S_i > 0; a bounce is the end of a contact
 // followed by free flight), why the throw ended, and what it cost. Both the real-time stepper and
 // the CVODE reference fill this struct, so every report compares like with like.
@@ -68,7 +68,7 @@ struct ThrowResult {
 };
 
 // Builds the contact list as a solver reports transitions; shared by both solvers. Contacts are
-// disjoint intervals (spec §1.8): a start while a contact is open, or an end while none is, is
+// disjoint intervals (model/README.md §1.8): a start while a contact is open, or an end while none is, is
 // refused (the list is left as it was) and said so in the returned status.
 class ContactLog {
  public:

@@ -1,5 +1,5 @@
 // Per-component absolute tolerances (solvers/reference/absolute_tolerance.hpp) against the
-// closed forms of a regular N-gon prism (spec §1.2): ℓ = √(R² + h²/4), I_min = I_xx =
+// closed forms of a regular N-gon prism (model/README.md §1.2): ℓ = √(R² + h²/4), I_min = I_xx =
 // m (R² (1 + 2 cos²(π/N))/12 + h²/12), V = |v₀| + |ω₀| ℓ (or √(g ℓ)).
 #include <boost/test/unit_test.hpp>
 

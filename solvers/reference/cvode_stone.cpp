@@ -1,6 +1,6 @@
 #include "solvers/reference/cvode_stone.hpp"
 
-// The problem (spec §1.3): y = [x, v, q, L] ∈ R¹³,
+// The problem (model/README.md §1.3): y = [x, v, q, L] ∈ R¹³,
 //   dx/dt = v,  m dv/dt = F_gravity + F_air + Σ F_i,  dq/dt = ½ (0, ω) ⊗ q,  dL/dt = Σ τ_i,
 // with the right-hand side of model/stone/rigid_body.hpp (still water). Root finding
 // (solvers/reference/stone_events.hpp) locates every vertex crossing (and, with
@@ -368,7 +368,7 @@ bool ReferenceSolve::handle_root(double t) {
   sample(t, s);
   if (c.submerged_before > 0 && c.submerged_after == 0) log_.end(t, s, energy(s), true);
   if (c.submerged_after == nv) {
-    // Completely under water: nothing here lifts a submerged stone (spec §1.8).
+    // Completely under water: nothing here lifts a submerged stone (model/README.md §1.8).
     log_.end(t, s, energy(s), false);
     r_.outcome = Outcome::sank;
     std::ostringstream m;

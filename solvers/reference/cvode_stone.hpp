@@ -1,5 +1,5 @@
 #pragma once
-// The reference solution of the stone's equations of motion (spec §1.3–1.6): the same right-hand
+// The reference solution of the stone's equations of motion (model/README.md §1.3–1.6): the same right-hand
 // side as the real-time stepper (model/stone/rigid_body.hpp, every water law of
 // model/stone/water_laws.hpp), integrated by SUNDIALS CVODE with tight tolerances. The right-hand
 // side is only piecewise smooth, so CVODE's root finding locates every vertex crossing the surface

@@ -26,7 +26,7 @@ Stone prism_stone(double radius_m, double thickness_m, int segments, double dens
 }
 
 // The typical throw of the benchmarks: 3 cm prism, 6 mm, 8 m/s, β = α = 10°, 10 rev/s, 10 cm.
-// In the paper convention it bounces twice (spec §3: the reversed torque holds the attitude).
+// In the paper convention it bounces twice (model/README.md §3: the reversed torque holds the attitude).
 const Stone& typical_stone() {
   static const Stone s = prism_stone(0.03, 0.006, 11, 2500);
   return s;
@@ -44,7 +44,7 @@ RigidState typical_throw() {
 // Exact solution with no fluid at all: the centre of mass falls ballistically and the stone, a
 // symmetric top (I_xx = I_yy = I1, I_zz = I3 in the body frame), precesses torque-free:
 //   R(t) = exp(t [L/I1]×) R0 exp(t μ [e3]×),   μ = (1/I3 − 1/I1) L·n,  L and L·n constant,
-// since then dR/dt = [L/I1 + μ R e3]× R = [ω]× R with ω = I_world⁻¹ L (spec §1.3).
+// since then dR/dt = [L/I1 + μ R e3]× R = [ω]× R with ω = I_world⁻¹ L (model/README.md §1.3).
 class BallisticSymmetricTop {
  public:
   BallisticSymmetricTop(const Stone& s, const RigidState& s0, double g) : s0_(s0), g_(g) {

@@ -60,7 +60,7 @@ double StoneEvents::velocity_scale(const RigidState& s, const Vec3& omega) const
   return s.velocity_m_s.norm() + omega.norm() * stone_.bounding_radius_m;
 }
 
-// u_i = v_i·n_i with v_i = v + ω × r_i at the centroid of the submerged part (spec §1.4 steps 2–4,
+// u_i = v_i·n_i with v_i = v + ω × r_i at the centroid of the submerged part (model/README.md §1.4 steps 2–4,
 // physical Eq. 1), exactly as the force law evaluates it.
 double StoneEvents::face_normal_velocity(int i, const RigidState& s, const Mat3& R, const Vec3& omega) const {
   const auto& t = stone_.body_mesh.triangles[i];
@@ -93,7 +93,7 @@ double StoneEvents::face_normal_velocity(int i, const RigidState& s, const Mat3&
 }
 
 double StoneEvents::air_normal_velocity(const RigidState& s, const Mat3& R) const {
-  return s.velocity_m_s.dot(R.col(2));  // spec §1.5: u = v·n_d, n_d = body z in world
+  return s.velocity_m_s.dot(R.col(2));  // model/README.md §1.5: u = v·n_d, n_d = body z in world
 }
 
 bool StoneEvents::evaluate(const double* y, double* g) const {

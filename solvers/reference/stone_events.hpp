@@ -3,7 +3,7 @@
 // (still water η = 0 only: a moving height field would make every root function time-dependent
 // through the surface, which this reference does not support).
 //
-// The right-hand side of spec §1.3–1.6 is smooth except where
+// The right-hand side of model/README.md §1.3–1.6 is smooth except where
 //   (a) a vertex crosses the surface: the clipped polygons change shape (§1.4 step 2). For a
 //       slanted face the wetted area is C¹ in the state (piecewise quadratic in the depths, its
 //       second derivative jumps), so the force is C¹ there; for a face lying in the surface (a flat
@@ -22,7 +22,7 @@
 //       air force −C_a ρ_a u|u| S_d n_d (§1.5) is C¹ there. In the paper convention u² is smooth.
 // Between events the set of submerged vertices is fixed, so each live root function is smooth.
 // (b) and (c) are located only with RestartStrategy::every_event; (a) always (contacts and sinking
-// are defined by it, spec §1.8). EventChange::flat_faces says where (a) is a jump of the force.
+// are defined by it, model/README.md §1.8). EventChange::flat_faces says where (a) is a jump of the force.
 //
 #include <vector>
 

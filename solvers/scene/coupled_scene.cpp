@@ -69,7 +69,7 @@ bool SceneOptions::valid(std::string* why) const {
       std::ostringstream m;
       m.precision(4);
       m << "σ = cΔt/d = " << sigma << " is above the coupled stability limit " << limit << " of "
-        << water->field.stencil.name << " under the stone (spec §2.4: free limit/√2); take dt_s ≤ "
+        << water->field.stencil.name << " under the stone (model/README.md §2.4: free limit/√2); take dt_s ≤ "
         << limit * water->field.cell_m / water->field.wave_speed_m_s << " s";
       return fail(m.str());
     }

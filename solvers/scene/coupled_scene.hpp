@@ -1,10 +1,10 @@
 #pragma once
-// The seed's system, whole (Lee & Baek 2013 §3–4; spec §2.4, issue 9): a stone stepped by the
+// The seed's system, whole (Lee & Baek 2013 §3–4; model/README.md §2.4, issue 9): a stone stepped by the
 // real-time stepper (solvers/realtime/stone_stepper.hpp) on a live height field
 // (model/water/height_field.hpp), run frame by frame for a set duration whether or not the stone
 // has sunk, with what each part cost.
 //
-// Coupling (spec §2.4):
+// Coupling (model/README.md §2.4):
 //   none     no field at all: the stone on still water (η = 0). The cheapest scene, and the
 //            throw is the still-water throw bit for bit.
 //   one_way  the stone is clipped against the field's surface (bilinear between grid points,
@@ -17,7 +17,7 @@
 // K samples per step, K = 1 the spec's point sample at t_n). Each sample is taken at the start of
 // the first stone step at or after its time: within one contact step (the stepper steps finely
 // whenever the stone is in or near the water) of its node.
-// Stability (spec §2.4): under a floating stone b follows z with unit gain, so the two-way step
+// Stability (model/README.md §2.4): under a floating stone b follows z with unit gain, so the two-way step
 // is stable only for σ = cΔt/d ≤ coupled_courant_limit(stencil) = the free limit / √2. A scene
 // above it is refused (SceneOptions::valid), not run: the growth there is geometric from the
 // first steps (model/coupling/two_way_test.cpp: ×1.55 per step 3 % above the limit).
@@ -102,7 +102,7 @@ struct FrameCost {
 
 // A run of consecutive draught samples with the stone in the water (two_way): how much it pressed
 // on the water and how far the water under it had sunk — what makes two-way coupling differ from
-// one-way (spec §2.4: the depression forms on the time scale footprint/c).
+// one-way (model/README.md §2.4: the depression forms on the time scale footprint/c).
 struct DraughtEpisode {
   double start_s = 0, end_s = 0;     // first and last sample in the water
   double max_volume_m3 = 0;          // largest Σ b d² of a sample

@@ -1,4 +1,4 @@
-// The coupled scene against the spec's closed forms and identities (spec §2.4): still water and
+// The coupled scene against the spec's closed forms and identities (model/README.md §2.4): still water and
 // c = 0 equal to the still-water throw bit for bit; a stone held still on the water settles the
 // field to the held-plate closed form; water volume unchanged by a stone skipping over a walled
 // pond; active tiles at ε = 0 bit-identical to the full field; the water's step count and the
@@ -63,7 +63,7 @@ BOOST_AUTO_TEST_CASE(no_field_is_the_still_water_throw_bit_for_bit) {
 }
 
 BOOST_AUTO_TEST_CASE(two_way_with_c_zero_is_one_way_on_still_water_bit_for_bit) {
-  // Oracle: spec §2.4 — with c = 0 the forced leapfrog adds 2c²Δt² L[z + b] = 0, so still water
+  // Oracle: model/README.md §2.4 — with c = 0 the forced leapfrog adds 2c²Δt² L[z + b] = 0, so still water
   // stays exactly still while the stone presses on it: the two-way throw must equal the one-way
   // throw on still water, and that one the still-water throw, bit for bit. The draught must really
   // have been sampled under the stone, so the identity is not vacuous.
@@ -78,7 +78,7 @@ BOOST_AUTO_TEST_CASE(two_way_with_c_zero_is_one_way_on_still_water_bit_for_bit) 
 }
 
 BOOST_AUTO_TEST_CASE(with_c_above_zero_the_stone_makes_waves_and_no_water) {
-  // Oracle: spec §2.4 (volume) — on a walled pond with a consistent stencil Σ L[z + b] = 0 and the
+  // Oracle: model/README.md §2.4 (volume) — on a walled pond with a consistent stencil Σ L[z + b] = 0 and the
   // damped leapfrog keeps Σ z, so Σ z d² stays 0 to round-off (1e-12 of the displaced volume
   // Σ |z| d², as in model/coupling/two_way_test.cpp) while the stone, sinking on its first
   // contact, leaves waves; and the two-way throw is no longer the one-way one's bit for bit
@@ -99,7 +99,7 @@ BOOST_AUTO_TEST_CASE(with_c_above_zero_the_stone_makes_waves_and_no_water) {
 }
 
 BOOST_AUTO_TEST_CASE(a_stone_held_on_the_water_settles_the_field_to_the_closed_form) {
-  // Oracle: spec §2.4 (a plate held still) — with no gravity and no motion every face has
+  // Oracle: model/README.md §2.4 (a plate held still) — with no gravity and no motion every face has
   // u = v·n = 0, so the physical convention's water force is exactly 0 and the stone stays where
   // it is: bottom at s = −1 cm on a periodic 1 m² field, K grid points under it. The field settles
   // to z = C off the plate and (C + s)/2 under it, C = −K s/(2N − K). μ = 12/s damps every mode at
@@ -151,7 +151,7 @@ BOOST_AUTO_TEST_CASE(a_stone_held_on_the_water_settles_the_field_to_the_closed_f
 }
 
 BOOST_AUTO_TEST_CASE(active_tiles_at_zero_epsilon_give_the_same_scene_bit_for_bit) {
-  // Oracle: spec §2.6 — a tile whose cells and neighbours are all zero stays zero, so stepping only
+  // Oracle: model/README.md §2.6 — a tile whose cells and neighbours are all zero stays zero, so stepping only
   // active tiles with ε = 0 is the full field exactly: the same throw and the same surface at
   // every frame.
   SceneOptions full = skipping_scene(Coupling::two_way), tiled = full;
@@ -195,7 +195,7 @@ BOOST_AUTO_TEST_CASE(water_steps_and_frames_follow_from_the_clocks) {
 }
 
 BOOST_AUTO_TEST_CASE(a_two_way_scene_above_the_coupled_limit_is_refused) {
-  // Oracle: spec §2.4 — the coupled limit is the free limit / √2 (√3/2 / √2 = 0.612 for the
+  // Oracle: model/README.md §2.4 — the coupled limit is the free limit / √2 (√3/2 / √2 = 0.612 for the
   // isotropic 9-point stencil): σ = 0.65 is refused for two-way coupling, with the limit named,
   // and accepted for one-way coupling (below the free limit 0.866).
   SceneOptions o = skipping_scene(Coupling::two_way, 1.0);

@@ -1,5 +1,5 @@
 #pragma once
-// The draught a water step receives in a coupled scene (spec §2.4), gathered over the step's
+// The draught a water step receives in a coupled scene (model/README.md §2.4), gathered over the step's
 // window. The leapfrog level n (time t_n) is seen by the stone during [t_n − Δt/2, t_n + Δt/2);
 // the step n → n+1 is forced by
 //   b̄ⁿ = (1/K) Σ_{k<K} b(t_n − Δt/2 + (k + ½) Δt/K),

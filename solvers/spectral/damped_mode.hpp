@@ -1,5 +1,5 @@
 #pragma once
-// The exact solution of one Fourier mode of the damped wave equation (spec §2.3):
+// The exact solution of one Fourier mode of the damped wave equation (model/README.md §2.3):
 //   ẑ'' + μ ẑ' + λ ẑ = 0,  ẑ(0) = ẑ0, ẑ'(0) = v̂0,
 // written as ẑ(t) = gz ẑ0 + gv v̂0. With D = λ − μ²/4 and b = v̂0 + (μ/2) ẑ0:
 //   ẑ(t) = e^{−μt/2} [C(t) ẑ0 + S(t) b],

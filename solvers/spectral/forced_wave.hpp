@@ -1,5 +1,5 @@
 #pragma once
-// The exact reference for the periodic damped wave equation with a prescribed draught (spec §2.5):
+// The exact reference for the periodic damped wave equation with a prescribed draught (model/README.md §2.5):
 //   z_tt = c² ∇²(z + b) − μ z_t,  b = b(x, y, t) given,
 // one Fourier mode at a time: ẑ'' + μ ẑ' + λ ẑ = −λ b̂(t), λ = c²|k|² (continuum) or the
 // stencil's −c² symbol/d² (the exact semi-discrete solution of that stencil, as for the free
@@ -21,7 +21,7 @@ namespace stoneskip {
 // Fills b (resized to nx·ny, row-major, x fastest) with the draught at the cell points at time t.
 using DraughtField = std::function<void(double t_s, std::vector<double>& b)>;
 
-// A prescribed draught of spec §2.5: a Gaussian patch b = depth · e(t) · exp(−|x − x_c(t)|²/w²)
+// A prescribed draught of model/README.md §2.5: a Gaussian patch b = depth · e(t) · exp(−|x − x_c(t)|²/w²)
 // (summed over the neighbouring periodic images, as model/water/disturbance.hpp does for a bump),
 // its centre moving at constant velocity, x_c(t) = x0 + v t, under the smooth envelope
 // e(t) = 1 − exp(−(t/rise)²): e(0) = e'(0) = 0, so a run started at rest is smooth from t = 0.

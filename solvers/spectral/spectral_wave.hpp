@@ -1,5 +1,5 @@
 #pragma once
-// The exact reference for the periodic damped wave equation z_tt = c²∇²z − μ z_t (spec §2.3):
+// The exact reference for the periodic damped wave equation z_tt = c²∇²z − μ z_t (model/README.md §2.3):
 // the initial fields are transformed once (FFTW r2c), every Fourier mode is advanced exactly in
 // time (solvers/spectral/damped_mode.hpp) and transformed back (c2r). With the continuum symbol
 // λ = c²|k|² this is exact in time and spectrally accurate in space; with a stencil's own symbol

@@ -1,6 +1,6 @@
 #pragma once
 // Linux input-event recordings (evemu-record text format) of the devices that hid-wiimote creates
-// for a Wii Remote (spec §4; drivers/hid/hid-wiimote-modules.c):
+// for a Wii Remote (model/README.md §4; drivers/hid/hid-wiimote-modules.c):
 //   "Nintendo Wii Remote"                 keys: BTN_A (0x130), BTN_B (0x131), ...
 //   "Nintendo Wii Remote Accelerometer"   ABS_RX/RY/RZ = raw − 0x200 (X, Y, Z; uncalibrated)
 //   "Nintendo Wii Remote Motion Plus"     ABS_RX = yaw, ABS_RY = roll, ABS_RZ = pitch, in

@@ -1,6 +1,6 @@
 #pragma once
 // Inferring the MotionPlus range mode when the file does not record it (the wiiuse gesture format,
-// spec §4): a slow→fast switch shows as a sudden 4–5× drop of |raw − zero| inside a swing. Per axis,
+// model/README.md §4): a slow→fast switch shows as a sudden 4–5× drop of |raw − zero| inside a swing. Per axis,
 // the mode sequence is the one that makes the rate smoothest: a two-state Viterbi path minimising
 //   Σ (ω_k − ω_{k−1})² + switch_cost · (number of switches)
 // with ω_k = (raw_k − zero)·(fast ? fast_factor : 1) in slow-mode counts, starting in slow mode.

@@ -50,7 +50,7 @@ Geometry geometry(const SyntheticThrow& th) {
   const double b = th.path_angle_deg * kDeg, a = th.attack_angle_deg * kDeg;
   g.k = Vec3(std::sin(b), 0, std::cos(b));
   g.d = Vec3(std::cos(b), 0, -std::sin(b));
-  g.R_stone_r = Eigen::AngleAxisd(-a, Vec3::UnitY()).toRotationMatrix();  // spec §1.7
+  g.R_stone_r = Eigen::AngleAxisd(-a, Vec3::UnitY()).toRotationMatrix();  // model/README.md §1.7
   g.M = th.mounting.stone_axes();
   g.R_remote_r = g.R_stone_r * g.M.transpose();
   g.lever_world_r = g.R_remote_r * th.mounting.lever_arm_m;

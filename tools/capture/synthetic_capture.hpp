@@ -1,6 +1,6 @@
 #pragma once
 // Synthetic captures with a known truth: a side-arm throw about a moving pivot, recorded as a real
-// Wii Remote with MotionPlus would record it (spec §4): the accelerometer clips at ±clip_g and is
+// Wii Remote with MotionPlus would record it (model/README.md §4): the accelerometer clips at ±clip_g and is
 // quantised to 10 bits (Y and Z lose their lowest bit in the report), the MotionPlus switches to
 // fast mode above fast_above_deg_s (back below slow_below_deg_s), reports come at ≈ rate_hz with
 // host-clock jitter, some are lost and some repeated.
@@ -37,7 +37,7 @@ struct SyntheticThrow {
   Mounting mounting;                // the truth (the lever arm is exact)
 };
 
-// A skipping throw as published (spec §3), as the arm of a side-arm thrower makes it:
+// A skipping throw as published (model/README.md §3), as the arm of a side-arm thrower makes it:
 //   * speed 8–15 m/s: Bocquet (Am. J. Phys. 71:150, 2003) takes 12 m/s as a good throw; the
 //     world-record throws are near 19 m/s;
 //   * spin 10–20 rev/s: Bocquet's example is 14 rev/s (hand throws; Clanet's launcher reached 65);
@@ -46,7 +46,7 @@ struct SyntheticThrow {
 //   * release "a few tens of centimetres" above the water, side-arm, the thrower crouching.
 // The arm: a swing about the shoulder (the mounting's lever arm, 0.6 m) whose pivot moves forward
 // with pivot_share of the speed (the trunk's turn), over swing_duration_s = 0.2 s (7–20 g,
-// spec §4). The arm's turn gives the stone Ω cos(α + β) of spin; the rest of spin_rev_s is the
+// model/README.md §4). The arm's turn gives the stone Ω cos(α + β) of spin; the rest of spin_rev_s is the
 // fingers' (finger_spin_rev_s).
 struct SkippingThrowSpec {
   double speed_m_s = 12.0;

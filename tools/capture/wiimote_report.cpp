@@ -83,7 +83,7 @@ DecodedReport decode_report(const std::uint8_t* bytes, std::size_t size) {
   if (l.accel >= 0) {
     const unsigned b0 = bytes[1], b1 = bytes[2];
     r.has_accel = true;
-    r.accel_raw[0] = int(bytes[l.accel] << 2 | ((b0 >> 5) & 3));      // spec §4
+    r.accel_raw[0] = int(bytes[l.accel] << 2 | ((b0 >> 5) & 3));      // model/README.md §4
     r.accel_raw[1] = int(bytes[l.accel + 1] << 2 | ((b1 >> 4) & 2));
     r.accel_raw[2] = int(bytes[l.accel + 2] << 2 | ((b1 >> 5) & 2));
   }

@@ -1,5 +1,5 @@
 #pragma once
-// Decoding of Wii Remote Bluetooth HID input reports (spec §4; WiiBrew "Wiimote" and
+// Decoding of Wii Remote Bluetooth HID input reports (model/README.md §4; WiiBrew "Wiimote" and
 // Linux drivers/hid/hid-wiimote-core.c). A report is its id byte followed by its payload:
 //   0x30 BB BB                      0x31 BB BB AA AA AA
 //   0x32 BB BB E×8                  0x33 BB BB AA AA AA I×12

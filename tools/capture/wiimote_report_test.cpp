@@ -1,5 +1,5 @@
 // Decoding of Wii Remote input reports against values computed by hand from the byte layouts of
-// spec §4 (WiiBrew): every field is exact integer arithmetic, so the comparisons are exact.
+// model/README.md §4 (WiiBrew): every field is exact integer arithmetic, so the comparisons are exact.
 #include <boost/test/unit_test.hpp>
 
 #include <vector>

@@ -1,4 +1,4 @@
-// stoneskip capture: Wii Remote captures (tools/capture/README.md, spec §4).
+// stoneskip capture: Wii Remote captures (tools/capture/README.md, model/README.md §4).
 //
 //   stoneskip capture validate FILE... [--json] [--out DIR]    verdicts; --out: the captures report
 //   stoneskip capture throw FILE --solver realtime|reference|both [--json] [--out FILE.h5]
@@ -552,7 +552,7 @@ void synthesize(const CaptureArgs& a) {
   // Skipping throws as published (synthetic_capture.hpp, skipping_throw).
   SkippingThrowSpec bocquet;  // Bocquet 2003's example: 12 m/s, 14 rev/s; Clanet's α = 20°
   // Near the physical convention's threshold for the measured throw: 14 m/s at α ≈ 31°, β ≈ 2°
-  // separates 0 from 1 bounce there (this model's optimum is α ≈ 25–30°, spec §3). A thrower whose
+  // separates 0 from 1 bounce there (this model's optimum is α ≈ 25–30°, model/README.md §3). A thrower whose
   // trunk barely turns (pivot share 5 %), so the lever-arm estimate stays close to the speed.
   SkippingThrowSpec threshold;
   threshold.speed_m_s = 14.5;

@@ -126,10 +126,10 @@ BOOST_AUTO_TEST_CASE(a_two_remote_wiiyourself_log_is_read_without_a_format_and_j
 }
 
 BOOST_AUTO_TEST_CASE(the_published_skipping_throw_bounces_in_the_paper_convention) {
-  // Oracle: spec §3 — in the paper convention the reversed torque holds the attitude and a throw of
+  // Oracle: model/README.md §3 — in the paper convention the reversed torque holds the attitude and a throw of
   // this kind bounces (about 2 at 8 m/s without spin for a 3 cm stone); the measured throw of the
   // 12 m/s preset, as mapped by the default virtual thrower, must bounce at least once in both
-  // solvers, and not at all in the physical convention (0–1 there, spec §3).
+  // solvers, and not at all in the physical convention (0–1 there, model/README.md §3).
   const std::string file = "cases/captures/skip_12ms_14revs.log";
   const Run paper = run("capture throw " + file + " --solver both --json --set environment.convention=paper");
   BOOST_REQUIRE(paper.status == 0);

@@ -1,7 +1,7 @@
 // stoneskip report waves --out DIR [--quick | --study FILE] [--cases DIR]
 //
 // Runs the wave studies (consistency, convergence, isotropy, stability, speed against error of
-// the stencils of spec §2.2) with the settings of a study file, stores each section in
+// the stencils of model/README.md §2.2) with the settings of a study file, stores each section in
 // DIR/data.h5 as it finishes, and renders DIR/index.md and DIR/figures/ from that file alone.
 //   stoneskip report waves --out out/waves          # cases/studies/waves.toml: a few minutes on 2 cores
 //   stoneskip report waves --out /tmp/w --quick     # cases/studies/waves_quick.toml: seconds

@@ -78,7 +78,7 @@ BOOST_AUTO_TEST_CASE(json_summary_has_the_promised_fields_and_consistent_values)
 }
 
 BOOST_AUTO_TEST_CASE(the_two_conventions_give_different_throws) {
-  // Oracle: spec §1.6/§3 — the printed equations hold the attitude and create energy; the
+  // Oracle: model/README.md §1.6/§3 — the printed equations hold the attitude and create energy; the
   // physical ones cannot create energy. The paper run must gain energy in a contact, the physical
   // run must not, and their bounce counts or distances must differ.
   const auto phys = nlohmann::json::parse(run("run cases/paper_8ms_spin.toml --json").out);

@@ -1,6 +1,6 @@
 // stoneskip wave CASE [--set key=value ...] [--json]
 //
-// Steps a wave case (a height field with one of the stencils of spec §2.2, the damped leapfrog of
+// Steps a wave case (a height field with one of the stencils of model/README.md §2.2, the damped leapfrog of
 // §2.1) to its end time and compares it with the exact spectral reference (§2.3) on the same
 // grid: the continuum solution by default, or the stencil's own semi-discrete solution with
 // [reference] symbol = "stencil" (then the difference is the time error alone).

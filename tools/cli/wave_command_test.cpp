@@ -40,7 +40,7 @@ BOOST_AUTO_TEST_CASE(leapfrog_time_error_falls_fourfold_when_the_step_is_halved)
 }
 
 BOOST_AUTO_TEST_CASE(lengyel_counterexample_grows_by_the_predicted_factor) {
-  // Oracle: spec §2.2 — five-point, μΔt = 0.5, σ = 0.75: the checkerboard grows by
+  // Oracle: model/README.md §2.2 — five-point, μΔt = 0.5, σ = 0.75: the checkerboard grows by
   // (5 + √10)/5 ≈ 1.632 per step; after 60 steps from a 1 cm impulse the RMS is ~1.63^60 × the
   // impulse's share of that mode, far above any physical height (we ask for > 1e6 m).
   nlohmann::json j = run_json("wave cases/wave_lengyel_counterexample.toml");
@@ -49,7 +49,7 @@ BOOST_AUTO_TEST_CASE(lengyel_counterexample_grows_by_the_predicted_factor) {
 }
 
 BOOST_AUTO_TEST_CASE(a_walled_pool_has_no_reference_and_says_so_in_json) {
-  // Oracle: spec §2.3 — the spectral reference exists on the periodic domain only; a reflecting
+  // Oracle: model/README.md §2.3 — the spectral reference exists on the periodic domain only; a reflecting
   // pool must report null errors (not a number, not a crash) and still step: RMS > 0. The
   // reflecting boundary conserves the mean height, so the RMS stays below the bump's amplitude.
   nlohmann::json j = run_json("wave cases/wave_custom_stencil_pool.toml");

@@ -64,7 +64,7 @@ WaterScene read_water(TomlTable w, TomlTable& top) {
       std::ostringstream m;
       m.precision(4);
       m << "σ = cΔt/d = " << sigma << " is above the coupled stability limit " << limit << " of " << scene.field.stencil.name
-        << " under the stone (spec §2.4: free limit/√2): take dt_s ≤ " << limit * scene.field.cell_m / scene.field.wave_speed_m_s
+        << " under the stone (model/README.md §2.4: free limit/√2): take dt_s ≤ " << limit * scene.field.cell_m / scene.field.wave_speed_m_s
         << " s, or coupling = \"one_way\"";
       checked.fail("dt_s", m.str());
     }

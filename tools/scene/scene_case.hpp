@@ -7,7 +7,7 @@
 //   [water.initial]  the surface at t = 0 (at rest; optional: still water);
 //   [scene]          the frames of `stoneskip scene`: frame_rate_hz, duration_s (optional).
 // Read strictly (an unknown key is an error) with one-line errors naming the file, line and key;
-// a two-way field above the coupled stability limit (spec §2.4) is refused at water.dt_s.
+// a two-way field above the coupled stability limit (model/README.md §2.4) is refused at water.dt_s.
 #include <optional>
 #include <string>
 

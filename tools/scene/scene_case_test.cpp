@@ -1,6 +1,6 @@
 // The scene keys of a stone case ([water], [water.initial], [scene]; tools/scene/scene_case.hpp).
 // Oracles: the strict-key rule (a misspelt key or value is named), the coupled stability limit of
-// spec §2.4 (refused at water.dt_s for two_way, accepted for one_way), and the defaults the
+// model/README.md §2.4 (refused at water.dt_s for two_way, accepted for one_way), and the defaults the
 // README states.
 #include <boost/test/unit_test.hpp>
 
@@ -83,7 +83,7 @@ BOOST_AUTO_TEST_CASE(scene_keys_are_read) {
 }
 
 BOOST_AUTO_TEST_CASE(a_two_way_field_above_the_coupled_limit_is_refused_at_dt_s) {
-  // Oracle: spec §2.4 — σ = cΔt/d = 0.65 exceeds the isotropic stencil's coupled limit √6/4 =
+  // Oracle: model/README.md §2.4 — σ = cΔt/d = 0.65 exceeds the isotropic stencil's coupled limit √6/4 =
   // 0.612 (but not its free limit 0.866): two_way is refused naming water.dt_s, one_way runs.
   BOOST_CHECK_EXCEPTION(pond({"water.dt_s=0.013"}), InputError, [](const InputError& e) {
     return names(e, "water.dt_s") && names(e, "coupled stability limit 0.6124");

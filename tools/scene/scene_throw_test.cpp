@@ -1,6 +1,6 @@
 // A stone on a live water surface ([water] in a stone case). Oracles: still water (a flat field
 // must give exactly the still-water throw), the closed-form fall onto a frozen crest, and the
-// definition of a contact (spec §1.8) on the swell scene, where the water moves under the stone.
+// definition of a contact (model/README.md §1.8) on the swell scene, where the water moves under the stone.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -109,7 +109,7 @@ BOOST_AUTO_TEST_CASE(water_keys_are_checked_like_any_other) {
 }
 
 BOOST_AUTO_TEST_CASE(on_the_swell_every_wet_moment_lies_inside_a_logged_contact) {
-  // Oracle: spec §1.8 — a contact is a maximal interval during which some S_i > 0, so every
+  // Oracle: model/README.md §1.8 — a contact is a maximal interval during which some S_i > 0, so every
   // sample with a wetted area lies inside a logged contact, and a stone that sinks ends a logged
   // contact at the time it sank. Regression for issue 9: `stoneskip run cases/scenes/swell_8ms.toml
   // --set environment.convention=paper --set throw.height_m=0.121 --set throw.spin_rev_s=20`

@@ -1,5 +1,5 @@
 #pragma once
-// From a trace to the throw it records (spec §4, §1.7). The entry point is analyse_capture:
+// From a trace to the throw it records (model/README.md §4, §1.7). The entry point is analyse_capture:
 // CaptureOptions in, CaptureAnalysis out; nothing prints. Steps, in order:
 //   1. timing: repeats dropped, the clock chosen from the time column (capture_timing.hpp), gaps,
 //      jitter, equal stamps counted;
@@ -52,7 +52,7 @@ struct CaptureOptions {
   CaptureVerdictRules rules;
   unsigned release_button = kButtonB;
   double saturation_g = 3.4;                 // |a| at or beyond this on an axis: clipped (remotes clip at 3.5–4.6 g)
-  double max_accel_g = 20.0;                 // what a clipped span may have hidden (spec §4: 7–20 g)
+  double max_accel_g = 20.0;                 // what a clipped span may have hidden (model/README.md §4: 7–20 g)
   double gravity_m_s2 = 9.81;
   // The still part: 0.2 s holds 20 reports at 100 Hz, enough to average the noise to ≈ 0.002 g.
   double min_still_s = 0.2;
@@ -66,7 +66,7 @@ struct CaptureOptions {
   // 0.02 g), the step taken from the data when coarser than the calibration's.
   double accel_bias_g = 0.005;
   double gyro_noise_deg_s = 0.3;             // per sample (1 σ)
-  double gyro_scale_rel_uncertainty = 0.05;  // ± (uniform); spec §4: sources disagree at 10 %
+  double gyro_scale_rel_uncertainty = 0.05;  // ± (uniform); model/README.md §4: sources disagree at 10 %
   int members = 64;                          // ensemble size
   unsigned seed = 20130101;
 

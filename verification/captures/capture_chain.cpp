@@ -32,7 +32,7 @@ ChainInput make_chain_input(const Trace& trace, const TimedSamples& timing, cons
   in.fast_factor = trace.calibration.gyro_fast_factor;
   in.mounting = o.mounting;
   for (int i = 0; i < 3; ++i) {
-    // Y and Z lose their lowest bit in the reports (spec §4): a step of two counts. A logger that
+    // Y and Z lose their lowest bit in the reports (model/README.md §4): a step of two counts. A logger that
     // kept fewer bits (WiiYourself! uses the 8 high bits) shows a coarser step: the smallest change
     // between consecutive samples, when larger, is taken as the step.
     in.accel_lsb_g[i] = trace.calibration.accel_lsb_g(i) * (i == 0 ? 1.0 : 2.0);

@@ -1,5 +1,5 @@
 #pragma once
-// A measured throw through the coupled scene and both references (issue 13 item 5; spec §2.4–2.5):
+// A measured throw through the coupled scene and both references (issue 13 item 5; model/README.md §2.4–2.5):
 //   the stone: the scene's stone (the real-time stepper on the live water,
 //              solvers/scene/coupled_scene.hpp) against the CVODE reference on still water, contact
 //              by contact; beside it the same stepper on still water, so the gap splits into the
@@ -68,7 +68,7 @@ class TrajectoryPose {
   std::vector<TrajectorySample> samples_;
 };
 
-// The draught of a stone moving along a trajectory, against the flat surface of a grid (spec §2.5's
+// The draught of a stone moving along a trajectory, against the flat surface of a grid (model/README.md §2.5's
 // prescribed b): b at every grid point (row-major, x fastest), zero once the trajectory has ended.
 DraughtField trajectory_draught(const Mesh& body_mesh, const HeightFieldOptions& field, const FieldPlacement& placement,
                                 const TrajectoryPose& pose);

@@ -91,7 +91,7 @@ BOOST_AUTO_TEST_CASE(pose_between_samples_is_exact_for_a_parabola) {
 }
 
 BOOST_AUTO_TEST_CASE(scene_without_water_is_the_still_water_stepper) {
-  // Oracle: spec §2.4 — coupling none is the still-water throw bit for bit, so the scene's and the
+  // Oracle: model/README.md §2.4 — coupling none is the still-water throw bit for bit, so the scene's and the
   // still-water stepper's contacts are the same numbers.
   CaptureSceneOptions o = skipping_options(0.5);
   o.scene.coupling = Coupling::none;
@@ -106,7 +106,7 @@ BOOST_AUTO_TEST_CASE(scene_without_water_is_the_still_water_stepper) {
 
 BOOST_AUTO_TEST_CASE(skipping_capture_through_the_scene_against_both_references) {
   // Oracles: CVODE (rtol 1e-10) for the stone; the stencil's exact semi-discrete forced solution
-  // (spec §2.5) for the forced leapfrog driven by the CVODE trajectory's draught.
+  // (model/README.md §2.5) for the forced leapfrog driven by the CVODE trajectory's draught.
   // The comparison ends at 0.3 s, after the first bounces.
   CaptureSceneOptions o = skipping_options(0.3);
   const CaptureSceneComparison c = compare_capture_scene(o);

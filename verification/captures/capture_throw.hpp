@@ -1,5 +1,5 @@
 #pragma once
-// A capture's throw through the solvers (spec §1.7: a throw given as a full state): the nominal
+// A capture's throw through the solvers (model/README.md §1.7: a throw given as a full state): the nominal
 // release state through the real-time model and/or the CVODE reference, and the ensemble of
 // perturbed release states (capture_analysis.hpp) through the real-time model only (cheap), which
 // turns the capture's uncertainty into a distribution of bounce counts.

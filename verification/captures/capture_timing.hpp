@@ -1,5 +1,5 @@
 #pragma once
-// Timing of a capture (spec §4: the remote sends no timestamp; the recorder stamps each report
+// Timing of a capture (model/README.md §4: the remote sends no timestamp; the recorder stamps each report
 // with the host clock, so jitter, gaps and repeats are normal). Nothing here assumes a rate that
 // the time column does not show:
 //   * repeated reports (flag R) are dropped and counted;

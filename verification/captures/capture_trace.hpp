@@ -1,5 +1,5 @@
 #pragma once
-// One in-memory trace of a Wii Remote capture, whatever file it came from (spec §4): per sample
+// One in-memory trace of a Wii Remote capture, whatever file it came from (model/README.md §4): per sample
 // the host time, the acceleration in g per axis, the angular rate in deg/s per axis with the
 // MotionPlus range mode it was read in, the core buttons, and flags (saturated axes, repeated
 // report, reports lost before it). Every reader produces this; processing reads only this.
@@ -16,7 +16,7 @@
 
 namespace stoneskip {
 
-// The device calibration (spec §4): a[g] = sign (raw − zero)/(one_g − zero); the MotionPlus rate
+// The device calibration (model/README.md §4): a[g] = sign (raw − zero)/(one_g − zero); the MotionPlus rate
 // [deg/s] = sign (raw − zero)/counts_per_deg_s, with counts_per_deg_s divided by fast_factor in
 // fast mode. Sources disagree about the MotionPlus scale at the 10 % level: keep it a parameter.
 struct CaptureCalibration {
@@ -32,7 +32,7 @@ struct CaptureCalibration {
   double accel_g(int axis, double raw) const {
     return accel_sign[axis] * (raw - accel_zero_counts[axis]) / (accel_one_g_counts[axis] - accel_zero_counts[axis]);
   }
-  // A reading from a report: Y and Z come without their lowest bit (spec §4: Y = AY<<2 |
+  // A reading from a report: Y and Z come without their lowest bit (model/README.md §4: Y = AY<<2 |
   // (b1>>4 & 2)), so the 10-bit reading lies in [raw, raw + 1]; its mean, raw + ½, is used (taking
   // raw itself would read them half a count, ≈ 0.005 g, low and tilt gravity by ≈ 0.3°).
   double accel_g_from_report(int axis, double raw) const { return accel_g(axis, raw + (axis == 0 ? 0.0 : 0.5)); }

@@ -19,7 +19,7 @@ struct CaptureVerdictRules {
   // --- unusable ---
   // A swing of ≈ 0.2 s at 100 Hz and a still part of min_still_s need more than this many samples.
   std::size_t min_samples = 10;
-  // A throw's swing lasts ≈ 0.1–0.2 s (spec §4: 7–20 g over 0.1–0.15 s); below 20 Hz it holds 2–4
+  // A throw's swing lasts ≈ 0.1–0.2 s (model/README.md §4: 7–20 g over 0.1–0.15 s); below 20 Hz it holds 2–4
   // samples and the rate integration cannot follow it.
   double min_rate_hz = 20.0;
   // The release falling in a longer gap is interpolated over half a swing: its state is unknown.

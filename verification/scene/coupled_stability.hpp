@@ -1,5 +1,5 @@
 #pragma once
-// The coupled stability limit of spec §2.4 shown on either side: a flat-bottomed stone (an
+// The coupled stability limit of model/README.md §2.4 shown on either side: a flat-bottomed stone (an
 // 11-gon prism) held still on a periodic pond, b recomputed from the field every step
 // (model/coupling/draught.hpp), started in its closed-form equilibrium (z = C off the stone,
 // (C + s)/2 under it) plus round-off noise; the departure's growth per step is measured at

@@ -23,7 +23,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// ωΔt of a wave of number kd along θ: cos(ωΔt) = 1 + σ² s/2 (undamped leapfrog, spec §2.1).
+// ωΔt of a wave of number kd along θ: cos(ωΔt) = 1 + σ² s/2 (undamped leapfrog, model/README.md §2.1).
 double omega_dt(const Stencil& st, double sigma, double kd, double theta) {
   const double s = st.symbol(kd * std::cos(theta), kd * std::sin(theta));
   const double c = 1 + 0.5 * sigma * sigma * s;

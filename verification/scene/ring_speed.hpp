@@ -1,5 +1,5 @@
 #pragma once
-// How fast a bounce's ring spreads (spec §2.4: "a bounce makes a ring whose radius grows at c
+// How fast a bounce's ring spreads (model/README.md §2.4: "a bounce makes a ring whose radius grows at c
 // minus the stencil's phase error"). The scene is run once to find the contact and its centre
 // (halfway between the first touch and the stone's exit point), then again with a recorder that
 // takes, at every frame of a window after the contact, the azimuthal RMS of the surface in rings

@@ -11,7 +11,7 @@ using namespace stoneskip;
 BOOST_AUTO_TEST_SUITE(ring_speed_)
 
 BOOST_AUTO_TEST_CASE(discrete_speeds_match_the_dispersion_relation_closed_forms) {
-  // Oracle: spec §2.2 — to leading order the γ = 1/3 stencil's phase speed is c(1 − (kd)²/24)
+  // Oracle: model/README.md §2.2 — to leading order the γ = 1/3 stencil's phase speed is c(1 − (kd)²/24)
   // in every direction, and the leapfrog adds (σ kd)²/24: c_p/c = 1 − (1 − σ²)(kd)²/24 + O(kd⁴);
   // the group speed (d/dk of ω = c k (1 − a k²)) is 1 − 3(1 − σ²)(kd)²/24. At kd = 0.1 the O(kd⁴)
   // rest is below 1e-5: tolerance 2e-5. At σ = 1 the five-point leapfrog is exact along the axes
@@ -24,7 +24,7 @@ BOOST_AUTO_TEST_CASE(discrete_speeds_match_the_dispersion_relation_closed_forms)
 }
 
 BOOST_AUTO_TEST_CASE(a_bounce_ring_spreads_between_the_schemes_group_speed_and_c) {
-  // Oracle: spec §2.4 — a bounce makes a ring whose radius grows at c less the stencil's
+  // Oracle: model/README.md §2.4 — a bounce makes a ring whose radius grows at c less the stencil's
   // dispersion: the leading edge carries the ring's longest waves, so its speed lies between the
   // scheme's group speed at the ring's dominant kd (dispersion relation, tested above) and c.
   // The seed's throw (it sinks in its first contact, x ≈ 0.4 m) on a 3 m pond of 150² cells, two-way.

@@ -84,7 +84,7 @@ Record scene_coupling_findings(const SceneStudiesOptions& o, const ProgressFacto
       r.set("first_depression_m", depression);
       r.set("first_mean_draught_m", mean_draught);
       why = "the first contact lasts " + ms(duration) + ", " + num(duration / (2 * radius / cw), 2) +
-            " of the time footprint/c = " + num(2 * radius / cw, 3) + " s in which the water under the stone can answer it (spec §2.4): the stone's draught (up to " +
+            " of the time footprint/c = " + num(2 * radius / cw, 3) + " s in which the water under the stone can answer it (model/README.md §2.4): the stone's draught (up to " +
             num(1e6 * first.max_volume_m3, 3) + " cm³, " + mm(mean_draught) + " deep over its disk) lowered the water under its centre by " +
             mm(depression) + " before it left";
       double worst = 0;

@@ -6,8 +6,8 @@
 //   coupling     two-way against one-way against still water on each shipped throw: contacts,
 //                bounces, first touches, and why they differ (the draught, the depression under
 //                the stone, the contact's duration against footprint/c);
-//   stability    the coupled limit of spec §2.4 on either side (a held stone);
-//   convergence  the forced leapfrog against the forced spectral reference (spec §2.5);
+//   stability    the coupled limit of model/README.md §2.4 on either side (a held stone);
+//   convergence  the forced leapfrog against the forced spectral reference (model/README.md §2.5);
 //   rings        a bounce's ring speed against c less the scheme's dispersion;
 //   shortcuts    each way of computing less (no field, active tiles, float32, one draught sample,
 //                the contact step only near the water): its error and the time it saves;

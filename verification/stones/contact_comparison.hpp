@@ -1,5 +1,5 @@
 #pragma once
-// Compares the contact list of a solver with that of the reference (spec §1.8): which reference
+// Compares the contact list of a solver with that of the reference (model/README.md §1.8): which reference
 // contacts the solver found, missed (it stepped over them: tunnelling) or added (spurious), and
 // how far apart the matched contacts are in time and in position. A contact of the solver is
 // matched to the reference contact it overlaps most in time. How a contact ends is part of it:

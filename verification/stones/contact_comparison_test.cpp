@@ -57,7 +57,7 @@ BOOST_AUTO_TEST_CASE(a_throw_without_a_bounce_has_no_bounce_position_error) {
 }
 
 BOOST_AUTO_TEST_CASE(a_contact_that_ends_differently_is_a_different_contact_list) {
-  // Oracle: spec §1.8 — in the reference the only contact ends in a bounce and the stone flies on
+  // Oracle: model/README.md §1.8 — in the reference the only contact ends in a bounce and the stone flies on
   // to t_max; in the run the same contact ends with the stone sinking. The intervals match, the
   // bounce counts do not: the lists are not the same, and neither position error is defined.
   ThrowResult ref, run;

@@ -5,7 +5,7 @@
 // case settings and with one fixed step h for flight and contact alike, growing from tiny to a
 // game frame. For every run: does it stay finite, does it miss (tunnel through) or invent contacts
 // compared with the reference, does energy grow over a contact where it must not (physical
-// convention: the fluids can only take energy out, spec §1.6). And, over throw speed, the largest
+// convention: the fluids can only take energy out, model/README.md §1.6). And, over throw speed, the largest
 // step that stays stable.
 #include <string>
 

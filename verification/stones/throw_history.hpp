@@ -1,7 +1,7 @@
 #pragma once
 // Time histories of one throw, for the paper's Fig. 9 (momentum against time) and for explaining
 // why the two conventions disagree: momentum, energy, the rate at which the fluids do work on the
-// stone (spec §1.6: never positive in the physical convention), height, attitude (attack and roll
+// stone (model/README.md §1.6: never positive in the physical convention), height, attitude (attack and roll
 // angle), spin.
 #include <string>
 #include <vector>

@@ -21,7 +21,7 @@ struct ThrowProblem {
   ReferenceOptions reference;      // the case's [reference] settings
 };
 
-// The same problem thrown with other parameters (the initial state is rebuilt, spec §1.7).
+// The same problem thrown with other parameters (the initial state is rebuilt, model/README.md §1.7).
 ThrowProblem with_parameters(const ThrowProblem& p, const ThrowParameters& tp);
 ThrowProblem with_convention(const ThrowProblem& p, Convention c);
 

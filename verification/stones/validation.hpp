@@ -1,5 +1,5 @@
 #pragma once
-// Validation of the stone model against experiments and analytic models (spec §3; issue 4,
+// Validation of the stone model against experiments and analytic models (model/README.md §3; issue 4,
 // item 6; issue 11, items 3–4). Nothing here is tuned: each water law runs with its published C_w
 // (model/stone/environment.hpp) and its values are set beside the measured ones; the difference
 // is model-form error.
@@ -27,7 +27,7 @@
 
 namespace stoneskip {
 
-// A measured (or otherwise expected) value the model is set beside (spec §3), as its source states
+// A measured (or otherwise expected) value the model is set beside (model/README.md §3), as its source states
 // it; from the study file, stored with the findings, never typed into a report.
 struct MeasuredValue {
   std::string key;        // the validation row: "clanet_min_speed", "bocquet_speed_exponent", ...
@@ -198,7 +198,7 @@ struct ValidationResult {
   std::vector<LawCost> costs;            // per ranked variant, in the variants' order
   std::string sphere_stone;              // description of the sphere
   std::string bocquet_stone;             // description of the stone used
-  std::vector<double> bocquet_speed_prediction, bocquet_spin_prediction;  // N_V shape and N_Ω (spec §3)
+  std::vector<double> bocquet_speed_prediction, bocquet_spin_prediction;  // N_V shape and N_Ω (model/README.md §3)
   const VariantResult* find(WaterLaw law, Convention c, SolverKind s) const;  // nullptr if not run
 };
 

@@ -1,5 +1,5 @@
 #pragma once
-// What stepping only the active tiles (spec §2.6) costs in accuracy and saves in time: the same
+// What stepping only the active tiles (model/README.md §2.6) costs in accuracy and saves in time: the same
 // water run twice in lockstep, once in full and once on active tiles with a given ε, from the same
 // start and with the same draught source. Reported: the largest difference over the run, the
 // difference at the end, the fraction of tile-steps done, the CPU time of each run's steps, and —

@@ -48,7 +48,7 @@ TileComparisonOptions pond(double eps) {
 BOOST_AUTO_TEST_SUITE(active_tiles_study_)
 
 BOOST_AUTO_TEST_CASE(exact_tiles_show_no_error_and_skip_work) {
-  // Oracle: spec §2.6 — ε = 0 is the full field to the bit (max error exactly 0), and tiles the
+  // Oracle: model/README.md §2.6 — ε = 0 is the full field to the bit (max error exactly 0), and tiles the
   // waves have not reached are skipped (fraction < 1).
   const TileComparison r = compare_active_tiles(pond(0));
   BOOST_TEST(r.max_error_m == 0);

@@ -1,6 +1,6 @@
 #pragma once
 // Convergence of a stencil on the fixed wave problem (verification/waves/wave_problem.hpp),
-// with the error split three ways (spec §2.3):
+// with the error split three ways (model/README.md §2.3):
 //   space: the exact semi-discrete solution of the stencil vs the exact continuum solution,
 //          on grids n = 32, 64, ... (no time error at all);
 //   time:  the leapfrog vs the exact semi-discrete solution on one grid, Δt halved (no space error);

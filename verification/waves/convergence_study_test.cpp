@@ -25,7 +25,7 @@ ConvergenceStudyOptions quick_options() {
 BOOST_AUTO_TEST_SUITE(convergence_study_)
 
 BOOST_AUTO_TEST_CASE(consistent_stencils_converge_at_second_order_in_space_and_in_time) {
-  // Oracle: spec §2.2/§2.1 — the three γ-family stencils and the leapfrog are second order, so
+  // Oracle: model/README.md §2.2/§2.1 — the three γ-family stencils and the leapfrog are second order, so
   // the fitted orders (l2 norm, finest three points) lie within 0.1 of 2, interval included.
   for (const char* name : {"five_point", "nine_point_half", "nine_point_isotropic"}) {
     ConvergenceStudy s = run_convergence_study(named_stencil(name), quick_options());
@@ -37,7 +37,7 @@ BOOST_AUTO_TEST_CASE(consistent_stencils_converge_at_second_order_in_space_and_i
 }
 
 BOOST_AUTO_TEST_CASE(paper_eq11_does_not_converge_to_the_wave_equation) {
-  // Oracle: spec §2.2 — Eq. 11 adds a restoring term c²z/(3d²) that grows as d → 0, so the
+  // Oracle: model/README.md §2.2 — Eq. 11 adds a restoring term c²z/(3d²) that grows as d → 0, so the
   // error against the continuum solution does not fall under refinement. "Does not converge"
   // needs the whole interval at or below the minimum slope: the flat error scatters by ±15 %
   // from grid to grid, so three points leave the interval too wide to say so; five space grids

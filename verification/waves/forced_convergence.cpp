@@ -38,7 +38,7 @@ LeapfrogResult solve_forced_leapfrog(const ForcedWaveProblem& p, const Stencil& 
   LeapfrogResult r;
   CpuTimer timer;
   for (long k = 0; k < steps; ++k) {
-    p.draught.sample(k * o.dt_s, n, n, o.cell_m, b.b_m);  // b at the start of the step (spec §2.4)
+    p.draught.sample(k * o.dt_s, n, n, o.cell_m, b.b_m);  // b at the start of the step (model/README.md §2.4)
     f.step(b);
   }
   r.cpu_s = timer.seconds();

@@ -1,6 +1,6 @@
 #pragma once
-// Convergence of the forced leapfrog (spec §2.4: the height field driven by a draught b) to the
-// forced spectral reference (spec §2.5), split three ways as for the free field
+// Convergence of the forced leapfrog (model/README.md §2.4: the height field driven by a draught b) to the
+// forced spectral reference (model/README.md §2.5), split three ways as for the free field
 // (verification/waves/convergence_study.hpp):
 //   space: the stencil's exact semi-discrete forced solution vs the continuum one (no time error);
 //   time:  the forced leapfrog vs the stencil's semi-discrete forced solution on one grid, Δt halved;

@@ -20,7 +20,7 @@ ForcedConvergenceOptions coarse() {
 BOOST_AUTO_TEST_SUITE(forced_convergence_)
 
 BOOST_AUTO_TEST_CASE(forced_leapfrog_converges_at_order_two_in_space_and_time) {
-  // Oracle: spec §2.5 — the forced spectral reference is exact in time (to its quadrature) and
+  // Oracle: model/README.md §2.5 — the forced spectral reference is exact in time (to its quadrature) and
   // spectrally accurate in space, so the consistent stencils' errors must fall at order 2 in
   // space alone, time alone and both together (order 2 within ±0.1, interval included), and the
   // reference's quadrature error must be far below the smallest error measured.
@@ -37,7 +37,7 @@ BOOST_AUTO_TEST_CASE(forced_leapfrog_converges_at_order_two_in_space_and_time) {
 }
 
 BOOST_AUTO_TEST_CASE(paper_eq11_forced_does_not_converge_to_the_wave_equation) {
-  // Oracle: spec §2.2 — Eq. 11 as printed solves z_tt = c²∇²(z + b) − μz_t − (c²/3d²)(z + b), whose
+  // Oracle: model/README.md §2.2 — Eq. 11 as printed solves z_tt = c²∇²(z + b) − μz_t − (c²/3d²)(z + b), whose
   // extra term grows as d → 0, so the "both" error does not fall at order 2 (the framework must
   // say so); its time error against its own semi-discrete system still falls at order 2.
   const ForcedConvergenceStudy s = run_forced_convergence(named_stencil("paper_eq11"), coarse());

@@ -10,7 +10,7 @@ namespace {
 BOOST_AUTO_TEST_SUITE(isotropy_)
 
 BOOST_AUTO_TEST_CASE(isotropic_stencil_spreads_ten_times_less_than_five_point_at_kd_pi_over_8) {
-  // Oracle: spec §2.2 — 5-point error −(kd)²(3 + cos 4θ)/96 spreads by (kd)²/48 ≈ 3.2e-3 over θ;
+  // Oracle: model/README.md §2.2 — 5-point error −(kd)²(3 + cos 4θ)/96 spreads by (kd)²/48 ≈ 3.2e-3 over θ;
   // γ = 1/3 is −(kd)²/24 at every θ to leading order. The issue asks for ≥ 10× less.
   const double kd = M_PI / 8;
   const double five = phase_error_spread(named_stencil("five_point"), kd);

@@ -1,5 +1,5 @@
 #pragma once
-// Von Neumann stability of the damped leapfrog (spec §2.1) with a 3×3 stencil. A Fourier mode with
+// Von Neumann stability of the damped leapfrog (model/README.md §2.1) with a 3×3 stencil. A Fourier mode with
 // symbol s (d² × the stencil's eigenvalue) is multiplied each step by a root g of
 //   (2 + μΔt) g² − (4 + 2σ² s) g + (2 − μΔt) = 0,   σ = cΔt/d,
 // found by inserting z ∝ gⁿ e^{ik·x} into the update. The scheme is stable when |g| ≤ 1 for every

@@ -14,7 +14,7 @@ constexpr double kLimit = 1e-3;
 BOOST_AUTO_TEST_SUITE(stability_)
 
 BOOST_AUTO_TEST_CASE(computed_limits_match_the_spec_and_do_not_grow_with_damping) {
-  // Oracle: spec §2.2 (derived independently): σ ≤ 1/√2, √3/2, 1 for γ = 0, 1/3, 1/2, for every μΔt.
+  // Oracle: model/README.md §2.2 (derived independently): σ ≤ 1/√2, √3/2, 1 for γ = 0, 1/3, 1/2, for every μΔt.
   struct Row { const char* name; double limit; };
   for (Row r : {Row{"five_point", 1 / std::sqrt(2.0)}, Row{"nine_point_isotropic", std::sqrt(3.0) / 2},
                 Row{"nine_point_half", 1.0}})
@@ -57,7 +57,7 @@ BOOST_AUTO_TEST_CASE(runs_two_percent_above_the_limit_grow_and_two_percent_below
 }
 
 BOOST_AUTO_TEST_CASE(lengyel_bound_admits_a_growing_checkerboard) {
-  // Oracle: spec §2.2 — five-point, μΔt = 0.5, σ = 0.75 satisfies Lengyel's σ < ½√(μΔt + 2)
+  // Oracle: model/README.md §2.2 — five-point, μΔt = 0.5, σ = 0.75 satisfies Lengyel's σ < ½√(μΔt + 2)
   // (= 0.79) yet the checkerboard root of 2.5g² + 5g + 1.5 = 0 is g = −(5 + √10)/5 ≈ −1.632.
   const Stencil s = named_stencil("five_point");
   BOOST_TEST(0.75 < lengyel_bound(0.5));
@@ -68,12 +68,12 @@ BOOST_AUTO_TEST_CASE(lengyel_bound_admits_a_growing_checkerboard) {
 }
 
 BOOST_AUTO_TEST_CASE(stable_modes_decay_at_the_exact_damped_rate) {
-  // Oracle: spec §2.2 — complex roots have |g| = √((2 − μΔt)/(2 + μΔt)).
+  // Oracle: model/README.md §2.2 — complex roots have |g| = √((2 − μΔt)/(2 + μΔt)).
   BOOST_TEST(std::abs(amplification(-2.0, 0.5, 0.4) - std::sqrt(1.6 / 2.4)) <= 1e-15);
 }
 
 BOOST_AUTO_TEST_CASE(the_measured_limit_is_the_von_neumann_limit_at_every_damping) {
-  // Oracle: spec §2.2 — the five-point limit is σ = 1/√2 for every μΔt. Just above it the
+  // Oracle: model/README.md §2.2 — the five-point limit is σ = 1/√2 for every μΔt. Just above it the
   // checkerboard grows by |g| ≈ 1 + 8 δ(σ²)/μΔt per step, so slowly that a run of 2000 steps barely
   // grows; a detector that waits for visible growth places the limit too high, and the more so
   // the stronger the damping (the old "RMS up 10×" rule: 0.70714 … 0.70756). Measured by the

@@ -5,7 +5,7 @@
 // on small kd. A stencil consistent with ∇² has s0 = 0 (its weights sum to zero: a uniform
 // raise feels no force) and s1 = −1 (the continuum's symbol is −(kd)²); its leading truncation
 // error is then s2(θ) (kd)⁴/d², i.e. an error of s2(θ) d² ∂⁴ in the operator, e.g. (cos⁴θ +
-// sin⁴θ)/12 for the five-point stencil (spec §2.2). Nothing here knows those numbers.
+// sin⁴θ)/12 for the five-point stencil (model/README.md §2.2). Nothing here knows those numbers.
 #include <string>
 #include <vector>
 

@@ -14,7 +14,7 @@ constexpr double kFit = 1e-6;
 BOOST_AUTO_TEST_SUITE(stencil_consistency_)
 
 BOOST_AUTO_TEST_CASE(three_family_stencils_are_consistent_and_paper_eq11_is_not) {
-  // Oracle: spec §2.2 — the γ family sums to 0 with Laplacian coefficient 1; Eq. 11 as printed
+  // Oracle: model/README.md §2.2 — the γ family sums to 0 with Laplacian coefficient 1; Eq. 11 as printed
   // sums to −1/3.
   for (const char* name : {"five_point", "nine_point_half", "nine_point_isotropic"}) {
     ConsistencyResult r = analyse_consistency(named_stencil(name));
@@ -27,7 +27,7 @@ BOOST_AUTO_TEST_CASE(three_family_stencils_are_consistent_and_paper_eq11_is_not)
 }
 
 BOOST_AUTO_TEST_CASE(leading_error_matches_the_family_formula) {
-  // Oracle: spec §2.2 — leading error (d²/12)(∂x⁴ + ∂y⁴ + 6γ∂x²∂y²), i.e. s2(θ) =
+  // Oracle: model/README.md §2.2 — leading error (d²/12)(∂x⁴ + ∂y⁴ + 6γ∂x²∂y²), i.e. s2(θ) =
   // (cos⁴θ + sin⁴θ + 6γ cos²θ sin²θ)/12; isotropic (1/12) only for γ = 1/3.
   for (double gamma : {0.0, 0.5, 1.0 / 3}) {
     ConsistencyResult r = analyse_consistency(stencil_family(gamma, "family"));

@@ -395,7 +395,7 @@ Record wave_stability_findings(const WaveStudiesOptions& o, const ProgressFactor
     }
     s.set_table("checks", k);
   }
-  // Lengyel's printed bound and its counter-example (spec §2.2).
+  // Lengyel's printed bound and its counter-example (model/README.md §2.2).
   const Stencil five = named_stencil("five_point");
   Record& l = r.child("lengyel");
   l.set("stencil", std::string("five_point"));
