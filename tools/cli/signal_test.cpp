@@ -223,7 +223,7 @@ BOOST_AUTO_TEST_CASE(an_interrupted_capture_validation_leaves_no_folder) {
 
 BOOST_AUTO_TEST_CASE(a_movie_interrupted_while_gnuplot_draws_leaves_no_frames_and_no_gnuplot) {
   // main left the frames' temporary folder (91 MB) and an orphaned gnuplot drawing into it
-  // (issue 18, item 13). Oracle: the temporary folder (TMPDIR is pointed at an empty scratch
+  // Oracle: the temporary folder (TMPDIR is pointed at an empty scratch
   // folder for the command) and /proc: after exit 143 no folder is left there and no process has
   // its working folder inside it (gnuplot runs in the frames' folder).
   Scratch s;

@@ -60,7 +60,7 @@ struct MeasuredCurve {
   std::vector<double> x, low, high;
 };
 
-// The bounds within which a variant "skips like a real stone" (issue 17, item 4): each row's
+// The bounds within which a variant "skips like a real stone": each row's
 // measured value (the study file's [[validation.measured]] score range) widened by these.
 struct SkipBounds {
   double min_speed_fraction = 0.10;     // U_min within 10 % of the measured range
@@ -139,7 +139,7 @@ struct ModelVariant {
 std::vector<ModelVariant> validation_variants(const std::vector<WaterLaw>& laws,
                                               const std::vector<PressureDistribution>& distributions);
 
-// The energy balance of one contact (issue 17, item 5): the stone's mechanical energy change
+// The energy balance of one contact: the stone's mechanical energy change
 // against the time integral of the fluids' power (trapezoidal, on samples `sample_dt_s` apart and
 // the located events), and that integral's quadrature error estimated from every other sample.
 struct ContactEnergy {

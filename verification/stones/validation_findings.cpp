@@ -441,7 +441,7 @@ void bound_inputs(Record& in, const ValidationOptions& o) {
   in.set("attitude_bound_deg", b.attitude_deg);
 }
 
-// The answer (issue 17, item 4): each ranked variant (law × distribution × attitude, CVODE,
+// The answer: each ranked variant (law × distribution × attitude, CVODE,
 // physical convention) against the rows and bounds, its distance from the measurements and its
 // cost, and the cheapest passive law and distribution (free attitude) that skips like a real stone.
 Record ranking_record(const Record& variants, const ValidationResult& v, const ValidationOptions& o) {
