@@ -20,13 +20,8 @@ using stoneskip::test::run_stoneskip;
 
 namespace {
 
-struct Scratch {
-  fs::path dir = fs::temp_directory_path() / ("stoneskip_json_utf8_" + std::to_string(::getpid()));
-  Scratch() { fs::create_directories(dir); }
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
+struct Scratch : stoneskip::test::ScratchDir {
+  Scratch() : ScratchDir("stoneskip_json_utf8") {}
 };
 
 void expect_json(const std::vector<std::string>& args) {

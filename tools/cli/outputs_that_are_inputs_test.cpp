@@ -20,20 +20,8 @@ using stoneskip::test::run_apart;
 
 namespace {
 
-struct Scratch {
-  fs::path dir = fs::temp_directory_path() / ("stoneskip_out_in_" + std::to_string(::getpid()));
-  Scratch() {
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
-  fs::path write(const std::string& name, const std::string& text) const {
-    std::ofstream(dir / name) << text;
-    return dir / name;
-  }
+struct Scratch : stoneskip::test::ScratchDir {
+  Scratch() : ScratchDir("stoneskip_out_in") {}
 };
 
 void expect_refused_and_kept(const RanApart& r, const fs::path& input, const std::string& bytes, const std::string& why) {

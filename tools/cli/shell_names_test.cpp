@@ -28,16 +28,8 @@ const std::vector<std::string> kNames = {"z'; touch PWNED; echo '", "q\"; touch 
 
 constexpr double kTimeout_s = 120;  // each command here takes seconds; a hang is a failure
 
-struct Scratch {
-  fs::path dir = fs::temp_directory_path() / ("stoneskip_shell_names_" + std::to_string(::getpid()));
-  Scratch() {
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
+struct Scratch : stoneskip::test::ScratchDir {
+  Scratch() : ScratchDir("stoneskip_shell_names") {}
   std::set<std::string> entries() const {
     std::set<std::string> names;
     for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
