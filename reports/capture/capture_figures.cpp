@@ -149,7 +149,7 @@ std::string solver_paths(Figure& f, const Record& sim, ContactMarks contacts) {
     if (contacts == ContactMarks::none) continue;
     const std::string part = std::string(solver) + "_contacts";
     add(f, part, pick(r.table("contact_list"), {"x_m", "start_s"}));
-    s += ", " + dat(f, part) + " u 1:(0) w p pt 6 ps 1.2 lc rgb '" + colour + "' notitle";
+    s += ", " + dat(f, part) + " u 1:(0) w p pt 6 ps 1.2 lc rgb '" + colour + "' t " + gnuplot_quote(std::string("contacts, ") + title);
   }
   return s;
 }
@@ -336,7 +336,7 @@ std::optional<Figure> capture_room_and_water_figure(const std::string& key, cons
   const std::string room = dat(f, "room"), v = dat(f, "velocity");
   const std::string vector_style = " w vectors head filled size screen 0.012,20 lw 2 lc rgb '" + std::string(kRealtime) + "'";
   std::ostringstream s;
-  s << "set multiplot\nset grid\nset key top left\n"
+  s << "set multiplot\nset grid\nset key below\n"
     << "set origin 0, 0.5\nset size 0.42, 0.5\nset size ratio -1\n"
     << "set title 'in the room, from above'\nset xlabel 'along the throw (m)'\nset ylabel 'to the left (m)'\n"
     << "plot " << room << " u 1:2 w l lw 2 lc rgb '" << kAxis[0] << "' t 'stone centre', " << room
@@ -347,7 +347,7 @@ std::optional<Figure> capture_room_and_water_figure(const std::string& key, cons
     << "plot " << room << " u 1:3 w l lw 2 lc rgb '" << kAxis[0] << "' t 'stone centre', " << room
     << " every ::0::0 u 1:3 w p pt 7 ps 1 lc rgb '" << kAxis[2] << "' t 'still part', " << v
     << " every ::0::0 u 1:3:4:6" << vector_style << " t 'release velocity'\n"
-    << "set origin 0.42, 0\nset size 0.58, 1\nset key top right\n"
+    << "set origin 0.42, 0\nset size 0.58, 1\nset key below\n"
     << "set title 'the virtual stone over the water'\nset xlabel 'distance (m)'\nset ylabel 'height of the centre (m)'\n"
     << "plot 0 w l lw 1.5 lc rgb '#3060c0' t 'water', " << v << " every ::1::1 u 1:3:4:6" << vector_style
     << " t 'release velocity'";
@@ -364,7 +364,7 @@ std::optional<Figure> capture_trajectory_figure(const std::string& key, const Re
                   "(CVODE); points on the water: where each contact began",
                   1100, 480);
   std::ostringstream s;
-  s << "set grid\nset key top right\nset xlabel 'distance (m)'\nset ylabel 'height of the centre (m)'\n"
+  s << "set grid\nset key below\nset xlabel 'distance (m)'\nset ylabel 'height of the centre (m)'\n"
     << "plot 0 w l lw 1.5 lc rgb '#3060c0' t 'water'";
   s << solver_paths(f, sim, ContactMarks::where_they_began) << "\n";
   f.script = s.str();
@@ -398,7 +398,7 @@ std::optional<Figure> capture_bounce_figure(const std::string& key, const Record
     marks += ", keyentry w l lw 3 dt 2 lc rgb '" + std::string(colour) + "' t " + gnuplot_quote(title);
   }
   std::ostringstream s;
-  s << "set grid y\nset key top right\nset xlabel 'bounces'\nset ylabel 'throws of the ensemble'\nset xtics 1\n"
+  s << "set grid y\nset key below\nset xlabel 'bounces'\nset ylabel 'throws of the ensemble'\nset xtics 1\n"
     << "set xrange [" << g(lo - 0.6) << ":" << g(hi + 0.6) << "]\nset yrange [0:*]\nset offsets 0, 0, graph 0.3, 0\n"
     << "set style fill solid 0.6\n"
     << "set boxwidth 0.8\n" << arrows << "plot " << dat(f, "histogram") << " u 1:2 w boxes lc rgb '" << kAxis[0]
@@ -416,7 +416,7 @@ std::optional<Figure> capture_scene_stone_figure(const std::string& key, const R
                   "still water); points on the water: where each contact ended",
                   1100, 480);
   std::ostringstream s;
-  s << "set grid\nset key top right\nset xlabel 'distance (m)'\nset ylabel 'height of the centre (m)'\n"
+  s << "set grid\nset key below\nset xlabel 'distance (m)'\nset ylabel 'height of the centre (m)'\n"
     << "plot 0 w l lw 1.5 lc rgb '#3060c0' t 'still water level'";
   for (const auto& [part, colour, style, title] :
        {std::tuple{"scene_path", kRealtime, "lw 3", "scene (real-time model, live water)"},

@@ -29,6 +29,15 @@ void store_figure(const H5Group& figures_group, const Figure& fig) {
   g.write_strings("table_order", order);
 }
 
+const char* rows_name(TableSource::Rows r) {
+  switch (r) {
+    case TableSource::Rows::y_nonnegative: return "y_nonnegative";
+    case TableSource::Rows::y_negative: return "y_negative";
+    case TableSource::Rows::all: break;
+  }
+  return "all";
+}
+
 bool gnuplot_available() { return program_runs({"gnuplot", "--version"}); }
 
 namespace {
@@ -81,6 +90,18 @@ void require_figures_folder(const fs::path& fig_dir) {
     throw_input_error(fig_dir.string(), 0, "", "exists and is " + file_type_words(st.st_mode) + ", not a folder: cannot draw the figures into it");
 }
 
+void write_sources(const fs::path& path, const Figure& f) {
+  std::ostringstream s;
+  s << std::setprecision(17);
+  for (const auto& [table, list] : f.sources) {
+    if (list.empty()) s << table << "\t-\n";
+    for (const auto& src : list)
+      s << table << "\t" << src.table << "\t" << src.x_column << "\t" << src.y_column << "\t" << rows_name(src.rows) << "\t"
+        << src.y_drawn_at << "\n";
+  }
+  write_text_file(path, s.str());
+}
+
 const char* const kKinds[] = {"png", "svg"};
 
 std::string script_name(const Figure& f, const std::string& kind) { return f.name + (kind == "png" ? ".gp" : ".svg.gp"); }
@@ -90,6 +111,7 @@ std::string script_name(const Figure& f, const std::string& kind) { return f.nam
 void check_figure_destinations(const fs::path& fig_dir, const std::vector<Figure>& figs) {
   for (const auto& f : figs) {
     for (const auto& [name, table] : f.tables) check_output_destination(fig_dir / (name + ".dat"));
+    if (!f.sources.empty()) check_output_destination(fig_dir / (f.name + ".sources"));
     for (const std::string kind : kKinds) {
       check_output_destination(fig_dir / (f.name + "." + kind));
       check_output_destination(fig_dir / script_name(f, kind));
@@ -106,6 +128,7 @@ RenderSummary render_figures(const fs::path& dir, const std::vector<Figure>& fig
   check_figure_destinations(fig_dir, figs);
   for (const auto& f : figs) {
     for (const auto& [name, table] : f.tables) write_dat(fig_dir / (name + ".dat"), table);
+    if (!f.sources.empty()) write_sources(fig_dir / (f.name + ".sources"), f);
     for (const std::string kind : kKinds) {
       // gnuplot draws into a temporary beside the final name, renamed over it when whole: never
       // through a link or into a FIFO put there (AtomicOutput checks the name again on commit).

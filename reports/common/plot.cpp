@@ -1,5 +1,6 @@
 #include "reports/common/plot.hpp"
 
+#include <cmath>
 #include <limits>
 #include <sstream>
 
@@ -19,6 +20,31 @@ std::string gnuplot_quote(const std::string& s) {
     else out += c;
   }
   return "'" + out + "'";
+}
+
+bool selected(TableSource::Rows rows, double y) {
+  switch (rows) {
+    case TableSource::Rows::y_nonnegative: return y >= 0;
+    case TableSource::Rows::y_negative: return y < 0;
+    case TableSource::Rows::all: break;
+  }
+  return true;
+}
+
+PlotSeries table_series(const std::string& title, const Record& r, const std::string& table, const std::string& x_column,
+                        const std::string& y_column, const std::string& style, TableSource::Rows rows, double y_drawn_at) {
+  PlotSeries p;
+  p.title = title;
+  p.style = style;
+  const Table& t = r.table(table);
+  const auto x = t.column(x_column), y = t.column(y_column);
+  for (std::size_t k = 0; k < x.size(); ++k)
+    if (selected(rows, y[k])) {
+      p.x.push_back(x[k]);
+      p.y.push_back(std::isnan(y_drawn_at) ? y[k] : y_drawn_at);
+    }
+  p.sources.push_back({r.path() + "/" + table, x_column, y_column, rows, y_drawn_at});
+  return p;
 }
 
 Figure line_figure(const std::string& name, const std::string& title, const PlotAxes& axes,
@@ -46,6 +72,7 @@ Figure line_figure(const std::string& name, const std::string& title, const Plot
     if (!any) t.add_row({std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()});  // an empty series still has a legend entry
     const std::string tname = name + "_" + std::to_string(i);
     f.tables.emplace_back(tname, t);
+    f.sources.emplace_back(tname, p.sources);
     clauses.push_back("'" + tname + ".dat' using 1:2 with " + p.style + " title " + gnuplot_quote(p.title));
   }
   s << "plot ";

@@ -1,18 +1,28 @@
 #pragma once
 // Builders for report figures: x–y line plots of several series, each
 // series a table stored with the figure (so `stoneskip plot DIR` redraws it from data.h5).
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "reports/common/figure.hpp"
+#include "verification/study/record.hpp"
 
 namespace stoneskip {
 
 struct PlotSeries {
-  std::string title;             // legend entry
-  std::vector<double> x, y;      // NaN points are skipped by gnuplot
+  std::string title;             // legend entry ("" for none: a second drawing of a series)
+  std::vector<double> x, y;      // NaN points are skipped by gnuplot (a NaN row breaks a line)
   std::string style = "linespoints";  // gnuplot "with" clause
+  std::vector<TableSource> sources;   // where x, y come from in data.h5 (empty: computed here)
 };
+
+// A series of two columns of a table stored in a record, with its source (rows as selected; a
+// y_drawn_at height replaces y, for a row of markers).
+PlotSeries table_series(const std::string& title, const Record& r, const std::string& table, const std::string& x_column,
+                        const std::string& y_column, const std::string& style = "linespoints",
+                        TableSource::Rows rows = TableSource::Rows::all,
+                        double y_drawn_at = std::numeric_limits<double>::quiet_NaN());
 
 struct PlotAxes {
   std::string x_label, y_label;

@@ -1,6 +1,8 @@
 #include "reports/scene/frame_plot.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "reports/common/plot.hpp"
@@ -15,10 +17,16 @@ std::string frame_plot_commands(const FramePlot& p) {
   g << "reset\n"
     << "set multiplot layout 1,2 title " << gnuplot_quote(p.title) << "\n"
     << "set palette defined (-1 '#08306b', -0.4 '#4292c6', 0 '#f7fbff', 0.4 '#ef6548', 1 '#7f0000')\n"
-    << "set cbrange [" << -s << ":" << s << "]\nset format cb '%.2g'\nset format z '%.2g'\n";
+    << "set cbrange [" << -s << ":" << s << "]\nset cbtics (";
+  for (int k = -2; k <= 2; ++k) {  // ticks labelled in mm
+    char label[32];
+    std::snprintf(label, sizeof label, "%.2g", k == 0 ? 0.0 : 0.5 * k * 1e3 * s);
+    g << (k > -2 ? ", " : "") << "'" << label << "' " << 0.5 * k * s;
+  }
+  g << ")\n";
   // Left: the pond from above.
   g << "set size ratio -1\nset xrange [" << p.pond_x0_m << ":" << p.pond_x1_m << "]\nset yrange [" << p.pond_y0_m << ":"
-    << p.pond_y1_m << "]\nset xlabel 'x (m, along the throw)'\nset ylabel 'y (m)'\nset cblabel 'z (m)'\n"
+    << p.pond_y1_m << "]\nset xlabel 'x (m, along the throw)'\nset ylabel 'y (m)'\nset cblabel 'z (mm)'\n"
     << "set object 1 rectangle from " << p.near_x0_m << "," << p.near_y0_m << " to " << p.near_x1_m << "," << p.near_y1_m
     << " front fillstyle empty border lc rgb '#555555' dt 2\n";
   if (p.stone_shown)
@@ -27,17 +35,27 @@ std::string frame_plot_commands(const FramePlot& p) {
   if (!p.track.empty()) g << ", " << p.track << " with lines lc rgb '#222222' lw 1 notitle";
   if (!p.touches.empty()) g << ", " << p.touches << " with points pt 2 ps 1.2 lc rgb '#222222' notitle";
   g << "\n";
-  // Right: the water around the stone, oblique.
-  const double zs = 2 * s;
-  const double stone_z = std::clamp(p.stone_z_m, -zs, zs);
+  // Right: the water around the stone, oblique, its heights on the window's own scale.
+  const double zs = p.near_z_m > 0 ? p.near_z_m : 2 * s;
   g << "unset object 1\nunset label 1\nunset colorbox\nset size noratio\nset view 52, 28, 1, 1\nset xyplane at " << -zs
-    << "\nset xrange [" << p.near_x0_m << ":" << p.near_x1_m << "]\nset yrange [" << p.near_y0_m << ":" << p.near_y1_m
-    << "]\nset zrange [" << -zs << ":" << zs << "]\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset zlabel 'z (m)' rotate\n"
-    << "set ztics " << s << "\nset pm3d at s\nunset surface\n";
+    << "\nset border 4095 lc rgb '#888888'\nset xrange [" << p.near_x0_m << ":" << p.near_x1_m << "]\nset yrange [" << p.near_y0_m
+    << ":" << p.near_y1_m << "]\nset zrange [" << -zs << ":" << zs << "]\nset xlabel 'x (m)'\nset ylabel 'y (m)'\n"
+    << "set zlabel 'z (mm)' rotate\n";
+  char zt[96];
+  std::snprintf(zt, sizeof zt, "set ztics ('%.2g' %.9g, '0' 0, '%.2g' %.9g)\n", -1e3 * zs, -zs, 1e3 * zs, zs);
+  g << zt << "set pm3d at s\nunset surface\n";
   const bool in_window = p.stone_x_m >= p.near_x0_m && p.stone_x_m <= p.near_x1_m && p.stone_y_m >= p.near_y0_m && p.stone_y_m <= p.near_y1_m;
-  if (p.stone_shown && in_window)  // a window around the latest touch may leave the flying stone out
+  const double stone_z = std::clamp(p.stone_z_m, -zs, zs);
+  if (p.stone_shown && in_window)
     g << "set label 2 '' at " << p.stone_x_m << "," << p.stone_y_m << "," << stone_z << " point " << stone_pt
       << " lc rgb 'black' front\n";
+  if (p.stone_shown && (!in_window || stone_z != p.stone_z_m)) {  // say where the box cannot show it
+    char note[160];
+    const double h = p.stone_z_m;
+    std::snprintf(note, sizeof note, "stone: %.3g cm %s the still level%s", 100 * std::abs(h), h >= 0 ? "above" : "below",
+                  in_window ? " (drawn on the box's lid)" : ", outside this window");
+    g << "set label 3 " << gnuplot_quote(note) << " at screen 0.56, screen 0.06 left front\n";
+  }
   g << "splot " << p.near << " with pm3d notitle\n"
     << "unset multiplot\n";
   return g.str();

@@ -4,7 +4,8 @@
 //          the still level, on a fixed symmetric scale), the stone's track so far, where it touched
 //          the water, and the stone (a disk, black; hollow once it has sunk);
 //   right: an oblique 3-D view of the water in a window around the stone (or where it sank), the
-//          heights exaggerated to the same scale so that a ripple of the scale's size is visible.
+//          heights exaggerated to the window's own scale; the stone inside the box when it is
+//          within it, else a line of text saying how high above the water it is.
 // The same commands draw the movie's frames (reports/scene/scene_movie.hpp, binary data files)
 // and the report's still frames (reports/scene/scene_report.cpp, the stored tables), so the two
 // look alike. Only the data clauses differ.
@@ -23,7 +24,9 @@ struct FramePlot {
   bool stone_shown = true;  // false: no stone (coupling none still shows it; a scene without one does not)
   double pond_x0_m = 0, pond_x1_m = 1, pond_y0_m = 0, pond_y1_m = 1;
   double near_x0_m = 0, near_x1_m = 1, near_y0_m = 0, near_y1_m = 1;
-  double scale_m = 1e-3;    // colour scale ±scale_m; the 3-D view's z range
+  double scale_m = 1e-3;    // colour scale ±scale_m
+  double near_z_m = 0;      // the 3-D view's z range ±near_z_m (0: 2 scale_m); the stone is drawn in
+                            // the box only when it is there, else a note says where it is
   std::string title;        // "t = 0.500 s"
   int width_px = 1280, height_px = 540;
 };

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "reports/common/colour_scale.hpp"
 #include "reports/scene/frame_plot.hpp"
 #include "solvers/realtime/clocks.hpp"
 #include "tools/io/atomic_file.hpp"
@@ -92,7 +93,9 @@ std::string MovieOptions::problem(double scene_rate_hz) const {
       return "the movie rate must be the scene's frame rate divided by a whole number";
     if (f == MovieFormat::gif && rate_hz > 50) return "a GIF plays at most 50 frames/s (delays are whole hundredths of a second)";
   }
-  if (!(near_window_m > 0) || near_cells_max < 8 || top_cells_max < 16) return "bad movie window sizes";
+  if (!(near_window_m > 0) || near_cells_max < 8 || top_cells_max < 16 || !(view_width_m > 0)) return "bad movie window sizes";
+  if (!(slow_motion >= 1 && slow_motion <= 100)) return "the movie's slow motion must be a factor within 1 … 100";
+  if (!(slow_margin_s >= 0) || !(after_leaving_s >= 0)) return "the movie's slow-motion margin and its time after the stone leaves must be ≥ 0";
   return "";
 }
 
@@ -126,60 +129,122 @@ MovieRecorder::MovieRecorder(const MovieOptions& options, const SceneOptions& sc
     x0_m_ = scene.initial.position_m.x() - 1;
     y0_m_ = scene.initial.position_m.y() - 5;
   }
-  top_block_ = std::max(1, (std::max(nx_, ny_) + o_.top_cells_max - 1) / o_.top_cells_max);
-  top_nx_ = (nx_ + top_block_ - 1) / top_block_;
-  top_ny_ = (ny_ + top_block_ - 1) / top_block_;
+  view_nx_ = std::clamp(static_cast<int>(std::lround(o_.view_width_m / cell_m_)), 2, nx_);
+  view_ny_ = std::clamp(view_nx_ / 2, 2, ny_);
+  top_block_ = std::max(2, (std::max(view_nx_, view_ny_) + o_.top_cells_max - 1) / o_.top_cells_max);
+  top_nx_ = std::max(1, view_nx_ / top_block_);
+  top_ny_ = std::max(1, view_ny_ / top_block_);
 }
 
 void MovieRecorder::record(const SceneFrame& f) {
-  if (f.index % stride_ != 0) return;
+  // Every scene frame is kept (slow motion draws them all near a contact, known only at the end),
+  // until after_leaving_s after the stone has left the pond.
+  const double x = f.stone.position_m.x(), y = f.stone.position_m.y(), z = f.stone.position_m.z();
+  const bool in_pond = x >= x0_m_ - 0.5 * cell_m_ && x <= x0_m_ + (nx_ - 0.5) * cell_m_ && y >= y0_m_ - 0.5 * cell_m_ &&
+                       y <= y0_m_ + (ny_ - 0.5) * cell_m_;
+  if (!in_pond && left_t_s_ < 0 && f.stone_status == StoneStatus::in_play) left_t_s_ = f.t_s;
+  if (left_t_s_ >= 0 && f.t_s > left_t_s_ + o_.after_leaving_s + 1e-9) return;
   const long k = static_cast<long>(frames_.size()) + 1;
   const HeightField* field = has_field_ ? f.field : nullptr;
-  const double max_abs = means(field, 0, 0, top_nx_, top_ny_, top_block_, buffer_);
+  auto cell_of = [&](double v, double origin) { return static_cast<int>(std::lround((v - origin) / cell_m_)); };
+  // The top window: the stone two thirds of the way across, inside the pond.
+  const int ti0 = std::clamp(cell_of(x, x0_m_) - 2 * view_nx_ / 3, 0, nx_ - view_nx_);
+  const int tj0 = std::clamp(cell_of(y, y0_m_) - view_ny_ / 2, 0, ny_ - view_ny_);
+  means(field, ti0, tj0, top_nx_, top_ny_, top_block_, buffer_);
   write_floats(dir_ / frame_name("top", k, "bin"), buffer_);
-  // The 3-D window: near_window_m around the stone, inside the pond.
+  const double top_scale = robust_scale(std::vector<double>(buffer_.begin(), buffer_.end())).scale;
+  // The 3-D window: near_window_m around the stone, or where it was last low while it flies.
+  if (z <= stone_radius_m_ && in_pond) {
+    low_seen_ = true;
+    low_x_m_ = x;
+    low_y_m_ = y;
+  }
+  const double cx = (z > stone_radius_m_ && low_seen_) || !in_pond ? low_x_m_ : x;
+  const double cy = (z > stone_radius_m_ && low_seen_) || !in_pond ? low_y_m_ : y;
   const int side = std::min({static_cast<int>(std::ceil(o_.near_window_m / cell_m_)), nx_, ny_});
   const int block = std::max(1, (side + o_.near_cells_max - 1) / o_.near_cells_max);
   const int n = std::max(2, side / block);
   const int span = n * block;
-  const int ic = static_cast<int>(std::lround((f.stone.position_m.x() - x0_m_) / cell_m_));
-  const int jc = static_cast<int>(std::lround((f.stone.position_m.y() - y0_m_) / cell_m_));
-  const int i0 = std::clamp(ic - span / 2, 0, std::max(0, nx_ - span)), j0 = std::clamp(jc - span / 2, 0, std::max(0, ny_ - span));
+  const int i0 = std::clamp(cell_of(cx, x0_m_) - span / 2, 0, std::max(0, nx_ - span));
+  const int j0 = std::clamp(cell_of(cy, y0_m_) - span / 2, 0, std::max(0, ny_ - span));
   means(field, i0, j0, n, n, block, buffer_);
   write_floats(dir_ / frame_name("near", k, "bin"), buffer_);
   FrameData d;
   d.index = f.index;
   d.t_s = f.t_s;
-  d.x_m = f.stone.position_m.x();
-  d.y_m = f.stone.position_m.y();
-  d.z_m = f.stone.position_m.z();
+  d.x_m = x;
+  d.y_m = y;
+  d.z_m = z;
   d.sunk = f.stone_status == StoneStatus::sank;
+  d.in_pond = in_pond;
+  d.top_x0_m = x0_m_ + (ti0 + 0.5 * (top_block_ - 1)) * cell_m_;
+  d.top_y0_m = y0_m_ + (tj0 + 0.5 * (top_block_ - 1)) * cell_m_;
   d.near_dx_m = block * cell_m_;
   d.near_x0_m = x0_m_ + (i0 + 0.5 * (block - 1)) * cell_m_;
   d.near_y0_m = y0_m_ + (j0 + 0.5 * (block - 1)) * cell_m_;
   d.near_nx = d.near_ny = n;
+  d.top_scale_m = top_scale;
+  d.near_scale_m = robust_scale(std::vector<double>(buffer_.begin(), buffer_.end())).scale;
   frames_.push_back(d);
-  frame_max_m_.push_back(max_abs);
 }
+
+namespace {
+
+// The median of the positive values (0 if none).
+double median_positive(std::vector<double> v) {
+  v.erase(std::remove_if(v.begin(), v.end(), [](double a) { return !(a > 0); }), v.end());
+  if (v.empty()) return 0;
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+}  // namespace
 
 MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, const ProgressFactory& progress) {
   MovieSummary s;
   s.file = o_.output;
-  s.frames = static_cast<long>(frames_.size());
   s.rate_hz = scene_rate_hz_ / stride_;
   s.width_px = o_.width_px;
   s.height_px = o_.height_px;
   if (frames_.empty()) throw std::runtime_error("movie: no frames to draw (the scene is shorter than one movie frame)");
-  // 1. The colour scale: half the median of the frames' largest |z| (frames with any motion).
-  std::vector<double> moving;
-  for (double m : frame_max_m_)
-    if (m > 0) moving.push_back(m);
-  if (!moving.empty()) {
-    std::nth_element(moving.begin(), moving.begin() + moving.size() / 2, moving.end());
-    s.scale_m = 0.5 * moving[moving.size() / 2];
+  // 1. The scales, fixed for the movie: medians over the frames of each view's robust largest |z|.
+  {
+    std::vector<double> top, near;
+    for (const auto& f : frames_) {
+      top.push_back(f.top_scale_m);
+      near.push_back(f.near_scale_m);
+    }
+    s.scale_m = median_positive(top);
+    s.near_z_m = 1.2 * median_positive(near);
   }
   if (!(s.scale_m > 0)) s.scale_m = 1e-4;
-  // 2. The track and the first touches, one point a line.
+  if (!(s.near_z_m > 0)) s.near_z_m = 2 * s.scale_m;
+  // 2. Which frames are drawn, and for how many movie frames each: every stride-th in real time,
+  //    every one near a contact, held repeats movie frames (the time warp repeats × stride).
+  const int repeats = std::max(1, static_cast<int>(std::lround(o_.slow_motion / stride_)));
+  s.time_warp = o_.slow_motion > 1 ? double(repeats * stride_) : 1.0;
+  auto slow_at = [&](double t) {
+    if (!(o_.slow_motion > 1)) return 0L;
+    for (std::size_t c = 0; c < contacts.size(); ++c)
+      if (t >= contacts[c].start_s - o_.slow_margin_s - 1e-9 && t <= contacts[c].end_s + o_.slow_margin_s + 1e-9)
+        return static_cast<long>(c) + 1;
+    return 0L;
+  };
+  struct Drawn {
+    std::size_t frame;
+    long contact;  // 0: real time
+  };
+  std::vector<Drawn> drawn;
+  for (std::size_t j = 0; j < frames_.size(); ++j) {
+    const long c = slow_at(frames_[j].t_s);
+    if (c > 0 || frames_[j].index % stride_ == 0) drawn.push_back({j, c});
+  }
+  if (drawn.empty()) throw std::runtime_error("movie: no frames to draw (the scene is shorter than one movie frame)");
+  s.drawn = static_cast<long>(drawn.size());
+  s.left_pond_t_s = left_t_s_;
+  s.end_t_s = frames_[drawn.back().frame].t_s;
+  for (const auto& c : contacts) s.contacts_beyond += c.start_s > s.end_t_s;
+  // 3. The track and the first touches, one point a line.
   {
     std::ofstream t(dir_ / "track.dat");
     t.precision(9);
@@ -188,20 +253,20 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
     c.precision(9);
     for (const auto& k : contacts) c << k.first_touch_m.x() << " " << k.first_touch_m.y() << "\n";
   }
-  // 3. The gnuplot script: one block per frame.
+  // 4. The gnuplot script: one block per drawn frame.
   std::ostringstream gp;
   gp.precision(9);
   gp << "set terminal pngcairo size " << o_.width_px << "," << o_.height_px << " font 'Sans,10'\n";
-  const double half = 0.5 * cell_m_ * top_block_;
-  for (std::size_t j = 0; j < frames_.size(); ++j) {
+  const double dx = cell_m_ * top_block_;
+  for (std::size_t q = 0; q < drawn.size(); ++q) {
+    const std::size_t j = drawn[q].frame;
     const FrameData& f = frames_[j];
     FramePlot p;
     std::ostringstream top, near;
     top.precision(9);
     near.precision(9);
     top << "'" << frame_name("top", static_cast<long>(j) + 1, "bin") << "' binary array=(" << top_nx_ << "," << top_ny_
-        << ") format='%float32' origin=(" << x0_m_ + half - 0.5 * cell_m_ << "," << y0_m_ + half - 0.5 * cell_m_
-        << ") dx=" << cell_m_ * top_block_ << " dy=" << cell_m_ * top_block_;
+        << ") format='%float32' origin=(" << f.top_x0_m << "," << f.top_y0_m << ") dx=" << dx << " dy=" << dx;
     near << "'" << frame_name("near", static_cast<long>(j) + 1, "bin") << "' binary array=(" << f.near_nx << "," << f.near_ny
          << ") format='%float32' origin=(" << f.near_x0_m << "," << f.near_y0_m << ",0) dx=" << f.near_dx_m << " dy=" << f.near_dx_m;
     p.top = top.str();
@@ -215,21 +280,31 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
     p.stone_z_m = f.z_m;
     p.stone_radius_m = stone_radius_m_;
     p.stone_sunk = f.sunk;
-    p.pond_x0_m = x0_m_ - 0.5 * cell_m_;
-    p.pond_x1_m = x0_m_ + (nx_ - 0.5) * cell_m_;
-    p.pond_y0_m = y0_m_ - 0.5 * cell_m_;
-    p.pond_y1_m = y0_m_ + (ny_ - 0.5) * cell_m_;
+    p.pond_x0_m = f.top_x0_m - 0.5 * dx;
+    p.pond_x1_m = f.top_x0_m + (top_nx_ - 0.5) * dx;
+    p.pond_y0_m = f.top_y0_m - 0.5 * dx;
+    p.pond_y1_m = f.top_y0_m + (top_ny_ - 0.5) * dx;
     p.near_x0_m = f.near_x0_m;
     p.near_x1_m = f.near_x0_m + (f.near_nx - 1) * f.near_dx_m;
     p.near_y0_m = f.near_y0_m;
     p.near_y1_m = f.near_y0_m + (f.near_ny - 1) * f.near_dx_m;
     p.scale_m = s.scale_m;
-    char title[160];
-    std::snprintf(title, sizeof title, "t = %.3f s%s   (colour and height scale ±%.2g mm)", f.t_s, f.sunk ? ", the stone has sunk" : "",
-                  1e3 * s.scale_m);
+    p.near_z_m = s.near_z_m;
+    char speed[96], left[200];
+    if (drawn[q].contact > 0)
+      std::snprintf(speed, sizeof speed, "SLOW MOTION %g× (contact %ld)", s.time_warp, drawn[q].contact);
+    else
+      std::snprintf(speed, sizeof speed, "real time");
+    left[0] = 0;
+    if (left_t_s_ >= 0 && f.t_s >= left_t_s_)
+      std::snprintf(left, sizeof left, "\nthe stone left the pond at t = %.3f s: the movie ends at %.3f s; %ld contacts after that are not shown",
+                    left_t_s_, s.end_t_s, s.contacts_beyond);
+    char title[480];
+    std::snprintf(title, sizeof title, "t = %.3f s   %s%s   (colour ±%.2g mm, 3-D box ±%.2g mm; means of %d×%d cells)%s", f.t_s,
+                  speed, f.sunk ? ", the stone has sunk" : "", 1e3 * s.scale_m, 1e3 * s.near_z_m, top_block_, top_block_, left);
     p.title = title;
-    gp << "set output '" << frame_name("frame", static_cast<long>(j) + 1, "png") << "'\n"
-       << frame_plot_commands(p) << "set output\nprint 'frame " << j + 1 << "'\n";
+    gp << "set output '" << frame_name("frame", static_cast<long>(q) + 1, "png") << "'\n"
+       << frame_plot_commands(p) << "set output\nprint 'frame " << q + 1 << "'\n";
   }
   {
     std::ofstream f(dir_ / "movie.gp");
@@ -238,7 +313,7 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
   // 4. Draw, one tick per frame.
   const WallTimer draw;
   {
-    auto ticker = start_progress(progress, "movie: drawing frames", frames_.size());
+    auto ticker = start_progress(progress, "movie: drawing frames", drawn.size());
     std::string errors;
     const int rc = run_lines({"gnuplot", "movie.gp"}, dir_, [&](const std::string& line) {
       if (line.rfind("frame ", 0) == 0) ticker->tick();
@@ -247,14 +322,28 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
     if (rc != 0) throw std::runtime_error("movie: gnuplot failed (status " + std::to_string(rc) + "): " + errors);
   }
   s.draw_wall_s = draw.seconds();
-  // 5. Assemble.
+  // 5. The movie's sequence: each drawn frame once in real time, `repeats` times in slow motion
+  //    (links to the drawn file, no copies).
+  long m = 0;
+  for (std::size_t q = 0; q < drawn.size(); ++q) {
+    const int times = drawn[q].contact > 0 ? repeats : 1;
+    s.slow_drawn += drawn[q].contact > 0;
+    for (int r = 0; r < times; ++r) {
+      const fs::path from = dir_ / frame_name("frame", static_cast<long>(q) + 1, "png"), to = dir_ / frame_name("seq", ++m, "png");
+      std::error_code ec;
+      fs::create_hard_link(from, to, ec);
+      if (ec) fs::copy_file(from, to);
+    }
+  }
+  s.frames = m;
+  // 6. Assemble.
   const WallTimer encode;
   AtomicOutput out(o_.output);
   std::ostringstream rate;
   rate.precision(12);
   rate << s.rate_hz;
   std::vector<std::string> ffmpeg = {"ffmpeg", "-nostdin", "-y", "-loglevel", "error", "-framerate", rate.str(),
-                                     "-i", fs::absolute(dir_ / "frame_%05d.png").string()};
+                                     "-i", fs::absolute(dir_ / "seq_%05d.png").string()};
   if (format_ == MovieFormat::mp4)
     ffmpeg.insert(ffmpeg.end(), {"-c:v", "libx264", "-pix_fmt", "yuv420p", "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-f", "mp4"});
   else

@@ -6,11 +6,20 @@
 // the frame will be drawn from into a work folder; finish() draws and assembles, ticking a
 // progress bar per frame drawn, and writes the movie atomically (a temporary name, then renamed).
 //
-// The movie plays in real time: its rate is the scene's frame rate divided by a whole stride
-// (every frame for MP4; for a GIF, whose delays are whole hundredths of a second, the smallest
-// stride giving ≤ 30 frames/s). It has ⌊N / stride⌋ frames for a scene of N frames, i.e. the
-// scene's duration × the movie's rate. The colour scale is fixed for the whole movie: ± half the
-// median over the frames of the largest |z| (so a splash saturates and the rings stay visible).
+// Time: away from contacts the movie plays in real time: its rate is the scene's frame rate divided
+// by a whole stride (every frame for MP4; for a GIF, whose delays are whole hundredths of a second,
+// the smallest stride giving ≤ 30 frames/s), one movie frame per stride scene frames. Within
+// slow_margin_s of a contact (before its start, after its end) every scene frame is drawn and shown
+// for round(slow_motion / stride) movie frames: slow motion, its factor written on the frame. The
+// movie ends after_leaving_s after the stone leaves the pond (said on the frames from then on).
+// Space: the top view is a window view_width_m wide (half as high) that follows the stone, the
+// stone two thirds of the way across, so that its latest rings stay in view; its heights are means
+// of blocks of at least 2 × 2 cells (a grid-scale pattern would otherwise beat with the pixels:
+// moiré). The 3-D view is the water around the stone, or while it is in the air around where it
+// was last low (its centre within its radius of the still level): where its newest ring is.
+// Scales are fixed for the whole movie, from the drawn data (reports/common/colour_scale.hpp): the
+// colour ± the median over the frames of each top view's robust largest |z|; the 3-D box ± 1.2
+// times the same median for the 3-D windows.
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -31,7 +40,11 @@ struct MovieOptions {
   double rate_hz = 0;               // 0: the default of the format (see above)
   double near_window_m = 2.4;       // the 3-D view's side
   int near_cells_max = 100;         // the 3-D view's grid at most this many points a side (block means)
-  int top_cells_max = 600;          // the top view at most this many points a side (block means)
+  int top_cells_max = 300;          // the top view at most this many points a side (block means)
+  double view_width_m = 6;          // the top view's width (at most the pond's)
+  double slow_motion = 8;           // time-warp factor around contacts (1: real time throughout)
+  double slow_margin_s = 0.03;      // slow motion from this long before a contact to this long after
+  double after_leaving_s = 0.4;     // the movie ends this long after the stone leaves the pond
   // Empty when usable with a scene of this frame rate; else what is wrong (a rate that does not
   // divide the scene's, a size out of range, an unknown format).
   std::string problem(double scene_rate_hz) const;
@@ -47,7 +60,12 @@ struct MovieSummary {
   double rate_hz = 0;
   int width_px = 0, height_px = 0;
   std::uintmax_t bytes = 0;
-  double scale_m = 0;
+  double scale_m = 0, near_z_m = 0;
+  double time_warp = 1;            // the slow motion's factor (1: none)
+  long drawn = 0, slow_drawn = 0;  // scene frames drawn; of them, in slow motion
+  double left_pond_t_s = -1;       // when the stone left the pond (-1: it did not)
+  long contacts_beyond = 0;        // contacts that began after the movie's end
+  double end_t_s = 0;              // the last frame drawn
   double draw_wall_s = 0, encode_wall_s = 0;
 };
 
@@ -65,9 +83,11 @@ class MovieRecorder {
   struct FrameData {
     long index;
     double t_s, x_m, y_m, z_m;
-    bool sunk;
+    bool sunk, in_pond;
+    double top_x0_m, top_y0_m;   // the top window's first block centre
     double near_x0_m, near_y0_m, near_dx_m;
     int near_nx, near_ny;
+    double top_scale_m, near_scale_m;  // robust largest |z| of each view
   };
   MovieOptions o_;
   MovieFormat format_ = MovieFormat::mp4;
@@ -78,9 +98,13 @@ class MovieRecorder {
   double stone_radius_m_;
   // The pond (or, without a field, a box around the throw's start).
   double x0_m_ = 0, y0_m_ = 0, cell_m_ = 0;
-  int nx_ = 0, ny_ = 0, top_block_ = 1, top_nx_ = 0, top_ny_ = 0;
+  int nx_ = 0, ny_ = 0;
+  int view_nx_ = 0, view_ny_ = 0;         // the top window, in cells
+  int top_block_ = 2, top_nx_ = 0, top_ny_ = 0;  // its block means
+  bool low_seen_ = false;
+  double low_x_m_ = 0, low_y_m_ = 0;      // where the stone was last low
+  double left_t_s_ = -1;
   std::vector<FrameData> frames_;
-  std::vector<double> frame_max_m_;
   std::vector<float> buffer_;
 };
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "reports/common/colour_scale.hpp"
 #include "reports/common/markdown.hpp"
 #include "reports/common/plot.hpp"
 #include "reports/scene/frame_plot.hpp"
@@ -98,11 +99,27 @@ SectionOutput coupling_section(const Record& c) {
            fmt(r.at("one_way").number("contact_count")) + " (" + fmt(r.at("one_way").number("bounces")) + ", " + r.at("one_way").text("outcome") +
            " at " + fmt(r.at("one_way").number("end_time_s"), 4) + " s), still water " + fmt(r.at("none").number("contact_count")) + " (" +
            fmt(r.at("none").number("bounces")) + ").");
-    std::vector<PlotSeries> series;
-    for (const auto& [key, label] : {std::pair<const char*, const char*>{"two_way", "two-way"}, {"one_way", "one-way"}}) {
-      const Table& x = r.at(key).table("contacts");
-      series.push_back({label, x.column("touch_x_m"), x.column("start_s"), "points pt 7 ps 0.9"});
+    if (s.has_number("origin_x_m")) {  // where the pond ends: beyond it the stone makes no waves
+      const double d = s.number("cell_m"), x0 = s.number("origin_x_m") - 0.5 * d, y0 = s.number("origin_y_m") - 0.5 * d;
+      const double x1 = x0 + s.number("nx") * d, y1 = y0 + s.number("ny") * d;
+      const auto tx = a.column("touch_x_m"), ty = a.column("touch_y_m");
+      long outside = 0;
+      double first_outside = 0;
+      for (std::size_t k = 0; k < tx.size(); ++k)
+        if (tx[k] < x0 || tx[k] > x1 || ty[k] < y0 || ty[k] > y1) {
+          if (outside++ == 0) first_outside = double(k + 1);
+        }
+      w.text("The pond spans x = " + fmt(x0, 3) + " … " + fmt(x1, 3) + " m, y = " + fmt(y0, 3) + " … " + fmt(y1, 3) + " m. " +
+             (outside == 0 ? std::string("Every two-way contact is inside it.")
+                           : "**" + fmt(double(outside)) + " of the " + fmt(double(tx.size())) +
+                                 " two-way contacts are outside it** (from contact " + fmt(first_outside) +
+                                 " on): there the stone's draught is ignored (model/water/draught_patch.hpp) and the surface "
+                                 "it meets is the height at the pond's nearest edge, so those contacts make no rings and feel no "
+                                 "waves of their own; the movie ends when the stone leaves the pond."));
     }
+    std::vector<PlotSeries> series;
+    for (const auto& [key, label] : {std::pair<const char*, const char*>{"two_way", "two-way"}, {"one_way", "one-way"}})
+      series.push_back(table_series(label, r.at(key), "contacts", "touch_x_m", "start_s", "points pt 7 ps 0.9"));
     PlotAxes ax{"first touch x (m)", "contact start (s)", false, false, ""};
     w.figure(line_figure("coupling_" + name, "Where and when the stone touched the water: " + name, ax, series, "x_m", "t_s"));
   }
@@ -155,8 +172,7 @@ SectionOutput convergence_section(const Record& c) {
     const Record& s = c.at(name);
     t.row({code(name), interval(s.at("space").at("fit")), interval(s.at("time").at("fit")), interval(s.at("both").at("fit")),
            verdict_of(s.at("both").at("fit")), fmt(s.number("reference_quadrature_m"), 2), fmt(s.number("smallest_error_m"), 2)});
-    const Table& p = s.at("both").table("points");
-    series.push_back({name, p.column("h"), p.column("l2_error_m"), "linespoints"});
+    series.push_back(table_series(name, s.at("both"), "points", "h", "l2_error_m"));
   }
   w.table(t);
   for (const auto& name : c.strings("stencils")) {
@@ -207,14 +223,13 @@ SectionOutput rings_section(const Record& r) {
     }
     PlotAxes ax{"t (s)", "radius of the leading edge (m)", false, false, ""};
     w.figure(line_figure("ring_radius", "The ring's leading edge against time", ax,
-                         {{"measured", t.column("t_s"), t.column("radius_m"), "points pt 7 ps 0.6"},
+                         {table_series("measured", r, "radius", "t_s", "radius_m", "points pt 7 ps 0.6"),
                           {"least-squares line", t.column("t_s"), fit, "lines"},
                           {"speed c from the same start", t.column("t_s"), at_c, "lines dt 2"}},
                          "t_s", "r_m"));
-    const Table& p = r.table("profile");
     PlotAxes ap{"distance from the contact's centre (m)", "z (m)", false, false, ""};
     w.figure(line_figure("ring_profile", "The ring at t = " + fmt(r.number("profile_t_s"), 3) + " s: azimuthal mean and RMS", ap,
-                         {{"mean", p.column("r_m"), p.column("mean_m"), "lines"}, {"RMS", p.column("r_m"), p.column("rms_m"), "lines"}},
+                         {table_series("mean", r, "profile", "r_m", "mean_m", "lines"), table_series("RMS", r, "profile", "r_m", "rms_m", "lines")},
                          "r_m", "z_m"));
   }
   return w.finish();
@@ -288,13 +303,12 @@ SectionOutput speed_section(const Record& s) {
          fmt(s.number("sweep_contact_steps_per_throw"), 4) + " with the contact step, " + us(s.number("sweep_cpu_per_step_s")) +
          " per step; the target allows " + ms(s.number("sweep_cpu_budget_per_throw_s")) + " per throw on " + fmt(s.number("sweep_workers")) +
          " fully available workers.");
-  const Table& f = s.table("frames");
   PlotAxes ax{"t (s)", "cost of the frame (ms)", false, true, ""};
   w.figure(line_figure("frame_cost", "The cost of each frame (1 thread)", ax,
-                       {{"wall", f.column("t_s"), f.column("wall_ms"), "lines"},
-                        {"thread CPU", f.column("t_s"), f.column("cpu_ms"), "lines"},
-                        {"stone (wall)", f.column("t_s"), f.column("stone_ms"), "lines"},
-                        {"water (wall)", f.column("t_s"), f.column("water_ms"), "lines"}},
+                       {table_series("wall", s, "frames", "t_s", "wall_ms", "lines"),
+                        table_series("thread CPU", s, "frames", "t_s", "cpu_ms", "lines"),
+                        table_series("stone (wall)", s, "frames", "t_s", "stone_ms", "lines"),
+                        table_series("water (wall)", s, "frames", "t_s", "water_ms", "lines")},
                        "t_s", "ms"));
   return w.finish();
 }
@@ -332,9 +346,14 @@ Figure still_figure(const std::string& name, const Record& r) {
   p.near_x1_m = r.number("near_x0_m") + (n - 1) * r.number("near_dx_m");
   p.near_y0_m = r.number("near_y0_m");
   p.near_y1_m = r.number("near_y0_m") + (n - 1) * r.number("near_dx_m");
-  p.scale_m = r.number("scale_m");
-  p.title = "t = " + fmt(r.number("t_s"), 4) + " s" + (p.stone_sunk ? ", the stone has sunk" : "") + "   (colour and height scale ±" +
-            fmt(1e3 * p.scale_m, 2) + " mm)";
+  // The colour scale from the drawn data (reports/common/colour_scale.hpp), the 3-D box from its window's.
+  const RobustScale top = robust_scale(r.table("top").values), near = robust_scale(r.table("near").values);
+  p.scale_m = top.scale;
+  p.near_z_m = near.scale > 0 ? 1.2 * near.scale : top.scale;
+  p.title = "t = " + fmt(r.number("t_s"), 4) + " s" + (p.stone_sunk ? ", the stone has sunk" : "") + "   (colour ±" +
+            fmt(1e3 * p.scale_m, 2) + " mm: " + fmt(double(top.beyond)) + " of " + fmt(double(top.disturbed)) +
+            " disturbed cells beyond it, the largest " + fmt(1e3 * top.largest, 2) + " mm)";
+  fig.title += ": colour scale ±" + fmt(1e3 * p.scale_m, 2) + " mm, the largest height drawn " + fmt(1e3 * top.largest, 2) + " mm";
   fig.script = frame_plot_commands(p);
   fig.tables.emplace_back(fig.name + "_top", r.table("top"));
   fig.tables.emplace_back(fig.name + "_near", r.table("near"));
@@ -349,7 +368,11 @@ SectionOutput frames_section(const Record& f) {
          pct(f.number("threshold_fraction")) + " of the scene's largest |z|) among the frames before the waves reach the pond's edge. "
          "Left, the water from above (the dashed square is the right panel's window), the stone's track (line), its first "
          "touches (crosses) and the stone (filled; hollow once sunk); right, the water around the stone (while it is in the air, "
-         "around its latest touch), heights on the colour scale. `stoneskip scene CASE --movie FILE.mp4` draws every frame this way, its right panel always following the stone.");
+         "around its latest touch), heights on the colour scale. The colour scale is symmetric, ± the 99th percentile of |z| over the "
+         "view's disturbed cells (|z| above 1 % of the view's largest), so that at most 1 % of them are drawn at its ends; the 3-D "
+         "box spans 1.2 times the same measure of its own window, the stone drawn on its lid when higher. Both come from the "
+         "stored heights (block means of the field), said on each frame. `stoneskip scene CASE --movie FILE.mp4` draws "
+         "a movie the same way.");
   for (const auto& name : f.strings("cases")) {
     const Record& r = f.at(name);
     w.subheading(code(name) + ": " + r.text("title"));

@@ -32,13 +32,10 @@ Figure series_figure(const std::string& name, const std::string& title, const Re
   for (const auto& key : c.strings("series_keys")) {
     const Record& s = series.at(key);
     if (s.text("quantity") != quantity) continue;
-    PlotSeries p;
     const Record& fit = s.at("fit");
-    p.title = s.text("scheme") + " (formal " + fmt(s.number("formal_order")) + ", observed " +
-              (fit.flag("valid") ? fmt(fit.number("order"), 3) : std::string("–")) + ")";
-    p.x = s.table("points").column("h_s");
-    p.y = s.table("points").column("error");
-    ps.push_back(p);
+    ps.push_back(table_series(s.text("scheme") + " (formal " + fmt(s.number("formal_order")) + ", observed " +
+                                  (fit.flag("valid") ? fmt(fit.number("order"), 3) : std::string("–")) + ")",
+                              s, "points", "h_s", "error"));
   }
   PlotAxes ax;
   ax.x_label = x_label;
@@ -223,9 +220,8 @@ SectionOutput convergence_section(const Record& c) {
     PlotSeries a, b, ideal;
     a.title = "bounce-position error (m)";
     b.title = "contact-time error (s)";
-    a.x = b.x = rtol;
-    a.y = pts.column("bounce_position_error_m");
-    b.y = pts.column("contact_time_error_s");
+    a = table_series(a.title, t, "points", "rtol", "bounce_position_error_m");
+    b = table_series(b.title, t, "points", "rtol", "contact_time_error_s");
     ideal.title = "slope 1";
     ideal.style = "lines dt 2";
     if (!a.y.empty() && std::isfinite(a.y.front()))

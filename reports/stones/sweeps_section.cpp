@@ -3,6 +3,7 @@
 // formatted from the stored records.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "reports/common/markdown.hpp"
@@ -12,6 +13,8 @@
 namespace stoneskip {
 
 namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string axis_of(const std::string& p) {
   if (p == "spin_rev_s") return "spin (rev/s)";
@@ -24,6 +27,55 @@ std::string axis_of(const std::string& p) {
 std::string who(const Record& s) { return s.text("convention") + ", " + (s.text("solver") == "realtime" ? "real-time" : "reference"); }
 
 std::string count_text(double c) { return c < 0 ? std::string("failed") : fmt(c); }
+
+// The stored runs of one bounce-count sweep as (parameter, count) points in order: the grid's counts
+// and both ends of every bracket of its thresholds (bisected or not), a failed run as a count < 0.
+std::vector<std::pair<double, double>> count_points(const Record& s) {
+  std::vector<std::pair<double, double>> pts;
+  const Table& counts = s.table("counts");
+  const auto v = counts.column("value"), b = counts.column("bounces");
+  for (std::size_t i = 0; i < v.size(); ++i) pts.emplace_back(v[i], b[i]);
+  const Table& th = s.table("thresholds");
+  const auto lo = th.column("lo"), hi = th.column("hi"), below = th.column("count_below"), above = th.column("count_above");
+  for (std::size_t i = 0; i < th.rows(); ++i) {
+    pts.emplace_back(lo[i], below[i]);
+    pts.emplace_back(hi[i], above[i]);
+  }
+  std::stable_sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  return pts;
+}
+
+// One sweep's curve: a step curve per run of successful solves (gnuplot's histeps joins across a
+// blank line, so a failure ends a table instead: the curve is broken there, never bridged), the grid
+// values as dots and the failed runs as crosses on a row of their own at -1. Every table names the
+// stored rows it draws (the figure test compares them).
+std::vector<PlotSeries> count_curve(const Record& s, const std::string& title, const std::string& colour) {
+  const std::string counts = s.path() + "/counts", th = s.path() + "/thresholds";
+  using Rows = TableSource::Rows;
+  auto sources = [&](Rows rows, double at) {
+    return std::vector<TableSource>{{counts, "value", "bounces", rows, at},
+                                    {th, "lo", "count_below", rows, at},
+                                    {th, "hi", "count_above", rows, at}};
+  };
+  std::vector<PlotSeries> out;
+  PlotSeries failed{title + ": solve failed", {}, {}, "points pt 2 ps 1.6 lw 2" + colour, sources(Rows::y_negative, -1)};
+  bool in_run = false;
+  for (const auto& [x, y] : count_points(s)) {
+    if (y < 0) {
+      failed.x.push_back(x);
+      failed.y.push_back(-1);
+      in_run = false;
+      continue;
+    }
+    if (!in_run) out.push_back({out.empty() ? title : "", {}, {}, "histeps lw 1.5" + colour, sources(Rows::y_nonnegative, kNaN)});
+    in_run = true;
+    out.back().x.push_back(x);
+    out.back().y.push_back(y);
+  }
+  out.push_back(table_series("", s, "counts", "value", "bounces", "points pt 7 ps 0.6" + colour, Rows::y_nonnegative));
+  if (!failed.x.empty()) out.push_back(failed);
+  return out;
+}
 
 }  // namespace
 
@@ -48,35 +100,24 @@ SectionOutput sweeps_section(const Record& c, const Record& fig9) {
     const auto names = pr.strings("sweeps");
     w.subheading("Bounce count against " + axis_of(param));
     std::vector<PlotSeries> ps;
-    for (const auto& n : names) {
-      const Record& s = pr.at(n);
-      // The curve: grid counts merged with both ends of every bisected bracket (sharp steps).
-      std::vector<std::pair<double, double>> pts;
-      const Table& counts = s.table("counts");
-      const auto v = counts.column("value"), b = counts.column("bounces");
-      for (std::size_t i = 0; i < v.size(); ++i)
-        if (b[i] >= 0) pts.emplace_back(v[i], b[i]);
-      const Table& th = s.table("thresholds");
-      for (std::size_t i = 0; i < th.rows(); ++i)
-        if (th.column("bisected")[i] != 0) {
-          if (th.column("count_below")[i] >= 0) pts.emplace_back(th.column("lo")[i], th.column("count_below")[i]);
-          if (th.column("count_above")[i] >= 0) pts.emplace_back(th.column("hi")[i], th.column("count_above")[i]);
-        }
-      std::sort(pts.begin(), pts.end());
-      PlotSeries p;
-      p.title = who(s);
-      p.style = "steps";
-      for (const auto& [x, y] : pts) {
-        p.x.push_back(x);
-        p.y.push_back(y);
+    bool any_failed = false;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const Record& s = pr.at(names[i]);
+      const std::string colour = " lc " + std::to_string(i + 1);
+      for (PlotSeries& p : count_curve(s, who(s), colour)) {
+        any_failed |= p.style.rfind("points pt 2", 0) == 0 && !p.x.empty();
+        ps.push_back(std::move(p));
       }
-      ps.push_back(p);
     }
     PlotAxes ax;
     ax.x_label = axis_of(param);
     ax.y_label = "bounces";
-    ax.extra = "set yrange [-0.5:*]\nset offsets 0, 0, 1, 0";
+    ax.extra = "set yrange [" + std::string(any_failed ? "-1.5" : "-0.5") + ":*]\nset offsets 0, 0, 1, 0\n" +
+               (any_failed ? "set ytics add ('failed' -1)\n" : "");
     w.figure(line_figure("sweep_" + param, "Bounce count against " + axis_of(param), ax, ps, param, "bounces"));
+    w.text("Each count holds to halfway to its neighbour (gnuplot `histeps`), so a change is drawn at the middle of its final "
+           "bracket — the value in the thresholds table below — and the last grid value holds over the last half spacing; dots: "
+           "the grid values; × on the row *failed*: a run whose solve failed, where the curve is broken, not bridged.");
     std::vector<std::string> headers{axis_of(param)};
     for (const auto& n : names) headers.push_back(who(pr.at(n)));
     MarkdownTable counts(headers);
@@ -128,12 +169,8 @@ SectionOutput sweeps_section(const Record& c, const Record& fig9) {
     for (const auto& key : fig9.strings("histories")) {
       const Record& h = fig9.at(key);
       if (h.text("convention") != conv) continue;
-      PlotSeries p;
-      p.title = h.text("label") + " (" + fmt(h.number("bounces")) + " bounces)";
-      p.style = h.text("solver").rfind("realtime", 0) == 0 ? "lines dt 2" : "lines";
-      p.x = h.table("history").column("t_s");
-      p.y = h.table("history").column("momentum_kg_m_s");
-      ps.push_back(p);
+      ps.push_back(table_series(h.text("label") + " (" + fmt(h.number("bounces")) + " bounces)", h, "history", "t_s",
+                                "momentum_kg_m_s", h.text("solver").rfind("realtime", 0) == 0 ? "lines dt 2" : "lines"));
     }
     PlotAxes ax;
     ax.x_label = "time (s)";

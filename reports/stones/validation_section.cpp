@@ -102,6 +102,7 @@ std::vector<PlotSeries> variant_curves(const Record& vars, const std::string& ta
     if (g.text("solver") == "realtime") p.style = "linespoints dt 2";
     for (double x : g.table(table).column(x_column)) p.x.push_back(square_x ? x * x : x);
     for (double y : g.table(table).column(y_column)) p.y.push_back(scale * y);
+    if (scale == 1 && !square_x) p.sources.push_back({g.path() + "/" + table, x_column, y_column});  // drawn as stored
     ps.push_back(p);
   }
   return ps;
@@ -120,12 +121,7 @@ std::string first_contact_text(const Record& h) {
 }  // namespace
 
 PlotSeries attack_angle_series(const Record& history, const std::string& title, const std::string& style) {
-  PlotSeries p;
-  p.title = title;
-  p.style = style;
-  p.x = history.table("history").column("t_s");
-  p.y = history.table("history").column("attack_deg");
-  return p;
+  return table_series(title, history, "history", "t_s", "attack_deg", style);
 }
 
 SectionOutput validation_section(const Record& v) {

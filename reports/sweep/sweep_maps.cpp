@@ -57,12 +57,23 @@ std::string axes_script(const Axis& x, const Axis& y, const std::string& title) 
   return s.str();
 }
 
-// The colour scale of bounce counts lo..hi: one colour per count.
+// A tick step of 1, 2 or 5 times a power of ten that puts at most kMaxColourTicks ticks on a span
+// of whole counts (54 ticks of one count each cannot be read).
+constexpr int kMaxColourTicks = 10;
+int count_tick_step(double span) {
+  for (int decade = 1;; decade *= 10)
+    for (int m : {1, 2, 5})
+      if (span / (m * decade) + 1 <= kMaxColourTicks) return m * decade;
+}
+
+// The colour scale of bounce counts lo..hi: one colour per count, ticks at whole counts.
 std::string count_scale(double lo, double hi, const std::string& label) {
   hi = std::max(hi, lo + 1);  // gnuplot needs two colours at least
+  const int step = count_tick_step(hi - lo);
   std::ostringstream s;
   s << kCountPalette << "set palette maxcolors " << static_cast<int>(hi - lo + 1) << "\nset cbrange [" << lo - 0.5 << ":"
-    << hi + 0.5 << "]\nset cbtics 1\nset cblabel " << quoted(label) << " noenhanced offset 1.5,0\n";
+    << hi + 0.5 << "]\nset cbtics " << step * std::floor(lo / step) << ", " << step << "\nset cblabel " << quoted(label)
+    << " noenhanced offset 1.5,0\n";
   return s.str();
 }
 
@@ -222,7 +233,7 @@ Figure histogram(const std::string& name, const std::string& title, const std::s
   std::ostringstream s;
   s << "set title " << quoted(title) << " noenhanced\nset xlabel " << quoted(x_label)
     << " noenhanced\nset ylabel 'throws'\nset grid ytics\nset style fill solid 0.7 border -1\nset xtics 1\n"
-       "set key top right\nset yrange [0:*]\n";
+       "set key below\nset yrange [0:*]\n";
   const double width = 0.8 / static_cast<double>(std::max<std::size_t>(1, series.size()));
   s << "set boxwidth " << num(width) << "\nplot ";
   for (std::size_t k = 0; k < series.size(); ++k) {

@@ -174,3 +174,37 @@ BOOST_AUTO_TEST_CASE(a_random_design_gets_scatter_maps_and_histograms_that_count
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(sweep_colour_bars)
+
+// The ticks gnuplot draws on a colour bar from "set cbrange [a:b]" and "set cbtics start, step".
+int colour_ticks(const std::string& script) {
+  const auto r = script.find("set cbrange ["), t = script.find("set cbtics ");
+  if (r == std::string::npos || t == std::string::npos) return -1;
+  const double a = std::stod(script.substr(r + 13)), b = std::stod(script.substr(script.find(':', r) + 1));
+  const double start = std::stod(script.substr(t + 11)), step = std::stod(script.substr(script.find(',', t) + 1));
+  int n = 0;
+  for (double v = start; v <= b; v += step) n += v >= a;
+  return n;
+}
+
+BOOST_AUTO_TEST_CASE(a_count_map_of_54_counts_has_at_most_ten_colour_bar_ticks) {
+  // Oracle: counts 0 … 53 over a 6 × 9 grid (count = 9 i + j): one tick per count was 54 ticks; a
+  // step of 1, 2 or 5 × 10^k keeps them to ≤ 10 (here a step of 10: 0, 10, …, 50, six ticks), each
+  // tick on a whole count, the first at or below the smallest count.
+  SweepData d = grid_data({6, 9}, SweepSolvers::realtime);
+  fill(d, [](const std::vector<double>& p, int) { return 9 * (p[0] - 1) + (p[1] - 1); });
+  int maps = 0;
+  for (const auto& f : sweep_map_figures(d)) {
+    const int n = colour_ticks(f.script);
+    if (n < 0) continue;
+    BOOST_TEST_CONTEXT(f.name) {
+      BOOST_TEST(n >= 2);
+      BOOST_TEST(n <= 10);
+    }
+    ++maps;
+  }
+  BOOST_TEST(maps >= 1);
+}
+
+BOOST_AUTO_TEST_SUITE_END()

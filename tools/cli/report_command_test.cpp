@@ -3,7 +3,11 @@
 // data.h5 alone.
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <map>
 #include <regex>
+#include <sstream>
 #include <set>
 
 #include "tools/cli/test_support.hpp"
@@ -23,6 +27,116 @@ namespace fs = std::filesystem;
 void stored_verdicts(const Record& r, std::set<std::pair<std::string, std::string>>& out) {
   if (r.has_text("rule") && r.has_text("verdict") && r.has_text("reason")) out.emplace(r.text("verdict"), r.text("reason"));
   for (const auto& c : r.child_names()) stored_verdicts(r.at(c), out);
+}
+
+// ---- figures against their tables ---------------------------------------------------------------
+
+// A .dat file is written with 10 significant digits (reports/common/figure.cpp): a plotted value
+// and its stored double agree to half a unit in the 10th digit, 5e-10 relative; 1e-9 leaves room.
+constexpr double kTenDigits = 1e-9;
+
+using Points = std::vector<std::pair<double, double>>;
+
+// The rows of a figure's .dat with both x and y finite (gnuplot draws no other).
+Points plotted_points(const fs::path& dat) {
+  Points pts;
+  std::istringstream in(read_file(dat));
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream row(line);
+    std::string a, b;
+    row >> a >> b;
+    const double x = std::strtod(a.c_str(), nullptr), y = std::strtod(b.c_str(), nullptr);
+    if (std::isfinite(x) && std::isfinite(y)) pts.emplace_back(x, y);
+  }
+  return pts;
+}
+
+stoneskip::Table read_table_at(const stoneskip::H5Group& g, const std::vector<std::string>& parts, std::size_t i) {
+  if (i + 1 == parts.size()) return g.read_table(parts[i]);
+  return read_table_at(g.open_group(parts[i]), parts, i + 1);
+}
+
+// The rows a source names, read from data.h5 on their own (not through the report's code).
+Points stored_points(const stoneskip::Hdf5Reader& data, const std::vector<std::string>& src) {
+  // src: table, data.h5 path, x column, y column, rows, drawn-at height
+  std::vector<std::string> parts;
+  std::istringstream path(src[1]);
+  for (std::string p; std::getline(path, p, '/');)
+    if (!p.empty()) parts.push_back(p);
+  const stoneskip::Table t = read_table_at(data.root(), parts, 0);
+  const auto x = t.column(src[2]), y = t.column(src[3]);
+  const double at = std::strtod(src[5].c_str(), nullptr);
+  Points pts;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    if (src[4] == "y_nonnegative" && !(y[k] >= 0)) continue;
+    if (src[4] == "y_negative" && !(y[k] < 0)) continue;
+    const double yy = std::isnan(at) ? y[k] : at;
+    if (std::isfinite(x[k]) && std::isfinite(yy)) pts.emplace_back(x[k], yy);
+  }
+  return pts;
+}
+
+bool close(double a, double b) { return std::abs(a - b) <= kTenDigits * std::max(std::abs(a), std::abs(b)); }
+
+// Every line figure's plotted points are the stored rows it names: for each set of tables that
+// share one list of sources (a curve split where it breaks), the union of their finite rows is the
+// union of the rows selected from data.h5, point for point; each such table is plotted `using 1:2`.
+// Returns the number of figures checked; series drawn from no stored table are counted in `computed`.
+int check_figures_match_their_tables(const fs::path& dir, int& computed) {
+  stoneskip::Hdf5Reader data(dir / "data.h5");
+  int checked = 0;
+  for (const auto& entry : fs::directory_iterator(dir / "figures")) {
+    if (entry.path().extension() != ".sources") continue;
+    const std::string name = entry.path().stem().string();
+    const std::string script = read_file(dir / "figures" / (name + ".gp"));
+    std::map<std::string, std::vector<std::vector<std::string>>> by_table;
+    std::istringstream in(read_file(entry.path()));
+    for (std::string line; std::getline(in, line);) {
+      std::vector<std::string> f;
+      std::istringstream cells(line);
+      for (std::string c; std::getline(cells, c, '\t');) f.push_back(c);
+      BOOST_REQUIRE_MESSAGE(f.size() == 6 || (f.size() == 2 && f[1] == "-"), name << ".sources: bad line '" << line << "'");
+      if (f.size() == 2) {
+        ++computed;
+        by_table[f[0]];
+      } else {
+        by_table[f[0]].push_back(f);
+      }
+    }
+    std::map<std::string, std::vector<std::string>> groups;  // the sources, joined → tables
+    std::map<std::string, std::vector<std::vector<std::string>>> group_sources;
+    for (const auto& [table, srcs] : by_table) {
+      if (srcs.empty()) continue;
+      std::string key;
+      for (const auto& s : srcs) key += s[1] + "|" + s[2] + "|" + s[3] + "|" + s[4] + "|" + s[5] + ";";
+      groups[key].push_back(table);
+      group_sources[key] = srcs;
+    }
+    for (const auto& [key, tables] : groups) {
+      BOOST_TEST_CONTEXT("figure " << name << ", tables " << tables.front() << " …, from " << key) {
+        Points plotted, stored;
+        for (const auto& t : tables) {
+          BOOST_TEST(script.find("'" + t + ".dat' using 1:2 ") != std::string::npos);
+          const Points p = plotted_points(dir / "figures" / (t + ".dat"));
+          plotted.insert(plotted.end(), p.begin(), p.end());
+        }
+        for (const auto& s : group_sources[key]) {
+          const Points p = stored_points(data, s);
+          stored.insert(stored.end(), p.begin(), p.end());
+        }
+        std::sort(plotted.begin(), plotted.end());
+        std::sort(stored.begin(), stored.end());
+        BOOST_REQUIRE_EQUAL(plotted.size(), stored.size());
+        for (std::size_t k = 0; k < plotted.size(); ++k)
+          BOOST_TEST((close(plotted[k].first, stored[k].first) && close(plotted[k].second, stored[k].second)),
+                     "point " << k << ": plotted (" << plotted[k].first << ", " << plotted[k].second << "), stored ("
+                              << stored[k].first << ", " << stored[k].second << ")");
+      }
+    }
+    ++checked;
+  }
+  return checked;
 }
 
 // The checks every report must pass, on a report folder just written.
@@ -72,6 +186,12 @@ void check_report(const fs::path& dir) {
   const auto r = run_stoneskip("report render " + dir.string());
   BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
   BOOST_TEST(read_file(dir / "index.md") == index);
+
+  // 4. Every line figure draws the stored rows it names (above), no other.
+  int computed = 0;
+  const int line_figures = check_figures_match_their_tables(dir, computed);
+  BOOST_TEST_MESSAGE(dir.filename() << ": " << line_figures << " line figures checked against data.h5; " << computed
+                                    << " series computed from no stored table");
 }
 
 }  // namespace

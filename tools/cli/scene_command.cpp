@@ -43,6 +43,7 @@ struct SceneArgs {
   bool movie_given = false;  // `--movie ""` is refused, not read as "no movie"
   std::string movie_size = "1280x540";
   double movie_rate_hz = 0;
+  double movie_slow = MovieOptions{}.slow_motion;
   ResourceLimits limits;
 };
 
@@ -178,6 +179,7 @@ void run(const SceneArgs& a) {
     mo.width_px = w;
     mo.height_px = h;
     mo.rate_hz = a.movie_rate_hz;
+    mo.slow_motion = a.movie_slow;
     const std::string problem = mo.problem(o.frame_rate_hz);
     if (!problem.empty()) throw_input_error("--movie", 0, "", problem);
     // Known now, not after the whole scene has run: a scene shorter than one movie frame.
@@ -185,7 +187,8 @@ void run(const SceneArgs& a) {
       throw_input_error("--movie", 0, "", "the scene's " + std::to_string(o.frames()) + " frames make no movie frame (one is drawn every " +
                                               std::to_string(mo.stride(o.frame_rate_hz)) + " scene frames)");
     // The movie's drawing and its temporary frames are held to limits too (1e8 frames were accepted).
-    enforce_limits(estimate_movie(static_cast<double>(mo.frames(o)), mo.width_px, mo.height_px, mo.top_cells_max, mo.near_cells_max),
+    // At most: every scene frame drawn (slow motion draws every one near a contact).
+    enforce_limits(estimate_movie(static_cast<double>(o.frames()), mo.width_px, mo.height_px, mo.top_cells_max, mo.near_cells_max),
                    a.limits, "--movie");
     { AtomicOutput check(mo.output); }  // the folder exists and is writable
     if (!program_runs({"gnuplot", "--version"})) throw_input_error("--movie", 0, "", "gnuplot not found (apt-get install gnuplot-nox)");
@@ -200,21 +203,29 @@ void run(const SceneArgs& a) {
     nlohmann::json j = json_of(c, o, s);
     if (movie) {
       const MovieSummary m = movie->finish(s.stone.contacts, terminal_progress());
-      j["movie"] = {{"file", m.file.string()}, {"frames", m.frames}, {"rate_hz", m.rate_hz}, {"bytes", m.bytes},
-                    {"width_px", m.width_px}, {"height_px", m.height_px}, {"scale_m", m.scale_m}};
+      j["movie"] = {{"file", m.file.string()},     {"frames", m.frames},         {"rate_hz", m.rate_hz},
+                    {"bytes", m.bytes},             {"width_px", m.width_px},     {"height_px", m.height_px},
+                    {"scale_m", m.scale_m},         {"near_z_m", m.near_z_m},     {"time_warp", m.time_warp},
+                    {"drawn", m.drawn},             {"slow_drawn", m.slow_drawn}, {"end_t_s", m.end_t_s},
+                    {"left_pond_t_s", m.left_pond_t_s}, {"contacts_beyond", m.contacts_beyond}};
     }
     std::cout << json_text(j) << std::endl;
   } else {
     std::cout << text_of(c, o, s) << std::flush;
     if (movie) {
-      std::cout << "movie     drawing " << s.frames << " frames with gnuplot (recording the frames' data cost "
+      std::cout << "movie     drawing the frames with gnuplot (recording the frames' data cost "
                 << general(1e3 * s.recording_wall_s, 3) << " ms wall above)\n"
                 << std::flush;
       const MovieSummary m = movie->finish(s.stone.contacts, terminal_progress());
       std::cout << "movie     " << m.file.string() << ": " << m.frames << " frames at " << general(m.rate_hz) << " frames/s, "
                 << m.width_px << "×" << m.height_px << ", " << general(m.bytes / 1e6, 3) << " MB; drawn in " << general(m.draw_wall_s, 3)
                 << " s, assembled in " << general(m.encode_wall_s, 3) << " s (wall); colour scale ±" << general(1e3 * m.scale_m, 2)
-                << " mm\n";
+                << " mm; " << m.drawn << " scene frames drawn, " << m.slow_drawn << " of them in slow motion (" << general(m.time_warp)
+                << "×)";
+      if (m.left_pond_t_s >= 0)
+        std::cout << "; the stone left the pond at " << general(m.left_pond_t_s, 4) << " s, the movie ends at " << general(m.end_t_s, 4)
+                  << " s, " << m.contacts_beyond << " contacts after that not shown";
+      std::cout << "\n";
     }
   }
   if (s.stone.outcome == Outcome::failed) set_exit_code(1);
@@ -230,6 +241,8 @@ void add_scene(CLI::App& app) {
   cmd->add_option("--movie-size", a->movie_size, "Movie frame size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--movie-rate", a->movie_rate_hz,
                   "Movie frames per second: the scene's frame rate divided by a whole number (default: every frame for MP4, ≤ 30/s for GIF)");
+  cmd->add_option("--movie-slow", a->movie_slow,
+                  "Slow motion around each contact: the time-warp factor (1: real time throughout)")->capture_default_str();
   add_limit_options(cmd, a->limits);
   cmd->callback([a, cmd] {
     a->movie_given = cmd->count("--movie") > 0;

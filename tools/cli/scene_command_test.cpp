@@ -78,16 +78,44 @@ BOOST_AUTO_TEST_CASE(json_reports_frames_speed_and_parts) {
 }
 
 BOOST_AUTO_TEST_CASE(a_movie_has_duration_times_rate_frames) {
-  // Oracle: the movie plays in real time — ffprobe counts duration × rate frames: 0.2 s at 90
-  // frames/s (MP4, every frame) = 18; as a GIF (≤ 30 frames/s: every third frame) = 6.
+  // Oracle: without slow motion the movie plays in real time — ffprobe counts duration × rate
+  // frames: 0.2 s at 90 frames/s (MP4, every frame) = 18; as a GIF (≤ 30 frames/s: every third) = 6.
   TempDir tmp("stoneskip-movie");
   for (const auto& [name, frames] : {std::pair<std::string, long>{"m.mp4", 18}, {"m.gif", 6}}) {
     const fs::path movie = tmp.path() / name;
-    const auto r = run_stoneskip("scene " + small_seed(0.2) + " --movie " + movie.string() + " --movie-size 320x160");
+    const auto r = run_stoneskip("scene " + small_seed(0.2) + " --movie-slow 1 --movie " + movie.string() + " --movie-size 320x160");
     BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
     BOOST_TEST(fs::file_size(movie) > 0u);
     BOOST_TEST(probed_frames(movie) == frames, name);
   }
+}
+
+BOOST_AUTO_TEST_CASE(a_movie_slows_down_by_its_factor_around_each_contact) {
+  // Oracle: the rule of reports/scene/scene_movie.hpp counted here from the scene's own contacts
+  // (its JSON): scene frame k (t = k/90 s) within 0.03 s of a contact is shown 8 times (MP4, every
+  // frame: 8× slow motion), any other once; ffprobe counts the sum. The 0.2 s scene has a contact.
+  TempDir tmp("stoneskip-movie-slow");
+  const fs::path movie = tmp.path() / "m.mp4";
+  const auto r = run_stoneskip("scene " + small_seed(0.2) + " --json --movie " + movie.string() + " --movie-size 320x160", false);
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
+  const auto j = nlohmann::json::parse(r.out.substr(r.out.find('{')));
+  const auto& contacts = j["throw"]["contacts"];
+  BOOST_REQUIRE(!contacts.empty());
+  const double margin_s = 0.03, tiny = 1e-9;  // the default margin; a frame time rounded either way
+  long expected = 0, slow = 0;
+  for (long k = 1; k <= 18; ++k) {
+    const double t = k / 90.0;
+    bool near = false;
+    for (const auto& c : contacts)
+      near = near || (t >= c["start_s"].get<double>() - margin_s - tiny && t <= c["end_s"].get<double>() + margin_s + tiny);
+    expected += near ? 8 : 1;
+    slow += near;
+  }
+  BOOST_TEST(slow > 0);
+  BOOST_TEST(j["movie"]["time_warp"].get<double>() == 8.0);
+  BOOST_TEST(j["movie"]["slow_drawn"].get<long>() == slow);
+  BOOST_TEST(j["movie"]["frames"].get<long>() == expected);
+  BOOST_TEST(probed_frames(movie) == expected);
 }
 
 BOOST_AUTO_TEST_CASE(bad_scene_input_fails_before_any_work_and_leaves_no_movie) {

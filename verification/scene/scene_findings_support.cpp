@@ -47,6 +47,8 @@ void store_scene_settings(Record& r, const SceneStudyCase& c, const SceneOptions
     r.set("nx", f.nx);
     r.set("ny", f.ny);
     r.set("cell_m", f.cell_m);
+    r.set("origin_x_m", s.water->placement.origin_x_m);  // the centre of cell (0, 0)
+    r.set("origin_y_m", s.water->placement.origin_y_m);
     r.set("wave_speed_m_s", f.wave_speed_m_s);
     r.set("damping_per_s", f.damping_per_s);
     r.set("water_dt_s", f.dt_s);
