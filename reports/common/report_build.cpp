@@ -67,7 +67,7 @@ bool holds_only_report_files(const fs::path& dir) {
         if (!is_plain(f, fs::file_type::regular) || !(figure_file || is_temporary_name(f.path().filename().string()))) return false;
       }
       if (ec) return false;
-    } else if (!is_plain(e, fs::file_type::regular) || !(name == "index.md" || name == "data.h5" || is_temporary_name(name))) {
+    } else if (!is_plain(e, fs::file_type::regular) || !(name == "index.md" || name == "index.html" || name == "data.h5" || is_temporary_name(name))) {
       return false;
     }
   }
@@ -137,6 +137,7 @@ ReportBuild::ReportBuild(ReportBuildOptions options) : options_(std::move(option
     fs::remove(work_ / "data.h5", ec);
     fs::remove_all(work_ / "figures", ec);
     fs::remove(work_ / "index.md", ec);
+    fs::remove(work_ / "index.html", ec);
     write_text_file(work_ / kManifest, manifest_text(options_.kind, key_));
   }
 }

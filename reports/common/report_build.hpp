@@ -72,7 +72,7 @@ class ReportBuild : public StudySink {
   RegisteredTemporary registered_;  // the work folder, while it is one
 };
 
-// True if `dir` holds nothing but what a report or a sweep page writes: index.md, data.h5 and a
+// True if `dir` holds nothing but what a report or a sweep page writes: index.md, index.html, data.h5 and a
 // figures/ folder of .png, .svg, .gp and .dat files (and temporaries "<name>.tmp-PID" a killed run
 // left), all plain files and folders, no links. A folder with anything else in it is the user's.
 bool holds_only_report_files(const std::filesystem::path& dir);

@@ -1,5 +1,7 @@
 #include "reports/common/stored_report.hpp"
 
+#include "reports/common/html_page.hpp"
+#include "reports/common/summary.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/hdf5_file.hpp"
 #include "tools/io/input_error.hpp"
@@ -48,7 +50,9 @@ RenderSummary write_rendered_report(const std::filesystem::path& dir, const Rend
   } else {
     for (const auto& f : r.figures) summary.failures.push_back(f.name + ": gnuplot not found (apt-get install gnuplot-nox)");
   }
-  write_text_file(dir / "index.md", r.markdown);
+  const std::string markdown = with_contents(r.markdown);
+  write_text_file(dir / "index.md", markdown);
+  write_text_file(dir / "index.html", html_page(markdown));
   return summary;
 }
 

@@ -27,6 +27,7 @@ StoredReport load_stored_report(const std::filesystem::path& data_h5);
 struct RenderedReport {
   std::string markdown;
   std::vector<Figure> figures;
+  std::string headline_figure;  // the figure the front page shows for this report; empty: the first
 };
 
 // Appends a section's output to a rendered report.
@@ -36,7 +37,9 @@ void append(RenderedReport& r, const SectionOutput& s);
 // the settings are.
 std::string provenance_markdown(const StoredReport& s);
 
-// Writes dir/index.md (atomically) and draws the figures into dir/figures/. Figures gnuplot
+// Writes dir/index.md (with a line of links to its sections before the first, summary.hpp) and,
+// from the same text, dir/index.html (reports/common/html_page.hpp; both
+// atomically) and draws the figures into dir/figures/. Figures gnuplot
 // rejects (or all of them, without gnuplot) are listed in the summary, never silently dropped.
 RenderSummary write_rendered_report(const std::filesystem::path& dir, const RenderedReport& r);
 

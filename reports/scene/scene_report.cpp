@@ -419,6 +419,8 @@ RenderedReport render_scene_report(const StoredReport& stored) {
   append(out, speed_section(secs.at("speed")));
   append(out, frames_section(secs.at("frames")));
   out.markdown += provenance_markdown(stored);
+  for (const auto& f : out.figures)
+    if (f.name.rfind("still_", 0) == 0) out.headline_figure = f.name;  // the last still: the front page's picture
   return out;
 }
 

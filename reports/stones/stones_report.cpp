@@ -2,8 +2,11 @@
 // formatted from the stored section records.
 #include "reports/stones/stones_report.hpp"
 
+#include <algorithm>
+#include <map>
 #include <sstream>
 
+#include "reports/common/html_page.hpp"
 #include "reports/common/markdown.hpp"
 #include "reports/stones/report_sections.hpp"
 
@@ -23,6 +26,74 @@ std::string cost_table(const Record& secs) {
   }
   t.row({"total", fmt(wall, 3), fmt(cpu, 3)});
   return t.str();
+}
+
+// "[§N](#anchor)": a link to the level-2 heading that starts "N. " (empty when there is none).
+std::string section_link(const std::string& markdown, const std::string& number) {
+  for (const Heading& h : headings(markdown))
+    if (h.level == 2 && h.text.rfind(number + ". ", 0) == 0) return " ([§" + number + "](#" + h.anchor + "))";
+  return "";
+}
+
+// How many of the fits under `series` (one child per quantity and scheme, each with fit/verdict)
+// say each verdict, most frequent first: "20 converge at the expected order, 3 …".
+std::string verdict_counts(const Record& series) {
+  std::map<std::string, int> count;
+  int fits = 0;
+  for (const auto& name : series.child_names()) {
+    const Record& s = series.at(name);
+    if (!s.has_child("fit") || !s.at("fit").has_child("verdict")) continue;
+    ++count[s.at("fit").at("verdict").text("verdict")];
+    ++fits;
+  }
+  std::vector<std::pair<int, std::string>> order;
+  for (const auto& [v, n] : count) order.push_back({-n, v});
+  std::sort(order.begin(), order.end());
+  std::string out = std::to_string(fits) + " order fits: ";
+  for (std::size_t i = 0; i < order.size(); ++i) out += (i ? ", " : "") + std::to_string(-order[i].first) + " **" + order[i].second + "**";
+  return out;
+}
+
+// The report's findings, one bullet per question, each a stored verdict (or a count of them) and
+// a link to the section that shows it.
+std::string findings_markdown(const Record& secs, const std::string& md) {
+  std::ostringstream f;
+  f << "## Findings\n\n";
+  const Record& c = secs.at("convergence");
+  if (c.has_child("series"))
+    f << "* The real-time stepper against the reference, `" << c.text("law") << "` law: " << verdict_counts(c.at("series"))
+      << section_link(md, "1") << ".\n";
+  if (c.has_child("reference_tolerance") && c.at("reference_tolerance").has_child("drop"))
+    f << "* The reference's own error against its tolerance: " << verdict_markdown(c.at("reference_tolerance").at("drop"))
+      << section_link(md, "1") << ".\n";
+  const Record& wp = secs.at("work_precision");
+  if (wp.has_child("restarts") && wp.at("restarts").has_child("verdict"))
+    f << "* CVODE's restarts at a contact: **" << wp.at("restarts").at("verdict").text("verdict") << "**" << section_link(md, "2") << ".\n";
+  const Record& sw = secs.at("sweeps");
+  for (const auto& p : sw.child_names()) {
+    const Record& r = sw.at(p);
+    if (!r.has_child("comparison")) continue;
+    std::string line;
+    for (const auto& conv : r.at("comparison").child_names()) {
+      const Record& k = r.at("comparison").at(conv);
+      if (k.has_child("character")) line += (line.empty() ? "" : ", ") + conv + " convention **" + k.at("character").text("verdict") + "**";
+    }
+    if (!line.empty()) f << "* Bounce count against `" << p << "`: " << line << section_link(md, "3") << ".\n";
+  }
+  const Record& v = secs.at("validation");
+  if (v.has_child("conventions")) {
+    const Record& cv = v.at("conventions");
+    if (cv.has_child("paper_energy"))
+      f << "* The paper's equations as printed (`paper` convention), energy over the contacts: " << verdict_markdown(cv.at("paper_energy"))
+        << section_link(md, "5") << ".\n";
+    if (cv.has_child("physical_energy"))
+      f << "* The `physical` convention, energy over the contacts: **" << cv.at("physical_energy").text("verdict") << "**"
+        << section_link(md, "5") << ".\n";
+  }
+  if (v.has_child("ranking") && v.at("ranking").has_child("answer"))
+    f << "* Which water law and pressure distribution skip like a real stone: **" << v.at("ranking").at("answer").text("verdict") << "**"
+      << section_link(md, "6") << ".\n";
+  return f.str() + "\n";
 }
 
 }  // namespace
@@ -59,6 +130,11 @@ RenderedReport render_stones_report(const StoredReport& s) {
   append(out, ranking_section(secs.at("validation")));
   out.markdown += "## Cost of this report\n\n" + cost_table(secs) + "\n";
   out.markdown += provenance_markdown(s);
+  // The findings go before the first section, with links into the sections rendered above.
+  const std::size_t first = out.markdown.find("\n## ") + 1;
+  out.markdown.insert(first, findings_markdown(secs, out.markdown));
+  for (const auto& f : out.figures)
+    if (f.name == "conventions_energy") out.headline_figure = f.name;  // the front page's picture: the printed equations gain energy
   return out;
 }
 

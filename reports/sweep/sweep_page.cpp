@@ -6,6 +6,7 @@
 #include <numeric>
 #include <sstream>
 
+#include "reports/common/html_page.hpp"
 #include "reports/common/markdown.hpp"
 #include "reports/sweep/sweep_maps.hpp"
 #include "tools/io/atomic_file.hpp"
@@ -139,7 +140,9 @@ SweepPageSummary write_sweep_page(const std::filesystem::path& dir, const SweepD
   SweepPageSummary s;
   s.figures = figs.size();
   if (render) s.render = render_figures(dir, figs);
-  write_text_file(dir / "index.md", sweep_markdown(d, figs, source));
+  const std::string markdown = sweep_markdown(d, figs, source);
+  write_text_file(dir / "index.md", markdown);
+  write_text_file(dir / "index.html", html_page(markdown));
   return s;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// The page of a stored sweep (`stoneskip sweep-plot FILE.h5 --out DIR`): DIR/index.md (what was
+// The page of a stored sweep (`stoneskip sweep-plot FILE.h5 --out DIR`): DIR/index.md and the same page as index.html (what was
 // swept, outcomes and bounce counts per solver, agreement of the solvers, what the throws cost and
 // how the run scaled), DIR/data.h5 (/figures: every figure's tables and gnuplot script, so
 // `stoneskip plot DIR` redraws them) and DIR/figures/*.png|svg (sweep_maps.hpp).

@@ -142,7 +142,9 @@ int check_figures_match_their_tables(const fs::path& dir, int& computed) {
 // The checks every report must pass, on a report folder just written.
 void check_report(const fs::path& dir) {
   const std::string index = read_file(dir / "index.md");
+  const std::string page = read_file(dir / "index.html");
   BOOST_REQUIRE(!index.empty());
+  BOOST_TEST(page.rfind("<!DOCTYPE html>", 0) == 0);  // the same page for the browser, beside it
   // 1. Every figure the page names exists (PNG and SVG), and nothing is left of the build.
   const std::regex figure(R"(\]\(figures/([a-z0-9_]+)\.png\))");
   int figures = 0;
@@ -182,7 +184,7 @@ void check_report(const fs::path& dir) {
   }
   BOOST_TEST(checked > 5);
 
-  // 3. The page is a function of data.h5: rendering it again gives the same bytes.
+  // 3. The page is a function of data.h5: rendering it again gives the same bytes, in both forms.
   const auto r = run_stoneskip("report render " + dir.string());
   BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
   BOOST_TEST(read_file(dir / "index.md") == index);
@@ -192,6 +194,7 @@ void check_report(const fs::path& dir) {
   const int line_figures = check_figures_match_their_tables(dir, computed);
   BOOST_TEST_MESSAGE(dir.filename() << ": " << line_figures << " line figures checked against data.h5; " << computed
                                     << " series computed from no stored table");
+  BOOST_TEST(read_file(dir / "index.html") == page);
 }
 
 }  // namespace

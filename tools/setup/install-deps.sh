@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
 # Installs what stoneskip needs from Debian's archive, and nothing when all of it is present.
 # Safe to run again. Works as root or through sudo.
+#   bash tools/setup/install-deps.sh        what the build and the main job need
+#   bash tools/setup/install-deps.sh test   that, and what only the tests use (a browser: large)
 set -euo pipefail
+what="${1:-}"
+case "$what" in ""|test) ;; *) echo "usage: bash tools/setup/install-deps.sh [test]" >&2; exit 2 ;; esac
 
 packages=(
   build-essential cmake pkg-config git
@@ -11,6 +15,9 @@ packages=(
   ffmpeg                       # `stoneskip scene --movie` assembles the frames; ffprobe checks them in the tests
   openmpi-bin libopenmpi-dev   # `mpirun stoneskip sweep` (optional at build time: CMake says if absent)
 )
+if [ "$what" = test ]; then
+  packages+=(chromium)         # the report pages opened in headless Chromium (ctest stoneskip_browser; skipped without it)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -7,6 +7,7 @@
 #   OUT/captures/        the captures report: every shipped capture (index.md, figures/, data.h5)
 #   OUT/capture_scene/   a skipping capture through the coupled scene against both references
 #   OUT/movies/          the seed's scene as a movie (top view and an oblique 3-D view)
+#   OUT/index.html       the front page (and index.md): every report, the movie and the throws, what was found
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 out="${1:-$root/out}"
@@ -59,5 +60,8 @@ echo "== Wii Remote captures (synthetic, truth in cases/captures/*.truth.toml) =
 "$exe" capture validate cases/captures/skip_12ms_14revs.log --thrower finger_spin_rev_s=11.5 \
   --set environment.convention=paper --scene cases/captures/pond_two_way.toml --out "$out/capture_scene"
 
+echo "== The front page: every report, the movie and the throws, with what was found =="
+"$exe" report front "$out"
+
 echo
-echo "Reports: $out/waves/index.md, $out/stones/index.md, $out/scene/index.md, $out/captures/index.md, $out/capture_scene/index.md"
+echo "Open $out/index.html in a browser (or read $out/index.md): it links every report, the movie and the throws."

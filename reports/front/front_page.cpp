@@ -1,0 +1,218 @@
+#include "reports/front/front_page.hpp"
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "reports/common/html_page.hpp"
+#include "reports/common/markdown.hpp"
+#include "reports/common/summary.hpp"
+#include "tools/io/atomic_file.hpp"
+#include "tools/io/hdf5_file.hpp"
+#include "tools/io/input_error.hpp"
+
+namespace stoneskip {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The order a reader meets the reports in: the water, the stone, the two together, the captures.
+int kind_rank(const std::string& kind) {
+  static const std::map<std::string, int> rank{{"waves", 0}, {"stones", 1}, {"scene", 2}, {"captures", 3}};
+  const auto it = rank.find(kind);
+  return it == rank.end() ? 9 : it->second;
+}
+
+std::string first_heading(const std::string& markdown) {
+  for (const Heading& h : headings(markdown))
+    if (h.level == 1) return h.text;
+  return "";
+}
+
+bool is_file(const fs::path& p) {
+  std::error_code ec;
+  return fs::is_regular_file(fs::symlink_status(p, ec)) && !ec;
+}
+
+std::vector<fs::path> sorted_entries(const fs::path& dir) {
+  std::vector<fs::path> v;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) v.push_back(e.path());
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+std::string relative_name(const fs::path& p, const fs::path& out) { return p.lexically_relative(out).generic_string(); }
+
+FrontThrow read_throw(const fs::path& file, const fs::path& out) {
+  FrontThrow t;
+  t.file = relative_name(file, out);
+  Hdf5Reader in(file);
+  const H5Group& root = in.root();
+  t.title = root.has_attr("title") ? root.attr_string("title") : "";
+  t.case_file = root.has_attr("case_file") ? root.attr_string("case_file") : "";
+  for (const std::string solver : {"realtime", "reference"}) {
+    if (!root.has(solver)) continue;
+    const H5Group g = root.open_group(solver);
+    FrontThrowRun r;
+    r.solver = solver;
+    r.outcome = g.has_attr("outcome") ? g.attr_string("outcome") : "";
+    r.bounces = g.has_attr("bounces") ? g.attr_double("bounces") : 0;
+    r.distance_m = g.has_attr("distance_m") ? g.attr_double("distance_m") : 0;
+    t.runs.push_back(r);
+  }
+  return t;
+}
+
+// "**consistent** ×3 · **does not converge** · …": each verdict phrase of the findings once, with
+// how often it is said, in the order first said.
+std::string verdict_line(const std::vector<std::string>& findings) {
+  std::vector<std::string> order;
+  std::map<std::string, int> count;
+  for (const auto& f : findings)
+    for (const auto& v : verdict_phrases(f))
+      if (count[v]++ == 0) order.push_back(v);
+  std::string line;
+  for (const auto& v : order) line += (line.empty() ? "" : " · ") + ("**" + v + "**") + (count[v] > 1 ? " ×" + std::to_string(count[v]) : "");
+  // Findings without a bold verdict (the captures' count of verdicts): their first sentence.
+  if (line.empty() && !findings.empty()) line = findings.front().substr(0, findings.front().find(". "));
+  if (!line.empty() && line.back() == '.') line.pop_back();
+  return line;
+}
+
+}  // namespace
+
+FrontPageInput read_front_page_input(const fs::path& out, const std::function<RenderedReport(const StoredReport&)>& render) {
+  FrontPageInput in;
+  for (const fs::path& dir : sorted_entries(out)) {
+    if (!is_file(dir / "data.h5")) continue;
+    StoredReport stored;
+    try {
+      stored = load_stored_report(dir / "data.h5");
+    } catch (const InputError&) {
+      continue;  // a sweep page or another file: not a report
+    }
+    const RenderedReport rendered = render(stored);
+    FrontReport r;
+    r.folder = relative_name(dir, out);
+    r.kind = stored.kind;
+    r.title = first_heading(rendered.markdown);
+    r.code_version = stored.code_version;
+    r.created_utc = stored.created_utc;
+    r.findings = report_findings(rendered.markdown);
+    std::vector<std::string> candidates;
+    if (!rendered.headline_figure.empty()) candidates.push_back(rendered.headline_figure);
+    for (const auto& f : rendered.figures) candidates.push_back(f.name);
+    for (const auto& name : candidates)
+      if (is_file(dir / "figures" / (name + ".png"))) {
+        r.picture = relative_name(dir / "figures" / (name + ".png"), out);
+        break;
+      }
+    in.reports.push_back(std::move(r));
+  }
+  if (in.reports.empty()) throw_input_error(out.string(), 0, "", "holds no report (no sub-folder with a report's data.h5): run the main job first");
+  std::stable_sort(in.reports.begin(), in.reports.end(),
+                   [](const FrontReport& a, const FrontReport& b) { return kind_rank(a.kind) < kind_rank(b.kind); });
+  std::string scene_picture;
+  for (const auto& r : in.reports)
+    if (r.kind == "scene" && scene_picture.empty()) scene_picture = r.picture;
+  for (const fs::path& f : sorted_entries(out / "movies")) {
+    if (f.extension() != ".mp4" || !is_file(f)) continue;
+    FrontMovie m;
+    m.file = relative_name(f, out);
+    m.size_mb = static_cast<double>(fs::file_size(f)) / 1e6;
+    for (const fs::path& p : sorted_entries(out / "movies"))
+      if (p.extension() == ".png" && p.stem().string().rfind(f.stem().string(), 0) == 0 && is_file(p)) {
+        m.picture = relative_name(p, out);
+        break;
+      }
+    if (m.picture.empty()) m.picture = scene_picture;
+    in.movies.push_back(m);
+  }
+  for (const fs::path& f : sorted_entries(out / "throws"))
+    if (f.extension() == ".h5" && is_file(f)) in.throws.push_back(read_throw(f, out));
+  return in;
+}
+
+std::string front_page_markdown(const FrontPageInput& in) {
+  std::ostringstream md;
+  md << "# stoneskip: what the main job found\n\n"
+     << "stoneskip verifies and validates Lee & Baek's (2013) real-time stone-skipping model: the water surface against "
+        "its exact solution, the stone against a high-accuracy reference (SUNDIALS CVODE), both against experiments, and "
+        "Wii Remote captures as inputs. This page links everything the main job wrote into this folder. Each line below is "
+        "read from the reports' `data.h5`; each report opens with its findings and links to its sections.\n\n";
+  // The reports, each with its verdicts in one line and a picture.
+  md << "## The reports\n\n";
+  // A title two reports share (the captures and the capture through the scene) is told apart by folder.
+  std::map<std::string, int> titles;
+  for (const auto& r : in.reports) ++titles[r.title];
+  auto name = [&](const FrontReport& r) {
+    return (r.title.empty() ? r.folder : r.title) + (titles[r.title] > 1 ? " (`" + r.folder + "/`)" : "");
+  };
+  for (const auto& r : in.reports) {
+    md << "### [" << name(r) << "](" << r.folder << "/index.md)\n\n";
+    const std::string verdicts = verdict_line(r.findings);
+    md << "**Verdicts:** " << (verdicts.empty() ? std::string("none stated") : verdicts) << ". "
+       << "Folder `" << r.folder << "/` (`" << r.kind << "` report, data written " << r.created_utc << "): "
+       << "[page](" << r.folder << "/index.md), `data.h5`, `figures/`.\n\n";
+    if (!r.picture.empty()) md << "![" << r.title << "](" << r.picture << ")\n\n";
+  }
+  if (!in.movies.empty()) {
+    md << "## The movie\n\n";
+    for (const auto& m : in.movies) {
+      md << "* [`" << m.file << "`](" << m.file << ") (" << fmt(m.size_mb, 3) << " MB): the scene as a movie.\n";
+    }
+    md << "\n";
+    if (!in.movies.front().picture.empty()) md << "![A still of the scene](" << in.movies.front().picture << ")\n\n";
+  }
+  if (!in.throws.empty()) {
+    md << "## The shipped throws\n\n"
+       << "Each shipped case thrown by the real-time model and, where the case asks, the CVODE reference; the `.h5` holds "
+          "the trajectory and every contact (reports/README.md describes it).\n\n";
+    MarkdownTable t({"file", "throw", "case", "real-time: bounces, distance (m), outcome", "reference: bounces, distance (m), outcome"});
+    for (const auto& th : in.throws) {
+      std::map<std::string, std::string> cell{{"realtime", "–"}, {"reference", "–"}};
+      for (const auto& r : th.runs) cell[r.solver] = fmt(r.bounces) + ", " + fmt(r.distance_m, 3) + ", " + r.outcome;
+      t.row({"[`" + fs::path(th.file).filename().string() + "`](" + th.file + ")", th.title, th.case_file.empty() ? "–" : "`" + th.case_file + "`",
+             cell["realtime"], cell["reference"]});
+    }
+    md << t.str() << "\n";
+  }
+  // What we found: each report's findings as it states them.
+  md << "## What we found\n\n";
+  for (const auto& r : in.reports) {
+    md << "### " << name(r) << "\n\n";
+    if (r.findings.empty()) {
+      md << "The report states no findings list; [read it](" << r.folder << "/index.md).\n\n";
+      continue;
+    }
+    for (std::string f : r.findings) {
+      // A link into the report's own page ("(#2-…)") points into that page from here.
+      for (std::size_t at = f.find("](#"); at != std::string::npos; at = f.find("](#", at + 2))
+        f.insert(at + 2, r.folder + "/index.md");
+      md << "* " << f << "\n";
+    }
+    md << "\n[The whole report](" << r.folder << "/index.md).\n\n";
+  }
+  md << "## Provenance\n\n";
+  std::set<std::string> versions;
+  for (const auto& r : in.reports) versions.insert(r.code_version);
+  md << "* Reports made by: ";
+  bool first = true;
+  for (const auto& v : versions) md << (first ? "" : "; ") << v, first = false;
+  md << ".\n* This page is made by `stoneskip report front DIR` from the files in DIR alone; run it again after "
+        "any report is rebuilt.\n";
+  return md.str();
+}
+
+void write_front_page(const fs::path& out, const std::string& markdown) {
+  check_output_destination(out / "index.md");
+  check_output_destination(out / "index.html");
+  const std::string page = with_contents(markdown);
+  write_text_file(out / "index.md", page);
+  write_text_file(out / "index.html", html_page(page));
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,69 @@
+// The front page says what the reports say, no more. Oracle: findings written here by hand as a
+// report's opening would state them; the page must carry each verdict phrase once with its count,
+// link each report, movie and throw, and point a finding's in-page link into its report.
+#include <boost/test/unit_test.hpp>
+
+#include <string>
+
+#include "reports/front/front_page.hpp"
+
+using namespace stoneskip;
+
+namespace {
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+FrontPageInput two_reports() {
+  FrontPageInput in;
+  FrontReport w;
+  w.folder = "waves";
+  w.kind = "waves";
+  w.title = "Water surface verification";
+  w.findings = {"`five_point`: **consistent**; space order 2 (**converges at the expected order**)",
+                "`paper_eq11`: **inconsistent** ([§1](#1-consistency))", "`nine_point_half`: **consistent**"};
+  w.picture = "waves/figures/convergence.png";
+  FrontReport c;
+  c.folder = "captures";
+  c.kind = "captures";
+  c.title = "Wii Remote captures";
+  c.findings = {"9 capture(s): 1 usable, 7 usable with caveats, 1 unusable."};
+  in.reports = {w, c};
+  in.movies = {FrontMovie{"movies/seed.mp4", 0.3, "scene/figures/still.png"}};
+  FrontThrow t;
+  t.file = "throws/paper_8ms_spin.h5";
+  t.title = "Lee & Baek 8 m/s throw, with spin";
+  t.case_file = "cases/paper_8ms_spin.toml";
+  t.runs = {FrontThrowRun{"realtime", "sank", 7, 4.25}, FrontThrowRun{"reference", "sank", 1, 1.24}};
+  in.throws = {t};
+  return in;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(front_page_markdown_tests)
+
+BOOST_AUTO_TEST_CASE(each_report_gets_its_verdicts_in_one_line_with_counts) {
+  const std::string md = front_page_markdown(two_reports());
+  BOOST_TEST(has(md, "### [Water surface verification](waves/index.md)"));
+  BOOST_TEST(has(md, "**Verdicts:** **consistent** ×2 · **converges at the expected order** · **inconsistent**."));
+  BOOST_TEST(has(md, "![Water surface verification](waves/figures/convergence.png)"));
+  // Findings without bold verdicts give their first sentence.
+  BOOST_TEST(has(md, "### [Wii Remote captures](captures/index.md)\n\n**Verdicts:** 9 capture(s): 1 usable, 7 usable with caveats, 1 unusable. "));
+}
+
+BOOST_AUTO_TEST_CASE(what_we_found_repeats_the_findings_with_links_into_the_reports) {
+  const std::string md = front_page_markdown(two_reports());
+  const std::string found = md.substr(md.find("## What we found"));
+  BOOST_TEST(has(found, "* `paper_eq11`: **inconsistent** ([§1](waves/index.md#1-consistency))\n"));
+  BOOST_TEST(has(found, "* 9 capture(s): 1 usable, 7 usable with caveats, 1 unusable.\n"));
+}
+
+BOOST_AUTO_TEST_CASE(the_movie_and_every_throw_are_linked) {
+  const std::string md = front_page_markdown(two_reports());
+  BOOST_TEST(has(md, "[`movies/seed.mp4`](movies/seed.mp4) (0.3 MB)"));
+  BOOST_TEST(has(md, "![A still of the scene](scene/figures/still.png)"));
+  BOOST_TEST(has(md, "| [`paper_8ms_spin.h5`](throws/paper_8ms_spin.h5) | Lee & Baek 8 m/s throw, with spin | `cases/paper_8ms_spin.toml` | "
+                     "7, 4.25, sank | 1, 1.24, sank |"));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
