@@ -1,55 +1,61 @@
 #include "model/water/leapfrog_kernel.hpp"
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <algorithm>
 #include <cstring>
 #include <type_traits>
+#include <utility>
 
-// 64-byte vectors are passed between always-inline helpers only; GCC's note about the ABI of
-// such values in non-AVX-512 code does not apply to anything that crosses a call.
+// Vectors wider than the baseline are passed between always-inline helpers only; GCC's note about
+// the ABI of such values does not apply to anything that crosses a call.
 #pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace stoneskip {
 namespace {
 
-constexpr int kVectorBytes = 64;
 // Software prefetch distance in values: 1 KB (double) ahead of the row being read and written.
 // Measured: +10–20 % in cache at 500², a few % from memory at 2048² (the hardware prefetchers do
 // most of it).
 #define STONESKIP_PF 128
 
-template <class Real>
+// Vectors of `Bytes` bytes (16, 32 or 64); Bytes = 0 is the scalar path (no vector type is used).
+template <class Real, int Bytes>
 struct Simd {
-  typedef Real V __attribute__((vector_size(kVectorBytes)));
+  static constexpr int bytes = Bytes > 0 ? Bytes : 16;
+  typedef Real V __attribute__((vector_size(bytes)));
   using Int = std::conditional_t<std::is_same_v<Real, double>, std::int64_t, std::int32_t>;
-  typedef Int I __attribute__((vector_size(kVectorBytes)));
-  static constexpr int lanes = kVectorBytes / sizeof(Real);
+  typedef Int I __attribute__((vector_size(bytes)));
+  static constexpr int lanes = bytes / sizeof(Real);
 };
 
-template <class Real>
-[[gnu::always_inline]] inline typename Simd<Real>::V load(const Real* p) {
-  typename Simd<Real>::V v;
+template <class V, class Real>
+[[gnu::always_inline]] inline V load(const Real* p) {
+  V v;
   std::memcpy(&v, p, sizeof v);  // an unaligned vector load
   return v;
 }
 
-// z[k − 1] and z[k + 1] of an aligned vector z[k] from its aligned neighbours z[k − L], z[k + L].
-template <class Real>
-[[gnu::always_inline]] inline typename Simd<Real>::V shift_in_left(typename Simd<Real>::V prev, typename Simd<Real>::V cur) {
-  using I = typename Simd<Real>::I;
-  if constexpr (Simd<Real>::lanes == 8)
-    return __builtin_shuffle(prev, cur, I{7, 8, 9, 10, 11, 12, 13, 14});
-  else
-    return __builtin_shuffle(prev, cur, I{15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30});
+// The shuffle mask {first, first + 1, …} of a vector of L lanes, and {k ^ h}.
+template <class I, long First, std::size_t... k>
+[[gnu::always_inline]] inline I iota_mask(std::index_sequence<k...>) {
+  return I{static_cast<decltype(I{}[0])>(First + static_cast<long>(k))...};
 }
-template <class Real>
-[[gnu::always_inline]] inline typename Simd<Real>::V shift_in_right(typename Simd<Real>::V cur, typename Simd<Real>::V next) {
-  using I = typename Simd<Real>::I;
-  if constexpr (Simd<Real>::lanes == 8)
-    return __builtin_shuffle(cur, next, I{1, 2, 3, 4, 5, 6, 7, 8});
-  else
-    return __builtin_shuffle(cur, next, I{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16});
+template <class I, long H, std::size_t... k>
+[[gnu::always_inline]] inline I xor_mask(std::index_sequence<k...>) {
+  return I{static_cast<decltype(I{}[0])>(static_cast<long>(k) ^ H)...};
+}
+
+// z[k − 1] and z[k + 1] of an aligned vector z[k] from its aligned neighbours z[k − L], z[k + L].
+template <class S>
+[[gnu::always_inline]] inline typename S::V shift_in_left(typename S::V prev, typename S::V cur) {
+  return __builtin_shuffle(prev, cur, iota_mask<typename S::I, S::lanes - 1>(std::make_index_sequence<S::lanes>()));
+}
+template <class S>
+[[gnu::always_inline]] inline typename S::V shift_in_right(typename S::V cur, typename S::V next) {
+  return __builtin_shuffle(cur, next, iota_mask<typename S::I, 1>(std::make_index_sequence<S::lanes>()));
 }
 
 // One update, on a vector or a scalar alike (so that both round the same): zc = z, orth and diag
@@ -71,57 +77,55 @@ template <class Real, class T, bool Diagonal, bool Defect, bool IncrementForm>
 
 // The activity of one vector of results r over the old values zc: the bit patterns of |r| and
 // |r − zc| (sign cleared), whose integer order is the numbers' order with NaN above ∞ above all.
-template <class Real>
-[[gnu::always_inline]] inline void track(typename Simd<Real>::V r, typename Simd<Real>::V zc, typename Simd<Real>::I& vmax) {
-  using S = Simd<Real>;
+template <class S>
+[[gnu::always_inline]] inline void track(typename S::V r, typename S::V zc, typename S::I& vmax) {
   using I = typename S::I;
-  const I sign = (I{} + 1) << (8 * sizeof(Real) - 1);
+  const I sign = (I{} + 1) << (8 * sizeof(typename S::Int) - 1);
   const I a = reinterpret_cast<I>(r) & ~sign, b = reinterpret_cast<I>(r - zc) & ~sign;
   const I ab = a > b ? a : b;
   vmax = ab > vmax ? ab : vmax;
 }
 
 // The largest lane, by halving shuffles.
-template <class Real>
-[[gnu::always_inline]] inline typename Simd<Real>::Int lane_max(typename Simd<Real>::I v) {
-  using I = typename Simd<Real>::I;
-  auto fold = [](I x, I y) { return x > y ? x : y; };
-  if constexpr (Simd<Real>::lanes == 16) {
-    v = fold(v, __builtin_shuffle(v, I{8, 9, 10, 11, 12, 13, 14, 15, 0, 1, 2, 3, 4, 5, 6, 7}));
-    v = fold(v, __builtin_shuffle(v, I{4, 5, 6, 7, 0, 1, 2, 3, 12, 13, 14, 15, 8, 9, 10, 11}));
-    v = fold(v, __builtin_shuffle(v, I{2, 3, 0, 1, 6, 7, 4, 5, 10, 11, 8, 9, 14, 15, 12, 13}));
-    v = fold(v, __builtin_shuffle(v, I{1, 0, 3, 2, 5, 4, 7, 6, 9, 8, 11, 10, 13, 12, 15, 14}));
-  } else {
-    v = fold(v, __builtin_shuffle(v, I{4, 5, 6, 7, 0, 1, 2, 3}));
-    v = fold(v, __builtin_shuffle(v, I{2, 3, 0, 1, 6, 7, 4, 5}));
-    v = fold(v, __builtin_shuffle(v, I{1, 0, 3, 2, 5, 4, 7, 6}));
-  }
+template <class S>
+[[gnu::always_inline]] inline typename S::Int lane_max(typename S::I v) {
+  using I = typename S::I;
+  auto fold = [&]<long H>() __attribute__((always_inline)) {
+    if constexpr (H >= 1 && H < S::lanes) {
+      const I u = __builtin_shuffle(v, xor_mask<I, H>(std::make_index_sequence<S::lanes>()));
+      v = v > u ? v : u;
+    }
+  };
+  fold.template operator()<8>();
+  fold.template operator()<4>();
+  fold.template operator()<2>();
+  fold.template operator()<1>();
   return v[0];
 }
 
 // activity[q] = max(activity[q], the value whose bit pattern is m).
-template <class Real>
-[[gnu::always_inline]] inline void raise(Real* activity, typename Simd<Real>::Int m) {
-  using Int = typename Simd<Real>::Int;
+template <class Real, class Int>
+[[gnu::always_inline]] inline void raise(Real* activity, Int m) {
   Int old;
   std::memcpy(&old, activity, sizeof old);
   old &= ~(Int(1) << (8 * sizeof(Real) - 1));  // a start of −0 reads as 0
   if (m > old) std::memcpy(activity, &m, sizeof m);
 }
 
-// The update of model/README.md §2.1 for one row segment. Two vector paths compute the same expression from
-// the same operands, so they round alike: where the segment, z⁻ and the row stride are aligned to
-// a vector (the field's interior rows, tiles of a multiple of 8 cells), each row's vectors are
-// loaded aligned once and the ±1 neighbours are shuffled out of adjacent vectors (an unaligned
-// load straddles two cache lines, and a 9-point update needs six of them); elsewhere unaligned
-// loads. The scalar tail repeats the expression term for term. With `Activity`, the segment is
-// made of chunks of `chunk` cells, a multiple of the vector length (or the whole segment), and
-// the bit pattern of each chunk's largest max(|z⁺|, |z⁺ − z|) raises activity[chunk index].
-template <class Real, bool Diagonal, bool Defect, bool Activity>
+// The update of model/README.md §2.1 for one row segment, with vectors of `Bytes` bytes (none
+// when 0). Two vector paths compute the same expression from the same operands, so they round
+// alike: where the segment, z⁻ and the row stride are aligned to a vector (the field's interior
+// rows, tiles of a multiple of 8 cells), each row's vectors are loaded aligned once and the ±1
+// neighbours are shuffled out of adjacent vectors (an unaligned load straddles two cache lines,
+// and a 9-point update needs six of them); elsewhere unaligned loads. The scalar tail repeats the
+// expression term for term. With `Activity`, the segment is made of chunks of `chunk` cells, a
+// multiple of the vector length (or the whole segment), and the bit pattern of each chunk's
+// largest max(|z⁺|, |z⁺ − z|) raises activity[chunk index].
+template <int Bytes, class Real, bool Diagonal, bool Defect, bool Activity>
 [[gnu::always_inline]] inline void row_body(Real* __restrict zp, const Real* __restrict z, std::ptrdiff_t n,
                                             std::ptrdiff_t w, const LeapfrogWeights<Real>& c, std::ptrdiff_t chunk,
                                             Real* activity) {
-  using S = Simd<Real>;
+  using S = Simd<Real, Bytes>;
   using V = typename S::V;
   using I = typename S::I;
   using Int = typename S::Int;
@@ -130,60 +134,62 @@ template <class Real, bool Diagonal, bool Defect, bool Activity>
   constexpr bool increment_form = std::is_same_v<Real, float>;  // see leapfrog_kernel.hpp
   std::ptrdiff_t k = 0;
   I vmax{};
-  // After each vector: hand a finished chunk's maximum over (a countdown, not a division).
-  std::ptrdiff_t left_in_chunk = chunk;
-  Real* chunk_activity = activity;
-  auto chunk_end = [&] {
-    if constexpr (Activity) {
-      left_in_chunk -= L;
-      if (left_in_chunk == 0) {
-        raise<Real>(chunk_activity++, lane_max<Real>(vmax));
-        vmax = I{};
-        left_in_chunk = chunk;
-      }
-    }
-  };
-  const bool aligned = reinterpret_cast<std::uintptr_t>(z) % kVectorBytes == 0 &&
-                       reinterpret_cast<std::uintptr_t>(zp) % kVectorBytes == 0 && w % L == 0;
-  if (aligned && n >= L) {
-    // Rows above and below enter only as up + dn (z[k ± w] in Σ_orth, z[k ± w ± 1] in Σ_diag), and
-    // a shift of a sum is the sum of the shifts: Σ_diag = shifted-left(ud) + shifted-right(ud), two
-    // shuffles where four would do the rows one by one.
-    V mid0 = load(z - L), mid1 = load(z);
-    V ud0 = load(z - w - L) + load(z + w - L), ud1 = load(z - w) + load(z + w);
-    for (; k + L <= n; k += L) {
-      __builtin_prefetch(z + k + w + STONESKIP_PF, 0, 3);
-      __builtin_prefetch(zp + k + STONESKIP_PF, 1, 3);
-      const V mid2 = load(z + k + L), ud2 = load(z + k - w + L) + load(z + k + w + L);
-      const V zc = mid1;
-      const V orth = (shift_in_left<Real>(mid0, mid1) + shift_in_right<Real>(mid1, mid2)) + ud1;
-      V diag{};
-      if constexpr (Diagonal) diag = shift_in_left<Real>(ud0, ud1) + shift_in_right<Real>(ud1, ud2);
-      const V r = update<Real, V, Diagonal, Defect, increment_form>(zc, orth, diag, load(zp + k), wc, wo, wd, wp, wx);
-      std::memcpy(zp + k, &r, sizeof r);
+  if constexpr (Bytes > 0) {
+    // After each vector: hand a finished chunk's maximum over (a countdown, not a division).
+    std::ptrdiff_t left_in_chunk = chunk;
+    Real* chunk_activity = activity;
+    auto chunk_end = [&] {
       if constexpr (Activity) {
-        track<Real>(r, zc, vmax);
-        chunk_end();
+        left_in_chunk -= L;
+        if (left_in_chunk == 0) {
+          raise<Real, Int>(chunk_activity++, lane_max<S>(vmax));
+          vmax = I{};
+          left_in_chunk = chunk;
+        }
       }
-      mid0 = mid1;
-      mid1 = mid2;
-      ud0 = ud1;
-      ud1 = ud2;
-    }
-  } else {
-    for (; k + L <= n; k += L) {
-      __builtin_prefetch(z + k + w + STONESKIP_PF, 0, 3);
-      __builtin_prefetch(zp + k + STONESKIP_PF, 1, 3);
-      const V zc = load(z + k);
-      const V orth = (load(z + k - 1) + load(z + k + 1)) + (load(z + k - w) + load(z + k + w));
-      V diag{};
-      if constexpr (Diagonal)
-        diag = (load(z + k - w - 1) + load(z + k + w - 1)) + (load(z + k - w + 1) + load(z + k + w + 1));
-      const V r = update<Real, V, Diagonal, Defect, increment_form>(zc, orth, diag, load(zp + k), wc, wo, wd, wp, wx);
-      std::memcpy(zp + k, &r, sizeof r);
-      if constexpr (Activity) {
-        track<Real>(r, zc, vmax);
-        chunk_end();
+    };
+    const bool aligned = reinterpret_cast<std::uintptr_t>(z) % Bytes == 0 &&
+                         reinterpret_cast<std::uintptr_t>(zp) % Bytes == 0 && w % L == 0;
+    if (aligned && n >= L) {
+      // Rows above and below enter only as up + dn (z[k ± w] in Σ_orth, z[k ± w ± 1] in Σ_diag), and
+      // a shift of a sum is the sum of the shifts: Σ_diag = shifted-left(ud) + shifted-right(ud), two
+      // shuffles where four would do the rows one by one.
+      V mid0 = load<V>(z - L), mid1 = load<V>(z);
+      V ud0 = load<V>(z - w - L) + load<V>(z + w - L), ud1 = load<V>(z - w) + load<V>(z + w);
+      for (; k + L <= n; k += L) {
+        __builtin_prefetch(z + k + w + STONESKIP_PF, 0, 3);
+        __builtin_prefetch(zp + k + STONESKIP_PF, 1, 3);
+        const V mid2 = load<V>(z + k + L), ud2 = load<V>(z + k - w + L) + load<V>(z + k + w + L);
+        const V zc = mid1;
+        const V orth = (shift_in_left<S>(mid0, mid1) + shift_in_right<S>(mid1, mid2)) + ud1;
+        V diag{};
+        if constexpr (Diagonal) diag = shift_in_left<S>(ud0, ud1) + shift_in_right<S>(ud1, ud2);
+        const V r = update<Real, V, Diagonal, Defect, increment_form>(zc, orth, diag, load<V>(zp + k), wc, wo, wd, wp, wx);
+        std::memcpy(zp + k, &r, sizeof r);
+        if constexpr (Activity) {
+          track<S>(r, zc, vmax);
+          chunk_end();
+        }
+        mid0 = mid1;
+        mid1 = mid2;
+        ud0 = ud1;
+        ud1 = ud2;
+      }
+    } else {
+      for (; k + L <= n; k += L) {
+        __builtin_prefetch(z + k + w + STONESKIP_PF, 0, 3);
+        __builtin_prefetch(zp + k + STONESKIP_PF, 1, 3);
+        const V zc = load<V>(z + k);
+        const V orth = (load<V>(z + k - 1) + load<V>(z + k + 1)) + (load<V>(z + k - w) + load<V>(z + k + w));
+        V diag{};
+        if constexpr (Diagonal)
+          diag = (load<V>(z + k - w - 1) + load<V>(z + k + w - 1)) + (load<V>(z + k - w + 1) + load<V>(z + k + w + 1));
+        const V r = update<Real, V, Diagonal, Defect, increment_form>(zc, orth, diag, load<V>(zp + k), wc, wo, wd, wp, wx);
+        std::memcpy(zp + k, &r, sizeof r);
+        if constexpr (Activity) {
+          track<S>(r, zc, vmax);
+          chunk_end();
+        }
       }
     }
   }
@@ -208,75 +214,293 @@ template <class Real, bool Diagonal, bool Defect, bool Activity>
     }
   }
   if constexpr (Activity) {
-    if (n % chunk != 0 || n % L != 0) {  // the last chunk is unfinished: its vectors and its tail
-      const Int m = lane_max<Real>(vmax);
-      raise<Real>(activity + (n - 1) / chunk, m > smax ? m : smax);
+    if constexpr (Bytes > 0) {
+      if (n % chunk != 0 || n % L != 0) {  // the last chunk is unfinished: its vectors and its tail
+        const Int m = lane_max<S>(vmax);
+        raise<Real, Int>(activity + (n - 1) / chunk, m > smax ? m : smax);
+      }
+    } else {
+      raise<Real, Int>(activity, smax);  // the scalar path is called chunk by chunk
     }
   }
 }
 
-template <class Real, bool Diagonal, bool Defect>
+template <int Bytes, class Real, bool Diagonal, bool Defect>
 [[gnu::always_inline]] inline void block_body(Real* zp, const Real* z, std::ptrdiff_t n, std::ptrdiff_t rows,
                                               std::ptrdiff_t w, const LeapfrogWeights<Real>& c) {
   for (std::ptrdiff_t r = 0; r < rows; ++r)
-    row_body<Real, Diagonal, Defect, false>(zp + r * w, z + r * w, n, w, c, n, nullptr);
+    row_body<Bytes, Real, Diagonal, Defect, false>(zp + r * w, z + r * w, n, w, c, n, nullptr);
 }
 
-template <class Real, bool Diagonal, bool Defect>
+template <int Bytes, class Real, bool Diagonal, bool Defect>
 [[gnu::always_inline]] inline void chunks_body(Real* zp, const Real* z, std::ptrdiff_t n, std::ptrdiff_t w,
                                                const LeapfrogWeights<Real>& c, std::ptrdiff_t chunk, Real* activity) {
-  if (chunk % Simd<Real>::lanes == 0 || chunk >= n) {  // chunk boundaries fall between vectors
-    row_body<Real, Diagonal, Defect, true>(zp, z, n, w, c, chunk, activity);
+  if (Bytes > 0 && (chunk % Simd<Real, Bytes>::lanes == 0 || chunk >= n)) {  // chunk boundaries fall between vectors
+    row_body<Bytes, Real, Diagonal, Defect, true>(zp, z, n, w, c, chunk, activity);
     return;
   }
   for (std::ptrdiff_t k0 = 0, q = 0; k0 < n; k0 += chunk, ++q) {
     const std::ptrdiff_t m = std::min(chunk, n - k0);
-    row_body<Real, Diagonal, Defect, true>(zp + k0, z + k0, m, w, c, m, activity + q);
+    row_body<Bytes, Real, Diagonal, Defect, true>(zp + k0, z + k0, m, w, c, m, activity + q);
   }
 }
 
-// Calls f.operator()<Diagonal, Defect>() with the stencil's shape as compile-time flags.
-template <class F>
-[[gnu::always_inline]] inline void with_shape(bool diagonal, bool defect, F&& f) {
-  if (diagonal)
-    defect ? f.template operator()<true, true>() : f.template operator()<true, false>();
-  else
-    defect ? f.template operator()<false, true>() : f.template operator()<false, false>();
+// Calls FN<BYTES, REAL, Diagonal, Defect>(ARGS...) with the stencil's shape as compile-time flags
+// (a macro, not a helper taking a lambda: a lambda defined under a target pragma could not be
+// inlined into a helper compiled without it).
+#define STONESKIP_WITH_SHAPE(FN, BYTES, REAL, ...)                 \
+  do {                                                           \
+    if (diagonal) {                                              \
+      if (c.defect != 0) FN<BYTES, REAL, true, true>(__VA_ARGS__);   \
+      else FN<BYTES, REAL, true, false>(__VA_ARGS__);                \
+    } else {                                                     \
+      if (c.defect != 0) FN<BYTES, REAL, false, true>(__VA_ARGS__);  \
+      else FN<BYTES, REAL, false, false>(__VA_ARGS__);               \
+    }                                                            \
+  } while (false)
+
+// One path's entry points.
+struct KernelPath {
+  SimdPath path;
+  void (*block_d)(double*, const double*, std::ptrdiff_t, std::ptrdiff_t, std::ptrdiff_t, const LeapfrogWeights<double>&, bool);
+  void (*block_f)(float*, const float*, std::ptrdiff_t, std::ptrdiff_t, std::ptrdiff_t, const LeapfrogWeights<float>&, bool);
+  void (*chunks_d)(double*, const double*, std::ptrdiff_t, std::ptrdiff_t, const LeapfrogWeights<double>&, bool,
+                   std::ptrdiff_t, double*);
+  void (*chunks_f)(float*, const float*, std::ptrdiff_t, std::ptrdiff_t, const LeapfrogWeights<float>&, bool,
+                   std::ptrdiff_t, float*);
+};
+
+}  // namespace
+
+// The four entry points of one path, compiled for its instruction set (the pragma before the
+// expansion); NAME is the path's namespace, BYTES its vector width.
+#define STONESKIP_KERNEL_PATH(NAME, BYTES)                                                                           \
+  namespace NAME {                                                                                                   \
+  void block_d(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,                \
+               const LeapfrogWeights<double>& c, bool diagonal) {                                                    \
+        STONESKIP_WITH_SHAPE(block_body, BYTES, double, zp, z, n, rows, w, c);                                           \
+  }                                                                                                                  \
+  void block_f(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,                  \
+               const LeapfrogWeights<float>& c, bool diagonal) {                                                     \
+        STONESKIP_WITH_SHAPE(block_body, BYTES, float, zp, z, n, rows, w, c);                                            \
+  }                                                                                                                  \
+  void chunks_d(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<double>& c, \
+                bool diagonal, std::ptrdiff_t chunk, double* activity) {                                             \
+        STONESKIP_WITH_SHAPE(chunks_body, BYTES, double, zp, z, n, w, c, chunk, activity);                               \
+  }                                                                                                                  \
+  void chunks_f(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<float>& c,    \
+                bool diagonal, std::ptrdiff_t chunk, float* activity) {                                              \
+        STONESKIP_WITH_SHAPE(chunks_body, BYTES, float, zp, z, n, w, c, chunk, activity);                                \
+  }                                                                                                                  \
+  }
+
+namespace kernel_paths {
+// The scalar path: the scalar tail alone, kept scalar (no auto-vectorisation), the reference of
+// the others.
+#pragma GCC push_options
+#pragma GCC optimize("no-tree-vectorize")
+STONESKIP_KERNEL_PATH(scalar, 0)
+#pragma GCC pop_options
+#if defined(__x86_64__)
+// SSE2 is the x86-64 baseline.
+STONESKIP_KERNEL_PATH(sse2, 16)
+#pragma GCC push_options
+#pragma GCC target("arch=x86-64-v3")
+STONESKIP_KERNEL_PATH(avx2, 32)
+#pragma GCC pop_options
+#pragma GCC push_options
+#pragma GCC target("arch=x86-64-v4")
+STONESKIP_KERNEL_PATH(avx512, 64)
+#pragma GCC pop_options
+#elif defined(__aarch64__)
+// NEON (Advanced SIMD) is the aarch64 baseline.
+STONESKIP_KERNEL_PATH(neon, 16)
+#endif
+}  // namespace kernel_paths
+
+namespace {
+
+#define STONESKIP_PATH_ENTRY(P, NAME) \
+  KernelPath{P, kernel_paths::NAME::block_d, kernel_paths::NAME::block_f, kernel_paths::NAME::chunks_d, kernel_paths::NAME::chunks_f}
+
+const KernelPath kPaths[] = {
+    STONESKIP_PATH_ENTRY(SimdPath::scalar, scalar),
+#if defined(__x86_64__)
+    STONESKIP_PATH_ENTRY(SimdPath::sse2, sse2),
+    STONESKIP_PATH_ENTRY(SimdPath::avx2, avx2),
+    STONESKIP_PATH_ENTRY(SimdPath::avx512, avx512),
+#elif defined(__aarch64__)
+    STONESKIP_PATH_ENTRY(SimdPath::neon, neon),
+#endif
+};
+
+bool cpu_supports(SimdPath p) {
+  switch (p) {
+    case SimdPath::scalar:
+      return true;
+#if defined(__x86_64__)
+    case SimdPath::sse2:
+      return true;
+    case SimdPath::avx2:
+      __builtin_cpu_init();
+      return __builtin_cpu_supports("x86-64-v3");
+    case SimdPath::avx512:
+      __builtin_cpu_init();
+      return __builtin_cpu_supports("x86-64-v4");
+#elif defined(__aarch64__)
+    case SimdPath::neon:
+      return true;
+#endif
+    default:
+      return false;
+  }
+}
+
+const KernelPath* find_path(SimdPath p) {
+  for (const KernelPath& k : kPaths)
+    if (k.path == p) return cpu_supports(p) ? &k : nullptr;
+  return nullptr;
+}
+
+const KernelPath* initial_path() {
+  SimdPath p;
+  if (!simd_path_from_environment(p)) p = supported_simd_paths().back();
+  return find_path(p);
+}
+
+std::atomic<const KernelPath*>& active_slot() {
+  static std::atomic<const KernelPath*> slot{initial_path()};
+  return slot;
+}
+
+const KernelPath& active() { return *active_slot().load(std::memory_order_relaxed); }
+
+// The wavefront of leapfrog_wavefront (see the header): at front i, stage s computes row i − s of
+// level s + 1 from level s (in the buffer that did not receive level s) into the buffer that held
+// level s − 1. Row i − s of level s was done at front i − 1, row i − s + 1 at this front's stage
+// s − 1; the overwritten row of level s − 1 was last read by rows i − s ± 1 and i − s of level s,
+// all done. So the order computes what `steps` whole sweeps do, cell for cell.
+template <class Real, class Block>
+void wavefront(Real* z, Real* zp, std::ptrdiff_t rows, std::ptrdiff_t w, int steps, Block&& block) {
+  if (steps <= 0 || rows <= 0) return;
+  // Levels in flight: about steps + 3 rows of each buffer stay in cache; deeper passes than fit
+  // in ~256 KB gain nothing, so the steps are taken in passes of at most `depth`.
+  const std::ptrdiff_t row_bytes = 2 * w * static_cast<std::ptrdiff_t>(sizeof(Real));
+  const int depth = static_cast<int>(std::clamp<std::ptrdiff_t>((256 << 10) / std::max<std::ptrdiff_t>(row_bytes, 1) - 3, 1, 16));
+  Real* a = z;
+  Real* b = zp;
+  for (int done = 0; done < steps;) {
+    const int pass = std::min(depth, steps - done);
+    for (std::ptrdiff_t i = 0; i < rows + pass - 1; ++i)
+      for (int s = 0; s < pass; ++s) {
+        const std::ptrdiff_t j = i - s;
+        if (j < 0 || j >= rows) continue;
+        Real* dst = s % 2 == 0 ? b : a;
+        const Real* src = s % 2 == 0 ? a : b;
+        block(dst + j * w, src + j * w);
+      }
+    if (pass % 2) std::swap(a, b);
+    done += pass;
+  }
 }
 
 }  // namespace
 
-#define STONESKIP_KERNEL_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-
-STONESKIP_KERNEL_CLONES
 void leapfrog_block(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
                     const LeapfrogWeights<double>& c, bool diagonal) {
-  with_shape(diagonal, c.defect != 0, [&]<bool D, bool X>() __attribute__((always_inline)) { block_body<double, D, X>(zp, z, n, rows, w, c); });
+  active().block_d(zp, z, n, rows, w, c, diagonal);
 }
-
-STONESKIP_KERNEL_CLONES
 void leapfrog_block(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
                     const LeapfrogWeights<float>& c, bool diagonal) {
-  with_shape(diagonal, c.defect != 0, [&]<bool D, bool X>() __attribute__((always_inline)) { block_body<float, D, X>(zp, z, n, rows, w, c); });
+  active().block_f(zp, z, n, rows, w, c, diagonal);
 }
-
-STONESKIP_KERNEL_CLONES
 void leapfrog_row_chunks(double* zp, const double* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<double>& c,
                          bool diagonal, std::ptrdiff_t chunk, double* activity) {
-  with_shape(diagonal, c.defect != 0, [&]<bool D, bool X>() __attribute__((always_inline)) { chunks_body<double, D, X>(zp, z, n, w, c, chunk, activity); });
+  active().chunks_d(zp, z, n, w, c, diagonal, chunk, activity);
 }
-
-STONESKIP_KERNEL_CLONES
 void leapfrog_row_chunks(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<float>& c,
                          bool diagonal, std::ptrdiff_t chunk, float* activity) {
-  with_shape(diagonal, c.defect != 0, [&]<bool D, bool X>() __attribute__((always_inline)) { chunks_body<float, D, X>(zp, z, n, w, c, chunk, activity); });
+  active().chunks_f(zp, z, n, w, c, diagonal, chunk, activity);
 }
 
-const char* leapfrog_kernel_isa() {
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("x86-64-v4")) return "x86-64-v4";
-  if (__builtin_cpu_supports("x86-64-v3")) return "x86-64-v3";
-  return "baseline";
+void leapfrog_wavefront(double* z, double* zp, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
+                        const LeapfrogWeights<double>& c, bool diagonal, int steps) {
+  const auto f = active().block_d;
+  wavefront(z, zp, rows, w, steps, [&](double* dst, const double* src) { f(dst, src, n, 1, w, c, diagonal); });
 }
+void leapfrog_wavefront(float* z, float* zp, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
+                        const LeapfrogWeights<float>& c, bool diagonal, int steps) {
+  const auto f = active().block_f;
+  wavefront(z, zp, rows, w, steps, [&](float* dst, const float* src) { f(dst, src, n, 1, w, c, diagonal); });
+}
+
+const char* to_string(SimdPath p) {
+  switch (p) {
+    case SimdPath::scalar: return "scalar";
+    case SimdPath::sse2: return "sse2";
+    case SimdPath::avx2: return "avx2";
+    case SimdPath::avx512: return "avx512";
+    case SimdPath::neon: return "neon";
+  }
+  return "?";
+}
+
+bool parse_simd_path(const std::string& s, SimdPath& out) {
+  for (SimdPath p : {SimdPath::scalar, SimdPath::sse2, SimdPath::avx2, SimdPath::avx512, SimdPath::neon})
+    if (s == to_string(p)) {
+      out = p;
+      return true;
+    }
+  return false;
+}
+
+int simd_path_vector_bytes(SimdPath p) {
+  switch (p) {
+    case SimdPath::scalar: return 0;
+    case SimdPath::sse2: case SimdPath::neon: return 16;
+    case SimdPath::avx2: return 32;
+    case SimdPath::avx512: return 64;
+  }
+  return 0;
+}
+
+std::vector<SimdPath> supported_simd_paths() {
+  std::vector<SimdPath> v;
+  for (const KernelPath& k : kPaths)
+    if (cpu_supports(k.path)) v.push_back(k.path);
+  return v;
+}
+
+bool simd_path_from_environment(SimdPath& out, std::string* why) {
+  const char* e = std::getenv("STONESKIP_ISA");
+  if (!e || !*e) {
+    out = supported_simd_paths().back();
+    return true;
+  }
+  std::string names;
+  for (SimdPath p : supported_simd_paths()) names += std::string(names.empty() ? "" : ", ") + to_string(p);
+  SimdPath p;
+  if (!parse_simd_path(e, p)) {
+    if (why) *why = std::string("STONESKIP_ISA: unknown path '") + e + "' (this machine runs: " + names + ")";
+    return false;
+  }
+  if (!find_path(p)) {
+    if (why) *why = std::string("STONESKIP_ISA: this CPU or build cannot run '") + e + "' (it runs: " + names + ")";
+    return false;
+  }
+  out = p;
+  return true;
+}
+
+SimdPath leapfrog_kernel_path() { return active().path; }
+
+bool set_leapfrog_kernel_path(SimdPath p) {
+  const KernelPath* k = find_path(p);
+  if (!k) return false;
+  active_slot().store(k, std::memory_order_relaxed);
+  return true;
+}
+
+const char* leapfrog_kernel_isa() { return to_string(leapfrog_kernel_path()); }
 
 }  // namespace stoneskip

@@ -13,14 +13,17 @@
 // drift is ~1e-13 per step, and the direct form has fewer operations (≈ 30 % faster in cache).
 // z⁺ overwrites z⁻ in place (each cell reads only its own z⁻).
 //
-// Written with explicit SIMD (GCC vector extensions, 64-byte vectors) and compiled three times
-// (x86-64-v4 = AVX-512, x86-64-v3 = AVX2 + FMA, baseline SSE2) with a run-time choice of the
-// best the CPU has (GCC target_clones): no -march flag, so the binary runs on any x86-64. The
-// file is compiled with -ffp-contract=off and the vector body and the scalar tail evaluate the
-// same expression in the same order, so every cell gets the same bits whichever variant, vector
-// lane or row segment computes it (the active-tile mode relies on that: model/README.md §2.6, ε = 0).
+// Written with explicit SIMD (GCC vector extensions) at the width of each instruction set — SSE2
+// and NEON 16 bytes, AVX2 32, AVX-512 64 — plus a scalar path, each compiled for its target in
+// one file and chosen at run time (best the CPU has, or STONESKIP_ISA): no -march flag, so the
+// binary runs on any x86-64. The file is compiled with -ffp-contract=off and every path, vector
+// lane and scalar tail evaluates the same expression in the same order, so every cell gets the
+// same bits whichever path, lane or row segment computes it (the active-tile mode relies on
+// that: model/README.md §2.6, ε = 0).
 #include <cmath>
 #include <cstddef>
+#include <string>
+#include <vector>
 
 namespace stoneskip {
 
@@ -58,7 +61,33 @@ void leapfrog_row_chunks(double* zp, const double* z, std::ptrdiff_t n, std::ptr
 void leapfrog_row_chunks(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<float>& c,
                          bool diagonal, std::ptrdiff_t chunk, float* activity);
 
-// Which variant the run-time dispatch chose on this CPU: "x86-64-v4", "x86-64-v3" or "baseline".
+// Advances a whole field `steps` leapfrog steps, as `steps` times { leapfrog_block(zp, z, n, rows,
+// w); swap(z, zp) } would, to the bit, but row by row along a wavefront (temporal blocking): row
+// j of level s + 1 is computed as soon as rows j − 1…j + 1 of level s are, so the rows in flight
+// stay in cache while several levels pass over them. The ghost cells around the block (rows −1
+// and `rows`, columns −1 and n) are held as they are (a fixed rim, or a block inside a larger
+// field whose ring is not advanced). After an odd number of steps the newest level is in zp.
+void leapfrog_wavefront(double* z, double* zp, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
+                        const LeapfrogWeights<double>& c, bool diagonal, int steps);
+void leapfrog_wavefront(float* z, float* zp, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
+                        const LeapfrogWeights<float>& c, bool diagonal, int steps);
+
+// The instruction-set paths of the kernel. Each computes the same bits.
+enum class SimdPath { scalar, sse2, avx2, avx512, neon };
+const char* to_string(SimdPath p);              // "scalar", "sse2", "avx2", "avx512", "neon"
+bool parse_simd_path(const std::string& s, SimdPath& out);
+int simd_path_vector_bytes(SimdPath p);         // 0 (scalar), 16, 32 or 64
+std::vector<SimdPath> supported_simd_paths();   // those this build and CPU can run, scalar first, best last
+// The path STONESKIP_ISA asks for, or the best supported one when it is unset or empty; false
+// (with *why, one line) when it names no path or one this CPU lacks.
+bool simd_path_from_environment(SimdPath& out, std::string* why = nullptr);
+// The path the kernel uses: at first use, simd_path_from_environment's (the best supported one
+// when that fails; the command line refuses such a value before). Tests and benchmarks set it;
+// setting a path that is not supported returns false and changes nothing. Not to be changed
+// while a step runs.
+SimdPath leapfrog_kernel_path();
+bool set_leapfrog_kernel_path(SimdPath p);
+// to_string(leapfrog_kernel_path()).
 const char* leapfrog_kernel_isa();
 
 }  // namespace stoneskip

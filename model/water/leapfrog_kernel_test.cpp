@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <atomic>
+#include <cstdlib>
+#include <string>
 #include <cstring>
 #include <random>
 #include <vector>
@@ -77,7 +79,133 @@ void check_aligned_and_unaligned_paths_agree(bool diagonal) {
   for (int q = 0; q < 3; ++q) BOOST_TEST(act_a[q] == act_b[q]);
 }
 
+// Runs f() on every instruction-set path this CPU supports, the active path restored after.
+template <class F>
+void on_every_path(F&& f) {
+  const SimdPath before = leapfrog_kernel_path();
+  for (SimdPath p : supported_simd_paths()) {
+    BOOST_TEST_CONTEXT("path " << to_string(p)) {
+      BOOST_REQUIRE(set_leapfrog_kernel_path(p));
+      f();
+    }
+  }
+  set_leapfrog_kernel_path(before);
+}
+
+// One field updated by every kernel entry on one path: blocks and chunked rows (with activity),
+// on and off vector alignment, so that two paths' outputs can be compared byte for byte.
+template <class Real>
+std::vector<unsigned char> every_entry_on_active_path(bool diagonal, bool defect) {
+  const std::ptrdiff_t w = 64 + 16, rows = 6, n = 64 + 5;  // w a multiple of every vector width
+  const std::size_t size = static_cast<std::size_t>(w) * (rows + 4);
+  const auto z = random_values<Real>(size, 11);
+  auto blocks = random_values<Real>(size, 12), chunks = blocks;
+  // A consistent stencil (wx = 0) or one whose weights do not sum to zero (wx ≠ 0).
+  const auto c = defect ? leapfrog_weights<Real>(-3, 2.0 / 3, diagonal ? 1.0 / 6 : 0, 0.6, 0.07) : weights<Real>(diagonal);
+  BOOST_TEST((c.defect != 0) == defect);
+  Real act[8] = {};
+  for (std::ptrdiff_t off : {std::ptrdiff_t(0), std::ptrdiff_t(1)}) {  // aligned (64 bytes) and not
+    const std::ptrdiff_t first = 2 * w + off;
+    leapfrog_block(blocks.data() + first, z.data() + first, n - off, rows, w, c, diagonal);
+    for (std::ptrdiff_t r = 0; r < rows; ++r)
+      leapfrog_row_chunks(chunks.data() + first + r * w, z.data() + first + r * w, n - off, w, c, diagonal, 16, act);
+  }
+  std::vector<unsigned char> bytes(2 * size * sizeof(Real) + sizeof act);
+  std::memcpy(bytes.data(), blocks.data(), size * sizeof(Real));
+  std::memcpy(bytes.data() + size * sizeof(Real), chunks.data(), size * sizeof(Real));
+  std::memcpy(bytes.data() + 2 * size * sizeof(Real), act, sizeof act);
+  return bytes;
+}
+
+template <class Real>
+void check_paths_against_scalar() {
+  for (bool diagonal : {true, false})
+    for (bool defect : {true, false}) {
+      BOOST_REQUIRE(set_leapfrog_kernel_path(SimdPath::scalar));
+      const auto scalar = every_entry_on_active_path<Real>(diagonal, defect);
+      on_every_path([&] { BOOST_TEST((every_entry_on_active_path<Real>(diagonal, defect) == scalar)); });
+    }
+}
+
 BOOST_AUTO_TEST_SUITE(leapfrog_kernel_)
+
+BOOST_AUTO_TEST_CASE(every_supported_instruction_set_computes_the_scalar_paths_bits) {
+  // Oracle: the scalar path, cell by cell. Every vector path evaluates the same expression in the
+  // same order without FMA contraction, so blocks, chunked rows and their activities must agree
+  // with it byte for byte (tolerance 0), in double and float, on and off alignment.
+  const SimdPath before = leapfrog_kernel_path();
+  check_paths_against_scalar<double>();
+  check_paths_against_scalar<float>();
+  set_leapfrog_kernel_path(before);
+  // This build offers scalar and at least one vector path on x86-64 and aarch64.
+  BOOST_TEST(supported_simd_paths().size() >= 2u);
+  BOOST_TEST((supported_simd_paths().front() == SimdPath::scalar));
+}
+
+BOOST_AUTO_TEST_CASE(an_unknown_or_unsupported_path_is_refused) {
+  // Oracle: the list of paths. A name that is none of them, or a path of another architecture,
+  // is refused with a one-line reason and leaves the active path as it was.
+  const SimdPath before = leapfrog_kernel_path();
+  const char* old = std::getenv("STONESKIP_ISA");
+  const std::string saved = old ? old : "";
+  SimdPath p;
+  std::string why;
+  setenv("STONESKIP_ISA", "avx1024", 1);
+  BOOST_TEST(!simd_path_from_environment(p, &why));
+  BOOST_TEST(why.find("avx1024") != std::string::npos);
+  BOOST_TEST(why.find('\n') == std::string::npos);
+  setenv("STONESKIP_ISA", "scalar", 1);
+  BOOST_TEST(simd_path_from_environment(p, &why));
+  BOOST_TEST((p == SimdPath::scalar));
+#if defined(__x86_64__)
+  const SimdPath foreign = SimdPath::neon;
+#else
+  const SimdPath foreign = SimdPath::avx2;
+#endif
+  setenv("STONESKIP_ISA", to_string(foreign), 1);
+  BOOST_TEST(!simd_path_from_environment(p, &why));
+  BOOST_TEST(!set_leapfrog_kernel_path(foreign));
+  BOOST_TEST((leapfrog_kernel_path() == before));
+  if (old) setenv("STONESKIP_ISA", saved.c_str(), 1);
+  else unsetenv("STONESKIP_ISA");
+}
+
+template <class Real>
+void check_wavefront(std::ptrdiff_t n, std::ptrdiff_t rows, int steps, bool diagonal) {
+  const std::ptrdiff_t w = (n + 2 + 15) / 16 * 16 + 16;
+  const std::size_t size = static_cast<std::size_t>(w) * (rows + 2) + 16;
+  auto a = random_values<Real>(size, 21), b = random_values<Real>(size, 22);
+  // Ghosts (the rim) at zero, as a fixed boundary holds them.
+  for (std::ptrdiff_t j = 0; j < rows + 2; ++j)
+    for (std::ptrdiff_t i = 0; i < w; ++i)
+      if (j == 0 || j == rows + 1 || i == 0 || i > n) a[j * w + i] = b[j * w + i] = 0;
+  auto z1 = a, zp1 = b, z2 = a, zp2 = b;
+  const auto c = weights<Real>(diagonal);
+  Real* z = z1.data() + w + 1;
+  Real* zp = zp1.data() + w + 1;
+  for (int s = 0; s < steps; ++s) {
+    leapfrog_block(zp, z, n, rows, w, c, diagonal);
+    std::swap(z, zp);
+  }
+  leapfrog_wavefront(z2.data() + w + 1, zp2.data() + w + 1, n, rows, w, c, diagonal, steps);
+  // After an odd number of steps the newest level is in the second buffer, as after the swaps.
+  BOOST_TEST(std::memcmp(z1.data(), z2.data(), size * sizeof(Real)) == 0);
+  BOOST_TEST(std::memcmp(zp1.data(), zp2.data(), size * sizeof(Real)) == 0);
+}
+
+BOOST_AUTO_TEST_CASE(wavefront_temporal_blocking_computes_the_one_step_sweeps_bits) {
+  // Oracle: `steps` sweeps of the one-step kernel over the whole block with a swap after each.
+  // The wavefront reorders the same updates without changing any operand, so both buffers must
+  // agree byte for byte (tolerance 0): one step, an even and an odd number within one pass, and
+  // more steps than one pass holds (passes of at most 16 levels), on every path.
+  on_every_path([] {
+    for (int steps : {1, 2, 7, 37}) {
+      check_wavefront<double>(61, 23, steps, true);
+      check_wavefront<float>(45, 9, steps, false);
+    }
+    check_wavefront<double>(3, 1, 5, true);  // one row: every level in one front
+  });
+}
 
 BOOST_AUTO_TEST_CASE(vector_body_and_scalar_tail_round_to_the_same_bits) {
   check_segments_round_alike<double>(true);

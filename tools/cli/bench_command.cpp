@@ -1,15 +1,19 @@
-// stoneskip bench [--json] [--quick] [--scene CASE] [--sweep-case CASE] [--repeats N]
+// stoneskip bench [--json] [--quick] [--every-isa] [--scene CASE] [--sweep-case CASE] [--repeats N]
 //
 // The headline speed figures of issue 9, measured in one run of this binary
 // (verification/scene/headline_speed.hpp): the seed's scene in simulated frames per second with
 // the field on one thread and on two; the stencil's cell updates per second at 500² and 2048² and
 // the fraction of the copy bound measured by the same binary at 2048²; real-time throws per
 // second in a bounce-count sweep on two workers. Printed beside the targets of issue 9 with the
-// machine's load average before and after. A benchmark, not a test: the numbers depend on the
+// machine it ran on (CPU model, core count, the kernel's instruction-set path, load average before
+// and after); the temporal-blocked kernel against the same copy bound and a plain loop of the
+// stencil beside the SIMD kernel. STONESKIP_ISA=scalar|sse2|avx2|avx512|neon forces the kernel's
+// path; --every-isa adds the stencil on every path the CPU supports, side by side. A benchmark, not a test: the numbers depend on the
 // machine and on what else runs on it.
 //   stoneskip bench
 //   stoneskip bench --json
 //   stoneskip bench --quick --json      # a smoke run (seconds): the same keys, rougher numbers
+//   STONESKIP_ISA=avx2 stoneskip bench --every-isa
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -32,6 +36,7 @@ namespace {
 struct BenchArgs {
   bool json = false;
   bool quick = false;
+  bool every_isa = false;
   std::string scene = "cases/scenes/seed_8ms.toml";
   std::string sweep_case = "cases/spin_sweep_base.toml";
   int repeats = 3;
@@ -43,6 +48,8 @@ constexpr double kSceneFpsTarget = 3000;
 constexpr double kBandwidthFractionTarget = 0.9;
 constexpr double kPerCellRatioTarget = 2;
 constexpr double kThrowsPerSecondTarget = 1000;
+constexpr double kTemporalFractionTarget = 1.5;  // temporal blocking against the one-pass copy bound
+constexpr double kOverPlainLoopTarget = 4;       // the SIMD stencil over a plain loop of it
 
 std::vector<double> range(double lo, double hi, double step) {
   std::vector<double> v;
@@ -72,6 +79,7 @@ void bench(const BenchArgs& a) {
   o.sweep.spins_rev_s = range(0, 60, 2.5);
   o.sweep.attack_angles_deg = range(0, 30, 2.5);
   o.sweep.repeats = a.repeats;
+  o.every_isa = a.every_isa;
   if (a.quick) {
     o.scene.duration_s = std::min(o.scene.duration_s, 0.5);
     o.scene_repeats = 1;
@@ -122,6 +130,24 @@ void bench(const BenchArgs& a) {
   j["sweep_steps"] = h.sweep.steps;
   j["sweep_contact_steps"] = h.sweep.contact_steps;
   j["sweep_simulated_s"] = h.sweep.simulated_s;
+  const double over_plain = h.stencil_small.plain_cells_per_s > 0 ? h.stencil_small.cells_per_s / h.stencil_small.plain_cells_per_s : 0;
+  j["temporal_blocking_fraction_2048"] = h.stencil_large.temporal_fraction;
+  j["temporal_blocking_cells_per_s_2048"] = h.stencil_large.temporal_cells_per_s;
+  j["temporal_blocking_steps"] = h.stencil_large.options.temporal_steps;
+  j["plain_loop_cells_per_s_500"] = h.stencil_small.plain_cells_per_s;
+  j["stencil_over_plain_loop_500"] = over_plain;
+  j["cpu_model"] = h.cpu_model;
+  j["supported_isas"] = h.supported_isas;
+  if (!h.by_isa.empty()) {
+    nlohmann::json by = nlohmann::json::object();
+    for (const IsaStencilSpeed& s : h.by_isa)
+      by[s.isa] = {{"stencil_cells_per_s_500", s.small.cells_per_s},
+                   {"stencil_cells_per_s_2048", s.large.cells_per_s},
+                   {"bandwidth_fraction_2048", s.large.fraction},
+                   {"per_cell_ratio_500_over_2048", s.large.cells_per_s > 0 ? s.small.cells_per_s / s.large.cells_per_s : 0},
+                   {"temporal_blocking_fraction_2048", s.large.temporal_fraction}};
+    j["stencil_by_isa"] = by;
+  }
   j["load_average_before"] = h.load_before;
   j["load_average_after"] = h.load_after;
   j["cores"] = h.cores;
@@ -135,8 +161,9 @@ void bench(const BenchArgs& a) {
   auto line = [](const std::string& what, const std::string& value, const std::string& target, bool met) {
     std::printf("%-58s %-26s %s\n", what.c_str(), value.c_str(), (target + (met ? "  met" : "  MISSED")).c_str());
   };
-  std::printf("stoneskip bench%s — load average %s before, %s after, on %d cores; wall clock unless marked CPU\n",
-              a.quick ? " (quick: a smoke run)" : "", g(h.load_before).c_str(), g(h.load_after).c_str(), h.cores);
+  std::printf("stoneskip bench%s — %s, %d cores, stencil path %s; load average %s before, %s after; wall clock unless marked CPU\n",
+              a.quick ? " (quick: a smoke run)" : "", h.cpu_model.c_str(), h.cores, h.stencil_large.kernel_isa.c_str(),
+              g(h.load_before).c_str(), g(h.load_after).c_str());
   std::printf("%-58s %-26s %s\n", "", "measured", "target (issue 9)");
   line("seed's scene (" + std::to_string(h.scene_one.frames) + " frames), 1 thread: frames/s", g(h.scene_one.fps_best_wall(), 4) +
            " (median " + g(h.scene_one.fps_median_wall(), 4) + ", CPU " + g(h.scene_one.fps_cpu(), 4) + ")",
@@ -151,6 +178,13 @@ void bench(const BenchArgs& a) {
   line("stencil: rate per cell at " + std::to_string(h.stencil_small.options.n) + "² / at " +
            std::to_string(h.stencil_large.options.n) + "²", g(h.per_cell_ratio), ">= " + g(kPerCellRatioTarget),
        h.per_cell_ratio >= kPerCellRatioTarget);
+  line("temporal blocking (" + std::to_string(h.stencil_large.options.temporal_steps) + " steps a call) at " +
+           std::to_string(h.stencil_large.options.n) + "²: fraction of the copy bound",
+       g(h.stencil_large.temporal_cells_per_s) + " cells/s, " + g(h.stencil_large.temporal_fraction), ">= " + g(kTemporalFractionTarget),
+       h.stencil_large.temporal_fraction >= kTemporalFractionTarget);
+  line("stencil at " + std::to_string(h.stencil_small.options.n) + "² over a plain loop of it (no SIMD, " +
+           g(h.stencil_small.plain_cells_per_s) + " cells/s)", g(over_plain), ">= " + g(kOverPlainLoopTarget),
+       over_plain >= kOverPlainLoopTarget);
   line("bounce-count sweep (" + std::to_string(h.sweep.throws) + " throws, " + std::to_string(h.sweep.workers) + " workers): throws/s",
        g(h.sweep.throws_per_s(), 4) + " (CPU " + g(h.sweep.cpu_s, 3) + " s)", ">= " + g(kThrowsPerSecondTarget),
        h.sweep.throws_per_s() >= kThrowsPerSecondTarget);
@@ -162,6 +196,14 @@ void bench(const BenchArgs& a) {
   std::printf("scene parts (1 thread, best run, wall): stone %s ms, draught %s ms, water %s ms; slowest frame %s ms\n",
               g(1e3 * h.scene_one.best.stone_wall_s).c_str(), g(1e3 * h.scene_one.best.draught_wall_s).c_str(),
               g(1e3 * h.scene_one.best.water_wall_s).c_str(), g(1e3 * h.scene_one.best.slowest_frame_wall_s).c_str());
+  if (!h.by_isa.empty()) {
+    std::printf("\nstencil on every path (cells/s; fraction of the copy bound at %d²):\n", h.stencil_large.options.n);
+    std::printf("%-8s %14s %14s %10s %12s %18s\n", "path", "500²", "2048²", "fraction", "500²/2048²", "temporal fraction");
+    for (const IsaStencilSpeed& s : h.by_isa)
+      std::printf("%-8s %14s %14s %10s %12s %18s\n", s.isa.c_str(), g(s.small.cells_per_s).c_str(), g(s.large.cells_per_s).c_str(),
+                  g(s.large.fraction).c_str(), g(s.large.cells_per_s > 0 ? s.small.cells_per_s / s.large.cells_per_s : 0).c_str(),
+                  g(s.large.temporal_fraction).c_str());
+  }
 }
 
 void add_bench(CLI::App& app) {
@@ -169,6 +211,7 @@ void add_bench(CLI::App& app) {
   auto* cmd = app.add_subcommand("bench", "Measure the headline speed figures (scene frames/s, stencil against the copy bound, sweep throws/s)");
   cmd->add_flag("--json", a->json, "Print one JSON object");
   cmd->add_flag("--quick", a->quick, "A smoke run of seconds (shorter scene, fewer samples, a small sweep, 1024² instead of 2048²)");
+  cmd->add_flag("--every-isa", a->every_isa, "Also measure the stencil on every instruction-set path the CPU supports, side by side");
   cmd->add_option("--scene", a->scene, "The scene to time")->capture_default_str();
   cmd->add_option("--sweep-case", a->sweep_case, "The throw whose spin and attack angle the sweep varies")->capture_default_str();
   cmd->add_option("--repeats", a->repeats, "Runs of the scene and of the sweep (the best is reported)")->capture_default_str();

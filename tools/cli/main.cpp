@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "model/water/leapfrog_kernel.hpp"
 #include "tools/cli/command_registry.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/signal_cleanup.hpp"
@@ -67,6 +68,16 @@ std::string one_line(std::string what) {
 int main(int argc, char** argv) {
   // First, before any thread exists: SIGINT, SIGTERM and SIGHUP remove the temporaries.
   stoneskip::install_signal_cleanup();
+  // STONESKIP_ISA forces the stencil kernel's instruction-set path: a value that names none, or one
+  // this CPU lacks, is bad input (model/water/leapfrog_kernel.hpp).
+  {
+    stoneskip::SimdPath path;
+    std::string why;
+    if (!stoneskip::simd_path_from_environment(path, &why)) {
+      std::fprintf(stderr, "stoneskip: %s\n", one_line(why).c_str());
+      return 2;
+    }
+  }
   CLI::App app{"stoneskip: verification and validation of real-time stone-skipping simulation"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "stoneskip 0.1.0");

@@ -1,11 +1,14 @@
 // End-to-end tests of `stoneskip wave`: the built executable run on the shipped wave cases.
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "model/water/leapfrog_kernel.hpp"
 #include "tools/cli/test_support.hpp"
 
 namespace {
@@ -66,6 +69,56 @@ BOOST_AUTO_TEST_CASE(misspelt_key_is_rejected_with_its_name_and_status_2) {
   BOOST_TEST(r.out.find("water.wave_sped_m_s") != std::string::npos, r.out);
   Ran k = run_stoneskip("wave cases/wave_gaussian_five_point.toml --set initial.wavelength_m=0.2");
   BOOST_TEST(k.status == 2);  // a key the gaussian does not use
+}
+
+// STONESKIP_ISA for the child processes of one test, restored after.
+struct IsaEnvironment {
+  std::string saved;
+  bool had = false;
+  IsaEnvironment() {
+    if (const char* e = std::getenv("STONESKIP_ISA")) {
+      had = true;
+      saved = e;
+    }
+  }
+  void set(const std::string& v) { setenv("STONESKIP_ISA", v.c_str(), 1); }
+  ~IsaEnvironment() {
+    if (had) setenv("STONESKIP_ISA", saved.c_str(), 1);
+    else unsetenv("STONESKIP_ISA");
+  }
+};
+
+BOOST_AUTO_TEST_CASE(every_instruction_set_gives_the_same_wave_bit_for_bit) {
+  // Oracle: the run under STONESKIP_ISA=scalar. Every kernel path computes the same bits
+  // (model/water/leapfrog_kernel.hpp), so the errors and the RMS, printed to 17 digits, must be
+  // equal exactly on every path this CPU supports, for the 5-point and the 9-point stencil.
+  IsaEnvironment env;
+  for (const std::string stencil : {"five_point", "nine_point_isotropic"}) {
+    const std::string line = "wave cases/wave_gaussian_five_point.toml --set water.stencil=" + stencil;
+    env.set("scalar");
+    const nlohmann::json ref = run_json(line);
+    for (stoneskip::SimdPath p : stoneskip::supported_simd_paths()) {
+      BOOST_TEST_CONTEXT(stencil << " on " << stoneskip::to_string(p)) {
+        env.set(stoneskip::to_string(p));
+        const nlohmann::json j = run_json(line);
+        for (const char* key : {"l2_error", "max_error", "solution_rms_m"})
+          BOOST_TEST(j[key].get<double>() == ref[key].get<double>());
+      }
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(an_unknown_instruction_set_is_bad_input) {
+  // Oracle: the exit-status rule — a value of STONESKIP_ISA that names no path is bad input: exit
+  // 2, one line on stderr naming the variable and the value, nothing on stdout.
+  IsaEnvironment env;
+  env.set("avx1024");
+  const auto r = stoneskip::test::run_apart("wave cases/wave_gaussian_five_point.toml --json");
+  BOOST_TEST(r.status == 2);
+  BOOST_TEST(r.out.empty());
+  BOOST_TEST(r.err.find("STONESKIP_ISA") != std::string::npos);
+  BOOST_TEST(r.err.find("avx1024") != std::string::npos);
+  BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -14,6 +14,7 @@ packages=(
   gnuplot-nox
   ffmpeg                       # `stoneskip scene --movie` assembles the frames; ffprobe checks them in the tests
   openmpi-bin libopenmpi-dev   # `mpirun stoneskip sweep` (optional at build time: CMake says if absent)
+  g++-aarch64-linux-gnu qemu-user  # tools/setup/cross-aarch64.sh: the water tests built for aarch64, run emulated (optional)
 )
 if [ "$what" = test ]; then
   packages+=(chromium)         # the report pages opened in headless Chromium (ctest stoneskip_browser; skipped without it)

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdlib>
+#include <fstream>
 #include <stdexcept>
 #include <thread>
 
+#include "model/water/leapfrog_kernel.hpp"
 #include "solvers/realtime/clocks.hpp"
 #include "verification/stones/parallel_runs.hpp"
 
@@ -31,6 +33,17 @@ namespace {
 double load_average() {
   double l[1];
   return getloadavg(l, 1) == 1 ? l[0] : -1;
+}
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("model name", 0) == 0) {
+      const std::size_t colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(line.find_first_not_of(" \t", colon + 1));
+    }
+  return "unknown";
 }
 
 double median(std::vector<double> v) {
@@ -124,17 +137,38 @@ HeadlineSpeed measure_headline_speed(const HeadlineSpeedOptions& o, const Progre
   HeadlineSpeed h;
   h.cores = static_cast<int>(std::thread::hardware_concurrency());
   h.load_before = load_average();
+  h.cpu_model = cpu_model();
+  for (SimdPath p : supported_simd_paths()) h.supported_isas.push_back(to_string(p));
   auto ticker = start_progress(progress, "bench", static_cast<std::size_t>(2 * o.scene_repeats + 2 + o.sweep.repeats));
   h.scene_one = measure_scene(o.scene, 1, o.scene_repeats, *ticker);
   h.scene_many = measure_scene(o.scene, o.many_threads, o.scene_repeats, *ticker);
   ThroughputOptions t = o.stencil;
   t.threads = 1;
   t.n = o.stencil_small_n;
+  t.plain_loop = t.precision == Precision::float64;
   h.stencil_small = measure_stencil_throughput(t);
   ticker->tick();
+  t.plain_loop = false;
   t.n = o.stencil_large_n;
+  t.temporal_steps = t.precision == Precision::float64 ? o.temporal_steps : 0;
   h.stencil_large = measure_stencil_throughput(t);
   ticker->tick();
+  if (o.every_isa) {
+    const SimdPath chosen = leapfrog_kernel_path();
+    for (SimdPath p : supported_simd_paths()) {
+      set_leapfrog_kernel_path(p);
+      IsaStencilSpeed s;
+      s.isa = to_string(p);
+      t.n = o.stencil_small_n;
+      t.temporal_steps = 0;
+      s.small = measure_stencil_throughput(t);
+      t.n = o.stencil_large_n;
+      t.temporal_steps = t.precision == Precision::float64 ? o.temporal_steps : 0;
+      s.large = measure_stencil_throughput(t);
+      h.by_isa.push_back(std::move(s));
+    }
+    set_leapfrog_kernel_path(chosen);
+  }
   h.per_cell_ratio = h.stencil_large.cells_per_s > 0 ? h.stencil_small.cells_per_s / h.stencil_large.cells_per_s : 0;
   h.sweep = measure_sweep(o.sweep, *ticker);
   h.load_after = load_average();

@@ -4,6 +4,9 @@
 //      in simulated frames per second, the field on one thread and on two;
 //   2. the stencil's cell updates per second at 500² (in cache) and 2048² (in memory), against
 //      the copy bound measured by the same binary (verification/waves/stencil_throughput.hpp);
+//      and, beside it, the temporal-blocked kernel at 2048² (several steps per pass over memory)
+//      and a plain loop of the same update at 500² (no SIMD: the stand-in for "written plainly");
+//      optionally the stencil on every instruction-set path the CPU supports, side by side;
 //   3. real-time throws per second in a bounce-count sweep (a grid of spins × attack angles of
 //      one throw) spread over two workers (verification/stones/parallel_runs.hpp).
 // Clocks: the scene is run `repeats` times; frames/s are given from the best (least disturbed)
@@ -11,7 +14,8 @@
 // stencil's figures are wall unless asked otherwise (best samples; see stencil_throughput.hpp).
 // The sweep's figure is throws over the wall time of the whole sweep (best of its repeats), with
 // the summed thread CPU time of the throws beside it. The machine's load average (1 minute) is
-// read before and after, so a reader can judge what the wall figures were measured under.
+// read before and after, and the CPU's model name and core count kept, so a reader can judge
+// what and where the wall figures were measured.
 #include <string>
 #include <vector>
 
@@ -36,6 +40,8 @@ struct HeadlineSpeedOptions {
   int many_threads = 2;               // "two cores"
   int stencil_small_n = 500, stencil_large_n = 2048;
   ThroughputOptions stencil;          // stencil, precision, clock, samples (n and threads set per run)
+  int temporal_steps = 16;            // steps per wavefront call at the large grid (0: not measured)
+  bool every_isa = false;             // the stencil on every supported path too
   SweepSpeedOptions sweep;
   bool is_valid(std::string* why = nullptr) const;
 };
@@ -64,6 +70,11 @@ struct SweepSpeed {
   double throws_per_s() const { return best_wall_s > 0 ? throws / best_wall_s : 0; }
 };
 
+struct IsaStencilSpeed {
+  std::string isa;                    // to_string(SimdPath)
+  ThroughputSummary small, large;
+};
+
 struct HeadlineSpeed {
   SceneSpeed scene_one, scene_many;
   ThroughputSummary stencil_small, stencil_large;
@@ -71,6 +82,9 @@ struct HeadlineSpeed {
   SweepSpeed sweep;
   double load_before = -1, load_after = -1;  // 1-minute load average (−1: unknown)
   int cores = 0;                      // std::thread::hardware_concurrency()
+  std::string cpu_model;              // /proc/cpuinfo "model name" ("unknown" where absent)
+  std::vector<std::string> supported_isas;  // the kernel paths this CPU runs, scalar first
+  std::vector<IsaStencilSpeed> by_isa;      // with every_isa: each supported path's stencil figures
 };
 
 // Throws std::invalid_argument for invalid options.

@@ -12,6 +12,7 @@
 #include "model/water/disturbance.hpp"
 #include "model/water/leapfrog_kernel.hpp"
 #include "model/water/thread_team.hpp"
+#include "verification/waves/plain_stencil_loop.hpp"
 
 namespace stoneskip {
 
@@ -27,6 +28,9 @@ bool ThroughputOptions::is_valid(std::string* why) const {
   if (samples < 1) return fail("throughput: samples must be >= 1");
   if (!(sample_s > 0)) return fail("throughput: sample_s must be > 0");
   if (clock == ThroughputClock::cpu && threads != 1) return fail("throughput: the cpu clock needs threads = 1 (use wall)");
+  if (temporal_steps < 0 || temporal_steps > 1000) return fail("throughput: temporal_steps must be in [0, 1000]");
+  if ((temporal_steps > 0 || plain_loop) && (threads != 1 || precision != Precision::float64))
+    return fail("throughput: temporal blocking and the plain loop are timed on one thread in float64");
   return true;
 }
 
@@ -110,8 +114,32 @@ ThroughputSummary measure_stencil_throughput(const ThroughputOptions& o) {
   // The copy: arrays of one field level's size, split over a team of the same size.
   ThreadTeam team(o.threads);
   const std::size_t elements = static_cast<std::size_t>(o.n + 2) * (o.n + 2);
-  std::vector<double> step_s, copy_s;
-  auto one_step_sample = [&] { step_s.push_back(time_sample([&] { field.step(); }, o.sample_s, o.clock)); };
+  std::vector<double> step_s, copy_s, temporal_s, plain_s;
+  // The raw levels for the wavefront and the plain loop: z0 on a fixed (zero) rim, rows padded to
+  // 64 bytes with the first cell of each row aligned, as the field lays them out.
+  const std::ptrdiff_t w = (o.n + 2 + 15) / 8 * 8, first = w + 8;
+  std::vector<double, CacheAligned<double>> raw_z, raw_zp;
+  if (o.temporal_steps > 0 || o.plain_loop) {
+    raw_z.assign(static_cast<std::size_t>(w) * (o.n + 2) + 16, 0.0);
+    for (int j = 0; j < o.n; ++j)
+      for (int i = 0; i < o.n; ++i) raw_z[first + j * w + i] = z0[static_cast<std::size_t>(j) * o.n + i];
+    raw_zp = raw_z;
+  }
+  const Stencil& st = o.stencil;
+  const LeapfrogWeights<double> wts = leapfrog_weights<double>(st.centre, st.orth, st.diag, fo.courant(), fo.damping_per_s * fo.dt_s);
+  auto one_step_sample = [&] {
+    step_s.push_back(time_sample([&] { field.step(); }, o.sample_s, o.clock));
+    if (o.temporal_steps > 0)
+      temporal_s.push_back(time_sample([&] {
+        leapfrog_wavefront(raw_z.data() + first, raw_zp.data() + first, o.n, o.n, w, wts, wts.diag != 0, o.temporal_steps);
+        if (o.temporal_steps % 2) raw_z.swap(raw_zp);
+      }, o.sample_s, o.clock));
+    if (o.plain_loop)
+      plain_s.push_back(time_sample([&] {
+        plain_leapfrog_block(raw_zp.data() + first, raw_z.data() + first, o.n, o.n, w, wts);
+        raw_z.swap(raw_zp);
+      }, o.sample_s, o.clock));
+  };
   field.step();  // warm the caches and the team
   if (o.precision == Precision::float64)
     measure_copy<double>(elements, team, o, copy_s, one_step_sample);
@@ -132,6 +160,11 @@ ThroughputSummary measure_stencil_throughput(const ThroughputOptions& o) {
   s.bound_cells_per_s = s.copy_bytes_per_s / (3 * value_bytes);
   s.fraction = s.cells_per_s / s.bound_cells_per_s;
   s.fraction_median = s.cells_per_s_median / (s.copy_bytes_per_s_median / (3 * value_bytes));
+  if (!temporal_s.empty()) {
+    s.temporal_cells_per_s = cells * o.temporal_steps / *std::min_element(temporal_s.begin(), temporal_s.end());
+    s.temporal_fraction = s.temporal_cells_per_s / s.bound_cells_per_s;
+  }
+  if (!plain_s.empty()) s.plain_cells_per_s = cells / *std::min_element(plain_s.begin(), plain_s.end());
   return s;
 }
 
