@@ -1,20 +1,19 @@
 #pragma once
-// The real-time stepper: fixed steps, a finer step while the stone is in (or about to reach) the
-// water, quaternion renormalised after every step.
+// The real-time stepper, quaternion renormalised after every step. Schemes (formal order):
+//   semi_implicit_euler (1)  fixed steps; v, L from the forces at the start of the step, then x
+//                            with the new v and q rotated by the new ω: the game-engine integrator.
+//   midpoint (2), rk4 (4)    fixed steps, explicit Runge–Kutta on the flat state (model/README.md §1.3).
+//   bs32 (3)                 adaptive: Bogacki–Shampine 3(2) with FSAL (adaptive_step.hpp), steps
+//                            from rtol/atol_m, bounded where a vertex crosses the surface.
+// Fixed schemes switch to contact_dt_s when the lowest vertex could reach the surface within one
+// flight step (clearance < (|v| + |ω| r_bound) dt_s), so a flight step cannot carry it deep; bs32
+// uses dt_s as its largest step and ignores contact_dt_s.
 //
-// Schemes (formal order in parentheses):
-//   semi_implicit_euler (1)  v, L from the forces at the start of the step, then x with the new v
-//                            and q rotated by the new ω: the usual game-engine integrator and
-//                            the default.
-//   midpoint (2), rk4 (4)    explicit Runge–Kutta on the flat state (model/README.md §1.3 right-hand side).
-// The step switches to contact_dt_s when the lowest vertex could reach the surface within one
-// flight step (clearance < (|v| + |ω| r_bound) dt_s), so a flight step cannot carry it deep.
-//
-// Contacts (model/README.md §1.8) are located inside the step by linear interpolation of each vertex's depth
-// between the step's ends (an O(dt²) location): a contact starts where the first vertex goes
-// under (the first-touch point is that vertex there), ends where the last comes out, and the stone
-// sinks where the last goes under; the state there is interpolated (position, velocity, angular
-// momentum linearly, orientation by slerp), and a throw that sinks ends at that time and state.
+// Contacts (model/README.md §1.8) are located inside the step on the cubic Hermite interpolant of
+// the step (dense_output.hpp: O(h⁴), so to the scheme's order up to 4): a contact starts where the
+// first vertex goes under (the first-touch point is that vertex there), ends where the last comes
+// out, and the stone sinks where the last goes under; the state there is the interpolant's, and a
+// throw that sinks ends at that time and state.
 // A live surface (before_step) is piecewise constant in time: it changes at the start of the
 // steps where before_step moves it. A contact that the water starts or ends, or a stone that the
 // water covers, is logged at that step start — exactly when the modelled surface changed; against
@@ -26,15 +25,19 @@
 
 namespace stoneskip {
 
-enum class Scheme { semi_implicit_euler, midpoint, rk4 };
+enum class Scheme { semi_implicit_euler, midpoint, rk4, bs32 };
 const char* to_string(Scheme s);
 bool parse_scheme(const std::string& s, Scheme& out);
 int formal_order(Scheme s);
+bool is_adaptive(Scheme s);  // steps from a tolerance (bs32), not from dt_s / contact_dt_s
 
 struct RealtimeOptions {
   Scheme scheme = Scheme::semi_implicit_euler;
-  double dt_s = 1e-3;           // flight step
-  double contact_dt_s = 1e-4;   // step while in or near the water
+  double dt_s = 1e-3;           // fixed schemes: flight step; bs32: the largest step
+  double contact_dt_s = 1e-4;   // fixed schemes: step while in or near the water
+  double rtol = 1e-6;           // bs32: relative tolerance on every state component
+  double atol_m = 1e-6;         // bs32: absolute tolerance on positions (m); the other components
+                                // get the one that moves the rim as much (state_scales.hpp)
   double t_max_s = 10.0;
   double output_dt_s = 1e-3;    // trajectory sampling (0: every step); contact transitions always
   bool record_trajectory = true;

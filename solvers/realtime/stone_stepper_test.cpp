@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <vector>
 #include <numbers>
 #include <ostream>
 #include <thread>
@@ -188,8 +189,8 @@ BOOST_AUTO_TEST_CASE(a_flat_plate_dropped_flat_follows_the_closed_form) {
 
 BOOST_AUTO_TEST_CASE(contact_start_is_located_between_steps) {
   // Oracle: a flat plate falling from rest touches the water when its bottom face (h/2 below the
-  // centre) reaches z = 0: t = √(2 (z0 − h/2) / g). Linear interpolation of the deepest depth
-  // inside a 1e-5 s contact step adds only ~g dt²/(8 v) ≈ 1e-10 s (1e-8 s allowed); the bound is
+  // centre) reaches z = 0: t = √(2 (z0 − h/2) / g). Locating the touch inside a 1e-5 s contact step
+  // adds at most what linear interpolation would, ~g dt²/(8 v) ≈ 1e-10 s (1e-8 s allowed); the bound is
   // set by the flight part, integrated with semi-implicit Euler in 1e-3 s steps (below).
   const double h = 0.008, z0 = 0.2;
   const Stone s = prism_stone(0.03, h);
@@ -214,11 +215,11 @@ BOOST_AUTO_TEST_CASE(a_dropped_plate_sinks_at_the_closed_form_time_and_place) {
   // Oracle: the dropped plate's closed form (DroppedPlate): it sinks when its top face reaches the
   // surface, i.e. after falling h − 1e-9 m, at t_s = time_to_fall(h − 1e-9), with its centre at
   // z = −h/2 (the top face, h/2 above the centre, at z = 0). The stepper locates the crossing of
-  // the last vertex inside the step by linear interpolation of its depth: for a depth z(t) with
-  // |z''| = |k w² − g| and |z'| = w at the crossing, that errs by at most |z''| dt²/(8 w). rk4's own
-  // error ((dt·rate)⁴ ≈ 1e-11 relative at 1e-4 s) is far below it, so the sinking time must be
-  // within that bound (× 2 for the step's cubic term) at every contact step, i.e. fall like dt².
-  // The position is on the same line as the time: the interpolated centre is at −h/2 to round-off.
+  // the last vertex inside the step on the step's cubic Hermite interpolant, which errs less than
+  // linear interpolation of its depth would: for a depth z(t) with |z''| = |k w² − g| and |z'| = w
+  // at the crossing, at most |z''| dt²/(8 w). rk4's own error ((dt·rate)⁴ ≈ 1e-11 relative at
+  // 1e-4 s) is far below it, so the sinking time must be within that bound (× 2 for the step's
+  // cubic term) at every contact step. The located centre is at −h/2 to round-off.
   const DroppedPlate p;
   const double t_exact = p.time_to_fall(p.h - 1e-9);
   const double w = p.speed(t_exact), accel = std::abs(p.k() * w * w - p.env.gravity_m_s2);
@@ -302,8 +303,9 @@ BOOST_AUTO_TEST_CASE(the_first_touch_is_the_vertex_that_crosses_first_at_the_loc
   // Oracle: exact_first_touch (closed-form flight: parabola, rotation at constant ω about the
   // symmetry axis), for a stone without spin (yawed 7° so that one vertex is the lowest) and one
   // spun at 40 rev/s. rk4 in 1e-4 s flight steps integrates the parabola exactly and the rotation
-  // to ~1e-9 rad; the touch is located inside a 1e-5 s contact step by linear interpolation of the
-  // vertex depths, which errs in time by at most a dt²/(8 |ż|), a = g + ω² R the largest vertex
+  // to ~1e-9 rad; the touch is located inside a 1e-5 s contact step on the step's Hermite
+  // interpolant, which errs less than linear interpolation of the vertex depths, whose error in
+  // time is at most a dt²/(8 |ż|), a = g + ω² R the largest vertex
   // acceleration, ż the vertex's vertical speed at the touch; the point then errs by the vertex
   // speed times that, plus a dt²/8 (× 2 for the step's cubic term). The deepest vertex at the end
   // of the first wet step (what a solver that does not interpolate reports) is off by up to
@@ -337,6 +339,73 @@ BOOST_AUTO_TEST_CASE(the_first_touch_is_the_vertex_that_crosses_first_at_the_loc
     const double miss = (r.contacts[0].first_touch_m - exact.point_m).norm();
     BOOST_TEST(miss <= bound_x, spin_rev_s << " rev/s: first touch " << miss << " m from the exact point, bound "
                                            << bound_x << " m");
+  }
+}
+
+BOOST_AUTO_TEST_CASE(the_first_touch_time_converges_at_the_scheme_s_order) {
+  // Oracle: exact_first_touch (closed-form flight) for the stone spun at 40 rev/s about its tilted
+  // symmetry axis. The touch is located on the step's cubic Hermite interpolant (O(dt⁴)), so rk4 in
+  // uniform steps dt must show its own order 4 in the touch time (the rotation is the only part it
+  // does not integrate exactly); linear interpolation of the depths would show 2. The observed
+  // order between successive halvings, log2(e(dt)/e(dt/2)), must be within kOrderSlack of 4. The
+  // steps are dt = t_touch / (N + ½), so that the touch lies mid-step at every N: the
+  // interpolant's error constant depends on where in its step the event falls.
+  constexpr double kOrderSlack = 0.5;
+  const Stone stone = prism_stone();
+  const Environment env = vacuum();
+  RigidState s0;
+  s0.position_m = Vec3(0, 0, 0.1);
+  s0.velocity_m_s = Vec3(8 * std::cos(0.17), 0, -8 * std::sin(0.17));
+  s0.orientation = Quat(Eigen::AngleAxisd(-0.26, Vec3::UnitY())) * Quat(Eigen::AngleAxisd(0.12, Vec3::UnitZ()));
+  const double spin = 2 * std::numbers::pi * 40;
+  set_body_angular_velocity(stone, s0, Vec3(0, 0, spin));
+  const ExactTouch exact = exact_first_touch(stone, s0, s0.orientation * Vec3(0, 0, spin), env.gravity_m_s2);
+  std::vector<double> errors, steps;
+  for (int n : {32, 64, 128, 256}) {
+    const double dt = exact.t_s / (n + 0.5);
+    steps.push_back(dt);
+    RealtimeOptions o;
+    o.scheme = Scheme::rk4;
+    o.dt_s = o.contact_dt_s = dt;
+    o.t_max_s = exact.t_s + 2e-3;
+    o.record_trajectory = false;
+    const ThrowResult r = run_realtime(stone, env, s0, o);
+    BOOST_REQUIRE(!r.contacts.empty());
+    errors.push_back(std::abs(r.contacts[0].start_s - exact.t_s));
+  }
+  for (std::size_t i = 0; i + 1 < errors.size(); ++i) {
+    const double order = std::log2(errors[i] / errors[i + 1]);
+    BOOST_TEST(std::abs(order - 4) <= kOrderSlack, "dt " << steps[i] << " → " << steps[i + 1] << ": errors "
+                                                        << errors[i] << ", " << errors[i + 1] << " s, order " << order);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(the_adaptive_stepper_locates_the_first_touch_to_its_tolerance) {
+  // Oracle: exact_first_touch as above. bs32 with rtol = atol_m = tol keeps the position error per
+  // unit time near tol, so the touch time errs by about tol × t / (the vertex's vertical speed,
+  // ~1.4 m/s here): at most 10 tol (a margin of ~100 over that estimate) at every tolerance, and
+  // every step of the flight is far longer than the fixed schemes' 10 µs contact step.
+  constexpr double kTimePerTolerance_s = 10;  // seconds of touch-time error per unit tolerance
+  const Stone stone = prism_stone();
+  const Environment env = vacuum();
+  RigidState s0;
+  s0.position_m = Vec3(0, 0, 0.1);
+  s0.velocity_m_s = Vec3(8 * std::cos(0.17), 0, -8 * std::sin(0.17));
+  s0.orientation = Quat(Eigen::AngleAxisd(-0.26, Vec3::UnitY())) * Quat(Eigen::AngleAxisd(0.12, Vec3::UnitZ()));
+  const double spin = 2 * std::numbers::pi * 40;
+  set_body_angular_velocity(stone, s0, Vec3(0, 0, spin));
+  const ExactTouch exact = exact_first_touch(stone, s0, s0.orientation * Vec3(0, 0, spin), env.gravity_m_s2);
+  for (double tol : {1e-4, 1e-6, 1e-8}) {
+    RealtimeOptions o;
+    o.scheme = Scheme::bs32;
+    o.rtol = o.atol_m = tol;
+    o.t_max_s = exact.t_s + 1e-4;
+    o.record_trajectory = false;
+    const ThrowResult r = run_realtime(stone, env, s0, o);
+    BOOST_REQUIRE(!r.contacts.empty());
+    const double e = std::abs(r.contacts[0].start_s - exact.t_s);
+    BOOST_TEST(e <= kTimePerTolerance_s * tol, "tol " << tol << ": touch error " << e << " s in " << r.stats.steps << " steps");
+    BOOST_TEST(exact.t_s / r.stats.steps > 1e-5, "tol " << tol << ": " << r.stats.steps << " steps");
   }
 }
 

@@ -38,10 +38,10 @@ const char* to_string(Outcome o);
 
 struct SolverStats {
   long steps = 0;              // accepted steps (all segments)
-  long contact_steps = 0;      // real-time: steps taken with the contact step size
+  long contact_steps = 0;      // real-time: steps taken with the contact step size (bs32: started wet)
   long rhs_evaluations = 0;
-  long root_evaluations = 0;   // reference only
-  long error_test_failures = 0;  // reference only
+  long root_evaluations = 0;   // reference; real-time bs32: trial steps cut back to a surface crossing
+  long error_test_failures = 0;  // reference; real-time bs32: trial steps rejected by the error test
   long nonlinear_iterations = 0;  // reference only
   long segments = 0;           // reference: integrations between located events
   double cpu_s = 0;            // CPU time of the solve: its own thread's (solvers/realtime/clocks.hpp)

@@ -15,18 +15,10 @@
 // velocity error moves the stone by atol); quaternion atol/ℓ (an attitude error that moves the rim
 // by atol); angular momentum atol·L₀/ℓ (the angular-velocity error atol·V/ℓ² of the least-inertia
 // axis moves the rim at atol·V/ℓ, like the velocity tolerance).
-#include "model/stone/rigid_state.hpp"
+#include "solvers/realtime/state_scales.hpp"
 #include "solvers/reference/reference_options.hpp"
 
 namespace stoneskip {
-
-struct StateScales {
-  double length_m = 1;
-  double speed_m_s = 1;
-  double angular_momentum_kg_m2_s = 1;
-};
-
-StateScales state_scales(const Stone& stone, const RigidState& initial, double gravity_m_s2);
 
 // The 13 absolute tolerances (per_component as above; uniform: atol everywhere).
 StateVector absolute_tolerances(const ReferenceOptions& o, const StateScales& scales);

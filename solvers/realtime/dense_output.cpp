@@ -1,0 +1,56 @@
+#include "solvers/realtime/dense_output.hpp"
+
+#include <cmath>
+
+namespace stoneskip {
+
+StateVector HermiteStep::at(double theta) const {
+  // Hermite basis (Hairer, Nørsett & Wanner §II.6, Eq. 6.7).
+  const double t = theta, t2 = t * t, t3 = t2 * t;
+  const double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + t, h01 = -2 * t3 + 3 * t2, h11 = t3 - t2;
+  StateVector y;
+  for (int i = 0; i < kStateSize; ++i) y[i] = h00 * y0[i] + h10 * h_s * f0[i] + h01 * y1[i] + h11 * h_s * f1[i];
+  return y;
+}
+
+RigidState HermiteStep::state_at(double theta) const {
+  const StateVector y = at(theta);
+  RigidState s = from_vector(y.data());
+  s.orientation.normalize();
+  return s;
+}
+
+double vertex_depth(const Stone& stone, const RigidState& s, const WaterSurface* surface, int k) {
+  const Vec3 w = s.position_m + s.orientation.toRotationMatrix() * stone.body_mesh.vertices[k];
+  const double eta = surface ? surface->height_m(w.x(), w.y()) : 0.0;
+  return eta - w.z();
+}
+
+double crossing_fraction(const HermiteStep& step, const Stone& stone, const WaterSurface* surface, int k, double d0,
+                         double d1, double fraction_tolerance) {
+  constexpr int kMaxIterations = 100;
+  // The sign convention of the ends: "under" is d > 0. Keep a bracket [a, b] with the end values'
+  // under-ness differing, as the caller's test (d ≤ 0 against d > 0) does.
+  double a = 0, b = 1, fa = d0, fb = d1;
+  const bool a_under = fa > 0;
+  int side = 0;
+  for (int it = 0; it < kMaxIterations && b - a > fraction_tolerance; ++it) {
+    double c = (fa == fb) ? 0.5 * (a + b) : a + (b - a) * fa / (fa - fb);
+    if (!(c > a && c < b)) c = 0.5 * (a + b);
+    const double fc = vertex_depth(stone, step.state_at(c), surface, k);
+    if ((fc > 0) == a_under) {
+      a = c;
+      fa = fc;
+      if (side == -1) fb *= 0.5;  // Illinois: halve the stale end's value
+      side = -1;
+    } else {
+      b = c;
+      fb = fc;
+      if (side == 1) fa *= 0.5;
+      side = 1;
+    }
+  }
+  return b;  // the first fraction at which the vertex is on the end's side
+}
+
+}  // namespace stoneskip

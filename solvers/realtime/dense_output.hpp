@@ -1,0 +1,36 @@
+#pragma once
+// Dense output of one step: the cubic Hermite interpolant through the states and their time
+// derivatives at both ends (Hairer, Nørsett & Wanner, Solving ODEs I, §II.6, Eq. 6.7), and the
+// time inside the step at which a vertex crosses the water surface along it.
+//
+// The interpolant's error is O(h⁴) locally, so an event located on it keeps the order of a scheme
+// up to 4 (rk4, Bogacki–Shampine 3(2)); linear interpolation of the depths would cap it at 2. The
+// quaternion is interpolated as four numbers and normalised (its derivative ½(0, ω)⊗q is in the
+// right-hand side, model/README.md §1.3).
+#include "model/stone/rigid_body.hpp"
+
+namespace stoneskip {
+
+struct HermiteStep {
+  StateVector y0{}, y1{};  // the states at the start and the end of the step
+  StateVector f0{}, f1{};  // dy/dt there (the right-hand side)
+  double h_s = 0;
+
+  // The interpolated flat state at t0 + θ h (θ ∈ [0, 1]); exact at θ = 0 and 1.
+  StateVector at(double theta) const;
+  // The same as a RigidState with its quaternion normalised.
+  RigidState state_at(double theta) const;
+};
+
+// Depth of body vertex k below the surface (d = η − z; > 0 under water).
+double vertex_depth(const Stone& stone, const RigidState& s, const WaterSurface* surface, int k);
+
+// The fraction θ ∈ [0, 1] of the step at which vertex k's depth, along the interpolant, crosses
+// zero, given depths d0 and d1 of opposite sign (one of them ≤ 0 < the other) at the step's ends.
+// Illinois regula falsi to |Δθ| ≤ fraction_tolerance (Dahlquist & Björck, Numerical Methods
+// §6.2.3); the returned θ is the bracket's end on the side of the step's end.
+constexpr double kFullFractionTolerance = 1e-13;  // a few hundred ulps of the unit interval
+double crossing_fraction(const HermiteStep& step, const Stone& stone, const WaterSurface* surface, int k,
+                         double d0, double d1, double fraction_tolerance = kFullFractionTolerance);
+
+}  // namespace stoneskip
