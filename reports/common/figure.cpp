@@ -49,6 +49,14 @@ void write_dat(const fs::path& path, const Table& t) {
   s << "\n" << std::setprecision(10);
   const std::size_t nc = t.columns.size();
   for (std::size_t r = 0; r < t.rows(); ++r) {
+    // A row of NaN only is a blank line: gnuplot breaks a line there (a NaN it skips, joining the
+    // points either side of it — a failed run bridged as if it had a result).
+    bool all_nan = nc > 0;
+    for (std::size_t c = 0; c < nc; ++c) all_nan = all_nan && std::isnan(t.values[r * nc + c]);
+    if (all_nan) {
+      s << "\n";
+      continue;
+    }
     for (std::size_t c = 0; c < nc; ++c) {
       double v = t.values[r * nc + c];
       s << (c ? " " : "");

@@ -53,7 +53,7 @@ std::string frame_plot_commands(const FramePlot& p) {
     char note[160];
     const double h = p.stone_z_m;
     std::snprintf(note, sizeof note, "stone: %.3g cm %s the still level%s", 100 * std::abs(h), h >= 0 ? "above" : "below",
-                  in_window ? " (drawn on the box's lid)" : ", outside this window");
+                  in_window ? (h >= 0 ? " (drawn on the box's lid)" : " (drawn on the box's floor)") : ", outside this window");
     g << "set label 3 " << gnuplot_quote(note) << " at screen 0.56, screen 0.06 left front\n";
   }
   g << "splot " << p.near << " with pm3d notitle\n"

@@ -297,11 +297,11 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
       std::snprintf(speed, sizeof speed, "real time");
     left[0] = 0;
     if (left_t_s_ >= 0 && f.t_s >= left_t_s_)
-      std::snprintf(left, sizeof left, "\nthe stone left the pond at t = %.3f s: the movie ends at %.3f s; %ld contacts after that are not shown",
-                    left_t_s_, s.end_t_s, s.contacts_beyond);
+      std::snprintf(left, sizeof left, " — LEFT THE POND at %.3f s; the movie ends at %.3f s, %ld later contacts not shown", left_t_s_,
+                    s.end_t_s, s.contacts_beyond);
     char title[480];
-    std::snprintf(title, sizeof title, "t = %.3f s   %s%s   (colour ±%.2g mm, 3-D box ±%.2g mm; means of %d×%d cells)%s", f.t_s,
-                  speed, f.sunk ? ", the stone has sunk" : "", 1e3 * s.scale_m, 1e3 * s.near_z_m, top_block_, top_block_, left);
+    std::snprintf(title, sizeof title, "t = %.3f s   %s%s%s   (colour ±%.2g mm, 3-D box ±%.2g mm; means of %d×%d cells)", f.t_s, speed,
+                  f.sunk ? ", the stone has sunk" : "", left, 1e3 * s.scale_m, 1e3 * s.near_z_m, top_block_, top_block_);
     p.title = title;
     gp << "set output '" << frame_name("frame", static_cast<long>(q) + 1, "png") << "'\n"
        << frame_plot_commands(p) << "set output\nprint 'frame " << q + 1 << "'\n";

@@ -45,10 +45,11 @@ std::vector<std::pair<double, double>> count_points(const Record& s) {
   return pts;
 }
 
-// One sweep's curve: a step curve per run of successful solves (gnuplot's histeps joins across a
-// blank line, so a failure ends a table instead: the curve is broken there, never bridged), the grid
-// values as dots and the failed runs as crosses on a row of their own at -1. Every table names the
-// stored rows it draws (the figure test compares them).
+// One sweep's curve: the stored runs as dots (grid values and bracket ends; the figure test checks
+// them against data.h5) and, through them, a step outline per run of successful solves: each count
+// holds to halfway to its neighbours, so a change is drawn at the middle of its bracket and the last
+// value shows over the last half spacing. A failed run ends the outline — never bridged — and is a
+// cross on a row of its own at -1.
 std::vector<PlotSeries> count_curve(const Record& s, const std::string& title, const std::string& colour) {
   const std::string counts = s.path() + "/counts", th = s.path() + "/thresholds";
   using Rows = TableSource::Rows;
@@ -57,22 +58,30 @@ std::vector<PlotSeries> count_curve(const Record& s, const std::string& title, c
                                     {th, "lo", "count_below", rows, at},
                                     {th, "hi", "count_above", rows, at}};
   };
-  std::vector<PlotSeries> out;
+  PlotSeries outline{title, {}, {}, "lines lw 1.5" + colour, {}};
+  PlotSeries dots{"", {}, {}, "points pt 7 ps 0.5" + colour, sources(Rows::y_nonnegative, kNaN)};
   PlotSeries failed{title + ": solve failed", {}, {}, "points pt 2 ps 1.6 lw 2" + colour, sources(Rows::y_negative, -1)};
-  bool in_run = false;
-  for (const auto& [x, y] : count_points(s)) {
+  const auto pts = count_points(s);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const auto [x, y] = pts[i];
     if (y < 0) {
       failed.x.push_back(x);
       failed.y.push_back(-1);
-      in_run = false;
+      if (!outline.x.empty() && !std::isnan(outline.x.back())) {  // a gap: the line stops here
+        outline.x.push_back(kNaN);
+        outline.y.push_back(kNaN);
+      }
       continue;
     }
-    if (!in_run) out.push_back({out.empty() ? title : "", {}, {}, "histeps lw 1.5" + colour, sources(Rows::y_nonnegative, kNaN)});
-    in_run = true;
-    out.back().x.push_back(x);
-    out.back().y.push_back(y);
+    dots.x.push_back(x);
+    dots.y.push_back(y);
+    const bool first = i == 0 || pts[i - 1].second < 0, last = i + 1 == pts.size() || pts[i + 1].second < 0;
+    outline.x.push_back(first ? x : 0.5 * (pts[i - 1].first + x));
+    outline.y.push_back(y);
+    outline.x.push_back(last ? x : 0.5 * (x + pts[i + 1].first));
+    outline.y.push_back(y);
   }
-  out.push_back(table_series("", s, "counts", "value", "bounces", "points pt 7 ps 0.6" + colour, Rows::y_nonnegative));
+  std::vector<PlotSeries> out{outline, dots};
   if (!failed.x.empty()) out.push_back(failed);
   return out;
 }
@@ -115,9 +124,10 @@ SectionOutput sweeps_section(const Record& c, const Record& fig9) {
     ax.extra = "set yrange [" + std::string(any_failed ? "-1.5" : "-0.5") + ":*]\nset offsets 0, 0, 1, 0\n" +
                (any_failed ? "set ytics add ('failed' -1)\n" : "");
     w.figure(line_figure("sweep_" + param, "Bounce count against " + axis_of(param), ax, ps, param, "bounces"));
-    w.text("Each count holds to halfway to its neighbour (gnuplot `histeps`), so a change is drawn at the middle of its final "
-           "bracket — the value in the thresholds table below — and the last grid value holds over the last half spacing; dots: "
-           "the grid values; × on the row *failed*: a run whose solve failed, where the curve is broken, not bridged.");
+    w.text("Dots: every stored run (the grid values and both ends of each bracket). Each count holds to halfway to its "
+           "neighbours, so a change is drawn at the middle of its final bracket — the value in the thresholds table below — "
+           "and the last grid value holds over the last half spacing. × on the row *failed*: a run whose solve failed; the "
+           "line stops at the run before it and starts again at the run after it, never bridged.");
     std::vector<std::string> headers{axis_of(param)};
     for (const auto& n : names) headers.push_back(who(pr.at(n)));
     MarkdownTable counts(headers);

@@ -92,11 +92,14 @@ Figure convergence_figure(const Record& c, const std::string& kind) {
       anchor_e = e.back();
     }
     add_stencil_curve(f, p, first, f.name + "_" + name, t, name, "lp");
+    const std::string stored = c.at(name).at(kind).path() + "/points";  // columns 1:2 are h, l2_error_m as stored
+    f.sources.push_back({f.name + "_" + name, {TableSource{stored, "h", "l2_error_m"}}});
   }
   if (anchor_h > 0) {  // a slope-2 guide through the first stencil's finest point, shifted down
     Table g{{"h", "guide"}, {}};
     for (double h : {hmin, hmax}) g.add_row({h, 0.3 * anchor_e * (h / anchor_h) * (h / anchor_h)});
     f.tables.emplace_back(f.name + "_slope2", g);
+    f.sources.push_back({f.name + "_slope2", {}});  // a guide, computed here
     p << ", '" << f.name << "_slope2.dat' u 1:2 w l lc rgb 'black' dt 3 t 'slope 2'";
   }
   f.script = p.str();

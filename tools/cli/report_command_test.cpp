@@ -117,7 +117,8 @@ int check_figures_match_their_tables(const fs::path& dir, int& computed) {
       BOOST_TEST_CONTEXT("figure " << name << ", tables " << tables.front() << " …, from " << key) {
         Points plotted, stored;
         for (const auto& t : tables) {
-          BOOST_TEST(script.find("'" + t + ".dat' using 1:2 ") != std::string::npos);
+          BOOST_TEST((script.find("'" + t + ".dat' using 1:2 ") != std::string::npos ||
+                      script.find("'" + t + ".dat' u 1:2 ") != std::string::npos));
           const Points p = plotted_points(dir / "figures" / (t + ".dat"));
           plotted.insert(plotted.end(), p.begin(), p.end());
         }
