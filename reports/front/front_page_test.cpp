@@ -66,4 +66,14 @@ BOOST_AUTO_TEST_CASE(the_movie_and_every_throw_are_linked) {
                      "7, 4.25, sank | 1, 1.24, sank |"));
 }
 
+BOOST_AUTO_TEST_CASE(two_reports_of_one_title_are_told_apart_by_folder) {
+  FrontPageInput in = two_reports();
+  in.reports.push_back(in.reports.back());
+  in.reports.back().folder = "capture_scene";
+  const std::string md = front_page_markdown(in);
+  BOOST_TEST(has(md, "### [Wii Remote captures (`captures/`)](captures/index.md)"));
+  BOOST_TEST(has(md, "### [Wii Remote captures (`capture_scene/`)](capture_scene/index.md)"));
+  BOOST_TEST(has(md, "### [Water surface verification](waves/index.md)"));
+}
+
 BOOST_AUTO_TEST_SUITE_END()
