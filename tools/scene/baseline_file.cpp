@@ -109,7 +109,7 @@ BounceBaseline read_baseline(const std::string& path) {
     b.scheme = t.string_or("scheme", "");
     Scheme sc;
     if (!b.scheme.empty() && !parse_scheme(b.scheme, sc))
-      t.fail("scheme", "'" + b.scheme + "' is not semi_implicit_euler, midpoint or rk4");
+      t.fail("scheme", "'" + b.scheme + "' is not bs32, semi_implicit_euler, midpoint or rk4");
     // 0 or absent: the case's; otherwise checked with the case's [solver] in sweep_of().
     b.dt_s = t.number_or("dt_s", 0);
     b.contact_dt_s = t.number_or("contact_dt_s", 0);

@@ -22,12 +22,18 @@ double rhs_per_step(Scheme s) {
     case Scheme::semi_implicit_euler: return 1;
     case Scheme::midpoint: return 2;
     case Scheme::rk4: return 4;
+    case Scheme::bs32: return 6;  // 3 per trial; as many trials cut back to a crossing or rejected
   }
   return 4;
 }
 
-// Worst-case steps of the real-time stepper: every step at contact_dt_s.
-double realtime_steps(const RealtimeOptions& o) { return std::ceil(o.t_max_s / o.contact_dt_s); }
+// Worst-case steps of the real-time stepper: every step at contact_dt_s; bs32 has no step floor,
+// so it is estimated as if every step were 1e-5 s (its mean step in a planing contact at rtol 1e-8
+// is ~2e-4 s).
+constexpr double kAdaptiveEstimateStep_s = 1e-5;
+double realtime_steps(const RealtimeOptions& o) {
+  return std::ceil(o.t_max_s / (is_adaptive(o.scheme) ? kAdaptiveEstimateStep_s : o.contact_dt_s));
+}
 
 // Trajectory samples held in memory: one per output_dt_s (plus contact transitions), or every step.
 double samples(double t_max_s, double output_dt_s, double max_steps) {
@@ -76,7 +82,7 @@ ResourceEstimate estimate_run(const StoneCase& c, const RunSolvers& solvers) {
     const RealtimeOptions& o = c.realtime;
     const double steps = realtime_steps(o), rhs = rhs_per_step(o.scheme);
     e.add_work(steps * rhs * triangles, kMaxTriangleEvaluations,
-               "triangle evaluations of the real-time stepper (t_max_s / contact_dt_s = " + sci(steps) + " steps × " +
+               "triangle evaluations of the real-time stepper (t_max_s / contact step = " + sci(steps) + " steps × " +
                    sci(rhs) + " right-hand sides × " + sci(triangles) + " triangles)");
     const double n = samples(o.t_max_s, o.output_dt_s, steps);
     e.add_memory(n * sample_bytes(solvers.writes_file), sci(n) + " trajectory samples of the real-time run");

@@ -33,6 +33,10 @@ constexpr double kMaxSpeed_m_s = 1000;          // throw.speed_m_s, each velocit
 constexpr double kMaxSpin_rev_s = 1000;         // |throw.spin_rev_s|
 constexpr double kMaxAngularSpeed_rad_s = 1e4;  // |wobble_rad_s|, each angular velocity component
 constexpr double kMinStep_s = 1e-9, kMaxStep_s = 1;            // solver dt_s, contact_dt_s
+constexpr double kMinTolerance = 1e-14, kMaxTolerance = 0.1;    // solver rtol, atol_m (bs32)
+constexpr double kAdaptiveLargestStep_s = 1e-2;  // bs32's dt_s when a case gives none: 3.6 turns at 60 rev/s
+                                                 // in flight would fail its error test anyway
+constexpr double kAdaptiveOutputStep_s = 1e-3;   // bs32's output_dt_s when a case gives none
 constexpr double kMinDuration_s = 1e-6, kMaxDuration_s = 1e5;  // solver t_max_s
 constexpr double kMaxStepsPerThrow = 1e9;       // t_max_s / contact_dt_s
 constexpr double kMaxWaterOrigin_m = 1e6;       // |water.origin_x_m|, |water.origin_y_m|
