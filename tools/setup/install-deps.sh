@@ -10,6 +10,7 @@ packages=(
   gnuplot-nox
   ffmpeg                       # `stoneskip scene --movie` assembles the frames; ffprobe checks them in the tests
   openmpi-bin libopenmpi-dev   # `mpirun stoneskip sweep` (optional at build time: CMake says if absent)
+  python3-h5py python3-numpy   # tools/python/stoneskip_data.py, the Python reader, and its test (for /usr/bin/python3)
 )
 
 missing=()
