@@ -62,7 +62,7 @@ with tempfile.TemporaryDirectory(prefix="stoneskip_python_") as work:
                 raw = f[name]
                 check(list(raw.attrs["columns"]) == t.columns, f"{name}: columns are a string array")
                 check(len(raw.attrs["units"]) == len(t.columns), f"{name}: one unit per column")
-                check(np.array_equal(raw[()], t.values), f"{name}: values as h5py reads them")
+                check(np.array_equal(raw[()], t.values, equal_nan=True), f"{name}: values as h5py reads them (NaN: no value)")
                 for c in t.columns:
                     check(t.units[c] != "", f"{name}: column {c} has no unit")
                     by_name = sd.unit_of_name(c)
