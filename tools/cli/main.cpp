@@ -17,7 +17,9 @@
 
 #include "model/water/leapfrog_kernel.hpp"
 #include "tools/cli/command_registry.hpp"
+#include "stoneskip_version.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/shipped_files.hpp"
 #include "tools/io/signal_cleanup.hpp"
 
 namespace stoneskip::cli {
@@ -80,7 +82,10 @@ int main(int argc, char** argv) {
   }
   CLI::App app{"stoneskip: verification and validation of real-time stone-skipping simulation"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "stoneskip 0.1.0");
+  // The version, and where the shipped cases are found (tools/io/shipped_files.hpp).
+  const std::filesystem::path shipped = stoneskip::shipped_cases_dir();
+  app.set_version_flag("--version", std::string("stoneskip ") + stoneskip::kVersion + "\nshipped cases: " +
+                                        (shipped.empty() ? std::string("none found") : shipped.string()) + "\n");
   for (const auto& add : stoneskip::cli::registered_commands()) add(app);
   try {
     app.parse(argc, argv);

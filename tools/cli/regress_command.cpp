@@ -23,6 +23,7 @@
 #include "tools/cli/terminal_progress.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/shipped_files.hpp"
 #include "tools/scene/baseline_file.hpp"
 #include "tools/scene/resource_estimate.hpp"
 
@@ -33,9 +34,9 @@ namespace fs = std::filesystem;
 
 std::vector<std::string> default_baselines() {
   std::vector<std::string> files;
-  const fs::path dir = "cases/baselines";
+  const fs::path dir = locate_input("cases/baselines");  // here, else the shipped ones (tools/io/shipped_files.hpp)
   if (!fs::is_directory(dir))
-    throw_input_error(dir.string(), 0, "", "no baseline folder here (run from the repository root, or give --baseline FILE)");
+    throw_input_error(dir.string(), 0, "", "no baseline folder here or shipped (give --baseline FILE)");
   for (const auto& e : fs::directory_iterator(dir))
     if (e.path().extension() == ".toml") files.push_back(e.path().string());
   std::sort(files.begin(), files.end());

@@ -1,5 +1,5 @@
 // stoneskip report render DIR     rebuild DIR/index.md and DIR/figures/ from DIR/data.h5 alone
-// stoneskip plot DIR              the same (kept for the README's older instructions)
+// stoneskip plot DIR              an alias of `report render DIR` (its older name), nothing more
 //
 // A report is a function of its data: this is the same rendering the report commands run after
 // their studies, so it reproduces index.md byte for byte.
@@ -26,7 +26,7 @@ void add_report_render(CLI::App& report) {
 
 void add_plot(CLI::App& app) {
   auto dir = std::make_shared<std::string>();
-  auto* cmd = app.add_subcommand("plot", "Redraw a report's figures (and index.md) from DIR/data.h5, without re-running");
+  auto* cmd = app.add_subcommand("plot", "Alias of `report render DIR` (its older name): rebuild index.md and figures from DIR/data.h5");
   cmd->add_option("DIR", *dir, "Report folder (holds data.h5)")->required();
   cmd->callback([dir] { render(*dir); });
 }

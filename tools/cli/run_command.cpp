@@ -3,18 +3,24 @@
 //
 // One throw of a stone case: prints a readable summary (bounces, each contact's times and speeds,
 // distance, lateral deviation, why the throw ended, what it cost) or, with --json, one JSON object
-// (with --solver both: {"case": ..., "realtime": {...}, "reference": {...}}).
+// (with --solver both: {"case": ..., "realtime": {...}, "reference": {...}, "agreement": {...}}).
+// With --solver both a last line says how far the two agree: the bounce counts, the first
+// contact's start time in each and their difference, and the contact lists compared
+// (verification/stones/contact_comparison.hpp).
 //   stoneskip run cases/paper_8ms_spin.toml
 //   stoneskip run cases/paper_8ms_spin.toml --set environment.convention=paper --json
 //   stoneskip run cases/clanet_disk.toml --solver both --out clanet.h5
 // Before any work: the case is validated, the run's memory and work are estimated and held to the
 // limits of cases/README.md ("Limits"), and the --out file's place is checked by creating its
 // temporary. A failed solve (exit 1) writes no result file.
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <iostream>
 #include <memory>
 
 #include "solvers/reference/cvode_stone.hpp"
+#include "verification/stones/contact_comparison.hpp"
 #include "tools/cli/command_registry.hpp"
 #include "tools/cli/json_output.hpp"
 #include "tools/cli/limit_options.hpp"
@@ -40,6 +46,42 @@ struct RunArgs {
   CLI::Option* out_option = nullptr;
   ResourceLimits limits;
 };
+
+// The first contact's start (s), or NaN when the throw never touched the water.
+double first_contact_s(const ThrowResult& r) {
+  return r.contacts.empty() ? std::numeric_limits<double>::quiet_NaN() : r.contacts.front().start_s;
+}
+
+std::string seconds(double t_s) {
+  if (!std::isfinite(t_s)) return "none";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4f s", t_s);
+  return b;
+}
+
+// How the real-time run agrees with the reference: one line, and the same as JSON.
+std::string agreement_line(const ThrowResult& rt, const ThrowResult& ref) {
+  const ContactComparison c = compare_contacts(rt, ref);
+  const double d = first_contact_s(rt) - first_contact_s(ref);
+  char diff[64] = "";
+  if (std::isfinite(d)) std::snprintf(diff, sizeof diff, ", difference %+.3g ms", 1e3 * d);
+  return "agreement bounces realtime " + std::to_string(rt.bounces) + ", reference " + std::to_string(ref.bounces) +
+         (rt.bounces == ref.bounces ? " (same)" : " (differ)") + "; first contact at " + seconds(first_contact_s(rt)) +
+         " and " + seconds(first_contact_s(ref)) + diff + "; contacts: " + c.brief() + "\n";
+}
+
+nlohmann::json agreement_json(const ThrowResult& rt, const ThrowResult& ref) {
+  const ContactComparison c = compare_contacts(rt, ref);
+  const double d = first_contact_s(rt) - first_contact_s(ref);
+  nlohmann::json j;
+  j["bounces_realtime"] = rt.bounces;
+  j["bounces_reference"] = ref.bounces;
+  j["same_bounces"] = rt.bounces == ref.bounces;
+  j["first_contact_difference_s"] = std::isfinite(d) ? nlohmann::json(d) : nlohmann::json(nullptr);
+  j["same_contacts"] = c.same_contacts();
+  j["contacts"] = c.brief();
+  return j;
+}
 
 void run(const RunArgs& a) {
   StoneCase c = load_stone_case(a.case_file, a.sets);
@@ -79,6 +121,7 @@ void run(const RunArgs& a) {
     } else {
       j["case"] = c.title;
       for (const auto& [name, r] : results) j[name] = json_summary(r);
+      j["agreement"] = agreement_json(results[0].second, results[1].second);
     }
     j["convention"] = to_string(c.environment.convention);
     // The paper convention is Eq. 2 as printed: its law is newtonian, its pressure uniform.
@@ -88,6 +131,7 @@ void run(const RunArgs& a) {
     std::cout << json_text(j) << std::endl;
   } else {
     for (const auto& [name, r] : results) std::cout << text_summary(c, r) << (results.size() > 1 ? "\n" : "");
+    if (results.size() == 2) std::cout << agreement_line(results[0].second, results[1].second);
   }
   if (writes) {
     if (failed) {

@@ -116,6 +116,39 @@ BOOST_AUTO_TEST_CASE(the_result_file_holds_trajectory_contacts_case_and_version)
   fs::remove(out);
 }
 
+BOOST_AUTO_TEST_CASE(solver_both_says_how_far_the_two_solvers_agree) {
+  // Oracle: the two solvers' own blocks of the same JSON object (bounces, first contact start):
+  // the agreement repeats their counts and subtracts their start times, to rounding.
+  const Run r = run("run cases/paper_8ms_spin.toml --solver both --json");
+  BOOST_REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& a = j["agreement"];
+  BOOST_TEST(a["bounces_realtime"].get<int>() == j["realtime"]["bounces"].get<int>());
+  BOOST_TEST(a["bounces_reference"].get<int>() == j["reference"]["bounces"].get<int>());
+  BOOST_TEST(a["same_bounces"].get<bool>() == (j["realtime"]["bounces"] == j["reference"]["bounces"]));
+  BOOST_REQUIRE(!j["realtime"]["contacts"].empty());
+  BOOST_REQUIRE(!j["reference"]["contacts"].empty());
+  const double d = j["realtime"]["contacts"][0]["start_s"].get<double>() - j["reference"]["contacts"][0]["start_s"].get<double>();
+  BOOST_TEST(a["first_contact_difference_s"].get<double>() == d, boost::test_tools::tolerance(1e-12));
+  // The text form ends with the same agreement in one line.
+  const Run t = run("run cases/paper_8ms_spin.toml --solver both");
+  BOOST_REQUIRE(t.status == 0);
+  const std::string want = "agreement bounces realtime " + std::to_string(a["bounces_realtime"].get<int>()) + ", reference " +
+                           std::to_string(a["bounces_reference"].get<int>());
+  BOOST_TEST(t.out.find(want) != std::string::npos, t.out);
+}
+
+BOOST_AUTO_TEST_CASE(an_overridden_throw_says_so_in_its_title) {
+  // Oracle: the case file's title ("... 8 m/s throw ...") and the override given: the title must
+  // not claim the file's throw unchanged when --set changed it.
+  const Run plain = run("run cases/paper_8ms_spin.toml --json");
+  const Run changed = run("run cases/paper_8ms_spin.toml --set throw.speed_m_s=12 --json");
+  BOOST_REQUIRE(plain.status == 0);
+  BOOST_REQUIRE(changed.status == 0);
+  const std::string title = nlohmann::json::parse(plain.out)["case"];
+  BOOST_TEST(nlohmann::json::parse(changed.out)["case"].get<std::string>() == title + " [--set throw.speed_m_s=12]");
+}
+
 BOOST_AUTO_TEST_CASE(bad_input_gives_one_line_exit_2_and_no_output_file) {
   // Oracle: the project's bad-input rule — each defect planted by hand and named in the message.
   const fs::path c = scratch("bad.toml");

@@ -1,19 +1,27 @@
 // stoneskip scene CASE [--set key=value ...] [--json] [--movie FILE.mp4|.gif [--movie-size WxH] [--movie-rate HZ]]
+//                      [--out FILE.h5 [--water-frames T1,T2,...]]
 //
 // Runs a stone case as a scene, frame by frame, for its [scene] duration whether or not the stone
 // has sunk: the stone on its [water] (coupled as water.coupling says; still water, no field at
 // all, without [water] or with coupling = "none"). Prints the frames per second simulated (no
 // drawing), the slowest frame, and what each part cost — thread CPU and wall per frame, the parts
 // (stone, draught, water, recording) by the wall clock — and the throw's bounces. With --movie the
-// frames are drawn with gnuplot and assembled with ffmpeg (a progress bar while drawing).
+// frames are drawn with gnuplot and assembled with ffmpeg (a progress bar while drawing). With
+// --out the throw is stored as `run --out` stores it, with the scene's settings in /scene, and
+// --water-frames T,... adds the water surface at the first frame at or after each time, as
+// float32 (frames × ny × nx) in /water: at most kMaxWaterFrames frames, held to --max-memory-gb.
 //   stoneskip scene cases/scenes/seed_8ms.toml
 //   stoneskip scene cases/scenes/seed_8ms.toml --json
 //   stoneskip scene cases/scenes/seed_8ms_paper.toml --movie seed_paper.mp4
 //   stoneskip scene cases/scenes/seed_8ms.toml --set water.coupling=one_way --set scene.duration_s=1
+//   stoneskip scene cases/scenes/seed_8ms.toml --out seed.h5 --water-frames 0.1,0.5,1
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <set>
 #include <sstream>
 #include <unistd.h>
 
@@ -23,7 +31,9 @@
 #include "tools/cli/limit_options.hpp"
 #include "tools/cli/terminal_progress.hpp"
 #include "tools/io/atomic_file.hpp"
+#include "tools/io/hdf5_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/output_over_input.hpp"
 #include "tools/io/signal_cleanup.hpp"
 #include "tools/io/subprocess.hpp"
 #include "tools/scene/resource_estimate.hpp"
@@ -44,6 +54,9 @@ struct SceneArgs {
   std::string movie_size = "1280x540";
   double movie_rate_hz = 0;
   double movie_slow = MovieOptions{}.slow_motion;
+  std::string out;
+  bool out_given = false;
+  std::vector<double> water_frames_s;
   ResourceLimits limits;
 };
 
@@ -80,6 +93,59 @@ std::string general(double v, int significant = 4) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*g", significant, v);
   return buf;
+}
+
+// A scene file stores at most this many water frames: 100 frames of the seed's 500 × 500 pond
+// are 100 MB of float32; more is a movie's job (--movie), not a data file's.
+constexpr std::size_t kMaxWaterFrames = 100;
+
+// The water surface at chosen frames, kept as float32 (the field's own precision where it is
+// float32; far finer than the stencil's error where it is double) until the file is written.
+struct WaterFrames {
+  std::set<long> wanted;  // frame indices, 1 … N
+  std::vector<double> t_s;
+  std::vector<long> index;
+  std::vector<float> heights_m;  // frames × ny × nx, row-major, x fastest
+  std::vector<double> scratch;
+  void record(const SceneFrame& f) {
+    if (!f.field || !wanted.count(f.index)) return;
+    f.field->heights(scratch);
+    heights_m.insert(heights_m.end(), scratch.begin(), scratch.end());
+    t_s.push_back(f.t_s);
+    index.push_back(f.index);
+  }
+};
+
+// The frames of --water-frames: each time picks the first frame at or after it (frame k shows
+// t = k / rate, k = 1 … N); refused before any work when out of the scene or too many.
+std::set<long> chosen_frames(const std::vector<double>& times_s, const SceneOptions& o) {
+  if (times_s.size() > kMaxWaterFrames)
+    throw_input_error("--water-frames", 0, "", "at most " + std::to_string(kMaxWaterFrames) + " frames (got " +
+                                                   std::to_string(times_s.size()) + ")");
+  std::set<long> frames;
+  for (double t : times_s) {
+    if (!(t >= 0 && t <= o.duration_s))
+      throw_input_error("--water-frames", 0, "", "every time must lie in the scene, 0 to " + general(o.duration_s) + " s (got " +
+                                                     general(t) + ")");
+    const long k = std::max(1L, static_cast<long>(std::ceil(t * o.frame_rate_hz - 1e-9)));
+    frames.insert(std::min(k, o.frames()));
+  }
+  return frames;
+}
+
+void write_water(const H5Group& root, const SceneOptions& o, const WaterFrames& w) {
+  H5Group g = root.create_group("water");
+  const HeightFieldOptions& f = o.water->field;
+  g.set_attr("nx", static_cast<long long>(f.nx));
+  g.set_attr("ny", static_cast<long long>(f.ny));
+  g.set_attr("cell_m", f.cell_m);
+  // Grid point (i, j) lies at (origin_x_m + i cell_m, origin_y_m + j cell_m) in the throw's frame.
+  g.set_attr("origin_x_m", o.water->placement.origin_x_m);
+  g.set_attr("origin_y_m", o.water->placement.origin_y_m);
+  g.set_attr("stencil", f.stencil.name);
+  g.write_vector("t_s", w.t_s, "s");
+  g.write_ints("frame", std::vector<long long>(w.index.begin(), w.index.end()));
+  g.write_floats_3d("height_m", w.heights_m, {w.t_s.size(), static_cast<std::size_t>(f.ny), static_cast<std::size_t>(f.nx)}, "m");
 }
 
 nlohmann::json json_of(const StoneCase& c, const SceneOptions& o, const SceneSummary& s) {
@@ -196,8 +262,28 @@ void run(const SceneArgs& a) {
     work = std::make_unique<WorkFolder>();
     movie = std::make_unique<MovieRecorder>(mo, o, work->path());
   }
+  // The result file and the water frames: checked before any work too.
+  if (a.out_given && a.out.empty()) throw_input_error("--out", 0, "", "needs a file name (got an empty one)");
+  WaterFrames water;
+  if (!a.water_frames_s.empty()) {
+    if (a.out.empty()) throw_input_error("--water-frames", 0, "", "needs --out FILE.h5 to store them");
+    if (!o.water || o.coupling == Coupling::none) throw_input_error(c.file, 0, "water", "--water-frames needs a water field ([water] with coupling one_way or two_way)");
+    water.wanted = chosen_frames(a.water_frames_s, o);
+    ResourceEstimate e;
+    e.add_memory(4.0 * static_cast<double>(water.wanted.size()) * o.water->field.nx * o.water->field.ny,
+                 std::to_string(water.wanted.size()) + " stored water frames");
+    enforce_limits(e, a.limits, "--water-frames");
+  }
+  if (!a.out.empty()) {
+    refuse_output_over_inputs(a.out, OutputKind::file, {c.file, c.spec.mesh_file});
+    AtomicOutput probe(a.out);  // an unwritable place is refused before any work
+  }
   FrameRecorder recorder;
-  if (movie) recorder = [&](const SceneFrame& f) { movie->record(f); };
+  if (movie || !water.wanted.empty())
+    recorder = [&](const SceneFrame& f) {
+      if (movie) movie->record(f);
+      water.record(f);
+    };
   const SceneSummary s = run_scene(o, recorder);
   if (a.json) {
     nlohmann::json j = json_of(c, o, s);
@@ -228,6 +314,21 @@ void run(const SceneArgs& a) {
       std::cout << "\n";
     }
   }
+  if (!a.out.empty()) {
+    if (s.stone.outcome == Outcome::failed) {
+      std::fprintf(stderr, "stoneskip: %s not written: the stone's solve failed (a failed run leaves no result file)\n", a.out.c_str());
+    } else {
+      write_throw_file(a.out, c, {{"realtime", &s.stone}}, [&](const H5Group& root) {
+        H5Group g = root.create_group("scene");
+        g.set_attr("coupling", std::string(to_string(o.coupling)));
+        g.set_attr("frame_rate_hz", o.frame_rate_hz);
+        g.set_attr("frames", static_cast<long long>(s.frames));
+        g.set_attr("duration_s", o.duration_s);
+        if (!water.t_s.empty()) write_water(root, o, water);
+      });
+      if (!a.json) std::cout << "wrote     " << a.out << (water.t_s.empty() ? std::string() : " (" + std::to_string(water.t_s.size()) + " water frames)") << "\n";
+    }
+  }
   if (s.stone.outcome == Outcome::failed) set_exit_code(1);
 }
 
@@ -243,9 +344,14 @@ void add_scene(CLI::App& app) {
                   "Movie frames per second: the scene's frame rate divided by a whole number (default: every frame for MP4, ≤ 30/s for GIF)");
   cmd->add_option("--movie-slow", a->movie_slow,
                   "Slow motion around each contact: the time-warp factor (1: real time throughout)")->capture_default_str();
+  cmd->add_option("--out", a->out, "Write the throw (as `run --out`), the scene's settings and any water frames to this HDF5 file");
+  cmd->add_option("--water-frames", a->water_frames_s,
+                  "Store the water surface at these times, s (comma-separated; the first frame at or after each; at most 100)")
+      ->delimiter(',');
   add_limit_options(cmd, a->limits);
   cmd->callback([a, cmd] {
     a->movie_given = cmd->count("--movie") > 0;
+    a->out_given = cmd->count("--out") > 0;
     run(*a);
   });
 }

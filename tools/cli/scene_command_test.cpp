@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tools/cli/test_support.hpp"
+#include "tools/io/hdf5_file.hpp"
 
 namespace {
 
@@ -151,6 +152,59 @@ BOOST_AUTO_TEST_CASE(a_movie_past_the_movie_limits_is_refused_before_the_scene_r
   BOOST_TEST(r.out.find("movie pixels") != std::string::npos, r.out);
   BOOST_TEST(std::count(r.out.begin(), r.out.end(), '\n') == 1, r.out);
   BOOST_TEST(fs::is_empty(tmp.path()));
+}
+
+BOOST_AUTO_TEST_CASE(water_frames_are_stored_at_the_first_frame_at_or_after_each_time) {
+  // Oracles: the frame rule (frame k shows t = k/90 s; 0.05 s → k = 5, 0.1 s → k = 9, 0 → k = 1),
+  // and the scene's own water volume: the pond starts flat, so the last stored frame's Σ z d²
+  // must equal the JSON's water_volume_change_m3, computed in double from the live field; the
+  // stored heights are float32, so they agree to float32 rounding of the summed |z| (kFloat32).
+  constexpr double kFloat32 = 1e-6;  // a few float32 ulps of each summed height
+  const TempDir dir("stoneskip_water_frames");
+  const fs::path out = dir.path() / "scene.h5";
+  const auto r = run_stoneskip("scene " + small_seed(0.1) + " --json --out " + out.string() + " --water-frames 0.05,0.1,0,0.1", false);
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
+  const auto j = nlohmann::json::parse(r.out);
+  const stoneskip::Hdf5Reader f(out);
+  const auto w = f.root().open_group("water");
+  BOOST_TEST(w.read_ints("frame") == (std::vector<long long>{1, 5, 9}));  // sorted, the repeated 0.1 once
+  const auto t = w.read_vector("t_s");
+  BOOST_REQUIRE(t.size() == 3u);
+  BOOST_TEST(t[1] == 5 / 90.0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(w.attr_int("nx") == 60);
+  BOOST_TEST(w.attr_int("ny") == 60);
+  const auto z = w.read_vector("height_m");
+  BOOST_REQUIRE(z.size() == 3u * 60 * 60);
+  const double d = w.attr_double("cell_m");
+  double volume = 0, magnitude = 0;
+  for (std::size_t k = 2 * 3600; k < z.size(); ++k) {
+    volume += z[k] * d * d;
+    magnitude += std::abs(z[k]) * d * d;
+  }
+  BOOST_TEST(magnitude > 0);  // the stone has disturbed the water by then
+  BOOST_TEST(std::abs(volume - j["water_volume_change_m3"].get<double>()) <= kFloat32 * magnitude + 1e-15);
+  // The throw is stored as `run --out` stores it.
+  BOOST_TEST(f.root().open_group("realtime").attr_int("bounces") == j["bounces"].get<long long>());
+  BOOST_TEST(f.root().open_group("scene").attr_int("frames") == 9);
+}
+
+BOOST_AUTO_TEST_CASE(water_frames_out_of_the_scene_or_without_a_file_are_refused) {
+  // Oracle: the documented bounds (tools/README.md): times within the scene, at most 100 frames,
+  // a file to store them in; one line naming --water-frames, exit 2, no file left.
+  const TempDir dir("stoneskip_water_frames_bad");
+  const fs::path out = dir.path() / "scene.h5";
+  auto refused = [&](const std::string& args, const std::string& words) {
+    const auto r = run_stoneskip("scene " + small_seed(0.1) + " " + args);
+    BOOST_TEST(r.status == 2, args);
+    BOOST_TEST(r.out.find("--water-frames") != std::string::npos, r.out);
+    BOOST_TEST(r.out.find(words) != std::string::npos, r.out);
+    BOOST_TEST(!fs::exists(out));
+  };
+  refused("--water-frames 0.05", "needs --out");
+  refused("--out " + out.string() + " --water-frames 0.2", "0 to 0.1 s");
+  std::string many;
+  for (int i = 0; i < 101; ++i) many += (i ? "," : "") + std::string("0.05");
+  refused("--out " + out.string() + " --water-frames " + many, "at most 100");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

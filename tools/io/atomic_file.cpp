@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "tools/io/input_error.hpp"
+#include "tools/io/shipped_files.hpp"
 
 namespace stoneskip {
 
@@ -199,7 +200,9 @@ void require_regular_file(const fs::path& path) {
     throw_input_error(path.string(), 0, "", "cannot read: it is " + file_type_words(st.st_mode) + ", not a regular file");
 }
 
-std::string read_text_file(const fs::path& path, std::size_t max_bytes) {
+std::string read_text_file(const fs::path& given, std::size_t max_bytes) {
+  // A shipped case named "cases/..." is found from any working directory (shipped_files.hpp).
+  const fs::path path = locate_input(given);
   require_regular_file(path);
   // Opened without blocking and checked again on the descriptor: the name may have been replaced
   // by a FIFO since the check.

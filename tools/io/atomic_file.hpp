@@ -71,7 +71,8 @@ void check_output_destination(const std::filesystem::path& path);
 // Writes a whole text file atomically.
 void write_text_file(const std::filesystem::path& path, const std::string& text);
 
-// Reads a whole text file; InputError naming the file if it is missing, is not a regular file (a
+// Reads a whole text file (a shipped "cases/..." file from any working directory: locate_input,
+// tools/io/shipped_files.hpp); InputError naming the file if it is missing, is not a regular file (a
 // folder, a FIFO, a device: refused without opening it), is larger than max_bytes, or cannot be read.
 std::string read_text_file(const std::filesystem::path& path,
                            std::size_t max_bytes = std::numeric_limits<std::size_t>::max());

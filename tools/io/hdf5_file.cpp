@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "stoneskip_version.hpp"
+#include "tools/io/column_units.hpp"
 #include "tools/io/input_error.hpp"
 
 namespace stoneskip {
@@ -52,6 +53,54 @@ void set_string_attr(hid_t obj, const std::string& name, const std::string& valu
   H5Id a = replace_attr(obj, name, t.get(), s.get());
   const char* p = value.c_str();
   check(H5Awrite(a.get(), t.get(), &p), "write attribute " + name);
+}
+
+// A 1-D array of strings as an attribute (h5py reads it as a list of str).
+void set_strings_attr(hid_t obj, const std::string& name, const std::vector<std::string>& values) {
+  H5Id t = string_type();
+  const hsize_t n = values.size();
+  H5Id s(H5Screate_simple(1, &n, nullptr), H5Sclose);
+  H5Id a = replace_attr(obj, name, t.get(), s.get());
+  std::vector<const char*> ptrs;
+  for (const auto& v : values) ptrs.push_back(v.c_str());
+  if (n > 0) check(H5Awrite(a.get(), t.get(), ptrs.data()), "write attribute " + name);
+}
+
+std::vector<std::string> get_strings_attr(hid_t obj, const std::string& name) {
+  H5Id a = open_attr(obj, name);
+  H5Id space(H5Aget_space(a.get()), H5Sclose);
+  const hssize_t n = H5Sget_simple_extent_npoints(space.get());
+  std::vector<char*> ptrs(static_cast<std::size_t>(std::max<hssize_t>(n, 0)), nullptr);
+  H5Id t = string_type();
+  if (!ptrs.empty()) check(H5Aread(a.get(), t.get(), ptrs.data()), "read attribute " + name);
+  std::vector<std::string> out;
+  for (char* p : ptrs) {
+    out.emplace_back(p ? p : "");
+    H5free_memory(p);
+  }
+  return out;
+}
+
+// A table's column names: a string array (current files) or one comma-separated string (files
+// written before the units).
+std::vector<std::string> get_column_names(hid_t ds) {
+  H5Id a = open_attr(ds, "columns");
+  H5Id space(H5Aget_space(a.get()), H5Sclose);
+  if (H5Sget_simple_extent_type(space.get()) == H5S_SIMPLE) return get_strings_attr(ds, "columns");
+  std::vector<std::string> names;
+  H5Id t = string_type();
+  char* p = nullptr;
+  check(H5Aread(a.get(), t.get(), &p), "read attribute columns");
+  const std::string cols = p ? p : "";
+  H5free_memory(p);
+  std::size_t start = 0;
+  while (!cols.empty()) {
+    const std::size_t comma = cols.find(',', start);
+    names.push_back(cols.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return names;
 }
 
 std::string get_string_attr(hid_t obj, const std::string& name) {
@@ -118,6 +167,11 @@ std::vector<double> Table::column(const std::string& name) const {
   throw std::out_of_range("no column " + name);
 }
 
+std::string Table::unit(std::size_t c) const {
+  if (c < units.size() && !units[c].empty()) return units[c];
+  return column_unit(columns.at(c));
+}
+
 H5Group H5Group::create_group(const std::string& name) const {
   hid_t g = check_id(H5Gcreate2(id(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                      "cannot create group " + name);
@@ -175,9 +229,22 @@ void H5Group::write_table(const std::string& name, const Table& t) const {
                            {static_cast<hsize_t>(t.rows()), static_cast<hsize_t>(t.columns.size())});
   if (!t.values.empty())
     check(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, t.values.data()), "write " + name);
-  std::string cols;
-  for (std::size_t i = 0; i < t.columns.size(); ++i) cols += (i ? "," : "") + t.columns[i];
-  set_string_attr(ds.get(), "columns", cols);
+  if (!t.units.empty() && t.units.size() != t.columns.size())
+    throw std::invalid_argument("write_table " + name + ": " + std::to_string(t.units.size()) + " units for " +
+                                std::to_string(t.columns.size()) + " columns");
+  std::vector<std::string> units;
+  for (std::size_t c = 0; c < t.columns.size(); ++c) units.push_back(t.unit(c));
+  set_strings_attr(ds.get(), "columns", t.columns);
+  set_strings_attr(ds.get(), "units", units);
+}
+
+void H5Group::write_floats_3d(const std::string& name, const std::vector<float>& v, const std::array<std::size_t, 3>& dims,
+                              const std::string& units) const {
+  if (v.size() != dims[0] * dims[1] * dims[2]) throw std::invalid_argument("write_floats_3d " + name + ": size does not match dims");
+  H5Id ds = create_dataset(id(), name, H5T_NATIVE_FLOAT,
+                           {static_cast<hsize_t>(dims[0]), static_cast<hsize_t>(dims[1]), static_cast<hsize_t>(dims[2])});
+  if (!v.empty()) check(H5Dwrite(ds.get(), H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), "write " + name);
+  set_string_attr(ds.get(), "units", units);
 }
 
 void H5Group::write_strings(const std::string& name, const std::vector<std::string>& v) const {
@@ -206,13 +273,11 @@ Table H5Group::read_table(const std::string& name) const {
   H5Id ds(check_id(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), "no dataset " + path_ + "/" + name), H5Dclose);
   auto dims = dataset_dims(ds.get());
   Table t;
-  std::string cols = get_string_attr(ds.get(), "columns");
-  std::size_t start = 0;
-  while (start <= cols.size() && !cols.empty()) {
-    std::size_t comma = cols.find(',', start);
-    t.columns.push_back(cols.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
+  t.columns = get_column_names(ds.get());
+  if (H5Aexists(ds.get(), "units") > 0) {
+    t.units = get_strings_attr(ds.get(), "units");
+    if (t.units.size() != t.columns.size()) throw std::runtime_error("HDF5: " + name + " has " + std::to_string(t.units.size()) +
+                                                                     " units for " + std::to_string(t.columns.size()) + " columns");
   }
   t.values.resize(element_count(dims));
   if (dims.size() != 2 || dims[1] != t.columns.size()) throw std::runtime_error("HDF5: " + name + " is not a table");

@@ -1,12 +1,14 @@
 #pragma once
-// Small RAII handles over the HDF5 C API: files, groups, datasets of doubles (1-D and 2-D, with a
-// column-names attribute and a units attribute), integer and string attributes; reading back the
-// same. Everything a result file or a report's data needs, nothing more.
+// Small RAII handles over the HDF5 C API: files, groups, datasets of doubles (1-D with a units
+// attribute; 2-D tables with `columns` and `units` attributes, each an array of strings, one per
+// column), 3-D float32 arrays, integer and string attributes; reading back the same. Everything a
+// result file or a report's data needs, nothing more.
 //
 // Writing goes through AtomicOutput: Hdf5Writer creates "<path>.tmp-PID" and renames it over the
 // destination in commit(), so a failed run leaves no partial .h5 file.
 #include <hdf5.h>
 
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -36,12 +38,18 @@ class H5Id {
 };
 
 // A row-major table of doubles with named columns (units in the names: "t_s", "x_m", ...).
+// Stored as a 2-D dataset with two string-array attributes: `columns` (the names) and `units`
+// (one per column: `units` when given and not empty, else column_unit(name), tools/io/column_units.hpp).
+// Files written before the units (one comma-separated `columns` string) are still read.
 struct Table {
   std::vector<std::string> columns;
   std::vector<double> values;  // rows × columns, row-major
+  std::vector<std::string> units = {};  // empty, or one per column ("" = from the name)
   std::size_t rows() const { return columns.empty() ? 0 : values.size() / columns.size(); }
   void add_row(const std::vector<double>& row);
   std::vector<double> column(const std::string& name) const;  // throws std::out_of_range
+  // The unit of column c: units[c] when given and not empty, else column_unit(columns[c]).
+  std::string unit(std::size_t c) const;
 };
 
 class H5Group {
@@ -64,6 +72,9 @@ class H5Group {
   void write_ints(const std::string& name, const std::vector<long long>& v) const;
   void write_table(const std::string& name, const Table& t) const;
   void write_strings(const std::string& name, const std::vector<std::string>& v) const;
+  // A 3-D array of float32 (dims[0] × dims[1] × dims[2], row-major) with a units attribute.
+  void write_floats_3d(const std::string& name, const std::vector<float>& v, const std::array<std::size_t, 3>& dims,
+                       const std::string& units) const;
   std::vector<double> read_vector(const std::string& name) const;
   std::vector<long long> read_ints(const std::string& name) const;
   Table read_table(const std::string& name) const;

@@ -13,6 +13,13 @@ constexpr auto kLogPeriod = std::chrono::seconds(10);  // at least one line this
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
+// On a terminal the updating line is erased when its work ends (carriage return, erase line), so
+// the results printed next on stdout do not land beside or below stale progress.
+void clear_line(bool printed_on_terminal) {
+  if (!printed_on_terminal) return;
+  std::fputs("\r\033[K", stderr);
+  std::fflush(stderr);
+}
 }  // namespace
 
 Progress::Progress(std::string label, std::size_t total, double quiet_s)
@@ -58,7 +65,7 @@ void Progress::done() {
   std::lock_guard<std::mutex> lock(mutex_);
   if (finished_) return;
   finished_ = true;
-  if (tty_ && printed_) std::fprintf(stderr, "\n");
+  clear_line(tty_ && printed_);
 }
 
 Heartbeat::Heartbeat(std::string label, std::function<std::string()> status, double quiet_s)
@@ -72,7 +79,7 @@ Heartbeat::~Heartbeat() {
   }
   wake_.notify_all();
   thread_.join();
-  if (tty_ && printed_) std::fprintf(stderr, "\n");
+  clear_line(tty_ && printed_);
 }
 
 void Heartbeat::loop() {

@@ -1,5 +1,6 @@
 #pragma once
-// Progress for long runs, on stderr: a single updating line when it is a terminal; otherwise a
+// Progress for long runs, on stderr (results go to stdout): a single updating line when it is a
+// terminal, erased when the work ends so that it never stays between results; otherwise a
 // line per 10 % and at least one every 10 s (so CI logs stay short but a long step still shows it
 // is alive), with the time left at the mean rate so far. A Progress made with quiet_s > 0 prints
 // nothing until that much wall time has passed, so short runs stay silent. Thread-safe: workers

@@ -292,7 +292,14 @@ StoneCase stone_case_from_document(const TomlDocument& doc) {
 }
 
 StoneCase load_stone_case(const std::string& path, const std::vector<std::string>& overrides) {
-  return stone_case_from_document(load_toml(path, overrides));
+  StoneCase c = stone_case_from_document(load_toml(path, overrides));
+  // The file's title names the file's throw ("8 m/s"): an overridden case says what changed.
+  if (!overrides.empty()) {
+    std::string changed;
+    for (const auto& o : overrides) changed += (changed.empty() ? "" : ", ") + o;
+    c.title += " [--set " + changed + "]";
+  }
+  return c;
 }
 
 std::string StoneCase::resolved_settings() const {

@@ -121,7 +121,8 @@ Table contacts_table(const ThrowResult& r) {
 }
 
 void write_throw_file(const std::string& path, const StoneCase& c,
-                      const std::vector<std::pair<std::string, const ThrowResult*>>& results) {
+                      const std::vector<std::pair<std::string, const ThrowResult*>>& results,
+                      const std::function<void(const H5Group& root)>& more) {
   Hdf5Writer w(path);
   const H5Group& root = w.root();
   stamp_provenance(root);
@@ -171,6 +172,7 @@ void write_throw_file(const std::string& path, const StoneCase& c,
     g.write_table("trajectory", trajectory_table(c.stone, *r));
     g.write_table("contacts", contacts_table(*r));
   }
+  if (more) more(root);
   w.commit();
 }
 

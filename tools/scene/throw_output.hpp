@@ -16,6 +16,7 @@
 //                     entry_path_angle_deg, exit_path_angle_deg, entry_attack_angle_deg,
 //                     exit_attack_angle_deg, entry_roll_deg, exit_roll_deg, entry_energy_J, exit_energy_J, first_touch_x_m,
 //                     first_touch_y_m, exit_x_m, exit_y_m, max_wetted_area_m2, bounced (1/0)
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -30,8 +31,10 @@ nlohmann::json json_summary(const ThrowResult& r);
 Table trajectory_table(const Stone& stone, const ThrowResult& r);
 Table contacts_table(const ThrowResult& r);
 
-// Writes the case and every (name, result) pair to a new HDF5 file, atomically.
+// Writes the case and every (name, result) pair to a new HDF5 file, atomically; `more` adds
+// groups of its own before the file is committed (a scene's water frames).
 void write_throw_file(const std::string& path, const StoneCase& c,
-                      const std::vector<std::pair<std::string, const ThrowResult*>>& results);
+                      const std::vector<std::pair<std::string, const ThrowResult*>>& results,
+                      const std::function<void(const H5Group& root)>& more = {});
 
 }  // namespace stoneskip

@@ -15,6 +15,7 @@ packages=(
   ffmpeg                       # `stoneskip scene --movie` assembles the frames; ffprobe checks them in the tests
   openmpi-bin libopenmpi-dev   # `mpirun stoneskip sweep` (optional at build time: CMake says if absent)
   g++-aarch64-linux-gnu qemu-user  # tools/setup/cross-aarch64.sh: the water tests built for aarch64, run emulated (optional)
+  python3-h5py python3-numpy   # tools/python/stoneskip_data.py, the Python reader, and its test (for /usr/bin/python3)
 )
 if [ "$what" = test ]; then
   packages+=(chromium)         # the report pages opened in headless Chromium (ctest stoneskip_browser; skipped without it)

@@ -23,6 +23,7 @@ Table matrix_table(const std::vector<double>& v, int nx, int ny) {
   std::vector<std::string> cols;
   for (int i = 0; i < nx; ++i) cols.push_back("x" + std::to_string(i));
   Table t = table(cols);
+  t.units.assign(cols.size(), "m");  // water heights
   for (int j = 0; j < ny; ++j) t.add_row(std::vector<double>(v.begin() + static_cast<long>(j) * nx, v.begin() + static_cast<long>(j + 1) * nx));
   return t;
 }

@@ -118,6 +118,7 @@ Record scene_convergence_findings(const SceneStudiesOptions& o, const ProgressFa
     for (const ConvergenceSequence* q : {&s.space, &s.time, &s.both}) {
       Record& k = r.child(q->kind);
       Table t = table({"n", "steps", "h", "l2_error_m", "max_error_m"});
+      t.units = {"1", "1", q->kind == "time" ? "s" : "m", "m", "m"};  // h: Δt (time) or d (space, both)
       for (const auto& p : q->points) t.add_row({double(p.n), double(p.steps), p.h, p.l2_m, p.max_m});
       k.set_table("points", t);
       store_order_fit(k, "fit", q->fit, f.judgement);

@@ -22,7 +22,7 @@ void store_series(Record& parent, const ConvergenceSeries& s, OrderJudgement j) 
   r.set("scheme", s.scheme);
   r.set("formal_order", s.formal_order);
   r.set("reference_error", s.reference_error);
-  Table t{{"h_s", "value", "error", "in_fit", "below_floor"}, {}};
+  Table t{{"h_s", "value", "error", "in_fit", "below_floor"}, {}, {"s", s.unit, s.unit, "1", "1"}};
   for (std::size_t i = 0; i < s.h_s.size(); ++i)
     t.add_row({s.h_s[i], s.value[i], s.error[i], s.in_fit[i] ? 1.0 : 0.0, s.below_floor[i] ? 1.0 : 0.0});
   r.set_table("points", t);

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "tools/io/column_units.hpp"
 #include "verification/stones/stone_studies.hpp"
 #include "verification/study/verdict_rules.hpp"
 #include "verification/study/words.hpp"
@@ -134,7 +135,8 @@ Record sweeps_findings(const std::vector<BounceSweepResult>& sweeps) {
         names.push_back(s.spec.name);
       }
     pr.set_strings("sweeps", names);
-    pr.set_table("values", Table{{"value"}, list.front()->spec.values});
+    const std::string unit = column_unit(p);  // the swept parameter's name carries its unit ("spin_rev_s")
+    pr.set_table("values", Table{{"value"}, list.front()->spec.values, {unit}});
     for (const auto* s : list) {
       Record& sr = pr.child(s->spec.name);
       sr.set("convention", std::string(to_string(s->spec.convention)));
@@ -143,11 +145,11 @@ Record sweeps_findings(const std::vector<BounceSweepResult>& sweeps) {
       sr.set("threshold_tolerance", s->spec.threshold_tolerance);
       sr.set("runs", s->runs);
       sr.set("cpu_s", s->cpu_s);
-      Table t{{"value", "bounces"}, {}};
+      Table t{{"value", "bounces"}, {}, {unit, "1"}};
       for (std::size_t i = 0; i < s->spec.values.size(); ++i) t.add_row({s->spec.values[i], double(s->counts[i])});
       sr.set_table("counts", t);
       sr.set_strings("failures", s->failures);
-      Table th{{"lo", "hi", "count_below", "count_above", "bisected"}, {}};
+      Table th{{"lo", "hi", "count_below", "count_above", "bisected"}, {}, {unit, unit, "1", "1", "1"}};
       for (const auto& x : s->thresholds)
         th.add_row({x.lo, x.hi, double(x.count_below), double(x.count_above), x.bisected ? 1.0 : 0.0});
       sr.set_table("thresholds", th);

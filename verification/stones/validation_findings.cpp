@@ -601,7 +601,8 @@ Record validation_findings(const ValidationResult& v, const ValidationOptions& o
       k.set("quantity", m.key);
       k.set("label", m.label);
       k.set("source", m.source);
-      Table t{{"x", "low", "high"}, {}};
+      // The one model curve (clanet_min_speed): the least speed that skips against the attack angle.
+      Table t{{"x", "low", "high"}, {}, {"deg", "m/s", "m/s"}};
       for (std::size_t j = 0; j < m.x.size(); ++j) t.add_row({m.x[j], m.low[j], m.high[j]});
       k.set_table("points", t);
     }

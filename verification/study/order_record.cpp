@@ -56,6 +56,9 @@ Table value_list(const std::vector<double>& values, const std::string& column) {
   Table t;
   t.columns = {column};
   t.values = values;
+  // Lists under the default name are the studies' grid sizes, step counts and σ fractions:
+  // dimensionless. A named column ("dt_s") carries its unit in its name.
+  if (column == "value") t.units = {"1"};
   return t;
 }
 

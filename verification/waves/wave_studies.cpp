@@ -132,6 +132,7 @@ namespace {
 void store_sequence(Record& parent, const ConvergenceSequence& seq, const OrderJudgement& j) {
   Record& r = parent.child(seq.kind);
   Table t = table({"n", "steps", "h", "sigma", "l2_error_m", "max_error_m", "cpu_s", "point_m"});
+  t.units = {"1", "1", seq.kind == "time" ? "s" : "m", "1", "m", "m", "s", "m"};  // h: Δt (time) or d (space, both)
   double cpu = 0;
   std::vector<double> h, e;
   for (const auto& p : seq.points) {
