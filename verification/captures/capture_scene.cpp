@@ -97,46 +97,6 @@ DraughtField trajectory_draught(const Mesh& body_mesh, const HeightFieldOptions&
   };
 }
 
-std::vector<double> hat_forced_leapfrog(const HeightFieldOptions& field, const std::vector<double>& initial_m,
-                                        const DraughtField& draught, int samples_per_step, long steps) {
-  HeightField f(field);
-  if (!initial_m.empty()) f.set_state(initial_m);
-  const bool periodic = field.boundary == Boundary::periodic;
-  DraughtWindow cur(field.nx, field.ny, periodic), next(field.nx, field.ny, periodic);
-  std::vector<double> b;
-  DraughtPatch sample, step_patch;
-  const double dt = field.dt_s;
-  const int k = samples_per_step;
-  auto add_piece = [&](double mid, double r) {  // r: the piece's midpoint, in steps after t_n
-    draught(mid, b);
-    sample.reset(0, 0, field.nx, field.ny);
-    bool wet = false;
-    for (std::size_t c = 0; c < b.size(); ++c) {
-      sample.b_m[c] = b[c];
-      wet = wet || b[c] != 0;
-    }
-    if (!wet) return;
-    cur.add(sample, (1.0 - r) / k);  // step n's falling half
-    next.add(sample, r / k);         // step n+1's rising half
-  };
-  // Step 0's rising half, [−Δt, 0]: the stone held at its release, ∫ hat₀/Δt = ½.
-  draught(0.0, b);
-  sample.reset(0, 0, field.nx, field.ny);
-  for (std::size_t c = 0; c < b.size(); ++c) sample.b_m[c] = b[c];
-  next.add(sample, 0.5);
-  std::swap(cur, next);
-  for (long n = 0; n < steps; ++n) {
-    const double t_n = f.time_s();
-    for (int q = 0; q < k; ++q) add_piece(t_n + (q + 0.5) * dt / k, (q + 0.5) / k);
-    cur.take(step_patch);
-    std::swap(cur, next);
-    f.step(step_patch);
-  }
-  std::vector<double> z;
-  f.heights(z);
-  return z;
-}
-
 std::vector<double> prescribed_forced_leapfrog(const HeightFieldOptions& field, const std::vector<double>& initial_m,
                                                const DraughtField& draught, int samples_per_step, long steps) {
   HeightField f(field);

@@ -79,13 +79,6 @@ DraughtField trajectory_draught(const Mesh& body_mesh, const HeightFieldOptions&
 std::vector<double> prescribed_forced_leapfrog(const HeightFieldOptions& field, const std::vector<double>& initial_m,
                                                const DraughtField& draught, int samples_per_step, long steps);
 
-// The same forced by the leapfrog's hat weights, as the scene's pressure forcing gathers its head
-// (solvers/scene/coupled_scene.hpp): step n receives h̄ⁿ = (1/Δt) ∫ hatₙ(t) b(t) dt, the integral
-// by the midpoint rule on `samples_per_step` equal pieces of each step (the scene's stone steps).
-// Second order in Δt even where b jumps in time at a grid point, once the pieces resolve the jumps.
-std::vector<double> hat_forced_leapfrog(const HeightFieldOptions& field, const std::vector<double>& initial_m,
-                                        const DraughtField& draught, int samples_per_step, long steps);
-
 struct SceneContactComparison {
   int index = 0;                          // 1-based
   double scene_start_s = 0, scene_end_s = 0;

@@ -3,9 +3,8 @@
 // ballistic path (a cubic Hermite curve holds a parabola), the scene without water identical to the
 // stepper on still water, the scene's contacts against CVODE within what the stepper's flight step
 // explains, and the forced leapfrog driven by the CVODE trajectory's draught converging to the
-// stencil's exact semi-discrete forced solution at second order in time when the draught is
-// gathered with the leapfrog's hat weights (a draught that jumps in time allows no more than
-// first order to a box window of samples).
+// stencil's exact semi-discrete forced solution at first order in time (what a draught that jumps
+// in time allows).
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -13,7 +12,6 @@
 #include "model/stone/throw.hpp"
 #include "verification/captures/capture_scene.hpp"
 #include "verification/captures/capture_scene_findings.hpp"
-#include "verification/convergence/order_fit.hpp"
 #include "verification/study/verdict_rules.hpp"
 
 using namespace stoneskip;
@@ -135,32 +133,28 @@ BOOST_AUTO_TEST_CASE(skipping_capture_through_the_scene_against_both_references)
   constexpr double kSplitRoundoff = 1e-15;  // a few ulps of millimetre heights
   BOOST_TEST(c.waves.total_m <= c.waves.model_m + c.waves.time_m + c.waves.space_m + kSplitRoundoff);
   BOOST_TEST(c.waves.model_m <= c.waves.path_m + c.waves.feedback_m + kSplitRoundoff);
-  // Order in time: the forced leapfrog with Δt, Δt/2, Δt/4, Δt/8 (same grid), forced with the
-  // leapfrog's hat weights as the scene's pressure forcing gathers its head (the same pieces of
-  // 1/128 of the coarsest step for every Δt), against the same semi-discrete solution. The rim of
-  // the stone sweeps over grid points, so b jumps in time there; the hat weights are the second
-  // difference's exact weights, so the order stays 2 (a box window of K samples gives 1).
+  // Order in time: the forced leapfrog with Δt, Δt/2, Δt/4 (same grid, same K) against the same
+  // semi-discrete solution. The stone's submerged rim sweeps over grid points, so b jumps in time
+  // there (capture_scene.hpp): at least first order, not necessarily second.
   const HeightFieldOptions& f = o.scene.water->field;
   const TrajectoryPose pose(c.reference.trajectory);
   const DraughtField b = trajectory_draught(o.scene.stone.body_mesh, f, o.scene.water->placement, pose);
-  std::vector<double> errors, steps_s;
-  constexpr int kPiecesPerCoarseStep = 128;
-  for (int halvings = 0; halvings <= 3; ++halvings) {
+  std::vector<double> errors{c.waves.time_m};
+  for (int halvings = 1; halvings <= 2; ++halvings) {
     HeightFieldOptions finer = f;
     finer.dt_s = f.dt_s / (1 << halvings);
-    const auto z = hat_forced_leapfrog(finer, {}, b, kPiecesPerCoarseStep >> halvings, c.waves.steps << halvings);
+    const auto z = prescribed_forced_leapfrog(finer, {}, b, o.scene.draught_samples, c.waves.steps << halvings);
     double e = 0;
     for (std::size_t i = 0; i < z.size(); ++i) e = std::max(e, std::abs(z[i] - c.waves.semi_discrete_m[i]));
     errors.push_back(e);
-    steps_s.push_back(finer.dt_s);
   }
-  const OrderFit fit = fit_order(steps_s, errors);
-  BOOST_TEST_MESSAGE("hat-weighted forced leapfrog: time errors " << errors[0] << " … " << errors[3] << " m, " << fit.brief());
-  BOOST_REQUIRE(fit.valid);
-  BOOST_TEST(fit.order_low <= 2.0);   // second order inside the fit's 95 % interval …
-  BOOST_TEST(fit.order_high >= 2.0);
-  constexpr double kFirstOrderExcluded = 1.5;  // … and first order outside it
-  BOOST_TEST(fit.order_low > kFirstOrderExcluded);
+  // A forcing of bounded variation guarantees first order; second order (smooth b) is not claimed.
+  constexpr double kOrderTolerance = 0.2;  // pairwise orders from two points each, no interval
+  for (std::size_t k = 1; k < errors.size(); ++k) {
+    const double order = std::log2(errors[k - 1] / errors[k]);
+    BOOST_TEST_MESSAGE("time error " << errors[k - 1] << " → " << errors[k] << " m: order " << order);
+    BOOST_TEST(order > 1 - kOrderTolerance);
+  }
   // Every error measured lies above the reference's own error (this is what makes them measurable).
   BOOST_TEST(c.waves.quadrature_m * kReferenceMargin < errors.back());
   // The findings: every verdict agrees with its rule.
