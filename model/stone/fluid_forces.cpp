@@ -17,7 +17,7 @@ namespace {
 // total force on the geometric wetted area. F_i = −K p_i W_i n_i acts at x_i.
 void add_distributed_loads(const Stone& stone, const Environment& env, const RigidState& s, const Mat3& R,
                            const Vec3& omega, const std::vector<Vec3>& world, const std::vector<double>& depth,
-                           double law_total_N, WaterLoads& out) {
+                           double law_total_N, WaterLoads& out, std::vector<FacePush>* pushes) {
   struct FaceLoad {
     double weight_m2;
     Vec3 centre_m;
@@ -66,7 +66,7 @@ void add_distributed_loads(const Stone& stone, const Environment& env, const Rig
     // nothing to distribute along, so the pressure is uniform on each face.
     Environment uniform = env;
     uniform.pressure_distribution = PressureDistribution::uniform;
-    const WaterLoads u = water_loads_from_depths(stone, uniform, s, R, omega, world, depth);
+    const WaterLoads u = water_loads_from_depths(stone, uniform, s, R, omega, world, depth, pushes);
     out.force_N = u.force_N;
     out.torque_N_m = u.torque_N_m;
     return;
@@ -77,14 +77,17 @@ void add_distributed_loads(const Stone& stone, const Environment& env, const Rig
     const Vec3 F = -(scale * faces[i].pressure_Pa * faces[i].weight_m2) * (R * stone.face_normals_body[i]);
     out.force_N += F;
     out.torque_N_m += (faces[i].centre_m - s.position_m).cross(F);
+    if (pushes) pushes->push_back({polys[i], F});
   }
 }
 
 }  // namespace
 
 WaterLoads water_loads_from_depths(const Stone& stone, const Environment& env, const RigidState& s, const Mat3& R,
-                                   const Vec3& omega, const std::vector<Vec3>& world, const std::vector<double>& depth) {
+                                   const Vec3& omega, const std::vector<Vec3>& world, const std::vector<double>& depth,
+                                   std::vector<FacePush>* pushes) {
   WaterLoads out;
+  if (pushes) pushes->clear();
   const int nv = static_cast<int>(world.size());
   out.vertex_count = nv;
   double deepest = -1e300;
@@ -113,6 +116,8 @@ WaterLoads water_loads_from_depths(const Stone& stone, const Environment& env, c
       const Vec3 F = printed_face_force_N(env, n, s.velocity_m_s + r.cross(omega), c.area_m2);
       out.force_N += F;
       out.torque_N_m += F.cross(r);
+      if (pushes)
+        pushes->push_back({clip_submerged_polygon(world[t[0]], world[t[1]], world[t[2]], depth[t[0]], depth[t[1]], depth[t[2]]), F});
       continue;
     }
     // Physical: v_i = v + ω × r_i; the law's pressure, zero unless the face advances into the water.
@@ -125,14 +130,18 @@ WaterLoads water_loads_from_depths(const Stone& stone, const Environment& env, c
     const Vec3 F = -(p * c.area_m2) * n;
     out.force_N += F;
     out.torque_N_m += r.cross(F);  // Eq. 3, physical order
+    if (pushes)
+      pushes->push_back({clip_submerged_polygon(world[t[0]], world[t[1]], world[t[2]], depth[t[0]], depth[t[1]], depth[t[2]]), F});
   }
-  if (distributed && law_total_N != 0) add_distributed_loads(stone, env, s, R, omega, world, depth, law_total_N, out);
+  if (distributed && law_total_N != 0) add_distributed_loads(stone, env, s, R, omega, world, depth, law_total_N, out, pushes);
   return out;
 }
 
-WaterLoads water_loads(const Stone& stone, const Environment& env, const RigidState& s, const WaterSurface* surface) {
+WaterLoads water_loads(const Stone& stone, const Environment& env, const RigidState& s, const WaterSurface* surface,
+                       std::vector<FacePush>* pushes) {
   // Still water: a stone whose bounding sphere is above z = 0 cannot touch it.
   if (!surface && s.position_m.z() - stone.bounding_radius_m > 0) {
+    if (pushes) pushes->clear();
     WaterLoads out;
     out.vertex_count = static_cast<int>(stone.body_mesh.vertices.size());
     out.deepest_depth_m = -(s.position_m.z() - stone.bounding_radius_m);
@@ -154,7 +163,7 @@ WaterLoads water_loads(const Stone& stone, const Environment& env, const RigidSt
     const double eta = surface ? surface->height_m(world[k].x(), world[k].y()) : 0.0;
     depth[k] = eta - world[k].z();
   }
-  return water_loads_from_depths(stone, env, s, R, omega, world, depth);
+  return water_loads_from_depths(stone, env, s, R, omega, world, depth, pushes);
 }
 
 AirLoads air_loads(const Stone& stone, const Environment& env, const RigidState& s) {

@@ -5,6 +5,7 @@
 
 #include "model/stone/environment.hpp"
 #include "model/stone/rigid_state.hpp"
+#include "model/stone/triangle_clip.hpp"
 #include "model/stone/water_surface.hpp"
 
 namespace stoneskip {
@@ -21,6 +22,16 @@ struct WaterLoads {
   bool fully_submerged() const { return submerged_vertices == vertex_count && vertex_count > 0; }
 };
 
+// What one wetted face presses on the water with (the scene's pressure coupling, model/README.md
+// §2.4): the force F_i the water puts on the stone through that face, and the wetted polygon it
+// acts on (clipped below the raised waterline where the Wagner rise is modelled). The water
+// receives −F_i; its vertical part spread over the polygon's xy-projection is the face's surface
+// pressure.
+struct FacePush {
+  ClippedPolygon wetted;
+  Vec3 force_N = Vec3::Zero();
+};
+
 struct AirLoads {
   Vec3 force_N = Vec3::Zero();  // torque is zero in both conventions (model/README.md §1.6, Eq. 7)
 };
@@ -34,14 +45,15 @@ struct AirLoads {
 //           (Eq. 2 as printed, whatever env.water_law says: environment_problem() refuses another
 //           law with this convention), τ_i = F_i × r_i (Eq. 3 as printed).
 // surface == nullptr: still water η = 0. Below the stone's bounding sphere nothing is evaluated.
+// pushes (optional): cleared, then one FacePush per face that pushes (Σ force_N = force_N).
 WaterLoads water_loads(const Stone& stone, const Environment& env, const RigidState& s,
-                       const WaterSurface* surface = nullptr);
+                       const WaterSurface* surface = nullptr, std::vector<FacePush>* pushes = nullptr);
 
 // The same from the vertices' world positions and signed depths (d_j = η − z_j), the rotation R
 // of s and the world angular velocity ω: for callers that already have them.
 WaterLoads water_loads_from_depths(const Stone& stone, const Environment& env, const RigidState& s, const Mat3& R,
                                    const Vec3& omega, const std::vector<Vec3>& world_m,
-                                   const std::vector<double>& depth_m);
+                                   const std::vector<double>& depth_m, std::vector<FacePush>* pushes = nullptr);
 
 // Disk air model (model/README.md §1.5; Eq. 6): u = v·n_d;
 // physical: F = −C_a ρ_a u|u| S_d n_d;  paper: F = −C_a ρ_a u² S_d n_d (always along −n_d).

@@ -57,11 +57,12 @@ std::string findings(const Record& secs) {
 
 SectionOutput coupling_section(const Record& c) {
   SectionWriter w(c, "1. What the stone's waves change: two-way against one-way against still water");
-  w.text("Each shipped scene is run three times with the same stone, throw and frames: **two-way** (the stone's draught "
-         "forces the water, model/README.md §2.4), **one-way** (the stone is clipped against the field, which it does not disturb: on a "
+  w.text("Each shipped scene is run three times with the same stone, throw and frames: **two-way** (the stone forces the water, "
+         "with its pressure or its draught as the case says, model/README.md §2.4), **one-way** (the stone is clipped against the field, which it does not disturb: on a "
          "still pond the field stays flat) and **still water** (no field at all). The contacts are compared in order (a "
-         "contact is a maximal interval with some triangle wet, model/README.md §1.8); a change of the contact times beyond " +
-         us(c.number("time_tolerance_s")) + " counts as visible.");
+         "contact is a maximal interval with some triangle wet, model/README.md §1.8). The bounce counts are compared on ensembles of "
+         "perturbed throws (a count that changes under a 1e-9 relative change of the speed says nothing run against run); a change "
+         "of the first contact's times beyond " + us(c.number("time_tolerance_s")) + " counts as visible.");
   for (const auto& name : c.strings("cases")) {
     const Record& r = c.at(name);
     const Record& s = r.at("settings");
@@ -116,6 +117,47 @@ SectionOutput coupling_section(const Record& c) {
                                  " on): there the stone's draught is ignored (model/water/draught_patch.hpp) and the surface "
                                  "it meets is the height at the pond's nearest edge, so those contacts make no rings and feel no "
                                  "waves of their own; the movie ends when the stone leaves the pond."));
+    }
+    {
+      const Record& e = r.at("ensemble");
+      const Table& m = e.table("members");
+      w.text("The bounce counts on ensembles of " + fmt(e.number("members_per_setting")) + " throws per setting, speed × (1 ± ε), ε from " +
+             fmt(e.number("perturbation_smallest"), 2) + " to " + fmt(e.number("perturbation_largest"), 2) + ": two-way " +
+             fmt(e.number("mean_two_way"), 3) + " ± " + fmt(e.number("sd_two_way"), 2) + ", one-way " + fmt(e.number("mean_one_way"), 3) + " ± " +
+             fmt(e.number("sd_one_way"), 2) + " (mean ± sd); difference " + fmt(e.number("difference"), 3) + ", 95 % interval [" +
+             fmt(e.number("difference_low"), 3) + ", " + fmt(e.number("difference_high"), 3) + "] (Welch).");
+      MarkdownTable et({"speed factor − 1", "two-way bounces", "one-way bounces"});
+      for (std::size_t k = 0; k < m.rows(); ++k)
+        et.row({fmt(m.column("speed_factor")[k] - 1, 2), fmt(m.column("two_way_bounces")[k]), fmt(m.column("one_way_bounces")[k])});
+      w.table(et);
+    }
+    {
+      // The two forcings of two-way coupling (model/README.md §2.4): what the water received against what the stone received.
+      const Record& fr = r.at("forcing");
+      w.text("What the water receives, by forcing (the scene's own: " + code(fr.text("scene_forcing")) +
+             "). The stone's hydrodynamic vertical impulse is Σ F_z h over its steps; the water's is Σ Δt Σ h̄ ρ g d² over its steps. "
+             "The energy budget: the waves' energy E (the leapfrog's own, solvers/scene/wave_energy.hpp) gains the pressure's work W "
+             "and loses what damping takes, D.");
+      MarkdownTable ft({"forcing", "stone impulse (N s)", "water impulse (N s)", "water / stone", "W (J)", "D (J)", "E start … end (J)",
+                        "budget residual", "energy at |k|d > π/2"});
+      for (const char* key : {"pressure", "displacement"}) {
+        const Record& k = fr.at(key);
+        ft.row({code(key), fmt(k.number("stone_vertical_impulse_N_s"), 4), fmt(k.number("water_vertical_impulse_N_s"), 4),
+                fmt(k.number("impulse_ratio"), 4), fmt(k.number("pressure_work_J"), 3), fmt(k.number("damping_loss_J"), 3),
+                fmt(k.number("wave_energy_start_J"), 3) + " … " + fmt(k.number("wave_energy_end_J"), 3),
+                fmt(k.number("energy_budget_residual"), 2), pct(k.number("grid_scale_energy_fraction"))});
+      }
+      w.table(ft);
+      const Table& ci = fr.at("pressure").table("contact_impulses");
+      MarkdownTable ct({"pressing", "start … end (s)", "stone (N s)", "water (N s)", "water / stone − 1"});
+      for (std::size_t k = 0; k < ci.rows() && k < 20; ++k) {
+        const double st = ci.column("stone_N_s")[k], wa = ci.column("water_N_s")[k];
+        ct.row({fmt(double(k + 1)), fmt(ci.column("start_s")[k], 6) + " … " + fmt(ci.column("end_s")[k], 6), fmt(st, 4), fmt(wa, 4),
+                st != 0 ? fmt(wa / st - 1, 2) : std::string("–")});
+      }
+      w.text("Pressure forcing, contact by contact (runs of stone steps with the stone pressing on the water):");
+      w.table(ct);
+      if (ci.rows() > 20) w.text("(" + fmt(double(ci.rows())) + " in all; the first 20 shown, every one in data.h5.)");
     }
     std::vector<PlotSeries> series;
     for (const auto& [key, label] : {std::pair<const char*, const char*>{"two_way", "two-way"}, {"one_way", "one-way"}})

@@ -9,14 +9,29 @@
 //            throw is the still-water throw bit for bit.
 //   one_way  the stone is clipped against the field's surface (bilinear between grid points,
 //            model/water/height_field_surface.hpp); the field runs free.
-//   two_way  and the stone's draught b (model/coupling/draught.hpp) forces the field:
-//            z_tt = c²∇²(z + b) − μ z_t (the forced leapfrog, HeightField::step(DraughtPatch)).
-// Time: the field's level n (t_n = nΔt) is the surface the stone sees during
-// [t_n − Δt/2, t_n + Δt/2) (piecewise constant, as in a game loop); when the stone's clock passes
-// t_n + Δt/2 the field steps, forced by the window's draught (solvers/scene/draught_window.hpp:
-// K samples per step, K = 1 the spec's point sample at t_n). Each sample is taken at the start of
-// the first stone step at or after its time: within one contact step (the stepper steps finely
-// whenever the stone is in or near the water) of its node.
+//   two_way  and the stone forces the field, z_tt = c²∇²(z + h) − μ z_t (the forced leapfrog,
+//            HeightField::step(DraughtPatch)), with the head h chosen by SceneOptions::forcing:
+//   pressure      h = p_s/(ρ_w g), what the stone's faces press on the water with
+//                 (model/coupling/pressure_head.hpp: each face's push of the water law, rasterised
+//                 conservatively), so the water receives the stone's vertical impulse, opposite.
+//                 Evaluated at the start of every stone step and held over it (the semi-implicit
+//                 stepper's own quadrature of the stone's impulse); step k's head over [t_k, t_k+1]
+//                 goes to the water steps whose hats cover it, with the leapfrog's hat weights
+//                 h̄ⁿ = (1/Δt) ∫ hatₙ(t) h(t) dt, hatₙ = max(0, 1 − |t − t_n|/Δt)
+//                 (the exact weights of a second difference: z(t+Δt) − 2z(t) + z(t−Δt) =
+//                 ∫ hat z_tt), so the forced step stays second order in Δt under a footprint that
+//                 jumps between grid cells. The field's level n is the surface the stone sees during
+//                 [t_n, t_n+1): step n needs h up to t_n+1.
+//   displacement  h = b, the stone's draught (model/coupling/draught.hpp; the first model, kept
+//                 for comparison: model/README.md §2.4). The field's level n is the surface the
+//                 stone sees during [t_n − Δt/2, t_n + Δt/2); when the stone's clock passes
+//                 t_n + Δt/2 the field steps, forced by the window's draught
+//                 (solvers/scene/draught_window.hpp: K samples per step, K = 1 the spec's point
+//                 sample at t_n), each sample taken at the start of the first stone step at or
+//                 after its time.
+// Both record the stone's hydrodynamic vertical impulse Σ F_z h over the stone's steps and the
+// vertical impulse the water received, Σ Δt Σ h̄ ρ_w g d² over the water's steps, and (with
+// energy_budget) the waves' energy budget of solvers/scene/wave_energy.hpp.
 // Stability (model/README.md §2.4): under a floating stone b follows z with unit gain, so the two-way step
 // is stable only for σ = cΔt/d ≤ coupled_courant_limit(stencil) = the free limit / √2. A scene
 // above it is refused (SceneOptions::valid), not run: the growth there is geometric from the
@@ -48,6 +63,11 @@ enum class Coupling { none, one_way, two_way };
 const char* to_string(Coupling c);
 bool parse_coupling(const std::string& s, Coupling& out);
 
+// What forces the water under two-way coupling (model/README.md §2.4).
+enum class Forcing { pressure, displacement };
+const char* to_string(Forcing f);
+bool parse_forcing(const std::string& s, Forcing& out);
+
 // How far a scene runs: to its duration whatever the stone does (watching it), or only as long as
 // the stone's throw (`stoneskip run` on a case with [water]).
 enum class SceneEnd { at_duration, with_the_throw };
@@ -65,7 +85,11 @@ struct SceneOptions {
   RealtimeOptions stone_steps;     // its t_max_s is cut to the scene's end (SceneEnd::at_duration)
   Coupling coupling = Coupling::two_way;
   std::optional<SceneWater> water; // required unless coupling is none (then ignored)
-  int draught_samples = 8;         // K per water step (two_way)
+  Forcing forcing = Forcing::pressure;  // two_way
+  int draught_samples = 8;         // K per water step (two_way, displacement)
+  // Measure the waves' energy budget (solvers/scene/wave_energy.hpp): two transforms of the grid per
+  // water step, so off where speed is measured.
+  bool energy_budget = false;
   double frame_rate_hz = 90;       // one frame = 1/rate of simulated time
   double duration_s = 3;
   SceneEnd end = SceneEnd::at_duration;
@@ -111,6 +135,26 @@ struct DraughtEpisode {
   double lowest_surface_m = 0;       // lowest η under the stone's centre over the samples
 };
 
+// The vertical impulse over one run of consecutive stone steps with the stone pressing on the
+// water (pressure forcing): what the stone received, Σ F_z h, and what the grid received from
+// the rasterised head, Σ (Σ h ρ_w g d²) h (model/coupling/pressure_head.hpp).
+struct ContactImpulse {
+  double start_s = 0, end_s = 0;
+  double stone_N_s = 0, water_N_s = 0;
+};
+
+// The waves' energy budget over the scene (solvers/scene/wave_energy.hpp):
+// E_end − E_start = W − D up to round-off.
+struct EnergyBudget {
+  bool measured = false;
+  double start_J = 0, end_J = 0;    // E^{n+½} at the first and the last level
+  double pressure_work_J = 0;       // Σ Wₙ
+  double damping_loss_J = 0;        // Σ Dₙ
+  double grid_scale_fraction = 0;   // of E_end at |k| d > π/2
+  // |E_end − E_start − W + D| / max(|W|, |E_end − E_start|, D): 0 when nothing moved.
+  double residual() const;
+};
+
 struct SceneSummary {
   SceneOptions options_brief;      // the options as run, without the field's initial heights
   ThrowResult stone;               // the throw: contacts, bounces, trajectory, its own stats
@@ -120,7 +164,15 @@ struct SceneSummary {
   long draught_samples = 0;
   double max_draught_volume_m3 = 0;    // largest Σ b d² of one sample
   double draught_impulse_m3_s = 0;     // ∫ Σ b d² dt as applied to the water (Σ over steps of Δt Σ b̄ d²)
-  std::vector<DraughtEpisode> episodes;  // two_way
+  std::vector<DraughtEpisode> episodes;  // two_way, displacement
+  // two_way: the stone's hydrodynamic vertical impulse Σ F_z h over its steps (up to the scene's
+  // end or the throw's), and the vertical impulse the field's steps received, Σ Δt Σ h̄ ρ_w g d²
+  // (pressure: equal up to what lies beyond a non-periodic pond's rim or in the last
+  // unfinished step; displacement: ρ_w g times the draught's impulse).
+  double stone_vertical_impulse_N_s = 0;
+  double water_vertical_impulse_N_s = 0;
+  std::vector<ContactImpulse> contact_impulses;  // pressure
+  EnergyBudget energy;
   double volume_start_m3 = 0, volume_end_m3 = 0;  // Σ z d² of the field at the start and the end
   ActiveTileSummary tiles;         // the field's (all tiles every step in full mode)
   std::vector<FrameCost> frame_costs;

@@ -67,14 +67,20 @@ BOOST_AUTO_TEST_CASE(two_way_with_c_zero_is_one_way_on_still_water_bit_for_bit) 
   // stays exactly still while the stone presses on it: the two-way throw must equal the one-way
   // throw on still water, and that one the still-water throw, bit for bit. The draught must really
   // have been sampled under the stone, so the identity is not vacuous.
-  const SceneSummary two = run_scene(skipping_scene(Coupling::two_way, 0.0));
+  SceneOptions displaced = skipping_scene(Coupling::two_way, 0.0);
+  displaced.forcing = Forcing::displacement;
+  const SceneSummary two = run_scene(displaced);
+  const SceneSummary pressed = run_scene(skipping_scene(Coupling::two_way, 0.0));
   const SceneSummary one = run_scene(skipping_scene(Coupling::one_way, 0.0));
   const SceneSummary none = run_scene(skipping_scene(Coupling::none, 0.0));
   require_same_throw(two.stone, one.stone);
+  require_same_throw(pressed.stone, one.stone);
   require_same_throw(one.stone, none.stone);
   BOOST_TEST(two.max_draught_volume_m3 > 1e-6);  // a good part of the 21 cm³ stone under water
   BOOST_TEST(two.draught_impulse_m3_s > 0.0);
+  BOOST_TEST(pressed.water_vertical_impulse_N_s > 0.01);  // the stone pressed on the water
   BOOST_TEST(two.volume_end_m3 == 0.0);
+  BOOST_TEST(pressed.volume_end_m3 == 0.0);
 }
 
 BOOST_AUTO_TEST_CASE(with_c_above_zero_the_stone_makes_waves_and_no_water) {
@@ -115,6 +121,7 @@ BOOST_AUTO_TEST_CASE(a_stone_held_on_the_water_settles_the_field_to_the_closed_f
   o.stone_steps.dt_s = 0.01;
   o.stone_steps.contact_dt_s = 0.01;
   o.coupling = Coupling::two_way;
+  o.forcing = Forcing::displacement;
   SceneWater w;
   w.field.nx = w.field.ny = 32;
   w.field.cell_m = 1.0 / 32;
@@ -174,13 +181,18 @@ BOOST_AUTO_TEST_CASE(active_tiles_at_zero_epsilon_give_the_same_scene_bit_for_bi
 }
 
 BOOST_AUTO_TEST_CASE(water_steps_and_frames_follow_from_the_clocks) {
-  // Oracle: the loop's definitions — level n is seen on [t_n − Δt/2, t_n + Δt/2), so by the end
-  // T = N/rate the field has taken ⌊T/Δt + ½⌋ steps; N = ⌊duration · rate⌋ frames, frame k ending
-  // at k/rate; every frame's parts add up to its wall time (the stone's is the remainder, never
-  // negative). Water Δt = 7 ms against 1/90 s frames, so steps and frames do not line up.
-  SceneOptions o = skipping_scene(Coupling::two_way);
-  o.water->field.dt_s = 0.007;
-  o.duration_s = 0.25;
+  // Oracle: the loop's definitions — with the displacement forcing level n is seen on
+  // [t_n − Δt/2, t_n + Δt/2), so by the end T = N/rate the field has taken ⌊T/Δt + ½⌋ steps;
+  // with the pressure forcing on [t_n, t_n+1) (step n needs the hat up to t_n+1): ⌊T/Δt⌋;
+  // N = ⌊duration · rate⌋ frames, frame k ending at k/rate; every frame's parts add up to its
+  // wall time (the stone's is the remainder, never negative). Water Δt = 7 ms against 1/90 s
+  // frames, so steps and frames do not line up.
+  SceneOptions pressed = skipping_scene(Coupling::two_way);
+  pressed.water->field.dt_s = 0.007;
+  pressed.duration_s = 0.25;
+  BOOST_TEST(run_scene(pressed).water_steps == static_cast<long>(std::floor(22.0 / 90 / 0.007)));
+  SceneOptions o = pressed;
+  o.forcing = Forcing::displacement;
   const SceneSummary s = run_scene(o);
   BOOST_TEST(s.frames == 22);
   BOOST_TEST(s.water_steps == static_cast<long>(std::floor(22.0 / 90 / 0.007 + 0.5)));

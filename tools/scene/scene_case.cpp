@@ -18,6 +18,8 @@ WaterScene read_water(TomlTable w, TomlTable& top) {
   if (auto i = w.maybe_table("initial")) scene.initial = read_disturbance(*i);
   const std::string coupling = w.string_or("coupling", to_string(scene.coupling));
   if (!parse_coupling(coupling, scene.coupling)) w.fail("coupling", "'" + coupling + "' is not one of none, one_way, two_way");
+  const std::string forcing = w.string_or("forcing", to_string(scene.forcing));
+  if (!parse_forcing(forcing, scene.forcing)) w.fail("forcing", "'" + forcing + "' is not one of pressure, displacement");
   const long long samples = w.integer_or("draught_samples", scene.draught_samples);
   if (samples < 1 || samples > 4096) w.fail("draught_samples", "must be in [1, 4096]");
   scene.draught_samples = static_cast<int>(samples);
@@ -94,7 +96,8 @@ std::string scene_settings_toml(const std::optional<WaterScene>& water, const Sc
   s.precision(12);
   if (water) {
     const HeightFieldOptions& f = water->field;
-    s << "\n[water]\ncoupling = \"" << to_string(water->coupling) << "\"\ndraught_samples = " << water->draught_samples
+    s << "\n[water]\ncoupling = \"" << to_string(water->coupling) << "\"\nforcing = \"" << to_string(water->forcing)
+      << "\"\ndraught_samples = " << water->draught_samples
       << "\nstencil = \"" << f.stencil.name << "\"  # weights × 1/d²: " << f.stencil.centre << ", " << f.stencil.orth << ", "
       << f.stencil.diag << "\nnx = " << f.nx << "\nny = " << f.ny << "\ncell_m = " << f.cell_m
       << "\nwave_speed_m_s = " << f.wave_speed_m_s << "\ndamping_per_s = " << f.damping_per_s << "\nboundary = \""

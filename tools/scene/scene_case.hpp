@@ -26,7 +26,12 @@ struct WaterScene {
   std::optional<Disturbance> initial;  // absent: still water
   double origin_x_m = 0, origin_y_m = 0;
   Coupling coupling = Coupling::one_way;
-  int draught_samples = 8;             // K samples of b per water step (two_way)
+  // What forces the water under two_way (model/README.md §2.4): the stone's pressure in both
+  // conventions. The paper convention keeps the stone's printed equations (Lee & Baek 2013
+  // Eq. 1–6); how the water is forced is not among them, so the convention does not choose it,
+  // and with pressure the water receives what the stone receives in either.
+  Forcing forcing = Forcing::pressure;
+  int draught_samples = 8;             // K samples of b per water step (two_way, displacement)
 };
 
 // [scene]: the frames. Without a duration the scene lasts the stone's t_max_s.

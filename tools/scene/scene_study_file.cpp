@@ -89,6 +89,12 @@ SceneStudyFile load_scene_study_file(const std::string& path, const std::vector<
   };
   if (auto t = top.maybe_table("coupling")) {
     o.coupling.time_tolerance_s = positive(*t, "time_tolerance_s", o.coupling.time_tolerance_s);
+    o.coupling.ensemble_members = static_cast<int>(count_in(*t, "ensemble_members", o.coupling.ensemble_members, 2, 1000));
+    if (o.coupling.ensemble_members % 2 != 0) t->fail("ensemble_members", "must be even (the perturbations come in ± pairs)");
+    o.coupling.perturbation_smallest = positive(*t, "perturbation_smallest", o.coupling.perturbation_smallest);
+    o.coupling.perturbation_largest = positive(*t, "perturbation_largest", o.coupling.perturbation_largest);
+    if (o.coupling.perturbation_largest < o.coupling.perturbation_smallest || o.coupling.perturbation_largest >= 0.1)
+      t->fail("perturbation_largest", "must lie in [perturbation_smallest, 0.1)");
     t->finish();
   }
   if (auto t = top.maybe_table("stability")) {

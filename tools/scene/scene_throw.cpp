@@ -20,6 +20,7 @@ SceneOptions scene_options(const StoneCase& c, SceneEnd end) {
     sw.placement = FieldPlacement{w.origin_x_m, w.origin_y_m};
     o.water = std::move(sw);
     o.draught_samples = w.draught_samples;
+    o.forcing = w.forcing;
   }
   return o;
 }

@@ -190,6 +190,7 @@ CaptureSceneComparison compare_capture_scene(const CaptureSceneOptions& o) {
   CaptureSceneComparison out;
   SceneOptions so = o.scene;
   so.stone_steps.output_dt_s = o.reference_output_dt_s;  // the scene stone's path, for the draught it would make
+  so.forcing = Forcing::displacement;  // the references prescribe the draught (model/README.md §2.5)
 
   // The scene, keeping the field at its last frame.
   std::vector<double> last_field;

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "verification/scene/ensemble_difference.hpp"
 #include "verification/scene/scene_findings_support.hpp"
 #include "verification/scene/scene_probe.hpp"
 #include "verification/study/order_record.hpp"
@@ -26,6 +27,37 @@ Table contacts_table(const ThrowResult& r) {
 }
 
 
+// What the water received against what the stone received, and the waves' energy budget, for one
+// forcing of the two-way scene (model/README.md §2.4; solvers/scene/wave_energy.hpp).
+void store_forcing(Record& k, const SceneSummary& s) {
+  k.set("stone_vertical_impulse_N_s", s.stone_vertical_impulse_N_s);
+  k.set("water_vertical_impulse_N_s", s.water_vertical_impulse_N_s);
+  k.set("impulse_ratio", s.stone_vertical_impulse_N_s != 0 ? s.water_vertical_impulse_N_s / s.stone_vertical_impulse_N_s : kNaN);
+  k.set("energy_measured", s.energy.measured);
+  k.set("wave_energy_start_J", s.energy.start_J);
+  k.set("wave_energy_end_J", s.energy.end_J);
+  k.set("pressure_work_J", s.energy.pressure_work_J);
+  k.set("damping_loss_J", s.energy.damping_loss_J);
+  k.set("energy_budget_residual", s.energy.measured ? s.energy.residual() : kNaN);
+  k.set("grid_scale_energy_fraction", s.energy.measured ? s.energy.grid_scale_fraction : kNaN);
+  Table t = table({"start_s", "end_s", "stone_N_s", "water_N_s"});
+  for (const auto& c : s.contact_impulses) t.add_row({c.start_s, c.end_s, c.stone_N_s, c.water_N_s});
+  k.set_table("contact_impulses", t);
+  k.set("bounces", s.stone.bounces);
+}
+
+// The bounce counts of an ensemble of throws of one setting, each run only as long as its throw.
+std::vector<double> ensemble_bounces(SceneOptions s, const std::vector<double>& factors) {
+  s.end = SceneEnd::with_the_throw;
+  std::vector<double> out;
+  for (double f : factors) {
+    SceneOptions t = s;
+    t.initial.velocity_m_s *= f;  // the speed, relatively; direction and spin kept
+    out.push_back(run_scene(t).stone.bounces);
+  }
+  return out;
+}
+
 }  // namespace
 
 // ---- coupling ---------------------------------------------------------------------------------
@@ -33,7 +65,9 @@ Table contacts_table(const ThrowResult& r) {
 Record scene_coupling_findings(const SceneStudiesOptions& o, const ProgressFactory& progress) {
   Record out;
   std::vector<std::string> names;
-  auto ticker = start_progress(progress, "scene: coupling", 3 * o.cases.size());
+  const std::vector<double> factors =
+      perturbation_factors(o.coupling.ensemble_members, o.coupling.perturbation_smallest, o.coupling.perturbation_largest);
+  auto ticker = start_progress(progress, "scene: coupling", (4 + 2 * factors.size()) * o.cases.size());
   for (const auto& c : o.cases) {
     names.push_back(c.name);
     SceneOptions two = capped(o, c.scene), one = two, none = two;
@@ -45,6 +79,14 @@ Record scene_coupling_findings(const SceneStudiesOptions& o, const ProgressFacto
     const ProbedScene b = run_probed(one, 0, 1);
     ticker->tick();
     const ProbedScene n = run_probed(none, 0, 1);
+    ticker->tick();
+    // The two forcings side by side, with the energy budget (model/README.md §2.4).
+    SceneOptions pressed = two, displaced = two;
+    pressed.forcing = Forcing::pressure;
+    displaced.forcing = Forcing::displacement;
+    pressed.energy_budget = displaced.energy_budget = true;
+    const SceneSummary fp = run_scene(pressed);
+    const SceneSummary fd = run_scene(displaced);
     ticker->tick();
     Record& r = out.child(c.name);
     store_scene_settings(r.child("settings"), c, two);
@@ -59,6 +101,9 @@ Record scene_coupling_findings(const SceneStudiesOptions& o, const ProgressFacto
       k.set("end_time_s", p->summary.stone.end_time_s);
       k.set("distance_m", p->summary.stone.distance_m);
     }
+    store_forcing(r.child("forcing").child("pressure"), fp);
+    store_forcing(r.child("forcing").child("displacement"), fd);
+    r.child("forcing").set("scene_forcing", std::string(to_string(two.forcing)));
     const SceneDifference d = compare_scenes(a, b);
     const SceneDifference still = compare_scenes(b, n);
     r.set("one_way_equals_still", still.identical());
@@ -101,19 +146,56 @@ Record scene_coupling_findings(const SceneStudiesOptions& o, const ProgressFacto
                std::to_string(a.summary.episodes.size()) + ")";
       if (d.common > 0)
         why += "; after the first contact the two runs leave at speeds " + num(d.first_contact_exit_speed_change_m_s, 2) + " m/s apart";
+    } else if (!ca.empty() && !a.summary.contact_impulses.empty()) {
+      const ContactImpulse& first = a.summary.contact_impulses.front();
+      const double duration = ca.front().end_s - ca.front().start_s;
+      r.set("first_contact_duration_s", duration);
+      why = "the first contact lasts " + ms(duration) + ", " + num(duration / (2 * radius / cw), 2) +
+            " of the time footprint/c = " + num(2 * radius / cw, 3) + " s in which the water under the stone can answer it (model/README.md §2.4); "
+            "the stone pressed on the water with " + num(first.stone_N_s, 3) + " N s of vertical impulse over " + ms(first.end_s - first.start_s) +
+            " (" + counted(static_cast<long>(a.summary.contact_impulses.size()), "pressing") + " in all)";
     } else {
       why = "the stone never touched the water";
     }
     r.set("why", why);
-    const long count_change = std::labs(d.contacts_a - d.contacts_b) + std::abs(d.bounces_a - d.bounces_b);
+    // The bounce counts on ensembles of perturbed throws (a chaotic count is not compared run
+    // against run); the first contact, which precedes any decorrelation, run against run.
+    const std::vector<double> counts_two = ensemble_bounces(two, factors);
+    for (std::size_t k = 0; k < factors.size(); ++k) ticker->tick();
+    const std::vector<double> counts_one = ensemble_bounces(one, factors);
+    for (std::size_t k = 0; k < factors.size(); ++k) ticker->tick();
+    const MeanDifference md = welch_difference(counts_two, counts_one);
+    Table ens = table({"speed_factor", "two_way_bounces", "one_way_bounces"});
+    for (std::size_t k = 0; k < factors.size(); ++k) ens.add_row({factors[k], counts_two[k], counts_one[k]});
+    Record& er = r.child("ensemble");
+    er.set_table("members", ens);
+    er.set("members_per_setting", static_cast<long>(factors.size()));
+    er.set("perturbation_smallest", o.coupling.perturbation_smallest);
+    er.set("perturbation_largest", o.coupling.perturbation_largest);
+    er.set("mean_two_way", md.mean_a);
+    er.set("mean_one_way", md.mean_b);
+    er.set("sd_two_way", md.sd_a);
+    er.set("sd_one_way", md.sd_b);
+    er.set("difference", md.difference);
+    er.set("difference_low", md.low);
+    er.set("difference_high", md.high);
+    const auto& cb = b.summary.stone.contacts;
+    double first_change = 0;
+    if (!ca.empty() && !cb.empty())
+      first_change = std::max(std::abs(ca.front().start_s - cb.front().start_s), std::abs(ca.front().end_s - cb.front().end_s));
+    else if (ca.empty() != cb.empty())
+      first_change = std::numeric_limits<double>::infinity();
     std::ostringstream reason;
-    reason << "two-way: " << counted(d.contacts_a, "contact") << " (" << counted(d.bounces_a, "bounce") << ") in " << num(two.end_s(), 3)
-           << " s against one-way's " << d.contacts_b << " (" << d.bounces_b << "); over " << (d.common == 1 ? "the first contact" : "the first " + counted(d.common, "contact"))
-           << " the times differ by up to "
-           << duration(std::max(d.max_start_change_s, d.max_end_change_s)) << " and the first touches by up to " << length(d.max_touch_change_m);
+    reason << "bounces over " << factors.size() << " throws each (speed × 1 ± 1e" << num(std::log10(o.coupling.perturbation_smallest), 2)
+           << " … 1e" << num(std::log10(o.coupling.perturbation_largest), 2) << "): two-way " << num(md.mean_a, 3) << " ± " << num(md.sd_a, 2)
+           << ", one-way " << num(md.mean_b, 3) << " ± " << num(md.sd_b, 2) << " (mean ± sd); difference " << num(md.difference, 3)
+           << ", 95 % interval [" << num(md.low, 3) << ", " << num(md.high, 3) << "] (Welch); the first contact's times differ by "
+           << duration(first_change);
     Record in;
-    in.set("count_change", static_cast<double>(count_change));
-    in.set("max_time_change_s", std::max(d.max_start_change_s, d.max_end_change_s));
+    in.set("difference_low", md.low);
+    in.set("difference_high", md.high);
+    in.set("count_spread", md.sd_a + md.sd_b);
+    in.set("max_time_change_s", first_change);
     in.set("time_tolerance_s", o.coupling.time_tolerance_s);
     decide_verdict(r, "verdict", "coupling_change", in, reason.str());
   }

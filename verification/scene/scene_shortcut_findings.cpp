@@ -54,9 +54,13 @@ Record scene_shortcuts_findings(const SceneStudiesOptions& o, const ProgressFact
     v.push_back({"float32", "float32 heights", base, f});
   }
   {
-    SceneOptions k1 = base;
+    // The draught's samples matter to the displacement forcing only (the pressure forcing gathers
+    // at every stone step): that forcing with one sample against K.
+    SceneOptions kk = base, k1 = base;
+    kk.forcing = k1.forcing = Forcing::displacement;
     k1.draught_samples = 1;
-    v.push_back({"one_sample", "one draught sample per water step (the spec's point sample) against " + std::to_string(base.draught_samples), base, k1});
+    v.push_back({"one_sample", "displacement forcing: one draught sample per water step (the spec's point sample) against " +
+                                   std::to_string(base.draught_samples), kk, k1});
   }
   {
     SceneOptions everywhere = base;

@@ -13,13 +13,18 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 BOOST_AUTO_TEST_SUITE(scene_verdict_rules)
 
-BOOST_AUTO_TEST_CASE(a_coupling_change_is_a_count_change_before_a_time_change) {
+BOOST_AUTO_TEST_CASE(a_coupling_change_is_an_ensemble_count_change_before_a_time_change) {
   Record in;
-  in.set("count_change", 0.0).set("max_time_change_s", 1e-4).set("time_tolerance_s", 1e-4);
+  in.set("difference_low", 0.0).set("difference_high", 0.0).set("count_spread", 0.0);
+  in.set("max_time_change_s", 1e-4).set("time_tolerance_s", 1e-4);
   BOOST_TEST(decide("coupling_change", in) == "no visible change");  // the tolerance is inclusive
   in.set("max_time_change_s", 1.01e-4);
   BOOST_TEST(decide("coupling_change", in) == "moves the contacts");
-  in.set("count_change", 2.0).set("max_time_change_s", 0.0);
+  in.set("difference_low", -0.5).set("difference_high", 2.5).set("count_spread", 3.0);
+  BOOST_TEST(decide("coupling_change", in) == "no difference established");  // the interval holds 0
+  in.set("difference_low", 0.1);
+  BOOST_TEST(decide("coupling_change", in) == "changes the bounce count");
+  in.set("difference_low", -3.0).set("difference_high", -0.01);
   BOOST_TEST(decide("coupling_change", in) == "changes the bounce count");
 }
 

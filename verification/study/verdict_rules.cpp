@@ -270,7 +270,10 @@ const std::map<std::string, Rule>& rules() {
        }},
       {"coupling_change",
        [](const Record& in) {
-         if (in.number("count_change") != 0) return std::string("changes the bounce count");
+         // Bounce counts on ensembles: the 95 % interval of the difference of the means.
+         if (in.number("difference_low") > 0 || in.number("difference_high") < 0) return std::string("changes the bounce count");
+         if (in.number("count_spread") > 0) return std::string("no difference established");
+         // Counts that did not depend on the perturbation and agree: the first contact decides.
          return std::string(in.number("max_time_change_s") > in.number("time_tolerance_s") ? "moves the contacts"
                                                                                            : "no visible change");
        }},

@@ -37,7 +37,10 @@
 //   bounce_agreement     realtime_bounces, reference_bounces → same bounce count | different bounce counts
 //   bounce_spread        bounces_low, bounces_high (the ensemble's interval quantiles) →
 //                        decided by the capture | not decided by the capture
-//   coupling_change      count_change, max_time_change_s, time_tolerance_s → changes the bounce count |
+//   coupling_change      difference_low, difference_high (95 % interval of the ensembles' mean bounce
+//                        counts, verification/scene/ensemble_difference.hpp), count_spread (sum of
+//                        their standard deviations), max_time_change_s (first contact),
+//                        time_tolerance_s → changes the bounce count | no difference established |
 //                        moves the contacts | no visible change
 //   coupled_limit        growth_below, growth_above, growth_free_above, growth_tolerance →
 //                        stable below the limit, unstable above it | the limit is not confirmed

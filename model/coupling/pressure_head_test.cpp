@@ -1,0 +1,102 @@
+// The pressure head of model/coupling/pressure_head.hpp: conservative rasterisation of the faces'
+// pushes (model/README.md §2.4, pressure coupling).
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <random>
+
+#include "model/coupling/pressure_head.hpp"
+#include "model/stone/mass_properties.hpp"
+#include "model/stone/stone.hpp"
+
+namespace stoneskip {
+namespace {
+
+// Round-off of Σ over faces and cells (≈ 100 terms) of overlaps computed from cell-unit
+// coordinates of a few cells, relative to Σ_i |F_z,i| (faces may push both ways).
+constexpr double kSumRoundoff = 1e-12;
+
+Stone seed_prism() {
+  const Mesh m = make_prism(0.03, 0.008, 11);
+  return make_stone(m, mass_properties_from_density(m, 2500), 0.03, "seed prism");
+}
+
+BOOST_AUTO_TEST_SUITE(pressure_head)
+
+BOOST_AUTO_TEST_CASE(a_square_overlapping_four_cells_gives_each_its_quarter) {
+  // Oracle: geometry. A unit square centred on the corner shared by cells (0,0), (1,0), (0,1),
+  // (1,1) (cell units) covers a quarter of each; a triangle inside one cell covers its own area.
+  const double x[4] = {0, 1, 1, 0}, y[4] = {0, 0, 1, 1};
+  for (int i = 0; i <= 1; ++i)
+    for (int j = 0; j <= 1; ++j) BOOST_TEST(std::abs(overlap_with_cell(x, y, 4, i, j) - 0.25) <= 1e-15);
+  BOOST_TEST(overlap_with_cell(x, y, 4, 2, 0) == 0.0);
+  const double tx[3] = {-0.2, 0.3, 0.1}, ty[3] = {-0.1, -0.2, 0.4};  // clockwise or not: |area|
+  const double area = 0.5 * std::abs((tx[1] - tx[0]) * (ty[2] - ty[0]) - (tx[2] - tx[0]) * (ty[1] - ty[0]));
+  BOOST_TEST(std::abs(overlap_with_cell(tx, ty, 3, 0, 0) - area) <= 1e-15);
+}
+
+BOOST_AUTO_TEST_CASE(the_grid_receives_the_stones_vertical_force_wherever_the_stone_lies) {
+  // Oracle: the stone's own vertical water force (model/stone/fluid_forces.hpp), per convention
+  // and law; Σ h ρ g d² must equal it to round-off for random poses and grid offsets, because
+  // the cell overlaps of each face sum to its projected area (conservation), and Σ F_i of the
+  // pushes is the force itself.
+  const Stone stone = seed_prism();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int variant = 0; variant < 3; ++variant) {
+    Environment env;
+    if (variant == 0) set_convention(env, Convention::paper);
+    if (variant == 1) set_default_water_model(env);  // planing, savitsky_wagner
+    std::vector<FacePush> pushes;
+    DraughtPatch patch;
+    for (int trial = 0; trial < 40; ++trial) {
+      RigidState s;
+      s.position_m = Vec3(u(rng), u(rng), 0.002 - 0.004 * u(rng));
+      s.velocity_m_s = Vec3(6 + 4 * u(rng), u(rng) - 0.5, -0.5 - u(rng));
+      s.orientation = Quat(Eigen::AngleAxisd(0.3 * u(rng), Vec3(u(rng) - 0.5, u(rng) - 0.5, 0.1).normalized()));
+      s.angular_momentum_kg_m2_s = Vec3(0, 0, 1e-4 * u(rng));
+      const WaterLoads w = water_loads(stone, env, s, nullptr, &pushes);
+      const FieldPlacement at{-0.02 * u(rng), -0.02 * u(rng)};
+      const PressureHeadSummary h = rasterise_pressure_head(pushes, 0.02, at, 1000 * 9.81, patch);
+      if (!w.in_contact()) continue;
+      double scale = 1e-300;
+      for (const FacePush& p : pushes) scale += std::abs(p.force_N.z());
+      BOOST_TEST(std::abs(h.force_N - w.force_N.z()) <= kSumRoundoff * scale);
+      BOOST_TEST(std::abs(h.rastered_N - w.force_N.z()) <= kSumRoundoff * scale);
+      Vec3 sum = Vec3::Zero();
+      for (const FacePush& p : pushes) sum += p.force_N;
+      BOOST_TEST((sum - w.force_N).norm() <= kSumRoundoff * w.force_N.norm());
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_stone_lying_on_the_grid_spreads_over_the_cells_it_covers) {
+  // Oracle: uniform pressure p on a flat bottom of area S seen from a cell-aligned grid: every
+  // fully covered cell receives p/(ρ g), and the head never exceeds it (conservative, no
+  // point-sampling overshoot); the bottom's projection is exactly the area where h > 0 weighted
+  // by the covered fraction.
+  const Stone stone = seed_prism();
+  Environment env;  // Newtonian, uniform: each face's pressure C_w ρ u²
+  RigidState s;
+  s.position_m = Vec3(0.0031, 0.0017, 0.004 - 1e-4);  // bottom face just under still water
+  s.velocity_m_s = Vec3(0, 0, -2.0);
+  std::vector<FacePush> pushes;
+  water_loads(stone, env, s, nullptr, &pushes);
+  DraughtPatch patch;
+  const double rho_g = 1000 * 9.81, d = 0.005;
+  rasterise_pressure_head(pushes, d, FieldPlacement{}, rho_g, patch);
+  const double p = 1000 * 4.0, full = p / rho_g;
+  double largest = 0;
+  int full_cells = 0;
+  for (double h : patch.b_m) {
+    largest = std::max(largest, h);
+    if (std::abs(h - full) <= 1e-12 * full) ++full_cells;
+  }
+  BOOST_TEST(largest <= full * (1 + 1e-12));
+  BOOST_TEST(full_cells >= 80);  // the ≈ 110 cells of 5 mm inside a 3 cm disk, less its rim
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace
+}  // namespace stoneskip

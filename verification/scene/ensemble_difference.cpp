@@ -1,0 +1,52 @@
+#include "verification/scene/ensemble_difference.hpp"
+
+#include <cmath>
+#include <numeric>
+
+#include <boost/math/distributions/students_t.hpp>
+
+namespace stoneskip {
+
+std::vector<double> perturbation_factors(int members, double smallest, double largest) {
+  std::vector<double> out;
+  const int half = members / 2;
+  for (int k = 0; k < half; ++k) {
+    const double f = half > 1 ? static_cast<double>(k) / (half - 1) : 0.0;
+    const double eps = std::pow(10.0, std::log10(smallest) + f * (std::log10(largest) - std::log10(smallest)));
+    out.push_back(1 + eps);
+    out.push_back(1 - eps);
+  }
+  return out;
+}
+
+MeanDifference welch_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  MeanDifference d;
+  d.n_a = static_cast<int>(a.size());
+  d.n_b = static_cast<int>(b.size());
+  if (d.n_a < 2 || d.n_b < 2) return d;
+  d.valid = true;
+  auto moments = [](const std::vector<double>& x, double& mean, double& sd) {
+    mean = std::accumulate(x.begin(), x.end(), 0.0) / x.size();
+    double ss = 0;
+    for (double v : x) ss += (v - mean) * (v - mean);
+    sd = std::sqrt(ss / (x.size() - 1));
+  };
+  moments(a, d.mean_a, d.sd_a);
+  moments(b, d.mean_b, d.sd_b);
+  d.difference = d.mean_a - d.mean_b;
+  const double va = d.sd_a * d.sd_a / d.n_a, vb = d.sd_b * d.sd_b / d.n_b;
+  d.standard_error = std::sqrt(va + vb);
+  if (!(d.standard_error > 0)) {
+    d.low = d.high = d.difference;
+    return d;
+  }
+  // Welch–Satterthwaite: ν = (va + vb)² / (va²/(n_a − 1) + vb²/(n_b − 1)).
+  d.dof = (va + vb) * (va + vb) / (va * va / (d.n_a - 1) + vb * vb / (d.n_b - 1));
+  const boost::math::students_t dist(d.dof);
+  const double t = boost::math::quantile(boost::math::complement(dist, 0.025));
+  d.low = d.difference - t * d.standard_error;
+  d.high = d.difference + t * d.standard_error;
+  return d;
+}
+
+}  // namespace stoneskip

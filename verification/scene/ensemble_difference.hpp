@@ -1,0 +1,32 @@
+#pragma once
+// Comparing two settings of a chaotic throw on ensembles (model/README.md §2.4, "Both"): the
+// bounce count of a throw may change under a 1e-9 relative change of its speed, so one run of each
+// setting shows nothing. Each setting runs an ensemble of throws whose speed is perturbed by
+// relative amounts log-spaced over [smallest, largest], of both signs; the two ensembles' mean
+// counts are compared by Welch's t interval (Welch 1947): difference of means ± t_{0.975, ν} · se,
+// se² = s_a²/n_a + s_b²/n_b, ν by Welch–Satterthwaite. An interval that excludes 0 establishes a
+// difference; one that contains it does not (and says so); two ensembles without spread give the
+// difference itself as the interval (the count did not depend on the perturbation).
+#include <vector>
+
+namespace stoneskip {
+
+// members factors 1 + ε, ε = ±10^(log-spaced from log10 smallest to log10 largest), members/2 of
+// each sign (members even, ≥ 2).
+std::vector<double> perturbation_factors(int members, double smallest, double largest);
+
+struct MeanDifference {
+  bool valid = false;           // both samples have ≥ 2 members
+  double mean_a = 0, mean_b = 0;
+  double sd_a = 0, sd_b = 0;    // sample standard deviations
+  int n_a = 0, n_b = 0;
+  double difference = 0;        // mean_a − mean_b
+  double standard_error = 0;
+  double dof = 0;               // Welch–Satterthwaite ν (infinite without spread: 0 stored)
+  double low = 0, high = 0;     // 95 % interval of the difference
+  bool established() const { return valid && (low > 0 || high < 0); }
+};
+
+MeanDifference welch_difference(const std::vector<double>& a, const std::vector<double>& b);
+
+}  // namespace stoneskip
