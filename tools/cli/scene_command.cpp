@@ -5,7 +5,8 @@
 // all, without [water] or with coupling = "none"). Prints the frames per second simulated (no
 // drawing), the slowest frame, and what each part cost — thread CPU and wall per frame, the parts
 // (stone, draught, water, recording) by the wall clock — and the throw's bounces. With --movie the
-// frames are drawn with gnuplot and assembled with ffmpeg (a progress bar while drawing).
+// frames are drawn with gnuplot and assembled with ffmpeg (a progress bar while drawing). A scene
+// running longer than 2 s shows a progress line on stderr (frames done, time left).
 //   stoneskip scene cases/scenes/seed_8ms.toml
 //   stoneskip scene cases/scenes/seed_8ms.toml --json
 //   stoneskip scene cases/scenes/seed_8ms_paper.toml --movie seed_paper.mp4
@@ -24,6 +25,7 @@
 #include "tools/cli/terminal_progress.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/progress.hpp"
 #include "tools/io/signal_cleanup.hpp"
 #include "tools/io/subprocess.hpp"
 #include "tools/scene/resource_estimate.hpp"
@@ -193,9 +195,18 @@ void run(const SceneArgs& a) {
     work = std::make_unique<WorkFolder>();
     movie = std::make_unique<MovieRecorder>(mo, o, work->path());
   }
-  FrameRecorder recorder;
-  if (movie) recorder = [&](const SceneFrame& f) { movie->record(f); };
-  const SceneSummary s = run_scene(o, recorder);
+  // A progress line on stderr for a scene that runs longer than kQuietScene_s (frames done of all,
+  // the time left); a short scene prints nothing. Its tick costs a clock read per frame.
+  constexpr double kQuietScene_s = 2.0;
+  SceneSummary s;
+  {
+    Progress progress("scene frames", static_cast<std::size_t>(o.frames()), kQuietScene_s);
+    const FrameRecorder recorder = [&](const SceneFrame& f) {
+      if (movie) movie->record(f);
+      progress.tick();
+    };
+    s = run_scene(o, recorder);
+  }
   if (a.json) {
     nlohmann::json j = json_of(c, o, s);
     if (movie) {
