@@ -213,6 +213,46 @@ void release_part(SectionWriter& w, const std::string& key, const Record& c) {
   add_figure(w, capture_room_and_water_figure(key, c));
 }
 
+// A synthetic capture's recovered values against its generator's truth (capture_truth.hpp).
+void truth_part(SectionWriter& w, const Record& c) {
+  if (!c.has_child("truth")) return;
+  const Record& t = c.at("truth");
+  w.subheading("Against the truth");
+  w.text("This capture is synthetic: its generator wrote the throw it recorded in " + code(t.text("file")) + ". " +
+         fmt(t.number("inside_count")) + " of the " + fmt(t.number("compared")) +
+         " intervals below hold the truth (the room's values, before the virtual thrower).");
+  MarkdownTable tab({"quantity", "truth", "recovered [interval]", "recovered / truth", "interval holds the truth"});
+  const struct {
+    const char* key;
+    const char* label;
+  } rows[] = {{"speed_m_s", "speed used (m/s)"},
+              {"accel_speed_m_s", "… from the accelerometer (m/s)"},
+              {"lever_speed_m_s", "… from angular rate × lever arm (m/s)"},
+              {"lever_arm_part_m_s", "angular rate × lever arm against the arm's part of the truth (m/s)"},
+              {"attack_angle_deg", "attack angle (deg)"},
+              {"path_angle_deg", "path angle (deg)"},
+              {"spin_rev_s", "spin about the stone's normal (rev/s)"},
+              {"rise_m", "rise since the still part (m)"}};
+  for (const auto& r : rows) {
+    if (!t.has_child(r.key)) continue;
+    const Record& q = t.at(r.key);
+    tab.row({r.label, fmt(q.number("truth"), 4), iv(q), fmt(q.number("ratio"), 3), yes_no(q.flag("inside"))});
+  }
+  w.table(tab);
+  if (t.has_child("lever_arm_part_m_s")) {
+    const Record& lever = t.at("lever_speed_m_s");
+    const Record& arm = t.at("lever_arm_part_m_s");
+    w.text("Angular rate × lever arm sees the arm's turn about its pivot and nothing else: its nominal " +
+           fmt(lever.number("nominal"), 3) + " m/s is " + fmt(arm.number("ratio"), 3) + " of the truth's arm part (" +
+           fmt(arm.number("truth"), 4) + " m/s) but " + fmt(lever.number("ratio"), 3) + " of the whole speed (" +
+           fmt(lever.number("truth"), 4) + " m/s). The rest is the pivot's own motion (the trunk's turn, " +
+           fmt(t.number("pivot_speed_m_s"), 3) +
+           " m/s at the release), which no sensor on the forearm measures: where the accelerometer clips and the throw "
+           "takes the lever-arm estimate, its nominal speed is low by that much, and only the accelerometer's bounds "
+           "in the speed's interval cover it.");
+  }
+}
+
 void solvers_part(SectionWriter& w, const std::string& key, const Record& c) {
   const Record& sim = c.at("simulation");
   w.subheading("What the solvers make of it");
@@ -345,6 +385,7 @@ SectionOutput capture_section(const std::string& key, const Record& c) {
   timing_part(w, key, c);
   motion_part(w, key, c);
   release_part(w, key, c);
+  truth_part(w, c);
   solvers_part(w, key, c);
   scene_part(w, key, c);
   settings_part(w, c);

@@ -11,6 +11,7 @@
 
 #include "stoneskip_version.hpp"
 #include "tools/io/atomic_file.hpp"
+#include "tools/io/folder_manifest.hpp"
 #include "tools/io/hdf5_file.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/signal_cleanup.hpp"
@@ -39,45 +40,10 @@ fs::path section_file(const fs::path& work, const std::string& section) { return
 
 }  // namespace
 
-namespace {
-
-// "<name>.tmp-<digits>[-<digits>]" (tools/io/atomic_file.hpp) left by a killed writer.
-bool is_temporary_name(const std::string& name) {
-  const auto at = name.rfind(".tmp-");
-  if (at == std::string::npos || at + 5 == name.size()) return false;
-  return std::all_of(name.begin() + static_cast<long>(at) + 5, name.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)) || c == '-'; });
-}
-
-bool is_plain(const fs::directory_entry& e, fs::file_type type) {
-  std::error_code ec;
-  return e.symlink_status(ec).type() == type && !ec;
-}
-
-}  // namespace
-
-bool holds_only_report_files(const fs::path& dir) {
-  std::error_code ec;
-  for (const auto& e : fs::directory_iterator(dir, ec)) {
-    const std::string name = e.path().filename().string();
-    if (name == "figures") {
-      if (!is_plain(e, fs::file_type::directory)) return false;
-      for (const auto& f : fs::directory_iterator(e.path(), ec)) {
-        const std::string ext = f.path().extension().string();
-        const bool figure_file = ext == ".png" || ext == ".svg" || ext == ".gp" || ext == ".dat";
-        if (!is_plain(f, fs::file_type::regular) || !(figure_file || is_temporary_name(f.path().filename().string()))) return false;
-      }
-      if (ec) return false;
-    } else if (!is_plain(e, fs::file_type::regular) || !(name == "index.md" || name == "index.html" || name == "data.h5" || is_temporary_name(name))) {
-      return false;
-    }
-  }
-  return !ec;
-}
-
 bool is_report_folder(const fs::path& dir) {
   std::error_code ec;
   const fs::path data = dir / "data.h5";
-  if (!fs::is_regular_file(data, ec) || !holds_only_report_files(dir)) return false;
+  if (!fs::is_regular_file(data, ec) || !holds_only_its_manifest(dir)) return false;
   try {
     Hdf5Reader r(data);
     return r.root().has_attr("report");
@@ -204,6 +170,7 @@ void ReportBuild::commit() {
   fs::remove_all(work_ / "sections", ec);
   fs::remove(work_ / kManifest, ec);
   fs::remove(work_ / kLock, ec);
+  write_folder_manifest(work_);  // what this build wrote: the folder may be replaced while it holds only that
   const fs::path& out = options_.out_dir;
   fs::path old;
   RegisteredTemporary old_registered;

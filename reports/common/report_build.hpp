@@ -11,8 +11,9 @@
 // node lost) keeps them: the next run with the same report kind, settings and code version
 // finds `<DIR>.partial` and reuses every finished section. A work folder built with other
 // settings is discarded. Only one process may build a folder at a time (a lock file).
-// An existing <DIR> is replaced only if it is a report folder stoneskip made (it holds a data.h5
-// with a `report` attribute) or an empty folder; anything else is refused with an InputError.
+// An existing <DIR> is replaced only if it is a report folder stoneskip made (it holds nothing but
+// what its manifest, `stoneskip-manifest.txt`, lists, unchanged, and a data.h5 with a `report`
+// attribute) or an empty folder; anything else is refused with an InputError.
 //
 // What stops a build, and what it leaves:
 //  * an error (bad input found late, an internal error): the work folder stays if it holds
@@ -72,13 +73,8 @@ class ReportBuild : public StudySink {
   RegisteredTemporary registered_;  // the work folder, while it is one
 };
 
-// True if `dir` holds nothing but what a report or a sweep page writes: index.md, index.html, data.h5 and a
-// figures/ folder of .png, .svg, .gp and .dat files (and temporaries "<name>.tmp-PID" a killed run
-// left), all plain files and folders, no links. A folder with anything else in it is the user's.
-bool holds_only_report_files(const std::filesystem::path& dir);
-
-// True if `dir` is a folder this program made: it holds only report files (above) and its
-// data.h5 has a `report` attribute.
+// True if `dir` is a folder this program made: it holds nothing but what its manifest lists
+// (tools/io/folder_manifest.hpp, written at commit) and its data.h5 has a `report` attribute.
 bool is_report_folder(const std::filesystem::path& dir);
 
 }  // namespace stoneskip

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "reports/common/report_build.hpp"
+#include "tools/io/folder_manifest.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/signal_cleanup.hpp"
 
@@ -98,34 +99,54 @@ BOOST_AUTO_TEST_CASE(a_file_link_or_empty_name_as_the_folder_is_refused_before_a
 }
 
 BOOST_AUTO_TEST_CASE(a_report_folder_with_anything_of_the_users_in_it_is_not_replaced) {
-  // Oracle: the files a report writes (index.md, data.h5, figures/ of .png/.svg/.gp/.dat); one
-  // more file of any other name, a link among the figures or a folder inside figures/ makes the
-  // folder the user's, and a build refuses to replace it.
+  // Oracle: the folder's manifest (tools/io/folder_manifest.hpp), written by commit(): what the
+  // build wrote. A file of the user's dropped in — even one named like a figure, which a list of
+  // report file names would take for the report's — a link, a folder, or an edit of a file the
+  // build wrote makes the folder the user's, and a build refuses to replace it; with it gone (or a
+  // temporary a killed writer left), the folder is replaced and its manifest written again.
   Scratch s;
   const fs::path out = s.dir / "rep";
-  {
+  auto build = [&] {
     ReportBuild b(options(out));
     b.store("first", section(1.5));
     b.assemble(Record{});
     b.commit();
-  }
-  fs::create_directories(out / "figures");
-  std::ofstream(out / "figures" / "a.png") << "png";
-  std::ofstream(out / "figures" / "a.png.tmp-123") << "left by a killed render";
-  std::ofstream(out / "index.md") << "# report\n";
+  };
+  build();
+  BOOST_TEST(fs::is_regular_file(out / kFolderManifest));
   BOOST_TEST(is_report_folder(out));
-  std::ofstream(out / "notes.txt") << "mine\n";
+  std::ofstream(out / "data.h5.tmp-123") << "left by a killed writer";
+  BOOST_TEST(is_report_folder(out));
+  fs::create_directories(out / "figures");
+  std::ofstream(out / "figures" / "mine.png") << "the user's plot";
+  std::string why;
+  BOOST_TEST(!holds_only_its_manifest(out, &why));
+  BOOST_TEST(why.find("figures") != std::string::npos, why);
   BOOST_TEST(!is_report_folder(out));
   BOOST_CHECK_THROW(ReportBuild b(options(out)), InputError);
-  BOOST_TEST(fs::exists(out / "notes.txt"));
-  fs::remove(out / "notes.txt");
-  fs::create_symlink(s.dir / "elsewhere.png", out / "figures" / "b.png");
+  BOOST_TEST(fs::exists(out / "figures" / "mine.png"));
+  fs::remove_all(out / "figures");
+  fs::create_symlink(s.dir / "elsewhere.png", out / "b.png");
   BOOST_TEST(!is_report_folder(out));
-  fs::remove(out / "figures" / "b.png");
-  fs::create_directory(out / "figures" / "mine");
-  BOOST_TEST(!is_report_folder(out));
-  fs::remove(out / "figures" / "mine");
+  fs::remove(out / "b.png");
   BOOST_TEST(is_report_folder(out));
+  build();  // replaced: the temporary went with the old folder
+  BOOST_TEST(!fs::exists(out / "data.h5.tmp-123"));
+  BOOST_TEST(is_report_folder(out));
+  // An edit of a file the build wrote (same size: the hash tells it) is the user's too.
+  std::string data;
+  {
+    std::ifstream f(out / "data.h5", std::ios::binary);
+    data.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+  }
+  data[data.size() / 2] ^= 0x01;
+  std::ofstream(out / "data.h5", std::ios::binary | std::ios::trunc) << data;
+  BOOST_TEST(!holds_only_its_manifest(out, &why));
+  BOOST_TEST(why.find("changed") != std::string::npos, why);
+  // A folder without a manifest (made by hand) is never stoneskip's.
+  fs::remove(out / kFolderManifest);
+  BOOST_TEST(!holds_only_its_manifest(out, &why));
+  BOOST_TEST(why.find("no stoneskip manifest") != std::string::npos, why);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

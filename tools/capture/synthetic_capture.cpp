@@ -151,6 +151,8 @@ std::vector<Reading> record(const SyntheticThrow& th, const SyntheticSensor& s, 
   st.orientation = Quat(g.R_stone_r);
   const AttitudeAngles ang = attitude_angles(st);
   truth.speed_m_s = st.velocity_m_s.norm();
+  truth.arm_speed_m_s = std::abs(turn.rate) * g.k.cross(g.lever_world_r).norm();
+  truth.pivot_speed_m_s = std::abs(pivot.rate);
   truth.path_angle_deg = ang.path_angle_deg;
   truth.attack_angle_deg = ang.attack_angle_deg;
   truth.spin_rev_s = (g.R_stone_r.transpose() * (turn.rate * g.k)).z() / (2 * std::numbers::pi);
@@ -383,11 +385,14 @@ std::string SyntheticTruth::toml() const {
                 "# [throw]: the stone at release as the remote can measure it (spin about the stone's normal\n"
                 "# from the arm; rise of the stone's centre since the still part). [stone]: the skipping stone\n"
                 "# the throw stands for (height above the water; the fingers' spin, which no sensor sees).\n"
+                "# arm_speed_m_s: the arm's turn about its pivot (what angular rate x lever arm can see);\n"
+                "# pivot_speed_m_s: the pivot's own speed (the trunk's turn), the rest of the velocity.\n"
                 "[throw]\nspeed_m_s = %.9g\npath_angle_deg = %.9g\nattack_angle_deg = %.9g\nspin_rev_s = %.9g\n"
-                "rise_m = %.9g\nrelease_t_s = %.9g\n\n[stone]\nheight_m = %.9g\nfinger_spin_rev_s = %.9g\n"
+                "rise_m = %.9g\nrelease_t_s = %.9g\narm_speed_m_s = %.9g\npivot_speed_m_s = %.9g\n\n[stone]\nheight_m = %.9g\nfinger_spin_rev_s = %.9g\n"
                 "total_spin_rev_s = %.9g\n\n[recording]\nstill_s = %.9g\nreports_sent = %ld\ndropped_reports = %ld\n"
                 "repeated_reports = %ld\nrange_switches = %d\nclipped_samples = %d\n",
-                speed_m_s, path_angle_deg, attack_angle_deg, spin_rev_s, rise_m, release_t_s, height_m, finger_spin_rev_s,
+                speed_m_s, path_angle_deg, attack_angle_deg, spin_rev_s, rise_m, release_t_s, arm_speed_m_s,
+                pivot_speed_m_s, height_m, finger_spin_rev_s,
                 total_spin_rev_s, still_s, reports_sent, dropped_reports, repeated_reports, range_switches,
                 clipped_samples);
   return b;

@@ -84,6 +84,9 @@ struct SyntheticTruth {
   // The stone at release as the remote can measure it: spin about its normal from the arm, and the
   // stone centre's rise from the still part.
   double speed_m_s = 0, path_angle_deg = 0, attack_angle_deg = 0, spin_rev_s = 0, rise_m = 0;
+  // The velocity's two parts at release: the arm's turn about the pivot |Ω k × L| (what angular
+  // rate × lever arm can see) and the pivot's own speed V (the trunk's turn, which it cannot).
+  double arm_speed_m_s = 0, pivot_speed_m_s = 0;
   // The skipping stone the throw stands for: height above the water, the fingers' spin, the total.
   double height_m = 0, finger_spin_rev_s = 0, total_spin_rev_s = 0;
   double still_s = 0;               // the still part before the swing

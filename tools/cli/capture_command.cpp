@@ -37,6 +37,7 @@
 #include "reports/capture/capture_json.hpp"
 #include "reports/common/report_build.hpp"
 #include "tools/capture/capture_format.hpp"
+#include "tools/capture/capture_truth_file.hpp"
 #include "tools/capture/csv_columns.hpp"
 #include "tools/capture/synthetic_capture.hpp"
 #include "tools/capture/trace_csv.hpp"
@@ -54,6 +55,7 @@
 #include "tools/scene/throw_output.hpp"
 #include "tools/scene/scene_throw.hpp"
 #include "verification/captures/capture_findings.hpp"
+#include "verification/captures/capture_truth.hpp"
 #include "verification/captures/capture_scene_findings.hpp"
 #include "verification/study/study_sink.hpp"
 
@@ -328,6 +330,8 @@ nlohmann::json scene_json(const Record& r) {
 // Every file a capture command reads: the captures, and the case and scene files (with their mesh).
 std::vector<fs::path> inputs_of(const CaptureArgs& a, const StoneCase* c, const StoneCase* scene) {
   std::vector<fs::path> in(a.files.begin(), a.files.end());
+  for (const auto& f : a.files)
+    if (const fs::path t = capture_truth_file(f); !t.empty()) in.push_back(t);
   for (const StoneCase* k : {c, scene})
     if (k) {
       in.push_back(k->file);
@@ -355,12 +359,16 @@ void validate(const CaptureArgs& a) {
   // 1. Every file read first: a report holds every capture asked for, or there is none. Without
   //    --out one bad file does not stop the others; it is reported and the exit status says so.
   std::vector<std::optional<Trace>> traces;
+  std::vector<std::optional<CaptureTruth>> truths;  // a synthetic capture's truth file, when beside it
   bool unreadable = false;
   for (const auto& file : a.files) {
     try {
       check_capture_size(file, a.limits);
       traces.emplace_back(read_capture(file, read_options(a)));
+      truths.emplace_back(read_capture_truth(file));
     } catch (const InputError& e) {
+      if (traces.size() > truths.size()) traces.pop_back();
+      truths.emplace_back(std::nullopt);
       // One bad file does not stop the others; it is reported and the exit status says so. A
       // single capture's error is the command's one line.
       if (a.files.size() == 1 && !a.json) throw;
@@ -396,7 +404,8 @@ void validate(const CaptureArgs& a) {
   std::vector<std::pair<std::string, Record>> stored;
   std::vector<std::string> used;
   bool unusable = false;
-  for (const auto& trace : traces) {
+  for (std::size_t i = 0; i < traces.size(); ++i) {
+    const std::optional<Trace>& trace = traces[i];
     if (!trace) continue;
     auto run = [&] {
       const CaptureAnalysis an = analyse_capture(*trace, capture_options(a, *trace));
@@ -421,6 +430,7 @@ void validate(const CaptureArgs& a) {
         print_verdict(an, c ? &sim : nullptr);
       }
       Record r = capture_findings(an, sim, ctx);
+      if (truths[i] && an.can_throw()) r.add_child("truth", truth_comparison(an, *truths[i]));
       if (scene && an.can_throw()) {
         r.add_child("scene", scene_comparison(*scene, an));
         if (!a.json) print_scene(r.at("scene"));

@@ -10,6 +10,7 @@
 #include "reports/waves/waves_report.hpp"
 #include "tools/cli/command_registry.hpp"
 #include "tools/io/atomic_file.hpp"
+#include "tools/io/folder_manifest.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/progress.hpp"
 #include "verification/study/verdict_rules.hpp"
@@ -51,6 +52,14 @@ std::pair<int, std::size_t> render_folder(const std::filesystem::path& dir) {
   }
   const Heartbeat alive("drawing " + std::to_string(r.figures.size()) + " figures");  // a line after 2 s
   const RenderSummary s = write_rendered_report(dir, r);
+  // The folder's manifest lists what was just written (and what it listed before, unchanged): a
+  // file of the user's beside them stays unlisted, so no build replaces the folder over it.
+  std::vector<std::filesystem::path> written{"index.md"};
+  for (const auto& f : r.figures) {
+    for (const char* ext : {".gp", ".svg.gp", ".png", ".svg"}) written.push_back(std::filesystem::path("figures") / (f.name + ext));
+    for (const auto& [name, table] : f.tables) written.push_back(std::filesystem::path("figures") / (name + ".dat"));
+  }
+  update_folder_manifest(dir, written);
   for (const auto& f : s.failures) std::fprintf(stderr, "figure failed: %s\n", f.c_str());
   if (!s.failures.empty()) set_exit_code(1);
   return {s.rendered, r.figures.size()};

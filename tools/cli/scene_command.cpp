@@ -10,6 +10,7 @@
 // --out the throw is stored as `run --out` stores it, with the scene's settings in /scene, and
 // --water-frames T,... adds the water surface at the first frame at or after each time, as
 // float32 (frames × ny × nx) in /water: at most kMaxWaterFrames frames, held to --max-memory-gb.
+// A scene running longer than 2 s shows a progress line on stderr (frames done, time left).
 //   stoneskip scene cases/scenes/seed_8ms.toml
 //   stoneskip scene cases/scenes/seed_8ms.toml --json
 //   stoneskip scene cases/scenes/seed_8ms_paper.toml --movie seed_paper.mp4
@@ -34,6 +35,7 @@
 #include "tools/io/hdf5_file.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/output_over_input.hpp"
+#include "tools/io/progress.hpp"
 #include "tools/io/signal_cleanup.hpp"
 #include "tools/io/subprocess.hpp"
 #include "tools/scene/resource_estimate.hpp"
@@ -298,13 +300,19 @@ void run(const SceneArgs& a) {
     refuse_output_over_inputs(a.out, OutputKind::file, {c.file, c.spec.mesh_file});
     AtomicOutput probe(a.out);  // an unwritable place is refused before any work
   }
-  FrameRecorder recorder;
-  if (movie || !water.wanted.empty())
-    recorder = [&](const SceneFrame& f) {
+  // A progress line on stderr for a scene that runs longer than kQuietScene_s (frames done of all,
+  // the time left); a short scene prints nothing. Its tick costs a clock read per frame.
+  constexpr double kQuietScene_s = 2.0;
+  SceneSummary s;
+  {
+    Progress progress("scene frames", static_cast<std::size_t>(o.frames()), kQuietScene_s);
+    const FrameRecorder recorder = [&](const SceneFrame& f) {
       if (movie) movie->record(f);
-      water.record(f);
+      if (!water.wanted.empty()) water.record(f);
+      progress.tick();
     };
-  const SceneSummary s = run_scene(o, recorder);
+    s = run_scene(o, recorder);
+  }
   if (a.json) {
     nlohmann::json j = json_of(c, o, s);
     if (movie) {

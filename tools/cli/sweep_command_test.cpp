@@ -256,9 +256,26 @@ BOOST_AUTO_TEST_CASE(a_killed_sweep_resumes_to_the_same_table_computing_only_wha
   BOOST_TEST(again.out.find("already complete") != std::string::npos, again.out);
 }
 
-// Starts `stoneskip sweep SWEEP --out OUT`, waits until its journal holds rows, SIGKILLs it.
-// True when it was killed with rows journalled and no result written.
-bool killed_with_rows(const fs::path& sweep, const fs::path& out) {
+// The offsets of the whole records of a sweep journal (verification/sweep/journal.cpp: a frame of
+// magic, type, payload length and checksum, 24 bytes, then the payload).
+std::vector<std::size_t> journal_records(const fs::path& journal) {
+  const std::string b = text_of(journal);
+  std::vector<std::size_t> at;
+  for (std::size_t pos = 0; b.size() - pos >= 24;) {
+    if (b.compare(pos, 4, "SWJ1") != 0) break;
+    std::uint64_t len = 0;
+    std::memcpy(&len, b.data() + pos + 8, 8);
+    if (len > b.size() - pos - 24) break;
+    at.push_back(pos);
+    pos += 24 + len;
+  }
+  return at;
+}
+
+// Starts `stoneskip sweep SWEEP --out OUT`, waits until its journal holds rows (at least
+// `records` whole records, the header included, when given), SIGKILLs it. True when it was killed
+// with rows journalled and no result written.
+bool killed_with_rows(const fs::path& sweep, const fs::path& out, std::size_t records = 0) {
   const fs::path journal = out.string() + ".journal";
   std::fflush(nullptr);  // the child must not print this process's buffered output again
   const pid_t pid = ::fork();
@@ -275,13 +292,41 @@ bool killed_with_rows(const fs::path& sweep, const fs::path& out) {
     std::error_code ec;
     const std::uintmax_t size = fs::file_size(journal, ec);
     if (!ec && size > 0 && first == 0) first = size;
-    if (!ec && first > 0 && size > first) break;
+    if (!ec && first > 0 && size > first && (records == 0 || journal_records(journal).size() >= records)) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   ::kill(pid, SIGKILL);
   int status = 0;
   ::waitpid(pid, &status, 0);
   return WIFSIGNALED(status) && fs::exists(journal) && !fs::exists(out);
+}
+
+BOOST_AUTO_TEST_CASE(a_flipped_byte_mid_journal_is_reported_and_stored_not_dropped_silently) {
+  // Oracle: the same sweep run without interruption (bit for bit), and the journal's own framing:
+  // one byte flipped inside the first record of rows breaks its checksum while whole records follow
+  // it, so the resume must say so on stderr (naming the records dropped) and store the same line
+  // in the result's /run journal_damage — not drop them silently as a torn tail is.
+  const fs::path sweep = setup("flip", grid_sweep(12, 10, "[\"reference\"]"));
+  const fs::path whole = work() / "flip_whole.h5", out = work() / "flip.h5", journal = out.string() + ".journal";
+  BOOST_REQUIRE(command("sweep " + sweep.string() + " --out " + whole.string() + " --quiet").status == 0);
+  BOOST_REQUIRE(killed_with_rows(sweep, out, 4));
+  const std::vector<std::size_t> at = journal_records(journal);
+  BOOST_REQUIRE(at.size() >= 4u);  // the header, the record to damage, and whole records after it
+  std::string bytes = text_of(journal);
+  bytes[at[1] + 24 + 3] ^= 0x40;  // inside the first rows record's payload
+  std::ofstream(journal, std::ios::binary | std::ios::trunc) << bytes;
+  const Outcome resumed = command("sweep " + sweep.string() + " --out " + out.string() + " --resume --quiet");
+  BOOST_REQUIRE_MESSAGE(resumed.status == 0, resumed.err);
+  const std::string dropped = std::to_string(at.size() - 2) + " whole records after it dropped";
+  BOOST_TEST(resumed.err.find("warning: ") != std::string::npos, resumed.err);
+  BOOST_TEST(resumed.err.find(dropped) != std::string::npos, resumed.err);
+  expect_same_results(table_of(whole), table_of(out), "resumed after damage");
+  stoneskip::Hdf5Reader r(out);
+  const std::string stored = r.root().open_group("run").attr_string("journal_damage");
+  BOOST_TEST(stored.find(dropped) != std::string::npos, stored);
+  BOOST_TEST(r.root().open_group("run").attr_int("throws_recovered") == 0);  // only the header was before the damage
+  stoneskip::Hdf5Reader clean(whole);
+  BOOST_TEST(clean.root().open_group("run").attr_string("journal_damage").empty());
 }
 
 BOOST_AUTO_TEST_CASE(a_resume_after_the_mesh_was_edited_is_refused) {

@@ -13,6 +13,7 @@
 #include "reports/sweep/sweep_page.hpp"
 #include "tools/cli/command_registry.hpp"
 #include "tools/io/atomic_file.hpp"
+#include "tools/io/folder_manifest.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/output_over_input.hpp"
 #include "tools/io/progress.hpp"
@@ -38,10 +39,10 @@ void run(const PlotArgs& a) {
   SweepMapOptions maps;
   maps.columns = a.columns;
   // Built whole in a work folder, then moved into place; a page made before may be replaced.
-  // A page is an index.md, a data.h5 holding /figures, a figures/ folder and nothing else: a
-  // folder with the user's files in it (or a data.h5 that is not a page's) is never replaced.
+  // A page holds nothing but what its manifest lists (tools/io/folder_manifest.hpp) and a data.h5
+  // holding /figures: a folder with the user's files in it, or one of them edited, is never replaced.
   AtomicFolder out(dir, [](const std::filesystem::path& d) {
-    if (!std::filesystem::is_regular_file(d / "index.md") || !holds_only_report_files(d)) return false;
+    if (!holds_only_its_manifest(d)) return false;
     try {
       return Hdf5Reader(d / "data.h5").root().has("figures");
     } catch (const std::exception&) {

@@ -1,4 +1,5 @@
 #include "tools/io/atomic_file.hpp"
+#include "tools/io/folder_manifest.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -156,6 +157,7 @@ AtomicFolder::~AtomicFolder() {
 }
 
 void AtomicFolder::commit() {
+  write_folder_manifest(work_);  // what stoneskip wrote: the folder may be replaced while it holds only that
   check_destination();  // again: time has passed
   std::error_code ec;
   fs::path old = final_;

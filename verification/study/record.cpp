@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <set>
 
 namespace stoneskip {
 
@@ -187,7 +188,20 @@ void store_record(const H5Group& g, const Record& r) {
   if (!names.empty()) g.set_attr(kChildrenAttr, join_lines(names));
 }
 
-Record load_record(const H5Group& g) {
+namespace {
+
+// Bounds on a stored record tree, so a crafted file (a `_children` order naming one group a
+// million times, groups hard-linked into themselves or into a wide lattice) is refused at once
+// instead of read for minutes or without end. The reports stoneskip writes nest a few levels and
+// hold a few thousand records; the bounds are far above that.
+constexpr int kMaxDepth = 64;
+constexpr std::size_t kMaxRecords = 100000;
+
+Record load_bounded(const H5Group& g, int depth, std::size_t& loaded) {
+  if (depth > kMaxDepth)
+    throw RecordError(g.path() + ": records nested more than " + std::to_string(kMaxDepth) + " deep (a group linked into itself?)");
+  if (++loaded > kMaxRecords)
+    throw RecordError(g.path() + ": more than " + std::to_string(kMaxRecords) + " records in one file (groups linked more than once?)");
   Record r(g.path());
   for (const auto& a : g.attr_names()) {
     if (a == kChildrenAttr) continue;
@@ -214,15 +228,26 @@ Record load_record(const H5Group& g) {
     }
   }
   // Children in the stored order; any group the order does not name (written by hand) after them.
+  // The order names each existing group at most once, so it is never longer than the groups.
+  const std::set<std::string> present(groups.begin(), groups.end());
   std::vector<std::string> order = g.has_attr(kChildrenAttr) ? split_lines(g.attr_string(kChildrenAttr)) : std::vector<std::string>{};
-  for (const auto& c : groups)
-    if (std::find(order.begin(), order.end(), c) == order.end()) order.push_back(c);
+  std::set<std::string> named;
   for (const auto& c : order) {
-    if (std::find(groups.begin(), groups.end(), c) == groups.end())
-      throw RecordError(g.path() + ": the stored order names a missing record '" + c + "'");
-    r.add_child(c, load_record(g.open_group(c)));
+    if (!present.count(c))
+      throw RecordError(g.path() + ": the stored order names a missing record '" + c.substr(0, 64) + "'");
+    if (!named.insert(c).second) throw RecordError(g.path() + ": the stored order names the record '" + c + "' twice");
   }
+  for (const auto& c : groups)
+    if (!named.count(c)) order.push_back(c);
+  for (const auto& c : order) r.add_child(c, load_bounded(g.open_group(c), depth + 1, loaded));
   return r;
+}
+
+}  // namespace
+
+Record load_record(const H5Group& g) {
+  std::size_t loaded = 0;
+  return load_bounded(g, 0, loaded);
 }
 
 }  // namespace stoneskip

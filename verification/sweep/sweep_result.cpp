@@ -86,6 +86,7 @@ void write_sweep_file(const std::filesystem::path& path, const SweepData& d) {
   run.set_attr("master_busy_cpu_s", s.master_busy_cpu_s);
   run.set_attr("master_busy_cpu_per_throw_s", s.throws ? s.master_busy_cpu_s / s.throws : 0.0);
   run.set_attr("journal_wall_s", d.run.journal_wall_s);
+  run.set_attr("journal_damage", d.run.journal_damage);
   w.commit();
 }
 
@@ -158,6 +159,7 @@ SweepData read_sweep_file(const std::filesystem::path& path) {
     d.run.throws_recovered = static_cast<std::size_t>(run.attr_int("throws_recovered"));
     d.run.journal_wall_s = run.attr_double("journal_wall_s");
     d.run.max_chunk = static_cast<std::size_t>(run.attr_int("max_chunk"));
+    if (run.has_attr("journal_damage")) d.run.journal_damage = run.attr_string("journal_damage");
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {

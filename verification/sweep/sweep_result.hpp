@@ -46,6 +46,7 @@ struct SweepRunInfo {
   std::size_t throws_recovered = 0;
   double journal_wall_s = 0;
   std::size_t max_chunk = 0;
+  std::string journal_damage;  // a damaged record mid-journal and the records dropped after it
 };
 
 struct SweepData {

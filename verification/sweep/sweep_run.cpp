@@ -109,10 +109,12 @@ SweepPlan SweepPlan::prepare(const SweepData& spec, const SweepRunOptions& optio
     if (rec.rows.rows() > 0 && rec.rows.width != width)
       throw_input_error(jp.string(), 0, "", "its rows do not have this sweep's columns");
     plan.take(rec.rows);
-    if (rec.damaged_records > 0)
+    if (rec.damaged_records > 0) {
       plan.warnings_.push_back(jp.string() + ": a damaged record (" + std::to_string(rec.dropped_bytes) + " bytes cut, " +
                                std::to_string(rec.damaged_records) +
                                " whole records after it dropped): their throws are computed again");
+      plan.data_.run.journal_damage = plan.warnings_.back();  // stored with the result, /run
+    }
     plan.recovered_ = static_cast<std::size_t>(std::count(plan.have_.begin(), plan.have_.end(), true));
   } else if (options.resume && fs::exists(options.out, ec)) {
     const SweepData old = read_sweep_file(options.out);
