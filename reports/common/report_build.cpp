@@ -1,5 +1,6 @@
 #include "reports/common/report_build.hpp"
 
+#include <cerrno>
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/stat.h>
@@ -59,8 +60,11 @@ ReportBuild::ReportBuild(ReportBuildOptions options) : options_(std::move(option
   fs::path parent = out.parent_path();
   if (parent.empty()) parent = ".";
   struct stat st {};
+  // A missing parent chain is made (`--out elsewhere/waves` from a fresh folder): only folders that
+  // do not exist are created, nothing is replaced.
+  if (::stat(parent.c_str(), &st) != 0 && errno == ENOENT) fs::create_directories(parent, ec);
   if (::stat(parent.c_str(), &st) != 0)
-    throw_input_error(out.string(), 0, "", "cannot write: folder '" + parent.string() + "' does not exist");
+    throw_input_error(out.string(), 0, "", "cannot write: folder '" + parent.string() + "' does not exist and cannot be made");
   if (!S_ISDIR(st.st_mode))
     throw_input_error(out.string(), 0, "", "cannot write: '" + parent.string() + "' is " + file_type_words(st.st_mode) + ", not a folder");
   if (::access(parent.c_str(), W_OK) != 0)

@@ -4,10 +4,10 @@
 #     (`cases/...` found through the source tree recorded at build time).
 #  2. `cmake --install` into a fresh prefix gives P/bin/stoneskip, whose shipped cases are
 #     P/share/stoneskip/cases (not the source tree), and which runs the quick waves report into
-#     `elsewhere/waves` and a shipped throw from that outside folder.
+#     `elsewhere/waves` (a folder that does not exist yet) and a shipped throw from that outside folder.
 # Run by ctest: cmake -DBUILD_DIR=.. -DSOURCE_DIR=.. -DSTONESKIP=.. -DWORK=.. -P from_anywhere_test.cmake
 file(REMOVE_RECURSE ${WORK})
-file(MAKE_DIRECTORY ${WORK}/cwd/elsewhere)
+file(MAKE_DIRECTORY ${WORK}/cwd)  # `elsewhere` is not made here: the report makes its missing parent
 
 function(run_checked what)
   execute_process(COMMAND ${ARGN} WORKING_DIRECTORY ${WORK}/cwd RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
