@@ -24,6 +24,11 @@ SceneOptions pressed_scene(Forcing forcing) {
 
 // Round-off of sums over ≈ 10⁴ stone steps and ≈ 30 water steps of terms of one size (relative).
 constexpr double kImpulseRoundoff = 1e-9;
+// The run ends at a located sinking: the final state is the step's cubic Hermite interpolant at
+// the sink time, not the scheme's own update to it, so the momentum differs from the sum of the
+// steps' impulses by the interpolant's error on the last partial step, O(h² |dF/dt| / m) — measured
+// 1.7e-8 of the impulse here; bounded at 1e-7.
+constexpr double kFinalStateInterpolation = 1e-7;
 // The budget is an identity of the scheme (solvers/scene/wave_energy.hpp): what is left is the
 // round-off of the transforms and of the leapfrog's levels (≈ 1e-13 of the levels, summed).
 constexpr double kBudgetRoundoff = 1e-8;
@@ -37,7 +42,8 @@ BOOST_AUTO_TEST_CASE(the_water_receives_the_stones_vertical_impulse) {
   // water force at the step's start, so m Δv_z + m g T is the stone's hydrodynamic vertical
   // impulse, computed without the coupling. The water must receive the same through its steps,
   // after the rasterisation (conservative) and the hat weights (which sum to one over each stone
-  // step), to round-off; and the per-contact sums too.
+  // step), to round-off; and the per-contact sums too. The steps' sum meets the momentum to the
+  // interpolation of the final, located state (kFinalStateInterpolation).
   const SceneOptions o = pressed_scene(Forcing::pressure);
   const SceneSummary s = run_scene(o);
   const double m = o.stone.mass.mass_kg, g = o.environment.gravity_m_s2;
@@ -45,15 +51,15 @@ BOOST_AUTO_TEST_CASE(the_water_receives_the_stones_vertical_impulse) {
   BOOST_TEST_MESSAGE("stone " << stone << " N s by its momentum, " << s.stone_vertical_impulse_N_s << " by its steps; water "
                               << s.water_vertical_impulse_N_s << " N s");
   BOOST_TEST(stone > 0.01);  // a real contact: the 19 g stone's 1.4 m/s vertical speed and more
-  BOOST_TEST(std::abs(s.stone_vertical_impulse_N_s - stone) <= kImpulseRoundoff * stone);
-  BOOST_TEST(std::abs(s.water_vertical_impulse_N_s - stone) <= kImpulseRoundoff * stone);
+  BOOST_TEST(std::abs(s.stone_vertical_impulse_N_s - stone) <= kFinalStateInterpolation * stone);
+  BOOST_TEST(std::abs(s.water_vertical_impulse_N_s - s.stone_vertical_impulse_N_s) <= kImpulseRoundoff * s.stone_vertical_impulse_N_s);
   BOOST_REQUIRE(!s.contact_impulses.empty());
   double sum = 0;
   for (const ContactImpulse& c : s.contact_impulses) {
     BOOST_TEST(std::abs(c.water_N_s - c.stone_N_s) <= kImpulseRoundoff * std::abs(c.stone_N_s) + 1e-15);
     sum += c.stone_N_s;
   }
-  BOOST_TEST(std::abs(sum - stone) <= kImpulseRoundoff * stone);
+  BOOST_TEST(std::abs(sum - s.stone_vertical_impulse_N_s) <= kImpulseRoundoff * s.stone_vertical_impulse_N_s);
 }
 
 BOOST_AUTO_TEST_CASE(the_displacement_model_gives_the_water_far_less_than_the_stone) {

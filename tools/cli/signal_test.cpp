@@ -133,7 +133,7 @@ BOOST_AUTO_TEST_CASE(an_interrupted_report_leaves_nothing_partial) {
   const Ended whole = finish(start(waves, s.dir), t0);
   BOOST_REQUIRE(whole.status == 0);
   BOOST_REQUIRE(joined(names_in(s.out)) == "waves");
-  BOOST_TEST(joined(names_in(s.out / "waves")) == "data.h5 figures index.html index.md");
+  BOOST_TEST(joined(names_in(s.out / "waves")) == "data.h5 figures index.html index.md stoneskip-manifest.txt");
   fs::remove_all(s.out / "waves");
   std::uniform_real_distribution<double> moment(0.02, 1.05);
   for (int i = 0; i < 4; ++i) {
@@ -142,7 +142,7 @@ BOOST_AUTO_TEST_CASE(an_interrupted_report_leaves_nothing_partial) {
     BOOST_TEST_CONTEXT("report waves, " << (sig == SIGINT ? "SIGINT" : "SIGTERM") << " at " << at << " s of " << whole.wall_s) {
       const Ended e = interrupt(waves, s.dir, sig, at);
       check_left(e, sig, s.out, {"waves"}, s.dir);
-      if (e.status == 0) BOOST_TEST(joined(names_in(s.out / "waves")) == "data.h5 figures index.html index.md");
+      if (e.status == 0) BOOST_TEST(joined(names_in(s.out / "waves")) == "data.h5 figures index.html index.md stoneskip-manifest.txt");
       fs::remove_all(s.out / "waves");
     }
   }
