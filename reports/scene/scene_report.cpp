@@ -139,7 +139,7 @@ SectionOutput coupling_section(const Record& c) {
              "The energy budget: the waves' energy E (the leapfrog's own, solvers/scene/wave_energy.hpp) gains the pressure's work W "
              "and loses what damping takes, D.");
       MarkdownTable ft({"forcing", "stone impulse (N s)", "water impulse (N s)", "water / stone", "W (J)", "D (J)", "E start … end (J)",
-                        "budget residual", "energy at |k|d > π/2"});
+                        "budget residual", "energy at ‖k‖d > π/2"});
       for (const char* key : {"pressure", "displacement"}) {
         const Record& k = fr.at(key);
         ft.row({code(key), fmt(k.number("stone_vertical_impulse_N_s"), 4), fmt(k.number("water_vertical_impulse_N_s"), 4),
