@@ -447,11 +447,13 @@ RenderedReport render_scene_report(const StoredReport& stored) {
   }
   m << "; preset " << code(settings.text("preset")) << ") and says what the waves change, whether the coupled water is computed "
        "right, how much each shortcut costs in accuracy, and how fast it runs.\n\n"
-    << "**What the model is for.** The stone's draught acts on the water as a pressure patch: z_tt = c²∇²(z + b) − μ z_t. "
-       "Measured against z, b makes a stone held still settle into a state where the surface under it sits halfway between its "
-       "bottom and the far water (model/README.md §2.4's closed form), not at its bottom as a real resting plate's would. The model is "
-       "therefore meant for contacts much shorter than footprint/c — a skipping stone's — where the water has no time to settle; "
-       "section 1 gives each scene's contact time against footprint/c.\n\n";
+    << "**What the model is for.** The stone presses on the water as a surface pressure of head h: z_tt = c²∇²(z + h) − μ z_t "
+       "(model/README.md §2.4). With `forcing = \"pressure\"` (the default) h is the pressure the stone's wetted faces press with, "
+       "so the water receives the stone's vertical impulse; with `\"displacement\"` it is the stone's draught b, which makes a stone "
+       "held still settle with the surface under it halfway between its bottom and the far water (§2.4's closed form), not at its "
+       "bottom as a real resting plate's would. Either way the water is linear and shallow: the model is meant for contacts much "
+       "shorter than footprint/c — a skipping stone's — where the water has no time to settle; section 1 gives each scene's "
+       "forcing and its contact time against footprint/c.\n\n";
   out.markdown = m.str() + findings(secs);
   append(out, coupling_section(secs.at("coupling")));
   append(out, stability_section(secs.at("stability")));
