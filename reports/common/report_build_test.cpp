@@ -11,6 +11,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "tools/io/scratch_dir.hpp"
 #include "reports/common/report_build.hpp"
 #include "tools/io/folder_manifest.hpp"
 #include "tools/io/input_error.hpp"
@@ -21,16 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Scratch {
-  fs::path dir = fs::temp_directory_path() / ("report_build_" + std::to_string(::getpid()));
-  Scratch() {
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
+struct Scratch : ScratchDir {
+  Scratch() : ScratchDir("report_build") {}
 };
 
 ReportBuildOptions options(const fs::path& out) { return ReportBuildOptions{out, "waves", "settings", "test", {}}; }

@@ -9,31 +9,13 @@
 #include <string>
 #include <vector>
 
+#include "tools/io/scratch_dir.hpp"
 #include "tools/io/subprocess.hpp"
 
 namespace stoneskip::test {
 
 // An empty folder under the temporary directory, named `stem`_<pid>, removed with the object.
-class ScratchDir {
- public:
-  explicit ScratchDir(const std::string& stem)
-      : dir(std::filesystem::temp_directory_path() / (stem + "_" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(dir, ec);
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-  // Writes `text` to dir/name and returns the path.
-  std::filesystem::path write(const std::string& name, const std::string& text) const {
-    std::ofstream(dir / name) << text;
-    return dir / name;
-  }
-  const std::filesystem::path dir;
-};
+using ScratchDir = stoneskip::ScratchDir;
 
 // A good stone case: the paper's prism at 8 m/s with 10 rev/s of spin, 3 s.
 inline constexpr const char* kGoodStoneCase = R"([stone]

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <string>
 
+#include "tools/io/scratch_dir.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/hdf5_file.hpp"
 #include "tools/io/input_error.hpp"
@@ -22,16 +23,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Scratch {
-  fs::path dir = fs::temp_directory_path() / ("stoneskip_atomic_" + std::to_string(::getpid()));
-  Scratch() {
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
+struct Scratch : ScratchDir {
+  Scratch() : ScratchDir("stoneskip_atomic") {}
 };
 
 std::string refusal(const fs::path& p) {

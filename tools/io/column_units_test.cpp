@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <string>
 
+#include "tools/io/scratch_dir.hpp"
 #include "tools/io/column_units.hpp"
 #include "tools/io/hdf5_file.hpp"
 
@@ -17,16 +18,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Scratch {
-  fs::path dir = fs::temp_directory_path() / ("stoneskip_units_" + std::to_string(::getpid()));
-  Scratch() {
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
+struct Scratch : ScratchDir {
+  Scratch() : ScratchDir("stoneskip_units") {}
 };
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string>
 
+#include "tools/io/scratch_dir.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/output_over_input.hpp"
 
@@ -18,19 +19,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Scratch {
-  fs::path dir = fs::temp_directory_path() / ("stoneskip_over_input_" + std::to_string(::getpid()));
-  Scratch() {
-    fs::remove_all(dir);
+struct Scratch : ScratchDir {
+  Scratch() : ScratchDir("stoneskip_over_input") {
     fs::create_directories(dir / "sp1" / "deep");
     fs::create_directories(dir / "sp10");
     std::ofstream(dir / "case.toml") << "x\n";
     std::ofstream(dir / "sp1" / "deep" / "results.h5") << "x\n";
     std::ofstream(dir / "sp10" / "results.h5") << "x\n";
-  }
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
   }
 };
 

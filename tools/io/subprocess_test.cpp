@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "tools/io/scratch_dir.hpp"
 #include "tools/io/subprocess.hpp"
 
 using namespace stoneskip;
@@ -19,16 +20,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Scratch {
-  fs::path dir = fs::temp_directory_path() / ("stoneskip_subprocess_" + std::to_string(::getpid()));
-  Scratch() {
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
+struct Scratch : ScratchDir {
+  Scratch() : ScratchDir("stoneskip_subprocess") {}
 };
 
 // Words a shell would act on: quotes, a command separator, substitutions, a newline, an option.
