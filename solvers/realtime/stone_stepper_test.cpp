@@ -297,6 +297,24 @@ ExactTouch exact_first_touch(const Stone& stone, const RigidState& s0, const Vec
   return best;
 }
 
+// The throw of the first-touch tests: 8 m/s at 0.17 rad down, the stone tilted and spun at
+// 40 rev/s about its symmetry axis, 0.1 m up; with its exact first touch.
+struct SpunThrow {
+  RigidState s0;
+  ExactTouch exact;
+};
+
+SpunThrow spun_tilted_throw(const Stone& stone, double g) {
+  SpunThrow t;
+  t.s0.position_m = Vec3(0, 0, 0.1);
+  t.s0.velocity_m_s = Vec3(8 * std::cos(0.17), 0, -8 * std::sin(0.17));
+  t.s0.orientation = Quat(Eigen::AngleAxisd(-0.26, Vec3::UnitY())) * Quat(Eigen::AngleAxisd(0.12, Vec3::UnitZ()));
+  const double spin = 2 * std::numbers::pi * 40;
+  set_body_angular_velocity(stone, t.s0, Vec3(0, 0, spin));
+  t.exact = exact_first_touch(stone, t.s0, t.s0.orientation * Vec3(0, 0, spin), g);
+  return t;
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(the_first_touch_is_the_vertex_that_crosses_first_at_the_located_time) {
@@ -353,13 +371,7 @@ BOOST_AUTO_TEST_CASE(the_first_touch_time_converges_at_the_scheme_s_order) {
   constexpr double kOrderSlack = 0.5;
   const Stone stone = prism_stone();
   const Environment env = vacuum();
-  RigidState s0;
-  s0.position_m = Vec3(0, 0, 0.1);
-  s0.velocity_m_s = Vec3(8 * std::cos(0.17), 0, -8 * std::sin(0.17));
-  s0.orientation = Quat(Eigen::AngleAxisd(-0.26, Vec3::UnitY())) * Quat(Eigen::AngleAxisd(0.12, Vec3::UnitZ()));
-  const double spin = 2 * std::numbers::pi * 40;
-  set_body_angular_velocity(stone, s0, Vec3(0, 0, spin));
-  const ExactTouch exact = exact_first_touch(stone, s0, s0.orientation * Vec3(0, 0, spin), env.gravity_m_s2);
+  const auto [s0, exact] = spun_tilted_throw(stone, env.gravity_m_s2);
   std::vector<double> errors, steps;
   for (int n : {32, 64, 128, 256}) {
     const double dt = exact.t_s / (n + 0.5);
@@ -388,13 +400,7 @@ BOOST_AUTO_TEST_CASE(the_adaptive_stepper_locates_the_first_touch_to_its_toleran
   constexpr double kTimePerTolerance_s = 10;  // seconds of touch-time error per unit tolerance
   const Stone stone = prism_stone();
   const Environment env = vacuum();
-  RigidState s0;
-  s0.position_m = Vec3(0, 0, 0.1);
-  s0.velocity_m_s = Vec3(8 * std::cos(0.17), 0, -8 * std::sin(0.17));
-  s0.orientation = Quat(Eigen::AngleAxisd(-0.26, Vec3::UnitY())) * Quat(Eigen::AngleAxisd(0.12, Vec3::UnitZ()));
-  const double spin = 2 * std::numbers::pi * 40;
-  set_body_angular_velocity(stone, s0, Vec3(0, 0, spin));
-  const ExactTouch exact = exact_first_touch(stone, s0, s0.orientation * Vec3(0, 0, spin), env.gravity_m_s2);
+  const auto [s0, exact] = spun_tilted_throw(stone, env.gravity_m_s2);
   for (double tol : {1e-4, 1e-6, 1e-8}) {
     RealtimeOptions o;
     o.scheme = Scheme::bs32;
