@@ -301,7 +301,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
   while (going && t < o.t_max_s - 1e-12 * o.t_max_s) {
     if (before_step) {
       before_step(t, s);
-      have_k = false;         // the surface may have moved: f(y) with it
+      if (surface) have_k = false;  // the surface may have moved: f(y) with it (still water cannot)
       if (!settle(t)) break;  // the surface under the stone may have moved
     }
     RigidState s_new;
