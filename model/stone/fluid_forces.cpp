@@ -10,6 +10,17 @@ namespace stoneskip {
 
 namespace {
 
+// What the first pass over the faces leaves for the distributed pressure: each face's world
+// normal R n_i (computed once per call) and its geometric wetted polygon with area and centroid
+// (count 0: dry). Reused between calls: no allocation in a step loop once grown to the stone.
+struct FaceScratch {
+  Vec3 normal;
+  bool has_normal = false;  // normal computed (only for faces that reach the water)
+  bool fully_wet = false;   // every vertex at depth ≥ 0: the polygon is the whole triangle
+  ClippedPolygon wetted;
+  ClippedArea area;
+};
+
 // The law's pressure redistributed along the wetted length (model/stone/pressure_distribution.hpp):
 // on face i, p(x) = K p_i w(ξ(x)) over its wetted polygon (below the raised waterline for the
 // Wagner variant), with p_i the law evaluated at the face's centre of pressure x_i = ∫w x dA / ∫w dA
@@ -17,7 +28,8 @@ namespace {
 // total force on the geometric wetted area. F_i = −K p_i W_i n_i acts at x_i.
 void add_distributed_loads(const Stone& stone, const Environment& env, const RigidState& s, const Mat3& R,
                            const Vec3& omega, const std::vector<Vec3>& world, const std::vector<double>& depth,
-                           double law_total_N, WaterLoads& out, std::vector<FacePush>* pushes) {
+                           std::vector<FaceScratch>& scratch, double law_total_N, WaterLoads& out,
+                           std::vector<FacePush>* pushes) {
   struct FaceLoad {
     double weight_m2;
     Vec3 centre_m;
@@ -26,36 +38,53 @@ void add_distributed_loads(const Stone& stone, const Environment& env, const Rig
   thread_local std::vector<ClippedPolygon> polys;
   thread_local std::vector<FaceLoad> faces;
   const auto& tris = stone.body_mesh.triangles;
+  const std::size_t nt = tris.size();
   const double rise = waterline_rise_m(env.pressure_distribution, out.deepest_depth_m);
-  polys.resize(tris.size());
+  if (polys.size() < nt) polys.resize(nt);
+  if (faces.size() < nt) faces.resize(nt);
   // The wetted length is that of the loaded region: faces advancing into the water (a receding
   // trailing rim or a dry-side face under the raised waterline would lengthen it for nothing).
   WettedSpanBuilder span_builder(s.velocity_m_s);
-  for (std::size_t i = 0; i < tris.size(); ++i) {
+  for (std::size_t i = 0; i < nt; ++i) {
+    ClippedPolygon& poly = polys[i];
+    FaceScratch& f = scratch[i];
+    ClippedArea c;
     const auto& t = tris[i];
-    polys[i] = clip_submerged_polygon(world[t[0]], world[t[1]], world[t[2]], depth[t[0]] + rise, depth[t[1]] + rise,
-                                      depth[t[2]] + rise);
-    if (polys[i].count == 0) continue;
-    const ClippedArea c = area_of(polys[i]);
-    const Vec3 n = R * stone.face_normals_body[i];
-    // A face sliding in its own plane to round-off (u below 1e-9 of its speed) is not advancing.
+    if (rise == 0 || f.fully_wet) {
+      // The same polygon as below the geometric waterline (that waterline, or a face wholly under it).
+      poly = f.wetted;
+      c = f.area;
+    } else {
+      const double d0 = depth[t[0]] + rise, d1 = depth[t[1]] + rise, d2 = depth[t[2]] + rise;
+      if (d0 < 0 && d1 < 0 && d2 < 0) {
+        poly.count = 0;
+        continue;
+      }
+      if (!f.has_normal) f.normal = R * stone.face_normals_body[i];  // dry below the geometric waterline
+      poly = clip_submerged_polygon(world[t[0]], world[t[1]], world[t[2]], d0, d1, d2);
+      c = area_of(poly, f.normal);
+    }
+    if (poly.count == 0) continue;
+    // A face sliding in its own plane to round-off (u below 1e-9 of its speed) is not advancing
+    // (u > 1e-9 |v_c| compared squared: no square root).
     const Vec3 vc = s.velocity_m_s + omega.cross(c.centroid_m - s.position_m);
-    if (c.area_m2 > 0 && vc.dot(n) > 1e-9 * vc.norm())
-      span_builder.add(polys[i]);
+    const double u = vc.dot(f.normal);
+    if (c.area_m2 > 0 && u > 0 && u * u > 1e-18 * vc.squaredNorm())
+      span_builder.add(poly);
     else
-      polys[i].count = 0;
+      poly.count = 0;
   }
   const WettedSpan span = span_builder.span();
   const double k = power_weight_exponent(kSavitskyCentreFraction);
   const double U = s.velocity_m_s.norm();
-  faces.assign(tris.size(), FaceLoad{0, Vec3::Zero(), 0});
   double distributed_N = 0;  // Σ p_i W_i
-  for (std::size_t i = 0; i < tris.size() && span.valid(); ++i) {
-    if (polys[i].count == 0) continue;
-    const WeightedIntegrals w = integrate_weight(polys[i], span, k);
+  for (std::size_t i = 0; i < nt; ++i) {
+    faces[i].pressure_Pa = 0;
+    if (polys[i].count == 0 || !span.valid()) continue;
+    const WeightedIntegrals w = integrate_weight(polys[i], span, k, scratch[i].normal);
     if (!(w.weight_m2 > 0)) continue;
-    const Vec3 centre = w.moment_m3 / w.weight_m2;
-    const Vec3 n = R * stone.face_normals_body[i];
+    const Vec3 centre = w.moment_m3 * (1 / w.weight_m2);
+    const Vec3& n = scratch[i].normal;
     const double p = law_pressure_Pa(env, (s.velocity_m_s + omega.cross(centre - s.position_m)).dot(n), U);
     if (p == 0) continue;  // a NaN pressure passes on: the solvers fail on it, saying where
     faces[i] = {w.weight_m2, centre, p};
@@ -72,9 +101,9 @@ void add_distributed_loads(const Stone& stone, const Environment& env, const Rig
     return;
   }
   const double scale = law_total_N / distributed_N;  // K
-  for (std::size_t i = 0; i < tris.size(); ++i) {
+  for (std::size_t i = 0; i < nt; ++i) {
     if (faces[i].pressure_Pa == 0) continue;
-    const Vec3 F = -(scale * faces[i].pressure_Pa * faces[i].weight_m2) * (R * stone.face_normals_body[i]);
+    const Vec3 F = -(scale * faces[i].pressure_Pa * faces[i].weight_m2) * scratch[i].normal;
     out.force_N += F;
     out.torque_N_m += (faces[i].centre_m - s.position_m).cross(F);
     if (pushes) pushes->push_back({polys[i], F});
@@ -103,21 +132,46 @@ WaterLoads water_loads_from_depths(const Stone& stone, const Environment& env, c
   const double U = s.velocity_m_s.norm();  // the planing law's speed (model/stone/water_laws.hpp)
   double law_total_N = 0;                  // Σ p_i S_i of the law on the geometric wetted area
   const auto& tris = stone.body_mesh.triangles;
-  for (std::size_t i = 0; i < tris.size(); ++i) {
+  const std::size_t nt = tris.size();
+  // Each call owns its scratch while it runs (the uniform fallback of the distributed pressure
+  // calls back in here, after its caller's last use of its scratch).
+  thread_local std::vector<FaceScratch> scratch;
+  if (scratch.size() < nt) scratch.resize(nt);
+  for (std::size_t i = 0; i < nt; ++i) {
     const auto& t = tris[i];
-    const ClippedArea c = clip_submerged(world[t[0]], world[t[1]], world[t[2]], depth[t[0]], depth[t[1]], depth[t[2]]);
+    FaceScratch& f = scratch[i];
+    f.wetted.count = 0;
+    f.area = ClippedArea{};
+    f.has_normal = f.fully_wet = false;
+    const double d0 = depth[t[0]], d1 = depth[t[1]], d2 = depth[t[2]];
+    if (d0 < 0 && d1 < 0 && d2 < 0) continue;  // dry: nothing below the surface
+    f.normal = R * stone.face_normals_body[i];
+    f.has_normal = true;
+    if (d0 >= 0 && d1 >= 0 && d2 >= 0) {
+      // Wholly under water: the triangle itself, its area known from the body frame.
+      f.fully_wet = true;
+      f.wetted.vertices[0] = world[t[0]];
+      f.wetted.vertices[1] = world[t[1]];
+      f.wetted.vertices[2] = world[t[2]];
+      f.wetted.count = 3;
+      f.area.area_m2 = stone.face_areas_m2[i];
+      f.area.centroid_m = (world[t[0]] + world[t[1]] + world[t[2]]) / 3.0;
+    } else {
+      f.wetted = clip_submerged_polygon(world[t[0]], world[t[1]], world[t[2]], d0, d1, d2);
+      f.area = area_of(f.wetted, f.normal);
+    }
+    const ClippedArea& c = f.area;
     if (c.area_m2 <= 0) continue;
     ++out.wet_triangles;
     out.wetted_area_m2 += c.area_m2;
-    const Vec3 n = R * stone.face_normals_body[i];
+    const Vec3& n = f.normal;
     const Vec3 r = c.centroid_m - s.position_m;  // lever arm (model/README.md §1.4 step 3)
     if (paper) {
       // Lee & Baek 2013 Eq. 1 as printed (v + r × ω), Eq. 2 on every submerged face, Eq. 3 F × r.
       const Vec3 F = printed_face_force_N(env, n, s.velocity_m_s + r.cross(omega), c.area_m2);
       out.force_N += F;
       out.torque_N_m += F.cross(r);
-      if (pushes)
-        pushes->push_back({clip_submerged_polygon(world[t[0]], world[t[1]], world[t[2]], depth[t[0]], depth[t[1]], depth[t[2]]), F});
+      if (pushes) pushes->push_back({f.wetted, F});
       continue;
     }
     // Physical: v_i = v + ω × r_i; the law's pressure, zero unless the face advances into the water.
@@ -130,10 +184,10 @@ WaterLoads water_loads_from_depths(const Stone& stone, const Environment& env, c
     const Vec3 F = -(p * c.area_m2) * n;
     out.force_N += F;
     out.torque_N_m += r.cross(F);  // Eq. 3, physical order
-    if (pushes)
-      pushes->push_back({clip_submerged_polygon(world[t[0]], world[t[1]], world[t[2]], depth[t[0]], depth[t[1]], depth[t[2]]), F});
+    if (pushes) pushes->push_back({f.wetted, F});
   }
-  if (distributed && law_total_N != 0) add_distributed_loads(stone, env, s, R, omega, world, depth, law_total_N, out, pushes);
+  if (distributed && law_total_N != 0)
+    add_distributed_loads(stone, env, s, R, omega, world, depth, scratch, law_total_N, out, pushes);
   return out;
 }
 

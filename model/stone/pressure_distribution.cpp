@@ -41,14 +41,35 @@ constexpr double kA1 = 0.059715871789769820, kB1 = 0.470142064105115090;
 constexpr double kA2 = 0.797426985353087322, kB2 = 0.101286507323456339;
 constexpr double kW0 = 0.225, kW1 = 0.132394152788506181, kW2 = 0.125939180544827153;
 
-void add_triangle(const Vec3& a, const Vec3& b, const Vec3& c, const WettedSpan& span, double k,
-                  WeightedIntegrals& out) {
-  const double area = 0.5 * (b - a).cross(c - a).norm();
+// x^k for the exponents in use: whole k ≤ 4 by multiplication (std::pow costs as much as the
+// rest of a face's integral), any other k by std::pow.
+double power(double x, double k, int whole) {
+  switch (whole) {
+    case 0: return 1;
+    case 1: return x;
+    case 2: return x * x;
+    case 3: return x * x * x;
+    case 4: return (x * x) * (x * x);
+  }
+  return std::pow(x, k);
+}
+
+int whole_exponent(double k) { return (k >= 0 && k <= 4 && k == std::floor(k)) ? static_cast<int>(k) : -1; }
+
+// A fan triangle's area: ½ |(b − a) × (c − a)|, or its component along the polygon's unit normal.
+double fan_area(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3* n) {
+  const Vec3 cr = (b - a).cross(c - a);
+  return 0.5 * (n ? std::abs(cr.dot(*n)) : cr.norm());
+}
+
+void add_triangle(const Vec3& a, const Vec3& b, const Vec3& c, const WettedSpan& span, double k, int whole,
+                  const Vec3* n, WeightedIntegrals& out) {
+  const double area = fan_area(a, b, c, n);
   if (!(area > 0)) return;
   auto at = [&](double la, double lb, double lc, double w) {
     const Vec3 x = la * a + lb * b + lc * c;
     const double xi = std::max(span.xi(x), 0.0);
-    const double f = w * area * (k + 1) * std::pow(xi, k);
+    const double f = w * area * (k + 1) * power(xi, k, whole);
     out.weight_m2 += f;
     out.moment_m3 += f * x;
   };
@@ -61,13 +82,54 @@ void add_triangle(const Vec3& a, const Vec3& b, const Vec3& c, const WettedSpan&
   at(kB2, kB2, kA2, kW2);
 }
 
+// The quadratic weight w = 3ξ² on a triangle where ξ ≥ 0 (ξ linear, vertex values xa, xb, xc) in
+// closed form, from ∫ λ_A^i λ_B^j λ_C^l dA = 2S i! j! l! / (i + j + l + 2)! (S the area):
+//   ∫ 3ξ² dA   = S/2 Q,                     Q = xa² + xb² + xc² + xa xb + xb xc + xc xa,
+//   ∫ 3ξ² x dA = S/10 Σ_V x_V (Q + ξ_V (ξ_V + xa + xb + xc)).
+// Equal to the 7-point rule (exact for this degree) to round-off, at a fraction of its cost.
+void add_quadratic_triangle(const Vec3& a, const Vec3& b, const Vec3& c, double xa, double xb, double xc,
+                            const Vec3* n, WeightedIntegrals& out) {
+  const double area = fan_area(a, b, c, n);
+  if (!(area > 0)) return;
+  const double q = xa * xa + xb * xb + xc * xc + xa * xb + xb * xc + xc * xa, sum = xa + xb + xc;
+  out.weight_m2 += 0.5 * area * q;
+  out.moment_m3 += (0.1 * area) * ((q + xa * (xa + sum)) * a + (q + xb * (xb + sum)) * b + (q + xc * (xc + sum)) * c);
+}
+
+WeightedIntegrals integrate(const ClippedPolygon& poly, const WettedSpan& span, double exponent, const Vec3* n) {
+  WeightedIntegrals out;
+  if (exponent == 2) {
+    // Savitsky's weight on a polygon inside the span (the loads' case): in closed form.
+    double xi[4];
+    bool inside = true;
+    const double per_length = 1 / span.length_m;  // span.xi with one division per polygon
+    for (int k = 0; k < poly.count; ++k) {
+      xi[k] = (span.direction.dot(poly.vertices[k]) - span.start_m) * per_length;
+      inside = inside && xi[k] >= 0;
+    }
+    if (inside) {
+      for (int k = 1; k + 1 < poly.count; ++k)
+        add_quadratic_triangle(poly.vertices[0], poly.vertices[k], poly.vertices[k + 1], xi[0], xi[k], xi[k + 1], n, out);
+      return out;
+    }
+  }
+  // Elsewhere (another exponent, or part of the polygon behind the trailing edge, where w is cut
+  // to 0): Radon's rule, exact for whole k ≤ 4 where ξ ≥ 0.
+  const int whole = whole_exponent(exponent);
+  for (int k = 1; k + 1 < poly.count; ++k)
+    add_triangle(poly.vertices[0], poly.vertices[k], poly.vertices[k + 1], span, exponent, whole, n, out);
+  return out;
+}
+
 }  // namespace
 
 WeightedIntegrals integrate_weight(const ClippedPolygon& poly, const WettedSpan& span, double exponent) {
-  WeightedIntegrals out;
-  for (int k = 1; k + 1 < poly.count; ++k)
-    add_triangle(poly.vertices[0], poly.vertices[k], poly.vertices[k + 1], span, exponent, out);
-  return out;
+  return integrate(poly, span, exponent, nullptr);
+}
+
+WeightedIntegrals integrate_weight(const ClippedPolygon& poly, const WettedSpan& span, double exponent,
+                                   const Vec3& unit_normal) {
+  return integrate(poly, span, exponent, &unit_normal);
 }
 
 double waterline_rise_m(PressureDistribution d, double deepest_depth_m) {

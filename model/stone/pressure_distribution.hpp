@@ -56,8 +56,13 @@ struct WeightedIntegrals {
   Vec3 moment_m3 = Vec3::Zero();
 };
 // Exact for whole k ≤ 4 (the 7-point degree-5 rule of Radon 1948 on each fan triangle: w x is a
-// polynomial of degree k + 1 there, ξ being linear in x).
+// polynomial of degree k + 1 there, ξ being linear in x); for k = 2 on a polygon with ξ ≥ 0 at
+// every vertex, the same integrals in closed form (equal to round-off, several times cheaper).
 WeightedIntegrals integrate_weight(const ClippedPolygon& poly, const WettedSpan& span, double exponent);
+// The same for a polygon in the plane of the unit normal n (fan areas without a square root, as
+// area_of(poly, n) in triangle_clip.hpp).
+WeightedIntegrals integrate_weight(const ClippedPolygon& poly, const WettedSpan& span, double exponent,
+                                   const Vec3& unit_normal);
 
 // The depth offset that raises the waterline for a distribution (the Wagner rise): (π/2 − 1) d_max
 // for savitsky_wagner with d_max > 0, else 0.

@@ -63,8 +63,10 @@ BOOST_AUTO_TEST_CASE(the_weighted_integrals_match_the_closed_form_and_a_refineme
   // Oracle 1: for ξ linear on a triangle of area A with vertex values a, b, c,
   //   ∫ 3ξ² dA = 3 A (a² + b² + c² + ab + bc + ca)/6   (exact integration of a quadratic).
   // Oracle 2: the midpoint rule on 4^L sub-triangles, an independent computation whose error falls
-  //   as 4^−L (second order in h): the 7-point rule is exact for w x (degree 3), so the refinement's
-  //   error must fall by ≈ 4 per level towards it. Tolerance: round-off for the closed form.
+  //   as 4^−L (second order in h): the integrals are exact for w x (degree 3: the closed form for
+  //   k = 2, the 7-point rule otherwise), so the refinement's error must fall by ≈ 4 per level
+  //   towards them. Tolerance: round-off for the closed form. (That the closed form equals the
+  //   7-point rule it replaced is fluid_forces_golden_test.cpp's oracle.)
   const Vec3 p0(0.01, -0.02, 0.003), p1(0.05, 0.01, -0.002), p2(-0.01, 0.03, 0.001);
   WettedSpanBuilder b(Vec3(3, 1, -1));
   const ClippedPolygon poly = triangle(p0, p1, p2);

@@ -32,7 +32,10 @@ StateDerivative rigid_body_rhs(const Stone& stone, const Environment& env, const
 
 void rigid_body_rhs(const Stone& stone, const Environment& env, const double* y, double* dydt,
                     const WaterSurface* surface) {
-  const StateDerivative d = rigid_body_rhs(stone, env, from_vector(y), surface);
+  to_vector(rigid_body_rhs(stone, env, from_vector(y), surface), dydt);
+}
+
+void to_vector(const StateDerivative& d, double* dydt) {
   for (int i = 0; i < 3; ++i) {
     dydt[kPosition + i] = d.dposition[i];
     dydt[kVelocity + i] = d.dvelocity[i];

@@ -24,6 +24,8 @@ struct Loads {
 // Right-hand side. `loads` (optional) receives the forces it used.
 StateDerivative rigid_body_rhs(const Stone& stone, const Environment& env, const RigidState& s,
                                const WaterSurface* surface = nullptr, Loads* loads = nullptr);
+// A derivative as a flat array (kStateSize doubles, the state's layout).
+void to_vector(const StateDerivative& d, double* dydt);
 // The same on flat arrays (kStateSize doubles each), for generic integrators and CVODE.
 void rigid_body_rhs(const Stone& stone, const Environment& env, const double* y, double* dydt,
                     const WaterSurface* surface = nullptr);

@@ -1,5 +1,7 @@
 #include "model/stone/triangle_clip.hpp"
 
+#include <cmath>
+
 namespace stoneskip {
 
 ClippedPolygon clip_submerged_polygon(const Vec3& p0, const Vec3& p1, const Vec3& p2, double d0, double d1, double d2) {
@@ -45,6 +47,23 @@ ClippedArea area_of(const ClippedPolygon& poly) {
   }
   out.area_m2 = area;
   if (area > 0) out.centroid_m = moment / area;
+  return out;
+}
+
+ClippedArea area_of(const ClippedPolygon& poly, const Vec3& n) {
+  ClippedArea out;
+  double area = 0;
+  Vec3 moment = Vec3::Zero();
+  const Vec3& a0 = poly.vertices[0];
+  for (int k = 1; k + 1 < poly.count; ++k) {
+    const Vec3& a1 = poly.vertices[k];
+    const Vec3& a2 = poly.vertices[k + 1];
+    const double a = 0.5 * std::abs((a1 - a0).cross(a2 - a0).dot(n));
+    area += a;
+    moment += a * (a0 + a1 + a2);  // 3 × the fan triangle's moment: one division at the end
+  }
+  out.area_m2 = area;
+  if (area > 0) out.centroid_m = moment / (3 * area);
   return out;
 }
 

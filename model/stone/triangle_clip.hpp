@@ -22,5 +22,8 @@ struct ClippedPolygon {
 ClippedPolygon clip_submerged_polygon(const Vec3& p0, const Vec3& p1, const Vec3& p2, double d0, double d1, double d2);
 // Area and centroid of a clipped polygon.
 ClippedArea area_of(const ClippedPolygon& poly);
+// The same for a polygon in the plane of the unit normal n (a face's normal): each fan triangle's
+// area is ½ |(a1 − a0) × (a2 − a0) · n|, no square root; equal to area_of to round-off.
+ClippedArea area_of(const ClippedPolygon& poly, const Vec3& unit_normal);
 
 }  // namespace stoneskip

@@ -35,7 +35,13 @@ Bs32Trial bs32_step(const Stone& stone, const Environment& env, const StateVecto
   Bs32Trial t;
   for (int i = 0; i < kStateSize; ++i) t.y1[i] = y0[i] + h * (2.0 / 9.0 * k1[i] + 1.0 / 3.0 * k2[i] + 4.0 / 9.0 * k3[i]);
   normalise_quaternion(t.y1);
-  t.k4 = rhs(stone, env, t.y1, surface);
+  {
+    // k4 with the loads it used: the wetted area at y1 comes with it.
+    Loads loads;
+    const StateDerivative d = rigid_body_rhs(stone, env, from_vector(t.y1.data()), surface, &loads);
+    to_vector(d, t.k4.data());
+    t.wetted_area_m2 = loads.water.wetted_area_m2;
+  }
   double sum = 0;
   for (int i = 0; i < kStateSize; ++i) {
     // b − b̂ = (−5/72, 1/12, 1/9, −1/8).

@@ -18,6 +18,7 @@ namespace stoneskip {
 struct Bs32Trial {
   StateVector y1{};        // the third-order solution (quaternion normalised)
   StateVector k4{};        // f(y1): the first stage of the next step (FSAL)
+  double wetted_area_m2 = 0;  // Σ S_i at y1, from the evaluation of k4 (the stepper logs it)
   double error_norm = 0;   // RMS of (y1 − ŷ1)_i / (atol_i + rtol max(|y0_i|, |y1_i|)); ≤ 1 passes
 };
 

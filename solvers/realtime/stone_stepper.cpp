@@ -301,7 +301,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
   while (going && t < o.t_max_s - 1e-12 * o.t_max_s) {
     if (before_step) {
       before_step(t, s);
-      have_k = false;         // the surface may have moved: f(y) with it
+      if (surface) have_k = false;  // the surface may have moved: f(y) with it (still water cannot)
       if (!settle(t)) break;  // the surface under the stone may have moved
     }
     RigidState s_new;
@@ -309,6 +309,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
     bool near = false;
     HermiteStep dense;  // the step's interpolant; filled here for bs32, at a transition for the others
     bool have_dense = false;
+    double trial_wetted_m2 = 0;  // bs32: the wetted area at the step's end
     if (!adaptive) {
       // Step size: fine while in the water or while the lowest vertex could reach it in one flight
       // step (clearance < max vertex speed × dt).
@@ -378,6 +379,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
       }
       if (!ok) break;
       k_start = trial.k4;  // FSAL
+      trial_wetted_m2 = trial.wetted_area_m2;
       have_dense = true;
     }
     ++r.stats.steps;
@@ -418,7 +420,8 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
     }
     double wetted = 0;
     if (next.wet()) {
-      wetted = wetted_area(s_new);
+      // bs32 evaluated the loads at s_new for its FSAL stage: their wetted area is this one.
+      wetted = have_dense && adaptive ? trial_wetted_m2 : wetted_area(s_new);
       log.observe_wetted_area(wetted);
     }
     s = s_new;

@@ -10,6 +10,10 @@
 // stencil beside the SIMD kernel. STONESKIP_ISA=scalar|sse2|avx2|avx512|neon forces the kernel's
 // path; --every-isa adds the stencil on every path the CPU supports, side by side. A benchmark, not a test: the numbers depend on the
 // machine and on what else runs on it.
+// The sweep runs the adaptive real-time stepper (bs32 at --sweep-rtol, rtol = atol_m; the default
+// chosen from the work-precision table in solvers/README.md) on two workers; beside its throws/s,
+// untimed, the fraction of its throws whose bounce count equals CVODE's where CVODE (BDF, the case's
+// reference settings) at rtol = atol 1e-8 and 1e-10 agrees.
 //   stoneskip bench
 //   stoneskip bench --json
 //   stoneskip bench --quick --json      # a smoke run (seconds): the same keys, rougher numbers
@@ -30,6 +34,8 @@
 #include "tools/scene/case_problem.hpp"
 #include "tools/scene/scene_throw.hpp"
 #include "verification/scene/headline_speed.hpp"
+#include "verification/stones/parallel_runs.hpp"
+#include "verification/stones/throw_problem.hpp"
 
 namespace stoneskip::cli {
 namespace {
@@ -41,6 +47,7 @@ struct BenchArgs {
   bool cpu_clock = false;
   std::string scene = "cases/scenes/seed_8ms.toml";
   std::string sweep_case = "cases/spin_sweep_base.toml";
+  double sweep_rtol = 0;  // 0: kSweepTolerance
   int repeats = 3;
   ResourceLimits limits;
 };
@@ -52,6 +59,50 @@ constexpr double kPerCellRatioTarget = 2;
 constexpr double kThrowsPerSecondTarget = 1000;
 constexpr double kTemporalFractionTarget = 1.5;  // temporal blocking against the one-pass copy bound
 constexpr double kOverPlainLoopTarget = 4;       // the SIMD stencil over a plain loop of it
+constexpr double kMatchFractionTarget = 0.98;    // the sweep's bounce counts equal to CVODE's
+
+// The sweep's solver: bs32 at rtol = atol_m = kSweepTolerance, the loosest tolerance of the
+// work-precision table (solvers/README.md) whose bounce counts match CVODE's on ≥ 98 % of the
+// bench grid.
+constexpr double kSweepTolerance = 1e-8;
+// CVODE's two tolerances (rtol = atol, m): a throw's reference count is where they agree.
+constexpr double kCvodeTolerances[2] = {1e-8, 1e-10};
+
+// The sweep's bounce counts against CVODE's, solved apart from the timed sweep.
+struct CvodeAgreement {
+  std::vector<int> bounces[2];  // per tolerance of kCvodeTolerances, per throw (−1: the solve failed)
+  long agreeing = 0;            // throws where both tolerances give the same count
+  long matched = 0;             // of those, throws where the sweep's count equals it
+  double fraction() const { return agreeing > 0 ? static_cast<double>(matched) / agreeing : std::nan(""); }
+};
+
+CvodeAgreement cvode_agreement(const SweepSpeedOptions& sweep, const std::vector<int>& realtime_bounces) {
+  const std::vector<ThrowProblem> throws = sweep_throws(sweep);
+  CvodeAgreement a;
+  for (int k = 0; k < 2; ++k) {
+    ReferenceOptions ro = sweep.base.reference;
+    ro.rtol = ro.atol = kCvodeTolerances[k];
+    SolverChoice c = reference_choice(ro);
+    c.reference.record_trajectory = false;
+    std::vector<int>& b = a.bounces[k];
+    b.assign(throws.size(), -1);
+    ParallelOptions po;
+    po.workers = sweep.workers;
+    parallel_for(
+        throws.size(),
+        [&](std::size_t i) {
+          const ThrowResult r = solve(throws[i], c);
+          if (r.outcome != Outcome::failed) b[i] = r.bounces;
+        },
+        po);
+  }
+  for (std::size_t i = 0; i < throws.size(); ++i) {
+    if (a.bounces[0][i] < 0 || a.bounces[0][i] != a.bounces[1][i]) continue;
+    ++a.agreeing;
+    if (i < realtime_bounces.size() && realtime_bounces[i] == a.bounces[0][i]) ++a.matched;
+  }
+  return a;
+}
 
 std::vector<double> range(double lo, double hi, double step) {
   std::vector<double> v;
@@ -78,6 +129,11 @@ void bench(const BenchArgs& a) {
   o.stencil.precision = Precision::float64;
   o.stencil.clock = a.cpu_clock ? ThroughputClock::cpu : ThroughputClock::wall;
   o.sweep.base = problem_from_case(sweep_case);
+  // The adaptive stepper at the named tolerance, whatever the case's own [solver] says.
+  const double sweep_tolerance = a.sweep_rtol > 0 ? a.sweep_rtol : kSweepTolerance;
+  if (!(sweep_tolerance >= 1e-12 && sweep_tolerance <= 1e-2)) throw_input_error("--sweep-rtol", 0, "", "must be in [1e-12, 1e-2]");
+  o.sweep.base.realtime.scheme = Scheme::bs32;
+  o.sweep.base.realtime.rtol = o.sweep.base.realtime.atol_m = sweep_tolerance;
   o.sweep.spins_rev_s = range(0, 60, 2.5);
   o.sweep.attack_angles_deg = range(0, 30, 2.5);
   o.sweep.repeats = a.repeats;
@@ -98,6 +154,7 @@ void bench(const BenchArgs& a) {
   enforce_limits(estimate_scene(scene_case, o.scene.duration_s, o.scene.frame_rate_hz), a.limits, scene_case.file);
   enforce_limits(estimate_run(sweep_case, RunSolvers{}), a.limits, sweep_case.file);
   const HeadlineSpeed h = measure_headline_speed(o, terminal_progress());
+  const CvodeAgreement cvode = cvode_agreement(o.sweep, h.sweep.bounces);  // not timed
 
   nlohmann::json j;
   j["scene_fps_1core"] = h.scene_one.fps_best_wall();
@@ -132,6 +189,15 @@ void bench(const BenchArgs& a) {
   j["sweep_steps"] = h.sweep.steps;
   j["sweep_contact_steps"] = h.sweep.contact_steps;
   j["sweep_simulated_s"] = h.sweep.simulated_s;
+  j["sweep_scheme"] = to_string(o.sweep.base.realtime.scheme);
+  j["sweep_rtol"] = o.sweep.base.realtime.rtol;
+  j["sweep_atol_m"] = o.sweep.base.realtime.atol_m;
+  j["sweep_bounces"] = h.sweep.bounces;
+  j["sweep_cvode_rtols"] = {kCvodeTolerances[0], kCvodeTolerances[1]};
+  j["sweep_cvode_bounces"] = {cvode.bounces[0], cvode.bounces[1]};
+  j["sweep_cvode_agreeing_throws"] = cvode.agreeing;
+  j["sweep_cvode_matched_throws"] = cvode.matched;
+  j["sweep_cvode_match_fraction"] = cvode.fraction();
   const double over_plain = h.stencil_small.plain_cells_per_s > 0 ? h.stencil_small.cells_per_s / h.stencil_small.plain_cells_per_s : 0;
   j["temporal_blocking_fraction_2048"] = h.stencil_large.temporal_fraction;
   j["temporal_blocking_cells_per_s_2048"] = h.stencil_large.temporal_cells_per_s;
@@ -188,9 +254,14 @@ void bench(const BenchArgs& a) {
   line("stencil at " + std::to_string(h.stencil_small.options.n) + "² over a plain loop of it (no SIMD, " +
            g(h.stencil_small.plain_cells_per_s) + " cells/s)", g(over_plain), ">= " + g(kOverPlainLoopTarget),
        over_plain >= kOverPlainLoopTarget);
-  line("bounce-count sweep (" + std::to_string(h.sweep.throws) + " throws, " + std::to_string(h.sweep.workers) + " workers): throws/s",
+  line("bounce-count sweep (" + std::to_string(h.sweep.throws) + " throws, " + std::string(to_string(o.sweep.base.realtime.scheme)) +
+           " rtol " + g(o.sweep.base.realtime.rtol) + ", " + std::to_string(h.sweep.workers) + " workers): throws/s",
        g(h.sweep.throws_per_s(), 4) + " (CPU " + g(h.sweep.cpu_s, 3) + " s)", ">= " + g(kThrowsPerSecondTarget),
        h.sweep.throws_per_s() >= kThrowsPerSecondTarget);
+  line("sweep: bounce counts equal to CVODE's (where rtol " + g(kCvodeTolerances[0]) + " and " + g(kCvodeTolerances[1]) + " agree: " +
+           std::to_string(cvode.agreeing) + " throws)",
+       g(cvode.fraction(), 4) + " (" + std::to_string(cvode.matched) + ")", ">= " + g(kMatchFractionTarget),
+       cvode.fraction() >= kMatchFractionTarget);
   std::printf("sweep profile: %s ms CPU per throw, %s s simulated per throw, %s steps per throw (%s with the contact step), %s µs CPU per step\n",
               g(1e3 * h.sweep.cpu_s / std::max(1L, h.sweep.throws)).c_str(), g(h.sweep.simulated_s / std::max(1L, h.sweep.throws)).c_str(),
               g(double(h.sweep.steps) / std::max(1L, h.sweep.throws)).c_str(),
@@ -220,6 +291,8 @@ void add_bench(CLI::App& app) {
                 "other processes held the core");
   cmd->add_option("--scene", a->scene, "The scene to time")->capture_default_str();
   cmd->add_option("--sweep-case", a->sweep_case, "The throw whose spin and attack angle the sweep varies")->capture_default_str();
+  cmd->add_option("--sweep-rtol", a->sweep_rtol,
+                  "The sweep's tolerance (bs32, rtol = atol_m; default " + g(kSweepTolerance) + ", from solvers/README.md's work-precision table)");
   cmd->add_option("--repeats", a->repeats, "Runs of the scene and of the sweep (the best is reported)")->capture_default_str();
   add_limit_options(cmd, a->limits);
   cmd->callback([a] { bench(*a); });

@@ -3,6 +3,8 @@
 // asserted): thread CPU ≤ wall for the one-thread scene, the fraction of the copy bound is the
 // cell rate over the bound, the per-cell ratio is the 500² rate over the large grid's, the sweep's
 // summed CPU fits in workers × wall, and the counts are duration × rate and spins × angles.
+// The sweep's agreement with CVODE is recomputed from the per-throw counts it stores, and those
+// counts against `stoneskip run` on the same throw (an independent path: the case parsed with --set).
 #include <boost/test/unit_test.hpp>
 
 #include <unistd.h>
@@ -12,17 +14,31 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "tools/cli/test_support.hpp"
+
+namespace {
+
+// One quick bench for the tests that read its JSON (it costs seconds).
+const nlohmann::json& quick_bench_json() {
+  static const nlohmann::json j = [] {
+    const auto r = stoneskip::test::run_stoneskip("bench --quick --json", false);
+    BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
+    return nlohmann::json::parse(r.out);
+  }();
+  return j;
+}
+
+}  // namespace
 
 BOOST_AUTO_TEST_SUITE(bench_command_)
 
 BOOST_AUTO_TEST_CASE(bench_json_names_every_headline_figure_and_they_agree) {
   constexpr double kRoundoff = 1e-12;   // a ratio recomputed from printed doubles (17 digits)
   constexpr double kClockSlack = 0.05;  // thread-CPU and wall clocks read at different instants, coarse CPU ticks on a VM
-  const auto r = stoneskip::test::run_stoneskip("bench --quick --json", false);
-  BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
-  const auto j = nlohmann::json::parse(r.out);
+  const nlohmann::json& j = quick_bench_json();
   for (const char* key : {"scene_fps_1core", "scene_fps_2cores", "stencil_cells_per_s_500", "stencil_cells_per_s_2048",
                           "bandwidth_fraction_2048", "sweep_throws_per_s", "scene_fps_1core_cpu", "per_cell_ratio_500_over_2048",
                           "copy_bound_cells_per_s_2048", "scene_wall_s_1core", "scene_cpu_s_1core", "sweep_wall_s", "sweep_cpu_s"}) {
@@ -44,6 +60,46 @@ BOOST_AUTO_TEST_CASE(bench_json_names_every_headline_figure_and_they_agree) {
   BOOST_TEST(j["scene_frames"].get<long>() == 45);  // the quick scene: 0.5 s at 90 frames/s
   BOOST_TEST(j["sweep_throws"].get<long>() == 6);   // 3 spins × 2 attack angles
   BOOST_TEST(j["sweep_throws_per_s"].get<double>() * j["sweep_wall_s"].get<double>() == 6.0, boost::test_tools::tolerance(kRoundoff));
+}
+
+BOOST_AUTO_TEST_CASE(bench_sweep_match_fraction_is_its_own_counts_and_the_counts_are_stoneskip_run_s) {
+  constexpr double kRoundoff = 1e-15;  // one division of two small whole numbers
+  const nlohmann::json& j = quick_bench_json();
+  // The sweep names its stepper: the adaptive one at its default tolerance, rtol = atol_m.
+  BOOST_TEST(j["sweep_scheme"].get<std::string>() == "bs32");
+  BOOST_TEST(j["sweep_rtol"].get<double>() == 1e-8);
+  BOOST_TEST(j["sweep_atol_m"].get<double>() == j["sweep_rtol"].get<double>());
+  const auto rt = j["sweep_bounces"].get<std::vector<int>>();
+  const auto cv = j["sweep_cvode_bounces"].get<std::vector<std::vector<int>>>();
+  const auto tols = j["sweep_cvode_rtols"].get<std::vector<double>>();
+  BOOST_REQUIRE_EQUAL(rt.size(), 6u);  // 3 spins × 2 attack angles
+  BOOST_REQUIRE_EQUAL(cv.size(), 2u);
+  BOOST_REQUIRE(tols == (std::vector<double>{1e-8, 1e-10}));
+  long agreeing = 0, matched = 0;
+  for (std::size_t i = 0; i < rt.size(); ++i) {
+    BOOST_REQUIRE(cv[0].size() == rt.size() && cv[1].size() == rt.size());
+    if (cv[0][i] < 0 || cv[0][i] != cv[1][i]) continue;
+    ++agreeing;
+    if (rt[i] == cv[0][i]) ++matched;
+  }
+  BOOST_TEST(j["sweep_cvode_agreeing_throws"].get<long>() == agreeing);
+  BOOST_TEST(j["sweep_cvode_matched_throws"].get<long>() == matched);
+  BOOST_REQUIRE(agreeing > 0);  // the quick throws are not all chaotic
+  const double fraction = j["sweep_cvode_match_fraction"].get<double>();
+  BOOST_TEST(std::abs(fraction - double(matched) / agreeing) <= kRoundoff);
+  BOOST_TEST((fraction >= 0 && fraction <= 1));
+  // Throw 3 of the grid (spins outer, attacks inner: spin 20 rev/s, attack 20°) through `run`.
+  const std::string run = "run cases/spin_sweep_base.toml --set throw.spin_rev_s=20 --set throw.attack_angle_deg=20 --json";
+  const auto a = stoneskip::test::run_stoneskip(run + " --solver realtime --set solver.scheme=bs32 --set solver.rtol=1e-8 --set solver.atol_m=1e-8", false);
+  BOOST_REQUIRE_MESSAGE(a.status == 0, a.out);
+  BOOST_TEST(nlohmann::json::parse(a.out)["bounces"].get<int>() == rt[3]);
+  for (int k = 0; k < 2; ++k) {
+    char set[96];
+    std::snprintf(set, sizeof set, " --set reference.rtol=%g --set reference.atol=%g", tols[k], tols[k]);
+    const auto c = stoneskip::test::run_stoneskip(run + " --solver reference" + set, false);
+    BOOST_REQUIRE_MESSAGE(c.status == 0, c.out);
+    BOOST_TEST(nlohmann::json::parse(c.out)["bounces"].get<int>() == cv[k][3], "CVODE rtol " << tols[k]);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(bench_scene_is_held_to_the_scene_limits) {

@@ -15,6 +15,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <sstream>
 #include <thread>
 
 #include "tools/cli/test_support.hpp"
@@ -172,6 +173,40 @@ BOOST_AUTO_TEST_CASE(a_throws_row_equals_stoneskip_run_on_the_same_overridden_ca
     }
     BOOST_TEST(at(t, row, "disagreement_bounces") ==
                j["realtime"]["bounces"].get<double>() - j["reference"]["bounces"].get<double>());
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_case_that_names_no_fixed_scheme_is_swept_with_the_adaptive_stepper) {
+  // Oracle: `stoneskip run` on the same case with the adaptive stepper named explicitly (bs32 at
+  // rtol = atol_m = 1e-8, the cases' default tolerance): the sweep's row must carry its counts of
+  // work exactly (steps, right-hand sides, rejected trials: they differ between any two schemes or
+  // tolerances), and must differ from the fixed stepper's.
+  // The shipped case without the lines that would name a fixed stepper (if it still has them).
+  std::istringstream lines(text_of("cases/paper_8ms_spin.toml"));
+  std::string base, line;
+  while (std::getline(lines, line))
+    if (line.rfind("scheme", 0) != 0 && line.rfind("contact_dt_s", 0) != 0) base += line + "\n";
+  const fs::path base_file = work() / "adaptive_base.toml";
+  write(base_file, base);
+  const std::string sweep_text = "base = \"" + base_file.string() + "\"\nset = [\"solver.t_max_s=2.0\"]\nsolvers = [\"realtime\"]\n" +
+                                 "[design]\nkind = \"grid\"\n[[vary]]\nkey = \"throw.spin_rev_s\"\nfrom = 0.0\nto = 20.0\ncount = 2\n";
+  const fs::path sweep = setup("adaptive", sweep_text), out = work() / "adaptive.h5";
+  const Outcome s = command("sweep " + sweep.string() + " --out " + out.string() + " --quiet");
+  BOOST_REQUIRE_MESSAGE(s.status == 0, s.err);
+  const stoneskip::Table t = table_of(out);
+  BOOST_REQUIRE_EQUAL(t.rows(), 2u);
+  for (std::size_t row : {0u, 1u}) {
+    char set[128];
+    std::snprintf(set, sizeof set, " --set throw.spin_rev_s=%.17g", at(t, row, "throw.spin_rev_s"));
+    const std::string args = "run cases/paper_8ms_spin.toml --set solver.t_max_s=2.0" + std::string(set) + " --solver realtime --json";
+    const Outcome adaptive = command(args + " --set solver.scheme=bs32 --set solver.rtol=1e-8 --set solver.atol_m=1e-8");
+    const Outcome fixed = command(args + " --set solver.scheme=semi_implicit_euler --set solver.contact_dt_s=1e-5");
+    BOOST_REQUIRE_MESSAGE(adaptive.status == 0 && fixed.status == 0, adaptive.err + fixed.err);
+    const nlohmann::json a = nlohmann::json::parse(adaptive.out), f = nlohmann::json::parse(fixed.out);  // one solver: its result at the top
+    for (const char* k : {"steps", "rhs_evaluations", "error_test_failures", "root_evaluations"})
+      BOOST_TEST(at(t, row, std::string("realtime_") + k) == a["stats"][k].get<double>(), k);
+    BOOST_TEST(at(t, row, "realtime_rhs_evaluations") != f["stats"]["rhs_evaluations"].get<double>());
+    BOOST_TEST(at(t, row, "realtime_bounces") == a["bounces"].get<double>());
   }
 }
 

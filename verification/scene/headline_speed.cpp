@@ -74,14 +74,7 @@ SceneSpeed measure_scene(const SceneOptions& base, int threads, int repeats, Pro
 }
 
 SweepSpeed measure_sweep(const SweepSpeedOptions& o, ProgressTicker& ticker) {
-  std::vector<ThrowProblem> throws;
-  for (double spin : o.spins_rev_s)
-    for (double attack : o.attack_angles_deg) {
-      ThrowParameters tp = o.base.parameters;
-      tp.spin_rev_s = spin;
-      tp.attack_angle_deg = attack;
-      throws.push_back(with_parameters(o.base, tp));
-    }
+  const std::vector<ThrowProblem> throws = sweep_throws(o);
   SolverChoice solver = realtime_choice(o.base.realtime);
   solver.realtime.record_trajectory = false;  // a sweep needs the counts, not the paths
   SweepSpeed s;
@@ -121,6 +114,7 @@ SweepSpeed measure_sweep(const SweepSpeedOptions& o, ProgressTicker& ticker) {
     }
     ticker.tick();
   }
+  s.bounces = bounces;
   for (int b : bounces) {
     if (b < 0) continue;
     if (static_cast<std::size_t>(b) >= s.bounce_histogram.size()) s.bounce_histogram.resize(b + 1, 0);
@@ -130,6 +124,18 @@ SweepSpeed measure_sweep(const SweepSpeedOptions& o, ProgressTicker& ticker) {
 }
 
 }  // namespace
+
+std::vector<ThrowProblem> sweep_throws(const SweepSpeedOptions& o) {
+  std::vector<ThrowProblem> throws;
+  for (double spin : o.spins_rev_s)
+    for (double attack : o.attack_angles_deg) {
+      ThrowParameters tp = o.base.parameters;
+      tp.spin_rev_s = spin;
+      tp.attack_angle_deg = attack;
+      throws.push_back(with_parameters(o.base, tp));
+    }
+  return throws;
+}
 
 HeadlineSpeed measure_headline_speed(const HeadlineSpeedOptions& o, const ProgressFactory& progress) {
   std::string why;

@@ -34,6 +34,9 @@ struct SweepSpeedOptions {
   int repeats = 3;                    // best of
 };
 
+// The sweep's throws in its order: spins outer, attack angles inner.
+std::vector<ThrowProblem> sweep_throws(const SweepSpeedOptions& o);
+
 struct HeadlineSpeedOptions {
   SceneOptions scene;                 // the seed's scene (threads are set per measurement)
   int scene_repeats = 3;
@@ -67,6 +70,7 @@ struct SweepSpeed {
   long steps = 0, contact_steps = 0;  // all stone steps; those with the contact step size
   double simulated_s = 0;             // Σ of each throw's end time
   std::vector<int> bounce_histogram;  // throws with 0, 1, 2, … bounces
+  std::vector<int> bounces;           // per throw, spins outer, attack angles inner (−1: failed)
   double throws_per_s() const { return best_wall_s > 0 ? throws / best_wall_s : 0; }
 };
 

@@ -65,7 +65,10 @@ Record scene_speed_findings(const SceneStudiesOptions& o, const ProgressFactory&
   r.set("sweep_throws_per_s", s.sweep.throws_per_s());
   r.set("sweep_cpu_s", s.sweep.cpu_s);
   r.set("sweep_wall_s", s.sweep.best_wall_s);
-  r.set("sweep_contact_dt_s", h.sweep.base.realtime.contact_dt_s);
+  r.set("sweep_contact_dt_s", h.sweep.base.realtime.contact_dt_s);  // the fixed schemes' contact step (unused by bs32)
+  r.set("sweep_scheme", std::string(to_string(h.sweep.base.realtime.scheme)));
+  r.set("sweep_rtol", h.sweep.base.realtime.rtol);  // bs32's tolerance (rtol; atol_m in sweep_atol_m)
+  r.set("sweep_atol_m", h.sweep.base.realtime.atol_m);
   r.set("sweep_steps", s.sweep.steps);
   r.set("sweep_contact_steps", s.sweep.contact_steps);
   r.set("sweep_simulated_s", s.sweep.simulated_s);
