@@ -132,7 +132,13 @@ class HeightField {
   // 2c²Δt² L[b] / (2 + μΔt) on the box around b, O(box); an empty patch costs nothing. No
   // allocation once the scratch has grown to the largest patch seen.
   void step(const DraughtPatch& draught);
-  void advance(long n);                     // n free steps
+  // n free steps, bit for bit what n calls of step() give. Where nothing looks in between (free
+  // water, the ring phase of a scene, a study's run), StepMode::full on one thread takes them
+  // along a wavefront (model/water/leapfrog_kernel.hpp, temporal blocking) once the two levels
+  // outgrow L2, the boundary applied to each row of each level as it is computed.
+  void advance(long n);
+  // Whether advance(n ≥ 2) takes the wavefront on this field (full mode, one thread, levels over L2).
+  bool advance_is_blocked() const;
 
   const HeightFieldOptions& options() const { return options_; }
   int nx() const { return options_.nx; }
@@ -160,11 +166,17 @@ class HeightField {
   double interpolate(double x_m, double y_m) const;
 
  private:
-  // Padded layout: row j (−1 ≤ j ≤ ny) starts at (j + 1)·stride; its left ghost sits one before a
+  // Padded layout: row j (−G ≤ j < ny + G) starts at (j + G)·stride, G = ghost_rows_ (1, or the
+  // periodic images of several levels for temporal blocking); its left ghost sits one before a
   // cache-line boundary (origin_), so cell (0, j) starts a line; stride is a whole number of lines.
-  std::size_t index(int i, int j) const { return static_cast<std::size_t>(j + 1) * stride_ + origin_ + (i + 1); }
+  std::size_t index(int i, int j) const {
+    return static_cast<std::size_t>(j + ghost_rows_) * stride_ + origin_ + static_cast<std::size_t>(i + 1);
+  }
+  std::size_t ghost_corner() const { return index(-1, -1); }  // where fill_ghosts' array starts
   template <class Real>
   void step_impl(std::vector<Real, CacheAligned<Real>>& cur, std::vector<Real, CacheAligned<Real>>& prev, const DraughtPatch* draught);
+  template <class Real>
+  void advance_blocked(std::vector<Real, CacheAligned<Real>>& cur, std::vector<Real, CacheAligned<Real>>& prev, long n);
   void build_forcing(const DraughtPatch& draught);
   int tile_of(int i, int j) const { return (j / options_.tiles.tile_cells) * tiles_x_ + i / options_.tiles.tile_cells; }
   void restart();  // after set_state/set_levels: time 0, every tile's activity measured
@@ -173,6 +185,7 @@ class HeightField {
   HeightFieldOptions options_;
   bool f64_ = true;
   std::size_t stride_ = 0, origin_ = 0, levels_size_ = 0;
+  int ghost_rows_ = 1;
   std::vector<double, CacheAligned<double>> cur64_, prev64_;
   std::vector<float, CacheAligned<float>> cur32_, prev32_;
   double time_s_ = 0;

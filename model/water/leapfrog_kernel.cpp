@@ -225,10 +225,96 @@ template <int Bytes, class Real, bool Diagonal, bool Defect, bool Activity>
   }
 }
 
+// Rows j and j + 1 together (vectors of `Bytes` bytes > 0): each of the two rows is loaded once
+// and serves as the middle row of one update and the row above or below of the other, and the ±1
+// neighbours of the middle rows are unaligned loads (no shuffles). The sums above and below,
+// ud = z[k − w] + z[k + w], enter Σ_orth as they are and Σ_diag shifted by ±1: with `ShuffleUd` (z,
+// zp and w aligned to a vector) they are shifted out of adjacent ud vectors (two shuffles, one
+// addition fewer), otherwise the corners are loaded and added like the scalar tail. Either way
+// every cell's operands and the order of its operations are the scalar expression's.
+template <int Bytes, class Real, bool Diagonal, bool Defect, bool ShuffleUd>
+[[gnu::always_inline]] inline void row_pair_body(Real* __restrict zp, const Real* __restrict z, std::ptrdiff_t n,
+                                                 std::ptrdiff_t w, const LeapfrogWeights<Real>& c) {
+  using S = Simd<Real, Bytes>;
+  using V = typename S::V;
+  constexpr std::ptrdiff_t L = S::lanes;
+  const Real wc = c.centre, wo = c.orth, wd = c.diag, wp = c.previous, wx = c.defect;
+  constexpr bool increment_form = std::is_same_v<Real, float>;
+  const Real* a = z;      // row j
+  const Real* b = z + w;  // row j + 1
+  Real* pa = zp;
+  Real* pb = zp + w;
+  std::ptrdiff_t k = 0;
+  if constexpr (ShuffleUd) {
+    V ac = load<V>(a), bc = load<V>(b);
+    V uda0 = load<V>(a - w - L) + load<V>(b - L), uda1 = load<V>(a - w) + bc;
+    V udb0 = load<V>(a - L) + load<V>(b + w - L), udb1 = ac + load<V>(b + w);
+    for (; k + L <= n; k += L) {
+      __builtin_prefetch(b + k + 2 * w + STONESKIP_PF, 0, 3);
+      __builtin_prefetch(pa + k + STONESKIP_PF, 1, 3);
+      __builtin_prefetch(pb + k + STONESKIP_PF, 1, 3);
+      const V an = load<V>(a + k + L), bn = load<V>(b + k + L);
+      const V uda2 = load<V>(a - w + k + L) + bn, udb2 = an + load<V>(b + w + k + L);
+      const V orth_a = (load<V>(a + k - 1) + load<V>(a + k + 1)) + uda1;
+      const V orth_b = (load<V>(b + k - 1) + load<V>(b + k + 1)) + udb1;
+      V diag_a{}, diag_b{};
+      if constexpr (Diagonal) {
+        diag_a = shift_in_left<S>(uda0, uda1) + shift_in_right<S>(uda1, uda2);
+        diag_b = shift_in_left<S>(udb0, udb1) + shift_in_right<S>(udb1, udb2);
+      }
+      const V ra = update<Real, V, Diagonal, Defect, increment_form>(ac, orth_a, diag_a, load<V>(pa + k), wc, wo, wd, wp, wx);
+      const V rb = update<Real, V, Diagonal, Defect, increment_form>(bc, orth_b, diag_b, load<V>(pb + k), wc, wo, wd, wp, wx);
+      std::memcpy(pa + k, &ra, sizeof ra);
+      std::memcpy(pb + k, &rb, sizeof rb);
+      ac = an;
+      bc = bn;
+      uda0 = uda1;
+      uda1 = uda2;
+      udb0 = udb1;
+      udb1 = udb2;
+    }
+  } else {
+    for (; k + L <= n; k += L) {
+      __builtin_prefetch(b + k + 2 * w + STONESKIP_PF, 0, 3);
+      __builtin_prefetch(pa + k + STONESKIP_PF, 1, 3);
+      __builtin_prefetch(pb + k + STONESKIP_PF, 1, 3);
+      const V al = load<V>(a + k - 1), ac = load<V>(a + k), ar = load<V>(a + k + 1);
+      const V bl = load<V>(b + k - 1), bc = load<V>(b + k), br = load<V>(b + k + 1);
+      const V orth_a = (al + ar) + (load<V>(a - w + k) + bc);
+      const V orth_b = (bl + br) + (ac + load<V>(b + w + k));
+      V diag_a{}, diag_b{};
+      if constexpr (Diagonal) {
+        diag_a = (load<V>(a - w + k - 1) + bl) + (load<V>(a - w + k + 1) + br);
+        diag_b = (al + load<V>(b + w + k - 1)) + (ar + load<V>(b + w + k + 1));
+      }
+      const V ra = update<Real, V, Diagonal, Defect, increment_form>(ac, orth_a, diag_a, load<V>(pa + k), wc, wo, wd, wp, wx);
+      const V rb = update<Real, V, Diagonal, Defect, increment_form>(bc, orth_b, diag_b, load<V>(pb + k), wc, wo, wd, wp, wx);
+      std::memcpy(pa + k, &ra, sizeof ra);
+      std::memcpy(pb + k, &rb, sizeof rb);
+    }
+  }
+  if (k < n) {  // the scalar tails of both rows
+    row_body<0, Real, Diagonal, Defect, false>(pa + k, a + k, n - k, w, c, n - k, nullptr);
+    row_body<0, Real, Diagonal, Defect, false>(pb + k, b + k, n - k, w, c, n - k, nullptr);
+  }
+}
+
 template <int Bytes, class Real, bool Diagonal, bool Defect>
 [[gnu::always_inline]] inline void block_body(Real* zp, const Real* z, std::ptrdiff_t n, std::ptrdiff_t rows,
                                               std::ptrdiff_t w, const LeapfrogWeights<Real>& c) {
-  for (std::ptrdiff_t r = 0; r < rows; ++r)
+  std::ptrdiff_t r = 0;
+  if constexpr (Bytes > 0) {
+    constexpr std::ptrdiff_t L = Simd<Real, Bytes>::lanes;
+    const bool aligned = reinterpret_cast<std::uintptr_t>(z) % Bytes == 0 &&
+                         reinterpret_cast<std::uintptr_t>(zp) % Bytes == 0 && w % L == 0;
+    for (; r + 2 <= rows; r += 2) {
+      if (aligned)
+        row_pair_body<Bytes, Real, Diagonal, Defect, true>(zp + r * w, z + r * w, n, w, c);
+      else
+        row_pair_body<Bytes, Real, Diagonal, Defect, false>(zp + r * w, z + r * w, n, w, c);
+    }
+  }
+  for (; r < rows; ++r)
     row_body<Bytes, Real, Diagonal, Defect, false>(zp + r * w, z + r * w, n, w, c, n, nullptr);
 }
 
@@ -375,31 +461,42 @@ std::atomic<const KernelPath*>& active_slot() {
 
 const KernelPath& active() { return *active_slot().load(std::memory_order_relaxed); }
 
-// The wavefront of leapfrog_wavefront (see the header): at front i, stage s computes row i − s of
-// level s + 1 from level s (in the buffer that did not receive level s) into the buffer that held
-// level s − 1. Row i − s of level s was done at front i − 1, row i − s + 1 at this front's stage
-// s − 1; the overwritten row of level s − 1 was last read by rows i − s ± 1 and i − s of level s,
-// all done. So the order computes what `steps` whole sweeps do, cell for cell.
+// The wavefront of leapfrog_wavefront (see the header), two rows at a time so that the kernel
+// can share their loads. Rows are grouped in pairs {2m, 2m + 1} (m may be negative: halo rows).
+// In a pass of P levels, level s ∈ [1, P] computes the rows [lo_s, hi_s): the block, or with a
+// halo the block widened by P − s rows on each side. At front i, stage s computes pair i − s + 1 of
+// level s from level s − 1 (in the buffer that did not receive level s − 1) into the buffer that
+// held level s − 2. It reads pairs i − s … i − s + 2 of level s − 1: the first two were done at
+// earlier fronts, the third at this front's stage s − 1 (or lies outside level s − 1's rows, which
+// contain level s's rows ± 1). The rows of level s − 2 it overwrites were last read by those same
+// three pairs of level s − 1, all done. So the order computes what P whole sweeps do, cell for cell.
 template <class Real, class Block>
-void wavefront(Real* z, Real* zp, std::ptrdiff_t rows, std::ptrdiff_t w, int steps, Block&& block) {
+void wavefront(Real* z, Real* zp, std::ptrdiff_t rows, std::ptrdiff_t w, int steps, const WavefrontHooks<Real>& hooks,
+               Block&& block) {
   if (steps <= 0 || rows <= 0) return;
-  // Levels in flight: about depth + 3 rows of each buffer stay in cache, so the steps are taken in
-  // passes of at most `depth` levels, the rows in flight kept under ~768 KB (L2 and the near L3).
-  // Measured at 2048² float64 on AVX2, loaded machine: a 256 KB budget gave 1.3–1.5 of the copy
-  // bound, 768 KB 1.6–1.8, 2 MB 1.5–1.7.
-  const std::ptrdiff_t row_bytes = 2 * w * static_cast<std::ptrdiff_t>(sizeof(Real));
-  const int depth = static_cast<int>(std::clamp<std::ptrdiff_t>((768 << 10) / std::max<std::ptrdiff_t>(row_bytes, 1) - 3, 1, 16));
+  const int depth = std::max(1, std::min(wavefront_depth(w * static_cast<std::ptrdiff_t>(sizeof(Real))),
+                                         hooks.halo_rows > 0 ? hooks.halo_rows : 1 << 20));
+  auto floor_half = [](std::ptrdiff_t r) { return r >= 0 ? r / 2 : -((1 - r) / 2); };
   Real* a = z;
   Real* b = zp;
   for (int done = 0; done < steps;) {
     const int pass = std::min(depth, steps - done);
-    for (std::ptrdiff_t i = 0; i < rows + pass - 1; ++i)
-      for (int s = 0; s < pass; ++s) {
-        const std::ptrdiff_t j = i - s;
-        if (j < 0 || j >= rows) continue;
-        Real* dst = s % 2 == 0 ? b : a;
-        const Real* src = s % 2 == 0 ? a : b;
-        block(dst + j * w, src + j * w);
+    const std::ptrdiff_t widen = hooks.halo_rows > 0 ? pass - 1 : 0;  // level 1's extra rows on each side
+    if (hooks.before_pass) hooks.before_pass(hooks.context, a, b, pass);
+    const std::ptrdiff_t m_first = floor_half(-widen), m_last = floor_half(rows - 1 + widen);
+    for (std::ptrdiff_t i = m_first; i <= m_last + pass - 1; ++i)
+      for (int s = 1; s <= pass; ++s) {
+        const std::ptrdiff_t m = i - s + 1;
+        if (m < m_first) break;  // and so for every later stage
+        const std::ptrdiff_t extra = hooks.halo_rows > 0 ? widen - (s - 1) : 0;  // level s's halo rows
+        const std::ptrdiff_t lo = -extra, hi = rows + extra;
+        const std::ptrdiff_t r0 = std::max(2 * m, lo), r1 = std::min(2 * m + 2, hi);
+        if (r0 >= r1) continue;
+        Real* dst = s % 2 == 1 ? b : a;
+        const Real* src = s % 2 == 1 ? a : b;
+        block(dst + r0 * w, src + r0 * w, r1 - r0);
+        if (hooks.after_row)
+          for (std::ptrdiff_t r = r0; r < r1; ++r) hooks.after_row(hooks.context, dst, r);
       }
     if (pass % 2) std::swap(a, b);
     done += pass;
@@ -425,15 +522,25 @@ void leapfrog_row_chunks(float* zp, const float* z, std::ptrdiff_t n, std::ptrdi
   active().chunks_f(zp, z, n, w, c, diagonal, chunk, activity);
 }
 
+int wavefront_depth(std::ptrdiff_t row_bytes) {
+  // About 2(P + 2) rows of each of the two buffers are in flight in a pass of P levels; keep them
+  // within about what L2 holds (1 MB on the machines measured). Measured at 2048² float64 on AVX2,
+  // loaded 2-core machine, 48 steps: 4 levels a pass 1.4 of the copy bound, 8–24 levels 1.7–2.0.
+  constexpr std::ptrdiff_t kBudgetBytes = 1 << 20;
+  return static_cast<int>(std::clamp<std::ptrdiff_t>(kBudgetBytes / (4 * std::max<std::ptrdiff_t>(row_bytes, 1)) - 2, 1, 16));
+}
+
 void leapfrog_wavefront(double* z, double* zp, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
-                        const LeapfrogWeights<double>& c, bool diagonal, int steps) {
+                        const LeapfrogWeights<double>& c, bool diagonal, int steps, const WavefrontHooks<double>& hooks) {
   const auto f = active().block_d;
-  wavefront(z, zp, rows, w, steps, [&](double* dst, const double* src) { f(dst, src, n, 1, w, c, diagonal); });
+  wavefront(z, zp, rows, w, steps, hooks,
+            [&](double* dst, const double* src, std::ptrdiff_t count) { f(dst, src, n, count, w, c, diagonal); });
 }
 void leapfrog_wavefront(float* z, float* zp, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
-                        const LeapfrogWeights<float>& c, bool diagonal, int steps) {
+                        const LeapfrogWeights<float>& c, bool diagonal, int steps, const WavefrontHooks<float>& hooks) {
   const auto f = active().block_f;
-  wavefront(z, zp, rows, w, steps, [&](float* dst, const float* src) { f(dst, src, n, 1, w, c, diagonal); });
+  wavefront(z, zp, rows, w, steps, hooks,
+            [&](float* dst, const float* src, std::ptrdiff_t count) { f(dst, src, n, count, w, c, diagonal); });
 }
 
 const char* to_string(SimdPath p) {

@@ -61,16 +61,38 @@ void leapfrog_row_chunks(double* zp, const double* z, std::ptrdiff_t n, std::ptr
 void leapfrog_row_chunks(float* zp, const float* z, std::ptrdiff_t n, std::ptrdiff_t w, const LeapfrogWeights<float>& c,
                          bool diagonal, std::ptrdiff_t chunk, float* activity);
 
+// What a caller of leapfrog_wavefront can do between rows (a boundary condition). Rows are numbered
+// from the block's first row (0) to rows − 1; halo rows lie outside that range.
+template <class Real>
+struct WavefrontHooks {
+  // With halo_rows = H > 0 a pass advances at most H levels, and a pass of P levels also computes
+  // P − s rows above and below the block at level s (the images of a periodic boundary, say): then
+  // before_pass must have filled P rows above and below of `level` and P − 1 of `previous` (rows
+  // −P…−1 and rows…rows + P − 1), the memory for them must exist, and the results of those rows
+  // are scratch. Without a halo the ghost rows −1 and `rows` are read as they are.
+  int halo_rows = 0;
+  void* context = nullptr;
+  // Called at the start of each pass with the two levels (newest first) and the pass's levels.
+  void (*before_pass)(void* context, Real* level, Real* previous, int levels) = nullptr;
+  // Called once row `row` of a level has been computed into `level` (which points at row 0's first
+  // cell): the place to fill that row's ghost cells, or a ghost row that mirrors it.
+  void (*after_row)(void* context, Real* level, std::ptrdiff_t row) = nullptr;
+};
+
 // Advances a whole field `steps` leapfrog steps, as `steps` times { leapfrog_block(zp, z, n, rows,
-// w); swap(z, zp) } would, to the bit, but row by row along a wavefront (temporal blocking): row
-// j of level s + 1 is computed as soon as rows j − 1…j + 1 of level s are, so the rows in flight
-// stay in cache while several levels pass over them. The ghost cells around the block (rows −1
-// and `rows`, columns −1 and n) are held as they are (a fixed rim, or a block inside a larger
-// field whose ring is not advanced). After an odd number of steps the newest level is in zp.
+// w); hooks' ghost filling; swap(z, zp) } would, to the bit, but two rows at a time along a
+// wavefront (temporal blocking): rows j, j + 1 of level s + 1 are computed as soon as rows
+// j − 1…j + 2 of level s are, so the rows in flight stay in cache while several levels pass over
+// them. Without hooks the ghost cells around the block (rows −1 and `rows`, columns −1 and n) are
+// held as they are (a fixed rim, or a block inside a larger field whose ring is not advanced).
+// After an odd number of steps the newest level is in zp.
 void leapfrog_wavefront(double* z, double* zp, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
-                        const LeapfrogWeights<double>& c, bool diagonal, int steps);
+                        const LeapfrogWeights<double>& c, bool diagonal, int steps,
+                        const WavefrontHooks<double>& hooks = {});
 void leapfrog_wavefront(float* z, float* zp, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
-                        const LeapfrogWeights<float>& c, bool diagonal, int steps);
+                        const LeapfrogWeights<float>& c, bool diagonal, int steps, const WavefrontHooks<float>& hooks = {});
+// The levels a pass advances for rows of `row_bytes` bytes (1…16: the rows in flight fit L2).
+int wavefront_depth(std::ptrdiff_t row_bytes);
 
 // The instruction-set paths of the kernel. Each computes the same bits.
 enum class SimdPath { scalar, sse2, avx2, avx512, neon };

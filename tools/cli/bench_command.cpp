@@ -128,6 +128,7 @@ void bench(const BenchArgs& a) {
   o.stencil.stencil = o.scene.water ? o.scene.water->field.stencil : named_stencil("nine_point_isotropic");
   o.stencil.precision = Precision::float64;
   o.stencil.clock = a.cpu_clock ? ThroughputClock::cpu : ThroughputClock::wall;
+  o.stencil.temporal_two_threads = !a.cpu_clock;  // two threads need the wall clock
   o.sweep.base = problem_from_case(sweep_case);
   // The adaptive stepper at the named tolerance, whatever the case's own [solver] says.
   const double sweep_tolerance = a.sweep_rtol > 0 ? a.sweep_rtol : kSweepTolerance;
@@ -202,6 +203,8 @@ void bench(const BenchArgs& a) {
   j["temporal_blocking_fraction_2048"] = h.stencil_large.temporal_fraction;
   j["temporal_blocking_cells_per_s_2048"] = h.stencil_large.temporal_cells_per_s;
   j["temporal_blocking_steps"] = h.stencil_large.options.temporal_steps;
+  j["temporal_blocking_fraction_2048_2threads"] = h.stencil_large.temporal_two_threads_fraction;
+  j["temporal_blocking_cells_per_s_2048_2threads"] = h.stencil_large.temporal_two_threads_cells_per_s;
   j["plain_loop_cells_per_s_500"] = h.stencil_small.plain_cells_per_s;
   j["stencil_over_plain_loop_500"] = over_plain;
   j["stencil_clock"] = h.stencil_large.clock;
@@ -251,6 +254,9 @@ void bench(const BenchArgs& a) {
            std::to_string(h.stencil_large.options.n) + "²: fraction of the copy bound",
        g(h.stencil_large.temporal_cells_per_s) + " cells/s, " + g(h.stencil_large.temporal_fraction), ">= " + g(kTemporalFractionTarget),
        h.stencil_large.temporal_fraction >= kTemporalFractionTarget);
+  if (h.stencil_large.temporal_two_threads_cells_per_s > 0)
+    line("temporal blocking on two threads (two halves, no rows exchanged): fraction of the one-thread copy bound",
+         g(h.stencil_large.temporal_two_threads_cells_per_s) + " cells/s, " + g(h.stencil_large.temporal_two_threads_fraction), "", true);
   line("stencil at " + std::to_string(h.stencil_small.options.n) + "² over a plain loop of it (no SIMD, " +
            g(h.stencil_small.plain_cells_per_s) + " cells/s)", g(over_plain), ">= " + g(kOverPlainLoopTarget),
        over_plain >= kOverPlainLoopTarget);

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -31,6 +32,8 @@ bool ThroughputOptions::is_valid(std::string* why) const {
   if (temporal_steps < 0 || temporal_steps > 1000) return fail("throughput: temporal_steps must be in [0, 1000]");
   if ((temporal_steps > 0 || plain_loop) && (threads != 1 || precision != Precision::float64))
     return fail("throughput: temporal blocking and the plain loop are timed on one thread in float64");
+  if (temporal_two_threads && temporal_steps > 0 && clock != ThroughputClock::wall)
+    return fail("throughput: temporal_two_threads is timed on the wall clock");
   return true;
 }
 
@@ -119,7 +122,7 @@ ThroughputSummary measure_stencil_throughput(const ThroughputOptions& o) {
   // 64 bytes with the first cell of each row aligned, as the field lays them out.
   const std::ptrdiff_t w = (o.n + 2 + 15) / 8 * 8, first = w + 8;
   std::vector<double, CacheAligned<double>> raw_z, raw_zp;
-  if (o.temporal_steps > 0 || o.plain_loop) {
+  if (o.plain_loop) {
     raw_z.assign(static_cast<std::size_t>(w) * (o.n + 2) + 16, 0.0);
     for (int j = 0; j < o.n; ++j)
       for (int i = 0; i < o.n; ++i) raw_z[first + j * w + i] = z0[static_cast<std::size_t>(j) * o.n + i];
@@ -127,13 +130,35 @@ ThroughputSummary measure_stencil_throughput(const ThroughputOptions& o) {
   }
   const Stencil& st = o.stencil;
   const LeapfrogWeights<double> wts = leapfrog_weights<double>(st.centre, st.orth, st.diag, fo.courant(), fo.damping_per_s * fo.dt_s);
+  // Two threads' halves: each its own two levels of n/2 rows on a zero rim, filled by its thread.
+  std::vector<double> two_s;
+  const std::ptrdiff_t half_rows = o.n / 2;
+  std::vector<std::vector<double, CacheAligned<double>>> halves(4);
+  std::unique_ptr<ThreadTeam> pair;
+  if (o.temporal_steps > 0 && o.temporal_two_threads) {
+    pair = std::make_unique<ThreadTeam>(2);
+    auto fill = [&](int part) {
+      for (int level = 0; level < 2; ++level) {
+        auto& v = halves[2 * part + level];
+        v.assign(static_cast<std::size_t>(w) * (half_rows + 2) + 16, 0.0);
+        for (std::ptrdiff_t j = 0; j < half_rows; ++j)
+          for (int i = 0; i < o.n; ++i) v[first + j * w + i] = z0[static_cast<std::size_t>(j + part * half_rows) * o.n + i];
+      }
+    };
+    pair->run(fill, 2);
+  }
+  auto advance_halves = [&](int part) {
+    auto& a = halves[2 * part];
+    auto& b = halves[2 * part + 1];
+    leapfrog_wavefront(a.data() + first, b.data() + first, o.n, half_rows, w, wts, wts.diag != 0, o.temporal_steps);
+    if (o.temporal_steps % 2) a.swap(b);
+  };
   auto one_step_sample = [&] {
     step_s.push_back(time_sample([&] { field.step(); }, o.sample_s, o.clock));
     if (o.temporal_steps > 0)
-      temporal_s.push_back(time_sample([&] {
-        leapfrog_wavefront(raw_z.data() + first, raw_zp.data() + first, o.n, o.n, w, wts, wts.diag != 0, o.temporal_steps);
-        if (o.temporal_steps % 2) raw_z.swap(raw_zp);
-      }, o.sample_s, o.clock));
+      temporal_s.push_back(time_sample([&] { field.advance(o.temporal_steps); }, o.sample_s, o.clock));
+    if (pair)
+      two_s.push_back(time_sample([&] { pair->run(advance_halves, 2); }, o.sample_s, o.clock));
     if (o.plain_loop)
       plain_s.push_back(time_sample([&] {
         plain_leapfrog_block(raw_zp.data() + first, raw_z.data() + first, o.n, o.n, w, wts);
@@ -163,6 +188,11 @@ ThroughputSummary measure_stencil_throughput(const ThroughputOptions& o) {
   if (!temporal_s.empty()) {
     s.temporal_cells_per_s = cells * o.temporal_steps / *std::min_element(temporal_s.begin(), temporal_s.end());
     s.temporal_fraction = s.temporal_cells_per_s / s.bound_cells_per_s;
+  }
+  if (!two_s.empty()) {
+    s.temporal_two_threads_cells_per_s = static_cast<double>(o.n) * (2 * half_rows) * o.temporal_steps /
+                                         *std::min_element(two_s.begin(), two_s.end());
+    s.temporal_two_threads_fraction = s.temporal_two_threads_cells_per_s / s.bound_cells_per_s;
   }
   if (!plain_s.empty()) s.plain_cells_per_s = cells / *std::min_element(plain_s.begin(), plain_s.end());
   return s;
