@@ -113,8 +113,11 @@ SectionOutput sweeps_section(const Record& c, const Record& fig9) {
     w.text("Base throw: **" + b.text("label") + "** (" + b.text("stone") + ", " + fmt(1000 * b.number("mass_kg"), 3) +
            " g; U = " + fmt(b.number("speed_m_s"), 3) + " m/s, β = " + fmt(b.number("path_angle_deg"), 3) + "°, α = " +
            fmt(b.number("attack_angle_deg"), 3) + "°, spin " + fmt(b.number("spin_rev_s"), 3) +
-           " rev/s unless swept). Real-time settings: " + fmt(b.number("dt_s"), 3) + " s flight step, " +
-           fmt(b.number("contact_dt_s"), 3) + " s contact step.");
+           " rev/s unless swept). Real-time settings: " +
+           (b.flag("adaptive") ? "`" + b.text("scheme") + "` at rtol " + fmt(b.number("rtol"), 2) + ", atol " +
+                                     fmt(b.number("atol_m"), 2) + " m (largest step " + fmt(b.number("dt_s"), 3) + " s)."
+                               : "`" + b.text("scheme") + "`, " + fmt(b.number("dt_s"), 3) + " s flight step, " +
+                                     fmt(b.number("contact_dt_s"), 3) + " s contact step."));
   }
   for (const auto& param : c.strings("parameters")) {
     const Record& pr = c.at(param);

@@ -22,9 +22,11 @@ std::string range_text(const std::vector<double>& v) {
 SectionOutput work_precision_section(const Record& c) {
   SectionWriter w(c, "2. Speed against error, each water law");
   w.lead("What is measured.",
-         "Each throw is solved by the real-time stepper over a range of flight steps (" +
-             range_text(c.table("realtime_dt_s").column("dt_s")) +
-             " s, each family with its contact step) and by CVODE over rtol " + range_text(c.table("rtol").column("rtol")) +
+         "Each throw is solved by the real-time stepper's fixed schemes over a range of flight steps (" +
+             range_text(c.table("realtime_dt_s").column("dt_s")) + " s, each family with its contact step), by its "
+             "adaptive scheme over tolerances rtol = atol_m " +
+             (c.has_table("adaptive_rtol") ? range_text(c.table("adaptive_rtol").column("rtol")) : std::string("–")) +
+             " and by CVODE over rtol " + range_text(c.table("rtol").column("rtol")) +
              " (atol = rtol × " + fmt(c.number("atol_ratio"), 2) +
              "). The error (the *headline* of each throw) is the largest distance between a run's bounce positions (the "
              "centre of mass where a contact ends in a take-off) and those of a CVODE run at rtol " +
@@ -51,7 +53,7 @@ SectionOutput work_precision_section(const Record& c) {
                                : "**The check run does not reproduce its contact list** (" + t.text("truth_check_problem") +
                                      "): this throw's bounces are sensitive to perturbations far below any solver's "
                                      "error, so no solver can be judged on them."));
-    std::vector<PlotSeries> by_cpu, by_rhs;
+    std::vector<PlotSeries> by_cpu, by_rhs, times_by_rhs;
     for (std::size_t f = 0; f < families.size(); ++f) {
       TableSource how;
       how.y_column = "headline_error_m";
@@ -61,7 +63,12 @@ SectionOutput work_precision_section(const Record& c) {
       by_cpu.push_back(table_series(families[f], t, "points", how));
       how.x_column = "rhs_evaluations";
       by_rhs.push_back(table_series(families[f], t, "points", how));
+      how.y_column = "contact_time_error_s";
+      times_by_rhs.push_back(table_series(families[f], t, "points", how));
     }
+    // Per family: 1 where its setting is a tolerance (the adaptive scheme), else a flight step or CVODE's rtol.
+    const std::vector<double> adaptive_family =
+        t.has_table("family_kinds") ? t.table("family_kinds").column("adaptive") : std::vector<double>(families.size(), 0.0);
     PlotAxes ax;
     ax.x_label = "CPU time per throw (s)";
     ax.y_label = what;
@@ -70,8 +77,11 @@ SectionOutput work_precision_section(const Record& c) {
     ax.x_label = "right-hand-side evaluations per throw";
     w.figure(line_figure("wp_" + key + "_rhs", "Work-precision (RHS evaluations): " + t.text("label"), ax, by_rhs,
                          "rhs_evaluations", "error_m"));
+    ax.y_label = "largest contact start or end time error (s)";
+    w.figure(line_figure("wp_" + key + "_times", "Contact times against RHS evaluations: " + t.text("label"), ax,
+                         times_by_rhs, "rhs_evaluations", "error_s"));
     w.lead("The cheapest setting of each solver that reaches a " + t.text("headline") + " error", "");
-    MarkdownTable ans({"target error (m)", "solver", "setting (dt s / rtol)", "error (m)", "CPU (s)", "RHS evaluations"});
+    MarkdownTable ans({"target error (m)", "solver", "setting (dt s / tolerance / rtol)", "error (m)", "CPU (s)", "RHS evaluations"});
     const Table& ch = t.table("cheapest");
     for (std::size_t i = 0; i < ch.rows(); ++i) {
       const bool found = ch.column("found")[i] != 0;
@@ -86,7 +96,10 @@ SectionOutput work_precision_section(const Record& c) {
       std::string line = t.text("headline") + " within " + fmt(col("target_m"), 2) + " m: ";
       if (col("realtime_family") >= 0)
         line += "the cheapest real-time setting is " + families.at(static_cast<std::size_t>(col("realtime_family"))) +
-                " with a flight step of " + fmt(col("realtime_setting"), 3) + " s (" + fmt(1000 * col("realtime_cpu_s"), 3) +
+                (adaptive_family.at(static_cast<std::size_t>(col("realtime_family"))) != 0
+                     ? " at tolerance " + fmt(col("realtime_setting"), 2)
+                     : " with a flight step of " + fmt(col("realtime_setting"), 3) + " s") +
+                " (" + fmt(1000 * col("realtime_cpu_s"), 3) +
                 " ms CPU per throw, " + fmt(col("realtime_rhs_evaluations"), 8) + " RHS evaluations)";
       else
         line += "no real-time setting tried gets there";
@@ -105,6 +118,34 @@ SectionOutput work_precision_section(const Record& c) {
       for (const auto& f : fails) list += "* " + f + "\n";
       w.text("Failures (no error plotted):\n\n" + list);
     }
+  }
+  if (c.has_child("adaptive_choice") && c.at("adaptive_choice").flag("studied")) {
+    const Record& a = c.at("adaptive_choice");
+    w.subheading("The adaptive stepper's default tolerance");
+    const double chosen = a.number("tolerance"), def = a.number("default_tolerance");
+    std::string s = "Over the " + fmt(a.number("throws")) + " throws above, `" + a.text("family") + "` ";
+    if (a.flag("found")) {
+      s += "keeps every throw's contact list (so its bounce count) at every tolerance from the tightest run up to " +
+           fmt(chosen, 2) + ", the loosest such tolerance: the study's choice. There its worst contact start or end "
+           "time error is " + fmt(a.number("worst_contact_time_error_s"), 2) + " s and its worst headline error " +
+           fmt(a.number("worst_headline_error_m"), 2) + " m, with " + fmt(a.number("rhs_evaluations"), 8) +
+           " right-hand sides over the throws. ";
+      s += def == chosen ? "The cases' default tolerance (rtol = atol_m = " + fmt(def, 2) + ") is this choice."
+           : def < chosen ? "The cases' default tolerance (rtol = atol_m = " + fmt(def, 2) +
+                                ") is tighter than this choice: it keeps the bounce counts of the bench grid's wider "
+                                "ensemble (solvers/README.md), which these few throws do not test."
+                          : "**The cases' default tolerance (rtol = atol_m = " + fmt(def, 2) +
+                                ") is looser than this choice: on these throws it loses contacts.**";
+    } else {
+      s += "changes some throw's contact list even at its tightest tolerance: the study cannot choose one, and the "
+           "cases' default (rtol = atol_m = " + fmt(def, 2) + ") is not supported by it.";
+    }
+    w.text(s);
+    MarkdownTable tt({"tolerance", "throws keeping the reference's contact list"});
+    const Table& per = a.table("per_tolerance");
+    for (std::size_t i = 0; i < per.rows(); ++i)
+      tt.row({fmt(per.column("tolerance")[i], 2), fmt(per.column("throws_keeping_contacts")[i]) + " of " + fmt(a.number("throws"))});
+    w.table(tt);
   }
   if (c.has_child("restarts")) {
     const Record& r = c.at("restarts");
@@ -150,7 +191,10 @@ SectionOutput work_precision_section(const Record& c) {
   w.lead("How to read it.",
          "Lower left is better. Each family's curve ends where its runs stop reproducing the reference's contacts: "
          "coarse real-time steps do not merely lose accuracy, they change the contact list, so below some step the "
-         "bounce count itself is wrong.");
+         "bounce count itself is wrong. To pick the adaptive scheme's tolerance for an accuracy: on the figure of the "
+         "error you care about (bounce positions, or contact times), find the `bs32` point whose error is below your "
+         "target on every throw and take its tolerance; a tolerance whose run is listed among the failures (a changed "
+         "contact list) is too loose for bounce counts whatever its error.");
   return w.finish();
 }
 

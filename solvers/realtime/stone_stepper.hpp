@@ -31,6 +31,11 @@ bool parse_scheme(const std::string& s, Scheme& out);
 int formal_order(Scheme s);
 bool is_adaptive(Scheme s);  // steps from a tolerance (bs32), not from dt_s / contact_dt_s
 
+// The adaptive scheme's tolerance (rtol = atol_m) where a case names none: the loosest at which
+// bs32 matches CVODE's bounce count on the bench grid's throws (solvers/README.md; the stones
+// report's work-precision study states the choice from its own runs).
+constexpr double kDefaultAdaptiveTolerance = 1e-8;
+
 struct RealtimeOptions {
   Scheme scheme = Scheme::semi_implicit_euler;
   double dt_s = 1e-3;           // fixed schemes: flight step; bs32: the largest step

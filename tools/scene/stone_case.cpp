@@ -158,12 +158,10 @@ RealtimeOptions read_solver(TomlTable t) {
     // A fixed scheme's contact step is read and not used, so that a case written for one can be
     // switched with --set solver.scheme=bs32 (cases/README.md says so).
     if (t.has("contact_dt_s")) o.contact_dt_s = t.bounded("contact_dt_s", kMinStep_s, kMaxStep_s);
-    // The default tolerance, from the bounce-count study of solvers/README.md (bs32 matches CVODE's
-    // count on 98 % of the bench grid's throws at 1e-8, 77 % at 1e-6).
-    constexpr double kDefaultTolerance = 1e-8;
+    // The default tolerance (solvers/realtime/stone_stepper.hpp says how it was chosen).
     o.dt_s = t.number_or("dt_s", kAdaptiveLargestStep_s);
-    o.rtol = t.number_or("rtol", kDefaultTolerance);
-    o.atol_m = t.number_or("atol_m", kDefaultTolerance);
+    o.rtol = t.number_or("rtol", kDefaultAdaptiveTolerance);
+    o.atol_m = t.number_or("atol_m", kDefaultAdaptiveTolerance);
   } else {
     for (const char* key : {"rtol", "atol_m"})
       if (t.has(key)) t.fail(key, std::string("sets the adaptive scheme's tolerance; scheme \"") + scheme +

@@ -118,6 +118,13 @@ void read_throws(const fs::path& dir, TomlTable t, StoneStudiesOptions& o) {
   t.finish();
 }
 
+// The adaptive scheme's tolerances (rtol = atol_m), each within the bounds a case's [solver] allows.
+std::vector<double> tolerance_list(TomlTable& t, const std::string& key, const std::vector<double>& fallback) {
+  std::vector<double> v = positive_list(t, key, fallback);
+  for (double x : v) t.require_in(key, x, 1e-14, 0.1);
+  return v;
+}
+
 void read_convergence(TomlTable t, StoneStudiesOptions& o) {
   RealtimeConvergenceOptions& c = o.convergence;
   o.convergence_laws = laws_of(t, "laws", o.convergence_laws);
@@ -128,6 +135,7 @@ void read_convergence(TomlTable t, StoneStudiesOptions& o) {
     if (c.schemes.empty()) t.fail("schemes", "must not be empty");
   }
   c.dt_s = positive_list(t, "dt_s", c.dt_s);
+  c.adaptive_tolerances = tolerance_list(t, "adaptive_tolerances", c.adaptive_tolerances);
   c.contact_ratio = t.number_or("contact_ratio", c.contact_ratio);
   t.require_in("contact_ratio", c.contact_ratio, 1e-4, 1.0);
   if (auto n = t.maybe_numbers("interval_steps")) {
@@ -166,8 +174,13 @@ void read_work_precision(TomlTable t, StoneStudiesOptions& o) {
   if (t.has("realtime")) {
     w.realtime.clear();
     for (TomlTable f : t.tables("realtime")) {
-      WorkPrecisionOptions::RealtimeFamily fam{scheme_of(f, "scheme", f.string("scheme")), f.number("contact_ratio")};
-      f.require_in("contact_ratio", fam.contact_ratio, 1e-4, 1.0);
+      WorkPrecisionOptions::RealtimeFamily fam{scheme_of(f, "scheme", f.string("scheme")), 0.0};
+      if (is_adaptive(fam.scheme)) {  // steps from the study's adaptive_rtol, no contact step
+        if (f.has("contact_ratio")) f.fail("contact_ratio", "scheme \"" + f.string("scheme") + "\" takes no contact step (its tolerances: adaptive_rtol)");
+      } else {
+        fam.contact_ratio = f.number("contact_ratio");
+        f.require_in("contact_ratio", fam.contact_ratio, 1e-4, 1.0);
+      }
       f.finish();
       w.realtime.push_back(fam);
     }
@@ -175,6 +188,7 @@ void read_work_precision(TomlTable t, StoneStudiesOptions& o) {
     t.maybe_table("realtime");  // mark as read
   }
   w.dt_s = positive_list(t, "dt_s", w.dt_s);
+  w.adaptive_rtol = tolerance_list(t, "adaptive_rtol", w.adaptive_rtol);
   w.methods = methods_of(t, "methods", w.methods);
   w.rtol = positive_list(t, "rtol", w.rtol);
   w.atol_ratio = positive(t, "atol_ratio", w.atol_ratio);

@@ -21,6 +21,7 @@ void store_series(Record& parent, const ConvergenceSeries& s, OrderJudgement j) 
   r.set("unit", s.unit);
   r.set("scheme", s.scheme);
   r.set("formal_order", s.formal_order);
+  r.set("against_tolerance", s.against_tolerance);
   r.set("reference_error", s.reference_error);
   Table t{{"h_s", "value", "error", "in_fit", "below_floor"}, {}, {"s", s.unit, s.unit, "1", "1"}};
   for (std::size_t i = 0; i < s.h_s.size(); ++i)

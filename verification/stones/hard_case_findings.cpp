@@ -44,6 +44,7 @@ Record hard_cases_findings(const std::vector<HardCaseResult>& hard, const std::v
   r.set("reference_rtol", ho.reference_rtol);
   r.set("energy_tolerance_fraction", ho.energy_tolerance_fraction);
   r.set_table("single_steps_s", value_list(ho.single_steps_s, "dt_s"));
+  r.set("single_step_scheme", std::string(to_string(ho.single_step_scheme)));
   std::vector<std::string> keys, ref_failed, case_bad, energy;
   // How often each kind of departure is the first one as the single step grows.
   std::vector<double> first_count(6, 0);

@@ -59,12 +59,20 @@ std::vector<HardCaseResult> run_hard_cases(const std::vector<std::pair<std::stri
     h.release_kinetic_J = release_kinetic(p);
     h.energy_tolerance_J = o.energy_tolerance_fraction * h.release_kinetic_J;
     h.runs.resize(1 + o.single_steps_s.size());
-    h.runs[0].setting = "case settings";
+    {
+      std::ostringstream s;
+      s << "case settings (" << to_string(p.realtime.scheme);
+      if (is_adaptive(p.realtime.scheme))
+        s << ", rtol " << p.realtime.rtol << ", atol " << p.realtime.atol_m << " m)";
+      else
+        s << ", dt " << p.realtime.dt_s << " / " << p.realtime.contact_dt_s << " s)";
+      h.runs[0].setting = s.str();
+    }
     h.runs[0].dt_s = p.realtime.dt_s;
     h.runs[0].contact_dt_s = p.realtime.contact_dt_s;
     for (std::size_t i = 0; i < o.single_steps_s.size(); ++i) {
       std::ostringstream s;
-      s << "single step " << o.single_steps_s[i] << " s";
+      s << "single step " << o.single_steps_s[i] << " s (" << to_string(o.single_step_scheme) << ")";
       h.runs[1 + i].setting = s.str();
       h.runs[1 + i].dt_s = h.runs[1 + i].contact_dt_s = o.single_steps_s[i];
     }
@@ -73,8 +81,11 @@ std::vector<HardCaseResult> run_hard_cases(const std::vector<std::pair<std::stri
       jobs.push_back([&, k, i] {
         HardRun& r = out[k].runs[i];
         RealtimeOptions ro = cases[k].second.realtime;
-        ro.dt_s = r.dt_s;
-        ro.contact_dt_s = r.contact_dt_s;
+        if (i > 0) {  // the single-step runs
+          ro.scheme = o.single_step_scheme;
+          ro.dt_s = r.dt_s;
+          ro.contact_dt_s = r.contact_dt_s;
+        }
         ro.record_trajectory = false;
         r.result = solve(cases[k].second, realtime_choice(ro));
       });

@@ -57,7 +57,7 @@ void finish_series(ConvergenceSeries& s, const RealtimeConvergenceOptions& o) {
   std::vector<std::size_t> idx;
   for (std::size_t i = n; i-- > 0 && idx.size() < 3;)
     if (std::isfinite(s.value[i])) idx.push_back(i);
-  if (idx.size() == 3) {
+  if (idx.size() == 3 && !s.against_tolerance) {  // GCI needs steps, not tolerances
     s.has_gci = true;
     s.gci = grid_convergence_index(s.value[idx[0]], s.value[idx[1]], s.value[idx[2]], s.h_s[idx[0]], s.h_s[idx[1]],
                                    s.h_s[idx[2]]);
@@ -189,10 +189,13 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
       res.problems.push_back("reference state at t = " + std::to_string(times[k]) + " s: " + at_ref[k].problem);
 
   // 3. The scheme alone over the two intervals.
-  const std::size_t ns = o.schemes.size(), nN = o.interval_steps.size(), nd = o.dt_s.size();
+  const std::size_t ns = o.schemes.size(), nN = o.interval_steps.size();
   std::vector<RigidState> flight_end(ns * nN), contact_end(ns * nN);
-  // 4. The whole stepper.
-  std::vector<StepperPoint> points(ns * nd);
+  // 4. The whole stepper: a fixed scheme over the flight steps, an adaptive one over its tolerances.
+  std::vector<std::vector<double>> settings(ns);
+  for (std::size_t a = 0; a < ns; ++a) settings[a] = is_adaptive(o.schemes[a]) ? o.adaptive_tolerances : o.dt_s;
+  std::vector<std::vector<StepperPoint>> points(ns);
+  for (std::size_t a = 0; a < ns; ++a) points[a].resize(settings[a].size());
   {
     std::vector<std::function<void()>> jobs;
     for (std::size_t a = 0; a < ns; ++a) {
@@ -208,14 +211,18 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
                                                       o.interval_steps[b], o.schemes[a]);
           });
       }
-      for (std::size_t b = 0; b < nd; ++b) {
+      for (std::size_t b = 0; b < settings[a].size(); ++b) {
         jobs.push_back([&, a, b] {
           RealtimeOptions ro = p.realtime;
           ro.scheme = o.schemes[a];
-          ro.dt_s = o.dt_s[b];
-          ro.contact_dt_s = o.contact_ratio * o.dt_s[b];
+          if (is_adaptive(ro.scheme)) {
+            ro.rtol = ro.atol_m = settings[a][b];
+          } else {
+            ro.dt_s = settings[a][b];
+            ro.contact_dt_s = o.contact_ratio * settings[a][b];
+          }
           ro.record_trajectory = false;
-          StepperPoint& pt = points[a * nd + b];
+          StepperPoint& pt = points[a][b];
           pt.full = solve(p, realtime_choice(ro));
           if (std::isfinite(times[3])) pt.at_free_flight = state_at(p, realtime_choice(ro), times[3]);
           pt.ok = pt.full.outcome != Outcome::failed;
@@ -256,7 +263,17 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
       finish_series(s, o);
       res.series.push_back(s);
     }
-    // Whole stepper.
+    // Whole stepper: against the flight step, or (adaptive) against the tolerance.
+    const bool by_tol = is_adaptive(sc);
+    const std::size_t nd = settings[a].size();
+    auto whole_series = [&](const std::string& quantity, const std::string& description, const std::string& unit) {
+      auto s = make_series(quantity, by_tol ? description + ", against its tolerance" : description, unit, sc);
+      if (by_tol) {
+        s.against_tolerance = true;
+        s.formal_order = 1;
+      }
+      return s;
+    };
     const ContactRecord* f1 = r_fine.contacts.empty() ? nullptr : &r_fine.contacts[0];
     struct Scalar {
       const char* quantity;
@@ -273,11 +290,11 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
          [](const ThrowResult& r) { return r.contacts.empty() ? kNaN : r.contacts[0].exit_speed_m_s; }},
     };
     for (const auto& q : scalars) {
-      auto s = make_series(q.quantity, q.description, q.unit, sc);
+      auto s = whole_series(q.quantity, q.description, q.unit);
       s.reference_error = f1 ? std::abs(q.get(r_fine) - q.get(r_ref)) : 0;
       for (std::size_t b = 0; b < nd; ++b) {
-        const StepperPoint& pt = points[a * nd + b];
-        s.h_s.push_back(o.dt_s[b]);
+        const StepperPoint& pt = points[a][b];
+        s.h_s.push_back(settings[a][b]);
         const double v = pt.ok ? q.get(pt.full) : kNaN;
         s.value.push_back(v);
         s.error.push_back(std::abs(v - q.get(r_ref)));
@@ -287,12 +304,11 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
       res.series.push_back(s);
     }
     {
-      auto s = make_series("contact1_exit_position", "centre of mass at the end of the first contact (whole stepper)",
-                           "m", sc);
+      auto s = whole_series("contact1_exit_position", "centre of mass at the end of the first contact (whole stepper)", "m");
       s.reference_error = f1 ? (f1->exit_position_m - c1.exit_position_m).norm() : 0;
       for (std::size_t b = 0; b < nd; ++b) {
-        const StepperPoint& pt = points[a * nd + b];
-        s.h_s.push_back(o.dt_s[b]);
+        const StepperPoint& pt = points[a][b];
+        s.h_s.push_back(settings[a][b]);
         s.value.push_back(kNaN);
         s.error.push_back(pt.ok && !pt.full.contacts.empty()
                               ? (pt.full.contacts[0].exit_position_m - c1.exit_position_m).norm()
@@ -305,12 +321,12 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
     // Errors of a contact-list quantity (bounce positions, touch points) against the reference;
     // a run whose contact list differs from the reference's has no error to compare.
     auto contact_series = [&](const char* name, const char* title, const char* unit, double ContactComparison::*field) {
-      auto s = make_series(name, title, unit, sc);
+      auto s = whole_series(name, title, unit);
       const ContactComparison cf = compare_contacts(r_fine, r_ref);
       s.reference_error = cf.same_contacts() && std::isfinite(cf.*field) ? cf.*field : 0;
       for (std::size_t b = 0; b < nd; ++b) {
-        const StepperPoint& pt = points[a * nd + b];
-        s.h_s.push_back(o.dt_s[b]);
+        const StepperPoint& pt = points[a][b];
+        s.h_s.push_back(settings[a][b]);
         s.value.push_back(kNaN);
         const ContactComparison c = compare_contacts(pt.full, r_ref);
         std::string note = pt.ok ? "" : pt.problem;
@@ -334,12 +350,12 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
                      &ContactComparison::sink_time_error_s);
     }
     if (at_ref[3].ok) {
-      auto s = make_series("free_flight_state", "state in free flight after the first bounce (whole stepper)",
-                           "1 (relative)", sc);
+      auto s = whole_series("free_flight_state", "state in free flight after the first bounce (whole stepper)",
+                            "1 (relative)");
       s.reference_error = at_fine[3].ok ? state_error(p.stone, at_ref[3].state, at_fine[3].state) : 0;
       for (std::size_t b = 0; b < nd; ++b) {
-        const StepperPoint& pt = points[a * nd + b];
-        s.h_s.push_back(o.dt_s[b]);
+        const StepperPoint& pt = points[a][b];
+        s.h_s.push_back(settings[a][b]);
         s.value.push_back(kNaN);
         s.error.push_back(pt.at_free_flight.ok ? state_error(p.stone, pt.at_free_flight.state, at_ref[3].state) : kNaN);
         s.notes.push_back(pt.at_free_flight.ok ? "" : pt.at_free_flight.problem);

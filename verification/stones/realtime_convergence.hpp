@@ -39,6 +39,11 @@ struct RealtimeConvergenceOptions {
   std::vector<Scheme> schemes{Scheme::semi_implicit_euler, Scheme::midpoint, Scheme::rk4};
   std::vector<double> dt_s{4e-3, 2e-3, 1e-3, 5e-4, 2.5e-4, 1.25e-4};  // whole stepper: flight steps
   double contact_ratio = 0.1;                    // contact step = ratio · dt
+  // Whole stepper, adaptive schemes (bs32) in `schemes`: rtol = atol_m over these, descending. Its
+  // error is fitted against the tolerance, expected order 1 (an error-per-step controller on a
+  // pair with local extrapolation makes a global error ∝ tol); the scheme alone is its fixed-step
+  // member (formal order 3).
+  std::vector<double> adaptive_tolerances{1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10};
   std::vector<int> interval_steps{64, 128, 256, 512, 1024, 2048, 4096, 8192};  // scheme alone: steps per interval
   double reference_rtol = 1e-12;                 // issue 4: rtol ≤ 1e-10
   double reference_atol = 1e-14;
@@ -54,8 +59,9 @@ struct ConvergenceSeries {
   std::string description;   // words for the report
   std::string unit;          // of the error
   std::string scheme;
-  int formal_order = 0;
-  std::vector<double> h_s;   // step size (the flight step for the whole stepper)
+  int formal_order = 0;      // the expected order: the scheme's, or 1 against a tolerance
+  bool against_tolerance = false;  // h_s holds the adaptive scheme's tolerance, not a step
+  std::vector<double> h_s;   // step size (the flight step for the whole stepper), or the tolerance
   std::vector<double> value; // the scalar measured (NaN for vector quantities)
   std::vector<double> error; // against the reference; NaN where the run failed
   std::vector<bool> in_fit;  // false: failed or below the reference's accuracy

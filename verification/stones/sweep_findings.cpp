@@ -115,6 +115,10 @@ Record sweeps_findings(const std::vector<BounceSweepResult>& sweeps) {
     base.set("path_angle_deg", b.parameters.path_angle_deg);
     base.set("attack_angle_deg", b.parameters.attack_angle_deg);
     base.set("spin_rev_s", b.parameters.spin_rev_s);
+    base.set("scheme", std::string(to_string(b.realtime.scheme)));
+    base.set("adaptive", is_adaptive(b.realtime.scheme));
+    base.set("rtol", b.realtime.rtol);
+    base.set("atol_m", b.realtime.atol_m);
     base.set("dt_s", b.realtime.dt_s);
     base.set("contact_dt_s", b.realtime.contact_dt_s);
   }

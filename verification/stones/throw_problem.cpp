@@ -24,7 +24,9 @@ ThrowProblem with_convention(const ThrowProblem& p, Convention c) {
 
 std::string SolverChoice::label() const {
   std::ostringstream s;
-  if (kind == SolverKind::realtime)
+  if (kind == SolverKind::realtime && is_adaptive(realtime.scheme))
+    s << "realtime " << to_string(realtime.scheme) << " rtol=" << realtime.rtol << " atol=" << realtime.atol_m << " m";
+  else if (kind == SolverKind::realtime)
     s << "realtime " << to_string(realtime.scheme) << " dt=" << realtime.dt_s << "/" << realtime.contact_dt_s << " s";
   else
     s << "CVODE " << to_string(reference.method) << " rtol=" << reference.rtol;

@@ -1,5 +1,6 @@
 #include "verification/stones/work_precision.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -122,6 +123,47 @@ void summarise_restarts(WorkPrecisionResult& res, const WorkPrecisionOptions& o)
   if (v.reason.size() >= 2) v.reason.resize(v.reason.size() - 2);
 }
 
+// The loosest tolerance of the (first) adaptive family that, with every tighter one, keeps every
+// throw's contact list (AdaptiveToleranceChoice).
+void choose_adaptive_tolerance(WorkPrecisionResult& res, const WorkPrecisionOptions& o) {
+  AdaptiveToleranceChoice& a = res.adaptive_choice;
+  a.default_tolerance = kDefaultAdaptiveTolerance;
+  a.throws = static_cast<int>(res.throws.size());
+  for (const auto& f : o.realtime)
+    if (is_adaptive(f.scheme)) {
+      a.studied = true;
+      a.family = std::string("realtime ") + to_string(f.scheme) + " (adaptive)";
+      break;
+    }
+  if (!a.studied || o.adaptive_rtol.empty()) return;
+  std::vector<double> tols = o.adaptive_rtol;
+  std::sort(tols.begin(), tols.end());  // tightest first
+  a.tolerances = tols;
+  bool all_so_far = true;
+  for (double tol : tols) {
+    int keeping = 0;
+    double worst_t = 0, worst_h = 0;
+    long rhs = 0;
+    for (const auto& t : res.throws)
+      for (const auto& p : t.points)
+        if (p.family == a.family && p.setting == tol && p.ok) {
+          ++keeping;
+          worst_t = std::max(worst_t, p.contact_time_error_s);
+          worst_h = std::max(worst_h, p.headline_error_m);
+          rhs += p.rhs_evaluations;
+        }
+    a.throws_keeping_contacts.push_back(keeping);
+    all_so_far = all_so_far && keeping == a.throws;
+    if (all_so_far) {
+      a.found = true;
+      a.tolerance = tol;
+      a.worst_contact_time_error_s = worst_t;
+      a.worst_headline_error_m = worst_h;
+      a.rhs_evaluations = rhs;
+    }
+  }
+}
+
 }  // namespace
 
 const char* to_string(HeadlineError h) {
@@ -172,6 +214,23 @@ WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& given, c
   for (std::size_t k = 0; k < throws.size(); ++k) {
     for (const auto& fam : o.realtime) {
       const Scheme sc = fam.scheme;
+      if (is_adaptive(sc)) {
+        for (double tol : o.adaptive_rtol) {
+          Job j;
+          j.throw_index = k;
+          j.point.family = std::string("realtime ") + to_string(sc) + " (adaptive)";
+          j.point.realtime = true;
+          j.point.adaptive = true;
+          j.point.setting = tol;
+          RealtimeOptions ro = throws[k].realtime;
+          ro.scheme = sc;
+          ro.rtol = ro.atol_m = tol;
+          ro.record_trajectory = false;
+          j.choice = realtime_choice(ro);
+          jobs.push_back(j);
+        }
+        continue;
+      }
       for (double dt : o.dt_s) {
         Job j;
         j.throw_index = k;
@@ -269,6 +328,7 @@ WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& given, c
       }
     }
   }
+  choose_adaptive_tolerance(res, o);
   if (!o.restarts.empty()) summarise_restarts(res, o);
   return res;
 }

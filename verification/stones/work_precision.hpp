@@ -32,13 +32,15 @@ namespace stoneskip {
 struct WorkPrecisionOptions {
   struct RealtimeFamily {
     Scheme scheme;
-    double contact_ratio;  // contact step = ratio · dt
+    double contact_ratio;  // fixed schemes: contact step = ratio · dt (adaptive: unused)
   };
   std::vector<RealtimeFamily> realtime{{Scheme::semi_implicit_euler, 0.1},
                                        {Scheme::midpoint, 0.1},
                                        {Scheme::rk4, 0.1},
-                                       {Scheme::semi_implicit_euler, 0.01}};
+                                       {Scheme::semi_implicit_euler, 0.01},
+                                       {Scheme::bs32, 0.0}};
   std::vector<double> dt_s{1.0 / 60, 8e-3, 4e-3, 2e-3, 1e-3, 5e-4, 2.5e-4, 1.25e-4};
+  std::vector<double> adaptive_rtol{1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10};  // adaptive families: rtol = atol_m
   std::vector<ReferenceMethod> methods{ReferenceMethod::bdf, ReferenceMethod::adams};
   std::vector<RestartStrategy> restarts{ReferenceOptions{}.restart};  // the default only, unless asked
   // Each throw under each of these laws (with its published C_w); empty: each throw's own environment.
@@ -58,9 +60,10 @@ struct WorkPrecisionOptions {
 struct WorkPoint {
   std::string family;        // "realtime rk4 (contact dt/10)", "CVODE bdf, restart at_jumps"
   bool realtime = true;
+  bool adaptive = false;     // a real-time family whose setting is its tolerance (rtol = atol_m)
   ReferenceMethod method = ReferenceMethod::bdf;         // CVODE points
   RestartStrategy restart = RestartStrategy::every_event;  // CVODE points
-  double setting = 0;        // dt_s (realtime) or rtol (CVODE)
+  double setting = 0;        // dt_s (fixed real-time), rtol = atol_m (adaptive) or rtol (CVODE)
   bool ok = false;
   std::string problem;       // why it failed
   int bounces = 0;
@@ -124,8 +127,25 @@ struct RestartVerdict {
   std::string reason;                  // in words, computed
 };
 
+// The adaptive scheme's tolerance as the study chooses it: the loosest tolerance at which, and at
+// every tighter one, every throw of the study keeps the truth's contact list (so its bounce count).
+struct AdaptiveToleranceChoice {
+  bool studied = false;        // the study ran an adaptive family
+  std::string family;
+  bool found = false;          // some tolerance keeps every throw's contacts
+  double tolerance = 0;        // the choice
+  double worst_contact_time_error_s = 0;  // over the throws at the choice
+  double worst_headline_error_m = 0;
+  long rhs_evaluations = 0;    // summed over the throws at the choice
+  double default_tolerance = 0;  // the cases' default (kDefaultAdaptiveTolerance)
+  std::vector<double> tolerances;        // every tolerance run, as given
+  std::vector<int> throws_keeping_contacts;  // per tolerance: throws with the truth's contact list
+  int throws = 0;
+};
+
 struct WorkPrecisionResult {
   std::vector<WorkPrecisionThrow> throws;
+  AdaptiveToleranceChoice adaptive_choice;
   std::vector<RestartSummary> restarts;  // per method × rtol × strategy (when the study has restarts)
   RestartVerdict restart_verdict;
 };

@@ -95,8 +95,32 @@ Record work_precision_findings(const WorkPrecisionResult& wp, const WorkPrecisio
     }
     g.set_table("answer", answer);
     g.set_strings("families", families);  // after every family_index call
+    Table kinds{{"adaptive"}, {}};         // per family: 1 where its setting is a tolerance
+    for (const auto& f : families) {
+      bool adaptive = false;
+      for (const auto& p : t.points) adaptive = adaptive || (p.family == f && p.adaptive);
+      kinds.add_row({adaptive ? 1.0 : 0.0});
+    }
+    g.set_table("family_kinds", kinds);
   }
   r.set_strings("throws", throws);
+
+  // The adaptive scheme's tolerance as this study chooses it, beside the cases' default.
+  const AdaptiveToleranceChoice& a = wp.adaptive_choice;
+  Record& ac = r.child("adaptive_choice");
+  ac.set("studied", a.studied);
+  ac.set("family", a.family);
+  ac.set("found", a.found);
+  ac.set("tolerance", a.tolerance);
+  ac.set("default_tolerance", a.default_tolerance);
+  ac.set("worst_contact_time_error_s", a.worst_contact_time_error_s);
+  ac.set("worst_headline_error_m", a.worst_headline_error_m);
+  ac.set("rhs_evaluations", a.rhs_evaluations);
+  ac.set("throws", a.throws);
+  Table per{{"tolerance", "throws_keeping_contacts"}, {}};
+  for (std::size_t i = 0; i < a.tolerances.size(); ++i) per.add_row({a.tolerances[i], double(a.throws_keeping_contacts[i])});
+  ac.set_table("per_tolerance", per);
+  r.set_table("adaptive_rtol", value_list(o.adaptive_rtol, "rtol"));
   return r;
 }
 
