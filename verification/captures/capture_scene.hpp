@@ -73,11 +73,29 @@ class TrajectoryPose {
 DraughtField trajectory_draught(const Mesh& body_mesh, const HeightFieldOptions& field, const FieldPlacement& placement,
                                 const TrajectoryPose& pose);
 
+// The pressure head of a stone moving along a trajectory, against the flat surface (model/README.md
+// §2.4, pressure coupling, prescribed as §2.5 prescribes b): each wetted face's push of the water
+// law (model/stone/fluid_forces.hpp) rasterised conservatively and smoothed by
+// `smoothing_passes` binomial passes, as the scene does (model/coupling/pressure_head.hpp), at
+// every grid point; zero once the trajectory has ended.
+DraughtField trajectory_pressure_head(const Stone& stone, const Environment& env, const HeightFieldOptions& field,
+                                      const FieldPlacement& placement, const TrajectoryPose& pose, int smoothing_passes);
+
 // The forced leapfrog on `field`, `steps` steps from rest (or from `initial_m`), each step forced by
 // the window mean of K samples of the prescribed draught (DraughtWindow, as in the scene). The
 // heights after the last step.
 std::vector<double> prescribed_forced_leapfrog(const HeightFieldOptions& field, const std::vector<double>& initial_m,
                                                const DraughtField& draught, int samples_per_step, long steps);
+
+// The same forced with the leapfrog's hat weights, as the scene's pressure forcing gathers its
+// head (solvers/scene/coupled_scene.hpp): step n receives h̄ⁿ = (1/Δt) ∫ hatₙ(t) h(t) dt, hatₙ =
+// max(0, 1 − |t − t_n|/Δt), the integral by the midpoint rule on pieces of at most `piece_s` (the
+// pieces end on the levels' times t_n). Before t = 0 the water is at rest and unforced, as the
+// spectral reference has it. A head continuous in time with kinks (the pressure's: a face's
+// wetted area grows from zero) gives an h̄ⁿ within O(piece²/Δt) of the exact one at the few steps
+// with a kink, O(piece²) elsewhere: the leapfrog stays second order in Δt down to that floor.
+std::vector<double> hat_forced_leapfrog(const HeightFieldOptions& field, const std::vector<double>& initial_m,
+                                        const DraughtField& head, double piece_s, long steps);
 
 struct SceneContactComparison {
   int index = 0;                          // 1-based
