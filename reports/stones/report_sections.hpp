@@ -9,6 +9,7 @@ namespace stoneskip {
 SectionOutput convergence_section(const Record& convergence);
 SectionOutput work_precision_section(const Record& work_precision);
 SectionOutput sweeps_section(const Record& sweeps, const Record& fig9);
+SectionOutput count_ensembles_section(const Record& count_ensembles);  // count_ensembles_section.cpp
 SectionOutput hard_cases_section(const Record& hard_cases);
 SectionOutput validation_section(const Record& validation);
 SectionOutput ranking_section(const Record& validation);  // the validation record's "ranking" (issue 11)

@@ -125,6 +125,7 @@ RenderedReport render_stones_report(const StoredReport& s) {
   append(out, convergence_section(secs.at("convergence")));
   append(out, work_precision_section(secs.at("work_precision")));
   append(out, sweeps_section(secs.at("sweeps"), secs.at("validation").at("fig9")));
+  if (secs.has_child("count_ensembles")) append(out, count_ensembles_section(secs.at("count_ensembles")));
   append(out, hard_cases_section(secs.at("hard_cases")));
   append(out, validation_section(secs.at("validation")));
   append(out, ranking_section(secs.at("validation")));

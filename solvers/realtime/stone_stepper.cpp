@@ -56,22 +56,24 @@ StateVector axpy(const StateVector& y, double h, const StateVector& k) {
   return out;
 }
 
-StateVector rhs(const Stone& stone, const Environment& env, const StateVector& y, const WaterSurface* surface) {
+StateVector rhs(const Stone& stone, const Environment& env, const StateVector& y, const WaterSurface* surface,
+                std::vector<FacePush>* pushes = nullptr) {
   StateVector d;
-  rigid_body_rhs(stone, env, y.data(), d.data(), surface);
+  rigid_body_rhs(stone, env, y.data(), d.data(), surface, pushes);
   return d;
 }
 
 }  // namespace
 
 RigidState realtime_step(const Stone& stone, const Environment& env, const RigidState& s, double dt,
-                         Scheme scheme, const WaterSurface* surface, long* rhs_evaluations) {
+                         Scheme scheme, const WaterSurface* surface, long* rhs_evaluations,
+                         std::vector<FacePush>* start_pushes) {
   RigidState out;
   switch (scheme) {
     case Scheme::semi_implicit_euler: {
       // Forces at the start of the step; velocity and angular momentum first, then position with
       // the new velocity and orientation rotated by the new ω (exact rotation through |ω|dt).
-      const StateDerivative d = rigid_body_rhs(stone, env, s, surface);
+      const StateDerivative d = rigid_body_rhs(stone, env, s, surface, nullptr, start_pushes);
       if (rhs_evaluations) ++*rhs_evaluations;
       out.velocity_m_s = s.velocity_m_s + dt * d.dvelocity;
       out.angular_momentum_kg_m2_s = s.angular_momentum_kg_m2_s + dt * d.dangular_momentum;
@@ -87,7 +89,7 @@ RigidState realtime_step(const Stone& stone, const Environment& env, const Rigid
     }
     case Scheme::midpoint: {
       const StateVector y = to_vector(s);
-      const StateVector k1 = rhs(stone, env, y, surface);
+      const StateVector k1 = rhs(stone, env, y, surface, start_pushes);
       const StateVector k2 = rhs(stone, env, axpy(y, 0.5 * dt, k1), surface);
       if (rhs_evaluations) *rhs_evaluations += 2;
       out = from_vector(axpy(y, dt, k2).data());
@@ -95,7 +97,7 @@ RigidState realtime_step(const Stone& stone, const Environment& env, const Rigid
     }
     case Scheme::rk4: {
       const StateVector y = to_vector(s);
-      const StateVector k1 = rhs(stone, env, y, surface);
+      const StateVector k1 = rhs(stone, env, y, surface, start_pushes);
       const StateVector k2 = rhs(stone, env, axpy(y, 0.5 * dt, k1), surface);
       const StateVector k3 = rhs(stone, env, axpy(y, 0.5 * dt, k2), surface);
       const StateVector k4 = rhs(stone, env, axpy(y, dt, k3), surface);
@@ -108,7 +110,7 @@ RigidState realtime_step(const Stone& stone, const Environment& env, const Rigid
     case Scheme::bs32: {
       // One step of the pair's third-order solution at the given size (no error control).
       const StateVector y = to_vector(s);
-      const StateVector k1 = rhs(stone, env, y, surface);
+      const StateVector k1 = rhs(stone, env, y, surface, start_pushes);
       StateVector atol;
       atol.fill(1.0);
       const Bs32Trial t = bs32_step(stone, env, y, k1, dt, surface, atol, 0.0);
@@ -206,7 +208,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
 
 ThrowResult run_realtime(const Stone& stone, const Environment& env, const RigidState& initial,
                          const RealtimeOptions& o, const WaterSurface* surface,
-                         const BeforeStepWithState& before_step) {
+                         const BeforeStepWithState& before_step, std::vector<FacePush>* step_start_pushes) {
   const CpuTimer cpu;
   const WallTimer wall;
   ThrowResult r;
@@ -301,7 +303,10 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
   while (going && t < o.t_max_s - 1e-12 * o.t_max_s) {
     if (before_step) {
       before_step(t, s);
-      if (surface) have_k = false;  // the surface may have moved: f(y) with it (still water cannot)
+      if (step_start_pushes) step_start_pushes->clear();
+      // The surface may have moved: f(y) with it (still water cannot); a scene that presses the
+      // water with the faces' pushes needs them from this step's own start.
+      if (surface || step_start_pushes) have_k = false;
       if (!settle(t)) break;  // the surface under the stone may have moved
     }
     RigidState s_new;
@@ -318,7 +323,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
       near = now.deepest_m() > -reach;
       dt = near ? o.contact_dt_s : o.dt_s;
       if (t + dt > o.t_max_s) dt = o.t_max_s - t;
-      s_new = realtime_step(stone, env, s, dt, o.scheme, surface, &r.stats.rhs_evaluations);
+      s_new = realtime_step(stone, env, s, dt, o.scheme, surface, &r.stats.rhs_evaluations, step_start_pushes);
       if (!finite(s_new)) {
         std::ostringstream m;
         m << "the state became NaN or infinite (step " << dt << " s is unstable here)";
@@ -335,7 +340,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
       near = now.wet();
       const StateVector y0 = to_vector(s);
       if (!have_k) {
-        k_start = rhs(stone, env, y0, surface);
+        k_start = rhs(stone, env, y0, surface, step_start_pushes);
         ++r.stats.rhs_evaluations;
         have_k = true;
       }

@@ -48,9 +48,11 @@ struct RealtimeOptions {
   bool record_trajectory = true;
 };
 
-// One step of the scheme (no contact logic), for benchmarks and order studies.
+// One step of the scheme (no contact logic), for benchmarks and order studies. start_pushes
+// (optional): the faces' pushes at s (FacePush), from the step's first right-hand side.
 RigidState realtime_step(const Stone& stone, const Environment& env, const RigidState& s, double dt_s,
-                         Scheme scheme, const WaterSurface* surface = nullptr, long* rhs_evaluations = nullptr);
+                         Scheme scheme, const WaterSurface* surface = nullptr, long* rhs_evaluations = nullptr,
+                         std::vector<FacePush>* start_pushes = nullptr);
 
 // before_step (optional) is called with the time at the start of every step: a scene uses it to
 // advance a live water surface to that time.
@@ -59,9 +61,12 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
                          const std::function<void(double t_s)>& before_step = {});
 // The same, with the stone's state at the start of the step handed to the callback as well: a
 // two-way scene (solvers/scene/) computes the stone's draught on the water from it.
+// step_start_pushes (optional): cleared after each call of before_step, then filled with the faces'
+// pushes at the step's start state by the step's first right-hand side (left empty when no step
+// follows), so a scene forced by them needs no second evaluation; read it in the next call.
 using BeforeStepWithState = std::function<void(double t_s, const RigidState& s)>;
 ThrowResult run_realtime(const Stone& stone, const Environment& env, const RigidState& initial,
                          const RealtimeOptions& options, const WaterSurface* surface,
-                         const BeforeStepWithState& before_step);
+                         const BeforeStepWithState& before_step, std::vector<FacePush>* step_start_pushes = nullptr);
 
 }  // namespace stoneskip

@@ -114,12 +114,6 @@ std::string SceneSummary::brief() const {
 
 namespace {
 
-// Binomial passes over the pressure head (model/coupling/pressure_head.hpp, smooth_conservatively):
-// the seed's 3 cm stone on 2 cm cells forces mostly at the grid scale. Measured (3 s scenes): the
-// final waves' energy at |k| d > π/2 is 40 / 9.9 / 2.9 / 0.8 % with 0 / 1 / 2 / 3 passes on
-// seed_8ms, 88 / – / 8.4 / 2.5 % on seed_8ms_paper; three keep both under 5 %.
-constexpr int kPressureSmoothingPasses = 3;
-
 double steady_now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
@@ -162,17 +156,24 @@ class SceneLoop {
 
   const WaterSurface* surface() const { return surface_.get(); }
 
-  // Called at the start of every stone step: the water catches up with the stone's clock, the
-  // draught samples due are taken from the stone's state, and the frames that ended are closed.
+  // The faces' pushes at the start of each stone step, filled by the stepper's own first
+  // right-hand side (run_realtime's step_start_pushes): read at the next step's start.
+  std::vector<FacePush>* step_start_pushes() { return two_way_ ? &pushes_ : nullptr; }
+
+  // Called at the start of every stone step: the step that just ended hands over the head it
+  // pressed with, the water catches up with the stone's clock, the draught samples due are taken
+  // from the stone's state, and the frames that ended are closed.
   void at_stone_step(double t_s, const RigidState& s) {
     ++cost_.stone_steps;
     if (pressure_) {
+      press();
       finish_piece(t_s);
       advance_to(t_s);
-      press(t_s, s);
+      out_.draught_samples += 1;  // the head of the step starting here, read at its end
+      ++cost_.draught_samples;
     } else {
       catch_up(t_s, &s);
-      if (two_way_) track_stone_force(t_s, &s);
+      if (two_way_) track_stone_force(t_s);
     }
     while (closed_ < frames_ && frame_time(closed_ + 1) <= t_s) close_frame(StoneStatus::in_play, s);
   }
@@ -181,12 +182,13 @@ class SceneLoop {
   void after_throw(const ThrowResult& r) {
     const StoneStatus status = r.outcome == Outcome::sank ? StoneStatus::sank : StoneStatus::ended;
     if (pressure_) {
+      press();                     // the last step's head, up to where the throw ended
       finish_piece(r.end_time_s);  // the stone leaves the scene: no head from here on
       pending_wet_ = false;
       in_contact_ = false;
     } else {
       catch_up(r.end_time_s, &r.final_state);
-      if (two_way_) track_stone_force(r.end_time_s, nullptr);
+      if (two_way_) track_stone_force(r.end_time_s);
     }
     if (o_.end == SceneEnd::with_the_throw) {
       while (closed_ < frames_ && frame_time(closed_ + 1) <= r.end_time_s) close_frame(status, r.final_state);
@@ -284,14 +286,13 @@ class SceneLoop {
     pending_t_ = t_end;
   }
 
-  // Pressure forcing: the faces' pushes at the start of a stone step, against the surface the
-  // stepper is about to use, rasterised into the head held over the step.
-  void press(double t_s, const RigidState& s) {
+  // Pressure forcing: the faces' pushes at the start of the stone step that began at pending_t_
+  // (the stepper's, against the surface it used), rasterised into the head held over that step.
+  void press() {
     const double w0 = steady_now();
-    water_loads(o_.stone, o_.environment, s, surface_.get(), &pushes_);
+    const double t_s = pending_t_;
     const PressureHeadSummary h = rasterise_pressure_head(pushes_, o_.water->field.cell_m, o_.water->placement, rho_g_, head_);
-    smooth_conservatively(head_, kPressureSmoothingPasses, smooth_scratch_);
-    pending_t_ = t_s;
+    pushes_.clear();
     pending_wet_ = h.wet() && !head_.empty();
     pending_force_N_ = h.force_N;
     pending_rastered_N_ = h.rastered_N;
@@ -302,17 +303,18 @@ class SceneLoop {
     }
     in_contact_ = pending_wet_;
     last_volume_m3_ = head_.empty() ? 0.0 : head_.volume_m3(o_.water->field.cell_m);
-    out_.draught_samples += 1;
-    ++cost_.draught_samples;
     cost_.draught_wall_s += steady_now() - w0;
   }
 
-  // Displacement forcing: the stone's vertical water force at the start of each of its steps,
-  // held over the step (the semi-implicit stepper's own quadrature of its impulse).
-  void track_stone_force(double t_s, const RigidState* s) {
-    if (t_s > force_t_) out_.stone_vertical_impulse_N_s += force_N_ * (t_s - force_t_);
+  // Displacement forcing: the stone's vertical water force at the start of each of its steps
+  // (the sum of the step's pushes), held over the step (the semi-implicit stepper's own
+  // quadrature of its impulse).
+  void track_stone_force(double t_s) {
+    double force_N = 0;
+    for (const FacePush& p : pushes_) force_N += p.force_N.z();
+    pushes_.clear();
+    if (t_s > force_t_) out_.stone_vertical_impulse_N_s += force_N * (t_s - force_t_);
     force_t_ = t_s;
-    force_N_ = s ? water_loads(o_.stone, o_.environment, *s, surface_.get()).force_N.z() : 0.0;
   }
 
   void sample(const RigidState& s, int due) {
@@ -345,7 +347,12 @@ class SceneLoop {
     const double w0 = steady_now();
     if (two_way_) {
       window_->take(step_patch_);
-      if (pressure_) std::swap(window_, next_window_);  // step n+1's rising half is in
+      if (pressure_) {
+        std::swap(window_, next_window_);  // step n+1's rising half is in
+        // The binomial passes are linear: smoothing the step's sum once is smoothing every stone
+        // step's head (to round-off), at the cost of one patch per water step.
+        smooth_conservatively(step_patch_, kPressureSmoothingPasses, smooth_scratch_);
+      }
       const double cell = o_.water->field.cell_m;
       out_.draught_impulse_m3_s += dt_s_ * step_patch_.volume_m3(cell);
       out_.water_vertical_impulse_N_s += dt_s_ * rho_g_ * step_patch_.volume_m3(cell);
@@ -437,7 +444,7 @@ class SceneLoop {
   std::vector<double> smooth_scratch_;
   double pending_t_ = 0, pending_force_N_ = 0, pending_rastered_N_ = 0;
   bool pending_wet_ = false, in_contact_ = false;
-  double force_t_ = 0, force_N_ = 0;  // displacement: the stone's vertical force since force_t_
+  double force_t_ = 0;  // displacement: the start of the stone step whose pushes are pending
   int node_ = 0;  // draught samples taken in the current window
   bool in_episode_ = false;
   double last_sample_s_ = 0;
@@ -459,7 +466,8 @@ SceneSummary run_scene(const SceneOptions& o, const FrameRecorder& recorder) {
   if (o.end == SceneEnd::at_duration) steps.t_max_s = std::min(steps.t_max_s, o.end_s());
   SceneLoop loop(o, recorder, out);
   out.stone = run_realtime(o.stone, o.environment, o.initial, steps, loop.surface(),
-                           [&](double t_s, const RigidState& s) { loop.at_stone_step(t_s, s); });
+                           [&](double t_s, const RigidState& s) { loop.at_stone_step(t_s, s); },
+                           loop.step_start_pushes());
   loop.after_throw(out.stone);
   loop.finish();
   if (o.coupling != Coupling::none) {

@@ -225,6 +225,10 @@ void read_sweeps(TomlTable t, StoneStudiesOptions& o) {
   o.max_thresholds = count(t, "max_thresholds", o.max_thresholds, 0, 1000);
   o.sweep_reference_rtol = positive(t, "reference_rtol", o.sweep_reference_rtol);
   o.sweep_reference_atol = positive(t, "reference_atol", o.sweep_reference_atol);
+  // The paper convention's counts, solver against solver, on ensembles (verification/stones/count_ensembles.hpp).
+  o.count_ensembles.members = count(t, "ensemble_members", o.count_ensembles.members, 2, 1000);
+  if (o.count_ensembles.members % 2 != 0) t.fail("ensemble_members", "must be even (members of both signs)");
+  o.count_ensembles.throws_per_axis = count(t, "ensemble_throws_per_axis", o.count_ensembles.throws_per_axis, 0, 1000);
   o.sweep_axes.clear();
   for (TomlTable a : t.tables("axis")) {
     SweepAxisOptions ax;

@@ -8,6 +8,8 @@
 #include <stdexcept>
 
 #include "model/coupling/draught.hpp"
+#include "model/coupling/pressure_head.hpp"
+#include "model/stone/fluid_forces.hpp"
 #include "solvers/realtime/clocks.hpp"
 #include "solvers/realtime/stone_stepper.hpp"
 #include "solvers/reference/cvode_stone.hpp"
@@ -63,6 +65,26 @@ std::optional<RigidState> TrajectoryPose::at(double t_s) const {
   return s;
 }
 
+namespace {
+
+// Adds a patch into a dense nx × ny grid (row-major): wrapped on a periodic grid, clipped elsewhere.
+void add_wrapped(const DraughtPatch& p, int nx, int ny, bool periodic, std::vector<double>& grid) {
+  if (p.empty()) return;
+  for (int c = 0; c < p.nj; ++c)
+    for (int a = 0; a < p.ni; ++a) {
+      int i = p.i0 + a, j = p.j0 + c;
+      if (periodic) {
+        i = ((i % nx) + nx) % nx;
+        j = ((j % ny) + ny) % ny;
+      } else if (i < 0 || j < 0 || i >= nx || j >= ny) {
+        continue;
+      }
+      grid[static_cast<std::size_t>(j) * nx + i] += p.at(a, c);
+    }
+}
+
+}  // namespace
+
 DraughtField trajectory_draught(const Mesh& body_mesh, const HeightFieldOptions& field, const FieldPlacement& placement,
                                 const TrajectoryPose& pose) {
   struct State {
@@ -82,19 +104,69 @@ DraughtField trajectory_draught(const Mesh& body_mesh, const HeightFieldOptions&
     const std::optional<RigidState> s = pose.at(t_s);
     if (!s) return;
     st->draught.compute(*s, st->flat, placement, st->patch);
-    if (st->patch.empty()) return;
-    for (int c = 0; c < st->patch.nj; ++c)
-      for (int a = 0; a < st->patch.ni; ++a) {
-        int i = st->patch.i0 + a, j = st->patch.j0 + c;
-        if (periodic) {
-          i = ((i % nx) + nx) % nx;
-          j = ((j % ny) + ny) % ny;
-        } else if (i < 0 || j < 0 || i >= nx || j >= ny) {
-          continue;
-        }
-        b[static_cast<std::size_t>(j) * nx + i] += st->patch.at(a, c);
-      }
+    add_wrapped(st->patch, nx, ny, periodic, b);
   };
+}
+
+DraughtField trajectory_pressure_head(const Stone& stone, const Environment& env, const HeightFieldOptions& field,
+                                      const FieldPlacement& placement, const TrajectoryPose& pose, int smoothing_passes) {
+  struct State {
+    std::vector<FacePush> pushes;
+    DraughtPatch patch;
+    std::vector<double> scratch;
+  };
+  auto st = std::make_shared<State>();
+  const int nx = field.nx, ny = field.ny;
+  const double cell = field.cell_m;
+  const bool periodic = field.boundary == Boundary::periodic;
+  const double rho_g = env.water_density_kg_m3 * env.gravity_m_s2;
+  return [st, stone, env, nx, ny, cell, periodic, rho_g, placement, pose, smoothing_passes](double t_s,
+                                                                                           std::vector<double>& h) {
+    h.assign(static_cast<std::size_t>(nx) * ny, 0.0);
+    const std::optional<RigidState> s = pose.at(t_s);
+    if (!s) return;
+    water_loads(stone, env, *s, nullptr, &st->pushes);  // the flat surface: still water
+    rasterise_pressure_head(st->pushes, cell, placement, rho_g, st->patch);
+    smooth_conservatively(st->patch, smoothing_passes, st->scratch);
+    add_wrapped(st->patch, nx, ny, periodic, h);
+  };
+}
+
+std::vector<double> hat_forced_leapfrog(const HeightFieldOptions& field, const std::vector<double>& initial_m,
+                                        const DraughtField& head, double piece_s, long steps) {
+  HeightField f(field);
+  if (!initial_m.empty()) f.set_state(initial_m);
+  const bool periodic = field.boundary == Boundary::periodic;
+  DraughtWindow cur(field.nx, field.ny, periodic), next(field.nx, field.ny, periodic);
+  std::vector<double> h;
+  DraughtPatch sample, step_patch;
+  const double dt = field.dt_s;
+  const int pieces = std::max(1, static_cast<int>(std::ceil(dt / piece_s - 1e-9)));
+  for (long n = 0; n < steps; ++n) {
+    // [t_n, t_n+1]: step n's falling half and step n+1's rising half (∫ hat/Δt over a piece
+    // [a, b] is (b − a)/Δt · (1 − r) and (b − a)/Δt · r, r = ((a + b)/2 − t_n)/Δt, exact for a
+    // head constant on the piece).
+    const double t_n = f.time_s();
+    for (int q = 0; q < pieces; ++q) {
+      const double r = (q + 0.5) / pieces;
+      head(t_n + r * dt, h);
+      sample.reset(0, 0, field.nx, field.ny);
+      bool any = false;
+      for (std::size_t c = 0; c < h.size(); ++c) {
+        sample.b_m[c] = h[c];
+        any = any || h[c] != 0;
+      }
+      if (!any) continue;
+      cur.add(sample, (1.0 - r) / pieces);
+      next.add(sample, r / pieces);
+    }
+    cur.take(step_patch);
+    std::swap(cur, next);
+    f.step(step_patch);
+  }
+  std::vector<double> z;
+  f.heights(z);
+  return z;
 }
 
 std::vector<double> prescribed_forced_leapfrog(const HeightFieldOptions& field, const std::vector<double>& initial_m,
@@ -189,8 +261,7 @@ CaptureSceneComparison compare_capture_scene(const CaptureSceneOptions& o) {
   if (!o.valid(&why)) throw std::invalid_argument("capture scene: " + why);
   CaptureSceneComparison out;
   SceneOptions so = o.scene;
-  so.stone_steps.output_dt_s = o.reference_output_dt_s;  // the scene stone's path, for the draught it would make
-  so.forcing = Forcing::displacement;  // the references prescribe the draught (model/README.md §2.5)
+  so.stone_steps.output_dt_s = o.reference_output_dt_s;  // the scene stone's path, for the forcing it would make
 
   // The scene, keeping the field at its last frame.
   std::vector<double> last_field;
@@ -251,13 +322,23 @@ CaptureSceneComparison compare_capture_scene(const CaptureSceneOptions& o) {
   w.t_s = field_t;
   w.steps = field_steps;
   w.scene_m = last_field;
+  // The head the references prescribe, and the leapfrog gathering it as the scene does: the
+  // pressure head with hat weights on pieces of the scene's contact step, or the draught in
+  // windows of K samples.
+  const bool pressure = so.forcing == Forcing::pressure;
+  auto prescribed = [&](const TrajectoryPose& p) {
+    return pressure ? trajectory_pressure_head(so.stone, so.environment, field, so.water->placement, p,
+                                               kPressureSmoothingPasses)
+                    : trajectory_draught(so.stone.body_mesh, field, so.water->placement, p);
+  };
+  auto leapfrog = [&](const DraughtField& h) {
+    return pressure ? hat_forced_leapfrog(field, so.water->initial_m, h, so.stone_steps.contact_dt_s, w.steps)
+                    : prescribed_forced_leapfrog(field, so.water->initial_m, h, so.draught_samples, w.steps);
+  };
   const TrajectoryPose pose(out.reference.trajectory);
-  const DraughtField b = trajectory_draught(so.stone.body_mesh, field, so.water->placement, pose);
-  w.prescribed_m = prescribed_forced_leapfrog(field, so.water->initial_m, b, so.draught_samples, w.steps);
-  const TrajectoryPose own_pose(out.scene.stone.trajectory);
-  w.own_path_m = prescribed_forced_leapfrog(field, so.water->initial_m,
-                                            trajectory_draught(so.stone.body_mesh, field, so.water->placement, own_pose),
-                                            so.draught_samples, w.steps);
+  const DraughtField b = prescribed(pose);
+  w.prescribed_m = leapfrog(b);
+  w.own_path_m = leapfrog(prescribed(TrajectoryPose(out.scene.stone.trajectory)));
   w.quadrature_intervals = q.intervals;
   w.semi_discrete_m = spectral(field, SpectralSymbol::stencil, so.water->initial_m, b, q, w.t_s, w.transforms);
   w.continuum_m = spectral(field, SpectralSymbol::continuum, so.water->initial_m, b, q, w.t_s, w.transforms);

@@ -1,16 +1,19 @@
 #pragma once
-// A measured throw through the coupled scene and both references (issue 13 item 5; model/README.md §2.4–2.5):
+// A measured throw through the coupled scene and both references (model/README.md §2.4–2.5):
 //   the stone: the scene's stone (the real-time stepper on the live water,
 //              solvers/scene/coupled_scene.hpp) against the CVODE reference on still water, contact
 //              by contact; beside it the same stepper on still water, so the gap splits into the
 //              stepper's own error (still water vs CVODE) and what the live surface changes (scene
 //              vs still water);
 //   the waves: the scene's field at its last frame against the forced spectral reference
-//              (solvers/spectral/forced_wave.hpp) driven by the CVODE trajectory's draught
-//              b(x, y, t) (model/coupling/draught.hpp, against the flat surface, as §2.5 prescribes
-//              it). The gap is split three ways on the scene's grid:
-//                time:  the forced leapfrog driven by the same prescribed draught, gathered over each
-//                       step's window as the scene does (solvers/scene/draught_window.hpp), against
+//              (solvers/spectral/forced_wave.hpp) driven by the CVODE trajectory's forcing head
+//              h(x, y, t), against the flat surface as §2.5 prescribes it: the faces' pressure head
+//              (trajectory_pressure_head) for the pressure forcing, the draught b
+//              (model/coupling/draught.hpp) for the displacement forcing. The gap is split three
+//              ways on the scene's grid:
+//                time:  the forced leapfrog driven by the same prescribed head, gathered as the scene
+//                       does (pressure: hat weights on pieces of the scene's contact step,
+//                       hat_forced_leapfrog; draught: windows, solvers/scene/draught_window.hpp), against
 //                       the stencil's exact semi-discrete solution (no space error);
 //                space: the semi-discrete solution against the continuum one (no time error);
 //                model: the scene's field against that prescribed-draught leapfrog: what the stone's
@@ -20,11 +23,12 @@
 //                         path:     that leapfrog − the one driven by CVODE's trajectory;
 //                         feedback: the scene − that leapfrog (b measured against the moving surface,
 //                                   and the scene's samples at stone steps instead of at the nodes).
-// Order in time: a stone's draught is not smooth in time at a grid point. It grows from 0 where
-// the bottom goes under (a kink), but where the submerged rim of a moving stone sweeps over a grid
-// point b jumps from 0 to the rim's depth there, so the windowed leapfrog is first order in Δt on
-// such a run (the smooth patch of §2.5 gives second order; capture_scene_test measures the first),
-// and so is the reference's quadrature in its sub-interval length.
+// Order in time: the pressure head is continuous in time at a grid point (a face's wetted area
+// grows from zero; kinks where the rim crosses cell edges), and the hat weights are the second
+// difference's exact weights, so the forced leapfrog is second order in Δt (capture_scene_test
+// fits it with its 95 % interval). The draught is not: where the submerged rim of a moving stone
+// sweeps over a grid point b jumps from 0 to the rim's depth, so its windowed leapfrog is first
+// order in Δt, and so is the reference's quadrature in its sub-interval length.
 // The reference's own quadrature error is measured by evaluating it again with sub-intervals twice
 // as long: the difference bounds the coarser one's error and is reported beside the errors.
 // The CVODE trajectory and the scene stone's are sampled every reference_output_dt_s; between
@@ -73,11 +77,29 @@ class TrajectoryPose {
 DraughtField trajectory_draught(const Mesh& body_mesh, const HeightFieldOptions& field, const FieldPlacement& placement,
                                 const TrajectoryPose& pose);
 
+// The pressure head of a stone moving along a trajectory, against the flat surface (model/README.md
+// §2.4, pressure coupling, prescribed as §2.5 prescribes b): each wetted face's push of the water
+// law (model/stone/fluid_forces.hpp) rasterised conservatively and smoothed by
+// `smoothing_passes` binomial passes, as the scene does (model/coupling/pressure_head.hpp), at
+// every grid point; zero once the trajectory has ended.
+DraughtField trajectory_pressure_head(const Stone& stone, const Environment& env, const HeightFieldOptions& field,
+                                      const FieldPlacement& placement, const TrajectoryPose& pose, int smoothing_passes);
+
 // The forced leapfrog on `field`, `steps` steps from rest (or from `initial_m`), each step forced by
 // the window mean of K samples of the prescribed draught (DraughtWindow, as in the scene). The
 // heights after the last step.
 std::vector<double> prescribed_forced_leapfrog(const HeightFieldOptions& field, const std::vector<double>& initial_m,
                                                const DraughtField& draught, int samples_per_step, long steps);
+
+// The same forced with the leapfrog's hat weights, as the scene's pressure forcing gathers its
+// head (solvers/scene/coupled_scene.hpp): step n receives h̄ⁿ = (1/Δt) ∫ hatₙ(t) h(t) dt, hatₙ =
+// max(0, 1 − |t − t_n|/Δt), the integral by the midpoint rule on pieces of at most `piece_s` (the
+// pieces end on the levels' times t_n). Before t = 0 the water is at rest and unforced, as the
+// spectral reference has it. A head continuous in time with kinks (the pressure's: a face's
+// wetted area grows from zero) gives an h̄ⁿ within O(piece²/Δt) of the exact one at the few steps
+// with a kink, O(piece²) elsewhere: the leapfrog stays second order in Δt down to that floor.
+std::vector<double> hat_forced_leapfrog(const HeightFieldOptions& field, const std::vector<double>& initial_m,
+                                        const DraughtField& head, double piece_s, long steps);
 
 struct SceneContactComparison {
   int index = 0;                          // 1-based

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "verification/scene/ensemble_difference.hpp"
+#include "verification/study/ensemble_difference.hpp"
 #include "verification/scene/scene_findings_support.hpp"
 #include "verification/scene/scene_probe.hpp"
 #include "verification/study/order_record.hpp"

@@ -40,7 +40,7 @@ struct SceneStudyCase {
 
 struct SceneCouplingOptions {
   double time_tolerance_s = 1e-4;   // a first contact moved by less is "no visible change"
-  // The bounce counts are compared on ensembles (verification/scene/ensemble_difference.hpp): each
+  // The bounce counts are compared on ensembles (verification/study/ensemble_difference.hpp): each
   // setting runs this many throws with the speed perturbed relatively by ±[smallest, largest].
   int ensemble_members = 16;
   double perturbation_smallest = 1e-9, perturbation_largest = 1e-4;

@@ -134,6 +134,7 @@ bool StoneStudiesOptions::valid(std::string* why) const {
     if (!std::is_sorted(a.values.begin(), a.values.end())) return fail("sweep values must ascend");
     if (!(a.threshold_tolerance > 0)) return fail("sweep threshold tolerance must be > 0");
   }
+  if (!count_ensembles.valid(why)) return false;
   return true;
 }
 
@@ -248,6 +249,19 @@ Record run_stone_studies(const StoneStudiesOptions& o, StudySink& sink) {
     const auto sweeps = run_bounce_sweeps(specs, ParallelOptions{o.workers, "stones: bounce-count sweeps", progress});
     return sweeps_findings(sweeps);
   });
+
+  if (o.count_ensembles.throws_per_axis > 0)
+    run_section(sink, "count_ensembles", [&] {
+      std::vector<std::pair<SweepParameter, std::vector<double>>> axes;
+      for (const auto& a : o.sweep_axes) axes.emplace_back(a.parameter, a.values);
+      ReferenceOptions r = o.sweep_base.problem.reference;
+      r.rtol = o.sweep_reference_rtol;
+      r.atol = o.sweep_reference_atol;
+      const auto throws = run_count_ensembles(o.sweep_base.problem, realtime_choice(o.sweep_base.problem.realtime),
+                                              reference_choice(r), axes, o.count_ensembles,
+                                              ParallelOptions{o.workers, "stones: bounce counts on ensembles", progress});
+      return count_ensembles_findings(throws, o.count_ensembles);
+    });
 
   run_section(sink, "hard_cases", [&] {
     HardCaseOptions ho = o.hard_cases;

@@ -8,6 +8,7 @@
 //   work_precision  speed against error, real-time stepper and CVODE, for each water law; the
 //                   CVODE restart strategies on spinning and non-spinning throws
 //   sweeps          bounce count against one parameter with bisected thresholds
+//   count_ensembles the two solvers' paper-convention counts at a sample of the sweeps' values, on ensembles
 //   hard_cases      throws chosen to break a solver; the largest stable step against speed
 //   validation      each water law beside experiments and the seed's claims (and the paper's Fig.
 //                   9); the laws ranked, and the cheapest that skips like a real stone
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "verification/stones/bounce_sweep.hpp"
+#include "verification/stones/count_ensembles.hpp"
 #include "verification/stones/hard_cases.hpp"
 #include "verification/stones/realtime_convergence.hpp"
 #include "verification/stones/reference_tolerance.hpp"
@@ -76,6 +78,7 @@ struct StoneStudiesOptions {
   std::vector<SweepAxisOptions> sweep_axes;
   int max_thresholds = 8;
   double sweep_reference_rtol = 1e-8, sweep_reference_atol = 1e-10;
+  CountEnsembleOptions count_ensembles;  // the sweeps' paper-convention counts, solver against solver, on ensembles
   HardCaseOptions hard_cases;
   StableStepOptions stable_step;
   ValidationOptions validation;

@@ -268,6 +268,13 @@ const std::map<std::string, Rule>& rules() {
          return std::string(in.number("bounces_low") == in.number("bounces_high") ? "decided by the capture"
                                                                                  : "not decided by the capture");
        }},
+      {"ensemble_bounce_agreement",
+       [](const Record& in) {
+         // Two solvers' bounce counts on ensembles: the 95 % interval of the difference of the means.
+         if (!in.flag("valid")) return std::string("not measured");
+         if (in.number("difference_low") > 0 || in.number("difference_high") < 0) return std::string("different bounce counts");
+         return std::string(in.number("count_spread") > 0 ? "no difference established" : "same bounce count");
+       }},
       {"coupling_change",
        [](const Record& in) {
          // Bounce counts on ensembles: the 95 % interval of the difference of the means.

@@ -37,8 +37,11 @@
 //   bounce_agreement     realtime_bounces, reference_bounces → same bounce count | different bounce counts
 //   bounce_spread        bounces_low, bounces_high (the ensemble's interval quantiles) →
 //                        decided by the capture | not decided by the capture
+//   ensemble_bounce_agreement  valid, difference_low, difference_high (95 % interval of the two
+//                        ensembles' mean bounce counts), count_spread → not measured |
+//                        different bounce counts | no difference established | same bounce count
 //   coupling_change      difference_low, difference_high (95 % interval of the ensembles' mean bounce
-//                        counts, verification/scene/ensemble_difference.hpp), count_spread (sum of
+//                        counts, verification/study/ensemble_difference.hpp), count_spread (sum of
 //                        their standard deviations), max_time_change_s (first contact),
 //                        time_tolerance_s → changes the bounce count | no difference established |
 //                        moves the contacts | no visible change

@@ -1,9 +1,9 @@
-// Welch's interval and the perturbation ensemble of verification/scene/ensemble_difference.hpp.
+// Welch's interval and the perturbation ensemble of verification/study/ensemble_difference.hpp.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
 
-#include "verification/scene/ensemble_difference.hpp"
+#include "verification/study/ensemble_difference.hpp"
 
 using namespace stoneskip;
 

@@ -1,4 +1,4 @@
-#include "verification/scene/ensemble_difference.hpp"
+#include "verification/study/ensemble_difference.hpp"
 
 #include <cmath>
 #include <numeric>

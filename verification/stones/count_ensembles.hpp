@@ -1,0 +1,52 @@
+#pragma once
+// The bounce counts of the two solvers compared on ensembles (model/README.md §2.4, "Both": a
+// chaotic count is decided on ensembles, never run against run). In the paper convention a count
+// may change under a 1e-9 relative change of the speed, so the sweeps' "same count at this grid
+// value" compares single runs of a chaotic quantity. Here a sample of each sweep's grid values is
+// thrown again as an ensemble of perturbed throws per solver (speed × 1 ± ε, ε log-spaced over
+// [smallest, largest], verification/study/ensemble_difference.hpp), and the two ensembles' mean
+// counts are compared by Welch's 95 % interval: a difference is established only where the
+// interval excludes 0 (rule ensemble_bounce_agreement, verification/study/verdict_rules.hpp).
+#include <string>
+#include <vector>
+
+#include "verification/stones/bounce_sweep.hpp"
+#include "verification/study/ensemble_difference.hpp"
+#include "verification/study/record.hpp"
+
+namespace stoneskip {
+
+struct CountEnsembleOptions {
+  int members = 16;                   // perturbed throws per solver and sampled grid value (even, ≥ 2)
+  double perturbation_smallest = 1e-9;
+  double perturbation_largest = 1e-4;
+  int throws_per_axis = 3;            // grid values sampled per sweep axis, evenly spaced, both ends (0: none)
+  Convention convention = Convention::paper;
+  bool valid(std::string* why = nullptr) const;
+};
+
+// One sampled throw: the unperturbed runs (the sweep's single-run comparison) and the ensembles.
+struct CountEnsembleThrow {
+  SweepParameter parameter = SweepParameter::spin_rev_s;
+  double value = 0;
+  int realtime_single = -1, reference_single = -1;  // −1: the solver failed
+  std::vector<double> factors;                      // the speed factors of the members
+  std::vector<double> realtime, reference;          // counts per member (−1: failed)
+  int realtime_failed = 0, reference_failed = 0;
+  MeanDifference difference;                        // realtime − reference, over the members that ran
+};
+
+// The grid values sampled from an ascending grid: `count` indices evenly spaced, both ends included.
+std::vector<double> sampled_values(const std::vector<double>& grid, int count);
+
+// Every sampled throw of every axis, both solvers, on the workers. `realtime` and `reference` are
+// the sweeps' solver settings; `base` is the sweeps' base throw (put in options.convention).
+std::vector<CountEnsembleThrow> run_count_ensembles(const ThrowProblem& base, const SolverChoice& realtime,
+                                                   const SolverChoice& reference,
+                                                   const std::vector<std::pair<SweepParameter, std::vector<double>>>& axes,
+                                                   const CountEnsembleOptions& options, const ParallelOptions& parallel);
+
+// The section's record: a table of the sampled throws, one verdict per throw, and the tally.
+Record count_ensembles_findings(const std::vector<CountEnsembleThrow>& throws, const CountEnsembleOptions& options);
+
+}  // namespace stoneskip
