@@ -147,18 +147,19 @@ WaterLoads water_loads_from_depths(const Stone& stone, const Environment& env, c
     if (d0 < 0 && d1 < 0 && d2 < 0) continue;  // dry: nothing below the surface
     f.normal = R * stone.face_normals_body[i];
     f.has_normal = true;
+    // Area and centroid exactly as clip_submerged computes them (bit for bit: the uniform and
+    // paper laws' loads, whose long chaotic runs are stored as baselines, stay the same), the
+    // polygon kept for the distributed pressure and the pushes.
     if (d0 >= 0 && d1 >= 0 && d2 >= 0) {
-      // Wholly under water: the triangle itself, its area known from the body frame.
-      f.fully_wet = true;
+      f.fully_wet = true;  // wholly under water: the triangle itself
       f.wetted.vertices[0] = world[t[0]];
       f.wetted.vertices[1] = world[t[1]];
       f.wetted.vertices[2] = world[t[2]];
       f.wetted.count = 3;
-      f.area.area_m2 = stone.face_areas_m2[i];
-      f.area.centroid_m = (world[t[0]] + world[t[1]] + world[t[2]]) / 3.0;
+      f.area = clip_submerged(world[t[0]], world[t[1]], world[t[2]], d0, d1, d2);
     } else {
       f.wetted = clip_submerged_polygon(world[t[0]], world[t[1]], world[t[2]], d0, d1, d2);
-      f.area = area_of(f.wetted, f.normal);
+      f.area = area_of(f.wetted);
     }
     const ClippedArea& c = f.area;
     if (c.area_m2 <= 0) continue;
