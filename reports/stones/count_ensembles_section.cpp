@@ -25,8 +25,8 @@ SectionOutput count_ensembles_section(const Record& c) {
   w.lead("What is measured.",
          "The sweeps above compare the real-time stepper and CVODE run against run at each grid value. In the `" + conv +
              "` convention the bounce count is chaotic (it can change under a 1e-9 relative change of the speed), so a "
-             "single run of each solver shows nothing about whether they differ (model/README.md §2.4, \"Both\"). Here " +
-             fmt(c.number("throws_per_axis"), 3) + " grid values of each sweep are thrown again as an ensemble of " +
+             "single run of each solver shows nothing about whether they differ (model/README.md §2.4, \"Both\"). Here the "
+             "sweeps' grid values (" + fmt(c.number("throws_per_axis"), 3) + " per sweep, evenly spaced) are thrown again as an ensemble of " +
              fmt(c.number("members"), 4) + " throws per solver, the speed multiplied by 1 ± ε with ε log-spaced from " +
              fmt(c.number("perturbation_smallest"), 2) + " to " + fmt(c.number("perturbation_largest"), 2) +
              ". Test: Welch's t interval (95 %) of the difference of the mean counts (real-time − reference); a difference "

@@ -112,7 +112,11 @@ Record count_ensembles_findings(const std::vector<CountEnsembleThrow>& throws, c
   int single_agree = 0, established = 0, none_established = 0, same = 0;
   for (std::size_t i = 0; i < throws.size(); ++i) {
     const CountEnsembleThrow& c = throws[i];
-    const MeanDifference& d = c.difference;
+    MeanDifference d = c.difference;
+    if (!d.valid) {  // fewer than 2 members of a solver ran: no means to compare
+      const double nan = std::nan("");
+      d.mean_a = d.mean_b = d.sd_a = d.sd_b = d.difference = d.low = d.high = nan;
+    }
     const bool agree = c.realtime_single >= 0 && c.realtime_single == c.reference_single;
     single_agree += agree ? 1 : 0;
     t.add_row({c.value, double(c.realtime_single), double(c.reference_single), d.mean_a, d.sd_a, d.mean_b, d.sd_b,
