@@ -67,6 +67,24 @@ Figure make(const std::string& key, const std::string& name, const std::string& 
 
 std::string dat(const Figure& f, const std::string& part) { return "'" + f.name + "_" + part + ".dat'"; }
 void add(Figure& f, const std::string& part, Table t) { f.tables.emplace_back(f.name + "_" + part, std::move(t)); }
+// A figure table that is the named columns of table `table` of r, every row (the figure test
+// checks the .dat against data.h5 through the figure's .sources).
+void add_copy(Figure& f, const std::string& part, const Record& r, const std::string& table, const std::vector<std::string>& columns) {
+  add(f, part, pick(r.table(table), columns));
+  f.copies.emplace_back(f.name + "_" + part, TableCopy{r.path() + "/" + table, columns, {}, ""});
+}
+// A figure table of stored estimates, a row each: its position, then the estimate's nominal, low
+// and high values (the records' paths go to the figure's .sources).
+void add_estimates(Figure& f, const std::string& part, const std::vector<std::pair<double, const Record*>>& rows) {
+  Table t{{"position", "nominal", "low", "high"}, {}};
+  TableCopy where;
+  for (const auto& [x, v] : rows) {
+    t.add_row({x, v->number("nominal"), v->number("low"), v->number("high")});
+    where.estimates.push_back(v->path());
+  }
+  add(f, part, t);
+  f.copies.emplace_back(f.name + "_" + part, where);
+}
 
 std::string rect(double t0, double t1, const char* colour, double opacity) {
   return "set object rect from " + g(t0) + ", graph 0 to " + g(t1) + ", graph 1 fc rgb '" + colour +
@@ -129,9 +147,9 @@ std::string rate_label(const Record& c) {
 }
 
 // One table with the acceleration and the rate, for both motion figures.
-Table motion_table(const Record& c) {
-  return pick(c.at("motion").table("samples"), {"t_s", "ax_g", "ay_g", "az_g", "wx_deg_s", "wy_deg_s", "wz_deg_s",
-                                                "stone_speed_m_s", "lever_speed_m_s"});
+void add_motion_table(Figure& f, const Record& c) {
+  add_copy(f, "samples", c.at("motion"), "samples",
+           {"t_s", "ax_g", "ay_g", "az_g", "wx_deg_s", "wy_deg_s", "wz_deg_s", "stone_speed_m_s", "lever_speed_m_s"});
 }
 
 // The nominal throw's height against distance for each solver that ran, as plot clauses (each
@@ -143,12 +161,12 @@ std::string solver_paths(Figure& f, const Record& sim, ContactMarks contacts) {
                                               std::tuple{"reference", kReference, "reference (CVODE)"}}) {
     if (!sim.has_child(solver)) continue;
     const Record& r = sim.at(solver);
-    add(f, solver, pick(r.table("trajectory"), {"x_m", "z_m"}));
+    add_copy(f, solver, r, "trajectory", {"x_m", "z_m"});
     s += ", " + dat(f, solver) + " u 1:2 w l " + (solver == std::string("realtime") ? "lw 3" : "lw 1.5 dt 2") +
          " lc rgb '" + colour + "' t " + gnuplot_quote(title);
     if (contacts == ContactMarks::none) continue;
     const std::string part = std::string(solver) + "_contacts";
-    add(f, part, pick(r.table("contact_list"), {"x_m", "start_s"}));
+    add_copy(f, part, r, "contact_list", {"x_m", "start_s"});
     s += ", " + dat(f, part) + " u 1:(0) w p pt 6 ps 1.2 lc rgb '" + colour + "' t " + gnuplot_quote(std::string("contacts, ") + title);
   }
   return s;
@@ -161,7 +179,7 @@ Figure capture_motion_figure(const std::string& key, const Record& c) {
                   "Acceleration and angular rate against time as recorded: the still part green, the swing blue, "
                   "clipped spans red, the release interval grey (dashed: the release)",
                   1100, 760);
-  add(f, "samples", motion_table(c));
+  add_motion_table(f, c);
   const Phases p = phases(c);
   const double sat = c.at("motion").at("saturation").number("saturation_g");
   std::ostringstream s;
@@ -184,19 +202,17 @@ std::optional<Figure> capture_swing_figure(const std::string& key, const Record&
                   "The swing: acceleration, angular rate and the stone's speed from the end of the still part to just "
                   "after the release, with the release estimates and their intervals",
                   1100, 980);
-  add(f, "samples", motion_table(c));
+  add_motion_table(f, c);
   // The estimates at the release: accelerometer, lever arm (a little before and after, to be seen
   // apart) and the one used.
   const double t0 = still.number("t1_s") - 0.1, t1 = rel.number("t_high_s") + 0.1;
   const double dt = 0.012 * (t1 - t0);  // apart enough to be seen
-  Table est{{"t_s", "nominal_m_s", "low_m_s", "high_m_s"}, {}};
   const double t = th.number("release_t_s");
+  std::vector<std::pair<double, const Record*>> est;
   for (const auto& [name, shift] : std::vector<std::pair<const char*, double>>{
-           {"accel_speed_m_s", -dt}, {"lever_speed_m_s", dt}, {"speed_m_s", 0.0}}) {
-    const Record& v = th.at("measured").at(name);
-    est.add_row({t + shift, v.number("nominal"), v.number("low"), v.number("high")});
-  }
-  add(f, "estimates", est);
+           {"accel_speed_m_s", -dt}, {"lever_speed_m_s", dt}, {"speed_m_s", 0.0}})
+    est.emplace_back(t + shift, &th.at("measured").at(name));
+  add_estimates(f, "estimates", est);
   const Phases p = phases(c);
   const std::string e = dat(f, "estimates");
   std::ostringstream s;
@@ -228,7 +244,7 @@ std::optional<Figure> capture_timing_figure(const std::string& key, const Record
                       (clock ? ", each stamp's distance from the fitted regular clock," : ",") +
                       " and the distribution of the intervals",
                   1100, clock ? 980 : 760);
-  add(f, "intervals", pick(t.table("intervals"), {"t_s", "interval_ms", "lost_reports", "stamp_minus_clock_ms"}));
+  add_copy(f, "intervals", t, "intervals", {"t_s", "interval_ms", "lost_reports", "stamp_minus_clock_ms"});
   const double p = 1e3 * t.number("period_s"), j = 1e3 * t.number("jitter_s");
   const double max_ms = 1e3 * t.number("max_interval_s");
   const double bin = p / 20;
@@ -260,7 +276,7 @@ std::optional<Figure> capture_release_figure(const std::string& key, const Recor
                   "members), the throw as measured in the room beside the virtual stone it is mapped to",
                   1200, 820);
   const Table& ens = th.table("ensemble");
-  add(f, "ensemble", ens);
+  add_copy(f, "ensemble", th, "ensemble", ens.columns);
   const double n = std::max<double>(1, double(ens.rows()));
   struct Category {
     std::string label;   // x tic label
@@ -289,17 +305,17 @@ std::optional<Figure> capture_release_figure(const std::string& key, const Recor
   std::ostringstream s;
   s << "set multiplot layout 2,3\nset grid y\nset key off\nset bmargin 4\n";
   for (const Panel& p : panels) {
-    Table est{{"category", "nominal", "low", "high"}, {}};
+    std::vector<std::pair<double, const Record*>> est;
     std::string tics, plot;
     for (std::size_t i = 0; i < p.categories.size(); ++i) {
       const Category& k = p.categories[i];
       const double x = double(i + 1);
-      est.add_row({x, k.value->number("nominal"), k.value->number("low"), k.value->number("high")});
+      est.emplace_back(x, k.value);
       tics += std::string(i ? ", " : "") + "\"" + k.label + "\" " + g(x);
       plot += std::string(i ? ", " : "") + dat(f, "ensemble") + " u (" + g(x) + " + 0.5 * (column(0) / " + g(n) +
               " - 0.5)):" + col(ens, k.column) + " w p pt 7 ps 0.5 lc rgb '" + kMember + "'";
     }
-    add(f, p.name, est);
+    add_estimates(f, p.name, est);
     s << "set xrange [0.4:" << g(double(p.categories.size()) + 0.6) << "]\nset xtics (" << tics << ")\nset ylabel "
       << gnuplot_quote(p.ylabel) << "\nplot " << plot << ", " << dat(f, p.name)
       << " u 1:2:3:4 w yerrorbars pt 7 ps 1.4 lw 2 lc rgb '#000000'\n";
@@ -322,7 +338,7 @@ std::optional<Figure> capture_room_and_water_figure(const std::string& key, cons
                       std::to_string(int(1000 * kArrow_s)) + " ms",
                   1400, 760);
   const Table path = th.table("room_path");
-  add(f, "room", pick(path, {"x_m", "y_m", "z_m"}));
+  add_copy(f, "room", th, "room_path", {"x_m", "y_m", "z_m"});
   // The release velocities as vectors (so that autoscaling takes in their heads): in the room from
   // the last sample before the release, over the water from the virtual release point.
   const std::size_t last = path.rows() - 1;
@@ -333,6 +349,9 @@ std::optional<Figure> capture_room_and_water_figure(const std::string& key, cons
   arrows.add_row({0.0, 0.0, th.at("virtual").at("height_m").number("nominal"), kArrow_s * th.number("virtual_vx_m_s"),
                   kArrow_s * th.number("virtual_vy_m_s"), kArrow_s * th.number("virtual_vz_m_s")});
   add(f, "velocity", arrows);
+  TableCopy arrows_from;
+  arrows_from.computed = "the release velocities drawn as arrows: each velocity times " + std::to_string(int(1000 * kArrow_s)) + " ms";
+  f.copies.emplace_back(f.name + "_velocity", arrows_from);
   const std::string room = dat(f, "room"), v = dat(f, "velocity");
   const std::string vector_style = " w vectors head filled size screen 0.012,20 lw 2 lc rgb '" + std::string(kRealtime) + "'";
   std::ostringstream s;
@@ -380,7 +399,7 @@ std::optional<Figure> capture_bounce_figure(const std::string& key, const Record
                   "throw's counts",
                   900, 560);
   const Table& h = e.table("histogram");
-  add(f, "histogram", h);
+  add_copy(f, "histogram", e, "histogram", h.columns);
   const auto counts = h.column("bounces");
   double lo = counts.empty() ? 0 : *std::min_element(counts.begin(), counts.end());
   double hi = counts.empty() ? 0 : *std::max_element(counts.begin(), counts.end());
@@ -422,10 +441,10 @@ std::optional<Figure> capture_scene_stone_figure(const std::string& key, const R
        {std::tuple{"scene_path", kRealtime, "lw 3", "scene (real-time model, live water)"},
         std::tuple{"still_path", kAxis[0], "lw 1.5", "real-time model, still water"},
         std::tuple{"reference_path", kReference, "lw 1.5 dt 2", "reference (CVODE, still water)"}}) {
-    add(f, part, pick(st.table(part), {"x_m", "z_m"}));
+    add_copy(f, part, st, part, {"x_m", "z_m"});
     s << ", " << dat(f, part) << " u 1:2 w l " << style << " lc rgb '" << colour << "' t " << gnuplot_quote(title);
   }
-  add(f, "contacts", pick(st.table("contacts"), {"scene_exit_x_m", "reference_exit_x_m"}));
+  add_copy(f, "contacts", st, "contacts", {"scene_exit_x_m", "reference_exit_x_m"});
   s << ", " << dat(f, "contacts") << " u 1:(0) w p pt 6 ps 1.4 lc rgb '" << kRealtime << "' t 'contact ends (scene)', "
     << dat(f, "contacts") << " u 2:(0) w p pt 2 ps 1.4 lc rgb '" << kReference << "' t 'contact ends (CVODE)'\n";
   f.script = s.str();
@@ -440,7 +459,7 @@ std::optional<Figure> capture_scene_wave_figure(const std::string& key, const Re
                   "the scene, the forced leapfrog driven by the reference's draught, and the forced spectral reference "
                   "(the stencil's exact semi-discrete solution, and the continuum one)",
                   1100, 520);
-  add(f, "profile", w.table("profile"));
+  add_copy(f, "profile", w, "profile", w.table("profile").columns);
   const std::string d = dat(f, "profile");
   std::ostringstream s;
   s << "set grid\nset key outside right top\nset xlabel 'x (m)'\nset ylabel 'surface height (mm)'\n"

@@ -33,6 +33,7 @@ const char* rows_name(TableSource::Rows r) {
   switch (r) {
     case TableSource::Rows::y_nonnegative: return "y_nonnegative";
     case TableSource::Rows::y_negative: return "y_negative";
+    case TableSource::Rows::y_positive: return "y_positive";
     case TableSource::Rows::all: break;
   }
   return "all";
@@ -98,14 +99,46 @@ void require_figures_folder(const fs::path& fig_dir) {
     throw_input_error(fig_dir.string(), 0, "", "exists and is " + file_type_words(st.st_mode) + ", not a folder: cannot draw the figures into it");
 }
 
+const DerivedSeries* derived_of(const Figure& f, const std::string& table) {
+  for (const auto& [name, d] : f.derived)
+    if (name == table) return &d;
+  return nullptr;
+}
+
 void write_sources(const fs::path& path, const Figure& f) {
   std::ostringstream s;
   s << std::setprecision(17);
   for (const auto& [table, list] : f.sources) {
+    if (const DerivedSeries* d = derived_of(f, table); list.empty() && d) {
+      switch (d->kind) {
+        case DerivedSeries::Kind::outline: s << table << "\toutline\t" << d->of_table << "\n"; break;
+        case DerivedSeries::Kind::power_law: s << table << "\tpower_law\t" << d->exponent << "\n"; break;
+        case DerivedSeries::Kind::line:
+          s << table << "\tline\t" << d->record << "\t" << d->intercept_key << "\t" << d->slope_key << "\n";
+          break;
+      }
+      continue;
+    }
     if (list.empty()) s << table << "\t-\n";
     for (const auto& src : list)
       s << table << "\t" << src.table << "\t" << src.x_column << "\t" << src.y_column << "\t" << rows_name(src.rows) << "\t"
-        << src.y_drawn_at << "\n";
+        << src.y_drawn_at << "\t" << src.x_power << "\t" << src.y_scale << "\t"
+        << (src.where_column.empty() ? std::string("-") : src.where_column) << "\t" << src.where_value << "\n";
+  }
+  for (const auto& [table, c] : f.copies) {
+    if (!c.estimates.empty()) {
+      s << table << "\testimates\t";
+      for (std::size_t i = 0; i < c.estimates.size(); ++i) s << (i ? "," : "") << c.estimates[i];
+      s << "\n";
+      continue;
+    }
+    if (c.table.empty()) {  // drawn from numbers of no stored table or estimate, and why
+      s << table << "\t-\t" << c.computed << "\n";
+      continue;
+    }
+    s << table << "\tcopy\t" << c.table << "\t" << (c.columns.empty() ? "*" : "");
+    for (std::size_t i = 0; i < c.columns.size(); ++i) s << (i ? "," : "") << c.columns[i];
+    s << "\n";
   }
   write_text_file(path, s.str());
 }
@@ -119,7 +152,7 @@ std::string script_name(const Figure& f, const std::string& kind) { return f.nam
 void check_figure_destinations(const fs::path& fig_dir, const std::vector<Figure>& figs) {
   for (const auto& f : figs) {
     for (const auto& [name, table] : f.tables) check_output_destination(fig_dir / (name + ".dat"));
-    if (!f.sources.empty()) check_output_destination(fig_dir / (f.name + ".sources"));
+    if (!f.sources.empty() || !f.copies.empty()) check_output_destination(fig_dir / (f.name + ".sources"));
     for (const std::string kind : kKinds) {
       check_output_destination(fig_dir / (f.name + "." + kind));
       check_output_destination(fig_dir / script_name(f, kind));
@@ -136,7 +169,7 @@ RenderSummary render_figures(const fs::path& dir, const std::vector<Figure>& fig
   check_figure_destinations(fig_dir, figs);
   for (const auto& f : figs) {
     for (const auto& [name, table] : f.tables) write_dat(fig_dir / (name + ".dat"), table);
-    if (!f.sources.empty()) write_sources(fig_dir / (f.name + ".sources"), f);
+    if (!f.sources.empty() || !f.copies.empty()) write_sources(fig_dir / (f.name + ".sources"), f);
     for (const std::string kind : kKinds) {
       // gnuplot draws into a temporary beside the final name, renamed over it when whole: never
       // through a link or into a FIFO put there (AtomicOutput checks the name again on commit).
@@ -145,7 +178,10 @@ RenderSummary render_figures(const fs::path& dir, const std::vector<Figure>& fig
       if (kind == "png")
         gp << "set terminal pngcairo size " << f.width_px << "," << f.height_px << " enhanced font 'Sans,10'\n";
       else
-        gp << "set terminal svg size " << f.width_px << "," << f.height_px << " enhanced font 'Sans,10' background '#ffffff'\n";
+        // `mouse standalone`: the SVG, opened on its own, shows the coordinates under the pointer
+        // and hides or shows a series on a click on its legend entry (gnuplot's own script, inline).
+        gp << "set terminal svg size " << f.width_px << "," << f.height_px
+           << " enhanced font 'Sans,10' background '#ffffff' mouse standalone\n";
       // The kept script draws <name>.<kind> when a reader runs it; render sets OUT to the temporary.
       gp << "set output (exists('OUT') ? OUT : '" << f.name << "." << kind << "')\n";
       gp << "set encoding utf8\nset datafile missing 'NaN'\n";
@@ -165,8 +201,8 @@ RenderSummary render_figures(const fs::path& dir, const std::vector<Figure>& fig
 
 std::string figure_markdown(const Figure& fig) {
   std::string data = fig.data_path.empty() ? "" : ", data: `data.h5:" + fig.data_path + "`";
-  return "![" + fig.title + "](figures/" + fig.name + ".png)\n\n*Figure: " + fig.title + "* ([SVG](figures/" +
-         fig.name + ".svg)" + data + ")\n\n";
+  return "![" + fig.title + "](figures/" + fig.name + ".png)\n\n*Figure: " + fig.title + "* ([SVG to explore](figures/" +
+         fig.name + ".svg): coordinates under the pointer, a click on a legend entry hides its series" + data + ")\n\n";
 }
 
 }  // namespace stoneskip

@@ -17,13 +17,41 @@ namespace stoneskip {
 // and the ends of the bisected brackets); its rows that are not NaN are exactly their union. The
 // figure test (tools/cli/report_command_test.cpp) checks every plotted point against them.
 struct TableSource {
-  enum class Rows { all, y_nonnegative, y_negative };  // a count's failed runs are stored as < 0
+  // A count's failed runs are stored as < 0; y_positive: a row with y ≤ 0 is a gap in the line.
+  enum class Rows { all, y_nonnegative, y_negative, y_positive };
   std::string table;                    // data.h5 path of the stored table
   std::string x_column, y_column;
   Rows rows = Rows::all;
   double y_drawn_at = std::numeric_limits<double>::quiet_NaN();  // not NaN: every row drawn at this
                                                                   // height (a row of markers)
+  double x_power = 1;                   // drawn x = stored x^x_power (1 or 2: against V², Ω²)
+  double y_scale = 1;                   // drawn y = y_scale · stored y (a change of unit)
+  std::string where_column;             // not empty: only the rows where this column …
+  double where_value = 0;               // … equals this value (one family of a long table)
 };
+const char* rows_name(TableSource::Rows r);
+
+// A series drawn from no stored table directly, with what it must satisfy (the figure test checks
+// it): the step outline through another series' points, a guide y = c·x^p, or the line
+// y = a + b·x whose a and b are numbers stored in a record.
+struct DerivedSeries {
+  enum class Kind { outline, power_law, line };
+  Kind kind = Kind::power_law;
+  std::string of_table;                 // outline: the figure table holding its points
+  int of_offset = 1;                    // outline, in a PlotSeries list: that series' place after this one
+  double exponent = 1;                  // power_law: p
+  std::string record, intercept_key, slope_key;  // line: data.h5 path of the record, and its keys
+};
+
+// A figure table that is columns of a stored table, every row in order (a capture's samples), or,
+// with `estimates`, a row per stored estimate: a position, then its numbers nominal, low and high.
+struct TableCopy {
+  std::string table;                    // data.h5 path of the stored table
+  std::vector<std::string> columns;     // in the figure table's order; none: every column ("*")
+  std::vector<std::string> estimates;   // instead: the data.h5 path of each row's estimate record
+  std::string computed;                 // neither: why the table is computed from no stored one
+};
+
 const char* rows_name(TableSource::Rows r);
 
 struct Figure {
@@ -38,6 +66,8 @@ struct Figure {
   // for a series computed from no stored table, e.g. a reference slope). Rendering writes them to
   // <name>.sources beside the .dat files.
   std::vector<std::pair<std::string, std::vector<TableSource>>> sources;
+  std::vector<std::pair<std::string, DerivedSeries>> derived;  // per table name, when drawn from no table
+  std::vector<std::pair<std::string, TableCopy>> copies;       // per table name, a stored table's columns
 };
 
 // Whole figures stored under /figures/<name> (the sweep page uses it).
@@ -49,8 +79,12 @@ struct RenderSummary {
 };
 
 // Writes <dir>/figures/<name>.{gp,png,svg}, the .dat files and, for a figure with sources,
-// <name>.sources (a line per source: table, data.h5 path, x column, y column, rows, drawn-at
-// height or NaN, tab-separated; a table with no stored source: its name and "-"); runs gnuplot (PNG via pngcairo,
+// <name>.sources, tab-separated, a line per source: "table, data.h5 path, x column, y column, rows,
+// drawn-at height or NaN, x power, y scale, where column or -, where value"; "table, outline, other
+// table"; "table, power_law, p"; "table, line, record path, intercept key, slope key"; "table, copy,
+// data.h5 path, columns joined by ','"; "table, estimates, record paths joined by ','"; "table, -,
+// why it is computed from no stored table"; a line-figure series with none of these: "table, -");
+// runs gnuplot (PNG via pngcairo,
 // and SVG). A figure that gnuplot rejects is listed in the summary, never silently dropped. Every
 // file is written beside its final name and renamed over it: a link, FIFO or device there (or a
 // `figures` that is not a plain folder) is refused with InputError before anything is written.

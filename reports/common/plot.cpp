@@ -26,25 +26,80 @@ bool selected(TableSource::Rows rows, double y) {
   switch (rows) {
     case TableSource::Rows::y_nonnegative: return y >= 0;
     case TableSource::Rows::y_negative: return y < 0;
+    case TableSource::Rows::y_positive: return y > 0;
     case TableSource::Rows::all: break;
   }
   return true;
 }
 
-PlotSeries table_series(const std::string& title, const Record& r, const std::string& table, const std::string& x_column,
-                        const std::string& y_column, const std::string& style, TableSource::Rows rows, double y_drawn_at) {
+PlotSeries table_series(const std::string& title, const Record& r, const std::string& table, TableSource how,
+                        const std::string& style) {
   PlotSeries p;
   p.title = title;
   p.style = style;
   const Table& t = r.table(table);
-  const auto x = t.column(x_column), y = t.column(y_column);
-  for (std::size_t k = 0; k < x.size(); ++k)
-    if (selected(rows, y[k])) {
-      p.x.push_back(x[k]);
-      p.y.push_back(std::isnan(y_drawn_at) ? y[k] : y_drawn_at);
+  const auto x = t.column(how.x_column), y = t.column(how.y_column);
+  const std::vector<double> where = how.where_column.empty() ? std::vector<double>{} : t.column(how.where_column);
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    if (!selected(how.rows, y[k])) {
+      if (how.rows == TableSource::Rows::y_positive) {  // a gap in the line, never bridged
+        p.x.push_back(std::numeric_limits<double>::quiet_NaN());
+        p.y.push_back(std::numeric_limits<double>::quiet_NaN());
+      }
+      continue;
     }
-  p.sources.push_back({r.path() + "/" + table, x_column, y_column, rows, y_drawn_at});
+    if (!where.empty() && where[k] != how.where_value) continue;
+    p.x.push_back(how.x_power == 1 ? x[k] : std::pow(x[k], how.x_power));
+    p.y.push_back(std::isnan(how.y_drawn_at) ? how.y_scale * y[k] : how.y_drawn_at);
+  }
+  how.table = r.path() + "/" + table;
+  p.sources.push_back(how);
   return p;
+}
+
+PlotSeries table_series(const std::string& title, const Record& r, const std::string& table, const std::string& x_column,
+                        const std::string& y_column, const std::string& style, TableSource::Rows rows, double y_drawn_at) {
+  TableSource how;
+  how.x_column = x_column;
+  how.y_column = y_column;
+  how.rows = rows;
+  how.y_drawn_at = y_drawn_at;
+  return table_series(title, r, table, how, style);
+}
+
+PlotSeries power_law_guide(const std::string& title, const std::vector<double>& x, double x0, double y0, double p,
+                           const std::string& style) {
+  PlotSeries s;
+  s.title = title;
+  s.style = style;
+  for (double v : x) {
+    s.x.push_back(v);
+    s.y.push_back(y0 * std::pow(v / x0, p));
+  }
+  DerivedSeries d;
+  d.kind = DerivedSeries::Kind::power_law;
+  d.exponent = p;
+  s.derived = d;
+  return s;
+}
+
+PlotSeries record_line(const std::string& title, const Record& r, const std::string& intercept_key, const std::string& slope_key,
+                       const std::vector<double>& x, const std::string& style) {
+  PlotSeries s;
+  s.title = title;
+  s.style = style;
+  const double a = r.number(intercept_key), b = r.number(slope_key);
+  for (double v : x) {
+    s.x.push_back(v);
+    s.y.push_back(a + b * v);
+  }
+  DerivedSeries d;
+  d.kind = DerivedSeries::Kind::line;
+  d.record = r.path();
+  d.intercept_key = intercept_key;
+  d.slope_key = slope_key;
+  s.derived = d;
+  return s;
 }
 
 Figure line_figure(const std::string& name, const std::string& title, const PlotAxes& axes,
@@ -73,6 +128,11 @@ Figure line_figure(const std::string& name, const std::string& title, const Plot
     const std::string tname = name + "_" + std::to_string(i);
     f.tables.emplace_back(tname, t);
     f.sources.emplace_back(tname, p.sources);
+    if (p.sources.empty() && p.derived) {
+      DerivedSeries d = *p.derived;
+      if (d.kind == DerivedSeries::Kind::outline) d.of_table = name + "_" + std::to_string(i + d.of_offset);
+      f.derived.emplace_back(tname, d);
+    }
     clauses.push_back("'" + tname + ".dat' using 1:2 with " + p.style + " title " + gnuplot_quote(p.title));
   }
   s << "plot ";

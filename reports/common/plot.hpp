@@ -2,6 +2,7 @@
 // Builders for report figures: x–y line plots of several series, each
 // series a table stored with the figure (so `stoneskip plot DIR` redraws it from data.h5).
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@ struct PlotSeries {
   std::vector<double> x, y;      // NaN points are skipped by gnuplot (a NaN row breaks a line)
   std::string style = "linespoints";  // gnuplot "with" clause
   std::vector<TableSource> sources;   // where x, y come from in data.h5 (empty: computed here)
+  std::optional<DerivedSeries> derived;  // with no source: what the points must satisfy
 };
 
 // A series of two columns of a table stored in a record, with its source (rows as selected; a
@@ -23,6 +25,19 @@ PlotSeries table_series(const std::string& title, const Record& r, const std::st
                         const std::string& y_column, const std::string& style = "linespoints",
                         TableSource::Rows rows = TableSource::Rows::all,
                         double y_drawn_at = std::numeric_limits<double>::quiet_NaN());
+
+// The same with every choice of TableSource: rows selected by `how.rows` and `how.where_column`,
+// x raised to how.x_power and y times how.y_scale (how.table is filled in from r and table).
+PlotSeries table_series(const std::string& title, const Record& r, const std::string& table, TableSource how,
+                        const std::string& style = "linespoints");
+
+// A guide through (x0, y0) with slope p on log axes: y = y0 (x / x0)^p at each x.
+PlotSeries power_law_guide(const std::string& title, const std::vector<double>& x, double x0, double y0, double p,
+                           const std::string& style = "lines dt 2");
+
+// The line y = a + b·x at each x, with a and b the numbers `intercept_key` and `slope_key` of r.
+PlotSeries record_line(const std::string& title, const Record& r, const std::string& intercept_key, const std::string& slope_key,
+                       const std::vector<double>& x, const std::string& style = "lines");
 
 struct PlotAxes {
   std::string x_label, y_label;

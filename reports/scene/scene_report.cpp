@@ -257,17 +257,12 @@ SectionOutput rings_section(const Record& r) {
   w.verdict("The rings", r.at("verdict"));
   w.end_list();
   if (r.flag("found")) {
-    const Table& t = r.table("radius");
-    std::vector<double> fit, at_c;
-    for (double x : t.column("t_s")) {
-      fit.push_back(r.number("intercept_m") + r.number("speed_m_s") * x);
-      at_c.push_back(r.number("intercept_m") + r.number("c_m_s") * x);
-    }
+    const std::vector<double> t_s = r.table("radius").column("t_s");
     PlotAxes ax{"t (s)", "radius of the leading edge (m)", false, false, ""};
     w.figure(line_figure("ring_radius", "The ring's leading edge against time", ax,
                          {table_series("measured", r, "radius", "t_s", "radius_m", "points pt 7 ps 0.6"),
-                          {"least-squares line", t.column("t_s"), fit, "lines"},
-                          {"speed c from the same start", t.column("t_s"), at_c, "lines dt 2"}},
+                          record_line("least-squares line", r, "intercept_m", "speed_m_s", t_s),
+                          record_line("speed c from the same start", r, "intercept_m", "c_m_s", t_s, "lines dt 2")},
                          "t_s", "r_m"));
     PlotAxes ap{"distance from the contact's centre (m)", "z (m)", false, false, ""};
     w.figure(line_figure("ring_profile", "The ring at t = " + fmt(r.number("profile_t_s"), 3) + " s: azimuthal mean and RMS", ap,
@@ -397,10 +392,10 @@ Figure still_figure(const std::string& name, const Record& r) {
             " disturbed cells beyond it, the largest " + fmt(1e3 * top.largest, 2) + " mm)";
   fig.title += ": colour scale ±" + fmt(1e3 * p.scale_m, 2) + " mm, the largest height drawn " + fmt(1e3 * top.largest, 2) + " mm";
   fig.script = frame_plot_commands(p);
-  fig.tables.emplace_back(fig.name + "_top", r.table("top"));
-  fig.tables.emplace_back(fig.name + "_near", r.table("near"));
-  fig.tables.emplace_back(fig.name + "_track", r.table("track"));
-  fig.tables.emplace_back(fig.name + "_touches", r.table("touches"));
+  for (const char* part : {"top", "near", "track", "touches"}) {  // each as stored (every column)
+    fig.tables.emplace_back(fig.name + "_" + part, r.table(part));
+    fig.copies.emplace_back(fig.name + "_" + part, TableCopy{r.path() + "/" + part, {}, {}, ""});
+  }
   return fig;
 }
 

@@ -297,18 +297,10 @@ SectionOutput convergence_section(const Record& c) {
             t.at("drop"));
   w.end_list();
   {
-    PlotSeries a, b, ideal;
-    a.title = "bounce-position error (m)";
-    b.title = "contact-time error (s)";
-    a = table_series(a.title, t, "points", "rtol", "bounce_position_error_m");
-    b = table_series(b.title, t, "points", "rtol", "contact_time_error_s");
-    ideal.title = "slope 1";
-    ideal.style = "lines dt 2";
-    if (!a.y.empty() && std::isfinite(a.y.front()))
-      for (double x : rtol) {
-        ideal.x.push_back(x);
-        ideal.y.push_back(a.y.front() / rtol.front() * x);
-      }
+    const PlotSeries a = table_series("bounce-position error (m)", t, "points", "rtol", "bounce_position_error_m");
+    const PlotSeries b = table_series("contact-time error (s)", t, "points", "rtol", "contact_time_error_s");
+    PlotSeries ideal{"slope 1", {}, {}, "lines dt 2", {}, {}};
+    if (!a.y.empty() && std::isfinite(a.y.front())) ideal = power_law_guide("slope 1", rtol, rtol.front(), a.y.front(), 1);
     PlotAxes ax;
     ax.x_label = "rtol";
     ax.y_label = "error against rtol " + fmt(t.number("truth_rtol"), 2);

@@ -92,20 +92,12 @@ SectionOutput hard_cases_section(const Record& c) {
   }
   w.table(mt);
   {
-    PlotSeries a, b, d;
-    a.title = "(a) finite";
-    b.title = "(b) no energy gain";
-    d.title = "(c) same contacts as the reference";
-    const auto speed = rows.column("speed_m_s");
-    a.x = b.x = d.x = speed;
-    auto positive = [](std::vector<double> v) {
-      for (double& x : v)
-        if (!(x > 0)) x = std::nan("");
-      return v;
-    };
-    a.y = positive(rows.column("largest_finite_s"));
-    b.y = positive(rows.column("largest_no_energy_gain_s"));
-    d.y = positive(rows.column("largest_same_contacts_s"));
+    // A step that was never stable is stored as 0 (or less): not drawn on the log axis.
+    using Rows = TableSource::Rows;
+    const PlotSeries a = table_series("(a) finite", s, "rows", "speed_m_s", "largest_finite_s", "linespoints", Rows::y_positive);
+    const PlotSeries b = table_series("(b) no energy gain", s, "rows", "speed_m_s", "largest_no_energy_gain_s", "linespoints", Rows::y_positive);
+    const PlotSeries d =
+        table_series("(c) same contacts as the reference", s, "rows", "speed_m_s", "largest_same_contacts_s", "linespoints", Rows::y_positive);
     PlotAxes ax;
     ax.x_label = "throw speed (m/s)";
     ax.y_label = "largest step h (s)";

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 #include "reports/common/markdown.hpp"
 #include "reports/common/plot.hpp"
@@ -41,7 +42,7 @@ std::vector<std::pair<double, double>> count_points(const Record& s) {
     pts.emplace_back(lo[i], below[i]);
     pts.emplace_back(hi[i], above[i]);
   }
-  std::stable_sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::stable_sort(pts.begin(), pts.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
   return pts;
 }
 
@@ -54,13 +55,24 @@ std::vector<PlotSeries> count_curve(const Record& s, const std::string& title, c
   const std::string counts = s.path() + "/counts", th = s.path() + "/thresholds";
   using Rows = TableSource::Rows;
   auto sources = [&](Rows rows, double at) {
-    return std::vector<TableSource>{{counts, "value", "bounces", rows, at},
-                                    {th, "lo", "count_below", rows, at},
-                                    {th, "hi", "count_above", rows, at}};
+    std::vector<TableSource> out;
+    for (const auto& [table, x, y] : {std::tuple{counts, "value", "bounces"}, std::tuple{th, "lo", "count_below"},
+                                      std::tuple{th, "hi", "count_above"}}) {
+      TableSource src;
+      src.table = table;
+      src.x_column = x;
+      src.y_column = y;
+      src.rows = rows;
+      src.y_drawn_at = at;
+      out.push_back(src);
+    }
+    return out;
   };
-  PlotSeries outline{title, {}, {}, "lines lw 1.5" + colour, {}};
-  PlotSeries dots{"", {}, {}, "points pt 7 ps 0.5" + colour, sources(Rows::y_nonnegative, kNaN)};
-  PlotSeries failed{title + ": solve failed", {}, {}, "points pt 2 ps 1.6 lw 2" + colour, sources(Rows::y_negative, -1)};
+  PlotSeries outline{title, {}, {}, "lines lw 1.5" + colour, {}, {}};
+  outline.derived = DerivedSeries{};
+  outline.derived->kind = DerivedSeries::Kind::outline;  // through `dots`, the next series (of_offset 1)
+  PlotSeries dots{"", {}, {}, "points pt 7 ps 0.5" + colour, sources(Rows::y_nonnegative, kNaN), {}};
+  PlotSeries failed{title + ": solve failed", {}, {}, "points pt 2 ps 1.6 lw 2" + colour, sources(Rows::y_negative, -1), {}};
   const auto pts = count_points(s);
   for (std::size_t i = 0; i < pts.size(); ++i) {
     const auto [x, y] = pts[i];

@@ -97,13 +97,13 @@ std::vector<PlotSeries> variant_curves(const Record& vars, const std::string& ta
   for (const auto& key : vars.strings("keys")) {
     const Record& g = vars.at(key);
     if (!g.has_table(table)) continue;
-    PlotSeries p;
-    p.title = "model: " + g.text("title");
-    if (g.text("solver") == "realtime") p.style = "linespoints dt 2";
-    for (double x : g.table(table).column(x_column)) p.x.push_back(square_x ? x * x : x);
-    for (double y : g.table(table).column(y_column)) p.y.push_back(scale * y);
-    if (scale == 1 && !square_x) p.sources.push_back({g.path() + "/" + table, x_column, y_column});  // drawn as stored
-    ps.push_back(p);
+    TableSource how;
+    how.x_column = x_column;
+    how.y_column = y_column;
+    how.x_power = square_x ? 2 : 1;
+    how.y_scale = scale;
+    ps.push_back(table_series("model: " + g.text("title"), g, table, how,
+                              g.text("solver") == "realtime" ? "linespoints dt 2" : "linespoints"));
   }
   return ps;
 }
@@ -226,17 +226,8 @@ SectionOutput validation_section(const Record& v) {
     for (const auto& ck : curves.strings("keys")) {
       const Record& c = curves.at(ck);
       if (c.text("quantity") != "clanet_min_speed") continue;
-      const Table& pts = c.table("points");
-      PlotSeries lo, hi;
-      lo.title = "measured, low end";
-      hi.title = "measured, high end";
-      lo.style = "points pt 7 ps 1.5";
-      hi.style = "points pt 5 ps 1.5";
-      lo.x = hi.x = pts.column("x");
-      lo.y = pts.column("low");
-      hi.y = pts.column("high");
-      ps.push_back(lo);
-      ps.push_back(hi);
+      ps.push_back(table_series("measured, low end", c, "points", "x", "low", "points pt 7 ps 1.5"));
+      ps.push_back(table_series("measured, high end", c, "points", "x", "high", "points pt 5 ps 1.5"));
     }
     PlotAxes ax;
     ax.x_label = "attack angle α (deg)";
@@ -259,7 +250,7 @@ SectionOutput validation_section(const Record& v) {
   }
   // Attitude (pitch and roll) through the first contact at the trout's and the held spin: every
   // free reference variant (a held one keeps both by construction).
-  for (const std::string regime : {v.text("trout_regime"), v.text("held_regime")}) {
+  for (const std::string& regime : {v.text("trout_regime"), v.text("held_regime")}) {
     std::vector<PlotSeries> ps;
     double t_zoom = 0;
     std::string spin;
@@ -268,19 +259,10 @@ SectionOutput validation_section(const Record& v) {
       if (g.text("solver") != "reference" || g.text("attitude") == "held" || !g.has_child(regime)) continue;
       const Record& h = g.at(regime);
       spin = fmt(h.number("spin_rev_s"), 3);
-      const Table& hist = h.table("history");
-      PlotSeries a, r;
-      a.title = g.text("title") + ": pitch (attack)";
-      r.title = g.text("title") + ": roll";
       // One colour per variant: pitch solid, roll dashed.
       const std::string colour = " lc " + std::to_string(ps.size() / 2 + 1);
-      a.style = "lines" + colour;
-      r.style = "lines dt 2" + colour;
-      a.x = r.x = hist.column("t_s");
-      a.y = hist.column("attack_deg");
-      r.y = hist.column("roll_deg");
-      ps.push_back(a);
-      ps.push_back(r);
+      ps.push_back(table_series(g.text("title") + ": pitch (attack)", h, "history", "t_s", "attack_deg", "lines" + colour));
+      ps.push_back(table_series(g.text("title") + ": roll", h, "history", "t_s", "roll_deg", "lines dt 2" + colour));
       if (h.at("first_contact").flag("exists")) t_zoom = std::max(t_zoom, 1.3 * h.at("first_contact").number("end_s"));
     }
     if (ps.empty()) continue;
@@ -345,25 +327,19 @@ SectionOutput validation_section(const Record& v) {
   {
     const Record& bq = v.at("bocquet");
     std::vector<PlotSeries> ps = variant_curves(vars, "bocquet_speed", "speed_m_s", "count", 1, true);
-    const Table& s = bq.table("speed");
-    PlotSeries b;
-    b.title = "Bocquet's V² shape (scaled to N_Ω at the base speed)";
-    b.style = "lines dt 3";
-    for (double V : s.column("speed_m_s")) b.x.push_back(V * V);
-    b.y = s.column("bocquet_shape");
-    ps.push_back(b);
+    TableSource squared;
+    squared.x_power = 2;
+    squared.x_column = "speed_m_s";
+    squared.y_column = "bocquet_shape";
+    ps.push_back(table_series("Bocquet's V² shape (scaled to N_Ω at the base speed)", bq, "speed", squared, "lines dt 3"));
     PlotAxes ax;
     ax.x_label = "V² (m²/s²)";
     ax.y_label = "bounces";
     w.figure(line_figure("bocquet_speed", "Bounce count against V² (Bocquet's stone)", ax, ps, "V2_m2_s2", "bounces"));
     std::vector<PlotSeries> qs = variant_curves(vars, "bocquet_spin", "spin_rev_s", "count", 1, true);
-    const Table& o = bq.table("spin");
-    PlotSeries n;
-    n.title = "Bocquet N_Ω = RΩ²/g";
-    n.style = "lines dt 3";
-    for (double W : o.column("spin_rev_s")) n.x.push_back(W * W);
-    n.y = o.column("bocquet_N_omega");
-    qs.push_back(n);
+    squared.x_column = "spin_rev_s";
+    squared.y_column = "bocquet_N_omega";
+    qs.push_back(table_series("Bocquet N_Ω = RΩ²/g", bq, "spin", squared, "lines dt 3"));
     ax.x_label = "Ω² (rev²/s²)";
     w.figure(line_figure("bocquet_spin", "Bounce count against Ω² (Bocquet's stone)", ax, qs, "spin2_rev2_s2", "bounces"));
   }
@@ -394,29 +370,10 @@ SectionOutput validation_section(const Record& v) {
     std::vector<PlotSeries> e, a, p;
     for (const Record* h : {&phys, &pap}) {
       const std::string conv = h->text("convention");
-      const Table& hist = h->table("history");
-      PlotSeries x;
-      x.title = conv + ": total energy";
-      x.style = "lines";
-      x.x = hist.column("t_s");
-      x.y = hist.column("energy_J");
-      e.push_back(x);
-      PlotSeries y1, y2;
-      y1.title = conv + ": attack angle";
-      y2.title = conv + ": roll angle";
-      y1.style = "lines";
-      y2.style = "lines dt 2";
-      y1.x = y2.x = hist.column("t_s");
-      y1.y = hist.column("attack_deg");
-      y2.y = hist.column("roll_deg");
-      a.push_back(y1);
-      a.push_back(y2);
-      PlotSeries z;
-      z.title = conv + ": fluid power F·v + τ·ω";
-      z.style = "lines";
-      z.x = hist.column("t_s");
-      z.y = hist.column("fluid_power_W");
-      p.push_back(z);
+      e.push_back(table_series(conv + ": total energy", *h, "history", "t_s", "energy_J", "lines"));
+      a.push_back(table_series(conv + ": attack angle", *h, "history", "t_s", "attack_deg", "lines"));
+      a.push_back(table_series(conv + ": roll angle", *h, "history", "t_s", "roll_deg", "lines dt 2"));
+      p.push_back(table_series(conv + ": fluid power F·v + τ·ω", *h, "history", "t_s", "fluid_power_W", "lines"));
     }
     PlotAxes ax;
     ax.x_label = "time (s)";

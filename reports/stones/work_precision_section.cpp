@@ -53,26 +53,18 @@ SectionOutput work_precision_section(const Record& c) {
                                : "**The check run does not reproduce its contact list** (" + t.text("truth_check_problem") +
                                      "): this throw's bounces are sensitive to perturbations far below any solver's "
                                      "error, so no solver can be judged on them."));
-    const Table& pts = t.table("points");
-    const auto fam = pts.column("family"), cpu = pts.column("cpu_s"), rhs = pts.column("rhs_evaluations"),
-               err = pts.column("headline_error_m");
-    const auto ct_err = pts.column("contact_time_error_s");
     std::vector<PlotSeries> by_cpu, by_rhs, times_by_rhs;
     for (std::size_t f = 0; f < families.size(); ++f) {
-      PlotSeries a, b, ct;
-      a.title = b.title = ct.title = families[f];
-      for (std::size_t i = 0; i < fam.size(); ++i) {
-        if (static_cast<std::size_t>(fam[i]) != f) continue;
-        a.x.push_back(cpu[i]);
-        a.y.push_back(err[i]);
-        b.x.push_back(rhs[i]);
-        b.y.push_back(err[i]);
-        ct.x.push_back(rhs[i]);
-        ct.y.push_back(ct_err[i]);
-      }
-      by_cpu.push_back(a);
-      by_rhs.push_back(b);
-      times_by_rhs.push_back(ct);
+      TableSource how;
+      how.y_column = "headline_error_m";
+      how.where_column = "family";  // the rows of this solver family
+      how.where_value = static_cast<double>(f);
+      how.x_column = "cpu_s";
+      by_cpu.push_back(table_series(families[f], t, "points", how));
+      how.x_column = "rhs_evaluations";
+      by_rhs.push_back(table_series(families[f], t, "points", how));
+      how.y_column = "contact_time_error_s";
+      times_by_rhs.push_back(table_series(families[f], t, "points", how));
     }
     // Per family: 1 where its setting is a tolerance (the adaptive scheme), else a flight step or CVODE's rtol.
     const std::vector<double> adaptive_family =

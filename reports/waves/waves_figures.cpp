@@ -23,13 +23,33 @@ std::string title_of(const std::string& stencil) {
   return t;
 }
 
-// Adds a stencil's curve: its table, and its clause in the plot command (comma-separated).
-void add_stencil_curve(Figure& f, std::ostringstream& p, bool& first, const std::string& name, const Table& t,
-                       const std::string& stencil, const char* with, const char* columns = "1:2") {
+// A figure table that is table `table` of r as stored (the figure test reads it back from data.h5).
+void add_copy(Figure& f, const std::string& name, const Record& r, const std::string& table) {
+  f.tables.emplace_back(name, r.table(table));
+  f.copies.emplace_back(name, TableCopy{r.path() + "/" + table, r.table(table).columns, {}, ""});
+}
+
+// A figure table computed here from stored values, with the reason (written to the .sources).
+void add_computed(Figure& f, const std::string& name, const Table& t, const std::string& why) {
   f.tables.emplace_back(name, t);
+  TableCopy c;
+  c.computed = why;
+  f.copies.emplace_back(name, c);
+}
+
+// A stencil's clause in the plot command (comma-separated), for its table `name`.
+void add_stencil_clause(std::ostringstream& p, bool& first, const std::string& name, const std::string& stencil,
+                        const char* with, const char* columns = "1:2") {
   p << (first ? "" : ", ") << "'" << name << ".dat' u " << columns << " w " << with << " lw 2 " << style(stencil)
     << " t '" << title_of(stencil) << "'";
   first = false;
+}
+
+// Adds a stencil's curve: table `table` of r as stored, and its clause in the plot command.
+void add_stencil_curve(Figure& f, std::ostringstream& p, bool& first, const std::string& name, const Record& r,
+                       const std::string& table, const std::string& stencil, const char* with, const char* columns = "1:2") {
+  add_copy(f, name, r, table);
+  add_stencil_clause(p, first, name, stencil, with, columns);
 }
 
 // "π/8" for kd = π/8.
@@ -53,7 +73,7 @@ Figure consistency_figure(const Record& c) {
   for (const auto& name : c.strings("stencils")) {
     const Record& s = c.at(name);
     if (s.at("verdict").text("verdict") != "consistent") continue;
-    add_stencil_curve(f, p, first, f.name + "_" + name, s.table("leading_error"), name, "l");
+    add_stencil_curve(f, p, first, f.name + "_" + name, s, "leading_error", name, "l");
   }
   f.script = p.str();
   return f;
@@ -91,15 +111,24 @@ Figure convergence_figure(const Record& c, const std::string& kind) {
       anchor_h = h.back();
       anchor_e = e.back();
     }
-    add_stencil_curve(f, p, first, f.name + "_" + name, t, name, "lp");
+    f.tables.emplace_back(f.name + "_" + name, t);  // its source: below
+    add_stencil_clause(p, first, f.name + "_" + name, name, "lp");
     const std::string stored = c.at(name).at(kind).path() + "/points";  // columns 1:2 are h, l2_error_m as stored
-    f.sources.push_back({f.name + "_" + name, {TableSource{stored, "h", "l2_error_m"}}});
+    TableSource src;
+    src.table = stored;
+    src.x_column = "h";
+    src.y_column = "l2_error_m";
+    f.sources.push_back({f.name + "_" + name, {src}});
   }
   if (anchor_h > 0) {  // a slope-2 guide through the first stencil's finest point, shifted down
     Table g{{"h", "guide"}, {}};
     for (double h : {hmin, hmax}) g.add_row({h, 0.3 * anchor_e * (h / anchor_h) * (h / anchor_h)});
     f.tables.emplace_back(f.name + "_slope2", g);
-    f.sources.push_back({f.name + "_slope2", {}});  // a guide, computed here
+    f.sources.push_back({f.name + "_slope2", {}});  // a guide, computed here: y ∝ h²
+    DerivedSeries guide;
+    guide.kind = DerivedSeries::Kind::power_law;
+    guide.exponent = 2;
+    f.derived.push_back({f.name + "_slope2", guide});
     p << ", '" << f.name << "_slope2.dat' u 1:2 w l lc rgb 'black' dt 3 t 'slope 2'";
   }
   f.script = p.str();
@@ -132,8 +161,8 @@ Figure isotropy_polar_figure(const Record& iso) {
       << "]\nset rtics " << span / 2 << "\nset trange [0:360]\nplot ";
     bool first = true;
     for (const auto& name : names)
-      add_stencil_curve(f, p, first, f.name + "_" + name + "_" + std::to_string(k),
-                        iso.at(name).table("polar_" + std::to_string(k)), name, "l");
+      add_stencil_curve(f, p, first, f.name + "_" + name + "_" + std::to_string(k), iso.at(name), "polar_" + std::to_string(k),
+                        name, "l");
     p << ", 1 w l lc rgb 'black' dt 3 t 'exact'\n";
   }
   p << "unset multiplot\n";
@@ -154,7 +183,8 @@ Figure isotropy_spread_figure(const Record& iso) {
   for (const auto& name : iso.strings("stencils")) {
     Table t = iso.at(name).table("spread");
     for (std::size_t r = 0; r < t.rows(); ++r) t.values[2 * r + 1] = std::max(t.values[2 * r + 1], 1e-17);  // log axis
-    add_stencil_curve(f, p, first, f.name + "_" + name, t, name, "l");
+    add_computed(f, f.name + "_" + name, t, iso.at(name).path() + "/spread with each spread raised to at least 1e-17 for the log axis");
+    add_stencil_clause(p, first, f.name + "_" + name, name, "l");
   }
   f.script = p.str();
   return f;
@@ -185,8 +215,8 @@ Figure isotropy_measured_figure(const Record& iso) {
         if (target[i] == kds[k])
           pts.add_row({th[i], me[i] / (kd[i] * kd[i]), se[i] / (kd[i] * kd[i]), fe[i] / (kd[i] * kd[i]), kd[i]});
       const std::string tn = f.name + "_" + name + "_" + std::to_string(k);
-      f.tables.emplace_back(tn, pts);
-      f.tables.emplace_back(tn + "_symbol", s.table("symbol_line_" + std::to_string(k)));
+      add_computed(f, tn, pts, s.path() + "/measured: the rows at this kd, each error divided by kd²");
+      add_copy(f, tn + "_symbol", s, "symbol_line_" + std::to_string(k));
       p << (first ? "" : ", ") << "'" << tn << "_symbol.dat' u 1:2 w l lw 2 " << style(name) << " t '" << title_of(name)
         << " (symbol)', '" << tn << ".dat' u 1:2 w p ps 1.3 " << style(name) << " t '" << title_of(name)
         << " (simulation)'";
@@ -209,7 +239,7 @@ Figure ring_figure(const Record& iso) {
        "set xrange [0:90]\nset xtics 15\nplot ";
   bool first = true;
   for (const auto& name : iso.strings("stencils"))
-    add_stencil_curve(f, p, first, f.name + "_" + name, iso.at(name).table("ring"), name, "lp", "1:4");
+    add_stencil_curve(f, p, first, f.name + "_" + name, iso.at(name), "ring", name, "lp", "1:4");
   f.script = p.str();
   return f;
 }
@@ -224,16 +254,16 @@ Figure stability_figure(const Record& st) {
   bool first = true;
   for (const auto& name : st.strings("stencils")) {
     const Record& s = st.at(name);
-    add_stencil_curve(f, p, first, f.name + "_" + name, s.table("limit_curve"), name, "l");
+    add_stencil_curve(f, p, first, f.name + "_" + name, s, "limit_curve", name, "l");
     const std::string mn = f.name + "_" + name + "_measured";
-    f.tables.emplace_back(mn, s.table("checks"));
+    add_copy(f, mn, s, "checks");
     p << ", '" << mn << ".dat' u 1:3 w p ps 1.5 " << style(name) << " notitle";
   }
   const Record& l = st.at("lengyel");
-  f.tables.emplace_back(f.name + "_lengyel", l.table("bound_curve"));
+  add_copy(f, f.name + "_lengyel", l, "bound_curve");
   Table ce{{"mu_dt", "sigma"}, {}};
   ce.add_row({l.number("mu_dt"), l.number("sigma")});
-  f.tables.emplace_back(f.name + "_counterexample", ce);
+  add_computed(f, f.name + "_counterexample", ce, l.path() + ": the point (mu_dt, sigma) of the counter-example");
   std::ostringstream growth;
   growth.precision(3);
   growth << l.number("measured_growth_per_step");
@@ -267,8 +297,8 @@ Figure work_precision_figure(const Record& sp) {
       }
     }
     const std::string tn = f.name + "_" + name;
-    f.tables.emplace_back(tn, all);
-    f.tables.emplace_back(tn + "_front", front);
+    add_computed(f, tn, all, sp.at(name).path() + "/points: (cpu_s, l2_error_m), CPU raised to at least 1 µs for the log axis");
+    add_computed(f, tn + "_front", front, sp.at(name).path() + "/points: the runs more accurate than every cheaper one (the Pareto front)");
     p << (first ? "" : ", ") << "'" << tn << ".dat' u 1:2 w p " << style(name) << " notitle, '" << tn
       << "_front.dat' u 1:2 w l lw 2 " << style(name) << " t '" << title_of(name) << "'";
     first = false;

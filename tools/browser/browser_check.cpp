@@ -1,6 +1,6 @@
 // The report pages in a real browser. Makes a small output as the main job would (the waves
 // report's quick preset, one throw, the front page), then opens every HTML page in headless
-// Chromium and checks, for each page:
+// Chromium (and one figure's explorable SVG) and checks, for each page:
 //   * every src and href in the HTML names a file that exists, and every #fragment an id in its page;
 //   * the browser loaded every image (complete, with a width) and logged no console message (a
 //     script error or a refused resource);
@@ -203,6 +203,14 @@ int main(int argc, char** argv) {
   if (pages.size() < 2) fail("expected the front page and the waves report's page, found " + std::to_string(pages.size()) + " pages");
   for (const auto& p : pages)
     for (const auto& b : unresolved(p)) fail(b);
+  // One figure's SVG as well, opened on its own as a reader who explores it would: gnuplot's inline
+  // script (coordinates, legend clicks) must run without a console message.
+  for (const auto& e : fs::directory_iterator(out / "waves" / "figures"))
+    if (e.path().extension() == ".svg" && read_file(e.path()).find("gnuplot_svg") != std::string::npos) {
+      pages.push_back(e.path());
+      break;
+    }
+  if (pages.back().extension() != ".svg") fail("no figure of the waves report is an explorable SVG (gnuplot's mouse script)");
   const auto broken_static = unresolved(work / "broken" / "index.html");
   for (const std::string fault : {"missing.png (no such file)", "nothere.html (no such file)", "#nowhere (no such id)"}) {
     bool caught = false;
@@ -236,7 +244,7 @@ int main(int argc, char** argv) {
     const bool all_loaded = line.size() >= 8 && line.compare(line.size() - 8, 8, " broken=") == 0;
     if (is_broken_page && line.find("broken=missing.png") == std::string::npos) fail("the probe did not catch the broken page's missing image: " + line);
     if (!is_broken_page && !all_loaded) fail(rel[i] + ": images the browser could not load: " + line);
-    if (!is_broken_page && i < pages.size()) {
+    if (!is_broken_page && i < pages.size() && pages[i].extension() == ".html") {
       const std::size_t imgs = attribute_values(read_file(pages[i]), "src").size();
       if (line.find(" images=" + std::to_string(imgs) + " ") == std::string::npos)
         fail(rel[i] + ": the browser saw another number of images than the page names (" + std::to_string(imgs) + "): " + line);

@@ -57,59 +57,201 @@ stoneskip::Table read_table_at(const stoneskip::H5Group& g, const std::vector<st
   return read_table_at(g.open_group(parts[i]), parts, i + 1);
 }
 
+stoneskip::Table stored_table(const stoneskip::Hdf5Reader& data, const std::string& path) {
+  std::vector<std::string> parts;
+  std::istringstream in(path);
+  for (std::string p; std::getline(in, p, '/');)
+    if (!p.empty()) parts.push_back(p);
+  return read_table_at(data.root(), parts, 0);
+}
+
 // The rows a source names, read from data.h5 on their own (not through the report's code).
 Points stored_points(const stoneskip::Hdf5Reader& data, const std::vector<std::string>& src) {
-  // src: table, data.h5 path, x column, y column, rows, drawn-at height
-  std::vector<std::string> parts;
-  std::istringstream path(src[1]);
-  for (std::string p; std::getline(path, p, '/');)
-    if (!p.empty()) parts.push_back(p);
-  const stoneskip::Table t = read_table_at(data.root(), parts, 0);
+  // src: table, data.h5 path, x column, y column, rows, drawn-at height, x power, y scale, where
+  // column or -, where value
+  const stoneskip::Table t = stored_table(data, src[1]);
   const auto x = t.column(src[2]), y = t.column(src[3]);
-  const double at = std::strtod(src[5].c_str(), nullptr);
+  const double at = std::strtod(src[5].c_str(), nullptr), power = std::strtod(src[6].c_str(), nullptr),
+               scale = std::strtod(src[7].c_str(), nullptr), value = std::strtod(src[9].c_str(), nullptr);
+  const std::vector<double> where = src[8] == "-" ? std::vector<double>{} : t.column(src[8]);
   Points pts;
   for (std::size_t k = 0; k < x.size(); ++k) {
     if (src[4] == "y_nonnegative" && !(y[k] >= 0)) continue;
     if (src[4] == "y_negative" && !(y[k] < 0)) continue;
-    const double yy = std::isnan(at) ? y[k] : at;
-    if (std::isfinite(x[k]) && std::isfinite(yy)) pts.emplace_back(x[k], yy);
+    if (src[4] == "y_positive" && !(y[k] > 0)) continue;
+    if (!where.empty() && where[k] != value) continue;
+    const double xx = power == 1 ? x[k] : std::pow(x[k], power), yy = std::isnan(at) ? scale * y[k] : at;
+    if (std::isfinite(xx) && std::isfinite(yy)) pts.emplace_back(xx, yy);
   }
   return pts;
 }
 
 bool close(double a, double b) { return std::abs(a - b) <= kTenDigits * std::max(std::abs(a), std::abs(b)); }
 
+// Every row of a .dat file, each cell as read ("NaN" stays NaN; a blank line, a row of NaN only, is
+// an empty row).
+std::vector<std::vector<double>> dat_rows(const fs::path& dat) {
+  std::vector<std::vector<double>> rows;
+  std::istringstream in(read_file(dat));
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && line[0] == '#') continue;
+    std::istringstream cells(line);
+    std::vector<double> row;
+    for (std::string c; cells >> c;) row.push_back(std::strtod(c.c_str(), nullptr));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// The .dat's rows with both x and y finite, in file order, and a NaN pair where a line breaks.
+Points dat_path(const fs::path& dat) {
+  Points pts;
+  for (const auto& r : dat_rows(dat)) pts.emplace_back(r.size() > 0 ? r[0] : NAN, r.size() > 1 ? r[1] : NAN);
+  return pts;
+}
+
+// An outline is horizontal pieces, one per point of the series it is drawn through: each piece's
+// height is that point's value and its span holds the point's abscissa (a step that ends before the
+// last value, or a piece at a height no point has, fails).
+void check_outline(const fs::path& figures, const std::string& table, const std::string& of) {
+  Points pieces;  // (x0, x1) with its height: drawn as pairs of rows
+  std::vector<double> heights;
+  const Points path = dat_path(figures / (table + ".dat"));
+  for (std::size_t k = 0; k < path.size();) {
+    if (!std::isfinite(path[k].first)) {
+      ++k;
+      continue;
+    }
+    BOOST_REQUIRE_MESSAGE(k + 1 < path.size() && path[k + 1].second == path[k].second,
+                          table << ": row " << k << " does not start a horizontal piece");
+    pieces.emplace_back(path[k].first, path[k + 1].first);
+    heights.push_back(path[k].second);
+    k += 2;
+  }
+  const Points dots = plotted_points(figures / (of + ".dat"));
+  BOOST_TEST(pieces.size() == dots.size(), table << ": " << pieces.size() << " pieces through " << dots.size() << " points");
+  for (const auto& [x, y] : dots) {
+    bool held = false;
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+      held = held || (heights[i] == y && pieces[i].first <= x && x <= pieces[i].second);
+    BOOST_TEST(held, table << ": no piece at height " << y << " over x = " << x);
+  }
+}
+
+// Every row of a copied table equals the stored table's named columns, row for row (NaN for NaN).
+void check_copy(const stoneskip::Hdf5Reader& data, const fs::path& dat, const std::string& path, const std::string& columns) {
+  const stoneskip::Table t = stored_table(data, path);
+  std::vector<std::vector<double>> cols;
+  std::istringstream in(columns);
+  if (columns == "*")
+    for (const auto& c : t.columns) cols.push_back(t.column(c));
+  else
+    for (std::string c; std::getline(in, c, ',');) cols.push_back(t.column(c));
+  const auto rows = dat_rows(dat);
+  BOOST_REQUIRE_EQUAL(rows.size(), t.rows());
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    BOOST_REQUIRE(rows[r].empty() || rows[r].size() == cols.size());
+    for (std::size_t c = 0; c < cols.size(); ++c) {
+      const double a = rows[r].empty() ? NAN : rows[r][c], b = cols[c][r];
+      BOOST_TEST(((std::isnan(a) && std::isnan(b)) || a == b || close(a, b)),
+                 dat.filename() << " row " << r << " column " << c << ": drawn " << a << ", stored " << b);
+    }
+  }
+}
+
+// A row per stored estimate: columns 2–4 are the estimate's nominal, low and high, read from data.h5.
+void check_estimates(const stoneskip::Hdf5Reader& data, const fs::path& dat, const std::string& paths) {
+  std::vector<std::string> records;
+  std::istringstream in(paths);
+  for (std::string p; std::getline(in, p, ',');) records.push_back(p);
+  const auto rows = dat_rows(dat);
+  BOOST_REQUIRE_EQUAL(rows.size(), records.size());
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const Record v = stoneskip::load_record(data.root().open_group(records[r].substr(1)));
+    BOOST_REQUIRE_EQUAL(rows[r].size(), 4u);
+    const char* keys[3] = {"nominal", "low", "high"};
+    for (int c = 0; c < 3; ++c) {
+      const double a = rows[r][c + 1], b = v.number(keys[c]);
+      BOOST_TEST(((std::isnan(a) && std::isnan(b)) || close(a, b)), dat.filename() << " row " << r << " " << keys[c] << ": drawn " << a << ", stored " << b);
+    }
+  }
+}
+
+// A guide y = c·x^p: every point gives the same c.
+void check_power_law(const fs::path& dat, double p) {
+  const Points pts = plotted_points(dat);
+  BOOST_TEST(pts.size() >= 2u);
+  for (const auto& [x, y] : pts)
+    BOOST_TEST(close(y / std::pow(x, p), pts.front().second / std::pow(pts.front().first, p)),
+               dat.filename() << ": (" << x << ", " << y << ") is not on y ∝ x^" << p);
+}
+
+// The line y = a + b·x, a and b read from the record's attributes in data.h5.
+void check_line(const stoneskip::Hdf5Reader& data, const fs::path& dat, const std::vector<std::string>& f) {
+  const Record r = stoneskip::load_record(data.root().open_group(f[2].substr(1)));
+  const double a = r.number(f[3]), b = r.number(f[4]);
+  const Points pts = plotted_points(dat);
+  BOOST_TEST(!pts.empty());
+  for (const auto& [x, y] : pts)
+    BOOST_TEST(std::abs(y - (a + b * x)) <= kTenDigits * (std::abs(a) + std::abs(b * x)),
+               dat.filename() << ": (" << x << ", " << y << ") is not on " << a << " + " << b << " x");
+}
+
 // Every line figure's plotted points are the stored rows it names: for each set of tables that
 // share one list of sources (a curve split where it breaks), the union of their finite rows is the
 // union of the rows selected from data.h5, point for point; each such table is plotted `using 1:2`.
-// Returns the number of figures checked; series drawn from no stored table are counted in `computed`.
-int check_figures_match_their_tables(const fs::path& dir, int& computed) {
+// A series drawn from no table is checked against what it says it is (an outline through another
+// series, a guide y ∝ x^p, a stored line), a copied table row for row against data.h5. Returns the
+// number of figures checked; series that say nothing are counted in `computed`.
+int check_figures_match_their_tables(const fs::path& dir, int& computed, std::vector<std::string>& computed_names) {
   stoneskip::Hdf5Reader data(dir / "data.h5");
+  const fs::path figures = dir / "figures";
   int checked = 0;
-  for (const auto& entry : fs::directory_iterator(dir / "figures")) {
+  for (const auto& entry : fs::directory_iterator(figures)) {
     if (entry.path().extension() != ".sources") continue;
     const std::string name = entry.path().stem().string();
-    const std::string script = read_file(dir / "figures" / (name + ".gp"));
+    const std::string script = read_file(figures / (name + ".gp"));
     std::map<std::string, std::vector<std::vector<std::string>>> by_table;
-    std::istringstream in(read_file(entry.path()));
+    const std::string listed = read_file(entry.path());
+    // Every table the script draws is accounted for in the .sources, by one of the kinds below.
+    const std::regex drawn("'(" + name + "_[a-z0-9_]*)\\.dat'");
+    for (std::sregex_iterator it(script.begin(), script.end(), drawn), end; it != end; ++it)
+      BOOST_TEST((listed.rfind((*it)[1].str() + "\t", 0) == 0 || listed.find("\n" + (*it)[1].str() + "\t") != std::string::npos),
+                 "figure " << name << " draws " << (*it)[1] << ", which its .sources does not account for");
+    std::istringstream in(listed);
     for (std::string line; std::getline(in, line);) {
       std::vector<std::string> f;
       std::istringstream cells(line);
       for (std::string c; std::getline(cells, c, '\t');) f.push_back(c);
-      BOOST_REQUIRE_MESSAGE(f.size() == 6 || (f.size() == 2 && f[1] == "-"), name << ".sources: bad line '" << line << "'");
-      if (f.size() == 2) {
-        ++computed;
-        by_table[f[0]];
-      } else {
-        by_table[f[0]].push_back(f);
+      BOOST_TEST_CONTEXT("figure " << name << ", line '" << line << "'") {
+        BOOST_REQUIRE(f.size() >= 2u);
+        if (f.size() == 10) {
+          by_table[f[0]].push_back(f);
+        } else if (f[1] == "-" && f.size() == 3 && !f[2].empty()) {  // computed, and it says from what
+          ++computed;
+          computed_names.push_back(f[0] + ": " + f[2]);
+        } else if (f[1] == "outline" && f.size() == 3) {
+          check_outline(figures, f[0], f[2]);
+        } else if (f[1] == "power_law" && f.size() == 3) {
+          check_power_law(figures / (f[0] + ".dat"), std::strtod(f[2].c_str(), nullptr));
+        } else if (f[1] == "line" && f.size() == 5) {
+          check_line(data, figures / (f[0] + ".dat"), f);
+        } else if (f[1] == "estimates" && f.size() == 3) {
+          check_estimates(data, figures / (f[0] + ".dat"), f[2]);
+        } else if (f[1] == "copy" && f.size() == 4) {
+          check_copy(data, figures / (f[0] + ".dat"), f[2], f[3]);
+          BOOST_TEST(script.find("'" + f[0] + ".dat'") != std::string::npos);
+        } else {
+          BOOST_ERROR("bad line");
+        }
       }
     }
     std::map<std::string, std::vector<std::string>> groups;  // the sources, joined → tables
     std::map<std::string, std::vector<std::vector<std::string>>> group_sources;
     for (const auto& [table, srcs] : by_table) {
-      if (srcs.empty()) continue;
       std::string key;
-      for (const auto& s : srcs) key += s[1] + "|" + s[2] + "|" + s[3] + "|" + s[4] + "|" + s[5] + ";";
+      for (const auto& s : srcs)
+        for (std::size_t i = 1; i < s.size(); ++i) key += s[i] + (i + 1 < s.size() ? "|" : ";");
       groups[key].push_back(table);
       group_sources[key] = srcs;
     }
@@ -119,7 +261,7 @@ int check_figures_match_their_tables(const fs::path& dir, int& computed) {
         for (const auto& t : tables) {
           BOOST_TEST((script.find("'" + t + ".dat' using 1:2 ") != std::string::npos ||
                       script.find("'" + t + ".dat' u 1:2 ") != std::string::npos));
-          const Points p = plotted_points(dir / "figures" / (t + ".dat"));
+          const Points p = plotted_points(figures / (t + ".dat"));
           plotted.insert(plotted.end(), p.begin(), p.end());
         }
         for (const auto& s : group_sources[key]) {
@@ -192,9 +334,20 @@ void check_report(const fs::path& dir) {
 
   // 4. Every line figure draws the stored rows it names (above), no other.
   int computed = 0;
-  const int line_figures = check_figures_match_their_tables(dir, computed);
-  BOOST_TEST_MESSAGE(dir.filename() << ": " << line_figures << " line figures checked against data.h5; " << computed
-                                    << " series computed from no stored table");
+  std::vector<std::string> computed_names;
+  const int line_figures = check_figures_match_their_tables(dir, computed, computed_names);
+  std::string list;
+  for (const auto& t : computed_names) list += "\n  " + t;
+  BOOST_TEST_MESSAGE(dir.filename() << ": " << line_figures << " figures checked against data.h5; " << computed
+                                    << " tables computed from stored values, each saying how:" << list);
+  // Every figure that draws a table says where it comes from (a figure with no .sources draws none:
+  // a still or a map drawn from an image).
+  for (const auto& entry : fs::directory_iterator(dir / "figures")) {
+    const fs::path p = entry.path();
+    if (p.extension() != ".gp" || p.stem().extension() == ".svg") continue;
+    if (read_file(p).find(".dat'") != std::string::npos)
+      BOOST_TEST(fs::exists(dir / "figures" / (p.stem().string() + ".sources")), p.filename() << " draws tables but has no .sources");
+  }
   BOOST_TEST(read_file(dir / "index.html") == page);
 }
 
