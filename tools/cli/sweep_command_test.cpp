@@ -200,7 +200,7 @@ BOOST_AUTO_TEST_CASE(a_case_that_names_no_fixed_scheme_is_swept_with_the_adaptiv
     std::snprintf(set, sizeof set, " --set throw.spin_rev_s=%.17g", at(t, row, "throw.spin_rev_s"));
     const std::string args = "run cases/paper_8ms_spin.toml --set solver.t_max_s=2.0" + std::string(set) + " --solver realtime --json";
     const Outcome adaptive = command(args + " --set solver.scheme=bs32 --set solver.rtol=1e-8 --set solver.atol_m=1e-8");
-    const Outcome fixed = command(args + " --set solver.scheme=semi_implicit_euler --set solver.contact_dt_s=1e-5");
+    const Outcome fixed = command(args + " --set solver.scheme=semi_implicit_euler --set solver.dt_s=1e-3 --set solver.contact_dt_s=1e-5");
     BOOST_REQUIRE_MESSAGE(adaptive.status == 0 && fixed.status == 0, adaptive.err + fixed.err);
     const nlohmann::json a = nlohmann::json::parse(adaptive.out), f = nlohmann::json::parse(fixed.out);  // one solver: its result at the top
     for (const char* k : {"steps", "rhs_evaluations", "error_test_failures", "root_evaluations"})
