@@ -302,6 +302,13 @@ SectionOutput shortcuts_section(const Record& s) {
 // ---- 6. speed ---------------------------------------------------------------------------------
 
 SectionOutput speed_section(const Record& s) {
+  // The sweep's stepper: the adaptive scheme by its tolerance, a fixed one by its contact step
+  // (records written before the sweep named its scheme: the contact step).
+  auto sweep_stepper_words = [](const Record& r) {
+    if (r.has_text("sweep_scheme") && r.text("sweep_scheme") == "bs32") return "bs32, rtol " + fmt(r.number("sweep_rtol"), 2);
+    return (r.has_text("sweep_scheme") ? r.text("sweep_scheme") + ", " : std::string()) + "contact step " +
+           fmt(r.number("sweep_contact_dt_s"), 2) + " s";
+  };
   SectionWriter w(s, "6. Speed");
   w.text("Measured in one run of this binary, on a machine with " + fmt(s.number("cores")) + " cores and a 1-minute load average of " +
          fmt(s.number("load_before"), 3) + " before and " + fmt(s.number("load_after"), 3) + " after (other jobs share the cores: "
@@ -309,7 +316,7 @@ SectionOutput speed_section(const Record& s) {
          " frames) is run " + fmt(s.number("scene_repeats")) + " times per thread count; frames/s from the best wall time (the least "
          "disturbed), the median beside it; the stencil " + code(s.text("stencil")) + " (" + s.text("kernel_isa") + ") against a copy "
          "kernel on arrays of the same size, best samples (wall); the sweep: " + fmt(s.number("sweep_throws")) + " real-time throws "
-         "(contact step " + fmt(s.number("sweep_contact_dt_s"), 2) + " s) on " + fmt(s.number("sweep_workers")) + " workers, best wall time.");
+         "(" + sweep_stepper_words(s) + ") on " + fmt(s.number("sweep_workers")) + " workers, best wall time.");
   MarkdownTable t({"figure", "measured", "verdict"});
   t.row({"the seed's scene, 1 thread: frames/s", fmt(s.number("scene_fps_1core"), 4) + " (median " + fmt(s.number("scene_fps_1core_median"), 4) +
                                                     "; thread CPU " + fmt(s.number("scene_fps_1core_cpu"), 4) + ")",
@@ -337,7 +344,7 @@ SectionOutput speed_section(const Record& s) {
          " wall, " + ms(s.number("slowest_frame_cpu_s")) + " CPU.");
   w.text("What a throw of the sweep costs (its profile, thread CPU): " + ms(s.number("sweep_cpu_per_throw_s")) + " per throw, for " +
          fmt(s.number("sweep_simulated_per_throw_s"), 3) + " s simulated, " + fmt(s.number("sweep_steps_per_throw"), 4) + " stone steps of which " +
-         fmt(s.number("sweep_contact_steps_per_throw"), 4) + " with the contact step, " + us(s.number("sweep_cpu_per_step_s")) +
+         fmt(s.number("sweep_contact_steps_per_throw"), 4) + " near the water, " + us(s.number("sweep_cpu_per_step_s")) +
          " per step; the target allows " + ms(s.number("sweep_cpu_budget_per_throw_s")) + " per throw on " + fmt(s.number("sweep_workers")) +
          " fully available workers.");
   PlotAxes ax{"t (s)", "cost of the frame (ms)", false, true, ""};
