@@ -6,7 +6,7 @@
 #   OUT/scene/           the seed's scene report (two-way coupling, rings, shortcuts, speed)
 #   OUT/captures/        the captures report: every shipped capture (index.md, figures/, data.h5)
 #   OUT/capture_scene/   a skipping capture through the coupled scene against both references
-#   OUT/movies/          the seed's scene as a movie (top view and an oblique 3-D view)
+#   OUT/movies/          the seed's scene as movies, paper and physical convention (top view and an oblique 3-D view)
 #   OUT/index.html       the front page (and index.md): every report, the movie and the throws, what was found
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -45,9 +45,10 @@ echo "== Report: stones =="
 echo "== Report: the seed's scene (two-way coupling, rings, shortcuts, speed, stills) =="
 "$exe" report scene --out "$out/scene"
 
-echo "== Movie: the seed's scene in the paper convention (3 s at 90 frames/s, gnuplot + ffmpeg) =="
+echo "== Movies: the seed's scene in the paper convention and in the physical one (90 frames/s, gnuplot + ffmpeg) =="
 mkdir -p "$out/movies"
 "$exe" scene cases/scenes/seed_8ms_paper.toml --movie "$out/movies/seed_8ms_paper.mp4"
+"$exe" scene cases/scenes/seed_8ms.toml --movie "$out/movies/seed_8ms.mp4"
 
 echo "== Regression against the golden bounce-count baselines =="
 "$exe" regress
