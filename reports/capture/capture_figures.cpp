@@ -36,20 +36,6 @@ std::string g(double x) {
   return b;
 }
 
-// The named columns of a stored table, in that order.
-Table pick(const Table& t, const std::vector<std::string>& columns) {
-  Table out;
-  out.columns = columns;
-  std::vector<std::vector<double>> cols;
-  for (const auto& c : columns) cols.push_back(t.column(c));
-  for (std::size_t r = 0; r < t.rows(); ++r) {
-    std::vector<double> row;
-    for (const auto& c : cols) row.push_back(c[r]);
-    out.add_row(row);
-  }
-  return out;
-}
-
 // 1-based column of a table in a gnuplot `using` clause.
 std::string col(const Table& t, const std::string& name) {
   const auto it = std::find(t.columns.begin(), t.columns.end(), name);
@@ -67,11 +53,9 @@ Figure make(const std::string& key, const std::string& name, const std::string& 
 
 std::string dat(const Figure& f, const std::string& part) { return "'" + f.name + "_" + part + ".dat'"; }
 void add(Figure& f, const std::string& part, Table t) { f.tables.emplace_back(f.name + "_" + part, std::move(t)); }
-// A figure table that is the named columns of table `table` of r, every row (the figure test
-// checks the .dat against data.h5 through the figure's .sources).
+// A figure table that is the named columns of table `table` of r, every row (checked by the figure test).
 void add_copy(Figure& f, const std::string& part, const Record& r, const std::string& table, const std::vector<std::string>& columns) {
-  add(f, part, pick(r.table(table), columns));
-  f.copies.emplace_back(f.name + "_" + part, TableCopy{r.path() + "/" + table, columns, {}, ""});
+  add_stored_table(f, f.name + "_" + part, r, table, columns);
 }
 // A figure table of stored estimates, a row each: its position, then the estimate's nominal, low
 // and high values (the records' paths go to the figure's .sources).
@@ -276,7 +260,7 @@ std::optional<Figure> capture_release_figure(const std::string& key, const Recor
                   "members), the throw as measured in the room beside the virtual stone it is mapped to",
                   1200, 820);
   const Table& ens = th.table("ensemble");
-  add_copy(f, "ensemble", th, "ensemble", ens.columns);
+  add_copy(f, "ensemble", th, "ensemble", {});
   const double n = std::max<double>(1, double(ens.rows()));
   struct Category {
     std::string label;   // x tic label
@@ -348,10 +332,8 @@ std::optional<Figure> capture_room_and_water_figure(const std::string& key, cons
                   kArrow_s * th.number("measured_vz_m_s")});
   arrows.add_row({0.0, 0.0, th.at("virtual").at("height_m").number("nominal"), kArrow_s * th.number("virtual_vx_m_s"),
                   kArrow_s * th.number("virtual_vy_m_s"), kArrow_s * th.number("virtual_vz_m_s")});
-  add(f, "velocity", arrows);
-  TableCopy arrows_from;
-  arrows_from.computed = "the release velocities drawn as arrows: each velocity times " + std::to_string(int(1000 * kArrow_s)) + " ms";
-  f.copies.emplace_back(f.name + "_velocity", arrows_from);
+  add_computed_table(f, f.name + "_velocity", arrows,
+                     "the release velocities drawn as arrows: each velocity times " + std::to_string(int(1000 * kArrow_s)) + " ms");
   const std::string room = dat(f, "room"), v = dat(f, "velocity");
   const std::string vector_style = " w vectors head filled size screen 0.012,20 lw 2 lc rgb '" + std::string(kRealtime) + "'";
   std::ostringstream s;
@@ -399,7 +381,7 @@ std::optional<Figure> capture_bounce_figure(const std::string& key, const Record
                   "throw's counts",
                   900, 560);
   const Table& h = e.table("histogram");
-  add_copy(f, "histogram", e, "histogram", h.columns);
+  add_copy(f, "histogram", e, "histogram", {});
   const auto counts = h.column("bounces");
   double lo = counts.empty() ? 0 : *std::min_element(counts.begin(), counts.end());
   double hi = counts.empty() ? 0 : *std::max_element(counts.begin(), counts.end());
@@ -459,7 +441,7 @@ std::optional<Figure> capture_scene_wave_figure(const std::string& key, const Re
                   "the scene, the forced leapfrog driven by the reference's draught, and the forced spectral reference "
                   "(the stencil's exact semi-discrete solution, and the continuum one)",
                   1100, 520);
-  add_copy(f, "profile", w, "profile", w.table("profile").columns);
+  add_copy(f, "profile", w, "profile", {});
   const std::string d = dat(f, "profile");
   std::ostringstream s;
   s << "set grid\nset key outside right top\nset xlabel 'x (m)'\nset ylabel 'surface height (mm)'\n"

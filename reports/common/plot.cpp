@@ -102,6 +102,33 @@ PlotSeries record_line(const std::string& title, const Record& r, const std::str
   return s;
 }
 
+void add_stored_table(Figure& f, const std::string& name, const Record& r, const std::string& table,
+                      const std::vector<std::string>& columns) {
+  const Table& stored = r.table(table);
+  if (columns.empty()) {
+    f.tables.emplace_back(name, stored);
+  } else {
+    Table out;
+    out.columns = columns;
+    std::vector<std::vector<double>> cols;
+    for (const auto& c : columns) cols.push_back(stored.column(c));
+    for (std::size_t row = 0; row < stored.rows(); ++row) {
+      std::vector<double> values;
+      for (const auto& c : cols) values.push_back(c[row]);
+      out.add_row(values);
+    }
+    f.tables.emplace_back(name, out);
+  }
+  f.copies.emplace_back(name, TableCopy{r.path() + "/" + table, columns, {}, ""});
+}
+
+void add_computed_table(Figure& f, const std::string& name, Table t, const std::string& how) {
+  f.tables.emplace_back(name, std::move(t));
+  TableCopy c;
+  c.computed = how;
+  f.copies.emplace_back(name, c);
+}
+
 Figure line_figure(const std::string& name, const std::string& title, const PlotAxes& axes,
                    const std::vector<PlotSeries>& series, const std::string& x_column, const std::string& y_column) {
   Figure f;

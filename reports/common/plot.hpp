@@ -39,6 +39,14 @@ PlotSeries power_law_guide(const std::string& title, const std::vector<double>& 
 PlotSeries record_line(const std::string& title, const Record& r, const std::string& intercept_key, const std::string& slope_key,
                        const std::vector<double>& x, const std::string& style = "lines");
 
+// A figure table that is table `table` of r as stored — the named columns in that order, or every
+// column — recorded as such in the figure's .sources (the figure test reads it back from data.h5).
+void add_stored_table(Figure& f, const std::string& name, const Record& r, const std::string& table,
+                      const std::vector<std::string>& columns = {});
+
+// A figure table computed here from stored values, with a sentence saying how (in the .sources).
+void add_computed_table(Figure& f, const std::string& name, Table t, const std::string& how);
+
 struct PlotAxes {
   std::string x_label, y_label;
   bool log_x = false, log_y = false;

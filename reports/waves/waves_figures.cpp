@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "reports/common/plot.hpp"
+
 namespace stoneskip {
 
 namespace {
@@ -23,20 +25,6 @@ std::string title_of(const std::string& stencil) {
   return t;
 }
 
-// A figure table that is table `table` of r as stored (the figure test reads it back from data.h5).
-void add_copy(Figure& f, const std::string& name, const Record& r, const std::string& table) {
-  f.tables.emplace_back(name, r.table(table));
-  f.copies.emplace_back(name, TableCopy{r.path() + "/" + table, r.table(table).columns, {}, ""});
-}
-
-// A figure table computed here from stored values, with the reason (written to the .sources).
-void add_computed(Figure& f, const std::string& name, const Table& t, const std::string& why) {
-  f.tables.emplace_back(name, t);
-  TableCopy c;
-  c.computed = why;
-  f.copies.emplace_back(name, c);
-}
-
 // A stencil's clause in the plot command (comma-separated), for its table `name`.
 void add_stencil_clause(std::ostringstream& p, bool& first, const std::string& name, const std::string& stencil,
                         const char* with, const char* columns = "1:2") {
@@ -48,7 +36,7 @@ void add_stencil_clause(std::ostringstream& p, bool& first, const std::string& n
 // Adds a stencil's curve: table `table` of r as stored, and its clause in the plot command.
 void add_stencil_curve(Figure& f, std::ostringstream& p, bool& first, const std::string& name, const Record& r,
                        const std::string& table, const std::string& stencil, const char* with, const char* columns = "1:2") {
-  add_copy(f, name, r, table);
+  add_stored_table(f, name, r, table);
   add_stencil_clause(p, first, name, stencil, with, columns);
 }
 
@@ -183,7 +171,7 @@ Figure isotropy_spread_figure(const Record& iso) {
   for (const auto& name : iso.strings("stencils")) {
     Table t = iso.at(name).table("spread");
     for (std::size_t r = 0; r < t.rows(); ++r) t.values[2 * r + 1] = std::max(t.values[2 * r + 1], 1e-17);  // log axis
-    add_computed(f, f.name + "_" + name, t, iso.at(name).path() + "/spread with each spread raised to at least 1e-17 for the log axis");
+    add_computed_table(f, f.name + "_" + name, t, iso.at(name).path() + "/spread with each spread raised to at least 1e-17 for the log axis");
     add_stencil_clause(p, first, f.name + "_" + name, name, "l");
   }
   f.script = p.str();
@@ -215,8 +203,8 @@ Figure isotropy_measured_figure(const Record& iso) {
         if (target[i] == kds[k])
           pts.add_row({th[i], me[i] / (kd[i] * kd[i]), se[i] / (kd[i] * kd[i]), fe[i] / (kd[i] * kd[i]), kd[i]});
       const std::string tn = f.name + "_" + name + "_" + std::to_string(k);
-      add_computed(f, tn, pts, s.path() + "/measured: the rows at this kd, each error divided by kd²");
-      add_copy(f, tn + "_symbol", s, "symbol_line_" + std::to_string(k));
+      add_computed_table(f, tn, pts, s.path() + "/measured: the rows at this kd, each error divided by kd²");
+      add_stored_table(f, tn + "_symbol", s, "symbol_line_" + std::to_string(k));
       p << (first ? "" : ", ") << "'" << tn << "_symbol.dat' u 1:2 w l lw 2 " << style(name) << " t '" << title_of(name)
         << " (symbol)', '" << tn << ".dat' u 1:2 w p ps 1.3 " << style(name) << " t '" << title_of(name)
         << " (simulation)'";
@@ -256,14 +244,14 @@ Figure stability_figure(const Record& st) {
     const Record& s = st.at(name);
     add_stencil_curve(f, p, first, f.name + "_" + name, s, "limit_curve", name, "l");
     const std::string mn = f.name + "_" + name + "_measured";
-    add_copy(f, mn, s, "checks");
+    add_stored_table(f, mn, s, "checks");
     p << ", '" << mn << ".dat' u 1:3 w p ps 1.5 " << style(name) << " notitle";
   }
   const Record& l = st.at("lengyel");
-  add_copy(f, f.name + "_lengyel", l, "bound_curve");
+  add_stored_table(f, f.name + "_lengyel", l, "bound_curve");
   Table ce{{"mu_dt", "sigma"}, {}};
   ce.add_row({l.number("mu_dt"), l.number("sigma")});
-  add_computed(f, f.name + "_counterexample", ce, l.path() + ": the point (mu_dt, sigma) of the counter-example");
+  add_computed_table(f, f.name + "_counterexample", ce, l.path() + ": the point (mu_dt, sigma) of the counter-example");
   std::ostringstream growth;
   growth.precision(3);
   growth << l.number("measured_growth_per_step");
@@ -297,8 +285,8 @@ Figure work_precision_figure(const Record& sp) {
       }
     }
     const std::string tn = f.name + "_" + name;
-    add_computed(f, tn, all, sp.at(name).path() + "/points: (cpu_s, l2_error_m), CPU raised to at least 1 µs for the log axis");
-    add_computed(f, tn + "_front", front, sp.at(name).path() + "/points: the runs more accurate than every cheaper one (the Pareto front)");
+    add_computed_table(f, tn, all, sp.at(name).path() + "/points: (cpu_s, l2_error_m), CPU raised to at least 1 µs for the log axis");
+    add_computed_table(f, tn + "_front", front, sp.at(name).path() + "/points: the runs more accurate than every cheaper one (the Pareto front)");
     p << (first ? "" : ", ") << "'" << tn << ".dat' u 1:2 w p " << style(name) << " notitle, '" << tn
       << "_front.dat' u 1:2 w l lw 2 " << style(name) << " t '" << title_of(name) << "'";
     first = false;
