@@ -22,7 +22,7 @@
 //
 // Passivity: a face's fluid power is −p_i u_i S_i ≤ 0 when p_i is evaluated with the normal
 // velocity at the point where the face's pressure acts (pressure_distribution.hpp does so).
-// Smoothness in the state (what the CVODE reference locates, solvers/reference/stone_events.hpp):
+// Smoothness in the state (what the CVODE reference locates, solvers/realtime/stone_events.hpp):
 // every law is zero at u_i = 0 and continuous there; newtonian (∝ max(u, 0)²) is C¹ with a jump in
 // the second derivative, planing (∝ max(u, 0) |v|) C⁰ with a jump in the first; |v| is smooth
 // wherever a face can be wet and advancing (u_i > 0 with |v| = 0 needs spin alone).

@@ -42,13 +42,15 @@ Bs32Trial bs32_step(const Stone& stone, const Environment& env, const StateVecto
     to_vector(d, t.k4.data());
     t.wetted_area_m2 = loads.water.wetted_area_m2;
   }
-  double sum = 0;
+  double sum = 0, position = 0;
   for (int i = 0; i < kStateSize; ++i) {
     // b − b̂ = (−5/72, 1/12, 1/9, −1/8).
     const double e = h * (-5.0 / 72.0 * k1[i] + 1.0 / 12.0 * k2[i] + 1.0 / 9.0 * k3[i] - 1.0 / 8.0 * t.k4[i]);
     const double w = atol[i] + rtol * std::max(std::abs(y0[i]), std::abs(t.y1[i]));
     sum += (e / w) * (e / w);
+    if (i >= kPosition && i < kPosition + 3) position += e * e;
   }
+  t.position_error_m = std::sqrt(position);
   t.error_norm = std::sqrt(sum / kStateSize);
   return t;
 }

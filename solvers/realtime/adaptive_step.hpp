@@ -20,6 +20,7 @@ struct Bs32Trial {
   StateVector k4{};        // f(y1): the first stage of the next step (FSAL)
   double wetted_area_m2 = 0;  // Σ S_i at y1, from the evaluation of k4 (the stepper logs it)
   double error_norm = 0;   // RMS of (y1 − ŷ1)_i / (atol_i + rtol max(|y0_i|, |y1_i|)); ≤ 1 passes
+  double position_error_m = 0;  // ‖(y1 − ŷ1)_x‖: the local error estimate of the position
 };
 
 // One trial step of size h from y0, with k1 = f(y0) given. Three right-hand sides.

@@ -1,6 +1,7 @@
 #include "solvers/realtime/dense_output.hpp"
 
 #include <cmath>
+#include <functional>
 
 namespace stoneskip {
 
@@ -26,19 +27,17 @@ double vertex_depth(const Stone& stone, const RigidState& s, const WaterSurface*
   return eta - w.z();
 }
 
-double crossing_fraction(const HermiteStep& step, const Stone& stone, const WaterSurface* surface, int k, double d0,
-                         double d1, double fraction_tolerance) {
+double sign_change_fraction(const std::function<double(double)>& g, double g0, double g1, double fraction_tolerance) {
   constexpr int kMaxIterations = 100;
-  // The sign convention of the ends: "under" is d > 0. Keep a bracket [a, b] with the end values'
-  // under-ness differing, as the caller's test (d ≤ 0 against d > 0) does.
-  double a = 0, b = 1, fa = d0, fb = d1;
-  const bool a_under = fa > 0;
+  // Keep a bracket [a, b] whose ends differ in (g > 0), as the callers' tests do.
+  double a = 0, b = 1, fa = g0, fb = g1;
+  const bool a_positive = fa > 0;
   int side = 0;
   for (int it = 0; it < kMaxIterations && b - a > fraction_tolerance; ++it) {
     double c = (fa == fb) ? 0.5 * (a + b) : a + (b - a) * fa / (fa - fb);
     if (!(c > a && c < b)) c = 0.5 * (a + b);
-    const double fc = vertex_depth(stone, step.state_at(c), surface, k);
-    if ((fc > 0) == a_under) {
+    const double fc = g(c);
+    if ((fc > 0) == a_positive) {
       a = c;
       fa = fc;
       if (side == -1) fb *= 0.5;  // Illinois: halve the stale end's value
@@ -50,7 +49,14 @@ double crossing_fraction(const HermiteStep& step, const Stone& stone, const Wate
       side = 1;
     }
   }
-  return b;  // the first fraction at which the vertex is on the end's side
+  return b;  // the first fraction at which g is on the end's side
+}
+
+double crossing_fraction(const HermiteStep& step, const Stone& stone, const WaterSurface* surface, int k, double d0,
+                         double d1, double fraction_tolerance) {
+  // "Under" is d > 0, as the caller's test (d ≤ 0 against d > 0).
+  return sign_change_fraction([&](double c) { return vertex_depth(stone, step.state_at(c), surface, k); }, d0, d1,
+                              fraction_tolerance);
 }
 
 }  // namespace stoneskip

@@ -7,6 +7,8 @@
 // up to 4 (rk4, Bogacki–Shampine 3(2)); linear interpolation of the depths would cap it at 2. The
 // quaternion is interpolated as four numbers and normalised (its derivative ½(0, ω)⊗q is in the
 // right-hand side, model/README.md §1.3).
+#include <functional>
+
 #include "model/stone/rigid_body.hpp"
 
 namespace stoneskip {
@@ -30,6 +32,10 @@ double vertex_depth(const Stone& stone, const RigidState& s, const WaterSurface*
 // Illinois regula falsi to |Δθ| ≤ fraction_tolerance (Dahlquist & Björck, Numerical Methods
 // §6.2.3); the returned θ is the bracket's end on the side of the step's end.
 constexpr double kFullFractionTolerance = 1e-13;  // a few hundred ulps of the unit interval
+// The same for any function of the fraction whose ends g0, g1 differ in (g > 0): the first θ at
+// which g(θ) is on g1's side, to |Δθ| ≤ fraction_tolerance.
+double sign_change_fraction(const std::function<double(double)>& g, double g0, double g1,
+                            double fraction_tolerance = kFullFractionTolerance);
 double crossing_fraction(const HermiteStep& step, const Stone& stone, const WaterSurface* surface, int k,
                          double d0, double d1, double fraction_tolerance = kFullFractionTolerance);
 

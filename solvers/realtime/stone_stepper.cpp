@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <utility>
 
@@ -10,6 +11,7 @@
 #include "solvers/realtime/clocks.hpp"
 #include "solvers/realtime/dense_output.hpp"
 #include "solvers/realtime/state_scales.hpp"
+#include "solvers/realtime/stone_events.hpp"
 
 namespace stoneskip {
 
@@ -45,6 +47,27 @@ int formal_order(Scheme s) {
 
 bool is_adaptive(Scheme s) { return s == Scheme::bs32; }
 
+const char* to_string(KinkSteps k) {
+  switch (k) {
+    case KinkSteps::none: return "none";
+    case KinkSteps::crossings: return "crossings";
+    case KinkSteps::all: return "all";
+  }
+  return "?";
+}
+
+bool parse_kink_steps(const std::string& s, KinkSteps& out) {
+  for (KinkSteps k : {KinkSteps::none, KinkSteps::crossings, KinkSteps::all}) {
+    if (s == to_string(k)) {
+      out = k;
+      return true;
+    }
+  }
+  return false;
+}
+
+KinkSteps default_kink_steps(Scheme s) { return is_adaptive(s) ? KinkSteps::crossings : KinkSteps::none; }
+
 namespace {
 
 void normalise(RigidState& s) { s.orientation.normalize(); }
@@ -65,18 +88,20 @@ StateVector rhs(const Stone& stone, const Environment& env, const StateVector& y
 
 }  // namespace
 
-RigidState realtime_step(const Stone& stone, const Environment& env, const RigidState& s, double dt,
-                         Scheme scheme, const WaterSurface* surface, long* rhs_evaluations,
-                         std::vector<FacePush>* start_pushes) {
+namespace {
+
+// One step of a scheme from s with its first stage k1 = f(s) given; the other stages are counted.
+RigidState step_from(const Stone& stone, const Environment& env, const RigidState& s, const StateVector& k1, double dt,
+                     Scheme scheme, const WaterSurface* surface, long* rhs_evaluations) {
   RigidState out;
   switch (scheme) {
     case Scheme::semi_implicit_euler: {
       // Forces at the start of the step; velocity and angular momentum first, then position with
       // the new velocity and orientation rotated by the new ω (exact rotation through |ω|dt).
-      const StateDerivative d = rigid_body_rhs(stone, env, s, surface, nullptr, start_pushes);
-      if (rhs_evaluations) ++*rhs_evaluations;
-      out.velocity_m_s = s.velocity_m_s + dt * d.dvelocity;
-      out.angular_momentum_kg_m2_s = s.angular_momentum_kg_m2_s + dt * d.dangular_momentum;
+      const Vec3 dv(k1[kVelocity], k1[kVelocity + 1], k1[kVelocity + 2]);
+      const Vec3 dl(k1[kAngularMomentum], k1[kAngularMomentum + 1], k1[kAngularMomentum + 2]);
+      out.velocity_m_s = s.velocity_m_s + dt * dv;
+      out.angular_momentum_kg_m2_s = s.angular_momentum_kg_m2_s + dt * dl;
       out.position_m = s.position_m + dt * out.velocity_m_s;
       RigidState tmp = s;
       tmp.angular_momentum_kg_m2_s = out.angular_momentum_kg_m2_s;
@@ -89,19 +114,17 @@ RigidState realtime_step(const Stone& stone, const Environment& env, const Rigid
     }
     case Scheme::midpoint: {
       const StateVector y = to_vector(s);
-      const StateVector k1 = rhs(stone, env, y, surface, start_pushes);
       const StateVector k2 = rhs(stone, env, axpy(y, 0.5 * dt, k1), surface);
-      if (rhs_evaluations) *rhs_evaluations += 2;
+      if (rhs_evaluations) *rhs_evaluations += 1;
       out = from_vector(axpy(y, dt, k2).data());
       break;
     }
     case Scheme::rk4: {
       const StateVector y = to_vector(s);
-      const StateVector k1 = rhs(stone, env, y, surface, start_pushes);
       const StateVector k2 = rhs(stone, env, axpy(y, 0.5 * dt, k1), surface);
       const StateVector k3 = rhs(stone, env, axpy(y, 0.5 * dt, k2), surface);
       const StateVector k4 = rhs(stone, env, axpy(y, dt, k3), surface);
-      if (rhs_evaluations) *rhs_evaluations += 4;
+      if (rhs_evaluations) *rhs_evaluations += 3;
       StateVector yn;
       for (int i = 0; i < kStateSize; ++i) yn[i] = y[i] + dt / 6.0 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
       out = from_vector(yn.data());
@@ -109,18 +132,26 @@ RigidState realtime_step(const Stone& stone, const Environment& env, const Rigid
     }
     case Scheme::bs32: {
       // One step of the pair's third-order solution at the given size (no error control).
-      const StateVector y = to_vector(s);
-      const StateVector k1 = rhs(stone, env, y, surface, start_pushes);
       StateVector atol;
       atol.fill(1.0);
-      const Bs32Trial t = bs32_step(stone, env, y, k1, dt, surface, atol, 0.0);
-      if (rhs_evaluations) *rhs_evaluations += 4;
+      const Bs32Trial t = bs32_step(stone, env, to_vector(s), k1, dt, surface, atol, 0.0);
+      if (rhs_evaluations) *rhs_evaluations += 3;
       out = from_vector(t.y1.data());
       break;
     }
   }
   normalise(out);
   return out;
+}
+
+}  // namespace
+
+RigidState realtime_step(const Stone& stone, const Environment& env, const RigidState& s, double dt,
+                         Scheme scheme, const WaterSurface* surface, long* rhs_evaluations,
+                         std::vector<FacePush>* start_pushes) {
+  const StateVector k1 = rhs(stone, env, to_vector(s), surface, start_pushes);
+  if (rhs_evaluations) ++*rhs_evaluations;
+  return step_from(stone, env, s, k1, dt, scheme, surface, rhs_evaluations);
 }
 
 namespace {
@@ -170,12 +201,84 @@ Crossing locate(const HermiteStep& step, const Stone& stone, const WaterSurface*
   return c;
 }
 
-// Whether any vertex is under water at one end of a step and not at the other.
-bool wetted_set_changed(const Waterline& w0, const Waterline& w1) {
-  for (std::size_t j = 0; j < w0.depth_m.size(); ++j)
-    if ((w0.depth_m[j] > 0) != (w1.depth_m[j] > 0)) return true;
-  return false;
-}
+// A fixed step cut back to a kink ends this fraction of the step past it: far below any step, and
+// a kink left that close inside the next step costs O((fraction · dt)²) there.
+constexpr double kFixedKinkWindow = 1e-6;
+
+// The kinks a step watches (KinkSteps) and the first of them inside a step: the fraction θ of
+// the step just past it, located on the step's Hermite interpolant. Vertex crossings are read from
+// the depths at the step's ends (so over live water too); face and air switches from the switching
+// functions of stone_events.hpp, in the mode of the step's start.
+class KinkWatch {
+ public:
+  KinkWatch(const Stone& stone, const Environment& env, const WaterSurface* surface, KinkSteps kinks)
+      : stone_(stone), surface_(surface), kinks_(kinks) {
+    if (kinks == KinkSteps::all) {
+      events_ = std::make_unique<StoneEvents>(stone, env, true, surface);
+      if (events_->count() == events_->vertex_count()) {
+        events_.reset();  // nothing but the crossings (the paper convention, no air switch)
+      } else {
+        g0_.assign(events_->count(), 0.0);
+        g1_ = g0_;
+        under_.assign(events_->vertex_count(), 0);
+      }
+    }
+  }
+  bool active() const { return kinks_ != KinkSteps::none; }
+  // The step's start state: the mode (vertices under water, live faces) and the functions there.
+  void start(const StateVector& y0) {
+    if (!events_) return;
+    const std::vector<char> before = under_;
+    events_->set_mode(from_vector(y0.data()));
+    for (int j = 0; j < events_->vertex_count(); ++j) under_[j] = events_->vertex_under(j);
+    // The step before ended here in the same mode: its end values are these.
+    if (have_g1_ && y0 == y1_ && under_ == before) {
+      g0_ = g1_;
+      ok0_ = true;
+    } else {
+      ok0_ = events_->evaluate(y0.data(), g0_.data());
+    }
+    have_g1_ = false;
+  }
+  // The first kink with θ > skip_below (a kink the step before was cut to lies just after its
+  // start), located to fraction_tolerance; negative when no watched function changes sign.
+  double first(const HermiteStep& dense, const Waterline& w0, const Waterline& w1, double fraction_tolerance,
+               double skip_below) {
+    double first = 2;
+    if (kinks_ == KinkSteps::none) return -1;
+    for (std::size_t j = 0; j < w0.depth_m.size(); ++j) {
+      const double d0 = w0.depth_m[j], d1 = w1.depth_m[j];
+      if ((d0 > 0) == (d1 > 0)) continue;
+      const double f = crossing_fraction(dense, stone_, surface_, static_cast<int>(j), d0, d1, fraction_tolerance);
+      if (f > skip_below) first = std::min(first, f);
+    }
+    have_g1_ = events_ && ok0_ && events_->evaluate(dense.y1.data(), g1_.data());
+    if (have_g1_) {
+      y1_ = dense.y1;
+      for (int k = events_->vertex_count(); k < events_->count(); ++k) {
+        if ((g0_[k] > 0) == (g1_[k] > 0)) continue;
+        const double f = sign_change_fraction(
+            [&](double c) {
+              const StateVector y = dense.at(c);
+              return events_->value(y.data(), k);
+            },
+            g0_[k], g1_[k], fraction_tolerance);
+        if (f > skip_below) first = std::min(first, f);
+      }
+    }
+    return first <= 1 ? first : -1;
+  }
+
+ private:
+  const Stone& stone_;
+  const WaterSurface* surface_;
+  KinkSteps kinks_;
+  std::unique_ptr<StoneEvents> events_;
+  std::vector<double> g0_, g1_;
+  std::vector<char> under_;  // the mode of the last start
+  StateVector y1_{};         // where g1_ was evaluated (the last trial's end)
+  bool ok0_ = false, have_g1_ = false;
+};
 
 // The largest flight step after which no vertex can be deeper than dip_m (the depth of a dip
 // that a step could enter and leave unseen): the lowest vertex, `clearance_m` above the water,
@@ -217,9 +320,14 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
     std::ostringstream name;
     if (adaptive)
       name << "realtime (" << to_string(o.scheme) << ", rtol=" << o.rtol << ", atol=" << o.atol_m << " m, max dt=" << o.dt_s
-           << " s)";
+           << " s";
     else
-      name << "realtime (" << to_string(o.scheme) << ", dt=" << o.dt_s << " s, contact dt=" << o.contact_dt_s << " s)";
+      name << "realtime (" << to_string(o.scheme) << ", dt=" << o.dt_s << " s, contact dt=" << o.contact_dt_s << " s";
+    // What departs from the scheme's defaults.
+    const KinkSteps k = o.kinks.value_or(default_kink_steps(o.scheme));
+    if (k != default_kink_steps(o.scheme)) name << ", kinks " << to_string(k);
+    if (adaptive && o.rhs_per_frame > 0) name << ", at most " << o.rhs_per_frame << " rhs per " << o.frame_dt_s << " s frame";
+    name << ")";
     r.solver = name.str();
   }
   r.release_position_m = initial.position_m;
@@ -296,6 +404,11 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
   double h = std::min(o.dt_s, 1e-2 * scales.length_m / scales.speed_m_s);
   StateVector k_start{};  // f at the start of the step (FSAL), valid while have_k
   bool have_k = false;
+  KinkWatch kinks(stone, env, surface, o.kinks.value_or(default_kink_steps(o.scheme)));
+  // The frame budget (bs32): the end of the current frame and the right-hand sides spent before it began.
+  const bool budgeted = adaptive && o.rhs_per_frame > 0;
+  double frame_end_s = 0;
+  long frame_rhs0 = 0;
 
   bool going = settle(0);
   record(0, s, now.wet() ? wetted_area(s) : 0.0);
@@ -312,9 +425,10 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
     RigidState s_new;
     double dt = 0;
     bool near = false;
-    HermiteStep dense;  // the step's interpolant; filled here for bs32, at a transition for the others
+    HermiteStep dense;  // the step's interpolant; filled here for bs32 and kink-watching steps, else at a transition
     bool have_dense = false;
     double trial_wetted_m2 = 0;  // bs32: the wetted area at the step's end
+    constexpr int kMaxKinkCuts = 64;  // each cut shortens the step; a guard, never reached in practice
     if (!adaptive) {
       // Step size: fine while in the water or while the lowest vertex could reach it in one flight
       // step (clearance < max vertex speed × dt).
@@ -323,7 +437,41 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
       near = now.deepest_m() > -reach;
       dt = near ? o.contact_dt_s : o.dt_s;
       if (t + dt > o.t_max_s) dt = o.t_max_s - t;
-      s_new = realtime_step(stone, env, s, dt, o.scheme, surface, &r.stats.rhs_evaluations, step_start_pushes);
+      if (!kinks.active()) {
+        s_new = realtime_step(stone, env, s, dt, o.scheme, surface, &r.stats.rhs_evaluations, step_start_pushes);
+        if (finite(s_new)) measure_waterline(stone, s_new, surface, next);
+      } else {
+        // Steps that end at the kinks: a trial over which a watched function changes sign is cut back
+        // to just past its first root and taken again; f at the end (the interpolant's, and the next
+        // step's first stage) costs one right-hand side.
+        const StateVector y0 = to_vector(s);
+        if (!have_k) {
+          k_start = rhs(stone, env, y0, surface, step_start_pushes);
+          ++r.stats.rhs_evaluations;
+          have_k = true;
+        }
+        kinks.start(y0);
+        StateVector k_end{};
+        for (int attempt = 0;; ++attempt) {
+          s_new = step_from(stone, env, s, k_start, dt, o.scheme, surface, &r.stats.rhs_evaluations);
+          if (!finite(s_new)) break;
+          const StateVector y1 = to_vector(s_new);
+          k_end = rhs(stone, env, y1, surface);
+          ++r.stats.rhs_evaluations;
+          measure_waterline(stone, s_new, surface, next);
+          dense = HermiteStep{y0, y1, k_start, k_end, dt};
+          const double window = kFixedKinkWindow * dt;
+          const double f = attempt < kMaxKinkCuts ? kinks.first(dense, now, next, kFullFractionTolerance, window / dt) : -1;
+          if (f > 0 && (1 - f) * dt > window) {
+            dt = f * dt + window;
+            ++r.stats.root_evaluations;
+            continue;
+          }
+          break;
+        }
+        k_start = k_end;  // the next step's first stage (FSAL)
+        have_dense = true;
+      }
       if (!finite(s_new)) {
         std::ostringstream m;
         m << "the state became NaN or infinite (step " << dt << " s is unstable here)";
@@ -332,31 +480,45 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
         t = t + dt;
         break;
       }
-      measure_waterline(stone, s_new, surface, next);
     } else {
-      // Error-controlled step; a trial whose ends have different wetted sets is cut back to just
-      // past its first crossing (located on its interpolant), so each kink of the right-hand side
+      // Error-controlled step; a trial whose ends differ in a watched kink (by default the wetted
+      // set) is cut back to just past its first kink (located on its interpolant), so each kink
       // lies within two event windows of a step's end and the error estimate sees smooth steps.
       near = now.wet();
       const StateVector y0 = to_vector(s);
+      if (budgeted && t >= frame_end_s - 1e-9 * o.frame_dt_s) {
+        while (frame_end_s <= t + 1e-9 * o.frame_dt_s) frame_end_s += o.frame_dt_s;
+        frame_rhs0 = r.stats.rhs_evaluations;
+      }
       if (!have_k) {
         k_start = rhs(stone, env, y0, surface, step_start_pushes);
         ++r.stats.rhs_evaluations;
         have_k = true;
       }
+      kinks.start(y0);
       double h_resume = 0;  // the controller's proposal before an event cut the step back
       bool ok = false;
       Bs32Trial trial;
       for (int attempt = 0;; ++attempt) {
         double hh = std::min({h, o.dt_s, o.t_max_s - t});
         if (!now.wet()) hh = std::min(hh, flight_step_limit(stone, env, s, -now.deepest_m(), dip_m, surface == nullptr));
+        // With a budget: the step ends by the frame's end and is no shorter than the budget left
+        // allows (each trial costs three right-hand sides); such a step is accepted whatever its error.
+        double floor_h = 0;
+        if (budgeted) {
+          const double left_s = std::min(frame_end_s, o.t_max_s) - t;
+          const long trials = std::max(1L, (o.rhs_per_frame - (r.stats.rhs_evaluations - frame_rhs0)) / 3);
+          floor_h = left_s / static_cast<double>(trials);
+          hh = std::clamp(hh, floor_h, left_s);
+        }
         if (!(hh > 1e-14 * std::max(1.0, t))) {
           failed(t, "the adaptive step fell below round-off");
           break;
         }
         trial = bs32_step(stone, env, y0, k_start, hh, surface, atol, o.rtol);
         r.stats.rhs_evaluations += 3;
-        if (!(trial.error_norm <= 1.0)) {  // too large, or NaN
+        const bool forced = budgeted && hh <= floor_h * (1 + 1e-12);
+        if (!(trial.error_norm <= 1.0) && !(forced && std::isfinite(trial.error_norm))) {  // too large, or NaN
           ++r.stats.error_test_failures;
           h = std::isfinite(trial.error_norm) ? bs32_next_step(hh, trial.error_norm) : 0.25 * hh;
           continue;
@@ -364,21 +526,23 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
         const RigidState candidate = from_vector(trial.y1.data());
         measure_waterline(stone, candidate, surface, next);
         dense = HermiteStep{y0, trial.y1, k_start, trial.k4, hh};
-        constexpr int kMaxEventCuts = 64;  // each cut shortens the step; a guard, never reached in practice
-        if (attempt < kMaxEventCuts && wetted_set_changed(now, next)) {
-          // Located to a tenth of the window: enough to end the cut step past the crossing.
-          const Crossing c =
-              locate(dense, stone, surface, now, next, Direction::either, Pick::first, -1, 0.1 * event_window_s / hh);
-          if ((1 - c.fraction) * hh > 2 * event_window_s) {
+        if (attempt < kMaxKinkCuts) {
+          // Located to a tenth of the window: enough to end the cut step past the kink.
+          const double f = kinks.first(dense, now, next, 0.1 * event_window_s / hh, 0.0);
+          const double cut = f * hh + event_window_s;
+          if (f > 0 && (1 - f) * hh > 2 * event_window_s && cut >= floor_h) {
             if (h_resume == 0) h_resume = bs32_next_step(hh, trial.error_norm);
-            h = c.fraction * hh + event_window_s;
-            ++r.stats.root_evaluations;  // real-time bs32: steps cut back to a crossing
+            h = cut;
+            ++r.stats.root_evaluations;  // real-time: steps cut back to a kink
             continue;
           }
         }
+        if (trial.error_norm > 1.0) ++r.stats.budget_forced_steps;
         dt = hh;
         s_new = candidate;
         h = std::max(bs32_next_step(hh, trial.error_norm), h_resume);
+        r.stats.max_error_ratio = std::max(r.stats.max_error_ratio, trial.error_norm);
+        r.stats.position_error_estimate_m += trial.position_error_m;
         ok = true;
         break;
       }

@@ -49,6 +49,7 @@ void BM_WholeThrow(benchmark::State& state) {
   Environment env;
   env.convention = state.range(0) ? Convention::paper : Convention::physical;
   RealtimeOptions o;
+  o.scheme = Scheme::semi_implicit_euler;  // a fixed-step study (the default is bs32)
   o.dt_s = 1e-3;
   o.contact_dt_s = 1e-5;
   o.t_max_s = 10.0;

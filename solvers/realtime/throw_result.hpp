@@ -40,10 +40,16 @@ struct SolverStats {
   long steps = 0;              // accepted steps (all segments)
   long contact_steps = 0;      // real-time: steps taken with the contact step size (bs32: started wet)
   long rhs_evaluations = 0;
-  long root_evaluations = 0;   // reference; real-time bs32: trial steps cut back to a surface crossing
+  long root_evaluations = 0;   // reference; real-time: trial steps cut back to a kink (KinkSteps)
   long error_test_failures = 0;  // reference; real-time bs32: trial steps rejected by the error test
   long nonlinear_iterations = 0;  // reference only
   long segments = 0;           // reference: integrations between located events
+  // Real-time bs32: the largest error-test ratio of an accepted step (≤ 1 unless a frame's budget
+  // forced it), the steps a budget forced, and the summed local error estimates of the positions
+  // (m; ‖ŷ − y‖ over x, accepted steps): the error made, before propagation.
+  double max_error_ratio = 0;
+  long budget_forced_steps = 0;
+  double position_error_estimate_m = 0;
   double cpu_s = 0;            // CPU time of the solve: its own thread's (solvers/realtime/clocks.hpp)
   double wall_s = 0;           // wall-clock time of the solve (longer than cpu_s when cores are shared)
 };

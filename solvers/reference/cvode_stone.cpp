@@ -3,7 +3,7 @@
 // The problem (model/README.md §1.3): y = [x, v, q, L] ∈ R¹³,
 //   dx/dt = v,  m dv/dt = F_gravity + F_air + Σ F_i,  dq/dt = ½ (0, ω) ⊗ q,  dL/dt = Σ τ_i,
 // with the right-hand side of model/stone/rigid_body.hpp (still water). Root finding
-// (solvers/reference/stone_events.hpp) locates every vertex crossing (and, with
+// (solvers/realtime/stone_events.hpp) locates every vertex crossing (and, with
 // RestartStrategy::every_event, every face and air switch); at the events the strategy names, the
 // integration restarts with CVodeReInit, the quaternion renormalised. Elsewhere it continues: the
 // event is logged (contacts, sinking), the discrete mode and the watched root directions are
@@ -36,7 +36,7 @@
 
 #include "solvers/realtime/clocks.hpp"
 #include "solvers/reference/absolute_tolerance.hpp"
-#include "solvers/reference/stone_events.hpp"
+#include "solvers/realtime/stone_events.hpp"
 
 namespace stoneskip {
 
@@ -148,7 +148,7 @@ struct CvodeObjects {
 class ReferenceSolve {
  public:
   ReferenceSolve(const Stone& stone, const Environment& env, const ReferenceOptions& o, ThrowResult& r)
-      : stone_(stone), env_(env), o_(o), r_(r), events_(stone, env, o.restart),
+      : stone_(stone), env_(env), o_(o), r_(r), events_(stone, env, o.restart == RestartStrategy::every_event),
         problem_{stone, env, events_, {}}, g_(events_.count()), found_(events_.count()),
         event_times_(std::clamp(o.max_events_per_ms, 1, kMaxEventsPerMs), -1e300) {}
 

@@ -10,7 +10,7 @@
 //
 // Still water only (η = 0; there is no WaterSurface argument): the event functions and the claim
 // that the clipped area is smooth between vertex crossings hold for a flat surface.
-// Events (solvers/reference/stone_events.hpp): every vertex crossing z = 0 (contact starts when the
+// Events (solvers/realtime/stone_events.hpp): every vertex crossing z = 0 (contact starts when the
 // first vertex goes under, ends when the last comes out, the stone sinks when all are under); in
 // the physical convention with every_event also the switch of Eq. 2 on every wet face and the air
 // switch of Eq. 6. In the paper convention the force ∝ u² is smooth in u.

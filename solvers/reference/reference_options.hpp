@@ -14,7 +14,7 @@ bool parse_reference_method(const std::string& s, ReferenceMethod& out);
 // Where the integration restarts (CVodeReInit: order 1, a fresh step-size estimate, the quaternion
 // renormalised). Every vertex crossing the surface is always located by root finding and logged
 // (contact starts and ends, the sinking); the strategies differ in what else is located and where
-// CVODE's multistep history is thrown away (solvers/reference/stone_events.hpp says which points
+// CVODE's multistep history is thrown away (solvers/realtime/stone_events.hpp says which points
 // are non-smooth and how):
 //   every_event:    also locate each wet face's switch u_i = 0 and the air switch (physical
 //                   convention); restart at every located event.

@@ -16,6 +16,7 @@ SceneOptions seed_throw_scene(int nx, int ny, double origin_x_m, double origin_y
   tp.spin_rev_s = 10;
   tp.height_m = 0.1;
   o.initial = initial_state(o.stone, tp);
+  o.stone_steps.scheme = Scheme::semi_implicit_euler;  // the game-engine stepper, fixed steps
   o.stone_steps.dt_s = 1e-3;
   o.stone_steps.contact_dt_s = 1e-5;
   o.coupling = coupling;

@@ -45,9 +45,11 @@ struct BenchArgs {
   bool quick = false;
   bool every_isa = false;
   bool cpu_clock = false;
+  bool sweep_only = false;
   std::string scene = "cases/scenes/seed_8ms.toml";
   std::string sweep_case = "cases/spin_sweep_base.toml";
   double sweep_rtol = 0;  // 0: kSweepTolerance
+  std::string sweep_kinks;  // empty: the scheme's default
   int repeats = 3;
   ResourceLimits limits;
 };
@@ -135,10 +137,15 @@ void bench(const BenchArgs& a) {
   if (!(sweep_tolerance >= 1e-12 && sweep_tolerance <= 1e-2)) throw_input_error("--sweep-rtol", 0, "", "must be in [1e-12, 1e-2]");
   o.sweep.base.realtime.scheme = Scheme::bs32;
   o.sweep.base.realtime.rtol = o.sweep.base.realtime.atol_m = sweep_tolerance;
+  KinkSteps kinks = default_kink_steps(Scheme::bs32);
+  if (!a.sweep_kinks.empty() && !parse_kink_steps(a.sweep_kinks, kinks))
+    throw_input_error("--sweep-kinks", 0, "", "must be none, crossings or all (got " + a.sweep_kinks + ")");
+  o.sweep.base.realtime.kinks = kinks;
   o.sweep.spins_rev_s = range(0, 60, 2.5);
   o.sweep.attack_angles_deg = range(0, 30, 2.5);
   o.sweep.repeats = a.repeats;
   o.every_isa = a.every_isa;
+  o.sweep_only = a.sweep_only;
   if (a.quick) {
     o.scene.duration_s = std::min(o.scene.duration_s, 0.5);
     o.scene_repeats = 1;
@@ -193,6 +200,8 @@ void bench(const BenchArgs& a) {
   j["sweep_scheme"] = to_string(o.sweep.base.realtime.scheme);
   j["sweep_rtol"] = o.sweep.base.realtime.rtol;
   j["sweep_atol_m"] = o.sweep.base.realtime.atol_m;
+  j["sweep_kinks"] = to_string(*o.sweep.base.realtime.kinks);
+  j["sweep_rhs_evaluations"] = h.sweep.rhs_evaluations;
   j["sweep_bounces"] = h.sweep.bounces;
   j["sweep_cvode_rtols"] = {kCvodeTolerances[0], kCvodeTolerances[1]};
   j["sweep_cvode_bounces"] = {cvode.bounces[0], cvode.bounces[1]};
@@ -291,6 +300,8 @@ void add_bench(CLI::App& app) {
   auto* cmd = app.add_subcommand("bench", "Measure the headline speed figures (scene frames/s, stencil against the copy bound, sweep throws/s)");
   cmd->add_flag("--json", a->json, "Print one JSON object");
   cmd->add_flag("--quick", a->quick, "A smoke run of seconds (shorter scene, fewer samples, a small sweep, 1024² instead of 2048²)");
+  cmd->add_flag("--sweep-only", a->sweep_only,
+                "Only the bounce-count sweep and its CVODE agreement (the scene and stencil keys are then 0)");
   cmd->add_flag("--every-isa", a->every_isa, "Also measure the stencil on every instruction-set path the CPU supports, side by side");
   cmd->add_flag("--cpu-clock", a->cpu_clock,
                 "Time the stencil on the thread's CPU clock (one thread), not wall: on a loaded machine it leaves out the time "
@@ -299,6 +310,7 @@ void add_bench(CLI::App& app) {
   cmd->add_option("--sweep-case", a->sweep_case, "The throw whose spin and attack angle the sweep varies")->capture_default_str();
   cmd->add_option("--sweep-rtol", a->sweep_rtol,
                   "The sweep's tolerance (bs32, rtol = atol_m; default " + g(kSweepTolerance) + ", from solvers/README.md's work-precision table)");
+  cmd->add_option("--sweep-kinks", a->sweep_kinks, "Which kinks end the sweep's steps: none, crossings or all (default: bs32's, all)");
   cmd->add_option("--repeats", a->repeats, "Runs of the scene and of the sweep (the best is reported)")->capture_default_str();
   add_limit_options(cmd, a->limits);
   cmd->callback([a] { bench(*a); });

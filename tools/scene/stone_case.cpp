@@ -169,6 +169,19 @@ RealtimeOptions read_solver(TomlTable t) {
     o.dt_s = t.number("dt_s");
     o.contact_dt_s = t.number("contact_dt_s");
   }
+  if (t.has("kinks")) {
+    const std::string k = t.string_or("kinks", "");
+    KinkSteps kinks{};
+    if (!parse_kink_steps(k, kinks)) t.fail("kinks", "must be \"none\", \"crossings\" or \"all\" (got \"" + k + "\")");
+    o.kinks = kinks;
+  }
+  if (t.has("rhs_per_frame")) {
+    if (!is_adaptive(o.scheme)) t.fail("rhs_per_frame", std::string("is the adaptive scheme's budget; scheme \"") + scheme + "\" takes fixed steps");
+    o.rhs_per_frame = t.bounded_integer_or("rhs_per_frame", 0, kMinRhsPerFrame, kMaxRhsPerFrame);
+    o.frame_dt_s = t.bounded_or("frame_dt_s", o.frame_dt_s, kMinStep_s, kMaxStep_s);
+  } else if (t.has("frame_dt_s")) {
+    t.fail("frame_dt_s", "sets the frame of a right-hand-side budget: give rhs_per_frame too");
+  }
   o.t_max_s = t.number("t_max_s");
   o.output_dt_s = t.number_or("output_dt_s", is_adaptive(o.scheme) ? kAdaptiveOutputStep_s : o.dt_s);
   if (const auto problem = realtime_options_problem(o)) t.fail(problem->first, problem->second);

@@ -37,6 +37,8 @@ constexpr double kMinTolerance = 1e-14, kMaxTolerance = 0.1;    // solver rtol, 
 constexpr double kAdaptiveLargestStep_s = 1e-2;  // bs32's dt_s when a case gives none: 3.6 turns at 60 rev/s
                                                  // in flight would fail its error test anyway
 constexpr double kAdaptiveOutputStep_s = 1e-3;   // bs32's output_dt_s when a case gives none
+constexpr long kMinRhsPerFrame = 4;          // bs32's budget: the first right-hand side and one trial step
+constexpr long kMaxRhsPerFrame = 1000000;
 constexpr double kMinDuration_s = 1e-6, kMaxDuration_s = 1e5;  // solver t_max_s
 constexpr double kMaxStepsPerThrow = 1e9;       // t_max_s / contact_dt_s
 constexpr double kMaxWaterOrigin_m = 1e6;       // |water.origin_x_m|, |water.origin_y_m|

@@ -138,6 +138,10 @@ void read_convergence(TomlTable t, StoneStudiesOptions& o) {
   c.adaptive_tolerances = tolerance_list(t, "adaptive_tolerances", c.adaptive_tolerances);
   c.contact_ratio = t.number_or("contact_ratio", c.contact_ratio);
   t.require_in("contact_ratio", c.contact_ratio, 1e-4, 1.0);
+  if (t.has("kinks")) {
+    const std::string k = t.string("kinks");
+    if (!parse_kink_steps(k, c.fixed_kinks)) t.fail("kinks", "must be \"none\", \"crossings\" or \"all\" (got \"" + k + "\")");
+  }
   if (auto n = t.maybe_numbers("interval_steps")) {
     c.interval_steps.clear();
     for (double x : *n) {

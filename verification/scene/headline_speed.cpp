@@ -82,7 +82,7 @@ SweepSpeed measure_sweep(const SweepSpeedOptions& o, ProgressTicker& ticker) {
   s.workers = o.workers;
   std::vector<int> bounces(throws.size());
   std::vector<double> cpu(throws.size()), simulated(throws.size());
-  std::vector<long> steps(throws.size()), contact_steps(throws.size());
+  std::vector<long> steps(throws.size()), contact_steps(throws.size()), rhs(throws.size());
   for (int k = 0; k < o.repeats; ++k) {
     ParallelOptions po;
     po.workers = o.workers;
@@ -95,6 +95,7 @@ SweepSpeed measure_sweep(const SweepSpeedOptions& o, ProgressTicker& ticker) {
           cpu[i] = r.stats.cpu_s;
           steps[i] = r.stats.steps;
           contact_steps[i] = r.stats.contact_steps;
+          rhs[i] = r.stats.rhs_evaluations;
           simulated[i] = r.end_time_s;
         },
         po);
@@ -104,11 +105,12 @@ SweepSpeed measure_sweep(const SweepSpeedOptions& o, ProgressTicker& ticker) {
       s.best_wall_s = w;
       s.cpu_s = 0;
       for (double c : cpu) s.cpu_s += c;
-      s.steps = s.contact_steps = 0;
+      s.steps = s.contact_steps = s.rhs_evaluations = 0;
       s.simulated_s = 0;
       for (std::size_t i = 0; i < throws.size(); ++i) {
         s.steps += steps[i];
         s.contact_steps += contact_steps[i];
+        s.rhs_evaluations += rhs[i];
         s.simulated_s += simulated[i];
       }
     }
@@ -146,6 +148,11 @@ HeadlineSpeed measure_headline_speed(const HeadlineSpeedOptions& o, const Progre
   h.cpu_model = cpu_model();
   for (SimdPath p : supported_simd_paths()) h.supported_isas.push_back(to_string(p));
   auto ticker = start_progress(progress, "bench", static_cast<std::size_t>(2 * o.scene_repeats + 2 + o.sweep.repeats));
+  if (o.sweep_only) {
+    h.sweep = measure_sweep(o.sweep, *ticker);
+    h.load_after = load_average();
+    return h;
+  }
   h.scene_one = measure_scene(o.scene, 1, o.scene_repeats, *ticker);
   h.scene_many = measure_scene(o.scene, o.many_threads, o.scene_repeats, *ticker);
   ThroughputOptions t = o.stencil;

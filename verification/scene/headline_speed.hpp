@@ -45,6 +45,7 @@ struct HeadlineSpeedOptions {
   ThroughputOptions stencil;          // stencil, precision, clock, samples (n and threads set per run)
   int temporal_steps = 16;            // steps per wavefront call at the large grid (0: not measured)
   bool every_isa = false;             // the stencil on every supported path too
+  bool sweep_only = false;            // only the sweep (no scene, no stencil): its keys alone are meaningful
   SweepSpeedOptions sweep;
   bool is_valid(std::string* why = nullptr) const;
 };
@@ -68,6 +69,7 @@ struct SweepSpeed {
   double cpu_s = 0;                   // summed thread CPU of the throws, best repeat
   // What a throw costs (the profile of the sweep's time): summed over the throws of one repeat.
   long steps = 0, contact_steps = 0;  // all stone steps; those with the contact step size
+  long rhs_evaluations = 0;           // right-hand sides
   double simulated_s = 0;             // Σ of each throw's end time
   std::vector<int> bounce_histogram;  // throws with 0, 1, 2, … bounces
   std::vector<int> bounces;           // per throw, spins outer, attack angles inner (−1: failed)

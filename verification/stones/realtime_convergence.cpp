@@ -220,6 +220,7 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
           } else {
             ro.dt_s = settings[a][b];
             ro.contact_dt_s = o.contact_ratio * settings[a][b];
+            ro.kinks = o.fixed_kinks;
           }
           ro.record_trajectory = false;
           StepperPoint& pt = points[a][b];

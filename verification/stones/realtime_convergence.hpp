@@ -39,6 +39,10 @@ struct RealtimeConvergenceOptions {
   std::vector<Scheme> schemes{Scheme::semi_implicit_euler, Scheme::midpoint, Scheme::rk4};
   std::vector<double> dt_s{4e-3, 2e-3, 1e-3, 5e-4, 2.5e-4, 1.25e-4};  // whole stepper: flight steps
   double contact_ratio = 0.1;                    // contact step = ratio · dt
+  // Whole stepper, fixed schemes: which kinks end a step (stone_stepper.hpp). `all` by default: a
+  // step across a kink makes an O(h²)–O(h³) local error, so without it no scheme shows more than
+  // order 2–3 through a contact, and the events' orders would say so, not the scheme's order.
+  KinkSteps fixed_kinks = KinkSteps::all;
   // Whole stepper, adaptive schemes (bs32) in `schemes`: rtol = atol_m over these, descending. Its
   // error is fitted against the tolerance, expected order 1 (an error-per-step controller on a
   // pair with local extrapolation makes a global error ∝ tol); the scheme alone is its fixed-step

@@ -161,6 +161,7 @@ Record run_stone_studies(const StoneStudiesOptions& o, StudySink& sink) {
     r.child("reference_tolerance").set("truth_rtol", to.truth_rtol);
     r.child("reference_tolerance").set("atol_ratio", to.atol_ratio);
     r.set("contact_ratio", co.contact_ratio);
+    r.set("fixed_kinks", std::string(to_string(co.fixed_kinks)));
     r.set("law", series_name(throws.front(), o.convergence_distributions));
     std::vector<std::string> others;
     for (std::size_t k = 1; k < throws.size(); ++k) {

@@ -1,7 +1,8 @@
 #pragma once
-// The event (root) functions that split a throw into smooth segments for the CVODE reference
-// (still water η = 0 only: a moving height field would make every root function time-dependent
-// through the surface, which this reference does not support).
+// The event (root) functions that split a throw into smooth segments: the CVODE reference locates
+// them, and the real-time stepper steps to them with KinkSteps::all (stone_stepper.hpp). Still
+// water η = 0 for the reference; the real-time stepper holds a live surface fixed during each step
+// (stone_stepper.hpp) and clips the faces against it.
 //
 // The right-hand side of model/README.md §1.3–1.6 is smooth except where
 //   (a) a vertex crosses the surface: the clipped polygons change shape (§1.4 step 2). For a
@@ -21,13 +22,12 @@
 //   (c) physical convention with air: the disk's normal velocity u = v·n_d changes sign; the
 //       air force −C_a ρ_a u|u| S_d n_d (§1.5) is C¹ there. In the paper convention u² is smooth.
 // Between events the set of submerged vertices is fixed, so each live root function is smooth.
-// (b) and (c) are located only with RestartStrategy::every_event; (a) always (contacts and sinking
+// (b) and (c) are located only on request (the reference's RestartStrategy::every_event); (a) always (contacts and sinking
 // are defined by it, model/README.md §1.8). EventChange::flat_faces says where (a) is a jump of the force.
 //
 #include <vector>
 
 #include "model/stone/rigid_body.hpp"
-#include "solvers/reference/reference_options.hpp"
 
 namespace stoneskip {
 
@@ -46,14 +46,22 @@ struct EventChange {
 
 class StoneEvents {
  public:
-  // The face and air switches (b), (c) are located only for RestartStrategy::every_event.
-  StoneEvents(const Stone& stone, const Environment& env, RestartStrategy restart);
+  // The face and air switches (b), (c) are watched only with locate_switches (the CVODE reference:
+  // RestartStrategy::every_event; the real-time stepper: KinkSteps::all).
+  // surface (the real-time stepper over live water, held during a step): the faces are clipped, and
+  // set_mode's vertices are under, against it; the root functions of the vertices stay z_j.
+  StoneEvents(const Stone& stone, const Environment& env, bool locate_switches, const WaterSurface* surface = nullptr);
 
   int count() const { return static_cast<int>(directions_.size()); }
   int vertex_count() const { return nv_; }
 
   // Sets the mode from a state: vertex j is under water where z_j < 0 (the start of a throw).
   void reset(const RigidState& s);
+  // Only the mode from a state (vertex j under water where z_j < 0), no watched directions: the
+  // real-time stepper's view at the start of each step.
+  void set_mode(const RigidState& s);
+  // Root function k alone at y (the real-time stepper's root search).
+  double value(const double* y, int k) const;
   // Root functions at y (kStateSize doubles) into g (count() doubles). False when a value is not
   // finite (the caller fails the solve).
   bool evaluate(const double* y, double* g) const;
@@ -71,6 +79,7 @@ class StoneEvents {
   Kind kind(int k) const;
 
  private:
+  double depth(const Vec3& world_point) const;  // η − z
   double face_normal_velocity(int i, const RigidState& s, const Mat3& R, const Vec3& omega) const;
   double air_normal_velocity(const RigidState& s, const Mat3& R) const;
   double velocity_scale(const RigidState& s, const Vec3& omega) const;
@@ -79,6 +88,7 @@ class StoneEvents {
 
   const Stone& stone_;
   const Environment& env_;
+  const WaterSurface* surface_ = nullptr;
   int nv_ = 0, nf_ = 0;  // nf_ = 0 when face switches are not located
   bool air_ = false;
   std::vector<char> under_;      // mode: vertex under water

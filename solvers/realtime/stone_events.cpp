@@ -1,4 +1,4 @@
-#include "solvers/reference/stone_events.hpp"
+#include "solvers/realtime/stone_events.hpp"
 
 #include <cmath>
 
@@ -24,11 +24,10 @@ constexpr double kFlatFace_m = 1e-9;
 int sign_of(double u) { return u > 0 ? 1 : (u < 0 ? -1 : 0); }
 }  // namespace
 
-StoneEvents::StoneEvents(const Stone& stone, const Environment& env, RestartStrategy restart)
-    : stone_(stone), env_(env) {
+StoneEvents::StoneEvents(const Stone& stone, const Environment& env, bool locate_switches, const WaterSurface* surface)
+    : stone_(stone), env_(env), surface_(surface) {
   nv_ = static_cast<int>(stone.body_mesh.vertices.size());
   const bool physical = env.convention == Convention::physical;
-  const bool locate_switches = restart == RestartStrategy::every_event;
   faces_of_vertex_.assign(nv_, {});
   for (int i = 0; i < static_cast<int>(stone.body_mesh.triangles.size()); ++i)
     for (int j : stone.body_mesh.triangles[i]) faces_of_vertex_[j].push_back(i);
@@ -68,7 +67,7 @@ double StoneEvents::face_normal_velocity(int i, const RigidState& s, const Mat3&
   double d[3];
   for (int k = 0; k < 3; ++k) {
     p[k] = world_vertex(stone_, s, R, t[k]);
-    d[k] = -p[k].z();  // still water: d = η − z with η = 0
+    d[k] = depth(p[k]);  // d = η − z
   }
   const ClippedArea c = clip_submerged(p[0], p[1], p[2], d[0], d[1], d[2]);
   Vec3 point;
@@ -118,6 +117,24 @@ bool StoneEvents::evaluate(const double* y, double* g) const {
     if (!std::isfinite(g[k])) return false;
   }
   return true;
+}
+
+void StoneEvents::set_mode(const RigidState& s) {
+  const Mat3 R = s.orientation.normalized().toRotationMatrix();
+  for (int j = 0; j < nv_; ++j) under_[j] = depth(world_vertex(stone_, s, R, j)) > 0;
+}
+
+double StoneEvents::depth(const Vec3& p) const { return (surface_ ? surface_->height_m(p.x(), p.y()) : 0.0) - p.z(); }
+
+double StoneEvents::value(const double* y, int k) const {
+  const RigidState s = from_vector(y);
+  const Mat3 R = s.orientation.normalized().toRotationMatrix();
+  if (k < nv_) return y[kPosition + 2] + R.row(2).dot(stone_.body_mesh.vertices[k]);
+  const Vec3 omega = angular_velocity(stone_, s);
+  const double snap = kSwitchSnap * velocity_scale(s, omega);
+  const double u = k < nv_ + nf_ ? (face_live(k - nv_) ? face_normal_velocity(k - nv_, s, R, omega) : 1.0)
+                                 : air_normal_velocity(s, R);
+  return std::abs(u) <= snap ? 0.0 : u;
 }
 
 void StoneEvents::reset(const RigidState& s) {
