@@ -62,7 +62,7 @@ template <class S>
 // shifted-right, the order of the scalar expression). With 32-byte vectors (AVX2) a shift across
 // two vectors is two shuffles, a lane-crossing one that builds the straddling vector
 // [prev's upper half, cur's lower half] and an in-lane one; the straddling vector of (cur, next)
-// is also the one of the next vector's left shift, so a stream carries it (`Sides::straddle`) and
+// is also the one of the next vector's left shift, so a stream carries it (`Sides::m`) and
 // pays three shuffles per vector, not four. Other widths shift in one shuffle and carry nothing.
 template <class S>
 struct Sides {
@@ -588,7 +588,7 @@ int wavefront_depth(std::ptrdiff_t row_bytes) {
   // not fit L2: streamed from L3 the pair kernel runs at its in-cache rate, and each level a pass
   // adds saves a sweep over memory. So the budget is a share of L3 (32 MB on the machines
   // measured), not L2. Measured at 2048² float64 (16 KB rows) on AVX2, 2-core AMD EPYC, loaded,
-  // 16 steps a call, cells/s: 5 levels a pass 1.1e9, 13 (8 + 8) 1.45e9, 16 1.6e9; one step 0.7e9.
+  // 16 steps a call, cells/s: passes of 4 levels 1.1e9, of 8 1.45e9, one of 16 1.6e9; one step 0.7e9.
   constexpr std::ptrdiff_t kBudgetBytes = 4 << 20;
   return static_cast<int>(std::clamp<std::ptrdiff_t>(kBudgetBytes / (4 * std::max<std::ptrdiff_t>(row_bytes, 1)) - 2, 1, 16));
 }
