@@ -95,12 +95,13 @@ HeightField::HeightField(const HeightFieldOptions& options)
   ghost_rows_ = options.boundary == Boundary::periodic ? std::min(kMostBlockedLevels, options.ny) : 1;
   // One vector of slack at the end: the aligned kernel reads the vector after a row's last cell.
   const std::size_t n = levels_size_ = stride_ * (static_cast<std::size_t>(options.ny) + 2 * ghost_rows_) + line;
+  // The two levels half a page apart (CacheAligned): no 4K aliasing between them.
   if (f64_) {
-    cur64_.assign(n, 0.0);
-    prev64_.assign(n, 0.0);
+    cur64_ = decltype(cur64_)(n, 0.0, CacheAligned<double>(0));
+    prev64_ = decltype(prev64_)(n, 0.0, CacheAligned<double>(CacheAligned<double>::kPage / 2));
   } else {
-    cur32_.assign(n, 0.0f);
-    prev32_.assign(n, 0.0f);
+    cur32_ = decltype(cur32_)(n, 0.0f, CacheAligned<float>(0));
+    prev32_ = decltype(prev32_)(n, 0.0f, CacheAligned<float>(CacheAligned<float>::kPage / 2));
   }
   if (options.threads > 1) team_ = std::make_unique<ThreadTeam>(options.threads);
   const int tc = options.tiles.tile_cells;

@@ -58,6 +58,52 @@ template <class S>
   return __builtin_shuffle(cur, next, iota_mask<typename S::I, 1>(std::make_index_sequence<S::lanes>()));
 }
 
+// v[k − 1] + v[k + 1] over a stream of aligned vectors …, prev, cur, next, … (shifted-left plus
+// shifted-right, the order of the scalar expression). With 32-byte vectors (AVX2) a shift across
+// two vectors is two shuffles, a lane-crossing one that builds the straddling vector
+// [prev's upper half, cur's lower half] and an in-lane one; the straddling vector of (cur, next)
+// is also the one of the next vector's left shift, so a stream carries it (`Sides::m`) and
+// pays three shuffles per vector, not four. Other widths shift in one shuffle and carry nothing.
+template <class S>
+struct Sides {
+  using V = typename S::V;
+  using I = typename S::I;
+  static constexpr bool kCarry = S::bytes == 32;
+  static constexpr int L = S::lanes, H = L / 2;
+  V m{};  // the straddling vector of (prev, cur) when kCarry
+
+  [[gnu::always_inline]] static V straddle(V a, V b) {
+    return __builtin_shuffle(a, b, iota_mask<I, H>(std::make_index_sequence<L>()));
+  }
+  // Before the first vector: the stream's first two vectors.
+  [[gnu::always_inline]] void start(V prev, V cur) {
+    if constexpr (kCarry) m = straddle(prev, cur);
+  }
+  // The sum for `cur`, then the stream moves on by one vector.
+  [[gnu::always_inline]] V sum(V prev, V cur, V next) {
+    if constexpr (kCarry) {
+      const V mn = straddle(cur, next);
+      // Lane i of the left shift is prev[L − 1] (m[H − 1]) at i = 0, cur[H − 1] (m[L − 1]) at
+      // i = H, else cur[i − 1]; of the right shift cur[H] (mn[0]) at i = H − 1, next[0] (mn[H]) at
+      // i = L − 1, else cur[i + 1]: each lane taken from within its own 128-bit half.
+      const V left = __builtin_shuffle(m, cur, mask([](int i) { return i == 0 ? H - 1 : i == H ? L - 1 : L + i - 1; }));
+      const V right = __builtin_shuffle(cur, mn, mask([](int i) { return i == H - 1 ? L : i == L - 1 ? L + H : i + 1; }));
+      m = mn;
+      return left + right;
+    } else {
+      return shift_in_left<S>(prev, cur) + shift_in_right<S>(cur, next);
+    }
+  }
+
+ private:
+  template <class F>
+  [[gnu::always_inline]] static I mask(F lane) {
+    return [&]<std::size_t... k>(std::index_sequence<k...>) __attribute__((always_inline)) {
+      return I{static_cast<decltype(I{}[0])>(lane(static_cast<int>(k)))...};
+    }(std::make_index_sequence<L>());
+  }
+};
+
 // One update, on a vector or a scalar alike (so that both round the same): zc = z, orth and diag
 // the neighbour sums, zm = z⁻; the direct or the increment form of leapfrog_kernel.hpp.
 template <class Real, class T, bool Diagonal, bool Defect, bool IncrementForm>
@@ -156,14 +202,17 @@ template <int Bytes, class Real, bool Diagonal, bool Defect, bool Activity>
       // shuffles where four would do the rows one by one.
       V mid0 = load<V>(z - L), mid1 = load<V>(z);
       V ud0 = load<V>(z - w - L) + load<V>(z + w - L), ud1 = load<V>(z - w) + load<V>(z + w);
+      Sides<S> mid_sides, ud_sides;
+      mid_sides.start(mid0, mid1);
+      ud_sides.start(ud0, ud1);
       for (; k + L <= n; k += L) {
         __builtin_prefetch(z + k + w + STONESKIP_PF, 0, 3);
         __builtin_prefetch(zp + k + STONESKIP_PF, 1, 3);
         const V mid2 = load<V>(z + k + L), ud2 = load<V>(z + k - w + L) + load<V>(z + k + w + L);
         const V zc = mid1;
-        const V orth = (shift_in_left<S>(mid0, mid1) + shift_in_right<S>(mid1, mid2)) + ud1;
+        const V orth = mid_sides.sum(mid0, mid1, mid2) + ud1;
         V diag{};
-        if constexpr (Diagonal) diag = shift_in_left<S>(ud0, ud1) + shift_in_right<S>(ud1, ud2);
+        if constexpr (Diagonal) diag = ud_sides.sum(ud0, ud1, ud2);
         const V r = update<Real, V, Diagonal, Defect, increment_form>(zc, orth, diag, load<V>(zp + k), wc, wo, wd, wp, wx);
         std::memcpy(zp + k, &r, sizeof r);
         if constexpr (Activity) {
@@ -249,6 +298,10 @@ template <int Bytes, class Real, bool Diagonal, bool Defect, bool ShuffleUd>
     V ac = load<V>(a), bc = load<V>(b);
     V uda0 = load<V>(a - w - L) + load<V>(b - L), uda1 = load<V>(a - w) + bc;
     V udb0 = load<V>(a - L) + load<V>(b + w - L), udb1 = ac + load<V>(b + w);
+    Sides<S> sides_a, sides_b;
+    sides_a.start(uda0, uda1);
+    sides_b.start(udb0, udb1);
+#pragma GCC unroll 2  // the vectors carried from one to the next stay in registers, no copies
     for (; k + L <= n; k += L) {
       __builtin_prefetch(b + k + 2 * w + STONESKIP_PF, 0, 3);
       __builtin_prefetch(pa + k + STONESKIP_PF, 1, 3);
@@ -259,8 +312,8 @@ template <int Bytes, class Real, bool Diagonal, bool Defect, bool ShuffleUd>
       const V orth_b = (load<V>(b + k - 1) + load<V>(b + k + 1)) + udb1;
       V diag_a{}, diag_b{};
       if constexpr (Diagonal) {
-        diag_a = shift_in_left<S>(uda0, uda1) + shift_in_right<S>(uda1, uda2);
-        diag_b = shift_in_left<S>(udb0, udb1) + shift_in_right<S>(udb1, udb2);
+        diag_a = sides_a.sum(uda0, uda1, uda2);
+        diag_b = sides_b.sum(udb0, udb1, udb2);
       }
       const V ra = update<Real, V, Diagonal, Defect, increment_form>(ac, orth_a, diag_a, load<V>(pa + k), wc, wo, wd, wp, wx);
       const V rb = update<Real, V, Diagonal, Defect, increment_form>(bc, orth_b, diag_b, load<V>(pb + k), wc, wo, wd, wp, wx);
@@ -303,9 +356,10 @@ template <int Bytes, class Real, bool Diagonal, bool Defect>
 [[gnu::always_inline]] inline void block_body(Real* zp, const Real* z, std::ptrdiff_t n, std::ptrdiff_t rows,
                                               std::ptrdiff_t w, const LeapfrogWeights<Real>& c) {
   std::ptrdiff_t r = 0;
-  // Pairs pay in cache (the wavefront's blocks of two rows); from memory they were slower than
-  // single rows (2048² float64, AVX2, loaded machine: 1.1e9 against 1.5e9 cells/s; 500²: equal).
-  constexpr std::ptrdiff_t kPairsUpToBytes = 1 << 20;
+  // Pairs pay in cache, L2 or L3 (the wavefront's blocks of two rows; 500² float64, 2 MB a
+  // level, AVX2: 1.9e9 against 1.7e9 cells/s); from memory they were slower than single rows
+  // (2048² float64, AVX2, loaded machine: 1.1e9 against 1.5e9 cells/s).
+  constexpr std::ptrdiff_t kPairsUpToBytes = 8 << 20;
   if constexpr (Bytes > 0) {
     constexpr std::ptrdiff_t L = Simd<Real, Bytes>::lanes;
     const bool aligned = reinterpret_cast<std::uintptr_t>(z) % Bytes == 0 &&
@@ -484,7 +538,10 @@ void wavefront(Real* z, Real* zp, std::ptrdiff_t rows, std::ptrdiff_t w, int ste
   Real* a = z;
   Real* b = zp;
   for (int done = 0; done < steps;) {
-    const int pass = std::min(depth, steps - done);
+    // The steps left in passes of at most `depth` levels, as even as they go (16 steps at depth 13:
+    // 8 + 8, not 13 + 3, whose short pass reuses little of what it brings in).
+    const int left = steps - done, passes = (left + depth - 1) / depth;
+    const int pass = (left + passes - 1) / passes;
     const std::ptrdiff_t widen = hooks.halo_rows > 0 ? pass - 1 : 0;  // level 1's extra rows on each side
     if (hooks.before_pass) hooks.before_pass(hooks.context, a, b, pass);
     const std::ptrdiff_t m_first = floor_half(-widen), m_last = floor_half(rows - 1 + widen);
@@ -527,10 +584,12 @@ void leapfrog_row_chunks(float* zp, const float* z, std::ptrdiff_t n, std::ptrdi
 }
 
 int wavefront_depth(std::ptrdiff_t row_bytes) {
-  // About 2(P + 2) rows of each of the two buffers are in flight in a pass of P levels; keep them
-  // within about what L2 holds (1 MB on the machines measured). Measured at 2048² float64 on AVX2,
-  // loaded 2-core machine, 48 steps: 4 levels a pass 1.4 of the copy bound, 8–24 levels 1.7–2.0.
-  constexpr std::ptrdiff_t kBudgetBytes = 1 << 20;
+  // About 2(P + 2) rows of each of the two buffers are in flight in a pass of P levels. They need
+  // not fit L2: streamed from L3 the pair kernel runs at its in-cache rate, and each level a pass
+  // adds saves a sweep over memory. So the budget is a share of L3 (32 MB on the machines
+  // measured), not L2. Measured at 2048² float64 (16 KB rows) on AVX2, 2-core AMD EPYC, loaded,
+  // 16 steps a call, cells/s: passes of 4 levels 1.1e9, of 8 1.45e9, one of 16 1.6e9; one step 0.7e9.
+  constexpr std::ptrdiff_t kBudgetBytes = 4 << 20;
   return static_cast<int>(std::clamp<std::ptrdiff_t>(kBudgetBytes / (4 * std::max<std::ptrdiff_t>(row_bytes, 1)) - 2, 1, 16));
 }
 

@@ -91,7 +91,7 @@ void leapfrog_wavefront(double* z, double* zp, std::ptrdiff_t n, std::ptrdiff_t 
                         const WavefrontHooks<double>& hooks = {});
 void leapfrog_wavefront(float* z, float* zp, std::ptrdiff_t n, std::ptrdiff_t rows, std::ptrdiff_t w,
                         const LeapfrogWeights<float>& c, bool diagonal, int steps, const WavefrontHooks<float>& hooks = {});
-// The levels a pass advances for rows of `row_bytes` bytes (1…16: the rows in flight fit L2).
+// The most levels a pass advances for rows of `row_bytes` bytes (1…16: the rows in flight fit a share of L3).
 int wavefront_depth(std::ptrdiff_t row_bytes);
 
 // The instruction-set paths of the kernel. Each computes the same bits.

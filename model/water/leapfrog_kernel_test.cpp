@@ -92,11 +92,12 @@ void on_every_path(F&& f) {
   set_leapfrog_kernel_path(before);
 }
 
-// One field updated by every kernel entry on one path: blocks and chunked rows (with activity),
-// on and off vector alignment, so that two paths' outputs can be compared byte for byte.
+// One field updated by every kernel entry on one path: blocks (row pairs and, the count being
+// odd, a single row) and chunked rows (with activity), on and off vector alignment, so that two
+// paths' outputs can be compared byte for byte.
 template <class Real>
 std::vector<unsigned char> every_entry_on_active_path(bool diagonal, bool defect) {
-  const std::ptrdiff_t w = 64 + 16, rows = 6, n = 64 + 5;  // w a multiple of every vector width
+  const std::ptrdiff_t w = 64 + 16, rows = 7, n = 64 + 5;  // w a multiple of every vector width
   const std::size_t size = static_cast<std::size_t>(w) * (rows + 4);
   const auto z = random_values<Real>(size, 11);
   auto blocks = random_values<Real>(size, 12), chunks = blocks;
