@@ -78,9 +78,10 @@ bool parse_forcing(const std::string& s, Forcing& out);
 constexpr int kPressureSmoothingPasses = 3;
 
 // How the field takes the steps that nothing forces (no head or draught waiting, no per-step
-// damping loss measured): above all the ring phase after the throw. All three give the same
-// field bit for bit (HeightField::advance is n calls of step()); they differ in speed and in
-// how the cost is booked.
+// damping loss measured): above all the ring phase after the throw. In flight the stone reads the
+// surface at each of its steps (1 ms in the seed, inside one water step), so free steps come
+// together only once it has left. All three give the same field bit for bit
+// (HeightField::advance is n calls of step()); they differ in speed and in how cost is booked.
 //   one_at_a_time      each step as a forced one (the reference the others are tested against).
 //   to_the_next_frame  HeightField::advance over the free steps up to the frame's end (or the
 //                      stone's next step): a temporal-blocked wavefront where the field is large.
