@@ -52,6 +52,24 @@ bool parse_forcing(const std::string& s, Forcing& out) {
   return false;
 }
 
+const char* to_string(FreeWater f) {
+  switch (f) {
+    case FreeWater::one_at_a_time: return "one_at_a_time";
+    case FreeWater::to_the_next_frame: return "to_the_next_frame";
+    case FreeWater::to_the_next_look: return "to_the_next_look";
+  }
+  return "?";
+}
+
+bool parse_free_water(const std::string& s, FreeWater& out) {
+  for (FreeWater f : {FreeWater::one_at_a_time, FreeWater::to_the_next_frame, FreeWater::to_the_next_look})
+    if (s == to_string(f)) {
+      out = f;
+      return true;
+    }
+  return false;
+}
+
 double EnergyBudget::residual() const {
   const double gained = end_J - start_J;
   const double scale = std::max({std::abs(pressure_work_J), std::abs(gained), damping_loss_J});
@@ -149,6 +167,7 @@ class SceneLoop {
         if (out_.energy.measured) out_.energy.start_J = energy_->energy(*field_).total_J;
       }
     }
+    per_step_budget_ = energy_ && out_.energy.measured && o.water->field.damping_per_s > 0;
     out_.frame_costs.reserve(static_cast<std::size_t>(frames_));
     frame_cpu0_ = thread_cpu_now();
     frame_wall0_ = steady_now();
@@ -175,6 +194,7 @@ class SceneLoop {
       catch_up(t_s, &s);
       if (two_way_) track_stone_force(t_s);
     }
+    take_deferred();  // the stone's next step reads the surface
     while (closed_ < frames_ && frame_time(closed_ + 1) <= t_s) close_frame(StoneStatus::in_play, s);
   }
 
@@ -201,6 +221,7 @@ class SceneLoop {
   }
 
   void finish() {
+    take_deferred();
     out_.frames = closed_;
     out_.simulated_s = frame_time(closed_);
     if (energy_ && out_.energy.measured) {
@@ -228,7 +249,7 @@ class SceneLoop {
     }
     const int k = o_.draught_samples;
     for (;;) {
-      const double t_n = field_->time_s(), end = t_n + 0.5 * dt_s_;
+      const double t_n = time_after_deferred(), end = t_n + 0.5 * dt_s_;
       if (two_way_) {
         int due = 0;
         for (;;) {
@@ -238,6 +259,7 @@ class SceneLoop {
           ++due;
         }
         if (due > 0 && s) {
+          take_deferred();  // the sample reads the surface
           last_sample_s_ = t_s;
           sample(*s, due);
         } else if (due > 0) {
@@ -245,20 +267,87 @@ class SceneLoop {
         }
       }
       if (end > t_s) break;
-      step_water();
+      if (next_step_is_free()) {
+        defer_step();
+      } else {
+        take_deferred();
+        step_water();
+      }
     }
   }
 
   // Pressure forcing: steps every water step n whose hat has ended (t_n+1 ≤ t_s).
   void advance_to(double t_s) {
     const double slack = 1e-9 * dt_s_;
-    while (field_->time_s() + dt_s_ <= t_s + slack) step_water();
+    while (time_after_deferred() + dt_s_ <= t_s + slack) {
+      if (next_step_is_free()) {
+        defer_step();
+      } else {
+        take_deferred();
+        step_water();
+      }
+    }
+  }
+
+  // Whether the field's next step is free: nothing waits to force it (the windows are empty, and
+  // stay so while no sample or head is added) and no per-step budget term is wanted from it.
+  bool next_step_is_free() const {
+    if (o_.free_water == FreeWater::one_at_a_time || per_step_budget_) return false;
+    return !two_way_ || (window_->empty() && (!next_window_ || next_window_->empty()));
+  }
+
+  // The field's clock once the deferred steps are taken: HeightField keeps time_s = steps · Δt.
+  double time_after_deferred() const {
+    return deferred_ == 0 ? field_->time_s() : static_cast<double>(field_->steps() + deferred_) * dt_s_;
+  }
+
+  // A free step, owed to the field until someone needs it. What step_water books for it is zero:
+  // an empty patch adds nothing to the impulses or to the pressure work.
+  void defer_step() {
+    ++deferred_;
+    ++cost_.water_steps;
+    node_ = 0;
+  }
+
+  // Takes the owed steps in one HeightField::advance. Steps owed by frames already closed (only
+  // FreeWater::to_the_next_look without a recorder) get their share of its cost, by their steps.
+  void take_deferred() {
+    if (deferred_ == 0) return;
+    const long owed_by_closed = owed_by_closed_;
+    const double w0 = steady_now(), c0 = owed_by_closed > 0 ? thread_cpu_now() : 0.0;
+    field_->advance(deferred_);
+    const double w1 = steady_now(), wall = w1 - w0;
+    if (owed_by_closed == 0) {
+      cost_.water_wall_s += wall;
+    } else {
+      const double cpu = thread_cpu_now() - c0;
+      const double open_share = static_cast<double>(deferred_ - owed_by_closed) / static_cast<double>(deferred_);
+      cost_.water_wall_s += open_share * wall;
+      const double closed_wall = wall - open_share * wall, closed_cpu = cpu - open_share * cpu;
+      frame_wall0_ += closed_wall;  // the open frame's clocks leave out the closed frames' share
+      frame_cpu0_ += closed_cpu;
+      for (const auto& [f, steps] : owing_) {
+        FrameCost& c = out_.frame_costs[f];
+        const double share = static_cast<double>(steps) / static_cast<double>(owed_by_closed);
+        c.water_wall_s += share * closed_wall;
+        c.wall_s += share * closed_wall;
+        c.cpu_s += share * closed_cpu;
+        out_.water_wall_s += share * closed_wall;
+        out_.wall_s += share * closed_wall;
+        out_.cpu_s += share * closed_cpu;
+        note_slowest(static_cast<long>(f) + 1, c);
+      }
+    }
+    deferred_ = 0;
+    owed_by_closed_ = 0;
+    owing_.clear();
   }
 
   // Pressure forcing: the head held over the stone step [pending_t_, t_end] is spread over the
   // water steps with the hat weights: a piece [a, b] ⊂ [t_n, t_n+1] gives step n the weight
   // ∫ hatₙ/Δt = (b − a)/Δt · (1 − r) and step n+1 (b − a)/Δt · r, r = ((a + b)/2 − t_n)/Δt.
   void finish_piece(double t_end) {
+    take_deferred();  // the pieces go to the windows of the field's current level
     if (!(t_end > pending_t_)) return;
     if (pending_wet_) {
       const double len = t_end - pending_t_;
@@ -390,6 +479,8 @@ class SceneLoop {
   }
 
   void close_frame(StoneStatus status, const RigidState& s) {
+    // The recorder looks at the field; without one, to_the_next_look lets the frame close owing.
+    if (recorder_ || o_.free_water != FreeWater::to_the_next_look) take_deferred();
     ++closed_;
     if (recorder_) {
       const double w0 = steady_now();
@@ -416,14 +507,22 @@ class SceneLoop {
     out_.draught_wall_s += cost_.draught_wall_s;
     out_.water_wall_s += cost_.water_wall_s;
     out_.recording_wall_s += cost_.recording_wall_s;
-    if (cost_.wall_s > out_.slowest_frame_wall_s) {
-      out_.slowest_frame_wall_s = cost_.wall_s;
-      out_.slowest_frame_cpu_s = cost_.cpu_s;
-      out_.slowest_frame = closed_;
+    note_slowest(closed_, cost_);
+    if (deferred_ > owed_by_closed_) {  // the frame closes owing steps of its own
+      owing_.emplace_back(out_.frame_costs.size() - 1, deferred_ - owed_by_closed_);
+      owed_by_closed_ = deferred_;
     }
     cost_ = FrameCost{};
     frame_cpu0_ = cpu;
     frame_wall0_ = wall;
+  }
+
+  void note_slowest(long frame, const FrameCost& c) {
+    if (c.wall_s > out_.slowest_frame_wall_s) {
+      out_.slowest_frame_wall_s = c.wall_s;
+      out_.slowest_frame_cpu_s = c.cpu_s;
+      out_.slowest_frame = frame;
+    }
   }
 
   const SceneOptions& o_;
@@ -450,6 +549,10 @@ class SceneLoop {
   double last_sample_s_ = 0;
   double last_volume_m3_ = 0;
   long closed_ = 0;
+  bool per_step_budget_ = false;  // Dₙ measured at every step (energy_budget on a damped field)
+  long deferred_ = 0;             // free steps owed to the field
+  long owed_by_closed_ = 0;       // of them, those of frames already closed
+  std::vector<std::pair<std::size_t, long>> owing_;  // (closed frame, its owed steps)
   FrameCost cost_;
   double frame_cpu0_ = 0, frame_wall0_ = 0;
 };

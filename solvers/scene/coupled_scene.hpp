@@ -77,6 +77,24 @@ bool parse_forcing(const std::string& s, Forcing& out);
 // seed_8ms, 88 / – / 8.4 / 2.5 % on seed_8ms_paper; three keep both under 5 %.
 constexpr int kPressureSmoothingPasses = 3;
 
+// How the field takes the steps that nothing forces (no head or draught waiting, no per-step
+// damping loss measured): above all the ring phase after the throw. In flight the stone reads the
+// surface at each of its steps (1 ms in the seed, inside one water step), so free steps come
+// together only once it has left. All three give the same field bit for bit
+// (HeightField::advance is n calls of step()); they differ in speed and in how cost is booked.
+//   one_at_a_time      each step as a forced one (the reference the others are tested against).
+//   to_the_next_frame  HeightField::advance over the free steps up to the frame's end (or the
+//                      stone's next step): a temporal-blocked wavefront where the field is large.
+//                      With one water step per frame (the seed) that is one step: nothing to block.
+//   to_the_next_look   without a recorder nobody looks at the field before the scene's end, so
+//                      the free steps after the throw run in one advance; the frames they span
+//                      share its thread CPU and wall time by their water steps (the split is an
+//                      even share, not a measurement of each frame). With a recorder: as
+//                      to_the_next_frame.
+enum class FreeWater { one_at_a_time, to_the_next_frame, to_the_next_look };
+const char* to_string(FreeWater f);
+bool parse_free_water(const std::string& s, FreeWater& out);
+
 // How far a scene runs: to its duration whatever the stone does (watching it), or only as long as
 // the stone's throw (`stoneskip run` on a case with [water]).
 enum class SceneEnd { at_duration, with_the_throw };
@@ -99,6 +117,9 @@ struct SceneOptions {
   // Measure the waves' energy budget (solvers/scene/wave_energy.hpp): two transforms of the grid per
   // water step, so off where speed is measured.
   bool energy_budget = false;
+  // Steps that nothing forces; with energy_budget on a damped field every step stays one at a
+  // time (Dₙ is a quadratic form of each step's levels: no sum over several steps gives it).
+  FreeWater free_water = FreeWater::to_the_next_frame;
   double frame_rate_hz = 90;       // one frame = 1/rate of simulated time
   double duration_s = 3;
   SceneEnd end = SceneEnd::at_duration;
