@@ -162,6 +162,8 @@ WorkPrecisionGridResult run_work_precision_grid(const ThrowProblem& base, const 
           return;
         }
         const ContactComparison c = compare_contacts(r, truth);
+        g.bounces = r.bounces;
+        g.truth_bounces = truth.bounces;
         g.same_count = r.bounces == truth.bounces;
         g.same_contacts = c.same_contacts();
         g.contact_time_error_s =

@@ -59,6 +59,13 @@ Record work_precision_grid_findings(const WorkPrecisionGridResult& r, const Work
   rec.set_strings("families", families);
   rec.set_table("summary", sum);
   rec.set_strings("failures", failures);
+  // The adaptive family's runs that finished with another bounce count than the truth's.
+  std::vector<std::string> missed;
+  for (const GridRun& g : r.runs)
+    if (g.family == r.adaptive_family && g.ok && !g.same_count)
+      missed.push_back("at " + num(g.setting, 2) + ", " + g.throw_label + ": " + std::to_string(g.bounces) +
+                       " bounces, the truth " + std::to_string(g.truth_bounces));
+  rec.set_strings("adaptive_disagreements", missed);
 
   // The default the grid supports.
   const GridDefaultChoice& c = r.choice;

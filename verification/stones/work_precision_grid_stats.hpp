@@ -31,6 +31,7 @@ struct GridRun {
   std::string throw_label;
   bool ok = false;             // false: the solve failed (`problem` says why)
   std::string problem;
+  int bounces = 0, truth_bounces = 0;
   bool same_count = false;     // its bounce count equals the truth's
   bool same_contacts = false;  // its contact list matches the truth's: contact_time_error_s is set
   double contact_time_error_s = 0;  // largest start or end error over the contacts

@@ -60,6 +60,12 @@ BOOST_AUTO_TEST_CASE(a_two_throw_grid_keeps_or_sets_aside_each_throw_and_tight_c
   BOOST_TEST(r.adaptive_family == adaptive_family_name(Scheme::bs32));
   BOOST_TEST(r.choice.default_tolerance == kDefaultAdaptiveTolerance);
   BOOST_TEST(r.choice.tolerances.size() == 2u);
+  // The findings hold a row per family and setting, the families by name, the default beside the choice.
+  const Record f = work_precision_grid_findings(r, o);
+  BOOST_TEST(f.table("summary").rows() == r.summaries.size());
+  BOOST_TEST(f.strings("families").size() == 3u);
+  BOOST_TEST(f.number("kept") == kept);
+  BOOST_TEST(f.at("default_choice").number("default_tolerance") == kDefaultAdaptiveTolerance);
   for (const GridSummary& s : r.summaries)
     BOOST_TEST_MESSAGE(s.family << " at " << s.setting << ": " << s.agreeing << "/" << s.n << ", median time error "
                                 << s.median_contact_time_error_s << " s, " << s.mean_rhs_evaluations << " RHS");
