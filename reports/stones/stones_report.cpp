@@ -69,6 +69,13 @@ std::string findings_markdown(const Record& secs, const std::string& md) {
   const Record& wp = secs.at("work_precision");
   if (wp.has_child("restarts") && wp.at("restarts").has_child("verdict"))
     f << "* CVODE's restarts at a contact: **" << wp.at("restarts").at("verdict").text("verdict") << "**" << section_link(md, "2") << ".\n";
+  if (secs.has_child("work_precision_grid")) {
+    const Record& g = secs.at("work_precision_grid").at("default_choice");
+    f << "* The adaptive stepper's default over a grid of throws: "
+      << (g.flag("found") ? "the grid supports rtol " + fmt(g.number("tolerance"), 2) : std::string("no tolerance run meets the rule"))
+      << ", the cases' default is " << fmt(g.number("default_tolerance"), 2) << " (**" << g.text("beside_default_phrase") << "**)"
+      << section_link(md, "2") << ".\n";
+  }
   const Record& sw = secs.at("sweeps");
   for (const auto& p : sw.child_names()) {
     const Record& r = sw.at(p);
@@ -124,6 +131,7 @@ RenderedReport render_stones_report(const StoredReport& s) {
   out.markdown = md.str();
   append(out, convergence_section(secs.at("convergence")));
   append(out, work_precision_section(secs.at("work_precision")));
+  if (secs.has_child("work_precision_grid")) append(out, work_precision_grid_section(secs.at("work_precision_grid")));
   append(out, sweeps_section(secs.at("sweeps"), secs.at("validation").at("fig9")));
   if (secs.has_child("count_ensembles")) append(out, count_ensembles_section(secs.at("count_ensembles")));
   append(out, hard_cases_section(secs.at("hard_cases")));

@@ -225,6 +225,38 @@ void read_restarts(TomlTable t, StoneStudiesOptions& o) {
   t.finish();
 }
 
+// The work-precision study over a grid of throws (verification/stones/work_precision_grid.hpp).
+void read_work_precision_grid(const fs::path& dir, TomlTable t, StoneStudiesOptions& o) {
+  WorkPrecisionGridOptions& g = o.work_precision_grid;
+  o.work_precision_grid_base = load_throw(dir, t, "base");
+  if (o.work_precision_grid_base.problem.environment.convention != Convention::physical)
+    t.fail("base", "the grid's base throw must be in the physical convention");
+  if (!o.work_precision_grid_base.problem.from_parameters) t.fail("base", "the grid's base throw must give [throw] parameters");
+  g.spins_rev_s = any_list(t, "spins_rev_s", g.spins_rev_s);
+  g.attack_angles_deg = any_list(t, "attack_angles_deg", g.attack_angles_deg);
+  for (double a : g.attack_angles_deg) t.require_in("attack_angles_deg", a, -90.0, 90.0);
+  if (auto s = t.maybe_strings("fixed_schemes")) {
+    g.fixed_schemes.clear();
+    for (const auto& n : *s) {
+      const Scheme sc = scheme_of(t, "fixed_schemes", n);
+      if (is_adaptive(sc)) t.fail("fixed_schemes", "'" + n + "' is adaptive (its tolerances: work_precision.adaptive_rtol)");
+      g.fixed_schemes.push_back(sc);
+    }
+  }
+  g.dt_s = positive_list(t, "dt_s", g.dt_s);
+  g.contact_ratio = t.number_or("contact_ratio", g.contact_ratio);
+  t.require_in("contact_ratio", g.contact_ratio, 1e-4, 1.0);
+  const std::string m = t.string_or("method", to_string(g.method));
+  if (!parse_reference_method(m, g.method)) t.fail("method", "'" + m + "' is not one of bdf, adams");
+  g.cvode_rtol = positive_list(t, "cvode_rtol", g.cvode_rtol);
+  g.agreement_target = t.number_or("agreement_target", g.agreement_target);
+  t.require_in("agreement_target", g.agreement_target, 0.5, 1.0);
+  const std::string b = t.string_or("agreement_bound", to_string(g.agreement_bound));
+  if (!parse_agreement_bound(b, g.agreement_bound)) t.fail("agreement_bound", "'" + b + "' is not one of point_estimate, wilson_lower");
+  g.contact_time_threshold_s = positive(t, "contact_time_threshold_s", g.contact_time_threshold_s);
+  t.finish();
+}
+
 void read_sweeps(TomlTable t, StoneStudiesOptions& o) {
   o.max_thresholds = count(t, "max_thresholds", o.max_thresholds, 0, 1000);
   o.sweep_reference_rtol = positive(t, "reference_rtol", o.sweep_reference_rtol);
@@ -431,6 +463,7 @@ StoneStudyFile load_stone_study_file(const std::string& path, const std::vector<
   if (auto t = top.maybe_table("reference_tolerance")) read_reference_tolerance(*t, o);
   if (auto t = top.maybe_table("work_precision")) read_work_precision(*t, o);
   if (auto t = top.maybe_table("restarts")) read_restarts(*t, o);
+  if (auto t = top.maybe_table("work_precision_grid")) read_work_precision_grid(dir, *t, o);
   read_sweeps(top.table("sweeps"), o);
   if (auto t = top.maybe_table("validation")) read_validation(*t, o);
   if (auto t = top.maybe_table("hard_cases")) read_hard_cases(*t, o);
@@ -442,6 +475,8 @@ StoneStudyFile load_stone_study_file(const std::string& path, const std::vector<
                               &o.stable_step_base, &o.flat_drop})
     if (!t->file.empty()) f.settings_text += "\n# case " + t->file + "\n" + t->case_text;
   for (const auto& h : o.hard) f.settings_text += "\n# hard case " + h.file + "\n" + h.case_text;
+  if (!o.work_precision_grid_base.file.empty())
+    f.settings_text += "\n# case " + o.work_precision_grid_base.file + "\n" + o.work_precision_grid_base.case_text;
   std::string why;
   if (!o.valid(&why)) throw_input_error(f.file, 0, "", why);
   return f;

@@ -86,6 +86,7 @@ Record settings_findings(const StoneStudiesOptions& o) {
   for (std::size_t i = 0; i < all.size(); ++i)
     if (!all[i]->file.empty()) store(kThrowNames[i], *all[i]);  // an optional throw left out is not stored
   for (const auto& h : o.hard) store("hard_" + record_key(h.file), h);
+  if (!o.work_precision_grid_base.file.empty()) store("work_precision_grid_base", o.work_precision_grid_base);
   r.set_strings("throws", names);
   return r;
 }
@@ -128,6 +129,11 @@ bool StoneStudiesOptions::valid(std::string* why) const {
       }
     }
   if (restarts.rtol.empty() || restarts.methods.empty()) return fail("the restart study needs methods and tolerances");
+  if (!work_precision_grid_base.file.empty()) {
+    if (!work_precision_grid.valid(why)) return false;
+    if (work_precision_grid_base.problem.environment.convention != Convention::physical)
+      return fail("work_precision_grid: the base throw must be in the physical convention");
+  }
   if (!validation.valid(why)) return false;
   for (const auto& a : sweep_axes) {
     if (a.values.size() < 2) return fail(std::string("sweep over ") + to_string(a.parameter) + " needs at least 2 values");
@@ -199,6 +205,18 @@ Record run_stone_studies(const StoneStudiesOptions& o, StudySink& sink) {
       r.add_child("restarts", restart_findings(run_work_precision(restart_throws, rs), rs, ReferenceOptions{}.restart));
     return r;
   });
+
+  if (!o.work_precision_grid_base.file.empty())
+    run_section(sink, "work_precision_grid", [&] {
+      WorkPrecisionGridOptions g = o.work_precision_grid;
+      g.adaptive_rtol = o.work_precision.adaptive_rtol;  // the study's bs32 tolerances and truths
+      g.truth_rtol = o.work_precision.truth_rtol;
+      g.truth_check_factor = o.work_precision.truth_check_factor;
+      g.atol_ratio = o.work_precision.atol_ratio;
+      g.workers = o.workers;
+      g.progress = progress;
+      return work_precision_grid_findings(run_work_precision_grid(o.work_precision_grid_base.problem, g), g);
+    });
 
   run_section(sink, "validation", [&] {
     ValidationOptions vo = o.validation;

@@ -7,6 +7,8 @@
 //                   CVODE against its tolerance
 //   work_precision  speed against error, real-time stepper and CVODE, for each water law; the
 //                   CVODE restart strategies on spinning and non-spinning throws
+//   work_precision_grid  the same over a grid of throws, on bounce counts and contact times; the
+//                   adaptive stepper's default tolerance it supports
 //   sweeps          bounce count against one parameter with bisected thresholds
 //   count_ensembles the two solvers' paper-convention counts at a sample of the sweeps' values, on ensembles
 //   hard_cases      throws chosen to break a solver; the largest stable step against speed
@@ -25,6 +27,7 @@
 #include "verification/stones/reference_tolerance.hpp"
 #include "verification/stones/validation.hpp"
 #include "verification/stones/work_precision.hpp"
+#include "verification/stones/work_precision_grid.hpp"
 #include "verification/study/study_sink.hpp"
 
 namespace stoneskip {
@@ -75,6 +78,10 @@ struct StoneStudiesOptions {
   // "@law" for that throw under that water law with its published C_w ("nospin@planing").
   std::vector<std::string> work_precision_throws{"convergence", "nospin", "spin_paper"};
   RestartStudyOptions restarts;
+  // The work-precision study over a grid of throws (optional: base file empty when not given); its
+  // bs32 tolerances, truth tolerances and atol ratio are work_precision's.
+  StudyThrow work_precision_grid_base;
+  WorkPrecisionGridOptions work_precision_grid;
   std::vector<SweepAxisOptions> sweep_axes;
   int max_thresholds = 8;
   double sweep_reference_rtol = 1e-8, sweep_reference_atol = 1e-10;
