@@ -512,7 +512,13 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
           hh = std::clamp(hh, floor_h, left_s);
         }
         if (!(hh > 1e-14 * std::max(1.0, t))) {
-          failed(t, "the adaptive step fell below round-off");
+          // Say what the stone was doing: a step this short is a state running away (the paper
+          // convention's energy gain spins a stone up without bound) or a jump in the force.
+          std::ostringstream m;
+          m << "the adaptive step fell below round-off (speed " << s.velocity_m_s.norm() << " m/s, spin "
+            << angular_velocity(stone, s).norm() << " rad/s, energy " << energy(s) << " J against "
+            << energy(initial) << " J at release)";
+          failed(t, m.str());
           break;
         }
         trial = bs32_step(stone, env, y0, k_start, hh, surface, atol, o.rtol);

@@ -85,6 +85,9 @@ nlohmann::json json_summary(const ThrowResult& r) {
                 {"error_test_failures", r.stats.error_test_failures},
                 {"nonlinear_iterations", r.stats.nonlinear_iterations},
                 {"segments", r.stats.segments},
+                {"max_error_ratio", r.stats.max_error_ratio},
+                {"budget_forced_steps", r.stats.budget_forced_steps},
+                {"position_error_estimate_m", r.stats.position_error_estimate_m},
                 {"cpu_s", r.stats.cpu_s}};
   return j;
 }
@@ -168,6 +171,9 @@ void write_throw_file(const std::string& path, const StoneCase& c,
     g.set_attr("stats_root_evaluations", static_cast<long long>(r->stats.root_evaluations));
     g.set_attr("stats_error_test_failures", static_cast<long long>(r->stats.error_test_failures));
     g.set_attr("stats_segments", static_cast<long long>(r->stats.segments));
+    g.set_attr("stats_max_error_ratio", r->stats.max_error_ratio);
+    g.set_attr("stats_budget_forced_steps", static_cast<long long>(r->stats.budget_forced_steps));
+    g.set_attr("stats_position_error_estimate_m", r->stats.position_error_estimate_m);
     g.set_attr("stats_cpu_s", r->stats.cpu_s);
     g.write_table("trajectory", trajectory_table(c.stone, *r));
     g.write_table("contacts", contacts_table(*r));
