@@ -178,7 +178,7 @@ struct Crossing {
   int vertex = -1;
 };
 
-enum class Direction { under, out, either };
+enum class Direction { under, out };
 enum class Pick { first, last };
 
 // Among the vertices that cross in the step in the given direction (under: d0 ≤ 0 < d1; out:
@@ -187,14 +187,13 @@ enum class Pick { first, last };
 // starts; the last to go under while every vertex ends the step under water is where the stone
 // sinks; the last to come out is where a contact ends with every vertex dry.
 Crossing locate(const HermiteStep& step, const Stone& stone, const WaterSurface* surface, const Waterline& w0,
-                const Waterline& w1, Direction dir, Pick pick, int fallback,
-                double fraction_tolerance = kFullFractionTolerance) {
+                const Waterline& w1, Direction dir, Pick pick, int fallback) {
   Crossing c;
   for (std::size_t j = 0; j < w0.depth_m.size(); ++j) {
     const double d0 = w0.depth_m[j], d1 = w1.depth_m[j];
     const bool under = d0 <= 0 && d1 > 0, out = d0 > 0 && d1 <= 0;
-    if (!(dir == Direction::under ? under : dir == Direction::out ? out : (under || out))) continue;
-    const double f = crossing_fraction(step, stone, surface, static_cast<int>(j), d0, d1, fraction_tolerance);
+    if (!(dir == Direction::under ? under : out)) continue;
+    const double f = crossing_fraction(step, stone, surface, static_cast<int>(j), d0, d1);
     if (c.vertex < 0 || (pick == Pick::last ? f > c.fraction : f < c.fraction)) c = {f, static_cast<int>(j)};
   }
   if (c.vertex < 0) c = {0.0, fallback};
@@ -316,6 +315,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
   const WallTimer wall;
   ThrowResult r;
   const bool adaptive = is_adaptive(o.scheme);
+  const KinkSteps kink_steps = o.kinks.value_or(default_kink_steps(o.scheme));
   {
     std::ostringstream name;
     if (adaptive)
@@ -324,8 +324,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
     else
       name << "realtime (" << to_string(o.scheme) << ", dt=" << o.dt_s << " s, contact dt=" << o.contact_dt_s << " s";
     // What departs from the scheme's defaults.
-    const KinkSteps k = o.kinks.value_or(default_kink_steps(o.scheme));
-    if (k != default_kink_steps(o.scheme)) name << ", kinks " << to_string(k);
+    if (kink_steps != default_kink_steps(o.scheme)) name << ", kinks " << to_string(kink_steps);
     if (adaptive && o.rhs_per_frame > 0) name << ", at most " << o.rhs_per_frame << " rhs per " << o.frame_dt_s << " s frame";
     name << ")";
     r.solver = name.str();
@@ -404,7 +403,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
   double h = std::min(o.dt_s, 1e-2 * scales.length_m / scales.speed_m_s);
   StateVector k_start{};  // f at the start of the step (FSAL), valid while have_k
   bool have_k = false;
-  KinkWatch kinks(stone, env, surface, o.kinks.value_or(default_kink_steps(o.scheme)));
+  KinkWatch kinks(stone, env, surface, kink_steps);
   // The frame budget (bs32): the end of the current frame and the right-hand sides spent before it began.
   const bool budgeted = adaptive && o.rhs_per_frame > 0;
   double frame_end_s = 0;
