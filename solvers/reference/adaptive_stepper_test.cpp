@@ -53,8 +53,8 @@ ThrowResult cvode(const RigidState& s0, double rtol, double t_max_s) {
 }
 
 // The tolerance a case gets when it names none (tools/scene/stone_case.cpp, chosen by the
-// bounce-count study of solvers/README.md).
-constexpr double kCaseDefaultTolerance = 1e-8;
+// work-precision studies of solvers/README.md).
+constexpr double kCaseDefaultTolerance = kDefaultAdaptiveTolerance;
 
 ThrowResult adaptive(const RigidState& s0, double tol, double t_max_s) {
   RealtimeOptions o;

@@ -67,7 +67,7 @@ BOOST_AUTO_TEST_CASE(bench_sweep_match_fraction_is_its_own_counts_and_the_counts
   const nlohmann::json& j = quick_bench_json();
   // The sweep names its stepper: the adaptive one at its default tolerance, rtol = atol_m.
   BOOST_TEST(j["sweep_scheme"].get<std::string>() == "bs32");
-  BOOST_TEST(j["sweep_rtol"].get<double>() == 1e-8);
+  BOOST_TEST(j["sweep_rtol"].get<double>() == 1e-9);
   BOOST_TEST(j["sweep_atol_m"].get<double>() == j["sweep_rtol"].get<double>());
   const auto rt = j["sweep_bounces"].get<std::vector<int>>();
   const auto cv = j["sweep_cvode_bounces"].get<std::vector<std::vector<int>>>();
@@ -90,7 +90,7 @@ BOOST_AUTO_TEST_CASE(bench_sweep_match_fraction_is_its_own_counts_and_the_counts
   BOOST_TEST((fraction >= 0 && fraction <= 1));
   // Throw 3 of the grid (spins outer, attacks inner: spin 20 rev/s, attack 20°) through `run`.
   const std::string run = "run cases/spin_sweep_base.toml --set throw.spin_rev_s=20 --set throw.attack_angle_deg=20 --json";
-  const auto a = stoneskip::test::run_stoneskip(run + " --solver realtime --set solver.scheme=bs32 --set solver.rtol=1e-8 --set solver.atol_m=1e-8", false);
+  const auto a = stoneskip::test::run_stoneskip(run + " --solver realtime --set solver.scheme=bs32 --set solver.rtol=1e-9 --set solver.atol_m=1e-9", false);
   BOOST_REQUIRE_MESSAGE(a.status == 0, a.out);
   BOOST_TEST(nlohmann::json::parse(a.out)["bounces"].get<int>() == rt[3]);
   for (int k = 0; k < 2; ++k) {

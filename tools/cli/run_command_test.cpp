@@ -104,7 +104,7 @@ BOOST_AUTO_TEST_CASE(the_result_file_holds_trajectory_contacts_case_and_version)
   BOOST_TEST(root.attr_string("case_text") == text);
   // The stepper after defaults: the case names none, so the adaptive scheme at the default tolerance.
   BOOST_TEST(root.attr_string("resolved_settings").find("scheme = \"bs32\"") != std::string::npos);
-  BOOST_TEST(root.attr_string("resolved_settings").find("rtol = 1e-08") != std::string::npos);
+  BOOST_TEST(root.attr_string("resolved_settings").find("rtol = 1e-09") != std::string::npos);
   const auto g = root.open_group("realtime");
   const auto traj = g.read_table("trajectory");
   BOOST_TEST(traj.rows() > 10u);

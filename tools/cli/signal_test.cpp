@@ -75,11 +75,35 @@ Ended finish(pid_t pid, std::chrono::steady_clock::time_point t0) {
   return e;
 }
 
-// Runs the command, sends `sig` after `delay_s` (if it is still running), and returns how it ended.
+// Whether the process catches `sig` yet (Linux: the SigCgt mask of /proc/PID/status), or has
+// ended (a zombie, or gone): then waiting longer is pointless.
+bool catches_or_ended(pid_t pid, int sig) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  if (!status) return true;
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("State:", 0) == 0 && line.find('Z') != std::string::npos) return true;
+    if (line.rfind("SigCgt:", 0) == 0) {
+      const unsigned long long mask = std::stoull(line.substr(7), nullptr, 16);
+      return (mask >> (sig - 1)) & 1ULL;
+    }
+  }
+  return true;
+}
+
+// Runs the command, sends `sig` `delay_s` after the start (if it is still running), and returns
+// how it ended. The signal is held back until stoneskip has installed its handler, the first thing
+// main does: before that the dynamic loader is still mapping the libraries (tens of milliseconds on
+// a loaded 2-core machine), nothing can have been written, and the default action of the signal,
+// which no program can change before it runs, is what would be tested.
 Ended interrupt(const std::vector<std::string>& args, const fs::path& logs, int sig, double delay_s) {
   const auto t0 = std::chrono::steady_clock::now();
   const pid_t pid = start(args, logs);
-  std::this_thread::sleep_for(std::chrono::duration<double>(delay_s));
+  const auto give_up = t0 + std::chrono::seconds(10);
+  while (!catches_or_ended(pid, sig) && std::chrono::steady_clock::now() < give_up)
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  std::this_thread::sleep_until(t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                         std::chrono::duration<double>(delay_s)));
   ::kill(pid, sig);
   return finish(pid, t0);
 }

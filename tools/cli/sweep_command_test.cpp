@@ -178,7 +178,7 @@ BOOST_AUTO_TEST_CASE(a_throws_row_equals_stoneskip_run_on_the_same_overridden_ca
 
 BOOST_AUTO_TEST_CASE(a_case_that_names_no_fixed_scheme_is_swept_with_the_adaptive_stepper) {
   // Oracle: `stoneskip run` on the same case with the adaptive stepper named explicitly (bs32 at
-  // rtol = atol_m = 1e-8, the cases' default tolerance): the sweep's row must carry its counts of
+  // rtol = atol_m = 1e-9, the cases' default tolerance): the sweep's row must carry its counts of
   // work exactly (steps, right-hand sides, rejected trials: they differ between any two schemes or
   // tolerances), and must differ from the fixed stepper's.
   // The shipped case without the lines that would name a fixed stepper (if it still has them).
@@ -199,7 +199,7 @@ BOOST_AUTO_TEST_CASE(a_case_that_names_no_fixed_scheme_is_swept_with_the_adaptiv
     char set[128];
     std::snprintf(set, sizeof set, " --set throw.spin_rev_s=%.17g", at(t, row, "throw.spin_rev_s"));
     const std::string args = "run cases/paper_8ms_spin.toml --set solver.t_max_s=2.0" + std::string(set) + " --solver realtime --json";
-    const Outcome adaptive = command(args + " --set solver.scheme=bs32 --set solver.rtol=1e-8 --set solver.atol_m=1e-8");
+    const Outcome adaptive = command(args + " --set solver.scheme=bs32 --set solver.rtol=1e-9 --set solver.atol_m=1e-9");
     const Outcome fixed = command(args + " --set solver.scheme=semi_implicit_euler --set solver.dt_s=1e-3 --set solver.contact_dt_s=1e-5");
     BOOST_REQUIRE_MESSAGE(adaptive.status == 0 && fixed.status == 0, adaptive.err + fixed.err);
     const nlohmann::json a = nlohmann::json::parse(adaptive.out), f = nlohmann::json::parse(fixed.out);  // one solver: its result at the top

@@ -29,9 +29,11 @@ double rhs_per_step(Scheme s) {
 
 // Worst-case steps of the real-time stepper: every step at contact_dt_s; bs32 has no step floor,
 // so it is estimated as if every step were 6e-5 s, a third of its mean step in a planing contact at
-// rtol 1e-8 (~2e-4 s), and every step in contact: at 6 right-hand sides a step, the work the fixed
-// stepper's 10 µs contact step was estimated at (the spin-60 throw of cases/spin_sweep_base.toml
-// takes 34 537 right-hand sides where this allows 1e6 over its 10 s).
+// rtol 1e-8 (~2e-4 s; about 1e-4 s at the default 1e-9), and every step in contact: at 6 right-hand
+// sides a step, the work the fixed stepper's 10 µs contact step was estimated at (the spin-60 throw
+// of cases/spin_sweep_base.toml takes 34 537 right-hand sides at rtol 1e-8 where this allows 1e6
+// over its 10 s). The estimate does not scale with rtol: a case with a much tighter tolerance can
+// take more steps than it says.
 constexpr double kAdaptiveEstimateStep_s = 6e-5;
 double realtime_steps(const RealtimeOptions& o) {
   return std::ceil(o.t_max_s / (is_adaptive(o.scheme) ? kAdaptiveEstimateStep_s : o.contact_dt_s));

@@ -80,7 +80,7 @@ BOOST_AUTO_TEST_CASE(restart_and_tolerance_scaling_are_read_and_written_back) {
 BOOST_AUTO_TEST_CASE(a_case_names_a_scheme_and_a_tolerance_and_old_fixed_step_cases_read_as_before) {
   // Oracle: cases/README.md's [solver] block: with no scheme named, a case that gives contact_dt_s
   // keeps semi_implicit_euler with its steps (every case written before bs32 existed), one that
-  // does not gets bs32 with rtol = atol_m = 1e-8 and its dt_s as the largest step; a tolerance given
+  // does not gets bs32 with rtol = atol_m = 1e-9 and its dt_s as the largest step; a tolerance given
   // to a fixed scheme is a one-line error naming it; bs32's settings are written back.
   const StoneCase old = parse({});
   BOOST_TEST((old.realtime.scheme == Scheme::semi_implicit_euler));
@@ -89,8 +89,8 @@ BOOST_AUTO_TEST_CASE(a_case_names_a_scheme_and_a_tolerance_and_old_fixed_step_ca
   const std::string without = text.substr(0, text.find("contact_dt_s")) + text.substr(text.find("t_max_s"));
   const StoneCase adaptive = stone_case_from_document(parse_toml_text(without, "a.toml", {}));
   BOOST_TEST((adaptive.realtime.scheme == Scheme::bs32));
-  BOOST_TEST(adaptive.realtime.rtol == 1e-8);
-  BOOST_TEST(adaptive.realtime.atol_m == 1e-8);
+  BOOST_TEST(adaptive.realtime.rtol == 1e-9);
+  BOOST_TEST(adaptive.realtime.atol_m == 1e-9);
   BOOST_TEST(adaptive.realtime.dt_s == 1e-3);  // the case's dt_s, now bs32's largest step
   const StoneCase tight = stone_case_from_document(parse_toml_text(without, "a.toml", {"solver.rtol=1e-7", "solver.atol_m=1e-9"}));
   BOOST_TEST(tight.realtime.rtol == 1e-7);
