@@ -123,28 +123,33 @@ void summarise_restarts(WorkPrecisionResult& res, const WorkPrecisionOptions& o)
   if (v.reason.size() >= 2) v.reason.resize(v.reason.size() - 2);
 }
 
-// The loosest tolerance of the (first) adaptive family that, with every tighter one, keeps every
-// throw's contact list (AdaptiveToleranceChoice).
-void choose_adaptive_tolerance(WorkPrecisionResult& res, const WorkPrecisionOptions& o) {
-  AdaptiveToleranceChoice& a = res.adaptive_choice;
+}  // namespace
+
+AdaptiveToleranceChoice choose_adaptive_tolerance(const std::vector<WorkPrecisionThrow>& throws,
+                                                  const std::vector<WorkPrecisionOptions::RealtimeFamily>& realtime,
+                                                  const std::vector<double>& adaptive_rtol) {
+  AdaptiveToleranceChoice a;
   a.default_tolerance = kDefaultAdaptiveTolerance;
-  a.throws = static_cast<int>(res.throws.size());
-  for (const auto& f : o.realtime)
+  for (const auto& t : throws)
+    if (t.convention == Convention::physical) ++a.throws;
+    else a.set_aside.push_back(t.label);
+  for (const auto& f : realtime)
     if (is_adaptive(f.scheme)) {
       a.studied = true;
       a.family = std::string("realtime ") + to_string(f.scheme) + " (adaptive)";
       break;
     }
-  if (!a.studied || o.adaptive_rtol.empty()) return;
-  std::vector<double> tols = o.adaptive_rtol;
+  if (!a.studied || adaptive_rtol.empty()) return a;
+  std::vector<double> tols = adaptive_rtol;
   std::sort(tols.begin(), tols.end());  // tightest first
   a.tolerances = tols;
-  bool all_so_far = true;
+  bool all_so_far = a.throws > 0;
   for (double tol : tols) {
     int keeping = 0;
     double worst_t = 0, worst_h = 0;
     long rhs = 0;
-    for (const auto& t : res.throws)
+    for (const auto& t : throws) {
+      if (t.convention != Convention::physical) continue;
       for (const auto& p : t.points)
         if (p.family == a.family && p.setting == tol && p.ok) {
           ++keeping;
@@ -152,6 +157,7 @@ void choose_adaptive_tolerance(WorkPrecisionResult& res, const WorkPrecisionOpti
           worst_h = std::max(worst_h, p.headline_error_m);
           rhs += p.rhs_evaluations;
         }
+    }
     a.throws_keeping_contacts.push_back(keeping);
     all_so_far = all_so_far && keeping == a.throws;
     if (all_so_far) {
@@ -162,9 +168,8 @@ void choose_adaptive_tolerance(WorkPrecisionResult& res, const WorkPrecisionOpti
       a.rhs_evaluations = rhs;
     }
   }
+  return a;
 }
-
-}  // namespace
 
 const char* to_string(HeadlineError h) {
   switch (h) {
@@ -182,6 +187,7 @@ WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& given, c
   for (std::size_t k = 0; k < throws.size(); ++k) {
     res.throws[k].label = throws[k].label;
     res.throws[k].law = throws[k].environment.water_law;
+    res.throws[k].convention = throws[k].environment.convention;
   }
 
   // 1. The truth for every throw, and a tighter check of it.
@@ -328,7 +334,7 @@ WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& given, c
       }
     }
   }
-  choose_adaptive_tolerance(res, o);
+  res.adaptive_choice = choose_adaptive_tolerance(res.throws, o.realtime, o.adaptive_rtol);
   if (!o.restarts.empty()) summarise_restarts(res, o);
   return res;
 }

@@ -97,6 +97,7 @@ const char* to_string(HeadlineError h);  // "bounce position", "sinking position
 struct WorkPrecisionThrow {
   std::string label;         // the throw's label, with the law when the study sets laws
   WaterLaw law = WaterLaw::newtonian;
+  Convention convention = Convention::physical;
   ThrowResult truth;
   HeadlineError headline = HeadlineError::bounce_position;
   double truth_uncertainty_m = 0;   // headline difference between truth and truth check (NaN: lists differ)
@@ -140,8 +141,18 @@ struct AdaptiveToleranceChoice {
   double default_tolerance = 0;  // the cases' default (kDefaultAdaptiveTolerance)
   std::vector<double> tolerances;        // every tolerance run, as given
   std::vector<int> throws_keeping_contacts;  // per tolerance: throws with the truth's contact list
-  int throws = 0;
+  int throws = 0;              // the throws the choice is made on (physical convention)
+  // Paper-convention throws, set aside: the printed equations create energy in a contact, so their
+  // contact lists are chaotic (the stones report compares them on ensembles, section 3b), and the
+  // cases' default serves the physical convention. Their labels.
+  std::vector<std::string> set_aside;
 };
+
+// The loosest tolerance of the (first) adaptive family of `realtime` that, with every tighter one
+// of adaptive_rtol, keeps the truth's contact list on every physical-convention throw.
+AdaptiveToleranceChoice choose_adaptive_tolerance(const std::vector<WorkPrecisionThrow>& throws,
+                                                  const std::vector<WorkPrecisionOptions::RealtimeFamily>& realtime,
+                                                  const std::vector<double>& adaptive_rtol);
 
 struct WorkPrecisionResult {
   std::vector<WorkPrecisionThrow> throws;

@@ -117,6 +117,7 @@ Record work_precision_findings(const WorkPrecisionResult& wp, const WorkPrecisio
   ac.set("worst_headline_error_m", a.worst_headline_error_m);
   ac.set("rhs_evaluations", a.rhs_evaluations);
   ac.set("throws", a.throws);
+  if (!a.set_aside.empty()) ac.set_strings("set_aside", a.set_aside);
   Table per{{"tolerance", "throws_keeping_contacts"}, {}};
   for (std::size_t i = 0; i < a.tolerances.size(); ++i) per.add_row({a.tolerances[i], double(a.throws_keeping_contacts[i])});
   ac.set_table("per_tolerance", per);
