@@ -1,6 +1,6 @@
 #pragma once
 // The fluids and gravity around the stone, which form of the force laws to use (model/README.md §1.6), and
-// which water force law acts on a wetted triangle (issue 11; model/stone/water_laws.hpp).
+// which water force law acts on a wetted triangle (model/stone/water_laws.hpp).
 #include <string>
 
 namespace stoneskip {

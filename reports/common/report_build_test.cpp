@@ -1,4 +1,4 @@
-// What a report build leaves when it stops (issue 10, items 8 and 10; reports/README.md "Reports"). Oracle:
+// What a report build leaves when it stops (reports/README.md "Reports"). Oracle:
 // the folders on disk afterwards — a build stopped by an error before any section was finished
 // leaves nothing (main left an empty work folder: exit 2 with a folder); one with finished
 // sections keeps its work folder to be resumed, and the next build resumes them; a finished build

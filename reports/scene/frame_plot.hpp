@@ -1,5 +1,5 @@
 #pragma once
-// One frame of a scene drawn by gnuplot (issue 9, item 6), in two panels side by side:
+// One frame of a scene drawn by gnuplot, in two panels side by side:
 //   left:  the pond seen from above — the surface height as a colour map (blue below, red above
 //          the still level, on a fixed symmetric scale), the stone's track so far, where it touched
 //          the water, and the stone (a disk, black; hollow once it has sunk);

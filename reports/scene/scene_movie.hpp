@@ -1,5 +1,5 @@
 #pragma once
-// A movie of a scene (issue 9, item 6): every frame drawn with gnuplot (reports/scene/
+// A movie of a scene: every frame drawn with gnuplot (reports/scene/
 // frame_plot.hpp: the pond from above with the stone and its track, and an oblique 3-D view around
 // the stone) and the frames assembled by ffmpeg into an MP4 (H.264) or a GIF. A recorder is handed
 // every frame of the scene (solvers/scene/coupled_scene.hpp: FrameRecorder) and writes the data

@@ -1,5 +1,5 @@
 #pragma once
-// The scene report (issue 9, item 9), rendered from its data.h5 alone: the section records
+// The scene report, rendered from its data.h5 alone: the section records
 // written by run_scene_studies() (verification/scene/scene_studies.hpp) become index.md and the
 // figures (the still frames drawn by the same gnuplot commands as the movies,
 // reports/scene/frame_plot.hpp). Every number and verdict in the text is a stored value.

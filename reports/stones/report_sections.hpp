@@ -13,7 +13,7 @@ SectionOutput sweeps_section(const Record& sweeps, const Record& fig9);
 SectionOutput count_ensembles_section(const Record& count_ensembles);  // count_ensembles_section.cpp
 SectionOutput hard_cases_section(const Record& hard_cases);
 SectionOutput validation_section(const Record& validation);
-SectionOutput ranking_section(const Record& validation);  // the validation record's "ranking" (issue 11)
+SectionOutput ranking_section(const Record& validation);  // the validation record's "ranking"
 
 // A stored throw history's attack angle against time, as a plot series (validation_section.cpp).
 PlotSeries attack_angle_series(const Record& history, const std::string& title, const std::string& style);

@@ -1,5 +1,5 @@
 #pragma once
-// The stones report (issue 4), rendered from its data.h5 alone: the section records written by
+// The stones report, rendered from its data.h5 alone: the section records written by
 // run_stone_studies() (verification/stones/stone_studies.hpp) become index.md and the figures.
 #include "reports/common/stored_report.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// The waves report (issue 3), rendered from its data.h5 alone: the section records written by
+// The waves report, rendered from its data.h5 alone: the section records written by
 // run_wave_studies() (verification/waves/wave_studies.hpp) become index.md and the figures.
 // Every number and verdict in the text is a stored value; the words around them explain.
 #include "reports/common/stored_report.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Per-component absolute tolerances of the CVODE reference (CVodeSVtolerances; issue 8, defect 5).
+// Per-component absolute tolerances of the CVODE reference (CVodeSVtolerances).
 // One scalar atol on all 13 components of [x, v, q, L] asks for very different accuracies: 1e-12
 // is 1e-12 of a 1 m position but 1e-7 of the 1e-5 kg m²/s angular momentum of a slow stone. Here
 // ReferenceOptions::atol is the tolerance on positions (m), and every other component gets the

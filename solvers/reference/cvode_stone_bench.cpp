@@ -4,7 +4,7 @@
 // Ω = 10 rev/s, z0 = 0.1 m, t_max = 10 s, in both conventions (physical: sinks in the first
 // contact; paper: bounces); and the reference on Clanet's disk (R 2.5 cm, h 2.75 mm, N = 32,
 // 2700 kg/m³) thrown at 3.5 m/s, α = β = 20°, with 65 rev/s or none, under each water law, with
-// each restart strategy (issue 11, item 6).
+// each restart strategy.
 //   build-*/solvers/stoneskip_reference_bench
 //   build-*/solvers/stoneskip_reference_bench --benchmark_filter=Clanet
 // Counters: steps, rhs (right-hand-side evaluations), segments (restarts at located events),

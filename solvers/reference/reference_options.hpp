@@ -39,7 +39,7 @@ bool parse_restart_strategy(const std::string& s, RestartStrategy& out);
 //   per_component: atol is the tolerance on positions (m); velocities, the quaternion and the
 //                  angular momentum get the tolerance that moves the stone's rim by the same amount,
 //                  from the stone's size, mass distribution and the throw's speed and spin.
-//   uniform:       atol on every component in SI units (what the reference did before issue 8:
+//   uniform:       atol on every component in SI units (what the reference once did:
 //                  far looser on the angular momentum of a slow stone, ~1e-5 kg m²/s, than on
 //                  positions).
 enum class ToleranceScaling { per_component, uniform };

@@ -1,5 +1,5 @@
 #pragma once
-// The seed's system, whole (Lee & Baek 2013 §3–4; model/README.md §2.4, issue 9): a stone stepped by the
+// The seed's system, whole (Lee & Baek 2013 §3–4; model/README.md §2.4): a stone stepped by the
 // real-time stepper (solvers/realtime/stone_stepper.hpp) on a live height field
 // (model/water/height_field.hpp), run frame by frame for a set duration whether or not the stone
 // has sunk, with what each part cost.

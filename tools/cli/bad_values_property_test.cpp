@@ -1,4 +1,4 @@
-// Property (issue 10), end to end: for every key documented in cases/README.md, a value the
+// Property, end to end: for every key documented in cases/README.md, a value the
 // documentation makes bad goes through the command that reads it (`run` with --out for stone
 // cases and scenes, `wave` for wave cases, `regress` for baselines, `sweep` for sweep files) and must give exit 2, exactly
 // one line on stderr naming the key, nothing on stdout, no output or temporary file, within 30 s.

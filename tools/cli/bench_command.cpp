@@ -1,10 +1,10 @@
 // stoneskip bench [--json] [--quick] [--every-isa] [--scene CASE] [--sweep-case CASE] [--repeats N]
 //
-// The headline speed figures of issue 9, measured in one run of this binary
+// The headline speed figures, measured in one run of this binary
 // (verification/scene/headline_speed.hpp): the seed's scene in simulated frames per second with
 // the field on one thread and on two; the stencil's cell updates per second at 500² and 2048² and
 // the fraction of the copy bound measured by the same binary at 2048²; real-time throws per
-// second in a bounce-count sweep on two workers. Printed beside the targets of issue 9 with the
+// second in a bounce-count sweep on two workers. Printed beside their targets with the
 // machine it ran on (CPU model, core count, the kernel's instruction-set path, load average before
 // and after); the temporal-blocked kernel against the same copy bound and a plain loop of the
 // stencil beside the SIMD kernel. STONESKIP_ISA=scalar|sse2|avx2|avx512|neon forces the kernel's
@@ -54,7 +54,7 @@ struct BenchArgs {
   ResourceLimits limits;
 };
 
-// Issue 9, "What must be true".
+// The targets.
 constexpr double kSceneFpsTarget = 3000;
 constexpr double kBandwidthFractionTarget = 0.9;
 constexpr double kPerCellRatioTarget = 2;
@@ -245,7 +245,7 @@ void bench(const BenchArgs& a) {
   std::printf("stoneskip bench%s — %s, %d cores, stencil path %s; load average %s before, %s after; wall clock unless marked CPU%s\n",
               a.quick ? " (quick: a smoke run)" : "", h.cpu_model.c_str(), h.cores, h.stencil_large.kernel_isa.c_str(),
               g(h.load_before).c_str(), g(h.load_after).c_str(), a.cpu_clock ? " (stencil: thread CPU)" : "");
-  std::printf("%-58s %-26s %s\n", "", "measured", "target (issue 9)");
+  std::printf("%-58s %-26s %s\n", "", "measured", "target");
   line("seed's scene (" + std::to_string(h.scene_one.frames) + " frames), 1 thread: frames/s", g(h.scene_one.fps_best_wall(), 4) +
            " (median " + g(h.scene_one.fps_median_wall(), 4) + ", CPU " + g(h.scene_one.fps_cpu(), 4) + ")",
        ">= " + g(kSceneFpsTarget), h.scene_one.fps_best_wall() >= kSceneFpsTarget);

@@ -415,7 +415,7 @@ void validate(const CaptureArgs& a) {
         so.reference = !a.no_reference;
         so.realtime_options = c->realtime;
         so.reference_options = c->reference;
-        // Shown at once with --progress, otherwise once the ensemble has run 2 s (issue 10).
+        // Shown at once with --progress, otherwise once the ensemble has run 2 s.
         Progress progress("capture ensemble " + an.source, an.ensemble.size(), a.progress ? 0.0 : 2.0);
         so.progress = [&progress](std::size_t, std::size_t) { progress.tick(); };
         sim = simulate_capture(c->stone, c->environment, an, so);
@@ -544,7 +544,7 @@ void synthesize(const CaptureArgs& a) {
     SyntheticSensor s;
     CaptureKind kind;
   };
-  // Gestures (a remote swung in a room; issue 5): release 0.9 m up, 5–10 m/s, 1–2 rev/s.
+  // Gestures (a remote swung in a room): release 0.9 m up, 5–10 m/s, 1–2 rev/s.
   SyntheticThrow gentle;
   gentle.swing_rate_rad_s = 7.0;
   gentle.pivot_speed_m_s = 1.0;

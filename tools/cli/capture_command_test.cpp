@@ -98,7 +98,7 @@ BOOST_AUTO_TEST_CASE(a_capture_without_a_still_part_is_unusable) {
 BOOST_AUTO_TEST_CASE(a_two_remote_wiiyourself_log_is_read_without_a_format_and_judged_with_its_timing) {
   // Oracle: the generator's truth for the file (two remotes, 100 Hz reports with ±4 ms host jitter
   // in whole milliseconds, hex MotionPlus words, reports lost) and the thrower on remote #WM1; the
-  // second remote lay on the table and never pressed B. Issue 13's acceptance: read without
+  // second remote lay on the table and never pressed B. The acceptance: read without
   // --format, and --json gives the rate, the jitter and a verdict with reasons.
   const std::string file = "cases/captures/skip_two_remotes_wiiyourself.csv";
   const Run r = run("capture validate " + file + " --json --no-simulate --members 16");

@@ -1,4 +1,4 @@
-// Issue 10, end to end: the hostile commands that crashed, hung or fooled stoneskip on main, each
+// End to end: the hostile commands that crashed, hung or fooled stoneskip on main, each
 // run through the built executable (under a 60 s limit). Each must now give exit 2 with one line
 // on stderr naming the file or key and the reason, write nothing, and end within 60 s — or finish
 // correctly. What main did is in each test's first line; the oracle is the project's bad-input

@@ -1,4 +1,4 @@
-// SIGINT and SIGTERM at random moments (issue 10, items 8 and 9): main left partial report and
+// SIGINT and SIGTERM at random moments: main left partial report and
 // capture folders (a data.h5 and figures without index.md, or an empty folder) and `run --out big.h5` left
 // big.h5.tmp-PID. Oracle: the folder afterwards. A command stopped by the signal exits 128 +
 // signal and leaves nothing at all there (tools/io/signal_cleanup.hpp: the work folder and every

@@ -1,5 +1,5 @@
 // Atomic outputs replace nothing but a regular file, and inputs that are not regular files are
-// named for what they are (issue 10, items 5, 11 and the input items). Oracles: the file types
+// named for what they are. Oracles: the file types
 // made here with mkfifo, mknod and symlink (lstat says what they are), and the POSIX rename rule
 // that a rename replaces whatever the destination name is — so a refusal must come first.
 #include <boost/test/unit_test.hpp>

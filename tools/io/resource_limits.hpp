@@ -1,5 +1,5 @@
 #pragma once
-// Limits decided before any work (issue 10): each command estimates, from its validated inputs, the
+// Limits decided before any work: each command estimates, from its validated inputs, the
 // memory it will hold and the work it will do (steps, cell updates), and refuses — exit 2, the
 // estimate in the message — when either exceeds the documented limit (cases/README.md, "Limits").
 // The limits are deliberately generous for a 2-core laptop; `--max-memory-gb G` and

@@ -1,4 +1,4 @@
-// The limits decided before any work (issue 10): an estimate above its limit is refused with the
+// The limits decided before any work: an estimate above its limit is refused with the
 // estimate and the limit in one line; the flags lift them. Oracle: the numbers put in.
 #include <boost/test/unit_test.hpp>
 

@@ -1,6 +1,6 @@
 #pragma once
 // What is checked in a TOML text before toml11 (3.7) parses it, because toml11 itself would crash or
-// crawl (issue 10):
+// crawl:
 //  * nesting: toml11's parser recurses once per nested array or inline table, and ~8 000 levels
 //    overflow the 8 MB stack (SIGSEGV). Deeper than kMaxTomlNesting levels is refused.
 //  * long lines: toml11 builds an error message holding the whole current line each time it tries

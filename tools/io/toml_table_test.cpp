@@ -1,4 +1,4 @@
-// Hostile TOML (issue 10, items 1, 17, 18 and the --set line): the reader must refuse with one
+// Hostile TOML (and the --set line): the reader must refuse with one
 // line naming the file, line and key, never crash, clamp or blame the wrong place. Oracles: the
 // TOML text as written (its numbers, its lines) and the limits in tools/io/toml_prescan.hpp.
 #include <boost/test/unit_test.hpp>

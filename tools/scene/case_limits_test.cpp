@@ -1,4 +1,4 @@
-// Plausibility bounds and limits of stone and wave cases (issue 10): what main ran as a throw — a
+// Plausibility bounds and limits of stone and wave cases: what main ran as a throw — a
 // stone of 1e-30 m (exit speed 7.6e22 m/s), water of density 0, a release 1 m under water, an
 // unstable scene water blamed on the stone — is refused with the key and the bound, and every
 // shipped case stays inside the bounds and the limits. Oracles: the bounds documented per key in

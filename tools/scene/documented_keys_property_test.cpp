@@ -1,4 +1,4 @@
-// Property (issue 10): every key documented in cases/README.md — stone cases, a stone on live
+// Property: every key documented in cases/README.md — stone cases, a stone on live
 // water, wave cases, golden baselines, sweep files — refuses every value the documentation makes bad (another
 // type; NaN, ±inf; 1e±400; integers beyond 64 bits and huge counts; zero, signs and numbers just
 // outside the documented bounds) with an InputError of one line naming the key, within a time

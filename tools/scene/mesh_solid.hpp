@@ -1,6 +1,6 @@
 #pragma once
 // Whether a closed, consistently oriented mesh (check_mesh() ok) bounds one solid, so that its
-// volume and inertia (the divergence theorem, Eberly 2002) count each point once (issue 10: an OBJ
+// volume and inertia (the divergence theorem, Eberly 2002) count each point once (an OBJ
 // of two overlapping shells counted its volume twice).
 //
 //  * Shells are the sets of triangles connected through shared vertices.

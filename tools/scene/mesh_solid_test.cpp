@@ -1,4 +1,4 @@
-// One solid, counted once (issue 10: an OBJ of two overlapping shells counted its volume twice).
+// One solid, counted once (an OBJ of two overlapping shells counted its volume twice).
 // Oracles: boxes whose overlaps are known by construction, the winding number of a tetrahedron
 // (1 inside, 0 outside: Σ solid angles / 4π), and the volume of the union of two boxes.
 #include <boost/test/unit_test.hpp>

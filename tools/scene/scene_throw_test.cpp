@@ -111,7 +111,7 @@ BOOST_AUTO_TEST_CASE(water_keys_are_checked_like_any_other) {
 BOOST_AUTO_TEST_CASE(on_the_swell_every_wet_moment_lies_inside_a_logged_contact) {
   // Oracle: model/README.md §1.8 — a contact is a maximal interval during which some S_i > 0, so every
   // sample with a wetted area lies inside a logged contact, and a stone that sinks ends a logged
-  // contact at the time it sank. Regression for issue 9: `stoneskip run cases/scenes/swell_8ms.toml
+  // contact at the time it sank. Regression: `stoneskip run cases/scenes/swell_8ms.toml
   // --set environment.convention=paper --set throw.height_m=0.121 --set throw.spin_rev_s=20`
   // printed 0 bounces, "sank at 0.08279 s" and no contacts although the stone is wet from
   // 0.0725 s: the water, not the stone, had crossed. Every step is sampled (output_dt_s = 0); the

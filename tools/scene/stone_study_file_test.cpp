@@ -1,4 +1,4 @@
-// The keys issue 11 added to the stones study files (cases/README.md, "Study files"): the water
+// The keys of the stones study files (cases/README.md, "Study files") beyond the first ones: the water
 // laws of the convergence and validation studies, "throw@law" in the work-precision and restart
 // studies, the restart study, the
 // validation's scored ranges, measured curve and ranking; strict one-line errors for bad values.

@@ -1,4 +1,4 @@
-// Property (issue 10): every key of the shipped stones study file refuses a value no key can take,
+// Property: every key of the shipped stones study file refuses a value no key can take,
 // in one line naming it. Oracle: cases/README.md, "Study files" (tools/scene/study_keys_property.hpp).
 #include "tools/scene/stone_study_file.hpp"
 #include "tools/scene/study_keys_property.hpp"

@@ -35,7 +35,7 @@
 //   truth                              a synthetic capture with a truth file beside it: each
 //                                      quantity's truth against its estimate and interval
 //                                      (capture_truth.hpp; added by `capture validate`)
-// The place for the coupled scene (issue 13 item 5, not built yet): a child `scene` of this record,
+// The place for the coupled scene (not built yet): a child `scene` of this record,
 // made by a scene study from the same analysis (the stone against the CVODE reference, the waves
 // against the forced spectral reference), and one more part of the capture's section to render it.
 #include <string>

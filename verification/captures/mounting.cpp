@@ -40,11 +40,11 @@ void apply_mounting_setting(Mounting& m, const std::string& setting, const std::
     if (v.norm() < 1e-6) throw_input_error(where, 0, full, "must not be the zero vector");
     (key == "stone_normal" ? m.stone_normal : m.stone_forward) = v.normalized();
   } else if (key == "stone_offset_m") {
-    // Plausibility (issue 10): the stone is in the hand that holds the remote.
+    // Plausibility: the stone is in the hand that holds the remote.
     m.stone_offset_m = parse_vec(value, where, full);
     if (!(m.stone_offset_m.norm() <= 1.0)) throw_input_error(where, 0, full, "must be at most 1 m long, the stone being in the hand (got " + value + ")");
   } else if (key == "lever_arm_m") {
-    // Plausibility (issue 10): a forearm to a whole arm; zero would make the lever-arm speed 0.
+    // Plausibility: a forearm to a whole arm; zero would make the lever-arm speed 0.
     m.lever_arm_m = parse_vec(value, where, full);
     if (!(m.lever_arm_m.norm() >= 0.05 && m.lever_arm_m.norm() <= 3.0))
       throw_input_error(where, 0, full, "must be 0.05 to 3 m long, pivot of the swing to the stone (got " + value + ")");

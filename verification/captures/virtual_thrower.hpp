@@ -1,6 +1,6 @@
 #pragma once
 // The virtual thrower: from the hand motion a capture measures to the virtual stone the solvers
-// throw (issue 13 item 4; documented in tools/capture/README.md, "The virtual thrower").
+// throw (documented in tools/capture/README.md, "The virtual thrower").
 //
 // A person throws a remote in a room, not a stone over a lake. The capture measures, for the stone
 // held at the mounting's offset from the remote (mounting.hpp, stone_offset_m): its velocity, its

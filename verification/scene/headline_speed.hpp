@@ -1,5 +1,5 @@
 #pragma once
-// The headline speed figures of issue 9 (item 8), measured in one run of one binary:
+// The headline speed figures, measured in one run of one binary:
 //   1. the seed's scene (a stone on a 500 × 500 two-way field, 90 frames per simulated second)
 //      in simulated frames per second, the field on one thread and on two;
 //   2. the stencil's cell updates per second at 500² (in cache) and 2048² (in memory), against

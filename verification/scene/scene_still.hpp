@@ -1,5 +1,5 @@
 #pragma once
-// The still of a scene that goes into the report (issue 9, item 6): the most telling frame,
+// The still of a scene that goes into the report: the most telling frame,
 // chosen by a stated rule — the frame with the most disturbed water (cells with |z| above
 // `threshold_fraction` of the largest |z| of the whole scene) among the frames before any
 // disturbance reaches the pond's edge (after that, reflections muddle the rings) — and what it

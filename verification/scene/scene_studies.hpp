@@ -1,5 +1,5 @@
 #pragma once
-// The scene studies (issue 9, item 9): every question the scene report answers, as a function
+// The scene studies: every question the scene report answers, as a function
 // from settings (cases/studies/scene*.toml) to findings (verification/study/record.hpp), section
 // by section:
 //   settings     the scenes studied and the settings;
@@ -11,7 +11,7 @@
 //   rings        a bounce's ring speed against c less the scheme's dispersion;
 //   shortcuts    each way of computing less (no field, active tiles, float32, one draught sample,
 //                the contact step only near the water): its error and the time it saves;
-//   speed        the headline speed figures against issue 9's targets;
+//   speed        the headline speed figures against their targets;
 //   frames       the most telling still of each scene.
 // Each section's record holds the numbers, tables, verdicts and computed reasons the report
 // formats (reports/scene/); nothing in the report decides a verdict.

@@ -1,6 +1,6 @@
 #pragma once
 // Bounce count against one throw parameter (spin — the paper's Fig. 8 —, speed, attack angle,
-// path angle), with every change of the count located by bisection (issue 4, item 4): between two
+// path angle), with every change of the count located by bisection: between two
 // neighbouring grid values whose counts differ, the parameter is halved down to a stated
 // tolerance, so a threshold is reported as a value ± tolerance/2, not only as counts on a grid.
 #include <string>

@@ -1,4 +1,4 @@
-// The bisection of a bounce-count threshold always ends (issue 10, item 2): with a tolerance below
+// The bisection of a bounce-count threshold always ends: with a tolerance below
 // the spacing of doubles (1e-300) the midpoint rounds onto an end and main looped forever; now the
 // bracket stops when no double lies strictly between its ends. Oracle: IEEE 754 — the stopped
 // bracket's ends are neighbouring doubles (std::nextafter of one is the other), and each end

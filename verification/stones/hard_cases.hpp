@@ -1,5 +1,5 @@
 #pragma once
-// Hard cases (issue 4, item 5): throws chosen to break a solver — grazing and steep entry, very
+// Hard cases: throws chosen to break a solver — grazing and steep entry, very
 // fast, very high spin, heavy and very light stones, a tumbling asymmetric stone, the paper
 // convention at high spin — each solved by the reference and by the real-time stepper with its
 // case settings and with one fixed step h for flight and contact alike, growing from tiny to a

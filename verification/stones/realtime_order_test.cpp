@@ -105,7 +105,7 @@ BOOST_AUTO_TEST_CASE(through_a_contact_rk4_shows_neither_its_formal_order_nor_an
   // Oracle: the verdict rule on the study's own default range (steps per interval 64 … 8192 over
   // the first contact with a quarter of its duration of flight on each side; no subset chosen).
   // The theory above caps RK4 at order 3 through a contact, but only once the steps are shorter
-  // than the spacing of the kinks; over the default range the fit (issue 8: p = 2.41
+  // than the spacing of the kinks; over the default range the fit (measured when written: p = 2.41
   // [1.74, 3.08], pairwise 1.87 … 4.90) excludes the formal 4 and cannot establish 3 either.
   // Midpoint, whose formal order 2 is below the cap, keeps it over the same range.
   const RealtimeConvergenceResult& r = default_study();

@@ -1,5 +1,5 @@
 #pragma once
-// Tolerance proportionality of the CVODE reference (issue 4, item 2): the error of the reference
+// Tolerance proportionality of the CVODE reference: the error of the reference
 // at tolerance rtol, measured against a much tighter run, should fall in proportion to rtol
 // (slope ≈ 1 on a log–log plot) if its error control works through the located contact events.
 #include <string>

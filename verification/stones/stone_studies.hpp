@@ -1,5 +1,5 @@
 #pragma once
-// The stone studies (issue 4): every question the stones report answers, as a function from
+// The stone studies: every question the stones report answers, as a function from
 // settings (cases/studies/stones*.toml, resolved by the command line into the throws below) to
 // findings (verification/study/record.hpp), section by section:
 //   settings        the throws and their case files
@@ -45,7 +45,7 @@ struct SweepAxisOptions {
   double threshold_tolerance = 0.25;
 };
 
-// The CVODE restart strategies measured against each other (issue 11, item 6): the
+// The CVODE restart strategies measured against each other: the
 // work-precision study's CVODE runs only, on these throws under these laws.
 struct RestartStudyOptions {
   std::vector<std::string> throws{"spin", "nospin"};   // as work_precision_throws (spinning and not)

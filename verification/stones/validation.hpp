@@ -1,6 +1,6 @@
 #pragma once
-// Validation of the stone model against experiments and analytic models (model/README.md §3; issue 4,
-// item 6; issue 11, items 3–4). Nothing here is tuned: each water law runs with its published C_w
+// Validation of the stone model against experiments and analytic models (model/README.md §3).
+// Nothing here is tuned: each water law runs with its published C_w
 // (model/stone/environment.hpp) and its values are set beside the measured ones; the difference
 // is model-form error.
 //

@@ -3,7 +3,7 @@
 // them), the fitted exponents with their intervals and verdicts, the facts that explain why the
 // two conventions disagree (whether the fluids ever do positive work, whether contacts end with
 // more energy than they began with, which way the first contact pitches the stone), and the
-// answer of issue 11: the laws ranked by their distance from the measurements and by their cost,
+// answer: the laws ranked by their distance from the measurements and by their cost,
 // and the cheapest law that skips like a real stone, if any.
 #include <algorithm>
 #include <cmath>

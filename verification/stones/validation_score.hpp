@@ -1,5 +1,5 @@
 #pragma once
-// How far a model is from the measurements (issue 11, item 4): one number per quantity and their
+// How far a model is from the measurements: one number per quantity and their
 // mean, the metric the stones report ranks the water laws by.
 //
 // A measured quantity is a range [low, high] (a single value when its source gives one; both ends

@@ -1,7 +1,7 @@
 #pragma once
-// Speed against error (issue 4, item 3): work-precision data for the real-time stepper over a
+// Speed against error: work-precision data for the real-time stepper over a
 // range of steps and for CVODE (BDF and Adams, each with one or more restart strategies) over a
-// range of tolerances, on several throws, each under one or more water laws (issue 11).
+// range of tolerances, on several throws, each under one or more water laws.
 // Error (the headline): the largest distance between a solver's bounce positions (the centre of
 // mass where a contact ends with the stone taking off again) and those of a tight reference; for a
 // throw whose reference never bounces, the distance between the points where the two sank
@@ -14,7 +14,7 @@
 // and right-hand-side evaluations. A run whose contact list differs from the reference's (a
 // missed, extra or merged contact) or that fails is listed as a failure with the reason, never
 // dropped.
-// Restart strategies (issue 11, item 6; ReferenceOptions::restart): the truth is always CVODE with
+// Restart strategies (ReferenceOptions::restart): the truth is always CVODE with
 // restarts at every event, at truth_rtol. For each method, rtol and strategy the study sums the
 // cost over the throws and takes the worst contact-time error (RestartSummary); a strategy keeps
 // the contact times where that error is at most restart_error_factor times every_event's own at

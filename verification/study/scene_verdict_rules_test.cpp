@@ -1,4 +1,4 @@
-// Tests of the verdict rules of the scene report (issue 9; phrases in verdict_rules.hpp): each rule
+// Tests of the verdict rules of the scene report (phrases in verdict_rules.hpp): each rule
 // at and beside its edges. Oracle: the rules' definitions as the header states them.
 #include <boost/test/unit_test.hpp>
 

@@ -1,6 +1,6 @@
 #pragma once
-// What float32 storage costs in accuracy (issue 9, item 7: "pick float or double by measured
-// error"): the same leapfrog run stored in float32 and in float64, against each other and against
+// What float32 storage costs in accuracy, so that float or double is picked by measured error:
+// the same leapfrog run stored in float32 and in float64, against each other and against
 // the exact continuum reference, on the wave studies' standard problem
 // (verification/waves/wave_problem.hpp) at the scene's grid size. float32 is acceptable where its
 // difference from float64 is far below the discretisation error the double run already has.

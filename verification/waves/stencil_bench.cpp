@@ -1,4 +1,4 @@
-// The height field's step against the memory bandwidth of the same binary (issue 9, item 7), for
+// The height field's step against the memory bandwidth of the same binary, for
 // each stencil at 500 × 500 (in cache) and 2048 × 2048 cells (in memory), on one and two threads,
 // in float64 and float32 storage. Each benchmark is one call of measure_stencil_throughput
 // (verification/waves/stencil_throughput.hpp), which samples the step and a copy kernel alternately

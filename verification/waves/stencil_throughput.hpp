@@ -1,6 +1,6 @@
 #pragma once
-// How fast the height field steps, against what the memory of the same machine allows (issue 9,
-// item 7): cell updates per second of HeightField::step, and the copy kernel's bytes per second
+// How fast the height field steps, against what the memory of the same machine allows:
+// cell updates per second of HeightField::step, and the copy kernel's bytes per second
 // measured in the same binary, in the same run, with the same threads and array size. A step reads
 // z and z⁻ and writes z⁺ over z⁻: 3 values per cell; a copy reads and writes 2 values per element.
 // The bound is (copy bytes/s) / (3 · sizeof(value)) cells/s; the fraction is the step's rate over it.

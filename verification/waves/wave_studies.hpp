@@ -1,5 +1,5 @@
 #pragma once
-// The wave studies (issue 3): every question the waves report answers, as a function from
+// The wave studies: every question the waves report answers, as a function from
 // settings (cases/studies/waves*.toml) to findings (verification/study/record.hpp), section by
 // section: consistency, convergence (space / time / both), isotropy (symbol, simulation, ring),
 // stability (computed, measured, Lengyel's bound), speed against error. Each section's record
