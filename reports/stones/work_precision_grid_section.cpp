@@ -18,6 +18,45 @@ std::string list_text(const std::vector<double>& v, const std::string& unit) {
   return s + unit;
 }
 
+std::string pct(double f) { return fmt(100 * f, 3) + " %"; }
+
+// The real-time budget: bs32 at the cases' default tolerance with at most N right-hand sides per
+// frame, the smallest budget the grid's rule picks, and per budget what a frame costs at most.
+void budget_text(SectionWriter& w, const Record& c) {
+  const Record& b = c.at("budget_choice");
+  const double frame_ms = 1000 * b.number("frame_dt_s");
+  std::string s = "`" + b.text("family") + "` runs `bs32` at rtol = atol_m " + fmt(b.number("rtol"), 2) +
+                  " (the cases' default) with at most N right-hand sides per " + fmt(frame_ms, 3) +
+                  " ms frame: when the error test would need more, the step is taken at the size the budget "
+                  "allows and accepted whatever its error (solvers/realtime/stone_stepper.hpp, \"Budget\"). Its rows in the "
+                  "table above are the error it then makes, on the same throws and against the same truths. ";
+  if (b.flag("found"))
+    s += "**The smallest budget that keeps the default tolerance's rule is " + fmt(b.number("rhs_per_frame"), 7) +
+         " right-hand sides per frame**: " + fmt(b.number("agreeing")) + " of " + fmt(b.number("n")) +
+         " throws keep the truth's bounce count there (95 % interval " + fmt(b.number("wilson_lo"), 3) + "–" +
+         fmt(b.number("wilson_hi"), 3) + "), median contact-time error " + fmt(b.number("median_contact_time_error_s"), 2) + " s.";
+  else
+    s += "**No budget run keeps the default tolerance's rule.**";
+  w.lead("The real-time budget.", s);
+  w.text("In full: " + b.text("reason") + ".");
+  MarkdownTable t({"RHS per frame", "meets the rule", "steps forced", "largest error ratio accepted", "CPU per RHS (µs)",
+                   "CPU per frame at most (ms)", "of the frame"});
+  const Table& per = b.table("per_budget");
+  for (std::size_t i = 0; i < per.rows(); ++i) {
+    auto col = [&](const char* k) { return per.column(k)[i]; };
+    t.row({fmt(col("rhs_per_frame"), 7), col("meets") != 0 ? "yes" : "no", pct(col("forced_step_fraction")),
+           fmt(col("max_error_ratio"), 3), fmt(1e6 * col("cpu_per_rhs_s"), 3), fmt(1e3 * col("cpu_per_frame_bound_s"), 3),
+           pct(col("frame_fraction"))});
+  }
+  w.table(t);
+  w.lead("How to read the budget.",
+         "A step the budget forces is accepted with an error-test ratio above 1 (1 is the tolerance); the largest such "
+         "ratio and the share of steps forced are the stepper's own account of the error it made, and the bounce counts "
+         "and contact times above are the error measured against the truth. A frame's stone costs at most N right-hand "
+         "sides: the CPU bound per frame is N times the mean CPU per right-hand side of that budget's runs on this "
+         "machine, beside the frame it must fit in.");
+}
+
 }  // namespace
 
 SectionOutput work_precision_grid_section(const Record& c) {
@@ -89,12 +128,12 @@ SectionOutput work_precision_grid_section(const Record& c) {
   }
 
   // The table per family and setting, and the figures drawn from it.
-  MarkdownTable t({"family", "setting (tolerance or dt s)", "same count", "95 % interval", "contact lists match",
+  MarkdownTable t({"family", "setting (tolerance, dt s or RHS per frame)", "same count", "95 % interval", "contact lists match",
                    "median contact-time error (s)", "largest (s)", "RHS per throw", "CPU per throw (ms)", "failed"});
   const Table& sum = c.table("summary");
   for (std::size_t i = 0; i < sum.rows(); ++i) {
     auto col = [&](const char* k) { return sum.column(k)[i]; };
-    t.row({families.at(static_cast<std::size_t>(col("family"))), fmt(col("setting"), 3),
+    t.row({families.at(static_cast<std::size_t>(col("family"))), fmt(col("setting"), 7),
            fmt(col("agreeing")) + " of " + fmt(col("n")), fmt(col("wilson_lo"), 3) + "–" + fmt(col("wilson_hi"), 3),
            fmt(col("timed")), fmt(col("median_contact_time_error_s"), 2), fmt(col("max_contact_time_error_s"), 2),
            fmt(col("mean_rhs_evaluations"), 5), fmt(1000 * col("mean_cpu_s"), 3), fmt(col("failed"))});
@@ -135,6 +174,7 @@ SectionOutput work_precision_grid_section(const Record& c) {
          "need not rise steadily as it tightens: a throw near a bounce-count threshold may be kept by chance at a loose "
          "setting. The interval is what the grid can say about throws like these; a fraction from a few throws is a "
          "point estimate with a wide interval, not a guarantee.");
+  if (c.has_number("budget_run") && c.flag("budget_run")) budget_text(w, c);
   SectionOutput out = w.finish();
   out.markdown.insert(0, "#");  // a subsection of section 2: "### 2.1 …"
   return out;

@@ -14,6 +14,11 @@
 // chosen from the work-precision table in solvers/README.md) on two workers; beside its throws/s,
 // untimed, the fraction of its throws whose bounce count equals CVODE's where CVODE (BDF, the case's
 // reference settings) at rtol = atol 1e-8 and 1e-10 agrees.
+// The real-time budget (bs32 at the same tolerance, at most N right-hand sides per 1/90 s frame),
+// untimed, on the same throws at N = 16 … 2048: per N the throws keeping CVODE's agreed count, the
+// steps the budget forced, the largest error ratio accepted and the CPU a frame costs at most
+// (N × thread CPU per right-hand side); and the smallest N at which, and at every larger one, the
+// match reaches the sweep's target.
 //   stoneskip bench
 //   stoneskip bench --json
 //   stoneskip bench --quick --json      # a smoke run (seconds): the same keys, rougher numbers
@@ -34,6 +39,7 @@
 #include "tools/scene/case_problem.hpp"
 #include "tools/scene/scene_throw.hpp"
 #include "verification/scene/headline_speed.hpp"
+#include "verification/stones/frame_budget_ladder.hpp"
 #include "verification/stones/parallel_runs.hpp"
 #include "verification/stones/throw_problem.hpp"
 
@@ -106,6 +112,17 @@ CvodeAgreement cvode_agreement(const SweepSpeedOptions& sweep, const std::vector
   return a;
 }
 
+// The real-time budget's ladder: right-hand sides per 1/90 s frame (the paper's > 90 frames/s).
+const std::vector<long> kBudgetLadder{16, 32, 64, 128, 256, 512, 1024, 2048};
+
+// Per throw, CVODE's count where its two tolerances agree, else −1 (the budget ladder's reference).
+std::vector<int> agreed_counts(const CvodeAgreement& a) {
+  std::vector<int> out(a.bounces[0].size(), -1);
+  for (std::size_t i = 0; i < out.size(); ++i)
+    if (a.bounces[0][i] >= 0 && a.bounces[0][i] == a.bounces[1][i]) out[i] = a.bounces[0][i];
+  return out;
+}
+
 std::vector<double> range(double lo, double hi, double step) {
   std::vector<double> v;
   for (double x = lo; x <= hi + 1e-9; x += step) v.push_back(x);
@@ -163,6 +180,13 @@ void bench(const BenchArgs& a) {
   enforce_limits(estimate_run(sweep_case, RunSolvers{}), a.limits, sweep_case.file);
   const HeadlineSpeed h = measure_headline_speed(o, terminal_progress());
   const CvodeAgreement cvode = cvode_agreement(o.sweep, h.sweep.bounces);  // not timed
+  // The real-time budget on the same throws at the same tolerance (CPU per frame from thread CPU).
+  FrameBudgetLadderOptions bo;
+  bo.rhs_per_frame = a.quick ? std::vector<long>{16, 64} : kBudgetLadder;
+  bo.workers = o.sweep.workers;
+  bo.progress = terminal_progress();
+  const std::vector<FrameBudgetRung> ladder = run_frame_budget_ladder(sweep_throws(o.sweep), agreed_counts(cvode), bo);
+  const long budget_for_target = smallest_budget_meeting(ladder, kMatchFractionTarget);
 
   nlohmann::json j;
   j["scene_fps_1core"] = h.scene_one.fps_best_wall();
@@ -208,6 +232,21 @@ void bench(const BenchArgs& a) {
   j["sweep_cvode_agreeing_throws"] = cvode.agreeing;
   j["sweep_cvode_matched_throws"] = cvode.matched;
   j["sweep_cvode_match_fraction"] = cvode.fraction();
+  j["budget_frame_dt_s"] = bo.frame_dt_s;
+  nlohmann::json rungs = nlohmann::json::array();
+  for (const FrameBudgetRung& r : ladder)
+    rungs.push_back({{"rhs_per_frame", r.rhs_per_frame},
+                     {"bounces", r.bounces},
+                     {"cvode_matched_throws", r.matched},
+                     {"cvode_compared_throws", r.compared},
+                     {"cvode_match_fraction", r.match_fraction()},
+                     {"forced_step_fraction", r.forced_fraction()},
+                     {"max_error_ratio", r.max_error_ratio},
+                     {"rhs_per_throw", double(r.rhs_evaluations) / std::max<std::size_t>(1, r.bounces.size())},
+                     {"cpu_per_frame_bound_us", 1e6 * r.cpu_per_frame_bound_s()},
+                     {"mean_cpu_per_frame_us", 1e6 * r.mean_cpu_per_frame_s()}});
+  j["budget_ladder"] = rungs;
+  j["budget_rhs_per_frame_for_match_target"] = budget_for_target > 0 ? nlohmann::json(budget_for_target) : nlohmann::json();
   const double over_plain = h.stencil_small.plain_cells_per_s > 0 ? h.stencil_small.cells_per_s / h.stencil_small.plain_cells_per_s : 0;
   j["temporal_blocking_fraction_2048"] = h.stencil_large.temporal_fraction;
   j["temporal_blocking_cells_per_s_2048"] = h.stencil_large.temporal_cells_per_s;
@@ -277,6 +316,17 @@ void bench(const BenchArgs& a) {
            std::to_string(cvode.agreeing) + " throws)",
        g(cvode.fraction(), 4) + " (" + std::to_string(cvode.matched) + ")", ">= " + g(kMatchFractionTarget),
        cvode.fraction() >= kMatchFractionTarget);
+  std::printf("real-time budget (bs32 rtol %s, at most N right-hand sides per %s ms frame; CPU: thread CPU of the same runs):\n",
+              g(o.sweep.base.realtime.rtol).c_str(), g(1e3 * bo.frame_dt_s).c_str());
+  std::printf("  %6s %22s %14s %16s %20s %20s\n", "N", "counts = CVODE's", "forced steps", "worst error ratio",
+              "frame CPU bound µs", "mean frame CPU µs");
+  for (const FrameBudgetRung& r : ladder)
+    std::printf("  %6ld %22s %14s %16s %20s %20s\n", r.rhs_per_frame,
+                (g(r.match_fraction(), 4) + " (" + std::to_string(r.matched) + " of " + std::to_string(r.compared) + ")").c_str(),
+                g(r.forced_fraction()).c_str(), g(r.max_error_ratio).c_str(), g(1e6 * r.cpu_per_frame_bound_s()).c_str(),
+                g(1e6 * r.mean_cpu_per_frame_s()).c_str());
+  std::printf("  the smallest budget of these that keeps CVODE's count on >= %s of the throws (and every larger one does): %s\n",
+              g(kMatchFractionTarget).c_str(), budget_for_target > 0 ? std::to_string(budget_for_target).c_str() : "none");
   std::printf("sweep profile: %s ms CPU per throw, %s s simulated per throw, %s steps per throw (%s with the contact step), %s µs CPU per step\n",
               g(1e3 * h.sweep.cpu_s / std::max(1L, h.sweep.throws)).c_str(), g(h.sweep.simulated_s / std::max(1L, h.sweep.throws)).c_str(),
               g(double(h.sweep.steps) / std::max(1L, h.sweep.throws)).c_str(),

@@ -102,6 +102,52 @@ BOOST_AUTO_TEST_CASE(bench_sweep_match_fraction_is_its_own_counts_and_the_counts
   }
 }
 
+BOOST_AUTO_TEST_CASE(bench_budget_ladder_counts_are_stoneskip_run_s_and_its_matches_are_recounted) {
+  // Oracles: (1) `stoneskip run` with the same budget in the case ([solver] rhs_per_frame, parsed
+  // with --set): an independent path to the same throw's count; (2) the matches recounted from the
+  // stored counts against CVODE's agreed ones; (3) the smallest budget meeting the target, found
+  // again from the stored fractions by its rule (at it and at every larger one).
+  const nlohmann::json& j = quick_bench_json();
+  const auto cv = j["sweep_cvode_bounces"].get<std::vector<std::vector<int>>>();
+  const auto& ladder = j["budget_ladder"];
+  BOOST_REQUIRE(ladder.is_array());
+  BOOST_REQUIRE_EQUAL(ladder.size(), 2u);  // --quick: 16 and 64
+  BOOST_TEST(std::abs(j["budget_frame_dt_s"].get<double>() - 1.0 / 90) <= 1e-15);
+  for (const auto& r : ladder) {
+    const auto b = r["bounces"].get<std::vector<int>>();
+    BOOST_REQUIRE_EQUAL(b.size(), 6u);
+    long compared = 0, matched = 0;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      if (cv[0][i] < 0 || cv[0][i] != cv[1][i] || b[i] < 0) continue;
+      ++compared;
+      if (b[i] == cv[0][i]) ++matched;
+    }
+    BOOST_TEST(r["cvode_compared_throws"].get<long>() == compared);
+    BOOST_TEST(r["cvode_matched_throws"].get<long>() == matched);
+    BOOST_TEST(r["forced_step_fraction"].get<double>() >= 0);
+    BOOST_TEST(r["forced_step_fraction"].get<double>() <= 1);
+  }
+  // At 16 right-hand sides per 11.1 ms frame (a 1.4 ms step at best) a contact's steps are forced.
+  BOOST_TEST(ladder[0]["forced_step_fraction"].get<double>() > 0);
+  BOOST_TEST(ladder[0]["max_error_ratio"].get<double>() > 1);
+  const std::string run = "run cases/spin_sweep_base.toml --set throw.spin_rev_s=20 --set throw.attack_angle_deg=20 --json"
+                          " --solver realtime --set solver.scheme=bs32 --set solver.rtol=1e-9 --set solver.atol_m=1e-9"
+                          " --set solver.rhs_per_frame=64";
+  const auto a = stoneskip::test::run_stoneskip(run, false);
+  BOOST_REQUIRE_MESSAGE(a.status == 0, a.out);
+  BOOST_TEST(nlohmann::json::parse(a.out)["bounces"].get<int>() == ladder[1]["bounces"][3].get<int>());
+  long smallest = -1;
+  for (std::size_t k = ladder.size(); k-- > 0;) {
+    if (!(ladder[k]["cvode_match_fraction"].is_number() && ladder[k]["cvode_match_fraction"].get<double>() >= 0.98)) break;
+    smallest = ladder[k]["rhs_per_frame"].get<long>();
+  }
+  const auto& key = j["budget_rhs_per_frame_for_match_target"];
+  if (smallest < 0)
+    BOOST_TEST(key.is_null());
+  else
+    BOOST_TEST(key.get<long>() == smallest);
+}
+
 BOOST_AUTO_TEST_CASE(bench_scene_is_held_to_the_scene_limits) {
   // Oracle: `scene` refuses this case (its 1e6 s of 500² water is 2e13 cell updates, past the
   // 5e10 limit of tools/scene/resource_estimate.hpp); `bench --scene` runs the same scene, so it

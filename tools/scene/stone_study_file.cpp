@@ -254,6 +254,18 @@ void read_work_precision_grid(const fs::path& dir, TomlTable t, StoneStudiesOpti
   const std::string b = t.string_or("agreement_bound", to_string(g.agreement_bound));
   if (!parse_agreement_bound(b, g.agreement_bound)) t.fail("agreement_bound", "'" + b + "' is not one of point_estimate, wilson_lower");
   g.contact_time_threshold_s = positive(t, "contact_time_threshold_s", g.contact_time_threshold_s);
+  // The real-time budget family (bs32 at the cases' default tolerance, N right-hand sides per frame).
+  if (t.has("budget_rhs_per_frame")) {
+    g.budget_rhs_per_frame.clear();
+    for (double n : positive_list(t, "budget_rhs_per_frame", {})) {
+      if (n != std::floor(n) || n < double(kMinRhsPerFrame) || n > double(kMaxRhsPerFrame))
+        t.fail("budget_rhs_per_frame", "each budget must be a whole number of right-hand sides in [" +
+                                           std::to_string(kMinRhsPerFrame) + ", " + std::to_string(kMaxRhsPerFrame) + "]");
+      g.budget_rhs_per_frame.push_back(static_cast<long>(n));
+    }
+  }
+  g.budget_frame_dt_s = t.number_or("budget_frame_dt_s", g.budget_frame_dt_s);
+  t.require_in("budget_frame_dt_s", g.budget_frame_dt_s, kMinStep_s, kMaxStep_s);
   t.finish();
 }
 

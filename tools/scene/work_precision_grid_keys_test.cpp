@@ -58,6 +58,10 @@ BOOST_AUTO_TEST_CASE(misspelt_keys_and_bad_values_are_one_line_errors_naming_the
   names(error_of({"work_precision_grid.agreement_target=1.5"}), "work_precision_grid.agreement_target");
   names(error_of({"work_precision_grid.agreement_bound=\"lower\""}), "work_precision_grid.agreement_bound");
   names(error_of({"work_precision_grid.contact_time_threshold_s=-1e-4"}), "work_precision_grid.contact_time_threshold_s");
+  names(error_of({"work_precision_grid.budget_rhs_per_frame=[2.0]"}), "work_precision_grid.budget_rhs_per_frame");
+  names(error_of({"work_precision_grid.budget_rhs_per_frame=[64.5]"}), "work_precision_grid.budget_rhs_per_frame");
+  names(error_of({"work_precision_grid.budget_frame_dt_s=0.0"}), "work_precision_grid.budget_frame_dt_s");
+  names(error_of({"work_precision_grid.budget_rhs_per_fram=[64]"}), "budget_rhs_per_fram");
   BOOST_TEST(error_of({}).empty());
   BOOST_TEST(error_of({"work_precision_grid.agreement_bound=\"wilson_lower\""}).empty());
 }

@@ -45,6 +45,9 @@ bool WorkPrecisionGridOptions::valid(std::string* why) const {
   if (!(truth_rtol > 0) || !(truth_check_factor > 0) || !(atol_ratio > 0)) return fail("truth tolerances must be > 0");
   if (!(agreement_target > 0 && agreement_target <= 1)) return fail("agreement_target must be in (0, 1]");
   if (!(contact_time_threshold_s > 0)) return fail("contact_time_threshold_s must be > 0");
+  for (long n : budget_rhs_per_frame)
+    if (n < 4) return fail("budget_rhs_per_frame: a budget must allow at least 4 right-hand sides per frame");
+  if (!(budget_frame_dt_s > 0)) return fail("budget_frame_dt_s must be > 0");
   if (workers < 1) return fail("workers must be >= 1");
   return true;
 }
@@ -57,6 +60,10 @@ std::string fixed_family_name(Scheme s, double contact_ratio) {
 
 std::string cvode_family_name(ReferenceMethod m) { return std::string("CVODE ") + to_string(m); }
 
+std::string budget_family_name(Scheme s, double frame_dt_s) {
+  return std::string(to_string(s)) + " (budget per " + num(1e3 * frame_dt_s) + " ms frame)";
+}
+
 WorkPrecisionGridResult run_work_precision_grid(const ThrowProblem& base, const WorkPrecisionGridOptions& o) {
   std::string why;
   if (!o.valid(&why)) throw std::invalid_argument("work-precision grid: " + why);
@@ -66,6 +73,7 @@ WorkPrecisionGridResult run_work_precision_grid(const ThrowProblem& base, const 
   WorkPrecisionGridResult res;
   res.base_label = base.label;
   res.adaptive_family = adaptive_family_name(Scheme::bs32);
+  if (!o.budget_rhs_per_frame.empty()) res.budget_family = budget_family_name(Scheme::bs32, o.budget_frame_dt_s);
 
   // 1. The grid's throws, spin-major.
   std::vector<ThrowProblem> problems;
@@ -135,6 +143,15 @@ WorkPrecisionGridResult run_work_precision_grid(const ThrowProblem& base, const 
       ro.record_trajectory = false;
       add(res.adaptive_family, tol, realtime_choice(ro));
     }
+    for (long n : o.budget_rhs_per_frame) {
+      RealtimeOptions ro = problems[k].realtime;
+      ro.scheme = Scheme::bs32;
+      ro.rtol = ro.atol_m = kDefaultAdaptiveTolerance;
+      ro.rhs_per_frame = n;
+      ro.frame_dt_s = o.budget_frame_dt_s;
+      ro.record_trajectory = false;
+      add(res.budget_family, double(n), realtime_choice(ro));
+    }
     for (Scheme s : o.fixed_schemes)
       for (double dt : o.dt_s) {
         RealtimeOptions ro = problems[k].realtime;
@@ -156,6 +173,11 @@ WorkPrecisionGridResult run_work_precision_grid(const ThrowProblem& base, const 
         GridRun& g = j.run;
         g.rhs_evaluations = r.stats.rhs_evaluations;
         g.cpu_s = r.stats.cpu_s;
+        if (j.choice.kind == SolverKind::realtime && is_adaptive(j.choice.realtime.scheme)) {
+          g.steps = r.stats.steps;
+          g.forced_steps = r.stats.budget_forced_steps;
+          g.max_error_ratio = r.stats.max_error_ratio;
+        }
         g.ok = r.outcome != Outcome::failed;
         if (!g.ok) {
           g.problem = r.outcome_detail;
@@ -180,6 +202,10 @@ WorkPrecisionGridResult run_work_precision_grid(const ThrowProblem& base, const 
   rule.bound = o.agreement_bound;
   rule.contact_time_threshold_s = o.contact_time_threshold_s;
   res.choice = choose_grid_default(res.summaries, rule, kDefaultAdaptiveTolerance);
+  if (!res.budget_family.empty()) {
+    rule.family = res.budget_family;
+    res.budget_choice = choose_grid_budget(res.summaries, rule);
+  }
   return res;
 }
 

@@ -9,7 +9,10 @@
 // equals the truth's with its Wilson interval, the median and largest contact-time error over the
 // throws whose contact lists match, and the mean right-hand sides and thread CPU per throw. Failed
 // runs are counted with their reasons. The default rule (GridDefaultRule) picks a bs32 tolerance,
-// stated beside kDefaultAdaptiveTolerance.
+// stated beside kDefaultAdaptiveTolerance. The real-time budget (optional): bs32 at the cases'
+// default tolerance with at most N right-hand sides per frame (solvers/realtime/stone_stepper.hpp,
+// "Budget"), one family whose setting is N, with the steps the budget forced and the largest
+// error-test ratio it accepted; the same rule then picks the smallest budget that keeps the counts.
 #include <string>
 #include <vector>
 
@@ -35,6 +38,8 @@ struct WorkPrecisionGridOptions {
   double agreement_target = 0.98;
   AgreementBound agreement_bound = AgreementBound::point_estimate;
   double contact_time_threshold_s = 1e-4;
+  std::vector<long> budget_rhs_per_frame;        // the budget family's budgets (empty: not run)
+  double budget_frame_dt_s = 1.0 / 90;           // its frame (the paper's > 90 frames/s)
   int workers = 2;
   ProgressFactory progress;  // empty: silently
   bool valid(std::string* why = nullptr) const;
@@ -59,12 +64,15 @@ struct WorkPrecisionGridResult {
   std::vector<GridSummary> summaries;  // per family and setting
   std::string adaptive_family;
   GridDefaultChoice choice;
+  std::string budget_family;       // empty when no budget was run
+  GridBudgetChoice budget_choice;
 };
 
 // The family names the study gives (the summaries' `family`).
 std::string adaptive_family_name(Scheme s);                    // "bs32 (adaptive)"
 std::string fixed_family_name(Scheme s, double contact_ratio);  // "rk4 (contact dt/10)"
 std::string cvode_family_name(ReferenceMethod m);              // "CVODE bdf"
+std::string budget_family_name(Scheme s, double frame_dt_s);    // "bs32 (budget per 11.1 ms frame)"
 
 WorkPrecisionGridResult run_work_precision_grid(const ThrowProblem& base, const WorkPrecisionGridOptions& o);
 

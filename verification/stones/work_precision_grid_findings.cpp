@@ -47,14 +47,15 @@ Record work_precision_grid_findings(const WorkPrecisionGridResult& r, const Work
   for (const GridSummary& s : r.summaries)
     if (std::find(families.begin(), families.end(), s.family) == families.end()) families.push_back(s.family);
   Table sum{{"family", "setting", "agreeing", "n", "agreement", "wilson_lo", "wilson_hi", "timed",
-             "median_contact_time_error_s", "max_contact_time_error_s", "mean_rhs_evaluations", "mean_cpu_s", "failed"},
+             "median_contact_time_error_s", "max_contact_time_error_s", "mean_rhs_evaluations", "mean_cpu_s", "failed",
+             "forced_step_fraction", "max_error_ratio"},
             {}};
   for (const GridSummary& s : r.summaries) {
     const double f = double(std::find(families.begin(), families.end(), s.family) - families.begin());
     sum.add_row({f, s.setting, double(s.agreeing), double(s.n), s.agreement.estimate, s.agreement.low, s.agreement.high,
                  double(s.timed), s.median_contact_time_error_s, s.max_contact_time_error_s, s.mean_rhs_evaluations,
-                 s.mean_cpu_s, double(s.failed)});
-    for (const auto& why : s.failures) failures.push_back(s.family + " at " + num(s.setting, 3) + ", " + why);
+                 s.mean_cpu_s, double(s.failed), s.forced_step_fraction, s.max_error_ratio});
+    for (const auto& why : s.failures) failures.push_back(s.family + " at " + num(s.setting, 7) + ", " + why);
   }
   rec.set_strings("families", families);
   rec.set_table("summary", sum);
@@ -91,6 +92,37 @@ Record work_precision_grid_findings(const WorkPrecisionGridResult& r, const Work
   Table per{{"tolerance", "meets"}, {}};
   for (std::size_t i = 0; i < c.tolerances.size(); ++i) per.add_row({c.tolerances[i], c.meets[i] ? 1.0 : 0.0});
   ch.set_table("per_tolerance", per);
+
+  // The real-time budget, when run: its family, frame and tolerance, the smallest budget the rule
+  // picks, and per budget the CPU a frame costs at most (N × the mean CPU per right-hand side of
+  // that budget's runs) beside the frame itself.
+  rec.set("budget_run", !r.budget_family.empty());
+  if (!r.budget_family.empty()) {
+    const GridBudgetChoice& b = r.budget_choice;
+    Record& bc = rec.child("budget_choice");
+    bc.set("family", r.budget_family);
+    bc.set("frame_dt_s", o.budget_frame_dt_s);
+    bc.set("rtol", kDefaultAdaptiveTolerance);
+    bc.set("found", b.found);
+    bc.set("rhs_per_frame", b.rhs_per_frame);
+    bc.set("agreeing", b.at.agreeing);
+    bc.set("n", b.at.n);
+    bc.set("wilson_lo", b.at.agreement.low);
+    bc.set("wilson_hi", b.at.agreement.high);
+    bc.set("median_contact_time_error_s", b.at.median_contact_time_error_s);
+    bc.set("reason", b.reason);
+    Table frames{{"rhs_per_frame", "meets", "cpu_per_rhs_s", "cpu_per_frame_bound_s", "frame_fraction", "forced_step_fraction",
+                  "max_error_ratio"},
+                 {}};
+    for (std::size_t i = 0; i < b.budgets.size(); ++i)
+      for (const GridSummary& s : r.summaries)
+        if (s.family == r.budget_family && s.setting == b.budgets[i]) {
+          const double per_rhs = s.mean_rhs_evaluations > 0 ? s.mean_cpu_s / s.mean_rhs_evaluations : 0;
+          frames.add_row({s.setting, b.meets[i] ? 1.0 : 0.0, per_rhs, s.setting * per_rhs,
+                          s.setting * per_rhs / o.budget_frame_dt_s, s.forced_step_fraction, s.max_error_ratio});
+        }
+    bc.set_table("per_budget", frames);
+  }
   return rec;
 }
 

@@ -50,6 +50,7 @@ int throws_to_show(double target, double z) {
 std::vector<GridSummary> summarise_grid_runs(const std::vector<GridRun>& runs) {
   std::vector<GridSummary> out;
   std::vector<std::vector<double>> errors, rhs, cpu;
+  std::vector<long> steps, forced;
   for (const GridRun& r : runs) {
     std::size_t i = 0;
     while (i < out.size() && !(out[i].family == r.family && out[i].setting == r.setting)) ++i;
@@ -60,11 +61,16 @@ std::vector<GridSummary> summarise_grid_runs(const std::vector<GridRun>& runs) {
       errors.emplace_back();
       rhs.emplace_back();
       cpu.emplace_back();
+      steps.push_back(0);
+      forced.push_back(0);
     }
     GridSummary& s = out[i];
     ++s.n;
     rhs[i].push_back(double(r.rhs_evaluations));
     cpu[i].push_back(r.cpu_s);
+    steps[i] += r.steps;
+    forced[i] += r.forced_steps;
+    s.max_error_ratio = std::max(s.max_error_ratio, r.max_error_ratio);
     if (!r.ok) {
       ++s.failed;
       s.failures.push_back(r.throw_label + ": " + r.problem);
@@ -84,6 +90,7 @@ std::vector<GridSummary> summarise_grid_runs(const std::vector<GridRun>& runs) {
     for (double x : cpu[i]) sc += x;
     s.mean_rhs_evaluations = sr / s.n;
     s.mean_cpu_s = sc / s.n;
+    s.forced_step_fraction = steps[i] > 0 ? double(forced[i]) / steps[i] : 0;
   }
   return out;
 }
@@ -125,53 +132,101 @@ const char* phrase(DefaultAgreement a) {
   return "?";
 }
 
+namespace {
+
+// The rule walked over one family's summaries from the most accurate setting on (ascending
+// settings, or descending with `descending`): the last setting met with every more accurate one
+// met too, each setting's verdict, and in words the first one missed.
+struct RuleWalk {
+  bool found = false;
+  GridSummary at;
+  std::vector<double> settings;
+  std::vector<bool> meets;
+  std::string first_miss;  // "at … the agreement is … and the median contact-time error … s"
+  bool ran = false;        // the family has summaries
+};
+
+RuleWalk walk_rule(const std::vector<GridSummary>& summaries, const GridDefaultRule& rule, bool descending,
+                   const std::string& setting_unit, int setting_digits) {
+  RuleWalk w;
+  std::vector<const GridSummary*> fam;
+  for (const GridSummary& s : summaries)
+    if (s.family == rule.family) fam.push_back(&s);
+  std::sort(fam.begin(), fam.end(), [descending](const GridSummary* a, const GridSummary* b) {
+    return descending ? a->setting > b->setting : a->setting < b->setting;
+  });
+  w.ran = !fam.empty();
+  bool all_so_far = true;
+  for (const GridSummary* s : fam) {
+    const bool m = meets(*s, rule);
+    w.settings.push_back(s->setting);
+    w.meets.push_back(m);
+    if (!m && w.first_miss.empty())
+      w.first_miss = "at " + num(s->setting, setting_digits) + setting_unit + " the agreement is " + std::to_string(s->agreeing) +
+                     " of " + std::to_string(s->n) + " (" + (rule.bound == AgreementBound::wilson_lower ? "Wilson lower bound " : "") +
+                     num(rule.bound == AgreementBound::wilson_lower ? s->agreement.low : s->agreement.estimate) +
+                     ") and the median contact-time error " + num(s->median_contact_time_error_s, 2) + " s";
+    all_so_far = all_so_far && m;
+    if (all_so_far) {
+      w.found = true;
+      w.at = *s;
+    }
+  }
+  return w;
+}
+
+// "rule: the <which> at which, and at every <more accurate> one, … ; " and the finding.
+std::string rule_reason(const GridDefaultRule& rule, const RuleWalk& w, const std::string& which,
+                        const std::string& every, const std::string& met, const std::string& beyond,
+                        const std::string& extreme, const std::string& setting_text) {
+  const std::string by = rule.bound == AgreementBound::wilson_lower ? "the Wilson 95 % lower bound of the count agreement"
+                                                                    : "the count agreement (point estimate)";
+  std::string r = "rule: the " + which + " at which, and at every " + every + " one, " + by + " is at least " +
+                  num(rule.agreement_target) + " and the median contact-time error is below " +
+                  num(rule.contact_time_threshold_s, 2) + " s; ";
+  if (!w.ran) return r + "the family " + rule.family + " was not run";
+  if (!w.found) return r + "not met even at the " + extreme + ": " + w.first_miss;
+  return r + met + " " + setting_text + " (" + std::to_string(w.at.agreeing) + " of " + std::to_string(w.at.n) +
+         " throws agree, 95 % interval " + num(w.at.agreement.low) + "–" + num(w.at.agreement.high) +
+         "; median contact-time error " + num(w.at.median_contact_time_error_s, 2) + " s)" +
+         (w.first_miss.empty() ? "" : "; " + beyond + ": " + w.first_miss);
+}
+
+}  // namespace
+
 GridDefaultChoice choose_grid_default(const std::vector<GridSummary>& summaries, const GridDefaultRule& rule,
                                       double default_tolerance) {
   GridDefaultChoice c;
   c.default_tolerance = default_tolerance;
   c.throws_to_show_target = rule.agreement_target < 1 ? throws_to_show(rule.agreement_target) : 0;
-  std::vector<const GridSummary*> fam;
-  for (const GridSummary& s : summaries)
-    if (s.family == rule.family) fam.push_back(&s);
-  std::sort(fam.begin(), fam.end(), [](const GridSummary* a, const GridSummary* b) { return a->setting < b->setting; });
-  bool all_so_far = true;
-  std::string first_miss;
-  for (const GridSummary* s : fam) {
-    const bool m = meets(*s, rule);
-    c.tolerances.push_back(s->setting);
-    c.meets.push_back(m);
-    if (!m && first_miss.empty())
-      first_miss = "at " + num(s->setting, 2) + " the agreement is " + std::to_string(s->agreeing) + " of " +
-                   std::to_string(s->n) + " (" + (rule.bound == AgreementBound::wilson_lower ? "Wilson lower bound " : "") +
-                   num(rule.bound == AgreementBound::wilson_lower ? s->agreement.low : s->agreement.estimate) +
-                   ") and the median contact-time error " + num(s->median_contact_time_error_s, 2) + " s";
-    all_so_far = all_so_far && m;
-    if (all_so_far) {
-      c.found = true;
-      c.tolerance = s->setting;
-      c.at = *s;
-    }
-  }
+  const RuleWalk w = walk_rule(summaries, rule, false, "", 2);  // tightest tolerance first
+  c.found = w.found;
+  c.tolerance = w.found ? w.at.setting : 0;
+  if (w.found) c.at = w.at;
+  c.tolerances = w.settings;
+  c.meets = w.meets;
   if (!c.found)
     c.agreement = DefaultAgreement::no_choice;
   else if (c.tolerance == default_tolerance)
     c.agreement = DefaultAgreement::same;
   else
     c.agreement = default_tolerance < c.tolerance ? DefaultAgreement::default_tighter : DefaultAgreement::default_looser;
-  const std::string by = rule.bound == AgreementBound::wilson_lower ? "the Wilson 95 % lower bound of the count agreement"
-                                                                    : "the count agreement (point estimate)";
-  c.reason = "rule: the loosest tolerance at which, and at every tighter one, " + by + " is at least " +
-             num(rule.agreement_target) + " and the median contact-time error is below " +
-             num(rule.contact_time_threshold_s, 2) + " s; ";
-  if (fam.empty())
-    c.reason += "the family " + rule.family + " was not run";
-  else if (c.found)
-    c.reason += "met up to " + num(c.tolerance, 2) + " (" + std::to_string(c.at.agreeing) + " of " + std::to_string(c.at.n) +
-                " throws agree, 95 % interval " + num(c.at.agreement.low) + "–" + num(c.at.agreement.high) +
-                "; median contact-time error " + num(c.at.median_contact_time_error_s, 2) + " s)" +
-                (first_miss.empty() ? "" : "; not beyond: " + first_miss);
-  else
-    c.reason += "not met even at the tightest tolerance: " + first_miss;
+  c.reason = rule_reason(rule, w, "loosest tolerance", "tighter", "met up to", "not beyond", "tightest tolerance",
+                         num(c.tolerance, 2));
+  return c;
+}
+
+GridBudgetChoice choose_grid_budget(const std::vector<GridSummary>& summaries, const GridDefaultRule& rule) {
+  GridBudgetChoice c;
+  // Largest budget first: the most accurate, as the tightest tolerance is for the default's rule.
+  const RuleWalk w = walk_rule(summaries, rule, true, " right-hand sides per frame", 7);
+  c.found = w.found;
+  c.rhs_per_frame = w.found ? w.at.setting : 0;
+  if (w.found) c.at = w.at;
+  c.budgets = w.settings;
+  c.meets = w.meets;
+  c.reason = rule_reason(rule, w, "smallest budget", "larger", "met down to", "not below", "largest budget",
+                         num(c.rhs_per_frame, 7) + " right-hand sides per frame");
   return c;
 }
 

@@ -37,6 +37,10 @@ struct GridRun {
   double contact_time_error_s = 0;  // largest start or end error over the contacts
   long rhs_evaluations = 0;
   double cpu_s = 0;            // thread CPU
+  // The adaptive stepper's own account (zero for the other families): accepted steps, the steps a
+  // frame budget forced over the tolerance, and the largest error-test ratio it accepted.
+  long steps = 0, forced_steps = 0;
+  double max_error_ratio = 0;
 };
 
 // A family at one setting, over the throws.
@@ -51,6 +55,8 @@ struct GridSummary {
   double max_contact_time_error_s = 0;
   double mean_rhs_evaluations = 0;  // per throw, failures included
   double mean_cpu_s = 0;
+  double forced_step_fraction = 0;  // Σ forced steps / Σ steps over the throws (0 when no steps)
+  double max_error_ratio = 0;       // the largest over the throws
   int failed = 0;
   std::vector<std::string> failures;  // "throw: reason", every failure
 };
@@ -91,5 +97,20 @@ struct GridDefaultChoice {
 };
 GridDefaultChoice choose_grid_default(const std::vector<GridSummary>& summaries, const GridDefaultRule& rule,
                                       double default_tolerance);
+
+// The real-time budget (bs32 with at most N right-hand sides per frame: the summaries of
+// rule.family, setting N): the smallest budget at which, and at every larger one, the rule above is
+// met (agreement by rule.bound at or above the target, median contact-time error below the
+// threshold) — the same rule as the default tolerance's, with larger budgets in place of tighter
+// tolerances.
+struct GridBudgetChoice {
+  bool found = false;
+  double rhs_per_frame = 0;
+  GridSummary at;                     // the summary at the choice
+  std::vector<double> budgets;        // largest first
+  std::vector<bool> meets;            // per budget
+  std::string reason;                 // computed, in words
+};
+GridBudgetChoice choose_grid_budget(const std::vector<GridSummary>& summaries, const GridDefaultRule& rule);
 
 }  // namespace stoneskip

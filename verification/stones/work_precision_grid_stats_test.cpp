@@ -129,6 +129,54 @@ BOOST_AUTO_TEST_CASE(the_default_is_the_loosest_tolerance_meeting_the_rule_at_ev
   BOOST_TEST(choose_grid_default(s, rule, 1e-8).tolerance == 1e-8);
 }
 
+BOOST_AUTO_TEST_CASE(the_budget_is_the_smallest_meeting_the_rule_at_every_larger_one) {
+  // Oracle: the rule applied by hand, with larger budgets in place of tighter tolerances. Budgets
+  // (given out of order) 8192, 2048, 512 and 64: 8192 and 2048 meet it (50 and 49 of 50); 512 does
+  // not (45 of 50); 64 meets it again by chance. The choice is 2048, not 64; the other family's
+  // summary (the adaptive one, setting 1e-9) is not counted.
+  auto budget = [](double n, int agreeing, double error_s) {
+    GridSummary g = summary(n, agreeing, 50, error_s);
+    g.family = "bs32 (budget per 11.1 ms frame)";
+    return g;
+  };
+  const std::vector<GridSummary> s{budget(64, 50, 2e-5), summary(1e-9, 10, 50, 1e-3), budget(8192, 50, 1e-8),
+                                   budget(512, 45, 1e-6), budget(2048, 49, 1e-7)};
+  GridDefaultRule rule;
+  rule.family = "bs32 (budget per 11.1 ms frame)";
+  rule.agreement_target = 0.98;
+  rule.contact_time_threshold_s = 1e-4;
+  const GridBudgetChoice c = choose_grid_budget(s, rule);
+  BOOST_TEST_REQUIRE(c.found);
+  BOOST_TEST(c.rhs_per_frame == 2048);
+  BOOST_TEST((c.budgets == std::vector<double>{8192, 2048, 512, 64}));
+  BOOST_TEST((c.meets == std::vector<bool>{true, true, false, true}));
+  BOOST_TEST(c.at.agreeing == 49);
+  // A contact-time error above the threshold at the largest budget: no choice at all.
+  const std::vector<GridSummary> late{budget(8192, 50, 2e-4), budget(2048, 50, 1e-7)};
+  const GridBudgetChoice none = choose_grid_budget(late, rule);
+  BOOST_TEST(!none.found);
+  BOOST_TEST(none.reason.find("not met even at the largest budget") != std::string::npos, none.reason);
+  // A family not run: no choice, said so.
+  rule.family = "bs32 (budget per 16.7 ms frame)";
+  BOOST_TEST(choose_grid_budget(s, rule).reason.find("was not run") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(forced_steps_are_summed_over_the_throws_before_the_fraction_is_taken) {
+  // Oracle: by hand. Two throws of one setting: 10 of 100 steps forced and 0 of 300: 10/400 = 0.025
+  // (the mean of the per-throw fractions would be 0.05); the largest ratio over the two is kept.
+  GridRun a = run("bs32 (budget)", 64, "a", true, true, true, 1e-6, 300, 0.01);
+  a.steps = 100;
+  a.forced_steps = 10;
+  a.max_error_ratio = 40;
+  GridRun b = run("bs32 (budget)", 64, "b", true, true, true, 1e-6, 900, 0.02);
+  b.steps = 300;
+  b.max_error_ratio = 0.9;
+  const std::vector<GridSummary> s = summarise_grid_runs({a, b});
+  BOOST_TEST_REQUIRE(s.size() == 1u);
+  BOOST_TEST(s[0].forced_step_fraction == 0.025, boost::test_tools::tolerance(kRoundoff));
+  BOOST_TEST(s[0].max_error_ratio == 40.0);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace

@@ -30,6 +30,7 @@ BOOST_AUTO_TEST_CASE(a_two_throw_grid_keeps_or_sets_aside_each_throw_and_tight_c
   o.fixed_schemes = {Scheme::rk4};
   o.dt_s = {1e-3};
   o.cvode_rtol = {1e-8};
+  o.budget_rhs_per_frame = {8, 1000000};
   o.workers = 2;
   const WorkPrecisionGridResult r = run_work_precision_grid(convergence_throw(), o);
   BOOST_TEST_REQUIRE(r.throws.size() == 2u);
@@ -42,8 +43,9 @@ BOOST_AUTO_TEST_CASE(a_two_throw_grid_keeps_or_sets_aside_each_throw_and_tight_c
   }
   BOOST_TEST(kept + r.chaotic + r.truth_failed == 2);
   BOOST_TEST_REQUIRE(kept >= 1);  // the convergence throw's count is not chaotic at these tolerances
-  BOOST_TEST(r.runs.size() == std::size_t(kept) * 4);  // two bs32 tolerances, one rk4 step, one CVODE rtol
-  BOOST_TEST_REQUIRE(r.summaries.size() == 4u);
+  // two bs32 tolerances, two budgets, one rk4 step, one CVODE rtol
+  BOOST_TEST(r.runs.size() == std::size_t(kept) * 6);
+  BOOST_TEST_REQUIRE(r.summaries.size() == 6u);
   for (const GridSummary& s : r.summaries) {
     BOOST_TEST(s.n == kept, s.family);
     BOOST_TEST(s.agreeing + s.failed <= s.n);
@@ -60,10 +62,26 @@ BOOST_AUTO_TEST_CASE(a_two_throw_grid_keeps_or_sets_aside_each_throw_and_tight_c
   BOOST_TEST(r.adaptive_family == adaptive_family_name(Scheme::bs32));
   BOOST_TEST(r.choice.default_tolerance == kDefaultAdaptiveTolerance);
   BOOST_TEST(r.choice.tolerances.size() == 2u);
+  // The budget (oracle: the budget itself): at 8 right-hand sides per 1/90 s frame a contact needs
+  // more, so steps are forced and accepted over the tolerance (ratio > 1); at a million per frame
+  // none is, and every accepted step passed the error test (ratio ≤ 1).
+  BOOST_TEST(r.budget_family == budget_family_name(Scheme::bs32, o.budget_frame_dt_s));
+  for (const GridSummary& s : r.summaries) {
+    if (s.family != r.budget_family) continue;
+    if (s.setting == 8) {
+      BOOST_TEST(s.forced_step_fraction > 0);
+      BOOST_TEST(s.max_error_ratio > 1);
+    } else {
+      BOOST_TEST(s.forced_step_fraction == 0);
+      BOOST_TEST(s.max_error_ratio <= 1);
+    }
+  }
+  BOOST_TEST((r.budget_choice.budgets == std::vector<double>{1000000, 8}));
   // The findings hold a row per family and setting, the families by name, the default beside the choice.
   const Record f = work_precision_grid_findings(r, o);
   BOOST_TEST(f.table("summary").rows() == r.summaries.size());
-  BOOST_TEST(f.strings("families").size() == 3u);
+  BOOST_TEST(f.strings("families").size() == 4u);
+  BOOST_TEST(f.at("budget_choice").table("per_budget").rows() == 2u);
   BOOST_TEST(f.number("kept") == kept);
   BOOST_TEST(f.at("default_choice").number("default_tolerance") == kDefaultAdaptiveTolerance);
   for (const GridSummary& s : r.summaries)
