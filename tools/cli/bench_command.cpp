@@ -227,6 +227,8 @@ void bench(const BenchArgs& a) {
   j["sweep_kinks"] = to_string(*o.sweep.base.realtime.kinks);
   j["sweep_rhs_evaluations"] = h.sweep.rhs_evaluations;
   j["sweep_bounces"] = h.sweep.bounces;
+  j["sweep_max_energy_gain_J"] = h.sweep.max_energy_gain_J;
+  j["sweep_throws_gaining_energy"] = h.sweep.throws_gaining_energy;
   j["sweep_cvode_rtols"] = {kCvodeTolerances[0], kCvodeTolerances[1]};
   j["sweep_cvode_bounces"] = {cvode.bounces[0], cvode.bounces[1]};
   j["sweep_cvode_agreeing_throws"] = cvode.agreeing;
@@ -242,6 +244,8 @@ void bench(const BenchArgs& a) {
                      {"cvode_match_fraction", r.match_fraction()},
                      {"forced_step_fraction", r.forced_fraction()},
                      {"max_error_ratio", r.max_error_ratio},
+                     {"max_energy_gain_J", r.max_energy_gain_J},
+                     {"throws_gaining_energy", r.throws_gaining_energy},
                      {"rhs_per_throw", double(r.rhs_evaluations) / std::max<std::size_t>(1, r.bounces.size())},
                      {"cpu_per_frame_bound_us", 1e6 * r.cpu_per_frame_bound_s()},
                      {"mean_cpu_per_frame_us", 1e6 * r.mean_cpu_per_frame_s()}});
@@ -316,15 +320,18 @@ void bench(const BenchArgs& a) {
            std::to_string(cvode.agreeing) + " throws)",
        g(cvode.fraction(), 4) + " (" + std::to_string(cvode.matched) + ")", ">= " + g(kMatchFractionTarget),
        cvode.fraction() >= kMatchFractionTarget);
+  std::printf("sweep passivity: the largest energy gain over a contact is %s J; %ld of %ld throws gain energy in a contact\n",
+              g(h.sweep.max_energy_gain_J).c_str(), h.sweep.throws_gaining_energy, h.sweep.throws);
   std::printf("real-time budget (bs32 rtol %s, at most N right-hand sides per %s ms frame; CPU: thread CPU of the same runs):\n",
               g(o.sweep.base.realtime.rtol).c_str(), g(1e3 * bo.frame_dt_s).c_str());
-  std::printf("  %6s %22s %14s %16s %20s %20s\n", "N", "counts = CVODE's", "forced steps", "worst error ratio",
-              "frame CPU bound µs", "mean frame CPU µs");
+  std::printf("  %6s %22s %14s %16s %20s %20s %22s\n", "N", "counts = CVODE's", "forced steps", "worst error ratio",
+              "frame CPU bound µs", "mean frame CPU µs", "energy gain J (throws)");
   for (const FrameBudgetRung& r : ladder)
-    std::printf("  %6ld %22s %14s %16s %20s %20s\n", r.rhs_per_frame,
+    std::printf("  %6ld %22s %14s %16s %20s %20s %22s\n", r.rhs_per_frame,
                 (g(r.match_fraction(), 4) + " (" + std::to_string(r.matched) + " of " + std::to_string(r.compared) + ")").c_str(),
                 g(r.forced_fraction()).c_str(), g(r.max_error_ratio).c_str(), g(1e6 * r.cpu_per_frame_bound_s()).c_str(),
-                g(1e6 * r.mean_cpu_per_frame_s()).c_str());
+                g(1e6 * r.mean_cpu_per_frame_s()).c_str(),
+                (g(r.max_energy_gain_J) + " (" + std::to_string(r.throws_gaining_energy) + ")").c_str());
   std::printf("  the smallest budget of these that keeps CVODE's count on >= %s of the throws (and every larger one does): %s\n",
               g(kMatchFractionTarget).c_str(), budget_for_target > 0 ? std::to_string(budget_for_target).c_str() : "none");
   std::printf("sweep profile: %s ms CPU per throw, %s s simulated per throw, %s steps per throw (%s with the contact step), %s µs CPU per step\n",

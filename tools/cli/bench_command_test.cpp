@@ -88,6 +88,10 @@ BOOST_AUTO_TEST_CASE(bench_sweep_match_fraction_is_its_own_counts_and_the_counts
   const double fraction = j["sweep_cvode_match_fraction"].get<double>();
   BOOST_TEST(std::abs(fraction - double(matched) / agreeing) <= kRoundoff);
   BOOST_TEST((fraction >= 0 && fraction <= 1));
+  // Passivity (oracle: the physical convention's water and air forces only take energy from the
+  // stone; a gain over a contact is the integrator's): none of the quick grid's throws gains any.
+  BOOST_TEST(j["sweep_max_energy_gain_J"].get<double>() == 0.0);
+  BOOST_TEST(j["sweep_throws_gaining_energy"].get<long>() == 0);
   // Throw 3 of the grid (spins outer, attacks inner: spin 20 rev/s, attack 20°) through `run`.
   const std::string run = "run cases/spin_sweep_base.toml --set throw.spin_rev_s=20 --set throw.attack_angle_deg=20 --json";
   const auto a = stoneskip::test::run_stoneskip(run + " --solver realtime --set solver.scheme=bs32 --set solver.rtol=1e-9 --set solver.atol_m=1e-9", false);
@@ -126,6 +130,10 @@ BOOST_AUTO_TEST_CASE(bench_budget_ladder_counts_are_stoneskip_run_s_and_its_matc
     BOOST_TEST(r["cvode_matched_throws"].get<long>() == matched);
     BOOST_TEST(r["forced_step_fraction"].get<double>() >= 0);
     BOOST_TEST(r["forced_step_fraction"].get<double>() <= 1);
+    // Passivity under a budget : forced steps are
+    // inaccurate, and must still not create energy on these physical throws (as for the sweep itself).
+    BOOST_TEST(r["max_energy_gain_J"].get<double>() == 0.0);
+    BOOST_TEST(r["throws_gaining_energy"].get<long>() == 0);
   }
   // At 16 right-hand sides per 11.1 ms frame (a 1.4 ms step at best) a contact's steps are forced.
   BOOST_TEST(ladder[0]["forced_step_fraction"].get<double>() > 0);

@@ -81,7 +81,7 @@ SweepSpeed measure_sweep(const SweepSpeedOptions& o, ProgressTicker& ticker) {
   s.throws = static_cast<long>(throws.size());
   s.workers = o.workers;
   std::vector<int> bounces(throws.size());
-  std::vector<double> cpu(throws.size()), simulated(throws.size());
+  std::vector<double> cpu(throws.size()), simulated(throws.size()), gain(throws.size());
   std::vector<long> steps(throws.size()), contact_steps(throws.size()), rhs(throws.size());
   for (int k = 0; k < o.repeats; ++k) {
     ParallelOptions po;
@@ -91,7 +91,8 @@ SweepSpeed measure_sweep(const SweepSpeedOptions& o, ProgressTicker& ticker) {
         throws.size(),
         [&](std::size_t i) {
           const ThrowResult r = solve(throws[i], solver);
-          bounces[i] = r.bounces;
+          bounces[i] = r.outcome == Outcome::failed ? -1 : r.bounces;
+          gain[i] = r.max_energy_gain_J;
           cpu[i] = r.stats.cpu_s;
           steps[i] = r.stats.steps;
           contact_steps[i] = r.stats.contact_steps;
@@ -117,6 +118,10 @@ SweepSpeed measure_sweep(const SweepSpeedOptions& o, ProgressTicker& ticker) {
     ticker.tick();
   }
   s.bounces = bounces;
+  for (double g : gain) {
+    s.max_energy_gain_J = std::max(s.max_energy_gain_J, g);
+    if (g > 0) ++s.throws_gaining_energy;
+  }
   for (int b : bounces) {
     if (b < 0) continue;
     if (static_cast<std::size_t>(b) >= s.bounce_histogram.size()) s.bounce_histogram.resize(b + 1, 0);

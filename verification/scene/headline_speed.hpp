@@ -73,6 +73,10 @@ struct SweepSpeed {
   double simulated_s = 0;             // Σ of each throw's end time
   std::vector<int> bounce_histogram;  // throws with 0, 1, 2, … bounces
   std::vector<int> bounces;           // per throw, spins outer, attack angles inner (−1: failed)
+  // Passivity: the largest rise of total energy over any contact of any throw (J; > 0: the stepper
+  // created energy), and the throws where it is above zero (ThrowResult::max_energy_gain_J).
+  double max_energy_gain_J = 0;
+  long throws_gaining_energy = 0;
   double throws_per_s() const { return best_wall_s > 0 ? throws / best_wall_s : 0; }
 };
 

@@ -62,6 +62,8 @@ std::vector<FrameBudgetRung> run_frame_budget_ladder(const std::vector<ThrowProb
       rung.frames += static_cast<long>(std::ceil(r.end_time_s / o.frame_dt_s - 1e-9));
       rung.cpu_s += r.stats.cpu_s;
       rung.max_error_ratio = std::max(rung.max_error_ratio, r.stats.max_error_ratio);
+      rung.max_energy_gain_J = std::max(rung.max_energy_gain_J, r.max_energy_gain_J);
+      if (r.max_energy_gain_J > 0) ++rung.throws_gaining_energy;
     }
     count_budget_matches(rung, reference_bounces);
     rungs.push_back(rung);

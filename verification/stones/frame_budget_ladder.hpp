@@ -29,6 +29,8 @@ struct FrameBudgetRung {
   long frames = 0;                // Σ ⌈end time / frame⌉
   double cpu_s = 0;               // summed thread CPU
   double max_error_ratio = 0;     // the largest error-test ratio accepted (> 1: the budget forced it)
+  double max_energy_gain_J = 0;   // the largest rise of energy over a contact (ThrowResult::max_energy_gain_J)
+  long throws_gaining_energy = 0; // throws where it is above zero
   long compared = 0, matched = 0; // throws with a reference count; of those, with the same count
   double match_fraction() const;  // NaN when none is compared
   double forced_fraction() const { return steps > 0 ? double(forced_steps) / steps : 0; }
