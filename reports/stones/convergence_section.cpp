@@ -189,8 +189,10 @@ SectionOutput convergence_section(const Record& c) {
     if (!series.has_child(pk) || !series.has_child(ok)) continue;
     const Record &fs = st.at("fit"), &fp = series.at(pk).at("fit"), &fo = series.at(ok).at("fit");
     const double formal = st.number("formal_order");
-    if (!fs.flag("valid") || !(fs.number("order_low") > formal)) continue;
-    const bool orientation_faster = fo.flag("valid") && fo.number("order_low") > formal;
+    // Faster by more than the judgement's tolerance: the whole interval above formal + tolerance.
+    const double margin = formal + fs.at("verdict").number("tolerance");
+    if (!fs.flag("valid") || !(fs.number("order_low") > margin)) continue;
+    const bool orientation_faster = fo.flag("valid") && fo.number("order_low") > margin;
     w.text("`" + sc + "` on the free-flight interval converges faster than its formal order " + fmt(formal) +
            " (state: p = " + observed(fs) + "). By part: orientation p = " + observed(fo) + "; position p = " +
            observed(fp) + ", pairwise " + list_text(fp.table("pairwise").column("order")) + ". " +
