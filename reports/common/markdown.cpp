@@ -14,6 +14,8 @@ std::string fmt(double value, int significant) {
   return buf;
 }
 
+std::string pct(double fraction) { return fmt(100 * fraction, 3) + " %"; }
+
 MarkdownTable::MarkdownTable(std::vector<std::string> headers) : headers_(std::move(headers)) {}
 
 MarkdownTable& MarkdownTable::row(std::vector<std::string> cells) {

@@ -8,6 +8,8 @@ namespace stoneskip {
 
 // "%.{sig}g" formatting; NaN as "–", infinities as "∞".
 std::string fmt(double value, int significant = 4);
+// A fraction as a percentage to 3 significant digits: 0.0512 → "5.12 %".
+std::string pct(double fraction);
 
 class MarkdownTable {
  public:

@@ -20,7 +20,6 @@ std::string interval(const Record& fit) {
 
 std::string us(double s) { return fmt(1e6 * s, 3) + " µs"; }
 std::string ms(double s) { return fmt(1e3 * s, 3) + " ms"; }
-std::string pct(double f) { return fmt(100 * f, 3) + " %"; }
 std::string duration(double s) { return std::abs(s) >= 0.1 ? fmt(s, 3) + " s" : std::abs(s) >= 1e-3 ? ms(s) : us(s); }
 
 const std::string& verdict_of(const Record& r, const std::string& key = "verdict") { return r.at(key).text("verdict"); }

@@ -18,8 +18,6 @@ std::string list_text(const std::vector<double>& v, const std::string& unit) {
   return s + unit;
 }
 
-std::string pct(double f) { return fmt(100 * f, 3) + " %"; }
-
 // The real-time budget: bs32 at the cases' default tolerance with at most N right-hand sides per
 // frame, the smallest budget the grid's rule picks, and per budget what a frame costs at most.
 void budget_text(SectionWriter& w, const Record& c) {

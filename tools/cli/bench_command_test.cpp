@@ -130,8 +130,8 @@ BOOST_AUTO_TEST_CASE(bench_budget_ladder_counts_are_stoneskip_run_s_and_its_matc
     BOOST_TEST(r["cvode_matched_throws"].get<long>() == matched);
     BOOST_TEST(r["forced_step_fraction"].get<double>() >= 0);
     BOOST_TEST(r["forced_step_fraction"].get<double>() <= 1);
-    // Passivity under a budget : forced steps are
-    // inaccurate, and must still not create energy on these physical throws (as for the sweep itself).
+    // Passivity under a budget: forced steps are inaccurate, and must still not create energy on
+    // these physical throws (as for the sweep itself).
     BOOST_TEST(r["max_energy_gain_J"].get<double>() == 0.0);
     BOOST_TEST(r["throws_gaining_energy"].get<long>() == 0);
   }
