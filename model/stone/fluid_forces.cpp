@@ -1,5 +1,7 @@
 #include "model/stone/fluid_forces.hpp"
 
+#include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "model/stone/pressure_distribution.hpp"
@@ -25,7 +27,10 @@ struct FaceScratch {
 // on face i, p(x) = K p_i w(ξ(x)) over its wetted polygon (below the raised waterline for the
 // Wagner variant), with p_i the law evaluated at the face's centre of pressure x_i = ∫w x dA / ∫w dA
 // (so the face's power −K p_i W_i u(x_i) is never positive) and K such that Σ K p_i W_i is the law's
-// total force on the geometric wetted area. F_i = −K p_i W_i n_i acts at x_i.
+// total force on the geometric wetted area. F_i = −K p_i W_i n_i acts at x_i. Below planing speed
+// the weight is blended with a uniform one, w_β = (1 − β) + β w (planing_share): W_i and ∫w x dA
+// are then (1 − β) S_i + β W_i and (1 − β) S_i c_i + β ∫w x dA, S_i and c_i the polygon's area
+// and centroid.
 void add_distributed_loads(const Stone& stone, const Environment& env, const RigidState& s, const Mat3& R,
                            const Vec3& omega, const std::vector<Vec3>& world, const std::vector<double>& depth,
                            std::vector<FaceScratch>& scratch, double law_total_N, WaterLoads& out,
@@ -36,11 +41,13 @@ void add_distributed_loads(const Stone& stone, const Environment& env, const Rig
     double pressure_Pa;
   };
   thread_local std::vector<ClippedPolygon> polys;
+  thread_local std::vector<ClippedArea> poly_areas;
   thread_local std::vector<FaceLoad> faces;
   const auto& tris = stone.body_mesh.triangles;
   const std::size_t nt = tris.size();
   const double rise = waterline_rise_m(env.pressure_distribution, out.deepest_depth_m);
   if (polys.size() < nt) polys.resize(nt);
+  if (poly_areas.size() < nt) poly_areas.resize(nt);
   if (faces.size() < nt) faces.resize(nt);
   // The wetted length is that of the loaded region: faces advancing into the water (a receding
   // trailing rim or a dry-side face under the raised waterline would lengthen it for nothing).
@@ -65,6 +72,7 @@ void add_distributed_loads(const Stone& stone, const Environment& env, const Rig
       c = area_of(poly, f.normal);
     }
     if (poly.count == 0) continue;
+    poly_areas[i] = c;
     // A face sliding in its own plane to round-off (u below 1e-9 of its speed) is not advancing
     // (u > 1e-9 |v_c| compared squared: no square root).
     const Vec3 vc = s.velocity_m_s + omega.cross(c.centroid_m - s.position_m);
@@ -77,11 +85,21 @@ void add_distributed_loads(const Stone& stone, const Environment& env, const Rig
   const WettedSpan span = span_builder.span();
   const double k = power_weight_exponent(kSavitskyCentreFraction);
   const double U = s.velocity_m_s.norm();
+  // Without a span (no horizontal velocity, or none of the loaded region along it) the weight is
+  // the uniform one on the same polygons: the limit of w_β as β → 0, so the loads stay continuous.
+  const double beta =
+      span.valid() ? planing_share(s.velocity_m_s, env.gravity_m_s2, 2 * std::sqrt(stone.disk_area_m2 / std::numbers::pi)) : 0;
   double distributed_N = 0;  // Σ p_i W_i
   for (std::size_t i = 0; i < nt; ++i) {
     faces[i].pressure_Pa = 0;
-    if (polys[i].count == 0 || !span.valid()) continue;
-    const WeightedIntegrals w = integrate_weight(polys[i], span, k, scratch[i].normal);
+    if (polys[i].count == 0) continue;
+    WeightedIntegrals w;
+    if (beta > 0) w = integrate_weight(polys[i], span, k, scratch[i].normal);
+    if (beta < 1) {
+      const ClippedArea& a = poly_areas[i];
+      w.weight_m2 = (1 - beta) * a.area_m2 + beta * w.weight_m2;
+      w.moment_m3 = ((1 - beta) * a.area_m2) * a.centroid_m + beta * w.moment_m3;
+    }
     if (!(w.weight_m2 > 0)) continue;
     const Vec3 centre = w.moment_m3 * (1 / w.weight_m2);
     const Vec3& n = scratch[i].normal;
@@ -90,9 +108,9 @@ void add_distributed_loads(const Stone& stone, const Environment& env, const Rig
     faces[i] = {w.weight_m2, centre, p};
     distributed_N += p * w.weight_m2;
   }
-  if (distributed_N == 0 || !span.valid()) {
-    // No extent along a horizontal velocity (a stone dropped straight down, a single wet point):
-    // nothing to distribute along, so the pressure is uniform on each face.
+  if (distributed_N == 0) {
+    // No face pushes at its centre of pressure (a single wet point, faces that only just advance):
+    // the pressure is uniform on each face's geometric wetted polygon.
     Environment uniform = env;
     uniform.pressure_distribution = PressureDistribution::uniform;
     const WaterLoads u = water_loads_from_depths(stone, uniform, s, R, omega, world, depth, pushes);

@@ -9,9 +9,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <numbers>
 
 #include "model/stone/fluid_forces.hpp"
 #include "model/stone/mass_properties.hpp"
+#include "model/stone/pressure_distribution.hpp"
 #include "model/stone/stone.hpp"
 
 using namespace stoneskip;
@@ -82,7 +84,7 @@ BOOST_AUTO_TEST_SUITE(fluid_forces_golden)
 BOOST_AUTO_TEST_CASE(the_loads_equal_the_straightforward_implementation_s_to_round_off) {
   const Stone stone = prism();
   const bool print = std::getenv("STONESKIP_PRINT_GOLDEN") != nullptr;  // regenerates the table
-  int row = 0, compared = 0;
+  int row = 0, compared = 0, below_planing_speed = 0;
   for (int e = 0; e < 5; ++e) {
     const Environment env = environment(e);
     Uniform u{static_cast<std::uint64_t>(1000 + e)};
@@ -95,6 +97,15 @@ BOOST_AUTO_TEST_CASE(the_loads_equal_the_straightforward_implementation_s_to_rou
       if (print) {
         std::printf("    {");
         for (int i = 0; i < kValues; ++i) std::printf("%.17g%s", v[i], i + 1 < kValues ? ", " : "},\n");
+        continue;
+      }
+      // Below planing speed (C_v < 1) a distributed pressure is blended with the uniform one since
+      // the table was made (pressure_distribution.hpp, planing_share; tested in
+      // pressure_distribution_test.cpp): the table holds the unblended loads, so those rows are
+      // not compared.
+      if (env.pressure_distribution != PressureDistribution::uniform &&
+          planing_share(s.velocity_m_s, env.gravity_m_s2, 2 * std::sqrt(stone.disk_area_m2 / std::numbers::pi)) < 1) {
+        ++below_planing_speed;
         continue;
       }
       const double* g = kGolden[row];
@@ -112,8 +123,10 @@ BOOST_AUTO_TEST_CASE(the_loads_equal_the_straightforward_implementation_s_to_rou
     }
   }
   if (print) return;
-  // The table must exercise the contact: most states are wet.
+  // The table must exercise the contact: most states are wet. Horizontal speeds are uniform on
+  // [−8, 8]² m/s, so few fall below the 3 cm prism's √(g · 6 cm) = 0.77 m/s (2 of 80 distributed).
   BOOST_TEST(compared >= 100);
+  BOOST_TEST(below_planing_speed <= 4);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -24,6 +24,13 @@ void WettedSpanBuilder::add(const ClippedPolygon& p) {
   }
 }
 
+double planing_share(const Vec3& v, double g, double beam_m) {
+  const double vh = std::hypot(v.x(), v.y());
+  const double reference = std::sqrt(g * beam_m);  // C_v = 1
+  if (!(reference > 0) || vh >= reference) return 1;
+  return vh / reference;
+}
+
 WettedSpan WettedSpanBuilder::span() const {
   WettedSpan out;
   if (!has_direction_ || !(hi_ > lo_)) return out;

@@ -64,6 +64,18 @@ WeightedIntegrals integrate_weight(const ClippedPolygon& poly, const WettedSpan&
 WeightedIntegrals integrate_weight(const ClippedPolygon& poly, const WettedSpan& span, double exponent,
                                    const Vec3& unit_normal);
 
+// The share β ∈ [0, 1] of the planing distribution in the pressure actually applied,
+//     w_β = (1 − β) · 1 + β · w(ξ),   β = min(1, C_v),   C_v = |v_h| / √(g b),
+// the rest uniform. w(ξ) is planing's picture: a wetted length along the horizontal motion ĥ. It
+// needs forward motion, and its direction ĥ = v_h/|v_h| turns arbitrarily fast as v_h → 0 (a stone
+// sinking nearly straight down): the load's derivative grows as 1/|v_h|, and no integrator steps
+// across such a point (the 2 g stone of cases/hard/: 2 million CVODE steps). The uniform
+// distribution has no direction, so blending towards it as |v_h| → 0 makes the load Lipschitz
+// there. C_v is Savitsky's (1964) speed coefficient on the beam b (here the stone's disk
+// diameter); the ramp's end at C_v = 1 is this code's choice, not a source's. At C_v ≥ 1 (every
+// skipping contact of the shipped cases) β = 1 and the loads are those of w alone, bit for bit.
+double planing_share(const Vec3& velocity_m_s, double gravity_m_s2, double beam_m);
+
 // The depth offset that raises the waterline for a distribution (the Wagner rise): (π/2 − 1) d_max
 // for savitsky_wagner with d_max > 0, else 0.
 double waterline_rise_m(PressureDistribution d, double deepest_depth_m);

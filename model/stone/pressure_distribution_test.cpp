@@ -3,8 +3,10 @@
 // planing plate against Savitsky's fraction of the (Wagner-lengthened) wetted length.
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "model/stone/fluid_forces.hpp"
 #include "model/stone/mass_properties.hpp"
@@ -127,6 +129,48 @@ BOOST_AUTO_TEST_CASE(a_planing_plate_is_pushed_at_savitskys_fraction_of_its_wagn
       const double ahead_of_trailing_edge = -w.torque_N_m.dot(e2) / f + 0.5 * a;
       BOOST_TEST(std::abs(ahead_of_trailing_edge - c.fraction * l) <= 1e-11,
                  ahead_of_trailing_edge << " m vs " << c.fraction * l << " m");
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(below_planing_speed_the_pressure_blends_towards_uniform) {
+  // Oracle: the planing plate above, slower. With w_β = (1 − β) + β · 3ξ² over its wet rectangle
+  // (no spin: one velocity for the whole plate, so one pressure), the centre of pressure lies
+  // (½ + ¼ β) of the (Wagner-lengthened) wetted length ahead of the trailing edge, with
+  // β = min(1, |v_h| / √(g b)) and b = 2R the disk's diameter (planing_share); the total force is
+  // still the law's. The uniform law's ½ is the limit β → 0: the direction v_h/|v_h|, which flips
+  // as v_h passes through zero, then no longer matters. Tolerance: round-off of the plate's size.
+  const double R = 0.05, h = 0.004, a = R * std::sqrt(2.0), alpha = 20 * kDeg, path = 20 * kDeg, D = 0.003;
+  const Mesh mesh = make_prism(R, h, 4);
+  const Stone s = make_stone(mesh, mass_properties_from_density(mesh, 2500), R, "square plate");
+  Environment env;
+  set_water_law(env, WaterLaw::planing);
+  env.pressure_distribution = PressureDistribution::savitsky_wagner;
+  const double l = D / std::sin(alpha), lengthened = std::numbers::pi / 2 * l;
+  const double planing_speed = std::sqrt(env.gravity_m_s2 * 2 * R);  // C_v = 1
+  // Speeds along the path, the last below the micrometre per second under which the span has no
+  // direction (WettedSpanBuilder): there the weight is the uniform one, β = 0.
+  const Vec3 along(std::cos(path), 0, -std::sin(path));
+  const std::vector<Vec3> velocities = {Vec3(2 * planing_speed / std::cos(path) * along), Vec3(0.5 * along),
+                                        Vec3(0.05 * along), Vec3(1e-5 * along), Vec3(1e-7 * along)};
+  for (const Vec3& v : velocities) {
+    BOOST_TEST_CONTEXT("velocity " << v.transpose() << " m/s") {
+      RigidState st;
+      st.orientation = Quat(Eigen::AngleAxisd(-alpha, Vec3::UnitY()) * Eigen::AngleAxisd(std::numbers::pi / 4, Vec3::UnitZ()));
+      st.position_m = Vec3(0, 0, -D + 0.5 * a * std::sin(alpha) + 0.5 * h * std::cos(alpha));
+      st.velocity_m_s = v;
+      const double vh = std::abs(v.x());
+      const double beta = vh > 1e-6 ? std::min(1.0, vh / planing_speed) : 0;
+      if (vh > 1e-6) BOOST_TEST(planing_share(st.velocity_m_s, env.gravity_m_s2, 2 * R) == beta, boost::test_tools::tolerance(1e-15));
+      const WaterLoads w = water_loads(s, env, st);
+      Environment uniform = env;
+      uniform.pressure_distribution = PressureDistribution::uniform;
+      const double f = w.force_N.norm(), f_law = water_loads(s, uniform, st).force_N.norm();
+      BOOST_REQUIRE(f > 0);
+      BOOST_TEST(std::abs(f - f_law) <= kRoundoff * f_law);
+      const double ahead_of_trailing_edge = -w.torque_N_m.dot(Vec3::UnitY()) / f + 0.5 * a;
+      const double expected = (0.5 + 0.25 * beta) * lengthened;
+      BOOST_TEST(std::abs(ahead_of_trailing_edge - expected) <= 1e-11, ahead_of_trailing_edge << " m vs " << expected << " m");
     }
   }
 }

@@ -301,31 +301,37 @@ template <int Bytes, class Real, bool Diagonal, bool Defect, bool ShuffleUd>
     Sides<S> sides_a, sides_b;
     sides_a.start(uda0, uda1);
     sides_b.start(udb0, udb1);
-#pragma GCC unroll 2  // the vectors carried from one to the next stay in registers, no copies
-    for (; k + L <= n; k += L) {
-      __builtin_prefetch(b + k + 2 * w + STONESKIP_PF, 0, 3);
-      __builtin_prefetch(pa + k + STONESKIP_PF, 1, 3);
-      __builtin_prefetch(pb + k + STONESKIP_PF, 1, 3);
-      const V an = load<V>(a + k + L), bn = load<V>(b + k + L);
-      const V uda2 = load<V>(a - w + k + L) + bn, udb2 = an + load<V>(b + w + k + L);
-      const V orth_a = (load<V>(a + k - 1) + load<V>(a + k + 1)) + uda1;
-      const V orth_b = (load<V>(b + k - 1) + load<V>(b + k + 1)) + udb1;
+    auto step = [&](std::ptrdiff_t j) __attribute__((always_inline)) {
+      const V an = load<V>(a + j + L), bn = load<V>(b + j + L);
+      const V uda2 = load<V>(a - w + j + L) + bn, udb2 = an + load<V>(b + w + j + L);
+      const V orth_a = (load<V>(a + j - 1) + load<V>(a + j + 1)) + uda1;
+      const V orth_b = (load<V>(b + j - 1) + load<V>(b + j + 1)) + udb1;
       V diag_a{}, diag_b{};
       if constexpr (Diagonal) {
         diag_a = sides_a.sum(uda0, uda1, uda2);
         diag_b = sides_b.sum(udb0, udb1, udb2);
       }
-      const V ra = update<Real, V, Diagonal, Defect, increment_form>(ac, orth_a, diag_a, load<V>(pa + k), wc, wo, wd, wp, wx);
-      const V rb = update<Real, V, Diagonal, Defect, increment_form>(bc, orth_b, diag_b, load<V>(pb + k), wc, wo, wd, wp, wx);
-      std::memcpy(pa + k, &ra, sizeof ra);
-      std::memcpy(pb + k, &rb, sizeof rb);
+      const V ra = update<Real, V, Diagonal, Defect, increment_form>(ac, orth_a, diag_a, load<V>(pa + j), wc, wo, wd, wp, wx);
+      const V rb = update<Real, V, Diagonal, Defect, increment_form>(bc, orth_b, diag_b, load<V>(pb + j), wc, wo, wd, wp, wx);
+      std::memcpy(pa + j, &ra, sizeof ra);
+      std::memcpy(pb + j, &rb, sizeof rb);
       ac = an;
       bc = bn;
       uda0 = uda1;
       uda1 = uda2;
       udb0 = udb1;
       udb1 = udb2;
+    };
+    // Two vectors a trip and one prefetch per stream a trip, not one per vector (with AVX2 and
+    // double a trip is one 64-byte line of each stream; measured at 500² float64, AVX2: +2–3 %).
+    constexpr std::ptrdiff_t T = 2;
+    for (; k + T * L <= n; k += T * L) {
+      __builtin_prefetch(b + k + 2 * w + STONESKIP_PF, 0, 3);
+      __builtin_prefetch(pa + k + STONESKIP_PF, 1, 3);
+      __builtin_prefetch(pb + k + STONESKIP_PF, 1, 3);
+      for (std::ptrdiff_t t = 0; t < T; ++t) step(k + t * L);
     }
+    for (; k + L <= n; k += L) step(k);
   } else {
     for (; k + L <= n; k += L) {
       __builtin_prefetch(b + k + 2 * w + STONESKIP_PF, 0, 3);

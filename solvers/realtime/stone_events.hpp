@@ -15,9 +15,12 @@
 //       continuous; newtonian and nagahiro_hayakawa (∝ max(u_i, 0)²) are C¹ with a jump in the
 //       second derivative, planing (∝ max(u_i, 0) |v|) is C⁰ with a jump in the first. Root function
 //       g = u_i at the clipped centroid, live only while the face has a vertex under water. The
-//       pressure distributions (model/stone/pressure_distribution.hpp) add kinks this does not
-//       locate: the wetted span's ends change vertex, and a face switches at its centre of
-//       pressure; CVODE's error control steps through them. In the paper convention every wet face pushes with u_i² whatever its
+//       pressure distributions (model/stone/pressure_distribution.hpp) add points this does not
+//       locate: kinks where the wetted span's ends change vertex or a face switches at its centre
+//       of pressure, and jumps of the torque where a face at an end of the span stops advancing
+//       (the span is that of the advancing faces); CVODE's error control steps through them.
+//       Their direction v_h/|v_h| is blended away below planing speed (planing_share), so a stone
+//       sinking straight down is no longer a point where the load's derivative is unbounded. In the paper convention every wet face pushes with u_i² whatever its
 //       sign — smooth in u_i — so there is nothing to locate.
 //   (c) physical convention with air: the disk's normal velocity u = v·n_d changes sign; the
 //       air force −C_a ρ_a u|u| S_d n_d (§1.5) is C¹ there. In the paper convention u² is smooth.
