@@ -213,9 +213,10 @@ SectionOutput convergence_section(const Record& c) {
              (c.has("fixed_kinks") ? "`" + c.text("fixed_kinks") + "`" : std::string("not recorded")) +
              "; `all`: every vertex crossing and every wet face's and the air disk's flow switch, located on the "
              "step's interpolant): a step taken across a kink makes an O(h²)–O(h³) local error there, so without "
-             "them no scheme shows more than order 2–3 through a contact. The pressure distributions' own kinks "
-             "(the wetted span's ends changing vertex) are not located, so under `savitsky` and `savitsky_wagner` "
-             "the orders through a contact can stay below the scheme's. The same fits and verdicts as above, one "
+             "them no scheme shows more than order 2–3 through a contact. The pressure distributions' own "
+             "non-smooth points are not located (kinks where the wetted span's ends change vertex, jumps of the "
+             "torque where a face at an end of the span stops advancing), so under `savitsky` and "
+             "`savitsky_wagner` the orders through a contact can stay below the scheme's. The same fits and verdicts as above, one "
              "row per event:");
   w.table(event_table(c));
 

@@ -250,8 +250,8 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
       res.series.push_back(s);
       // Its position and orientation parts alone (state_error.hpp: a part can converge faster).
       for (int part = 0; part < 2; ++part) {
-        auto err = [&](const RigidState& x, const RigidState& ref) {
-          return part == 0 ? position_error(p.stone, x, ref) : orientation_error(x, ref);
+        auto err = [&](const RigidState& x, const RigidState& truth) {
+          return part == 0 ? position_error(p.stone, x, truth) : orientation_error(x, truth);
         };
         auto q = make_series(part == 0 ? "flight_interval_position" : "flight_interval_orientation",
                              part == 0 ? "position after a free-flight interval (scheme alone), in stone radii"
