@@ -87,6 +87,9 @@ void read_scene_keys(TomlTable& top, std::optional<WaterScene>& water, SceneFram
       if (*d * frames.frame_rate_hz > 1e8) s->fail("duration_s", "more than 1e8 frames");
       frames.duration_s = *d;
     }
+    const std::string free = s->string_or("free_water", to_string(frames.free_water));
+    if (!parse_free_water(free, frames.free_water))
+      s->fail("free_water", "'" + free + "' is not one of one_at_a_time, to_the_next_frame, to_the_next_look");
     s->finish();
   }
 }
@@ -112,7 +115,7 @@ std::string scene_settings_toml(const std::optional<WaterScene>& water, const Sc
         << "\nwavelength_m = " << d.wavelength_m << "\n";
     }
   }
-  s << "\n[scene]\nframe_rate_hz = " << frames.frame_rate_hz << "\n";
+  s << "\n[scene]\nframe_rate_hz = " << frames.frame_rate_hz << "\nfree_water = \"" << to_string(frames.free_water) << "\"\n";
   if (frames.duration_s) s << "duration_s = " << *frames.duration_s << "\n";
   else s << "# duration_s: the stone's t_max_s\n";
   return s.str();

@@ -5,7 +5,8 @@
 //                    stone (coupling, draught_samples) and how it is computed (precision, threads,
 //                    mode, tile_cells, epsilon_m);
 //   [water.initial]  the surface at t = 0 (at rest; optional: still water);
-//   [scene]          the frames of `stoneskip scene`: frame_rate_hz, duration_s (optional).
+//   [scene]          the frames of `stoneskip scene`: frame_rate_hz, duration_s (optional), and how
+//                    the water's unforced steps are taken (free_water).
 // Read strictly (an unknown key is an error) with one-line errors naming the file, line and key;
 // a two-way field above the coupled stability limit (model/README.md §2.4) is refused at water.dt_s.
 #include <optional>
@@ -38,6 +39,7 @@ struct WaterScene {
 struct SceneFrames {
   double frame_rate_hz = 90;
   std::optional<double> duration_s;
+  FreeWater free_water = FreeWater::to_the_next_frame;  // SceneOptions::free_water (bit-identical choices)
 };
 
 // Reads [water] (and [water.initial]) and [scene] from a stone case's top table, if present.

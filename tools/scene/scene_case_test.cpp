@@ -60,6 +60,7 @@ BOOST_AUTO_TEST_CASE(defaults_are_the_documented_ones) {
   BOOST_TEST(c.water->field.threads == 1);
   BOOST_TEST((c.water->field.mode == StepMode::full));
   BOOST_TEST(c.frames.frame_rate_hz == 90.0);
+  BOOST_TEST((c.frames.free_water == FreeWater::to_the_next_frame));
   const SceneOptions o = scene_options(c, SceneEnd::at_duration);
   BOOST_TEST(o.frames() == 180);
   BOOST_TEST(o.water->initial_m.empty());
@@ -71,7 +72,7 @@ BOOST_AUTO_TEST_CASE(scene_keys_are_read) {
   // Oracle: the values written in the file come back.
   const StoneCase c = pond({"water.precision=float32", "water.threads=2", "water.mode=active_tiles", "water.tile_cells=16",
                             "water.epsilon_m=1e-6", "water.draught_samples=1"},
-                           "[scene]\nframe_rate_hz = 60.0\nduration_s = 1.5\n");
+                           "[scene]\nframe_rate_hz = 60.0\nduration_s = 1.5\nfree_water = \"to_the_next_look\"\n");
   BOOST_TEST((c.water->field.precision == Precision::float32));
   BOOST_TEST(c.water->field.threads == 2);
   BOOST_TEST((c.water->field.mode == StepMode::active_tiles));
@@ -79,6 +80,8 @@ BOOST_AUTO_TEST_CASE(scene_keys_are_read) {
   BOOST_TEST(c.water->field.tiles.epsilon_m == 1e-6);
   BOOST_TEST(c.water->draught_samples == 1);
   BOOST_TEST(scene_options(c, SceneEnd::at_duration).frames() == 90);
+  BOOST_TEST((scene_options(c, SceneEnd::at_duration).free_water == FreeWater::to_the_next_look));
+  BOOST_TEST(c.resolved_settings().find("free_water = \"to_the_next_look\"") != std::string::npos);
   BOOST_TEST(c.resolved_settings().find("coupling = \"two_way\"") != std::string::npos);
 }
 
@@ -110,6 +113,7 @@ BOOST_AUTO_TEST_CASE(bad_scene_values_are_named) {
   fails_at({"water.draught_samples=0"}, "", "water.draught_samples");
   fails_at({}, "[scene]\nframe_rate=90.0\n", "scene.frame_rate");
   fails_at({}, "[scene]\nduration_s = 0.001\n", "scene.duration_s");
+  fails_at({}, "[scene]\nfree_water = \"blocked\"\n", "scene.free_water");
   fails_at({}, "[water.intial]\nkind = \"gaussian\"\n", "water.intial");
 }
 

@@ -10,6 +10,7 @@ SceneOptions scene_options(const StoneCase& c, SceneEnd end) {
   o.stone_steps = c.realtime;
   o.end = end;
   o.frame_rate_hz = c.frames.frame_rate_hz;
+  o.free_water = c.frames.free_water;
   o.duration_s = c.frames.duration_s ? *c.frames.duration_s : c.realtime.t_max_s;
   o.coupling = c.water ? c.water->coupling : Coupling::none;
   if (c.water && c.water->coupling != Coupling::none) {
