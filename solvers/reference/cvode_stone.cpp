@@ -183,6 +183,8 @@ class ReferenceSolve {
   std::vector<int> found_;
   std::vector<double> event_times_;  // ring of the last max_events_per_ms event times
   long event_count_ = 0;
+  long window_steps_ = 0;            // step-collapse guard: total steps and t where the window began
+  double window_t_ = 0;
   long resynced_ = 0;
   double max_q_drift_ = 0;
   bool in_contact_mode_ = false;     // some vertex under water, per the event mode
@@ -198,6 +200,7 @@ bool ReferenceSolve::check_inputs(const RigidState& initial) {
   else if (!(o_.t_max_s > 0) || !std::isfinite(o_.t_max_s)) bad << "t_max_s must be positive and finite";
   else if (!(o_.output_dt_s >= 0)) bad << "output_dt_s must be >= 0";
   else if (o_.max_steps <= 0) bad << "max_steps must be positive";
+  else if (o_.max_steps_per_ms <= 0) bad << "max_steps_per_ms must be positive";
   else if (o_.max_events_per_ms <= 0 || o_.max_events_per_ms > kMaxEventsPerMs)
     bad << "max_events_per_ms must be in [1, " << kMaxEventsPerMs << "]";
   else if (!(o_.max_step_s >= 0)) bad << "max_step_s must be >= 0";
@@ -444,14 +447,29 @@ void ReferenceSolve::integrate() {
     }
     long nst = 0;
     check(CVodeGetNumSteps(cv_.mem, &nst), "CVodeGetNumSteps");
-    const long left = o_.max_steps - r_.stats.steps - nst;
+    const long total = r_.stats.steps + nst;
+    const long left = o_.max_steps - total;
     if (left <= 0) {
       std::ostringstream m;
       m << "too many steps: " << o_.max_steps << " (ReferenceOptions::max_steps) used by t = " << t_ << " s";
       fail(m.str());
       break;
     }
-    check(CVodeSetMaxNumSteps(cv_.mem, left), "CVodeSetMaxNumSteps");
+    // Step-collapse guard: a full window of max_steps_per_ms steps must span 1 ms or more.
+    if (total - window_steps_ >= o_.max_steps_per_ms) {
+      if (t_ - window_t_ < 1e-3) {
+        std::ostringstream m;
+        m << "the step size collapsed: " << total - window_steps_ << " steps from t = " << window_t_ << " s to " << t_
+          << " s, less than 1 ms (ReferenceOptions::max_steps_per_ms); the right-hand side is singular or "
+             "discontinuous there where no event is located (a sliding mode, say)";
+        fail(m.str());
+        break;
+      }
+      window_steps_ = total;
+      window_t_ = t_;
+    }
+    check(CVodeSetMaxNumSteps(cv_.mem, std::min(left, o_.max_steps_per_ms - (total - window_steps_))),
+          "CVodeSetMaxNumSteps");
     double t_ret = t_;
     const int flag = CVode(cv_.mem, tout, cv_.y, &t_ret, CV_NORMAL);
     if (flag == CV_ROOT_RETURN) {
@@ -465,6 +483,13 @@ void ReferenceSolve::integrate() {
       if (flag == CV_TSTOP_RETURN || t_ >= o_.t_max_s) break;
       ++k_out;
       continue;
+    }
+    if (flag == CV_TOO_MUCH_WORK) {
+      // The window or max_steps is used up: the loop's top says which, or goes on from t_ret.
+      t_ = t_ret;
+      long used = 0;
+      check(CVodeGetNumSteps(cv_.mem, &used), "CVodeGetNumSteps");
+      if (r_.stats.steps + used < o_.max_steps) continue;
     }
     // CVODE gave up.
     std::ostringstream m;

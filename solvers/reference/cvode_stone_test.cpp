@@ -399,6 +399,24 @@ BOOST_AUTO_TEST_CASE(an_event_burst_beyond_the_cap_fails_instead_of_looping) {
   BOOST_TEST(r.outcome_detail.find("max_events_per_ms") != std::string::npos, r.outcome_detail);
 }
 
+BOOST_AUTO_TEST_CASE(a_collapsing_step_beyond_the_cap_fails_instead_of_spinning) {
+  // Oracle: the contract of max_steps_per_ms: with a cap of 20 steps per ms, the typical throw's
+  // first contact (hundreds of steps within ~18 ms at rtol 1e-10) must fail, naming the cap, long
+  // before max_steps; with the default cap the same throw runs to its end.
+  ReferenceOptions o;
+  o.max_steps_per_ms = 20;
+  o.t_max_s = 1;
+  Environment env;
+  env.convention = Convention::paper;
+  const ThrowResult r = run_reference(typical_stone(), env, typical_throw(), o);
+  BOOST_TEST(name(r.outcome) == name(Outcome::failed));
+  BOOST_TEST(r.outcome_detail.find("max_steps_per_ms") != std::string::npos, r.outcome_detail);
+  BOOST_TEST(r.stats.steps < 1000);
+  o.max_steps_per_ms = ReferenceOptions{}.max_steps_per_ms;
+  const ThrowResult ok = run_reference(typical_stone(), env, typical_throw(), o);
+  BOOST_TEST(name(ok.outcome) != name(Outcome::failed), ok.outcome_detail);
+}
+
 BOOST_AUTO_TEST_CASE(every_restart_strategy_gives_the_same_contacts_on_a_65_rev_s_disk) {
   // Oracle: the same ODE solved by CVODE at rtol 1e-12 restarting at every event. Clanet's disk at
   // 3.5 m/s and 65 rev/s, its first 60 ms (entry at 16 ms, then hundreds of face switches and

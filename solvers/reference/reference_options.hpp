@@ -61,6 +61,11 @@ struct ReferenceOptions {
   double max_step_s = 0;        // CVODE's largest step; 0: no limit
   // Chattering guard: the solve fails when more than this many events fall within 1 ms.
   int max_events_per_ms = 1000;
+  // Step-collapse guard: the solve fails when this many steps advance it by less than 1 ms
+  // (checked on consecutive windows of that many steps). A right-hand side that is singular or
+  // discontinuous where no event is located (a sliding mode) shrinks the step without bound;
+  // without the guard such a solve spins until max_steps.
+  long max_steps_per_ms = 20000;
 };
 
 }  // namespace stoneskip

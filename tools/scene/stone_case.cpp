@@ -208,6 +208,7 @@ ReferenceOptions read_reference(std::optional<TomlTable> maybe, double t_max_s, 
     t.fail("restart", "must be \"every_event\", \"every_crossing\", \"at_jumps\" or \"never\" (got \"" + restart + "\")");
   o.max_step_s = t.bounded_or("max_step_s", o.max_step_s, 0, t_max_s);
   o.max_events_per_ms = static_cast<int>(t.bounded_integer_or("max_events_per_ms", o.max_events_per_ms, 1, 1000000));
+  o.max_steps_per_ms = t.bounded_integer_or("max_steps_per_ms", o.max_steps_per_ms, 1, 1000000000);
   t.finish();
   return o;
 }
@@ -348,7 +349,8 @@ std::string StoneCase::resolved_settings() const {
   s << "\n[reference]\nmethod = \"" << to_string(reference.method) << "\"\nrtol = " << reference.rtol << "\natol = "
     << reference.atol << "\natol_scaling = \"" << to_string(reference.atol_scaling) << "\"\nmax_steps = " << reference.max_steps
     << "\nrestart = \"" << to_string(reference.restart) << "\"\nmax_step_s = " << reference.max_step_s
-    << "\nmax_events_per_ms = " << reference.max_events_per_ms << "\n";
+    << "\nmax_events_per_ms = " << reference.max_events_per_ms << "\nmax_steps_per_ms = " << reference.max_steps_per_ms
+    << "\n";
   return s.str();
 }
 
