@@ -460,8 +460,8 @@ void ReferenceSolve::integrate() {
       if (t_ - window_t_ < 1e-3) {
         std::ostringstream m;
         m << "the step size collapsed: " << total - window_steps_ << " steps from t = " << window_t_ << " s to " << t_
-          << " s, less than 1 ms (ReferenceOptions::max_steps_per_ms); the right-hand side is singular or "
-             "discontinuous there where no event is located (a sliding mode, say)";
+          << " s, less than 1 ms (ReferenceOptions::max_steps_per_ms): the right-hand side is probably singular "
+             "or discontinuous there, where no event is located (a sliding mode, say)";
         fail(m.str());
         break;
       }
