@@ -1,7 +1,6 @@
 #include "model/stone/fluid_forces.hpp"
 
 #include <cmath>
-#include <numbers>
 #include <vector>
 
 #include "model/stone/pressure_distribution.hpp"
@@ -88,7 +87,7 @@ void add_distributed_loads(const Stone& stone, const Environment& env, const Rig
   // Without a span (no horizontal velocity, or none of the loaded region along it) the weight is
   // the uniform one on the same polygons: the limit of w_β as β → 0, so the loads stay continuous.
   const double beta =
-      span.valid() ? planing_share(s.velocity_m_s, env.gravity_m_s2, 2 * std::sqrt(stone.disk_area_m2 / std::numbers::pi)) : 0;
+      span.valid() ? planing_share(s.velocity_m_s, env.gravity_m_s2, 2 * stone.disk_radius_m) : 0;
   double distributed_N = 0;  // Σ p_i W_i
   for (std::size_t i = 0; i < nt; ++i) {
     faces[i].pressure_Pa = 0;

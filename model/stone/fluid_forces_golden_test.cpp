@@ -9,7 +9,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <numbers>
 
 #include "model/stone/fluid_forces.hpp"
 #include "model/stone/mass_properties.hpp"
@@ -104,7 +103,7 @@ BOOST_AUTO_TEST_CASE(the_loads_equal_the_straightforward_implementation_s_to_rou
       // pressure_distribution_test.cpp): the table holds the unblended loads, so those rows are
       // not compared.
       if (env.pressure_distribution != PressureDistribution::uniform &&
-          planing_share(s.velocity_m_s, env.gravity_m_s2, 2 * std::sqrt(stone.disk_area_m2 / std::numbers::pi)) < 1) {
+          planing_share(s.velocity_m_s, env.gravity_m_s2, 2 * stone.disk_radius_m) < 1) {
         ++below_planing_speed;
         continue;
       }

@@ -19,9 +19,10 @@
 //       locate: kinks where the wetted span's ends change vertex or a face switches at its centre
 //       of pressure, and jumps of the torque where a face at an end of the span stops advancing
 //       (the span is that of the advancing faces); CVODE's error control steps through them.
-//       Their direction v_h/|v_h| is blended away below planing speed (planing_share), so a stone
-//       sinking straight down is no longer a point where the load's derivative is unbounded. In the paper convention every wet face pushes with u_i² whatever its
-//       sign — smooth in u_i — so there is nothing to locate.
+//       The distributions' direction v_h/|v_h| is blended away below planing speed
+//       (planing_share), so a stone sinking straight down is no longer a point where the load's
+//       derivative is unbounded. In the paper convention every wet face pushes with u_i² whatever
+//       its sign — smooth in u_i — so there is nothing to locate.
 //   (c) physical convention with air: the disk's normal velocity u = v·n_d changes sign; the
 //       air force −C_a ρ_a u|u| S_d n_d (§1.5) is C¹ there. In the paper convention u² is smooth.
 // Between events the set of submerged vertices is fixed, so each live root function is smooth.
