@@ -155,6 +155,7 @@ void read_convergence(TomlTable t, StoneStudiesOptions& o) {
   c.check_factor = positive(t, "check_factor", c.check_factor);
   c.floor_factor = t.number_or("floor_factor", c.floor_factor);
   t.require_non_negative("floor_factor", c.floor_factor);
+  c.correction_term = t.boolean_or("correction_term", c.correction_term);
   o.convergence_judgement.tolerance = positive(t, "order_tolerance", o.convergence_judgement.tolerance);
   o.convergence_judgement.minimum_order = t.number_or("minimum_order", o.convergence_judgement.minimum_order);
   t.require_non_negative("minimum_order", o.convergence_judgement.minimum_order);

@@ -1,6 +1,9 @@
 #include "verification/convergence/order_fit.hpp"
 
+#include <boost/math/distributions/fisher_f.hpp>
 #include <boost/math/distributions/students_t.hpp>
+
+#include <Eigen/Dense>
 
 #include <algorithm>
 #include <cmath>
@@ -52,7 +55,60 @@ LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y) {
   return f;
 }
 
-OrderFit fit_order(const std::vector<double>& h, const std::vector<double>& error) {
+namespace {
+
+// The three-parameter fit log e = a + p log h + d (h / h_max) and its F test against the single
+// power (order_fit.hpp, OrderFitOptions); sets the fit's corrected fields.
+void test_correction_term(const std::vector<double>& x, const std::vector<double>& y, const LineFit& line,
+                          OrderFit& fit) {
+  const int n = static_cast<int>(x.size());
+  if (n < 4) return;
+  double x_max = x[0];
+  for (double v : x) x_max = std::max(x_max, v);
+  Eigen::MatrixXd X(n, 3);
+  Eigen::VectorXd Y(n);
+  for (int i = 0; i < n; ++i) {
+    X(i, 0) = 1;
+    X(i, 1) = x[i];
+    X(i, 2) = std::exp(x[i] - x_max);  // h / h_max
+    Y(i) = y[i];
+  }
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(X);
+  if (qr.rank() < 3) return;  // h takes fewer than 3 distinct values
+  const Eigen::Vector3d b = qr.solve(Y);
+  const double sse2 = (Y - X * b).squaredNorm();
+  double sse1 = 0;
+  for (int i = 0; i < n; ++i) {
+    const double r = y[i] - (line.intercept + line.slope * x[i]);
+    sse1 += r * r;
+  }
+  const double dof = n - 3;
+  boost::math::fisher_f f_dist(1, dof);
+  fit.f_critical = boost::math::quantile(boost::math::complement(f_dist, 0.05));
+  fit.f_statistic = sse2 > 0 ? (sse1 - sse2) / (sse2 / dof) : (sse1 > 0 ? INFINITY : 0);
+  if (!(fit.f_statistic > fit.f_critical)) return;
+  // Interval of p: b_p ± t_{0.975, n−3} · sqrt(SSE₂/(n−3) · [(XᵀX)⁻¹]_pp).
+  const Eigen::Matrix3d inv = (X.transpose() * X).inverse();
+  boost::math::students_t t_dist(dof);
+  const double t = boost::math::quantile(boost::math::complement(t_dist, 0.025));
+  const double se = std::sqrt(sse2 / dof * inv(1, 1));
+  fit.corrected = true;
+  fit.single_order = fit.order;
+  fit.single_low = fit.order_low;
+  fit.single_high = fit.order_high;
+  fit.order = b(1);
+  fit.order_low = b(1) - t * se;
+  fit.order_high = b(1) + t * se;
+  fit.constant = std::exp(b(0));
+  fit.correction = b(2);
+  double syy = 0, my = Y.mean();
+  for (int i = 0; i < n; ++i) syy += (y[i] - my) * (y[i] - my);
+  fit.r_squared = syy > 0 ? 1 - sse2 / syy : 1;
+}
+
+}  // namespace
+
+OrderFit fit_order(const std::vector<double>& h, const std::vector<double>& error, const OrderFitOptions& options) {
   OrderFit fit;
   if (h.size() != error.size()) {
     fit.problem = "h and error have different lengths";
@@ -82,6 +138,7 @@ OrderFit fit_order(const std::vector<double>& h, const std::vector<double>& erro
   fit.r_squared = line.r_squared;
   for (std::size_t i = 0; i + 1 < x.size(); ++i) fit.pairwise.push_back((y[i] - y[i + 1]) / (x[i] - x[i + 1]));
   fit.valid = true;
+  if (options.correction_term) test_correction_term(x, y, line, fit);
   return fit;
 }
 
@@ -89,7 +146,11 @@ std::string OrderFit::brief() const {
   if (!valid) return "no fit: " + problem;
   char buf[128];
   std::snprintf(buf, sizeof buf, "p = %.3g [%.3g, %.3g] (%d points)", order, order_low, order_high, points);
-  return buf;
+  if (!corrected) return buf;
+  char more[160];
+  std::snprintf(more, sizeof more, " with the term h^(p+1) (F = %.3g > %.3g; a single power: p = %.3g [%.3g, %.3g])",
+                f_statistic, f_critical, single_order, single_low, single_high);
+  return std::string(buf) + more;
 }
 
 double richardson_extrapolate(double phi_fine, double phi_coarse, double ratio, double order) {

@@ -1,7 +1,8 @@
 #pragma once
 // Observed order of convergence from any sequence of (h, error) pairs: a least-squares fit of
 // log e = log C + p log h with the 95 % confidence interval of p (Student t), and the pairwise
-// orders p_k = log(e_k / e_{k+1}) / log(h_k / h_{k+1}) of neighbouring pairs.
+// orders p_k = log(e_k / e_{k+1}) / log(h_k / h_{k+1}) of neighbouring pairs. On request the fit
+// also tests the first correction term of the error's expansion (OrderFitOptions).
 #include <string>
 #include <vector>
 
@@ -30,10 +31,34 @@ struct OrderFit {
   double r_squared = 0;
   int points = 0;
   std::vector<double> pairwise;  // size points − 1
+  // With OrderFitOptions::correction_term: whether the correction term was significant, and then
+  // order, order_low, order_high and constant above are the three-parameter fit's, with the single
+  // power's kept here; correction is d·h_max (the relative size of the term at the largest h).
+  bool corrected = false;
+  double single_order = 0, single_low = 0, single_high = 0;
+  double correction = 0;
+  double f_statistic = 0, f_critical = 0;  // the test's F and its 95 % quantile (0: not tested)
   std::string brief() const;     // "p = 2.01 [1.98, 2.04] (5 points)"
 };
 
-OrderFit fit_order(const std::vector<double>& h, const std::vector<double>& error);
+// The first correction term of the error's asymptotic expansion. A fixed-step one-step method of
+// order p on a smooth problem has a global error e = h^p e_p(t) + h^(p+1) e_(p+1)(t) + O(h^(p+2))
+// (Hairer, Nørsett & Wanner, Solving ODEs I, 2nd ed. 1993, Thm II.8.1), so
+// log e = log C + p log h + d h + O(h²). Far from h → 0 (a spinning stone at ωh ≈ 1 rad a step)
+// the second term bends a single power's fit, whose interval then misses p although the pairwise
+// orders approach it. With `correction_term`, h (over its largest value) enters the regression
+// as a second regressor, and the three-parameter fit is used when it lowers the residual sum of
+// squares significantly: the extra-sum-of-squares F test, F = (SSE₁ − SSE₂) / (SSE₂ / (n − 3))
+// above the 95 % quantile of F(1, n − 3) (e.g. Montgomery & Runger, Applied Statistics, §12.2.2).
+// It needs n ≥ 4 points; its interval on p (Student t, n − 3 degrees of freedom) is wider than
+// the single power's, so few points give "not established", never a narrower claim. A floor (the
+// reference's error) bends the fine end, which this term does not describe: such points are to be
+// left out before the fit, as the studies do.
+struct OrderFitOptions {
+  bool correction_term = false;
+};
+
+OrderFit fit_order(const std::vector<double>& h, const std::vector<double>& error, const OrderFitOptions& options = {});
 
 // Richardson extrapolation of two solutions on sizes h_fine < h_coarse = r h_fine with known
 // order p: φ_ext = (r^p φ_fine − φ_coarse) / (r^p − 1) (Celik et al. 2008, Eq. 6).

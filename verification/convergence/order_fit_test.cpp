@@ -146,6 +146,61 @@ BOOST_AUTO_TEST_CASE(richardson_extrapolation_removes_the_leading_term) {
   BOOST_TEST(std::abs(richardson_extrapolate(5 + 2 * 0.01, 5 + 2 * 0.04, 2, 2) - 5) <= 1e-13);
 }
 
+BOOST_AUTO_TEST_CASE(the_correction_term_recovers_the_order_that_a_second_term_hides) {
+  // Oracle: e = 3 h⁴ (1 − 0.6 h/h_max), the leading term of a fourth-order method plus the next
+  // one (order_fit.hpp), over six halvings: the true order is 4. A single power bends to 3.77 with
+  // an interval that excludes 4 (the pre-asymptotic trap); with the correction term the F test
+  // finds the term (F ≈ 210 against the 95 % quantile 10.1 of F(1, 3)) and the interval holds 4.
+  // The fit is log-linear in h while the term is log(1 − 0.6 h/h_max): the O(h²) rest widens and
+  // shifts the interval a little (computed independently: 4.06 [3.99, 4.13]).
+  std::vector<double> h, e;
+  for (int k = 0; k < 6; ++k) {
+    const double x = 0.1 / std::pow(2.0, k);
+    h.push_back(x);
+    e.push_back(3 * std::pow(x, 4) * (1 - 0.6 * x / 0.1));
+  }
+  const OrderFit single = fit_order(h, e);
+  BOOST_TEST(!single.corrected);
+  BOOST_TEST(single.order_high < 4.0);
+  OrderFitOptions with;
+  with.correction_term = true;
+  const OrderFit f = fit_order(h, e, with);
+  BOOST_TEST(f.corrected);
+  BOOST_TEST(std::abs(f.f_critical - 10.128) <= 1e-3);  // F(1, 3), 95 %: statistical tables
+  BOOST_TEST(f.f_statistic > 100);
+  BOOST_TEST(f.order_low <= 4.0);
+  BOOST_TEST(f.order_high >= 4.0);
+  BOOST_TEST(std::abs(f.order - 4.059) <= 0.005);
+  BOOST_TEST(std::abs(f.single_order - single.order) <= 1e-12);  // the single power is kept beside it
+  OrderJudgement j;
+  j.expected_order = 4;
+  j.tolerance = 0.25;
+  BOOST_TEST(judge_order(single, j).verdict == OrderVerdict::order_not_established);  // [3.58, 3.96] straddles 3.75
+  BOOST_TEST(judge_order(f, j).verdict == OrderVerdict::converges_at_expected_order);
+}
+
+BOOST_AUTO_TEST_CASE(scatter_without_a_trend_keeps_the_single_power) {
+  // Oracle: e = 3 h² (1 ± 5 %), the sign alternating: scatter with no trend in h. The extra term
+  // explains almost none of it (F ≈ 0.06 ≪ 10.1), so the single power stands, unchanged; and
+  // with 3 points the term is not tried at all (no degree of freedom would be left).
+  std::vector<double> h, e;
+  for (int k = 0; k < 6; ++k) {
+    const double x = 0.1 / std::pow(2.0, k);
+    h.push_back(x);
+    e.push_back(3 * x * x * (1 + 0.05 * (k % 2 == 0 ? 1 : -1)));
+  }
+  OrderFitOptions with;
+  with.correction_term = true;
+  const OrderFit f = fit_order(h, e, with), single = fit_order(h, e);
+  BOOST_TEST(!f.corrected);
+  BOOST_TEST(f.f_statistic < 1);
+  BOOST_TEST(f.order == single.order);
+  BOOST_TEST(f.order_low == single.order_low);
+  const OrderFit three = fit_order({0.1, 0.05, 0.025}, {1e-2, 2e-3, 5e-4}, with);
+  BOOST_TEST(!three.corrected);
+  BOOST_TEST(three.f_critical == 0);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace

@@ -47,7 +47,9 @@ void finish_series(ConvergenceSeries& s, const RealtimeConvergenceOptions& o) {
     h.push_back(s.h_s[i]);
     e.push_back(s.error[i]);
   }
-  s.fit = fit_order(h, e);
+  OrderFitOptions fo;
+  fo.correction_term = o.correction_term && !s.against_tolerance;  // the expansion is in the step, not tol
+  s.fit = fit_order(h, e, fo);
   OrderJudgement j;
   j.expected_order = s.formal_order;
   j.tolerance = o.order_tolerance;

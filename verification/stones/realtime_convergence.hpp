@@ -54,6 +54,11 @@ struct RealtimeConvergenceOptions {
   double check_factor = 100;                     // the check run: rtol × check_factor
   double floor_factor = 1;                       // fit only errors > floor_factor × |check − reference|
   double order_tolerance = 0.2;                  // a verdict of "formal order" needs the interval within this
+  // Test the first correction term of the error's expansion, h^(p+1), and fit with it where it is
+  // significant (verification/convergence/order_fit.hpp, OrderFitOptions): the coarse steps of a
+  // 40 rev/s throw turn the stone by up to 1 rad a step, far from h → 0. Fixed steps only: an
+  // adaptive scheme's error against its tolerance has no such expansion.
+  bool correction_term = true;
   int workers = 2;
   ProgressFactory progress;  // how long runs are shown; empty: silently
 };

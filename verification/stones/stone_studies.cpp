@@ -169,12 +169,14 @@ Record run_stone_studies(const StoneStudiesOptions& o, StudySink& sink) {
     r.set("contact_ratio", co.contact_ratio);
     r.set("fixed_kinks", std::string(to_string(co.fixed_kinks)));
     r.set("law", series_name(throws.front(), o.convergence_distributions));
+    r.set("distribution", std::string(to_string(throws.front().environment.pressure_distribution)));
     std::vector<std::string> others;
     for (std::size_t k = 1; k < throws.size(); ++k) {
       const std::string law = series_name(throws[k], o.convergence_distributions);
       others.push_back(law);
-      r.child("other_laws").add_child(law, convergence_series_findings(run_realtime_convergence(throws[k], co),
-                                                                         o.convergence_judgement));
+      Record lr = convergence_series_findings(run_realtime_convergence(throws[k], co), o.convergence_judgement);
+      lr.set("distribution", std::string(to_string(throws[k].environment.pressure_distribution)));
+      r.child("other_laws").add_child(law, std::move(lr));
     }
     r.set_strings("other_laws_list", others);
     return r;

@@ -17,6 +17,18 @@ Record& store_order_fit(Record& parent, const std::string& key, const OrderFit& 
   r.set("constant", fit.constant);
   if (!fit.problem.empty()) r.set("problem", fit.problem);
   r.set_table("pairwise", value_list(fit.pairwise, "order"));
+  if (fit.f_critical > 0) {  // the correction term was tested (order_fit.hpp, OrderFitOptions)
+    r.set("correction_tested", true);
+    r.set("corrected", fit.corrected);
+    r.set("f_statistic", fit.f_statistic);
+    r.set("f_critical", fit.f_critical);
+    if (fit.corrected) {
+      r.set("correction", fit.correction);
+      r.set("single_order", fit.single_order);
+      r.set("single_low", fit.single_low);
+      r.set("single_high", fit.single_high);
+    }
+  }
   Record in;
   in.set("valid", fit.valid);
   in.set("order", fit.order);
@@ -41,6 +53,17 @@ OrderFit stored_order_fit(const Record& r) {
   f.constant = r.number("constant");
   if (r.has_text("problem")) f.problem = r.text("problem");
   f.pairwise = list_values(r.table("pairwise"));
+  if (r.has("correction_tested")) {
+    f.corrected = r.flag("corrected");
+    f.f_statistic = r.number("f_statistic");
+    f.f_critical = r.number("f_critical");
+    if (f.corrected) {
+      f.correction = r.number("correction");
+      f.single_order = r.number("single_order");
+      f.single_low = r.number("single_low");
+      f.single_high = r.number("single_high");
+    }
+  }
   return f;
 }
 
