@@ -58,6 +58,9 @@ BOOST_AUTO_TEST_CASE(the_shipped_presets_name_their_laws_ranges_and_curve) {
   for (const auto& m : full.validation.measured) models += m.kind == "model" ? 1 : 0;
   BOOST_TEST(models == 6);  // Bocquet's three rows and the seed's three: model beside model
   BOOST_TEST(quick.validation.ranking.held_spin_rev_s == 65.0);
+  BOOST_TEST(full.convergence.correction_term);  // written out in both presets
+  BOOST_TEST(quick.convergence.correction_term);
+  BOOST_TEST(!load_stone_study_file(kQuick, {"convergence.correction_term=false"}).options.convergence.correction_term);
 }
 
 BOOST_AUTO_TEST_CASE(bad_laws_ranges_and_strategies_are_one_line_errors_naming_the_key) {
@@ -84,6 +87,7 @@ BOOST_AUTO_TEST_CASE(bad_laws_ranges_and_strategies_are_one_line_errors_naming_t
   names(error_of({"work_precision.throws=[\"sidespin\"]"}), "work_precision.throws");
   names(error_of({"restarts.throws=[\"flat_drop@planing\"]"}), "paper convention");  // the case is the paper's
   names(error_of({"restarts.strategies=[\"every_event\", \"sometimes\"]"}), "restarts.strategies");
+  names(error_of({"convergence.correction_term=\"yes\""}), "convergence.correction_term");
   // A measured row: a range on a row the ranking cannot score, half a range, a range across zero.
   const std::string row = R"(validation.measured=[{key = "seed_spin", quantity = "q", measured = "m", source = "s", )";
   names(error_of({row + R"(score_low = 1.0, score_high = 2.0, score_unit = ""}])"}), "score_low");
