@@ -243,8 +243,11 @@ SectionOutput convergence_section(const Record& c) {
              "; `all`: every vertex crossing and every wet face's and the air disk's flow switch, located on the "
              "step's interpolant): a step taken across a kink makes an O(h²)–O(h³) local error there, so without "
              "them no scheme shows more than order 2–3 through a contact. The pressure distributions' own "
-             "non-smooth points are not located (kinks where the wetted span's ends change vertex, jumps of the "
-             "torque where a face at an end of the span stops advancing), so under `savitsky` and "
+             "non-smooth points are not located (kinks where the wetted span's ends change vertex, where a face's "
+             "flow switches at its centre of pressure and where the planing share reaches 1; jumps of the torque "
+             "where a face at an end of the span stops advancing; under `savitsky_wagner` also the raised "
+             "waterline's crossings and the kinks where the deepest vertex, which sets the rise, changes), so "
+             "under `savitsky` and "
              "`savitsky_wagner` the orders through a contact can stay below the scheme's. The same fits and verdicts as above, one "
              "row per event:");
   w.table(event_table(c));

@@ -16,9 +16,11 @@
 //       second derivative, planing (∝ max(u_i, 0) |v|) is C⁰ with a jump in the first. Root function
 //       g = u_i at the clipped centroid, live only while the face has a vertex under water. The
 //       pressure distributions (model/stone/pressure_distribution.hpp) add points this does not
-//       locate: kinks where the wetted span's ends change vertex or a face switches at its centre
-//       of pressure, and jumps of the torque where a face at an end of the span stops advancing
-//       (the span is that of the advancing faces); CVODE's error control steps through them.
+//       locate: kinks where the wetted span's ends change vertex, a face switches at its centre
+//       of pressure or the planing share reaches 1; jumps of the torque where a face at an end of
+//       the span stops advancing (the span is that of the advancing faces); under savitsky_wagner
+//       the raised waterline's crossings (depth = −rise) and the kinks where the deepest vertex,
+//       which sets the rise, changes. CVODE's error control steps through them.
 //       The distributions' direction v_h/|v_h| is blended away below planing speed
 //       (planing_share), so a stone sinking straight down is no longer a point where the load's
 //       derivative is unbounded. In the paper convention every wet face pushes with u_i² whatever

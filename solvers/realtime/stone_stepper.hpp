@@ -60,7 +60,8 @@ constexpr double kDefaultAdaptiveTolerance = 1e-9;
 //   all        every switching function of stone_events.hpp: the crossings and, in the physical
 //              convention, each wet face's and the air disk's flow switch (a live surface is held
 //              during the step, as the right-hand side holds it). The pressure distributions' own kinks and
-//              jumps (the wetted span's ends) are not among them (stone_events.hpp, (b)).
+//              jumps (the wetted span's ends, the raised waterline, …) are not among them
+//              (stone_events.hpp, (b)).
 enum class KinkSteps { none, crossings, all };
 const char* to_string(KinkSteps k);
 bool parse_kink_steps(const std::string& s, KinkSteps& out);
