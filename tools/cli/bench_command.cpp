@@ -367,7 +367,7 @@ void add_bench(CLI::App& app) {
   cmd->add_option("--sweep-case", a->sweep_case, "The throw whose spin and attack angle the sweep varies")->capture_default_str();
   cmd->add_option("--sweep-rtol", a->sweep_rtol,
                   "The sweep's tolerance (bs32, rtol = atol_m; default " + g(kSweepTolerance) + ", from solvers/README.md's work-precision table)");
-  cmd->add_option("--sweep-kinks", a->sweep_kinks, "Which kinks end the sweep's steps: none, crossings or all (default: bs32's, all)");
+  cmd->add_option("--sweep-kinks", a->sweep_kinks, "Which kinks end the sweep's steps: none, crossings or all (default: the scheme's own, crossings for bs32)");
   cmd->add_option("--repeats", a->repeats, "Runs of the scene and of the sweep (the best is reported)")->capture_default_str();
   add_limit_options(cmd, a->limits);
   cmd->callback([a] { bench(*a); });
