@@ -166,12 +166,13 @@ SectionOutput convergence_section(const Record& c) {
   if (const auto [tested, used] = correction_counts(c); tested > 0)
     w.text("A fixed step's error has the expansion e = C h^p (1 + d h + O(h²)) (Hairer, Nørsett & Wanner, *Solving "
            "ODEs I*, Thm II.8.1). At this throw's coarsest steps the spinning stone turns through an angle of order one "
-           "radian in a step, far from h → 0, so the second term bends a single power, whose interval can then miss p while the pairwise orders approach it. Each "
-           "fixed-step series (" + fmt(tested) + " here) is therefore also fitted as log e = log C + p log h + d h, "
-           "and that fit's p and interval (Student t, n − 3 degrees of freedom, so wider) are used where the extra "
-           "term lowers the residual significantly (F test at 95 %, at least 4 points): " + fmt(used) + " of the " +
-           fmt(tested) + " series, marked *with h^(p+1)* with the single power's p beside it. The adaptive scheme's "
-           "errors against its tolerance are fitted with a single power.");
+           "radian in a step, far from h → 0, so the second term bends a single power, whose interval can then miss p "
+           "while the pairwise orders approach it. A fixed-step series with at least 4 points whose error falls at "
+           "every halving (" + fmt(tested) + " here; an error that rises as h shrinks is not approaching C h^p) is "
+           "therefore also fitted as log e = log C + p log h + d h, and that fit's p and interval (Student t, n − 3 "
+           "degrees of freedom, so wider) are used where the extra term lowers the residual significantly (F test at "
+           "95 %): " + fmt(used) + " of the " + fmt(tested) + " series, marked *with h^(p+1)* with the single "
+           "power's p beside it. The adaptive scheme's errors against its tolerance are fitted with a single power.");
   w.text("Throw: **" + c.text("case") + "**. The reference makes " + fmt(c.number("reference_contacts")) + " contacts and " +
          fmt(c.number("reference_bounces")) + " bounces and ends (" + c.text("reference_outcome") + ") at " +
          fmt(c.number("reference_end_time_s"), 4) + " s. Two kinds of measurement:");

@@ -50,7 +50,9 @@ struct OrderFit {
 // as a second regressor, and the three-parameter fit is used when it lowers the residual sum of
 // squares significantly: the extra-sum-of-squares F test, F = (SSE₁ − SSE₂) / (SSE₂ / (n − 3))
 // above the 95 % quantile of F(1, n − 3) (e.g. Montgomery & Runger, Applied Statistics, §12.2.2).
-// It needs n ≥ 4 points; its interval on p (Student t, n − 3 degrees of freedom) is wider than
+// It needs n ≥ 4 points whose error falls at every halving (every pairwise order > 0: an error
+// that grows somewhere as h shrinks is not approaching C h^p, and a three-parameter fit of such
+// scatter means nothing); its interval on p (Student t, n − 3 degrees of freedom) is wider than
 // the single power's, so few points give "not established", never a narrower claim. A floor (the
 // reference's error) bends the fine end, which this term does not describe: such points are to be
 // left out before the fit, as the studies do.

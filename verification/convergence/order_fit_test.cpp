@@ -199,6 +199,11 @@ BOOST_AUTO_TEST_CASE(scatter_without_a_trend_keeps_the_single_power) {
   const OrderFit three = fit_order({0.1, 0.05, 0.025}, {1e-2, 2e-3, 5e-4}, with);
   BOOST_TEST(!three.corrected);
   BOOST_TEST(three.f_critical == 0);
+  // An error that rises once as h shrinks (pairwise order < 0) is not an approach to C h^p: the
+  // term is not tried, whatever F would say.
+  const OrderFit rises = fit_order({0.1, 0.05, 0.025, 0.0125, 0.00625}, {2e-6, 4e-8, 7e-9, 3e-8, 8e-9}, with);
+  BOOST_TEST(!rises.corrected);
+  BOOST_TEST(rises.f_critical == 0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
