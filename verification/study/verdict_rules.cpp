@@ -218,7 +218,7 @@ const std::map<std::string, Rule>& rules() {
          double closest_distance = 0;
          for (const auto& v : free) {
            const auto m = missed_rows(in, v + ".");
-           for (const auto& r : m) ++misses[r];
+           for (const auto& row : m) ++misses[row];
            const int met = kSkipRows - static_cast<int>(m.size());
            const double d = in.number(v + ".distance");
            if (met > closest_met || (met == closest_met && d < closest_distance)) {
@@ -228,9 +228,9 @@ const std::map<std::string, Rule>& rules() {
            }
          }
          std::vector<std::string> none;
-         for (const char* r : {"U_min", "argmin α", "β_max", "contact time", "contact exponent", "attitude", "surfing",
-                               "diving", "trout"})
-           if (misses[r] == static_cast<int>(free.size())) none.emplace_back(r);
+         for (const char* row : {"U_min", "argmin α", "β_max", "contact time", "contact exponent", "attitude", "surfing",
+                                 "diving", "trout"})
+           if (misses[row] == static_cast<int>(free.size())) none.emplace_back(row);
          return "no variant skips like a real stone; no free variant meets " + (none.empty() ? std::string("—") : joined(none)) +
                 "; closest: " + closest + " (" + std::to_string(closest_met) + " of " + std::to_string(kSkipRows) + " rows)";
        }},
