@@ -81,6 +81,7 @@ void test_correction_term(const std::vector<double>& x, const std::vector<double
   if (qr.rank() < 3) return;  // h takes fewer than 3 distinct values
   const Eigen::Vector3d b = qr.solve(Y);
   const double sse2 = (Y - X * b).squaredNorm();
+  if (!(sse2 > 0)) return;  // three parameters through every point: no residual to test against
   double sse1 = 0;
   for (int i = 0; i < n; ++i) {
     const double r = y[i] - (line.intercept + line.slope * x[i]);
@@ -89,7 +90,7 @@ void test_correction_term(const std::vector<double>& x, const std::vector<double
   const double dof = n - 3;
   boost::math::fisher_f f_dist(1, dof);
   fit.f_critical = boost::math::quantile(boost::math::complement(f_dist, 0.05));
-  fit.f_statistic = sse2 > 0 ? (sse1 - sse2) / (sse2 / dof) : (sse1 > 0 ? INFINITY : 0);
+  fit.f_statistic = (sse1 - sse2) / (sse2 / dof);
   if (!(fit.f_statistic > fit.f_critical)) return;
   // Interval of p: b_p ± t_{0.975, n−3} · sqrt(SSE₂/(n−3) · [(XᵀX)⁻¹]_pp).
   const Eigen::Matrix3d inv = (X.transpose() * X).inverse();
