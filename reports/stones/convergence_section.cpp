@@ -257,12 +257,12 @@ SectionOutput convergence_section(const Record& c) {
     std::vector<std::string> items;
     auto add = [&](const std::string& law, const Record& r) {
       if (!r.has("distribution") || r.text("distribution") != "uniform") return;
-      const Record& series = r.at("series");
+      const Record& law_series = r.at("series");
       std::string cells;
       for (const auto& [q, words] : event_quantities()) {
         const std::string key = q + ".rk4";
-        if (!series.has_child(key)) continue;
-        const Record& fit = series.at(key).at("fit");
+        if (!law_series.has_child(key)) continue;
+        const Record& fit = law_series.at(key).at("fit");
         cells += (cells.empty() ? "" : "; ") + words.substr(0, words.find(':')) + " " + observed(fit) + " (" +
                  fit.at("verdict").text("verdict") + ")";
       }
@@ -272,9 +272,14 @@ SectionOutput convergence_section(const Record& c) {
     if (c.has("other_laws_list"))
       for (const auto& law : c.strings("other_laws_list")) add(law, c.at("other_laws").at(law));
     if (!items.empty()) {
-      w.text("Under uniform pressure the force's non-smooth points are the vertex crossings and the face switches, "
-             "all of which the fixed schemes' steps end at, so there RK4's events can show order 4 through the contacts "
-             "too, once its steps are short against the events' spacing (see *How to read it* below). RK4's events by law:");
+      const bool all = c.has("fixed_kinks") && c.text("fixed_kinks") == "all";
+      w.text("Under uniform pressure the force's non-smooth points are the vertex crossings and each face's and the air "
+             "disk's flow switches" +
+             std::string(all ? ", all of which the fixed schemes' steps end at here, so there RK4's events can show order "
+                               "4 through the contacts too, once its steps are short against the events' spacing (see "
+                               "*How to read it* below)"
+                             : "; the fixed schemes' steps end at all of them only with `kinks` = `all`, not run here") +
+             ". RK4's events by law:");
       for (const auto& it : items) w.bullet(it);
       w.end_list();
     }
