@@ -26,4 +26,9 @@ const std::vector<CommandAdder>& registered_report_kinds();
 void set_exit_code(int code);
 int exit_code();
 
+// Bad input reported now, on stderr, as main() reports an InputError ("stoneskip: " and the
+// message on one line), for a command that must print before it returns (a rank of an MPI job
+// that mpirun may stop as soon as another rank exits).
+void print_input_error(const std::string& message);
+
 }  // namespace stoneskip::cli

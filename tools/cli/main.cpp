@@ -22,6 +22,22 @@
 #include "tools/io/shipped_files.hpp"
 #include "tools/io/signal_cleanup.hpp"
 
+namespace {
+
+// A message on one line whatever names it quotes: a newline or carriage return in a file name is
+// written as \n or \r (the bad-input rule is one line on stderr).
+std::string one_line(std::string what) {
+  std::string out;
+  for (char c : what) {
+    if (c == '\n') out += "\\n";
+    else if (c == '\r') out += "\\r";
+    else out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
 namespace stoneskip::cli {
 
 namespace {
@@ -48,24 +64,12 @@ bool register_report_kind(CommandAdder adder) {
 const std::vector<CommandAdder>& registered_report_kinds() { return report_registry(); }
 void set_exit_code(int code) { g_exit_code = code; }
 int exit_code() { return g_exit_code; }
-
-}  // namespace stoneskip::cli
-
-namespace {
-
-// A message on one line whatever names it quotes: a newline or carriage return in a file name is
-// written as \n or \r (the bad-input rule is one line on stderr).
-std::string one_line(std::string what) {
-  std::string out;
-  for (char c : what) {
-    if (c == '\n') out += "\\n";
-    else if (c == '\r') out += "\\r";
-    else out += c;
-  }
-  return out;
+void print_input_error(const std::string& message) {
+  std::fprintf(stderr, "stoneskip: %s\n", one_line(message).c_str());
+  std::fflush(stderr);
 }
 
-}  // namespace
+}  // namespace stoneskip::cli
 
 int main(int argc, char** argv) {
   // First, before any thread exists: SIGINT, SIGTERM and SIGHUP remove the temporaries.
@@ -100,7 +104,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "stoneskip: %s (see --help)\n", one_line(e.what()).c_str());
     return 2;
   } catch (const stoneskip::InputError& e) {
-    std::fprintf(stderr, "stoneskip: %s\n", one_line(e.what()).c_str());
+    stoneskip::cli::print_input_error(e.what());
     return 2;
   } catch (const std::filesystem::filesystem_error& e) {
     // A path the user named that cannot be read or written (the commands check the ones they

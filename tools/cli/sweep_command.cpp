@@ -53,14 +53,20 @@ std::filesystem::path out_file(const SweepArgs& a) {
 }
 
 // Collective: true when every rank got this far without an error. Otherwise the lowest failing
-// rank's error is printed once (by rank 0 as an InputError: exit 2) and every rank exits with 2.
+// rank's error is printed once and every rank exits with 2 (bad input). Alone, the error is thrown
+// as an InputError. Under mpirun, every message is written before a barrier that no rank passes
+// until all have written: mpirun stops the job's other ranks as soon as one exits non-zero, so a
+// rank 0 that printed on its way out (after the others had left) could be stopped first.
 bool all_ranks_ok(const MpiSession& mpi, const std::string& error) {
   const int failed = mpi.first_failed_rank(error.empty());
   if (failed < 0) return true;
+  if (!mpi.active()) throw InputError(error);
   if (mpi.rank() == 0)
-    throw InputError(error.empty() ? "rank " + std::to_string(failed) + " could not set up the sweep (its message is above)"
-                                   : error);
-  if (failed == mpi.rank()) std::fprintf(stderr, "stoneskip: rank %d: %s\n", mpi.rank(), error.c_str());
+    print_input_error(failed == 0 ? error
+                                  : "rank " + std::to_string(failed) + " could not set up the sweep (its message is above)");
+  else if (failed == mpi.rank())
+    print_input_error("rank " + std::to_string(mpi.rank()) + ": " + error);
+  mpi.barrier();
   set_exit_code(2);
   return false;
 }

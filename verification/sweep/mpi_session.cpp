@@ -76,6 +76,10 @@ int MpiSession::first_failed_rank(bool ok) const {
   return lowest == size_ ? -1 : lowest;
 }
 
+void MpiSession::barrier() const {
+  if (active_) check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier");
+}
+
 bool MpiSession::poll(int source, int tag, Message& m) const {
   int flag = 0;
   MPI_Status st;
@@ -139,6 +143,7 @@ struct MpiSession::Pending {};
 MpiSession::MpiSession() = default;
 MpiSession::~MpiSession() = default;
 int MpiSession::first_failed_rank(bool ok) const { return ok ? -1 : 0; }
+void MpiSession::barrier() const {}
 bool MpiSession::poll(int, int, Message&) const { return false; }
 MpiSession::Message MpiSession::wait(int, int, double) const {
   throw std::logic_error("MpiSession::wait without MPI");

@@ -29,6 +29,8 @@ class MpiSession {
 
   // Collective: the lowest rank whose `ok` is false, or −1 when every rank is ok.
   int first_failed_rank(bool ok) const;
+  // Collective: returns when every rank has called it.
+  void barrier() const;
 
   // Point-to-point, bytes. poll() does not block; wait() blocks politely (probe and sleep, so a
   // waiting rank leaves its core to the compute threads).
