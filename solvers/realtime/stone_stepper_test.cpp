@@ -480,6 +480,24 @@ BOOST_AUTO_TEST_CASE(the_contact_log_refuses_a_start_while_open_and_an_end_while
   BOOST_TEST(log.contacts()[0].bounced);
 }
 
+BOOST_AUTO_TEST_CASE(the_shortest_flight_is_the_least_gap_between_consecutive_contacts) {
+  // Oracle: the definition, on hand-built contact lists. Gaps 0.0005 s and 0.05 s: the shortest
+  // is 0.0005 s to round-off of the subtraction (1e-15 s); one contact or none has no flight (+∞).
+  std::vector<ContactRecord> c(3);
+  c[0].start_s = 0.1;
+  c[0].end_s = 0.2;
+  c[1].start_s = 0.2005;
+  c[1].end_s = 0.3;
+  c[2].start_s = 0.35;
+  c[2].end_s = 0.4;
+  BOOST_TEST(std::abs(shortest_flight_s(c) - 0.0005) < 1e-15);
+  c[1].start_s = 0.25;  // now 0.05 and 0.05
+  BOOST_TEST(std::abs(shortest_flight_s(c) - 0.05) < 1e-15);
+  c.resize(1);
+  BOOST_TEST(std::isinf(shortest_flight_s(c)));
+  BOOST_TEST(std::isinf(shortest_flight_s({})));
+}
+
 BOOST_AUTO_TEST_CASE(cpu_time_is_the_thread_s_own_and_wall_time_includes_waiting) {
   // Oracle: a thread that sleeps uses no CPU. A before_step callback sleeps 50 ms once inside a
   // 10-step flight (microseconds of work): the wall time includes the 50 ms, the CPU time must

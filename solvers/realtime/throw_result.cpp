@@ -1,5 +1,6 @@
 #include "solvers/realtime/throw_result.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "model/stone/throw.hpp"
@@ -66,6 +67,13 @@ int ContactLog::bounces() const {
   int n = 0;
   for (const auto& c : contacts_) n += c.bounced ? 1 : 0;
   return n;
+}
+
+double shortest_flight_s(const std::vector<ContactRecord>& contacts) {
+  double shortest = INFINITY;
+  for (std::size_t k = 1; k < contacts.size(); ++k)
+    shortest = std::min(shortest, contacts[k].start_s - contacts[k - 1].end_s);
+  return shortest;
 }
 
 void finish_result(ThrowResult& r, const ContactLog& log, const RigidState& final_state, double end_time_s) {

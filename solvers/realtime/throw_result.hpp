@@ -92,6 +92,13 @@ class ContactLog {
 };
 const char* to_string(ContactLog::Status s);
 
+// The shortest free flight between two contacts of a throw (s): min over consecutive contacts of
+// the next start minus this end; +∞ with fewer than two contacts. A flight far shorter than a
+// contact (a rim vertex lifting clear for a fraction of a millisecond) is still a bounce
+// (model/README.md §1.8), and whether it happens is decided by micrometres of the rim's height:
+// bench says how many of a sweep's bounce-count disagreements lie on such throws.
+double shortest_flight_s(const std::vector<ContactRecord>& contacts);
+
 // Fills distance, lateral deviation, bounces, energy gain from the contacts and final state.
 void finish_result(ThrowResult& r, const ContactLog& log, const RigidState& final_state, double end_time_s);
 

@@ -106,6 +106,48 @@ BOOST_AUTO_TEST_CASE(bench_sweep_match_fraction_is_its_own_counts_and_the_counts
   }
 }
 
+BOOST_AUTO_TEST_CASE(bench_short_flight_split_is_recounted_from_stoneskip_run_s_contact_lists) {
+  // Oracle: an independent path to each quick throw's reference contacts, `stoneskip run --solver
+  // reference` at the finer of bench's CVODE tolerances with the throw given by --set; its shortest
+  // flight (the least gap between consecutive contacts' end and start) against the bench's 1 ms
+  // line recounts the split of the agreement. Exact: counts of whole throws, one division.
+  constexpr double kRoundoff = 1e-15;
+  const nlohmann::json& j = quick_bench_json();
+  const auto rt = j["sweep_bounces"].get<std::vector<int>>();
+  const auto cv = j["sweep_cvode_bounces"].get<std::vector<std::vector<int>>>();
+  const double line = j["sweep_cvode_short_flight_s"].get<double>();
+  BOOST_TEST(line == 1e-3);
+  const double spins[] = {0, 20, 40}, attacks[] = {10, 20};  // bench --quick's grid, spins outer
+  long with = 0, matched_with = 0, without = 0, matched_without = 0;
+  for (std::size_t i = 0; i < rt.size(); ++i) {
+    if (cv[0][i] < 0 || cv[0][i] != cv[1][i]) continue;
+    char cmd[256];
+    std::snprintf(cmd, sizeof cmd,
+                  "run cases/spin_sweep_base.toml --set throw.spin_rev_s=%g --set throw.attack_angle_deg=%g --json "
+                  "--solver reference --set reference.rtol=1e-10 --set reference.atol=1e-10",
+                  spins[i / 2], attacks[i % 2]);
+    const auto r = stoneskip::test::run_stoneskip(cmd, false);
+    BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
+    const nlohmann::json c = nlohmann::json::parse(r.out)["contacts"];
+    double shortest = INFINITY;
+    for (std::size_t k = 1; k < c.size(); ++k)
+      shortest = std::min(shortest, c[k]["start_s"].get<double>() - c[k - 1]["end_s"].get<double>());
+    const bool matched = rt[i] == cv[1][i];
+    if (shortest < line) {
+      ++with;
+      if (matched) ++matched_with;
+    } else {
+      ++without;
+      if (matched) ++matched_without;
+    }
+  }
+  BOOST_TEST(j["sweep_cvode_throws_with_short_flight"].get<long>() == with);
+  BOOST_TEST(j["sweep_cvode_matched_with_short_flight"].get<long>() == matched_with);
+  BOOST_REQUIRE(without > 0);
+  BOOST_TEST(std::abs(j["sweep_cvode_match_fraction_without_short_flight"].get<double>() - double(matched_without) / without) <=
+             kRoundoff);
+}
+
 BOOST_AUTO_TEST_CASE(bench_budget_ladder_counts_are_stoneskip_run_s_and_its_matches_are_recounted) {
   // Oracles: (1) `stoneskip run` with the same budget in the case ([solver] rhs_per_frame, parsed
   // with --set): an independent path to the same throw's count; (2) the matches recounted from the
