@@ -95,7 +95,7 @@ const char* to_string(ContactLog::Status s);
 // The shortest free flight between two contacts of a throw (s): min over consecutive contacts of
 // the next start minus this end; +∞ with fewer than two contacts. A flight far shorter than a
 // contact (a rim vertex lifting clear for a fraction of a millisecond) is still a bounce
-// (model/README.md §1.8), and whether it happens is decided by micrometres of the rim's height:
+// (model/README.md §1.8), and whether it happens turns on how far the vertex clears the water:
 // bench says how many of a sweep's bounce-count disagreements lie on such throws.
 double shortest_flight_s(const std::vector<ContactRecord>& contacts);
 
