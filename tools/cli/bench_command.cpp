@@ -55,7 +55,7 @@ struct BenchArgs {
   bool sweep_only = false;
   std::string scene = "cases/scenes/seed_8ms.toml";
   std::string sweep_case = "cases/spin_sweep_base.toml";
-  double sweep_rtol = 0;  // 0: kSweepTolerance
+  double sweep_rtol = kDefaultAdaptiveTolerance;  // the cases' default (kSweepTolerance below)
   std::string sweep_kinks;  // empty: the scheme's default
   int repeats = 3;
   ResourceLimits limits;
@@ -174,8 +174,9 @@ void bench(const BenchArgs& a) {
   o.stencil.temporal_two_threads = !a.cpu_clock;  // two threads need the wall clock
   o.sweep.base = problem_from_case(sweep_case);
   // The adaptive stepper at the named tolerance, whatever the case's own [solver] says.
-  const double sweep_tolerance = a.sweep_rtol > 0 ? a.sweep_rtol : kSweepTolerance;
-  if (!(sweep_tolerance >= 1e-12 && sweep_tolerance <= 1e-2)) throw_input_error("--sweep-rtol", 0, "", "must be in [1e-12, 1e-2]");
+  const double sweep_tolerance = a.sweep_rtol;  // checked as given: 0 or a negative value is refused, not read as the default
+  if (!(sweep_tolerance >= 1e-12 && sweep_tolerance <= 1e-2))
+    throw_input_error("--sweep-rtol", 0, "", "must be in [1e-12, 1e-2] (got " + g(sweep_tolerance, 17) + ")");
   o.sweep.base.realtime.scheme = Scheme::bs32;
   o.sweep.base.realtime.rtol = o.sweep.base.realtime.atol_m = sweep_tolerance;
   KinkSteps kinks = default_kink_steps(Scheme::bs32);

@@ -235,4 +235,13 @@ BOOST_AUTO_TEST_CASE(bench_refuses_a_bad_repeat_count) {
   BOOST_TEST(r.out.find("--repeats") != std::string::npos, r.out);
 }
 
+BOOST_AUTO_TEST_CASE(bench_refuses_a_sweep_tolerance_of_zero_or_below_rather_than_reading_it_as_the_default) {
+  // Oracle: the input rules (no silent default for a bad value) — one line naming the option, exit 2.
+  for (const char* v : {"0", "-1e-8", "1"}) {
+    const auto r = stoneskip::test::run_stoneskip(std::string("bench --quick --sweep-only --sweep-rtol ") + v);
+    BOOST_TEST(r.status == 2, v);
+    BOOST_TEST(r.out.find("--sweep-rtol") != std::string::npos, r.out);
+  }
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -41,7 +41,7 @@ struct SweepArgs {
   std::string file;
   std::optional<std::string> out;
   bool resume = false;
-  int threads = -1;  // auto
+  std::optional<int> threads;  // none given: every core alone, 1 beside MPI workers (SweepRunOptions)
   std::size_t max_chunk = 32;
   bool quiet = false;
   ResourceLimits limits;
@@ -155,13 +155,13 @@ void run(const SweepArgs& a) {
                                              " processes cannot share a sweep: install libopenmpi-dev and rebuild");
     sweep = load_sweep_file(a.file);
     cases = std::make_unique<SweepCases>(*sweep);
-    if (a.threads < -1) throw_input_error("--threads", 0, "", "must be >= 0");
+    if (a.threads && *a.threads < 0) throw_input_error("--threads", 0, "", "must be >= 0 (got " + std::to_string(*a.threads) + ")");
     if (a.max_chunk < 1) throw_input_error("--max-chunk", 0, "", "must be >= 1");
     if (a.out && a.out->empty()) throw_input_error("--out", 0, "", "needs a file name (got an empty one)");
     refuse_output_over_inputs(out_file(a), OutputKind::file, {sweep->file, sweep->base_file, cases->base().spec.mesh_file});
     // Limits decided before any throw (cases/README.md, Limits): the table, the heaviest throw, all.
     const double width = static_cast<double>(sweep_record(sweep->design, sweep->solvers).width());
-    const double threads = a.threads > 0 ? a.threads : std::max(1u, std::thread::hardware_concurrency());
+    const double threads = a.threads.value_or(0) > 0 ? *a.threads : std::max(1u, std::thread::hardware_concurrency());
     enforce_limits(estimate_sweep(cases->heaviest_throw(), static_cast<double>(sweep->design.size()),
                                   (width + 1) * sizeof(double), threads),
                    a.limits, sweep->file);
@@ -185,7 +185,7 @@ void run(const SweepArgs& a) {
   SweepRunOptions options;
   options.out = out_file(a);
   options.resume = a.resume;
-  options.master_threads = a.threads;
+  options.master_threads = a.threads.value_or(-1);
   options.max_chunk = a.max_chunk;
   if (!a.quiet) options.progress = terminal_progress();
 

@@ -232,6 +232,9 @@ BOOST_AUTO_TEST_CASE(bad_sweep_files_fail_before_any_throw_with_one_line_and_no_
     expect_bad_input(command("sweep " + (work() / "bad.toml").string() + " --out " + out.string()), {b.fragment}, out);
   }
   write(work() / "bad.toml", g);
+  // A bad option, not read as its default (−1 once meant "every core").
+  expect_bad_input(command("sweep " + (work() / "bad.toml").string() + " --out " + out.string() + " --threads -1"),
+                   {"--threads: must be >= 0 (got -1)"}, out);
   const fs::path nowhere = work() / "no_such_folder" / "x.h5";
   expect_bad_input(command("sweep " + (work() / "bad.toml").string() + " --out " + nowhere.string()),
                    {nowhere.string(), "does not exist"}, nowhere);
