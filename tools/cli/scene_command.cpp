@@ -22,6 +22,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <unistd.h>
@@ -54,7 +55,7 @@ struct SceneArgs {
   std::string movie;
   bool movie_given = false;  // `--movie ""` is refused, not read as "no movie"
   std::string movie_size = "1280x540";
-  double movie_rate_hz = 0;
+  std::optional<double> movie_rate_hz;  // none given: the format's default (MovieOptions::rate_hz = 0)
   double movie_slow = MovieOptions{}.slow_motion;
   std::string out;
   bool out_given = false;
@@ -266,7 +267,9 @@ void run(const SceneArgs& a) {
     if (!(size >> w >> x >> h) || x != 'x' || !size.eof()) throw_input_error("--movie-size", 0, "", "must be WIDTHxHEIGHT, e.g. 1280x540");
     mo.width_px = w;
     mo.height_px = h;
-    mo.rate_hz = a.movie_rate_hz;
+    if (a.movie_rate_hz && !(*a.movie_rate_hz > 0))  // 0 is MovieOptions' "the format's default": not a value to type
+      throw_input_error("--movie-rate", 0, "", "must be > 0 frames/s (got " + general(*a.movie_rate_hz, 17) + ")");
+    mo.rate_hz = a.movie_rate_hz.value_or(0);
     mo.slow_motion = a.movie_slow;
     const std::string problem = mo.problem(o.frame_rate_hz);
     if (!problem.empty()) throw_input_error("--movie", 0, "", problem);

@@ -136,6 +136,10 @@ BOOST_AUTO_TEST_CASE(bad_scene_input_fails_before_any_work_and_leaves_no_movie) 
   r = run_stoneskip("scene " + small_seed(0.2) + " --movie " + mp4.string() + " --movie-rate 40");
   BOOST_TEST(r.status == 2);
   BOOST_TEST(r.out.find("divided by a whole number") != std::string::npos, r.out);
+  // 0 is not read as "the format's default" (it once was, silently).
+  r = run_stoneskip("scene " + small_seed(0.2) + " --movie " + mp4.string() + " --movie-rate 0");
+  BOOST_TEST(r.status == 2);
+  BOOST_TEST(r.out.find("--movie-rate: must be > 0 frames/s (got 0)") != std::string::npos, r.out);
   BOOST_TEST(fs::is_empty(tmp.path()));
 }
 
