@@ -33,7 +33,7 @@ struct FaceScratch {
 void add_distributed_loads(const Stone& stone, const Environment& env, const RigidState& s, const Mat3& R,
                            const Vec3& omega, const std::vector<Vec3>& world, const std::vector<double>& depth,
                            std::vector<FaceScratch>& scratch, double law_total_N, WaterLoads& out,
-                           std::vector<FacePush>* pushes) {
+                           std::vector<FacePush>* pushes, const LoadMode* mode) {
   struct FaceLoad {
     double weight_m2;
     Vec3 centre_m;
@@ -76,7 +76,9 @@ void add_distributed_loads(const Stone& stone, const Environment& env, const Rig
     // (u > 1e-9 |v_c| compared squared: no square root).
     const Vec3 vc = s.velocity_m_s + omega.cross(c.centroid_m - s.position_m);
     const double u = vc.dot(f.normal);
-    if (c.area_m2 > 0 && u > 0 && u * u > 1e-18 * vc.squaredNorm())
+    const char held = mode && i < mode->loaded_faces.size() ? mode->loaded_faces[i] : LoadMode::kDecide;
+    const bool loaded = held != LoadMode::kDecide ? held != 0 : u > 0 && u * u > 1e-18 * vc.squaredNorm();
+    if (c.area_m2 > 0 && loaded)
       span_builder.add(poly);
     else
       poly.count = 0;
@@ -131,7 +133,7 @@ void add_distributed_loads(const Stone& stone, const Environment& env, const Rig
 
 WaterLoads water_loads_from_depths(const Stone& stone, const Environment& env, const RigidState& s, const Mat3& R,
                                    const Vec3& omega, const std::vector<Vec3>& world, const std::vector<double>& depth,
-                                   std::vector<FacePush>* pushes) {
+                                   std::vector<FacePush>* pushes, const LoadMode* mode) {
   WaterLoads out;
   if (pushes) pushes->clear();
   const int nv = static_cast<int>(world.size());
@@ -205,12 +207,12 @@ WaterLoads water_loads_from_depths(const Stone& stone, const Environment& env, c
     if (pushes) pushes->push_back({f.wetted, F});
   }
   if (distributed && law_total_N != 0)
-    add_distributed_loads(stone, env, s, R, omega, world, depth, scratch, law_total_N, out, pushes);
+    add_distributed_loads(stone, env, s, R, omega, world, depth, scratch, law_total_N, out, pushes, mode);
   return out;
 }
 
 WaterLoads water_loads(const Stone& stone, const Environment& env, const RigidState& s, const WaterSurface* surface,
-                       std::vector<FacePush>* pushes) {
+                       std::vector<FacePush>* pushes, const LoadMode* mode) {
   // Still water: a stone whose bounding sphere is above z = 0 cannot touch it.
   if (!surface && s.position_m.z() - stone.bounding_radius_m > 0) {
     if (pushes) pushes->clear();
@@ -235,7 +237,7 @@ WaterLoads water_loads(const Stone& stone, const Environment& env, const RigidSt
     const double eta = surface ? surface->height_m(world[k].x(), world[k].y()) : 0.0;
     depth[k] = eta - world[k].z();
   }
-  return water_loads_from_depths(stone, env, s, R, omega, world, depth, pushes);
+  return water_loads_from_depths(stone, env, s, R, omega, world, depth, pushes, mode);
 }
 
 AirLoads air_loads(const Stone& stone, const Environment& env, const RigidState& s) {

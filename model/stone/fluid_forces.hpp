@@ -32,6 +32,18 @@ struct FacePush {
   Vec3 force_N = Vec3::Zero();
 };
 
+// The distributed pressure's one discrete choice that makes its loads jump: which faces form the
+// loaded region (advancing into the water at their wetted centroid, fluid_forces.cpp), whose extent
+// sets every face's centre of pressure. A stepper that locates where that choice changes
+// (model/stone/load_switches.hpp) holds it over a step, so that each of the step's stages sees one
+// smooth branch of the loads; without a mode the loads decide it from the state.
+struct LoadMode {
+  // Per face: 1 part of the loaded region, 0 not, kDecide (a face that had no wetted polygon when
+  // the mode was taken) decided from the state as without a mode.
+  static constexpr char kDecide = 2;
+  std::vector<char> loaded_faces;
+};
+
 struct AirLoads {
   Vec3 force_N = Vec3::Zero();  // torque is zero in both conventions (model/README.md §1.6, Eq. 7)
 };
@@ -46,14 +58,17 @@ struct AirLoads {
 //           law with this convention), τ_i = F_i × r_i (Eq. 3 as printed).
 // surface == nullptr: still water η = 0. Below the stone's bounding sphere nothing is evaluated.
 // pushes (optional): cleared, then one FacePush per face that pushes (Σ force_N = force_N).
+// mode (optional): the loaded region held (LoadMode); only the savitsky distributions read it.
 WaterLoads water_loads(const Stone& stone, const Environment& env, const RigidState& s,
-                       const WaterSurface* surface = nullptr, std::vector<FacePush>* pushes = nullptr);
+                       const WaterSurface* surface = nullptr, std::vector<FacePush>* pushes = nullptr,
+                       const LoadMode* mode = nullptr);
 
 // The same from the vertices' world positions and signed depths (d_j = η − z_j), the rotation R
 // of s and the world angular velocity ω: for callers that already have them.
 WaterLoads water_loads_from_depths(const Stone& stone, const Environment& env, const RigidState& s, const Mat3& R,
                                    const Vec3& omega, const std::vector<Vec3>& world_m,
-                                   const std::vector<double>& depth_m, std::vector<FacePush>* pushes = nullptr);
+                                   const std::vector<double>& depth_m, std::vector<FacePush>* pushes = nullptr,
+                                   const LoadMode* mode = nullptr);
 
 // Disk air model (model/README.md §1.5; Eq. 6): u = v·n_d;
 // physical: F = −C_a ρ_a u|u| S_d n_d;  paper: F = −C_a ρ_a u² S_d n_d (always along −n_d).

@@ -3,10 +3,11 @@
 namespace stoneskip {
 
 StateDerivative rigid_body_rhs(const Stone& stone, const Environment& env, const RigidState& s,
-                               const WaterSurface* surface, Loads* loads, std::vector<FacePush>* pushes) {
+                               const WaterSurface* surface, Loads* loads, std::vector<FacePush>* pushes,
+                               const LoadMode* mode) {
   const double m = stone.mass.mass_kg;
   const Vec3 g(0, 0, -m * env.gravity_m_s2);
-  const WaterLoads w = water_loads(stone, env, s, surface, pushes);
+  const WaterLoads w = water_loads(stone, env, s, surface, pushes, mode);
   const AirLoads a = air_loads(stone, env, s);
   StateDerivative d;
   d.dposition = s.velocity_m_s;
@@ -31,8 +32,8 @@ StateDerivative rigid_body_rhs(const Stone& stone, const Environment& env, const
 }
 
 void rigid_body_rhs(const Stone& stone, const Environment& env, const double* y, double* dydt,
-                    const WaterSurface* surface, std::vector<FacePush>* pushes) {
-  to_vector(rigid_body_rhs(stone, env, from_vector(y), surface, nullptr, pushes), dydt);
+                    const WaterSurface* surface, std::vector<FacePush>* pushes, const LoadMode* mode) {
+  to_vector(rigid_body_rhs(stone, env, from_vector(y), surface, nullptr, pushes, mode), dydt);
 }
 
 void to_vector(const StateDerivative& d, double* dydt) {

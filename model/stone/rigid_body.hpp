@@ -22,15 +22,17 @@ struct Loads {
 };
 
 // Right-hand side. `loads` (optional) receives the forces it used; `pushes` (optional) each wetted
-// face's push (water_loads), for a scene that forces its water with them.
+// face's push (water_loads), for a scene that forces its water with them; `mode` (optional) the
+// distributed pressure's loaded region held over a step (LoadMode in fluid_forces.hpp).
 StateDerivative rigid_body_rhs(const Stone& stone, const Environment& env, const RigidState& s,
                                const WaterSurface* surface = nullptr, Loads* loads = nullptr,
-                               std::vector<FacePush>* pushes = nullptr);
+                               std::vector<FacePush>* pushes = nullptr, const LoadMode* mode = nullptr);
 // A derivative as a flat array (kStateSize doubles, the state's layout).
 void to_vector(const StateDerivative& d, double* dydt);
 // The same on flat arrays (kStateSize doubles each), for generic integrators and CVODE.
 void rigid_body_rhs(const Stone& stone, const Environment& env, const double* y, double* dydt,
-                    const WaterSurface* surface = nullptr, std::vector<FacePush>* pushes = nullptr);
+                    const WaterSurface* surface = nullptr, std::vector<FacePush>* pushes = nullptr,
+                    const LoadMode* mode = nullptr);
 
 // Rate at which water and air do work on the stone: P = F·v + τ·ω with the total fluid force and
 // torque as applied (model/README.md §1.6). Never positive in the physical convention.

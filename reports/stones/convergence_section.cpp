@@ -242,21 +242,21 @@ SectionOutput convergence_section(const Record& c) {
          "steps end at the kinks named here (`kinks` = " +
              (c.has("fixed_kinks") ? "`" + c.text("fixed_kinks") + "`" : std::string("not recorded")) +
              "; `all`: every vertex crossing and every wet face's and the air disk's flow switch, located on the "
-             "step's interpolant): a step taken across a kink makes an O(h²)–O(h³) local error there, so without "
-             "them no scheme shows more than order 2–3 through a contact. The pressure distributions' own "
-             "non-smooth points are not located (kinks where the wetted span's ends change vertex, where a face's "
-             "flow switches at its centre of pressure and where the planing share reaches 1; jumps of the torque "
-             "where a face at an end of the span stops advancing; under `savitsky_wagner` also the raised "
-             "waterline's crossings and the kinks where the deepest vertex, which sets the rise, changes), so "
-             "under `savitsky` and "
-             "`savitsky_wagner` the orders through a contact can stay below the scheme's. The same fits and verdicts as above, one "
-             "row per event:");
+             "step's interpolant, and under `savitsky` and `savitsky_wagner` the distribution's own switches: "
+             "where the wetted span's ends change vertex, a face's flow switches at its centre of pressure, the "
+             "planing share reaches 1, a face joins or leaves the loaded region, and under `savitsky_wagner` where "
+             "a vertex crosses the raised waterline or the deepest vertex changes, model/stone/load_switches.hpp): "
+             "a step taken across a kink makes an O(h²)–O(h³) local error there, so without them no scheme shows "
+             "more than order 2–3 through a contact. Where the loaded region changes the loads jump, and a jump "
+             "inside a step costs O(h) whatever the scheme, even where it is located, for a stage can lie past it "
+             "while the trajectory does not; so the fixed schemes hold the loaded region over each step, and the "
+             "reference over each segment between its restarts at every event (solvers/README.md). The same fits "
+             "and verdicts as above, one row per event:");
   w.table(event_table(c));
   {
-    // The same events where the force's every non-smooth point is located: uniform pressure.
+    // The same events under every law and distribution.
     std::vector<std::string> items;
     auto add = [&](const std::string& law, const Record& r) {
-      if (!r.has("distribution") || r.text("distribution") != "uniform") return;
       const Record& law_series = r.at("series");
       std::string cells;
       for (const auto& [q, words] : event_quantities()) {
@@ -273,13 +273,12 @@ SectionOutput convergence_section(const Record& c) {
       for (const auto& law : c.strings("other_laws_list")) add(law, c.at("other_laws").at(law));
     if (!items.empty()) {
       const bool all = c.has("fixed_kinks") && c.text("fixed_kinks") == "all";
-      w.text("Under uniform pressure the force's non-smooth points are the vertex crossings and each face's and the air "
-             "disk's flow switches" +
-             std::string(all ? ", all of which the fixed schemes' steps end at here, so there RK4's events can show order "
-                               "4 through the contacts too, once its steps are short against the events' spacing (see "
-                               "*How to read it* below)"
-                             : "; the fixed schemes' steps end at all of them only with `kinks` = `all`, not run here") +
-             ". RK4's events by law:");
+      w.text(std::string(all ? "Every law's and distribution's non-smooth points are located here, so RK4's events can "
+                               "show order 4 through the contacts under each, once its steps are short against the "
+                               "events' spacing (see *How to read it* below)"
+                             : "The fixed schemes' steps end at every law's non-smooth points only with `kinks` = "
+                               "`all`, not run here") +
+             ". RK4's events by law and distribution:");
       for (const auto& it : items) w.bullet(it);
       w.end_list();
     }
@@ -318,12 +317,13 @@ SectionOutput convergence_section(const Record& c) {
          "In free flight the forces are smooth and every scheme should show its formal order. Through a contact the "
          "water force is only piecewise smooth in time: the wetted area of a triangle grows like depth² when a vertex goes "
          "under, and a face's force switches off when its normal velocity changes sign, so the force is continuous with "
-         "a continuous first derivative but a jump in its second derivative at every such event. A fixed-step method "
-         "stepping across such an event makes a local error of O(h³) there, so no scheme can show more than order 3 "
-         "through a contact, and only once its steps are short against the spacing of the events; until then the fit "
-         "is pre-asymptotic and its verdict says so. The whole stepper adds its own event handling (contact start and "
-         "end located by interpolation inside the step) and coarse steps can change the contact list itself (listed "
-         "above): such runs have no bounce-position error.");
+         "a jump in its second derivative (Newtonian law) or its first (planing law, ∝ u) at every such event, and under "
+         "the savitsky distributions the force itself jumps where a face joins or leaves the loaded region. A fixed-step "
+         "method stepping across such an event makes a local error of O(h³), O(h²) or O(h) there, so the scheme alone "
+         "shows at most order 3, 2 or 1 through a contact, and then only once its steps are short against the spacing "
+         "of the events; until then the fit is pre-asymptotic and its verdict says so. The whole stepper adds its own "
+         "event handling (contact start and end located by interpolation inside the step, and the kinks above) and "
+         "coarse steps can change the contact list itself (listed above): such runs have no bounce-position error.");
 
   // Every other water law: the same series, compactly.
   if (c.has("other_laws_list") && !c.strings("other_laws_list").empty()) {

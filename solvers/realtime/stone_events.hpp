@@ -15,12 +15,14 @@
 //       continuous; newtonian and nagahiro_hayakawa (∝ max(u_i, 0)²) are C¹ with a jump in the
 //       second derivative, planing (∝ max(u_i, 0) |v|) is C⁰ with a jump in the first. Root function
 //       g = u_i at the clipped centroid, live only while the face has a vertex under water. The
-//       pressure distributions (model/stone/pressure_distribution.hpp) add points this does not
-//       locate: kinks where the wetted span's ends change vertex, a face switches at its centre
-//       of pressure or the planing share reaches 1; jumps of the torque where a face at an end of
-//       the span stops advancing (the span is that of the advancing faces); under savitsky_wagner
-//       the raised waterline's crossings (depth = −rise) and the kinks where the deepest vertex,
-//       which sets the rise, changes. CVODE's error control steps through them.
+//       pressure distributions (model/stone/pressure_distribution.hpp) add points of their own,
+//       whose switching functions are model/stone/load_switches.hpp's: kinks where the wetted
+//       span's ends change vertex, a face switches at its centre of pressure or the planing share
+//       reaches 1; jumps of the loads where a face joins or leaves the loaded region (the span is
+//       that of the advancing faces); under savitsky_wagner the raised waterline's crossings
+//       (depth = −rise) and the kinks where the deepest vertex, which sets the rise, changes. The
+//       real-time stepper with KinkSteps::all locates them too and holds the loaded region over
+//       each step (LoadMode, fluid_forces.hpp); CVODE steps through them under its error control.
 //       The distributions' direction v_h/|v_h| is blended away below planing speed
 //       (planing_share), so a stone sinking straight down is no longer a point where the load's
 //       derivative is unbounded. In the paper convention every wet face pushes with u_i² whatever

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <utility>
 
+#include "model/stone/load_switches.hpp"
 #include "solvers/realtime/adaptive_step.hpp"
 #include "solvers/realtime/clocks.hpp"
 #include "solvers/realtime/dense_output.hpp"
@@ -80,9 +81,9 @@ StateVector axpy(const StateVector& y, double h, const StateVector& k) {
 }
 
 StateVector rhs(const Stone& stone, const Environment& env, const StateVector& y, const WaterSurface* surface,
-                std::vector<FacePush>* pushes = nullptr) {
+                std::vector<FacePush>* pushes = nullptr, const LoadMode* mode = nullptr) {
   StateVector d;
-  rigid_body_rhs(stone, env, y.data(), d.data(), surface, pushes);
+  rigid_body_rhs(stone, env, y.data(), d.data(), surface, pushes, mode);
   return d;
 }
 
@@ -92,7 +93,7 @@ namespace {
 
 // One step of a scheme from s with its first stage k1 = f(s) given; the other stages are counted.
 RigidState step_from(const Stone& stone, const Environment& env, const RigidState& s, const StateVector& k1, double dt,
-                     Scheme scheme, const WaterSurface* surface, long* rhs_evaluations) {
+                     Scheme scheme, const WaterSurface* surface, long* rhs_evaluations, const LoadMode* mode = nullptr) {
   RigidState out;
   switch (scheme) {
     case Scheme::semi_implicit_euler: {
@@ -114,16 +115,16 @@ RigidState step_from(const Stone& stone, const Environment& env, const RigidStat
     }
     case Scheme::midpoint: {
       const StateVector y = to_vector(s);
-      const StateVector k2 = rhs(stone, env, axpy(y, 0.5 * dt, k1), surface);
+      const StateVector k2 = rhs(stone, env, axpy(y, 0.5 * dt, k1), surface, nullptr, mode);
       if (rhs_evaluations) *rhs_evaluations += 1;
       out = from_vector(axpy(y, dt, k2).data());
       break;
     }
     case Scheme::rk4: {
       const StateVector y = to_vector(s);
-      const StateVector k2 = rhs(stone, env, axpy(y, 0.5 * dt, k1), surface);
-      const StateVector k3 = rhs(stone, env, axpy(y, 0.5 * dt, k2), surface);
-      const StateVector k4 = rhs(stone, env, axpy(y, dt, k3), surface);
+      const StateVector k2 = rhs(stone, env, axpy(y, 0.5 * dt, k1), surface, nullptr, mode);
+      const StateVector k3 = rhs(stone, env, axpy(y, 0.5 * dt, k2), surface, nullptr, mode);
+      const StateVector k4 = rhs(stone, env, axpy(y, dt, k3), surface, nullptr, mode);
       if (rhs_evaluations) *rhs_evaluations += 3;
       StateVector yn;
       for (int i = 0; i < kStateSize; ++i) yn[i] = y[i] + dt / 6.0 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
@@ -221,11 +222,17 @@ class KinkWatch {
         g1_ = g0_;
         under_.assign(events_->vertex_count(), 0);
       }
+      loads_ = std::make_unique<LoadSwitches>(stone, env, surface);
+      if (!loads_->active()) loads_.reset();
     }
   }
   bool active() const { return kinks_ != KinkSteps::none; }
+  // The loaded region held over the step (load_switches.hpp), or null where nothing is held.
+  const LoadMode* held() const { return loads_ ? &loads_->load_mode() : nullptr; }
   // The step's start state: the mode (vertices under water, live faces) and the functions there.
   void start(const StateVector& y0) {
+    // The pressure distribution's switches, in the mode of the step's start (load_switches.hpp).
+    if (loads_) loads_->reset(from_vector(y0.data()), l0_);
     if (!events_) return;
     const std::vector<char> before = under_;
     events_->set_mode(from_vector(y0.data()));
@@ -265,6 +272,20 @@ class KinkWatch {
         if (f > skip_below) first = std::min(first, f);
       }
     }
+    if (loads_) {
+      loads_->evaluate(from_vector(dense.y1.data()), l1_);
+      for (std::size_t k = 0; k < l0_.size(); ++k) {
+        // A value that does not exist at an end (NaN), or sits on a tie (0), is no sign change.
+        if (!(l0_[k] * l1_[k] < 0)) continue;
+        const double f = sign_change_fraction(
+            [&](double c) {
+              loads_->evaluate(from_vector(dense.at(c).data()), lc_);
+              return lc_[k];
+            },
+            l0_[k], l1_[k], fraction_tolerance);
+        if (f > skip_below) first = std::min(first, f);
+      }
+    }
     return first <= 1 ? first : -1;
   }
 
@@ -273,7 +294,9 @@ class KinkWatch {
   const WaterSurface* surface_;
   KinkSteps kinks_;
   std::unique_ptr<StoneEvents> events_;
+  std::unique_ptr<LoadSwitches> loads_;  // all, under savitsky and savitsky_wagner
   std::vector<double> g0_, g1_;
+  std::vector<double> l0_, l1_, lc_;  // loads_' values at the start, the end, a root search's point
   std::vector<char> under_;  // the mode of the last start
   StateVector y1_{};         // where g1_ was evaluated (the last trial's end)
   bool ok0_ = false, have_g1_ = false;
@@ -451,11 +474,15 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
         }
         kinks.start(y0);
         StateVector k_end{};
+        // The distributed pressure's loaded region is held over the step (LoadMode): each stage
+        // sees one branch of the loads, and a step cut back to where the region changes ends a
+        // window past the switch still on the old branch; the next step starts on the new one.
+        const LoadMode* held = kinks.held();
         for (int attempt = 0;; ++attempt) {
-          s_new = step_from(stone, env, s, k_start, dt, o.scheme, surface, &r.stats.rhs_evaluations);
+          s_new = step_from(stone, env, s, k_start, dt, o.scheme, surface, &r.stats.rhs_evaluations, held);
           if (!finite(s_new)) break;
           const StateVector y1 = to_vector(s_new);
-          k_end = rhs(stone, env, y1, surface);
+          k_end = rhs(stone, env, y1, surface, nullptr, held);
           ++r.stats.rhs_evaluations;
           measure_waterline(stone, s_new, surface, next);
           dense = HermiteStep{y0, y1, k_start, k_end, dt};
@@ -469,6 +496,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
           break;
         }
         k_start = k_end;  // the next step's first stage (FSAL)
+        if (held) have_k = false;  // the next step's loaded region is its own start's
         have_dense = true;
       }
       if (!finite(s_new)) {

@@ -59,9 +59,14 @@ constexpr double kDefaultAdaptiveTolerance = 1e-9;
 //   crossings  the vertex crossings: a step whose ends have different sets of vertices under water
 //   all        every switching function of stone_events.hpp: the crossings and, in the physical
 //              convention, each wet face's and the air disk's flow switch (a live surface is held
-//              during the step, as the right-hand side holds it). The pressure distributions' own kinks and
-//              jumps (the wetted span's ends, the raised waterline, …) are not among them
-//              (stone_events.hpp, (b)).
+//              during the step, as the right-hand side holds it); under savitsky and
+//              savitsky_wagner also the distribution's own (model/stone/load_switches.hpp: the
+//              wetted span's ends, the raised waterline, the loaded region, …). A fixed scheme
+//              then holds the loaded region over each step (LoadMode, fluid_forces.hpp), so that
+//              none of its stages sees the loads jump where the region changes: the step cut back
+//              to the change ends on the old branch, the next starts on the new. (bs32 needs no
+//              hold: its solution uses no stage past 3/4 of the step, and its cut step ends within
+//              two event windows past the switch.)
 enum class KinkSteps { none, crossings, all };
 const char* to_string(KinkSteps k);
 bool parse_kink_steps(const std::string& s, KinkSteps& out);

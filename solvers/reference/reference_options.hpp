@@ -27,6 +27,8 @@ bool parse_reference_method(const std::string& s, ReferenceMethod& out);
 //                   cancel, so the error test sees flight at both ends of such a step). Elsewhere
 //                   the force is continuous (a slanted face's area grows from zero; every law is
 //                   zero at its switch) and CVODE steps across the kink under its error control.
+// No strategy locates the savitsky distributions' own switches (model/stone/load_switches.hpp):
+// CVODE steps across them, their jumps included, under its error control (solvers/README.md).
 //   never:          never restart; CVODE's error control alone handles every kink and jump. Not
 //                   safe where the force jumps: a step can carry the stone over a whole feature
 //                   whose ends look alike (cvode_stone_test shows a flat plate that falls through

@@ -1,0 +1,83 @@
+#pragma once
+// Where the distributed pressure's loads are not smooth in the state, as sign changes of functions
+// of the state (model/stone/pressure_distribution.hpp, fluid_forces.cpp). stone_events.hpp's
+// switching functions (a vertex crossing the surface, a wet face's flow switching at its clipped
+// centroid, the air disk's) are the only non-smooth points of the uniform pressure; the savitsky
+// and savitsky_wagner distributions add their own, each the change of one of their decisions:
+//   * under savitsky_wagner, a vertex crossing the raised waterline (d_j + rise = 0: a polygon
+//     below it changes shape), and the deepest vertex, which sets the rise, changing
+//     (d_a − d_b = 0, a the deepest);
+//   * a face joining or leaving the loaded region (its normal velocity at the centroid of its
+//     polygon below the raised waterline changes sign): the span, and with it every face's centre
+//     of pressure, can jump;
+//   * a face's pressure switching at its centre of pressure (the normal velocity there changes
+//     sign);
+//   * the span's trailing or leading end passing from one polygon corner to another
+//     (s_b − s_a = 0, s = ĥ·x along the horizontal velocity; a corner is a mesh vertex or the
+//     point where the raised waterline cuts a mesh edge);
+//   * the planing share reaching 1 (|v_h| = √(g b), pressure_distribution.hpp).
+// The functions that compare two choices (the deepest vertex, a span end) are defined relative to
+// the choice made at a reference state, the *mode*: recorded by reset, then held by evaluate, so
+// a step from that state sees the choice change as a sign change. Every function is continuous in
+// the state (a corner on an edge is extended along the edge's line beyond its ends), so a sign
+// change located on a step's interpolant is where the load changes branch; a value that does not
+// exist at a state (a face with no wetted polygon) is NaN and never counts as a sign change.
+// Used by the real-time stepper's `all` kinks (solvers/realtime/stone_stepper.hpp); the loads
+// themselves do not use this file.
+#include <vector>
+
+#include "model/stone/environment.hpp"
+#include "model/stone/fluid_forces.hpp"
+#include "model/stone/rigid_state.hpp"
+#include "model/stone/stone.hpp"
+#include "model/stone/water_surface.hpp"
+
+namespace stoneskip {
+
+// A corner of a wetted polygon: mesh vertex a (b < 0), or where the raised waterline cuts the
+// mesh edge (a, b), a < b.
+struct PolygonCorner {
+  int a = -1, b = -1;
+  bool operator==(const PolygonCorner&) const = default;
+};
+
+class LoadSwitches {
+ public:
+  // Active only in the physical convention under savitsky or savitsky_wagner (the uniform pressure
+  // and the paper convention have no switches beyond stone_events.hpp's). surface == nullptr:
+  // still water.
+  LoadSwitches(const Stone& stone, const Environment& env, const WaterSurface* surface = nullptr);
+  bool active() const { return active_; }
+
+  // Records the mode of s (the deepest vertex in contact, the span's corners and ends, the loaded
+  // faces) and writes the values at s in it. The number of values is fixed until the next reset.
+  void reset(const RigidState& s, std::vector<double>& g);
+  // The values at s in the recorded mode.
+  void evaluate(const RigidState& s, std::vector<double>& g) const;
+
+  // The loaded region of the recorded mode, for a right-hand side that holds it over a step (the
+  // loads' own choice at the state reset was given).
+  const LoadMode& load_mode() const { return mode_.loads; }
+
+  // What value k is (for tests and messages).
+  enum class Kind { raised_crossing, deepest_vertex, loaded_face, centre_of_pressure, planing_share, span_start, span_end };
+  Kind kind(int k) const;
+
+ private:
+  struct Mode {
+    int deepest = -1;
+    std::vector<PolygonCorner> corners;  // the loaded polygons' corners, each once
+    int start = -1, end = -1;            // indices into corners: the span's trailing and leading ends
+    LoadMode loads;                      // the loaded faces
+  };
+  void compute(const RigidState& s, Mode* record, const Mode& held, std::vector<double>& g) const;
+
+  const Stone& stone_;
+  const Environment& env_;
+  const WaterSurface* surface_;
+  bool active_ = false;
+  int nv_ = 0, nf_ = 0;
+  Mode mode_;
+};
+
+}  // namespace stoneskip

@@ -1,0 +1,151 @@
+// The distributed pressure's switches (load_switches.hpp) against the loads themselves
+// (fluid_forces.cpp): along a path through the water, every jump of the loads lies where a switch
+// changes sign, and holding the loaded region (LoadMode) removes the jumps of the region's changes.
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "model/stone/load_switches.hpp"
+#include "model/stone/throw.hpp"
+
+using namespace stoneskip;
+
+namespace {
+
+Stone test_stone() {
+  const Mesh m = make_prism(0.03, 0.008, 11);
+  return make_stone(m, mass_properties_from_density(m, 2500), 0.03, "test prism");
+}
+
+// A rigid motion through the water with a fixed velocity and a fixed world angular velocity (a
+// kinematic path: no integrator in the way): attack 15° nose up, skimming forward and down at 4 m/s
+// and 0.4 m/s, 30 rev/s about the disk's axis, the trailing rim 1 mm under water at t = 0.
+struct Path {
+  Stone stone = test_stone();
+  Vec3 v = Vec3(4, 0, -0.4);
+  Vec3 omega;
+  Quat q0;
+  Vec3 x0;
+  Path() {
+    q0 = Quat(Eigen::AngleAxisd(-15 * std::numbers::pi / 180, Vec3::UnitY()));
+    omega = 2 * std::numbers::pi * 30 * (q0 * Vec3::UnitZ());
+    x0 = Vec3(0, 0, 0.03 * std::sin(15 * std::numbers::pi / 180) - 0.001);
+  }
+  RigidState at(double t) const {
+    RigidState s;
+    s.position_m = x0 + t * v;
+    s.velocity_m_s = v;
+    s.orientation = Quat(Eigen::AngleAxisd(omega.norm() * t, omega.normalized())) * q0;
+    const Mat3 R = s.orientation.toRotationMatrix();
+    s.angular_momentum_kg_m2_s = R * stone.inertia_body_kg_m2 * R.transpose() * omega;
+    return s;
+  }
+};
+
+Environment savitsky_wagner() {
+  Environment env;
+  set_default_water_model(env);  // planing, savitsky_wagner
+  return env;
+}
+
+struct Sample {
+  Vec3 force, torque;
+};
+
+// |Δ| of the loads between two samples, torque at the stone's radius.
+double change(const Sample& a, const Sample& b) {
+  return std::max((b.force - a.force).norm(), (b.torque - a.torque).norm() / 0.03);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(load_switches)
+
+BOOST_AUTO_TEST_CASE(every_jump_of_the_distributed_loads_lies_where_a_switch_changes_sign) {
+  // Oracle: the loads themselves, sampled every 20 ns over 3 ms of the path. A jump is a change
+  // between two samples 20 times both neighbouring changes (a kink only bends the changes; on this
+  // path the loads change by ~4e-6 N a sample, and the region's jump is 5e-4 N). Each must lie in
+  // an interval where a vertex crosses the surface or the raised waterline (the polygons change)
+  // or a face's loaded-region switch changes sign; and the path must hold such a jump.
+  const Path p;
+  const Environment env = savitsky_wagner();
+  LoadSwitches switches(p.stone, env);
+  BOOST_TEST_REQUIRE(switches.active());
+  const double dt = 2e-8;
+  const int n = 150000;
+  std::vector<Sample> loads(n + 1);
+  for (int i = 0; i <= n; ++i) {
+    const WaterLoads w = water_loads(p.stone, env, p.at(i * dt));
+    loads[i] = {w.force_N, w.torque_N_m};
+  }
+  int jumps = 0, region_jumps = 0;
+  std::vector<double> g0, g1;
+  for (int i = 1; i + 1 < n; ++i) {
+    const double d = change(loads[i], loads[i + 1]);
+    if (!(d > 20 * std::max(change(loads[i - 1], loads[i]), change(loads[i + 1], loads[i + 2])))) continue;
+    ++jumps;
+    switches.reset(p.at(i * dt), g0);
+    switches.evaluate(p.at((i + 1) * dt), g1);
+    bool polygons_change = false, region_changes = false;
+    for (int k = 0; k < static_cast<int>(g0.size()); ++k) {
+      const auto kind = switches.kind(k);
+      if (kind == LoadSwitches::Kind::raised_crossing && (g0[k] >= 0) != (g1[k] >= 0)) polygons_change = true;
+      if (kind == LoadSwitches::Kind::loaded_face && g0[k] * g1[k] < 0) region_changes = true;
+    }
+    for (const Vec3& vb : p.stone.body_mesh.vertices) {
+      const double z0 = p.at(i * dt).position_m.z() + (p.at(i * dt).orientation * vb).z();
+      const double z1 = p.at((i + 1) * dt).position_m.z() + (p.at((i + 1) * dt).orientation * vb).z();
+      if ((z0 < 0) != (z1 < 0)) polygons_change = true;
+    }
+    BOOST_TEST((polygons_change || region_changes), "a jump of " << d << " N at t = " << i * dt << " s with no switch");
+    if (region_changes && !polygons_change) ++region_jumps;
+  }
+  BOOST_TEST_MESSAGE(jumps << " jumps, " << region_jumps << " of the loaded region alone");
+  BOOST_TEST(region_jumps >= 1);
+}
+
+BOOST_AUTO_TEST_CASE(holding_the_loaded_region_keeps_the_loads_smooth_where_it_changes) {
+  // Oracle: the free loads' own jump where a face leaves or joins the loaded region (found as in
+  // the test above). Held from the sample before, the loads change across it by no more than twice
+  // their neighbouring changes: the held branch continues smoothly. And at the state the mode is
+  // taken from, the held loads are the free ones bit for bit (the mode is the loads' own choice).
+  const Path p;
+  const Environment env = savitsky_wagner();
+  LoadSwitches switches(p.stone, env);
+  const double dt = 2e-8;
+  const int n = 150000;
+  std::vector<double> g0, g1;
+  int checked = 0;
+  for (int i = 1; i + 2 < n && checked < 5; ++i) {
+    switches.reset(p.at(i * dt), g0);
+    switches.evaluate(p.at((i + 1) * dt), g1);
+    bool region_changes = false;
+    for (int k = 0; k < static_cast<int>(g0.size()); ++k)
+      if (switches.kind(k) == LoadSwitches::Kind::loaded_face && g0[k] * g1[k] < 0) region_changes = true;
+    if (!region_changes) continue;
+    const LoadMode mode = switches.load_mode();
+    auto free_at = [&](int j) {
+      const WaterLoads w = water_loads(p.stone, env, p.at(j * dt));
+      return Sample{w.force_N, w.torque_N_m};
+    };
+    auto held_at = [&](int j) {
+      const WaterLoads w = water_loads(p.stone, env, p.at(j * dt), nullptr, nullptr, &mode);
+      return Sample{w.force_N, w.torque_N_m};
+    };
+    const Sample f0 = free_at(i), f1 = free_at(i + 1), h0 = held_at(i), h1 = held_at(i + 1);
+    BOOST_TEST(h0.force == f0.force);
+    BOOST_TEST(h0.torque == f0.torque);
+    const double neighbours = std::max(change(held_at(i - 1), h0), change(h1, held_at(i + 2)));
+    const double free_jump = change(f0, f1);
+    if (!(free_jump > 20 * neighbours)) continue;  // a switch of a face that carries no load
+    BOOST_TEST_MESSAGE("t = " << i * dt << " s: free jump " << free_jump << " N, held " << change(h0, h1)
+                              << " N, neighbouring changes " << neighbours << " N");
+    BOOST_TEST(change(h0, h1) <= 2 * neighbours, "held " << change(h0, h1) << " N against " << free_jump << " N free");
+    ++checked;
+  }
+  BOOST_TEST(checked >= 1);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
