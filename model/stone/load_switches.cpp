@@ -108,7 +108,9 @@ void LoadSwitches::compute(const RigidState& s, Mode* record, const Mode& held, 
     if (!(c.area_m2 > 0)) continue;
     const Vec3 vc = s.velocity_m_s + omega.cross(c.centroid_m - s.position_m);
     const double u = vc.dot(normals[i]);
-    g[face_base + i] = u;
+    // The loads' test, u > 1e-9 |v_c| (fluid_forces.cpp), as a sign: a root at u = 0 instead would
+    // leave a step cut back to it short of the switch, and the region held wrong over the next.
+    g[face_base + i] = u - 1e-9 * vc.norm();
     // Recording: loaded as the loads decide it from the state; else as the mode holds it.
     const bool from_state = u > 0 && u * u > 1e-18 * vc.squaredNorm();
     const char held_i =

@@ -7,9 +7,9 @@
 //   * under savitsky_wagner, a vertex crossing the raised waterline (d_j + rise = 0: a polygon
 //     below it changes shape), and the deepest vertex, which sets the rise, changing
 //     (d_a − d_b = 0, a the deepest);
-//   * a face joining or leaving the loaded region (its normal velocity at the centroid of its
-//     polygon below the raised waterline changes sign): the span, and with it every face's centre
-//     of pressure, can jump;
+//   * a face joining or leaving the loaded region (its normal velocity u at the centroid of its
+//     polygon below the raised waterline passes 1e-9 of the speed there, the loads' own test): the
+//     span, and with it every face's centre of pressure, can jump;
 //   * a face's pressure switching at its centre of pressure (the normal velocity there changes
 //     sign);
 //   * the span's trailing or leading end passing from one polygon corner to another

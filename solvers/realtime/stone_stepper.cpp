@@ -478,6 +478,12 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
         // sees one branch of the loads, and a step cut back to where the region changes ends a
         // window past the switch still on the old branch; the next step starts on the new one.
         const LoadMode* held = kinks.held();
+        // The window is the step's as first tried: a kink within it of the start is behind the
+        // step, and a cut step ends it past the kink. (Relative to each cut trial instead, the
+        // window shrank with every cut, and where a retaken step's end and the trial's interpolant
+        // disagree on a root, as a first-order scheme's can by O(dt²), the cuts converged on it
+        // without end.)
+        const double window = kFixedKinkWindow * dt;
         for (int attempt = 0;; ++attempt) {
           s_new = step_from(stone, env, s, k_start, dt, o.scheme, surface, &r.stats.rhs_evaluations, held);
           if (!finite(s_new)) break;
@@ -486,7 +492,6 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
           ++r.stats.rhs_evaluations;
           measure_waterline(stone, s_new, surface, next);
           dense = HermiteStep{y0, y1, k_start, k_end, dt};
-          const double window = kFixedKinkWindow * dt;
           const double f = attempt < kMaxKinkCuts ? kinks.first(dense, now, next, kFullFractionTolerance, window / dt) : -1;
           if (f > 0 && (1 - f) * dt > window) {
             dt = f * dt + window;
