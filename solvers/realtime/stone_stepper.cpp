@@ -229,10 +229,17 @@ class KinkWatch {
   bool active() const { return kinks_ != KinkSteps::none; }
   // The loaded region held over the step (load_switches.hpp), or null where nothing is held.
   const LoadMode* held() const { return loads_ ? &loads_->load_mode() : nullptr; }
+  // Whether the loaded region held over this step differs from the one held over the step before
+  // (a right-hand side at the step's end then is not one at this step's start).
+  bool held_changed() const { return held_changed_; }
   // The step's start state: the mode (vertices under water, live faces) and the functions there.
   void start(const StateVector& y0) {
     // The pressure distribution's switches, in the mode of the step's start (load_switches.hpp).
-    if (loads_) loads_->reset(from_vector(y0.data()), l0_);
+    if (loads_) {
+      previous_held_ = loads_->load_mode().loaded_faces;
+      loads_->reset(from_vector(y0.data()), l0_);
+      held_changed_ = previous_held_ != loads_->load_mode().loaded_faces;
+    }
     if (!events_) return;
     const std::vector<char> before = under_;
     events_->set_mode(from_vector(y0.data()));
@@ -297,6 +304,8 @@ class KinkWatch {
   std::unique_ptr<LoadSwitches> loads_;  // all, under savitsky and savitsky_wagner
   std::vector<double> g0_, g1_;
   std::vector<double> l0_, l1_, lc_;  // loads_' values at the start, the end, a root search's point
+  std::vector<char> previous_held_;   // the loaded region held over the step before
+  bool held_changed_ = false;
   std::vector<char> under_;  // the mode of the last start
   StateVector y1_{};         // where g1_ was evaluated (the last trial's end)
   bool ok0_ = false, have_g1_ = false;
@@ -467,12 +476,14 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
         // to just past its first root and taken again; f at the end (the interpolant's, and the next
         // step's first stage) costs one right-hand side.
         const StateVector y0 = to_vector(s);
-        if (!have_k) {
+        kinks.start(y0);
+        // The step before ended in the region it held: its last stage is this step's first only
+        // where this step holds the same region.
+        if (!have_k || kinks.held_changed()) {
           k_start = rhs(stone, env, y0, surface, step_start_pushes);
           ++r.stats.rhs_evaluations;
           have_k = true;
         }
-        kinks.start(y0);
         StateVector k_end{};
         // The distributed pressure's loaded region is held over the step (LoadMode): each stage
         // sees one branch of the loads, and a step cut back to where the region changes ends a
@@ -500,8 +511,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
           }
           break;
         }
-        k_start = k_end;  // the next step's first stage (FSAL)
-        if (held) have_k = false;  // the next step's loaded region is its own start's
+        k_start = k_end;  // the next step's first stage (FSAL), if it holds the same region
         have_dense = true;
       }
       if (!finite(s_new)) {
