@@ -94,6 +94,7 @@ void LoadSwitches::compute(const RigidState& s, Mode* record, const Mode& held, 
   // water at its centroid), as add_distributed_loads in fluid_forces.cpp decides it.
   const auto& tris = stone_.body_mesh.triangles;
   std::vector<ClippedPolygon> polys(nf_);
+  std::vector<ClippedArea> areas(nf_);
   std::vector<char> loaded(nf_, 0);
   std::vector<Vec3> normals(nf_);
   WettedSpanBuilder span_builder(s.velocity_m_s);
@@ -104,7 +105,7 @@ void LoadSwitches::compute(const RigidState& s, Mode* record, const Mode& held, 
     if (d[0] < 0 && d[1] < 0 && d[2] < 0) continue;
     normals[i] = R * stone_.face_normals_body[i];
     polys[i] = clip_submerged_polygon(world[t[0]], world[t[1]], world[t[2]], d[0], d[1], d[2]);
-    const ClippedArea c = area_of(polys[i], normals[i]);
+    const ClippedArea& c = areas[i] = area_of(polys[i], normals[i]);
     if (!(c.area_m2 > 0)) continue;
     const Vec3 vc = s.velocity_m_s + omega.cross(c.centroid_m - s.position_m);
     const double u = vc.dot(normals[i]);
@@ -144,7 +145,7 @@ void LoadSwitches::compute(const RigidState& s, Mode* record, const Mode& held, 
     WeightedIntegrals w;
     if (beta > 0) w = integrate_weight(polys[i], span, k, normals[i]);
     if (beta < 1) {
-      const ClippedArea a = area_of(polys[i], normals[i]);
+      const ClippedArea& a = areas[i];
       w.weight_m2 = (1 - beta) * a.area_m2 + beta * w.weight_m2;
       w.moment_m3 = ((1 - beta) * a.area_m2) * a.centroid_m + beta * w.moment_m3;
     }
