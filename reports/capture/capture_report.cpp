@@ -157,6 +157,7 @@ void motion_part(SectionWriter& w, const std::string& key, const Record& c) {
 void release_part(SectionWriter& w, const std::string& key, const Record& c) {
   const Record& th = c.at("throw");
   const Record& s = c.at("settings");
+  const bool gyro_saturated = c.at("motion").at("saturation").flag("gyro_saturated_in_swing");
   w.subheading("The release state, as measured in the room and as mapped to the virtual stone");
   if (!th.flag("computed")) {
     w.text("No release state: the capture's verdict is " + c.at("verdict").text("verdict") + " (its reasons are above).");
@@ -170,8 +171,11 @@ void release_part(SectionWriter& w, const std::string& key, const Record& c) {
          fmt(100 * s.number("gyro_scale_rel_uncertainty"), 3) + " %, the lever arm ±" +
          fmt(100 * s.number("lever_arm_rel_uncertainty"), 3) + " %, the thrower's release height ±" +
          fmt(s.number("height_uncertainty_m"), 3) + " m" +
-         (th.flag("clipped") ? ", and the clipped spans filled with random bumps up to " + fmt(s.number("max_accel_g"), 3) + " g"
+         (th.flag("clipped") ? ", the clipped spans filled with random bumps up to " + fmt(s.number("max_accel_g"), 3) + " g"
                              : std::string()) +
+         (gyro_saturated ? ", the spans where the MotionPlus reached the end of its range filled with random bumps up to " +
+                               fmt(s.number("max_rate_deg_s"), 4) + " deg/s (a saturated rate is a lower bound)"
+                         : std::string()) +
          ".");
   if (th.flag("clipped"))
     w.text("The accelerometer clipped during the swing, so integrating it gives only a lower bound on the speed (" +

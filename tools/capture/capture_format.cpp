@@ -27,15 +27,13 @@ bool is_hex(std::string_view f) {
   return true;
 }
 
-// Looks at up to the first 50 meaningful lines.
-std::string detect(const std::string& text) {
-  std::size_t begin = 0;
+// Looks at up to the first 50 meaningful lines (lines as the readers split them: LF, CR LF or a
+// lone CR).
+std::string detect(const std::vector<TextLine>& lines) {
   int looked = 0;
-  while (begin < text.size() && looked < 50) {
-    std::size_t end = text.find('\n', begin);
-    if (end == std::string::npos) end = text.size();
-    const std::string_view line = trim(std::string_view(text).substr(begin, end - begin));
-    begin = end + 1;
+  for (const TextLine& l : lines) {
+    if (looked >= 50) break;
+    const std::string_view line = trim(l.text);
     if (line.empty()) continue;
     if (line.rfind("# stoneskip trace", 0) == 0 || line.rfind("t_s,", 0) == 0) return "trace_csv";
     if (line.rfind("# EVEMU", 0) == 0 || line.rfind("N: ", 0) == 0 || line.rfind("E: ", 0) == 0) return "evemu";
@@ -64,32 +62,48 @@ std::string detect(const std::string& text) {
   return "";
 }
 
+// Times within kMaxDuration_s of the first sample (a file may stamp them in Unix time), readings
+// within bounds no sensor reaches: the first sample outside is named by its line and quantity.
 void check_sane(const Trace& t) {
   constexpr double kMaxDuration_s = 1e6, kMaxAccel_g = 1e3, kMaxRate_deg_s = 1e6;
+  const double t0 = t.samples.empty() ? 0.0 : t.samples.front().t_s;
   for (std::size_t k = 0; k < t.samples.size(); ++k) {
     const TraceSample& x = t.samples[k];
-    const bool ok = std::isfinite(x.t_s) && std::abs(x.t_s) <= kMaxDuration_s && x.accel_g.allFinite() &&
-                    x.accel_g.cwiseAbs().maxCoeff() <= kMaxAccel_g && x.rate_deg_s.allFinite() &&
-                    x.rate_deg_s.cwiseAbs().maxCoeff() <= kMaxRate_deg_s;
-    if (!ok) {
-      char what[200];
-      std::snprintf(what, sizeof what,
-                    "sample %zu is out of range (time within %g s of the first, |a| <= %g g, |rate| <= %g deg/s)", k + 1,
-                    kMaxDuration_s, kMaxAccel_g, kMaxRate_deg_s);
-      throw_input_error(t.source, 0, "", what);
-    }
+    char what[200] = "";
+    if (!std::isfinite(x.t_s) || !(std::abs(x.t_s - t0) <= kMaxDuration_s))
+      std::snprintf(what, sizeof what, "time %.15g s is not within %g s of the first sample's (%.15g s)", x.t_s,
+                    kMaxDuration_s, t0);
+    else if (!x.accel_g.allFinite() || !(x.accel_g.cwiseAbs().maxCoeff() <= kMaxAccel_g))
+      std::snprintf(what, sizeof what, "acceleration (%.6g, %.6g, %.6g) g exceeds %g g on an axis", x.accel_g.x(),
+                    x.accel_g.y(), x.accel_g.z(), kMaxAccel_g);
+    else if (!x.rate_deg_s.allFinite() || !(x.rate_deg_s.cwiseAbs().maxCoeff() <= kMaxRate_deg_s))
+      std::snprintf(what, sizeof what, "angular rate (%.6g, %.6g, %.6g) deg/s exceeds %g deg/s on an axis",
+                    x.rate_deg_s.x(), x.rate_deg_s.y(), x.rate_deg_s.z(), kMaxRate_deg_s);
+    if (what[0] == 0) continue;
+    const std::string sample = x.line > 0 ? "" : "sample " + std::to_string(k + 1) + ": ";
+    throw_input_error(t.source, x.line, "", sample + what);
   }
 }
 }  // namespace
 
-std::string detect_capture_format(const std::string& text) { return detect(text); }
+std::string detect_capture_format(const std::string& text) {
+  try {
+    return detect(split_capture_lines(text, ""));
+  } catch (const InputError&) {
+    return "";  // binary data: no format
+  }
+}
 
-Trace parse_capture(const std::string& text, const std::string& file, const CaptureReadOptions& o) {
+Trace parse_capture(const std::string& file_text, const std::string& file, const CaptureReadOptions& o) {
+  // A UTF-8 byte-order mark (Windows editors write one) is not part of the first line.
+  constexpr std::string_view kBom = "\xEF\xBB\xBF";
+  const std::string text =
+      std::string_view(file_text).substr(0, kBom.size()) == kBom ? file_text.substr(kBom.size()) : file_text;
   std::string format = o.format;
   const bool csv_options = o.csv.remote != 0 || !o.csv.columns.empty();
   if (format.empty() || format == "auto") {
-    split_capture_lines(text, file);  // binary data is reported as such, not as an unknown format
-    format = detect(text);
+    // Binary data is reported as such (split_capture_lines throws), not as an unknown format.
+    format = detect(split_capture_lines(text, file));
     if (format.empty() && !o.csv.columns.empty()) format = "csv";  // mapped columns: it is a CSV
     if (format.empty())
       throw_input_error(file, 0, "",

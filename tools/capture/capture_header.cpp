@@ -90,13 +90,13 @@ bool apply_header_key(Trace& t, const std::string& key, const std::string& value
       c.accel_zero_counts[i] = block->zero_counts[i];
       c.accel_one_g_counts[i] = block->one_g_counts[i];
     }
-    c.accel_from_device = true;
+    c.accel_from_device = c.accel_from_header = true;
   } else if (k == "accel_zero_counts") {
     c.accel_zero_counts = three(value, file, line, key);
-    c.accel_from_device = true;
+    c.accel_from_device = c.accel_from_header = true;
   } else if (k == "accel_one_g_counts") {
     c.accel_one_g_counts = three(value, file, line, key);
-    c.accel_from_device = true;
+    c.accel_from_device = c.accel_from_header = true;
   } else if (k == "accel_sign") {
     c.accel_sign = signs(value, file, line, key);
   } else if (k == "gyro_zero_counts") {

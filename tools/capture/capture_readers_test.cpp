@@ -2,6 +2,8 @@
 // back; a defect planted on a known line must be reported with that file and line).
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
+#include <array>
 #include <string>
 
 #include "verification/captures/capture_analysis.hpp"
@@ -129,6 +131,85 @@ BOOST_AUTO_TEST_CASE(a_capture_without_a_button_press_or_still_part_is_unusable_
   BOOST_TEST(std::string(to_string(b.verdict)) == "unusable");
   BOOST_REQUIRE(!b.reasons.empty());
   BOOST_TEST(contains(b.reasons.front(), "no still part"), b.reasons.front());
+}
+
+BOOST_AUTO_TEST_CASE(a_byte_order_mark_and_lone_cr_line_ends_read_as_the_plain_file) {
+  // Oracle: the plain file's own trace; a UTF-8 BOM before the first line and classic Mac line
+  // ends (CR alone) must change nothing, in every format that has lines.
+  SyntheticThrow th;
+  th.swing_rate_rad_s = 7.0;
+  SyntheticTruth truth;
+  for (const std::string& text : {gentle_log(), synthetic_evemu(th, {}, truth), synthetic_gesture(th, {}, truth)}) {
+    const Trace plain = parse_capture(text, "plain.cap");
+    std::string cr = text;
+    for (char& c : cr)
+      if (c == '\n') c = '\r';
+    for (const std::string& variant : {"\xEF\xBB\xBF" + text, cr}) {
+      const Trace t = parse_capture(variant, "variant.cap");
+      BOOST_TEST(t.format == plain.format);
+      BOOST_REQUIRE(t.samples.size() == plain.samples.size());
+      bool same = true;
+      for (std::size_t k = 0; k < t.samples.size(); ++k)
+        same = same && t.samples[k].t_s == plain.samples[k].t_s && t.samples[k].accel_g == plain.samples[k].accel_g &&
+               t.samples[k].rate_deg_s == plain.samples[k].rate_deg_s && t.samples[k].line == plain.samples[k].line;
+      BOOST_TEST(same, plain.format << ": a sample differs");
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(readings_beyond_the_sensor_or_out_of_bounds_name_their_line) {
+  // The driver writes the accelerometer's 10-bit reading − 0x200 (−512..511): 5000 is no reading.
+  const std::string ev = "N: Nintendo Wii Remote Accelerometer\nE: 1.0 0003 0003 5\nE: 1.0 0000 0000 0\n"
+                         "E: 1.01 0003 0003 5000\n";
+  BOOST_TEST(contains(error_of(ev), "bad.cap:4"));
+  BOOST_TEST(contains(error_of(ev), "-512..511"));
+  // A number no sensor reads (1e308 g) on line 4 is named by that line, not by its sample index.
+  const std::string e = error_of(kCsvHead + "0,0,0,1,0,0,0,0,0,0,0,-\n0.01,1e308,0,1,0,0,0,0,0,0,0,-\n");
+  BOOST_TEST(contains(e, "bad.cap:4"), e);
+  BOOST_TEST(contains(e, "acceleration"), e);
+}
+
+BOOST_AUTO_TEST_CASE(times_stamped_in_unix_time_are_read_relative_to_the_first) {
+  // Oracle: the same trace stamped from 0; 1.7e9 s (a Unix time) is far beyond the 1e6 s a
+  // capture may last, but that bound is on time since the first sample.
+  const Trace t = parse_capture(gentle_log(), "gentle.log");
+  Trace shifted = t;
+  for (TraceSample& x : shifted.samples) x.t_s += 1.7e9;
+  const Trace back = parse_capture(trace_csv_text(shifted), "epoch.csv");
+  BOOST_REQUIRE(back.samples.size() == t.samples.size());
+  BOOST_TEST(back.samples.back().t_s - back.samples.front().t_s ==
+                 t.samples.back().t_s - t.samples.front().t_s,
+             boost::test_tools::tolerance(1e-6));  // %.17g of 1.7e9 s keeps 0.2 µs
+}
+
+BOOST_AUTO_TEST_CASE(a_header_calibration_wins_over_the_recorded_block_and_a_disagreement_is_a_warning) {
+  // Oracle: the header's own numbers. The synthetic log records the remote's calibration block
+  // (zero-g 506,513,518, one-g 610,617,621, SyntheticSensor's defaults).
+  auto with_header = [](const std::string& zero, const std::string& one_g) {
+    return parse_capture("# calibration.accel_zero_counts: " + zero + "\n# calibration.accel_one_g_counts: " + one_g +
+                             "\n" + gentle_log(),
+                         "cal.log");
+  };
+  auto disagreement = [](const Trace& t) {
+    return std::count_if(t.warnings.begin(), t.warnings.end(),
+                         [](const std::string& w) { return contains(w, "differs from the header's calibration"); });
+  };
+  const Trace other = with_header("500,500,500", "600,600,600");
+  BOOST_TEST(other.calibration.accel_zero_counts == (std::array<double, 3>{500, 500, 500}));
+  BOOST_TEST(other.calibration.accel_one_g_counts == (std::array<double, 3>{600, 600, 600}));
+  BOOST_TEST(disagreement(other) >= 1);
+  const Trace same = with_header("506,513,518", "610,617,621");
+  BOOST_TEST(disagreement(same) == 0);
+}
+
+BOOST_AUTO_TEST_CASE(a_trace_without_a_has_gyro_line_keeps_its_rates) {
+  // Oracle: the rows themselves. Rates in the wx..wz columns are a MotionPlus's, stated or not;
+  // an explicit `has_gyro: false` still wins.
+  const std::string rows = "0,0,0,1,5,0,0,0,0,0,0,-\n0.01,0,0,1,6,0,0,0,0,0,0,-\n";
+  BOOST_TEST(parse_capture(kCsvHead + rows, "t.csv").has_gyro);
+  BOOST_TEST(!parse_capture(kCsvHead + "0,0,0,1,0,0,0,0,0,0,0,-\n", "t.csv").has_gyro);
+  const std::string stated = std::string(kTraceCsvMagic) + "\n# has_gyro: false\n" + kTraceCsvColumns + "\n" + rows;
+  BOOST_TEST(!parse_capture(stated, "t.csv").has_gyro);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -2,11 +2,13 @@
 // synthetic captures whose truth is known exactly (synthetic_capture.hpp).
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "verification/captures/capture_analysis.hpp"
 #include "tools/capture/capture_format.hpp"
 #include "tools/capture/synthetic_capture.hpp"
+#include "tools/io/input_error.hpp"
 
 using namespace stoneskip;
 
@@ -144,6 +146,76 @@ BOOST_AUTO_TEST_CASE(dropped_and_repeated_reports_and_jitter_are_counted_exactly
   constexpr double kStampRoundoff_s = 2e-6;  // stamps are written with 1 µs resolution
   BOOST_TEST(std::abs(t.stats.jitter_s - std::sqrt(var)) < kStampRoundoff_s);
   BOOST_TEST(t.stats.gaps > 0);
+}
+
+BOOST_AUTO_TEST_CASE(a_remote_strapped_on_its_side_is_described_key_by_key_in_either_order) {
+  // Oracle: the generator's analytic release state, for a remote whose X axis is the stone's
+  // normal and whose Z axis points forward. Each key alone is parallel to the other's default
+  // (normal +Z, forward −X), so the mounting is checked only once every setting is applied.
+  SyntheticThrow th = gentle_throw();
+  th.mounting.stone_normal = Vec3(1, 0, 0);
+  th.mounting.stone_forward = Vec3(0, 0, 1);
+  SyntheticTruth truth;
+  const Trace trace = parse_capture(synthetic_report_log(th, SyntheticSensor{}, truth), "side.log");
+  for (const auto& order : {std::vector<std::string>{"stone_normal=1,0,0", "stone_forward=0,0,1"},
+                            std::vector<std::string>{"stone_forward=0,0,1", "stone_normal=1,0,0"}}) {
+    CaptureOptions o = quick_options();
+    o.mounting = resolve_mounting(trace, order);
+    check_unclipped(analyse_capture(trace, o), truth);
+  }
+  // A combination that leaves forward along the normal is still refused, naming the key.
+  try {
+    resolve_mounting(trace, {"stone_normal=1,0,0", "stone_forward=2,0,0"});
+    BOOST_FAIL("a forward direction along the normal was accepted");
+  } catch (const InputError& e) {
+    BOOST_TEST(std::string(e.what()).find("mounting.stone_forward") != std::string::npos, e.what());
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_saturated_motionplus_widens_the_intervals_to_hold_the_truth) {
+  // Oracle: the generator's analytic release state. A swing at 45 rad/s (2 580 deg/s) passes the
+  // MotionPlus's fast range (about 1 860 deg/s): the recorded rate is cut at the end of its range,
+  // so the spin and the lever-arm speed read low. The intervals must hold the truth (the
+  // accelerometer is a ±16 g one here, so that only the gyro saturates).
+  SyntheticThrow th;
+  th.swing_rate_rad_s = 45.0;
+  SyntheticTruth truth;
+  const std::string log = synthetic_report_log(th, wide_range_sensor(), truth);
+  CaptureOptions o = quick_options();
+  o.members = 64;  // the bump heights are drawn per member: enough of them to reach the truth
+  o.saturation_g = 15.9;
+  const CaptureAnalysis a = analyse_capture(parse_capture(log, "fast.log"), o);
+  BOOST_REQUIRE(a.gyro_saturated_in_swing);
+  BOOST_REQUIRE(a.can_throw());
+  BOOST_TEST_MESSAGE("saturated: spin " << a.spin_rev_s.nominal << " [" << a.spin_rev_s.low << ", " << a.spin_rev_s.high
+                     << "] truth " << truth.spin_rev_s << "; speed " << a.measured_speed_m_s.nominal << " ["
+                     << a.measured_speed_m_s.low << ", " << a.measured_speed_m_s.high << "] truth " << truth.speed_m_s
+                     << "; attack " << a.attack_angle_deg.nominal << " [" << a.attack_angle_deg.low << ", "
+                     << a.attack_angle_deg.high << "] truth " << truth.attack_angle_deg);
+  BOOST_TEST(a.measured_spin_rev_s.nominal < truth.spin_rev_s);  // what the cut rate shows: a lower bound
+  BOOST_TEST(a.measured_spin_rev_s.contains(truth.spin_rev_s));
+  BOOST_TEST(a.measured_speed_m_s.contains(truth.speed_m_s));
+  BOOST_TEST(a.attack_angle_deg.contains(truth.attack_angle_deg));
+  BOOST_TEST(a.path_angle_deg.contains(truth.path_angle_deg));
+}
+
+BOOST_AUTO_TEST_CASE(a_mounting_that_turns_the_stone_upside_down_is_a_caveat_naming_the_tilt) {
+  // Oracle: the generator's attack angle (15°, so the stone's normal is 15° from the vertical).
+  // Read with the stone's normal reversed, the same capture releases the stone upside down
+  // (165°): past the 60° a skipping throw allows, a caveat says to check the mounting.
+  SyntheticTruth truth;
+  const Trace trace = parse_capture(synthetic_report_log(gentle_throw(), SyntheticSensor{}, truth), "g.log");
+  auto tilt_caveat = [](const CaptureAnalysis& a) {
+    return std::count_if(a.reasons.begin(), a.reasons.end(),
+                         [](const std::string& r) { return r.find("from the vertical at release") != std::string::npos; });
+  };
+  const CaptureAnalysis right = analyse_capture(trace, quick_options());
+  BOOST_TEST(tilt_caveat(right) == 0);
+  CaptureOptions o = quick_options();
+  o.mounting = resolve_mounting(trace, {"stone_normal=0,0,-1"});
+  const CaptureAnalysis flipped = analyse_capture(trace, o);
+  BOOST_TEST(std::abs(flipped.attack_angle_deg.nominal) > 90);
+  BOOST_TEST(tilt_caveat(flipped) == 1);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

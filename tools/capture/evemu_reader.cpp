@@ -17,10 +17,12 @@ constexpr int kEvSyn = 0x00, kEvKey = 0x01, kEvAbs = 0x03;
 constexpr int kSynReport = 0x00;
 constexpr int kAbsRx = 0x03, kAbsRy = 0x04, kAbsRz = 0x05;
 constexpr int kBtnA = 0x130, kBtnB = 0x131;
+constexpr long long kMaxMotionPlusValue = 8192LL * 18000 / 440;  // 335 127
 
 struct Frame {
   double t_s;
   std::array<double, 3> v;
+  long line;  // the SYN_REPORT line that closed the frame
 };
 struct KeyEvent {
   double t_s;
@@ -83,7 +85,7 @@ Trace read_evemu(const std::string& text, const std::string& file) {
     }
     if (*time < last_time) {
       char what[128];
-      std::snprintf(what, sizeof what, "time goes backwards (%.6f s after %.6f s)", *time, last_time);
+      std::snprintf(what, sizeof what, "time goes backwards (%.15g s after %.15g s)", *time, last_time);
       throw_input_error(file, line.number, "", what);
     }
     last_time = *time;
@@ -91,7 +93,14 @@ Trace read_evemu(const std::string& text, const std::string& file) {
     if (*type == kEvAbs && (device == Device::accel || device == Device::gyro)) {
       const int axis = *code == kAbsRx ? 0 : *code == kAbsRy ? 1 : *code == kAbsRz ? 2 : -1;
       if (axis < 0) continue;
-      if (std::llabs(*value) > 1000000) throw_input_error(file, line.number, "", "value out of range for this device");
+      // The driver's ranges (hid-wiimote-modules.c): the accelerometer writes its 10-bit reading
+      // − 0x200, so −512..511; the MotionPlus (raw − 8192)·9 in slow mode and
+      // (raw − 8192)·18000/440 in fast mode, raw 14 bits, so at most 335 127 in magnitude.
+      if (device == Device::accel ? (*value < -512 || *value > 511) : std::llabs(*value) > kMaxMotionPlusValue)
+        throw_input_error(file, line.number, "",
+                          std::string(device == Device::accel ? "accelerometer" : "MotionPlus") + " value " +
+                              std::to_string(*value) + " is outside the driver's range " +
+                              (device == Device::accel ? "-512..511" : "-335127..335127"));
       if (device == Device::accel) {
         accel[axis] = double(*value);
         accel_changed = true;
@@ -103,8 +112,8 @@ Trace read_evemu(const std::string& text, const std::string& file) {
     } else if (*type == kEvKey && device == Device::keys) {
       if (*code == kBtnA || *code == kBtnB) keys.push_back({*time, *code == kBtnA ? kButtonA : kButtonB, *value != 0});
     } else if (*type == kEvSyn && *code == kSynReport) {
-      if (device == Device::accel && accel_changed) accel_frames.push_back({*time, accel});
-      if (device == Device::gyro && gyro_changed) gyro_frames.push_back({*time, gyro});
+      if (device == Device::accel && accel_changed) accel_frames.push_back({*time, accel, line.number});
+      if (device == Device::gyro && gyro_changed) gyro_frames.push_back({*time, gyro, line.number});
     }
   }
   if (accel_frames.empty())
@@ -142,6 +151,7 @@ Trace read_evemu(const std::string& text, const std::string& file) {
   constexpr double kSameReport_s = 2e-3;  // accelerometer and MotionPlus events of one HID report
   for (const Frame& a : accel_frames) {
     TraceSample x;
+    x.line = a.line;
     x.t_s = a.t_s - t0;
     for (int i = 0; i < 3; ++i) x.accel_g[i] = c.accel_g_from_report(i, a.v[i] + 0x200);
     while (g + 1 < gyro_frames.size() && gyro_frames[g + 1].t_s <= a.t_s + kSameReport_s) ++g;

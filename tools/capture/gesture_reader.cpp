@@ -45,6 +45,7 @@ Trace read_gesture(const std::string& text, const std::string& file) {
       continue;
     }
     TraceSample x;
+    x.line = line.number;
     x.accel_g = Eigen::Vector3d(v[0], v[1], v[2]);
     x.buttons = kButtonB;  // the file spans the press of B
     // pitch → X, roll → Y, yaw → Z.

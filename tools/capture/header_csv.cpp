@@ -27,10 +27,14 @@ constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 constexpr double kWyZero = 0x1F7F, kWySlowScale = 0.05, kWyFastScale = 0.25;
 constexpr int kMaxMotionPlusWord = 0x3fff;
 
+// Separators outside double quotes are counted (a quoted field may hold any of them).
 char separator_of(std::string_view line) {
-  const std::size_t commas = std::size_t(std::count(line.begin(), line.end(), ','));
-  const std::size_t semis = std::size_t(std::count(line.begin(), line.end(), ';'));
-  const std::size_t tabs = std::size_t(std::count(line.begin(), line.end(), '\t'));
+  std::size_t commas = 0, semis = 0, tabs = 0;
+  bool quoted = false;
+  for (char c : line) {
+    if (c == '"') quoted = !quoted;
+    else if (!quoted) commas += c == ',', semis += c == ';', tabs += c == '\t';
+  }
   if (commas == 0 && semis == 0 && tabs == 0) return 0;
   if (commas >= semis && commas >= tabs) return ',';
   return semis >= tabs ? ';' : '\t';
@@ -42,15 +46,34 @@ std::string_view unquote(std::string_view f) {
   return f;
 }
 
-std::vector<std::string_view> split_row(std::string_view line, char sep) {
+// Fields split at `sep` outside double quotes (RFC 4180: a quoted field may hold the separator,
+// and "" inside it is a quote; the field is kept as written between its quotes). Empty when a
+// quote is left open (`unterminated` set).
+std::vector<std::string_view> split_row(std::string_view line, char sep, bool* unterminated = nullptr) {
   std::vector<std::string_view> out;
   std::size_t begin = 0;
-  for (std::size_t i = 0; i <= line.size(); ++i)
-    if (i == line.size() || line[i] == sep) {
+  bool quoted = false;
+  for (std::size_t i = 0; i <= line.size(); ++i) {
+    if (i < line.size() && line[i] == '"') quoted = !quoted;  // "" toggles twice: stays inside
+    if (i == line.size() || (!quoted && line[i] == sep)) {
+      if (i == line.size() && quoted) {
+        if (unterminated) *unterminated = true;
+        return {};
+      }
       out.push_back(unquote(line.substr(begin, i - begin)));
       begin = i + 1;
     }
+  }
+  if (unterminated) *unterminated = false;
   return out;
+}
+
+// The same for a line of the file: an open quote is an error naming the line.
+std::vector<std::string_view> split_row(const TextLine& line, char sep, const std::string& file) {
+  bool open = false;
+  auto fields = split_row(line.text, sep, &open);
+  if (open) throw_input_error(file, line.number, "", "a quoted field is not closed (no matching '\"' on the line)");
+  return fields;
 }
 
 std::string lower(std::string_view s) {
@@ -209,7 +232,7 @@ Trace read_header_csv(const std::string& text, const std::string& file, const He
   const TextLine& column_line = lines[k];
   const char sep = separator_of(column_line.text);
   if (!sep) throw_input_error(file, column_line.number, "", "the column line has no ',', ';' or tab separator");
-  const std::vector<std::string_view> headers = split_row(column_line.text, sep);
+  const std::vector<std::string_view> headers = split_row(column_line, sep, file);
   // 2. The columns used: --columns first, then the recognised names.
   std::vector<Column> columns = mapped_columns(options.columns, headers, file);
   std::vector<std::string> unused, unrecognised;
@@ -262,7 +285,12 @@ Trace read_header_csv(const std::string& text, const std::string& file, const He
     const TextLine& line = lines[i];
     const std::string_view s = trim(line.text);
     if (s.empty() || s.front() == '#') continue;
-    const auto fields = split_row(line.text, sep);
+    bool open = false;
+    const auto fields = split_row(line.text, sep, &open);
+    if (open) {
+      malformed_line(file, line, "a quoted field is not closed (no matching '\"' on the line)", t.warnings);
+      continue;
+    }
     if (fields.size() != headers.size()) {
       malformed_line(file, line,
                      "expected " + std::to_string(headers.size()) + " fields (as the column line), found " +
@@ -384,11 +412,27 @@ Trace read_header_csv(const std::string& text, const std::string& file, const He
   std::vector<double> times(kept.size());
   if (have(F::time)) {
     const Column& tc = columns[col.at(F::time)];
+    // A 32-bit tick counter (WiiYourself! stamps rows with timeGetTime, in milliseconds) wraps
+    // every 2^32 ticks, 49.7 days: a whole-number time that falls back by more than half the
+    // counter's range, from below 2^32, to a step under a minute past the wrap, is unwrapped.
+    constexpr double kTicks = 4294967296.0, kMaxWrapStep = 60000;
+    double offset = 0;
     for (std::size_t i = 0; i < kept.size(); ++i) {
-      times[i] = kept[i]->cells[col.at(F::time)];
+      const double raw = kept[i]->cells[col.at(F::time)];
+      times[i] = raw + offset;
       if (i > 0 && times[i] < times[i - 1]) {
+        const double previous_raw = times[i - 1] - offset;
+        const bool whole = raw == std::floor(raw) && previous_raw == std::floor(previous_raw);
+        if (whole && raw >= 0 && previous_raw < kTicks && previous_raw - raw > kTicks / 2 &&
+            raw + kTicks - previous_raw <= kMaxWrapStep) {
+          offset += kTicks;
+          times[i] = raw + offset;
+          t.notes.push_back(input_location(file, kept[i]->line, tc.header) +
+                            ": the 32-bit tick counter wrapped; later times unwrapped (+2^32)");
+          continue;
+        }
         char what[160];
-        std::snprintf(what, sizeof what, "time goes backwards (%.9g after %.9g)", times[i], times[i - 1]);
+        std::snprintf(what, sizeof what, "time goes backwards (%.15g after %.15g)", raw, previous_raw);
         throw_input_error(file, kept[i]->line, tc.header, what);
       }
     }
@@ -422,14 +466,19 @@ Trace read_header_csv(const std::string& text, const std::string& file, const He
   std::array<bool, 3> infer{false, false, false};
   std::vector<std::array<bool, 3>> fast(kept.size(), {false, false, false});
   const char* axis_name[3] = {"pitch", "roll", "yaw"};
+  // Range modes from slow/fast columns, whatever else the file holds (raw words or rates).
+  std::array<bool, 3> mode_columns{false, false, false};
+  for (int a = 0; a < 3; ++a) {
+    const F slow_f = F(int(F::slow_pitch) + a), fast_f = F(int(F::fast_pitch) + a);
+    mode_columns[a] = have(slow_f) || have(fast_f);
+    if (mode_columns[a])
+      for (std::size_t i = 0; i < kept.size(); ++i)
+        fast[i][a] = have(fast_f) ? kept[i]->cells[col.at(fast_f)] == 1.0 : kept[i]->cells[col.at(slow_f)] == 0.0;
+  }
   if (raw) {
     for (int a = 0; a < 3; ++a) {
-      const F slow_f = F(int(F::slow_pitch) + a), fast_f = F(int(F::fast_pitch) + a), speed_f = F(int(F::speed_pitch) + a);
-      if (have(slow_f) || have(fast_f)) {
-        for (std::size_t i = 0; i < kept.size(); ++i)
-          fast[i][a] = have(fast_f) ? kept[i]->cells[col.at(fast_f)] == 1.0 : kept[i]->cells[col.at(slow_f)] == 0.0;
-        continue;
-      }
+      const F speed_f = F(int(F::speed_pitch) + a);
+      if (mode_columns[a]) continue;
       if (!speeds) {
         infer[a] = true;
         continue;
@@ -469,6 +518,7 @@ Trace read_header_csv(const std::string& text, const std::string& file, const He
   for (std::size_t i = 0; i < kept.size(); ++i) {
     const Row& r = *kept[i];
     TraceSample x;
+    x.line = r.line;
     x.t_s = times[i];
     for (int a = 0; a < 3; ++a) x.accel_g[a] = accel_scale * r.cells[col.at(F(int(F::ax) + a))];
     if (raw) {
@@ -484,13 +534,19 @@ Trace read_header_csv(const std::string& text, const std::string& file, const He
       for (int a = 0; a < 3; ++a) {
         const double w = to_deg * r.cells[col.at(F(int(first) + a))];
         x.rate_deg_s[a] = rates ? w : -w;
-        if (speeds && !rates) {
+        if (rates) {
+          // The range mode sets how the zero-rate bias scales: from the mode columns, else from the
+          // rate's size (beyond the slow range the MotionPlus was in fast mode; within it, slow is
+          // assumed, and the trace says the modes were inferred).
+          x.gyro_fast[a] = mode_columns[a] ? fast[i][a] : std::abs(w) > t.calibration.gyro_range_deg_s(false);
+        } else {
           // WiiYourself!'s slow range is ±8192·0.05 deg/s: beyond it the MotionPlus was in fast mode.
           x.gyro_fast[a] = std::abs(w) > 8192 * kWySlowScale;
           if (std::abs(w) >= 0.99 * 8192 * kWyFastScale) x.flags |= kGyroSaturated;
         }
       }
       if (speeds && !rates) t.gyro_mode_inferred = true;
+      if (rates && !(mode_columns[0] && mode_columns[1] && mode_columns[2])) t.gyro_mode_inferred = true;
     }
     if (have(F::buttons)) {
       const unsigned bits = unsigned(r.cells[col.at(F::buttons)]);
@@ -510,7 +566,9 @@ Trace read_header_csv(const std::string& text, const std::string& file, const He
                        : speeds && !t.gyro_mode_inferred ? "from WiiYourself!'s Speed columns"
                                                          : "inferred from jumps"));
   else if (rates)
-    t.notes.push_back("angular rate from the rate columns (right-handed about X, Y, Z)");
+    t.notes.push_back(std::string("angular rate from the rate columns (right-handed about X, Y, Z); range modes ") +
+                      (t.gyro_mode_inferred ? "from the rates' size where no slow/fast column gives them"
+                                            : "from the slow/fast columns"));
   else if (speeds)
     t.notes.push_back("angular rate from WiiYourself!'s Speed columns (sign reversed; range modes from their size)");
   if (skipped_unchanged > 0)

@@ -222,6 +222,68 @@ BOOST_AUTO_TEST_CASE(time_units_come_from_the_header_or_from_the_median_interval
   BOOST_TEST(std::abs(second_sample("Time [ms]", "0.25") - 0.00025) < 1e-15);  // the header wins
 }
 
+BOOST_AUTO_TEST_CASE(a_wrapping_32_bit_millisecond_counter_is_unwrapped_and_a_real_step_back_is_refused) {
+  // Oracle: the stamps themselves. timeGetTime wraps at 2^32 ms; a log that runs across the wrap
+  // keeps its 10 ms steps. A step back that is no wrap (from 5000 to 4990) still names its line.
+  const std::string wrap = "Time,ax,ay,az\n4294967286,0,0,1\n4294967295,0,0,1\n4,0,0,1\n15,0,0,1\n";
+  const Trace t = parse_capture(wrap, "wrap.csv");
+  BOOST_REQUIRE(t.samples.size() == 4u);
+  BOOST_TEST(std::abs(t.samples[2].t_s - 0.014) < 1e-12);
+  BOOST_TEST(std::abs(t.samples[3].t_s - 0.025) < 1e-12);
+  BOOST_TEST(std::any_of(t.notes.begin(), t.notes.end(), [](const std::string& n) { return contains(n, "wrap.csv:4"); }));
+  const std::string e = error_of("Time,ax,ay,az\n5000,0,0,1\n4990,0,0,1\n");
+  BOOST_TEST(contains(e, "bad.csv:3"), e);
+  BOOST_TEST(contains(e, "4990 after 5000"), e);
+}
+
+BOOST_AUTO_TEST_CASE(a_quoted_field_may_hold_the_separator_and_an_open_quote_names_its_line) {
+  // Oracle: RFC 4180. A note column whose quoted text holds commas and a doubled quote is one
+  // field; the samples are the rows' numbers. A quote left open on a row names that row.
+  const std::string text = "Time,ax,ay,az,note\n0,0,0,1,\"x, y\"\n10,0.5,0,1,\"say \"\"hi\"\", then go\"\n";
+  const Trace t = parse_capture(text, "q.csv");
+  BOOST_REQUIRE(t.samples.size() == 2u);
+  BOOST_TEST(t.samples[1].accel_g.x() == 0.5);
+  const std::string e = error_of("Time,ax,ay,az,note\n0,0,0,1,\"open\n10,0,0,1,ok\n");
+  BOOST_TEST(contains(e, "bad.csv:2"), e);
+  BOOST_TEST(contains(e, "quoted field"), e);
+}
+
+BOOST_AUTO_TEST_CASE(rate_columns_take_their_range_modes_from_fast_columns_or_else_from_their_size) {
+  // Oracle: the report log's own range modes (the MotionPlus flags in each report). The same
+  // samples written as a CSV of rates in deg/s with fast-mode columns must keep them; without
+  // the columns a rate beyond the slow range (8192 counts / 20 per deg/s) must read as fast.
+  SyntheticThrow th;
+  th.swing_rate_rad_s = 7.0;  // about 400 deg/s: the MotionPlus switches range
+  SyntheticTruth truth;
+  const Trace log = parse_capture(synthetic_report_log(th, SyntheticSensor{}, truth), "gentle.log");
+  std::string with = "time (s),ax (g),ay (g),az (g),wx (deg/s),wy (deg/s),wz (deg/s),btn_b,fast pitch,fast roll,fast yaw\n";
+  std::string without = "time (s),ax (g),ay (g),az (g),wx (deg/s),wy (deg/s),wz (deg/s),btn_b\n";
+  for (const TraceSample& x : log.samples) {
+    char row[320];
+    std::snprintf(row, sizeof row, "%.9f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d", x.t_s, x.accel_g.x(), x.accel_g.y(),
+                  x.accel_g.z(), x.rate_deg_s.x(), x.rate_deg_s.y(), x.rate_deg_s.z(), (x.buttons & kButtonB) ? 1 : 0);
+    without += std::string(row) + "\n";
+    with += std::string(row) + "," + (x.gyro_fast[0] ? "1" : "0") + "," + (x.gyro_fast[1] ? "1" : "0") + "," +
+            (x.gyro_fast[2] ? "1" : "0") + "\n";
+  }
+  const Trace a = parse_capture(with, "with.csv"), b = parse_capture(without, "without.csv");
+  BOOST_REQUIRE(a.samples.size() == log.samples.size());
+  BOOST_REQUIRE(b.samples.size() == log.samples.size());
+  int fast = 0, mismatches = 0, size_rule = 0;
+  const double slow_range = log.calibration.gyro_range_deg_s(false);
+  for (std::size_t k = 0; k < log.samples.size(); ++k)
+    for (int i = 0; i < 3; ++i) {
+      fast += log.samples[k].gyro_fast[i];
+      mismatches += a.samples[k].gyro_fast[i] != log.samples[k].gyro_fast[i];
+      size_rule += b.samples[k].gyro_fast[i] != (std::abs(b.samples[k].rate_deg_s[i]) > slow_range);
+    }
+  BOOST_TEST(fast > 0);
+  BOOST_TEST(mismatches == 0);
+  BOOST_TEST(!a.gyro_mode_inferred);
+  BOOST_TEST(size_rule == 0);
+  BOOST_TEST(b.gyro_mode_inferred);
+}
+
 BOOST_AUTO_TEST_CASE(wiiyourself_speed_columns_alone_give_the_rate_with_its_sign_reversed) {
   // Oracle: WiiYourself! reports −(raw − 0x1F7F)·scale; stoneskip's rate is +(raw − zero)/scale.
   const std::string text = "Time,Acc X,Acc Y,Acc Z,Speed Pitch,Speed Roll,Speed Yaw,Buttons\n"

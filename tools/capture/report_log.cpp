@@ -67,7 +67,7 @@ Trace read_report_log(const std::string& text, const std::string& file) {
     }
     if (have_time && *time < previous_time) {
       char what[128];
-      std::snprintf(what, sizeof what, "time goes backwards (%.6f s after %.6f s)", *time, previous_time);
+      std::snprintf(what, sizeof what, "time goes backwards (%.15g s after %.15g s)", *time, previous_time);
       throw_input_error(file, line.number, "", what);
     }
     const DecodedReport r = decode_report(bytes.data(), bytes.size());
@@ -86,6 +86,23 @@ Trace read_report_log(const std::string& text, const std::string& file) {
     if (r.kind == ReportKind::memory_read) {
       if (r.read_error == 0 && (r.read_address == 0x0016 || r.read_address == 0x0020) && r.read_data.size() >= 10) {
         const auto block = decode_calibration_block(r.read_data.data(), r.read_data.size());
+        CaptureCalibration& c = t.calibration;
+        if (c.accel_from_header) {
+          // The header states the calibration: it wins, and a block that disagrees is said to.
+          bool same = true;
+          for (int i = 0; i < 3; ++i)
+            same = same && block->zero_counts[i] == c.accel_zero_counts[i] && block->one_g_counts[i] == c.accel_one_g_counts[i];
+          if (!same) {
+            char what[200];
+            std::snprintf(what, sizeof what,
+                          ": the remote's calibration block (zero-g %d,%d,%d, one-g %d,%d,%d) differs from the "
+                          "header's calibration; the header's is used",
+                          int(block->zero_counts[0]), int(block->zero_counts[1]), int(block->zero_counts[2]),
+                          int(block->one_g_counts[0]), int(block->one_g_counts[1]), int(block->one_g_counts[2]));
+            t.warnings.push_back(input_location(file, line.number, "") + what);
+          }
+          continue;
+        }
         if (!block->checksum_ok)
           t.warnings.push_back(input_location(file, line.number, "") + ": calibration block checksum does not match; used anyway");
         for (int i = 0; i < 3; ++i) {
@@ -106,6 +123,7 @@ Trace read_report_log(const std::string& text, const std::string& file) {
     }
     if (!have_time) first_time = *time;
     TraceSample x;
+    x.line = line.number;
     x.t_s = *time - first_time;
     x.buttons = r.buttons;
     for (int i = 0; i < 3; ++i) x.accel_g[i] = r.accel_raw[i];  // calibrated below (the block may come later)

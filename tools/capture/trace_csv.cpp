@@ -20,7 +20,7 @@ Trace read_trace_csv(const std::string& text, const std::string& file) {
   Trace t;
   t.source = file;
   t.format = "trace_csv";
-  bool columns_seen = false;
+  bool columns_seen = false, has_gyro_given = false;
   for (const TextLine& line : split_capture_lines(text, file)) {
     const std::string_view s = trim(line.text);
     if (s.empty()) continue;
@@ -41,6 +41,7 @@ Trace read_trace_csv(const std::string& text, const std::string& file) {
       } else if (key == "has_gyro" || key == "has_buttons" || key == "has_accel") {
         if (!parse_bool(value, flag)) throw_input_error(file, line.number, key, "expected true or false");
         (key == "has_gyro" ? t.has_gyro : key == "has_accel" ? t.has_accel : t.has_buttons) = flag;
+        has_gyro_given = has_gyro_given || key == "has_gyro";
       } else {
         apply_header_key(t, key, value, file, line.number);
       }
@@ -59,6 +60,7 @@ Trace read_trace_csv(const std::string& text, const std::string& file) {
       continue;
     }
     TraceSample x;
+    x.line = line.number;
     double v[10];
     bool ok = true;
     int bad = -1;
@@ -98,13 +100,20 @@ Trace read_trace_csv(const std::string& text, const std::string& file) {
     }
     if (!t.samples.empty() && x.t_s < t.samples.back().t_s) {
       char what[128];
-      std::snprintf(what, sizeof what, "time goes backwards (%.6f s after %.6f s)", x.t_s, t.samples.back().t_s);
+      std::snprintf(what, sizeof what, "time goes backwards (%.15g s after %.15g s)", x.t_s, t.samples.back().t_s);
       throw_input_error(file, line.number, "t_s", what);
     }
     t.samples.push_back(x);
   }
   if (!columns_seen) throw_input_error(file, 0, "", "no column line: not a stoneskip trace");
   if (t.samples.empty()) throw_input_error(file, 0, "", "no samples");
+  if (!has_gyro_given) {
+    // No `has_gyro` line: the rate columns say whether a MotionPlus was there.
+    for (const TraceSample& x : t.samples) t.has_gyro = t.has_gyro || x.rate_deg_s != Eigen::Vector3d::Zero();
+    t.notes.push_back(std::string("no 'has_gyro' header line: ") +
+                      (t.has_gyro ? "the rate columns hold non-zero rates, so a MotionPlus is taken as present"
+                                  : "every rate is zero, so no MotionPlus is taken as present"));
+  }
   return t;
 }
 

@@ -77,6 +77,7 @@ struct CaptureArgs {
   std::string button = "B";
   double saturation_g = 3.4;
   double max_accel_g = 20.0;
+  double max_rate_deg_s = 7700.0;
   int members = 64;
   unsigned seed = 20130101;
   bool json = false;
@@ -130,6 +131,8 @@ void add_common(CLI::App* cmd, CaptureArgs& a) {
   cmd->add_option("--thrower", a.thrower, "Virtual thrower setting key=value (height_mapping, release_height_m, still_height_m, height_uncertainty_m, speed_scale, spin_scale, finger_spin_rev_s), repeatable");
   cmd->add_option("--saturation-g", a.saturation_g, "An axis at or beyond this |a| is clipped, g (default 3.4)");
   cmd->add_option("--max-accel-g", a.max_accel_g, "Largest acceleration a clipped span may hide, g (default 20)");
+  cmd->add_option("--max-rate-deg-s", a.max_rate_deg_s,
+                  "Largest angular rate a span with the MotionPlus at the end of its range may hide, deg/s (default 7700)");
   cmd->add_option("--members", a.members, "Ensemble size for the intervals and the bounce distribution (default 64)");
   cmd->add_option("--seed", a.seed, "Seed of the ensemble's random draws");
 }
@@ -149,6 +152,7 @@ CaptureOptions capture_options(const CaptureArgs& a, const Trace& t) {
   o.release_button = a.button == "A" ? kButtonA : kButtonB;
   o.saturation_g = a.saturation_g;
   o.max_accel_g = a.max_accel_g;
+  o.max_rate_deg_s = a.max_rate_deg_s;
   o.members = a.members;
   o.seed = a.seed;
   std::string why;
@@ -195,8 +199,8 @@ std::string command_line(const CaptureArgs& a) {
   if (a.clock != "automatic") s += " --clock " + a.clock;
   if (a.button != "B") s += " --button " + a.button;
   char b[160];
-  std::snprintf(b, sizeof b, " --saturation-g %g --max-accel-g %g --members %d --seed %u", a.saturation_g, a.max_accel_g,
-                a.members, a.seed);
+  std::snprintf(b, sizeof b, " --saturation-g %g --max-accel-g %g --max-rate-deg-s %g --members %d --seed %u",
+                a.saturation_g, a.max_accel_g, a.max_rate_deg_s, a.members, a.seed);
   s += b;
   if (a.no_reference) s += " --no-reference";
   if (a.no_simulate) s += " --no-simulate";

@@ -21,6 +21,7 @@ bool CaptureOptions::is_valid(std::string* why) const {
   };
   if (!(saturation_g > 0 && saturation_g < 1000)) return fail("saturation_g must be in (0, 1000) g");
   if (!(max_accel_g >= saturation_g && max_accel_g < 1000)) return fail("max_accel_g must be at least saturation_g and below 1000 g");
+  if (!(max_rate_deg_s >= 100 && max_rate_deg_s < 1e5)) return fail("max_rate_deg_s must be in [100, 1e5) deg/s");
   if (!(gravity_m_s2 > 0 && gravity_m_s2 < 100)) return fail("gravity_m_s2 must be in (0, 100)");
   if (!(min_still_s > 0 && min_still_s <= 10)) return fail("min_still_s must be in (0, 10] s");
   if (!(still_accel_tol_g > 0 && still_accel_tol_g < 1)) return fail("still_accel_tol_g must be in (0, 1) g");
@@ -41,6 +42,7 @@ Mounting resolve_mounting(const Trace& trace, const std::vector<std::string>& ov
   Mounting m;
   for (const auto& s : trace.mounting) apply_mounting_setting(m, s, trace.source);
   for (const auto& s : overrides) apply_mounting_setting(m, s, "--mount");
+  check_mounting(m, overrides.empty() ? trace.source : trace.source + " with --mount");
   return m;
 }
 
@@ -143,10 +145,11 @@ void estimate_throw(CaptureAnalysis& a, const ChainInput& in, const CaptureOptio
   a.gyro_bias_deg_s = d.gyro_bias_deg_s;
   if (!a.nominal.finite()) return;
   a.accel_lower = a.nominal;
-  a.accel_upper = a.clipped ? run_chain(in, o, Perturbation{Perturb::none, ClipFill::at_max, 0}, nullptr, nullptr) : a.nominal;
+  a.accel_upper = a.clipped ? run_chain(in, o, Perturbation{Perturb::none, ClipFill::at_max, ClipFill::as_recorded, 0}, nullptr, nullptr) : a.nominal;
   std::mt19937_64 seeds(o.seed);
   for (int m = 0; m < o.members; ++m) {
-    const Perturbation p{Perturb::random, a.clipped ? ClipFill::random_bump : ClipFill::as_recorded, seeds()};
+    const Perturbation p{Perturb::random, a.clipped ? ClipFill::random_bump : ClipFill::as_recorded,
+                         a.gyro_saturated_in_swing ? ClipFill::random_bump : ClipFill::as_recorded, seeds()};
     const ReleaseKinematics r = run_chain(in, o, p, nullptr, nullptr);
     if (r.finite()) a.ensemble.push_back(r);
   }

@@ -29,8 +29,10 @@
 // (clipped spans as recorded … filled at max_accel_g) and the lever-arm interval.
 // Uncertainty: the whole chain is re-run on perturbed copies (per-sample noise and quantisation,
 // a per-member accelerometer bias, release time within its interval, gyro scale, lever arm,
-// virtual height, clipped spans filled with random bumps up to max_accel_g); intervals are the
-// nominal value joined with the 2.5–97.5 % range of the members.
+// virtual height, clipped spans filled with random bumps up to max_accel_g, and spans where the
+// MotionPlus reached the end of its range with random bumps up to max_rate_deg_s: a saturated
+// rate is a lower bound, so spin, attitude and the lever-arm speed may be larger than it shows);
+// intervals are the nominal value joined with the 2.5–97.5 % range of the members.
 #include <array>
 #include <random>
 #include <string>
@@ -53,6 +55,10 @@ struct CaptureOptions {
   unsigned release_button = kButtonB;
   double saturation_g = 3.4;                 // |a| at or beyond this on an axis: clipped (remotes clip at 3.5–4.6 g)
   double max_accel_g = 20.0;                 // what a clipped span may have hidden (model/README.md §4: 7–20 g)
+  // What a span where the MotionPlus reached the end of its range may have hidden: the fastest
+  // segment rotation measured in human throwing, the humerus's internal rotation in baseball
+  // pitching, 7 500–7 700 deg/s (Seroyer et al., Sports Health 2:135, 2010, citing Fleisig et al.).
+  double max_rate_deg_s = 7700.0;
   double gravity_m_s2 = 9.81;
   // The still part: 0.2 s holds 20 reports at 100 Hz, enough to average the noise to ≈ 0.002 g.
   double min_still_s = 0.2;
@@ -108,7 +114,8 @@ enum class Perturb { none, random };
 
 struct Perturbation {
   Perturb kind = Perturb::none;  // random: noise, bias, gyro scale, lever arm, height, release time
-  ClipFill fill = ClipFill::as_recorded;
+  ClipFill fill = ClipFill::as_recorded;       // accelerometer spans, up to max_accel_g
+  ClipFill gyro_fill = ClipFill::as_recorded;  // MotionPlus spans at the end of its range, up to max_rate_deg_s
   std::uint64_t seed = 0;
 };
 

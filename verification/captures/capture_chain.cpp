@@ -173,30 +173,53 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
       if (k > 0) t[k] = std::max(t[k], t[k - 1]);
     }
   // 2. Clipped spans: what the accelerometer could not show. A random bump is a half sine in time
-  // from the last unclipped sample before the span to the first after it.
-  if (p.fill != ClipFill::as_recorded) {
-    const double edge = in.period_s > 0 ? in.period_s : 0.01;
-    for (int i = 0; i < 3; ++i) {
-      const std::uint32_t bit = kSaturatedX << i;
+  // from the last unclipped sample before the span to the first after it; each span on each axis
+  // draws its own height (a share of the way from the recorded level up to max_value).
+  const double edge = in.period_s > 0 ? in.period_s : 0.01;
+  auto fill_spans = [&](ClipFill fill, const auto& in_span, const std::vector<Vec3>& recorded, double max_value,
+                        std::vector<Vec3>& out) {
+    for (int i = 0; i < 3; ++i)
       for (std::size_t k = 0; k <= stop;) {
-        if (!(in.flags[k] & bit)) {
+        if (!in_span(k, i)) {
           ++k;
           continue;
         }
         std::size_t e = k;
-        while (e <= stop && (in.flags[e] & bit)) ++e;
+        while (e <= stop && in_span(e, i)) ++e;
         const double ta = k > 0 ? t[k - 1] : t[k] - edge;
         const double tb = e <= stop ? t[e] : t[e - 1] + edge;
-        const double s = p.fill == ClipFill::at_max ? 1.0 : unit(rng);
+        const double s = fill == ClipFill::at_max ? 1.0 : unit(rng);
         for (std::size_t j = k; j < e; ++j) {
-          const double bump = p.fill == ClipFill::at_max ? 1.0 : std::sin(std::numbers::pi * (t[j] - ta) / (tb - ta));
-          const double level = std::abs(in.accel_g[j][i]);
-          const double extra = std::max(0.0, o.max_accel_g - level) * s * bump;
-          f[j][i] = std::copysign(level + extra, in.accel_g[j][i]);
+          const double bump = fill == ClipFill::at_max ? 1.0 : std::sin(std::numbers::pi * (t[j] - ta) / (tb - ta));
+          const double level = std::abs(recorded[j][i]);
+          const double extra = std::max(0.0, max_value - level) * s * bump;
+          out[j][i] = std::copysign(level + extra, recorded[j][i]);
         }
         k = e;
       }
+  };
+  if (p.fill != ClipFill::as_recorded)
+    fill_spans(p.fill, [&](std::size_t k, int i) { return (in.flags[k] & (kSaturatedX << i)) != 0; }, in.accel_g,
+               o.max_accel_g, f);
+  // The MotionPlus's saturated samples (kGyroSaturated: some axis at the end of its 14-bit range):
+  // on each axis at 90 % of its range or more (the zero offset moves the ends by a few percent),
+  // or, if none is, on the axis nearest its range, the rate is a lower bound, filled as above up to
+  // max_rate_deg_s.
+  if (p.gyro_fill != ClipFill::as_recorded) {
+    auto range = [&](std::size_t k, int i) { return 8192.0 * in.gyro_lsb_deg_s[i] * (in.fast[k][i] ? in.fast_factor : 1.0); };
+    std::vector<std::array<bool, 3>> at_end(stop + 1, {false, false, false});
+    for (std::size_t k = 0; k <= stop; ++k) {
+      if (!(in.flags[k] & kGyroSaturated)) continue;
+      int nearest = 0;
+      bool any = false;
+      for (int i = 0; i < 3; ++i) {
+        const double share = std::abs(in.rate_deg_s[k][i]) / range(k, i);
+        if (share > std::abs(in.rate_deg_s[k][nearest]) / range(k, nearest)) nearest = i;
+        if (share >= 0.9) at_end[k][i] = any = true;
+      }
+      if (!any) at_end[k][nearest] = true;
     }
+    fill_spans(p.gyro_fill, [&](std::size_t k, int i) { return at_end[k][i]; }, in.rate_deg_s, o.max_rate_deg_s, w);
   }
   // 3. The still part: gravity direction, |a|, gyro bias (slow-mode deg/s).
   Vec3 f_still = Vec3::Zero(), bias_slow = Vec3::Zero();

@@ -48,6 +48,7 @@ Record settings_findings(const CaptureAnalysis& a) {
   r.set("lever_arm_rel_uncertainty", o.mounting.lever_arm_rel_uncertainty);
   r.set("height_uncertainty_m", o.thrower.height_uncertainty_m);
   r.set("max_accel_g", o.max_accel_g);
+  r.set("max_rate_deg_s", o.max_rate_deg_s);
   r.set("interval_low_percent", 100 * kIntervalLowQuantile);
   r.set("interval_high_percent", 100 * kIntervalHighQuantile);
   return r;

@@ -24,6 +24,8 @@ struct CaptureCalibration {
   std::array<double, 3> accel_one_g_counts{616, 616, 616};
   std::array<int, 3> accel_sign{1, 1, 1};
   bool accel_from_device = false;  // the EEPROM calibration block was read (not the nominal one)
+  bool accel_from_header = false;  // set by the file's header (calibration.block / accel_*): it wins
+                                   // over a block the recording itself holds
   std::array<double, 3> gyro_zero_counts{8192, 8192, 8192};
   double gyro_slow_counts_per_deg_s = 20.0;
   double gyro_fast_factor = 2000.0 / 440.0;  // Linux hid-wiimote-modules.c uses 2000/440
@@ -71,6 +73,7 @@ struct TraceSample {
   std::array<bool, 3> gyro_fast{false, false, false};    // MotionPlus range mode per axis
   unsigned buttons = 0;
   std::uint32_t flags = 0;
+  long line = 0;  // the file's line the sample was read from (0: not from a file)
 };
 
 struct Trace {

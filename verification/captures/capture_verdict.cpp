@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "verification/captures/capture_analysis.hpp"
 #include "verification/study/verdict_rules.hpp"
@@ -34,6 +35,7 @@ bool CaptureVerdictRules::is_valid(std::string* why) const {
   if (!(min_release_speed_m_s >= 0 && max_release_speed_m_s > min_release_speed_m_s))
     return fail("rules.max_release_speed_m_s must exceed rules.min_release_speed_m_s >= 0");
   if (!(max_hand_displacement_m > 0)) return fail("rules.max_hand_displacement_m must be positive");
+  if (!(max_tilt_deg > 0 && max_tilt_deg <= 180)) return fail("rules.max_tilt_deg must be in (0, 180]");
   return true;
 }
 
@@ -52,6 +54,12 @@ Verdict verdict_from_phrase(const std::string& phrase) {
 }
 
 namespace {
+// The angle of the stone's normal (body z) from the vertical at release, degrees.
+double release_tilt_deg(const CaptureAnalysis& a) {
+  const double nz = (a.nominal.stone_orientation * Vec3::UnitZ()).z();
+  return std::acos(std::clamp(nz, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+}
+
 // The largest distance of the stone from where it was held still, from the end of the still part
 // to the release (the series' kept samples; 0 when the chain did not run).
 double hand_displacement_m(const CaptureAnalysis& a) {
@@ -108,6 +116,8 @@ Record capture_verdict_inputs(const CaptureAnalysis& a, const CaptureVerdictRule
   in.set("max_release_speed_m_s", r.max_release_speed_m_s);
   in.set("hand_displacement_m", finite ? hand_displacement_m(a) : 0.0);
   in.set("max_hand_displacement_m", r.max_hand_displacement_m);
+  in.set("release_tilt_deg", finite ? release_tilt_deg(a) : 0.0);
+  in.set("max_tilt_deg", r.max_tilt_deg);
   return in;
 }
 
@@ -165,6 +175,10 @@ std::string reason_for(const std::string& c, const CaptureAnalysis& a, const Rec
   if (c == "release_speed_implausible")
     return format("the release speed %.3g m/s is outside a human throw's %.3g-%.3g m/s: not a hand's throw",
                   in.number("release_speed_m_s"), in.number("min_release_speed_m_s"), in.number("max_release_speed_m_s"));
+  if (c == "attitude_implausible")
+    return format("the stone's normal is %.3g deg from the vertical at release (more than %.3g deg; skipping throws "
+                  "release it near flat): check the mounting's stone_normal and stone_forward",
+                  in.number("release_tilt_deg"), in.number("max_tilt_deg"));
   if (c == "hand_displacement_implausible")
     return format("the hand displacement of %.3g m from the still part to the release is beyond an arm's reach "
                   "(%.3g m): integration drift, not a throw",

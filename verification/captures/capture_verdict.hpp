@@ -49,6 +49,12 @@ struct CaptureVerdictRules {
   // clipping: the mounting's lever arm is probably wrong (the lever model ignores the pivot's own
   // motion, typically 10–20 % of a side-arm throw's speed).
   double accel_lever_disagreement = 0.25;
+  // The stone's normal further than this from the vertical at release: skipping throws release the
+  // stone near flat (attack angles 0–45°, Clanet, Hersen & Bocquet 2004, and a few degrees of
+  // roll), so a larger tilt says the mounting (stone_normal, stone_forward) does not describe how
+  // the remote was strapped on (upside down, a stone symmetric top to bottom skips the same with
+  // its spin reversed, but the attack angle reads as 180° minus it).
+  double max_tilt_deg = 60.0;
 
   bool is_valid(std::string* why) const;
 };

@@ -57,9 +57,13 @@ void apply_mounting_setting(Mounting& m, const std::string& setting, const std::
                       "unknown mounting key (known: stone_normal, stone_forward, stone_offset_m, lever_arm_m, "
                       "lever_arm_rel_uncertainty)");
   }
+}
+
+void check_mounting(const Mounting& m, const std::string& where) {
   const Vec3 z = m.stone_normal.normalized();
   if ((m.stone_forward - m.stone_forward.dot(z) * z).norm() < 1e-3)
-    throw_input_error(where, 0, full, "stone_forward must not be parallel to stone_normal");
+    throw_input_error(where, 0, "mounting.stone_forward",
+                      "must not be parallel to mounting.stone_normal (with every setting applied)");
 }
 
 std::vector<std::string> mounting_settings(const Mounting& m) {

@@ -29,8 +29,12 @@ struct Mounting {
 };
 
 // Applies "key=value" settings (value "x,y,z" for vectors). Throws InputError naming `where` and
-// the key for an unknown key or a bad value. `where` is "FILE:LINE" or "--mount".
+// the key for an unknown key or a bad value. `where` is "FILE:LINE" or "--mount". The settings'
+// combination is checked only once all are applied (check_mounting), so that a remote strapped on
+// its side can be described key by key, in any order.
 void apply_mounting_setting(Mounting& m, const std::string& setting, const std::string& where);
+// Throws InputError naming `where` when stone_forward is parallel to stone_normal.
+void check_mounting(const Mounting& m, const std::string& where);
 // Writes every setting back as "key=value" lines (for headers and reports).
 std::vector<std::string> mounting_settings(const Mounting& m);
 

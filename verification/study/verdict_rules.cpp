@@ -369,6 +369,9 @@ CaptureConditions capture_conditions(const Record& in) {
                  in.number("accel_lever_disagreement") * in.number("measured_speed_m_s"),
          "accel_lever_disagree");
   caveat(in.number("reader_warnings") > 0, "reader_warnings");
+  if (in.has_number("max_tilt_deg"))  // records stored before this input existed lack it
+    caveat(computed && in.flag("throw_finite") && in.number("release_tilt_deg") > in.number("max_tilt_deg"),
+           "attitude_implausible");
   return c;
 }
 
