@@ -65,6 +65,37 @@ TimedSamples analyse_timing(const Trace& trace, const TimingOptions& o) {
   std::vector<double> sorted = dt;
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
   s.period_s = sorted[sorted.size() / 2];
+  // Reports that reach the host in bursts (a logger reading its queue in batches: two or more
+  // stamped within a fraction of a period, then a long wait) make the single intervals a mix of
+  // near zero and several periods, whose median is neither. Where more than a quarter of the
+  // intervals are shorter than half the median mean interval over kBurstWindow intervals (host
+  // jitter alone makes a few; lost reports make intervals longer, not shorter), the stamps are
+  // grouped into bursts at those short intervals. A burst is stamped when its last report arrives,
+  // so the time from one burst's last stamp to the next's holds the next burst's reports: the
+  // period is the median of that time over their number.
+  constexpr std::size_t kBurstWindow = 8;
+  std::vector<std::size_t> burst_end;  // index of each burst's last stamp (bursts only)
+  if (dt.size() >= 2 * kBurstWindow) {
+    std::vector<double> window(stamps.size() - kBurstWindow);
+    for (std::size_t k = 0; k < window.size(); ++k)
+      window[k] = (stamps[k + kBurstWindow] - stamps[k]) / double(kBurstWindow);
+    std::nth_element(window.begin(), window.begin() + window.size() / 2, window.end());
+    const double split = 0.5 * window[window.size() / 2];
+    const auto short_intervals = std::count_if(dt.begin(), dt.end(), [&](double d) { return d < split; });
+    if (split > 0 && 4 * std::size_t(short_intervals) > dt.size()) {
+      for (std::size_t k = 0; k < dt.size(); ++k)
+        if (dt[k] >= split) burst_end.push_back(k);
+      burst_end.push_back(dt.size());
+      std::vector<double> per_report;
+      for (std::size_t g = 1; g < burst_end.size(); ++g)
+        per_report.push_back((stamps[burst_end[g]] - stamps[burst_end[g - 1]]) / double(burst_end[g] - burst_end[g - 1]));
+      if (!per_report.empty()) {
+        std::nth_element(per_report.begin(), per_report.begin() + per_report.size() / 2, per_report.end());
+        s.period_s = per_report[per_report.size() / 2];
+        s.bursts = true;
+      }
+    }
+  }
   if (!(s.period_s > 0) || !std::isfinite(s.period_s)) return out;
   s.ok = true;
   s.rate_hz = 1.0 / s.period_s;
@@ -73,26 +104,57 @@ TimedSamples analyse_timing(const Trace& trace, const TimingOptions& o) {
   const double gap = o.gap_factor * s.period_s;
   double sum = 0;
   long n_ok = 0;
-  for (std::size_t k = 0; k < dt.size(); ++k) {
+  std::vector<char> counted(dt.size(), 0);  // the intervals the jitter is taken over
+  auto lost = [&](std::size_t k, long step) {  // interval k skipped step − 1 slots
+    ++s.gaps;
+    s.dropped_reports += step - 1;
+    s.longest_gap_s = std::max(s.longest_gap_s, dt[k]);
+  };
+  auto jitter = [&](std::size_t k) {
+    sum += dt[k];
+    ++n_ok;
+    counted[k] = 1;
+    s.max_jitter_s = std::max(s.max_jitter_s, std::abs(dt[k] - s.period_s));
+  };
+  if (s.bursts) {
+    // Each burst's last report is as many slots after the previous burst's last as the time
+    // between them holds periods, and at least as many as the burst has reports; the others
+    // precede it slot by slot. Slots skipped are reports lost. Every interval inside a burst and
+    // every one into a burst that skips no slot is the bursts' jitter.
+    std::size_t first = 0;
+    for (std::size_t g = 0; g < burst_end.size(); ++g) {
+      const std::size_t last = burst_end[g];
+      long end_slot = long(last);
+      if (g > 0) {
+        const std::size_t prev = burst_end[g - 1];
+        const long reports = long(last - prev);
+        const double x = std::min((stamps[last] - stamps[prev]) / s.period_s, double(kMaxLostPerGap));
+        const long slots_between = std::max(reports, std::lround(x));
+        end_slot = out.report_index[prev] + slots_between;
+        if (slots_between > reports) lost(prev, slots_between - reports + 1);
+        else jitter(prev);
+      }
+      for (std::size_t k = first; k <= last; ++k) out.report_index[k] = end_slot - long(last - k);
+      for (std::size_t k = first; k < last; ++k) jitter(k);
+      first = last + 1;
+    }
+  }
+  for (std::size_t k = 0; k < dt.size() && !s.bursts; ++k) {
     long step = 1;
     if (dt[k] >= gap) {
       const double ratio = std::min(dt[k] / s.period_s, double(kMaxLostPerGap));
       step = std::max(2L, std::lround(ratio));
-      ++s.gaps;
-      s.dropped_reports += step - 1;
-      s.longest_gap_s = std::max(s.longest_gap_s, dt[k]);
+      lost(k, step);
     } else {
-      sum += dt[k];
-      ++n_ok;
-      s.max_jitter_s = std::max(s.max_jitter_s, std::abs(dt[k] - s.period_s));
+      jitter(k);
     }
     out.report_index[k + 1] = out.report_index[k] + step;
   }
   if (n_ok > 1) {
     const double mean = sum / double(n_ok);
     double var = 0;
-    for (double d : dt)
-      if (d < gap) var += (d - mean) * (d - mean);
+    for (std::size_t k = 0; k < dt.size(); ++k)
+      if (counted[k]) var += (dt[k] - mean) * (dt[k] - mean);
     s.jitter_s = std::sqrt(var / double(n_ok - 1));
   }
   if (trace.nominal_timestamps) return out;

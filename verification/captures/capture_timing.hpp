@@ -5,7 +5,10 @@
 //   * repeated reports (flag R) are dropped and counted;
 //   * the typical interval is the median interval (the "rate" is its inverse; the mean rate over
 //     the recording is reported beside it); an interval of gap_factor typical intervals or more is
-//     a gap, and about round(interval / typical) − 1 reports were lost in it;
+//     a gap, and about round(interval / typical) − 1 reports were lost in it. Reports that reach the
+//     host in bursts (more than a quarter of the intervals shorter than half the median mean
+//     interval over 8 consecutive intervals): the typical interval is that windowed median, and
+//     each report's slot is its time since the first over it, rounded (lost reports: slots skipped);
 //   * jitter = standard deviation of the intervals that are not gaps, with the largest deviation,
 //     the shortest and longest interval and the number of equal stamps;
 //   * the clock (ClockModel): a Wii Remote sends its reports on its own regular clock and the host
@@ -65,6 +68,8 @@ struct TimingStats {
   double longest_gap_s = 0;
   bool nominal = false;         // times from the nominal rate (no host stamps)
   bool ok = false;              // a positive period could be found
+  bool bursts = false;          // the reports reached the host in bursts: the period is the median
+                                // mean interval over 8 consecutive intervals, slots from the time
 };
 
 struct TimedSamples {

@@ -120,4 +120,30 @@ BOOST_AUTO_TEST_CASE(jitter_is_the_standard_deviation_of_the_intervals_that_are_
   BOOST_TEST(std::abs(t.stats.longest_gap_s - 0.039) < 1e-15);
 }
 
+BOOST_AUTO_TEST_CASE(reports_reaching_the_host_in_bursts_keep_their_rate_and_losses) {
+  // Oracle: a 100 Hz clock whose reports a logger reads in bursts of b: all b are stamped 0.2 ms
+  // apart when the last of them is sent (slots n at n/100 s). Counted interval by interval they
+  // look like a 100/b Hz stream with a report lost in every long interval; the rate is 100 Hz,
+  // and what is lost is only the 3 slots removed (each a whole burst's worth of time later).
+  for (const int b : {2, 3, 4}) {
+    BOOST_TEST_CONTEXT("bursts of " << b) {
+      std::vector<double> stamps;
+      for (long n = 0; n < 396; ++n) {  // 396: whole bursts of 2, 3 and 4
+        if (n == 101 || n == 202 || n == 303) continue;  // lost: their slots are skipped
+        const long last = (n / b) * b + b - 1;            // the burst's last report
+        stamps.push_back(1.0 + 0.01 * double(last) + 0.0002 * double(n % b));
+      }
+      const TimedSamples t = analyse_timing(stamped(stamps));
+      BOOST_TEST(t.stats.bursts);
+      BOOST_TEST(t.stats.rate_hz == 100.0, boost::test_tools::tolerance(1e-6));
+      BOOST_TEST(t.stats.dropped_reports == 3);
+      BOOST_TEST(t.stats.jitter_s > 0.003);  // stamps up to b − 1 periods from their slots: a caveat
+    }
+  }
+  // A regular stream with host jitter is no burst (the windowed and single medians agree).
+  std::vector<double> steady;
+  for (long n = 0; n < 400; ++n) steady.push_back(1.0 + 0.01 * double(n) + 0.002 * ((n * 7919) % 3 - 1));
+  BOOST_TEST(!analyse_timing(stamped(steady)).stats.bursts);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
