@@ -11,6 +11,7 @@
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/hdf5_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/input_error.hpp"
 
 namespace stoneskip {
 
@@ -207,9 +208,23 @@ std::string front_page_markdown(const FrontPageInput& in) {
   return md.str();
 }
 
+namespace {
+// An existing page is replaced only if it is a front page (stoneskip's own title in its first
+// kilobytes); someone's index.md in that folder is refused, naming it.
+void refuse_unless_front_page(const fs::path& path, const std::string& signature) {
+  check_output_destination(path);
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(path, ec))) return;
+  const std::string head = read_text_file(path).substr(0, 4096);
+  if (head.find(signature) == std::string::npos)
+    throw_input_error(path.string(), 0, "", "exists and is not a stoneskip front page: not replaced");
+}
+}  // namespace
+
 void write_front_page(const fs::path& out, const std::string& markdown) {
-  check_output_destination(out / "index.md");
-  check_output_destination(out / "index.html");
+  constexpr const char* kTitle = "stoneskip: what the main job found";
+  refuse_unless_front_page(out / "index.md", std::string("# ") + kTitle);
+  refuse_unless_front_page(out / "index.html", std::string("<title>") + kTitle + "</title>");
   const std::string page = with_contents(markdown);
   write_text_file(out / "index.md", page);
   write_text_file(out / "index.html", html_page(page));

@@ -3,9 +3,14 @@
 // link each report, movie and throw, and point a finding's in-page link into its report.
 #include <boost/test/unit_test.hpp>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "reports/front/front_page.hpp"
+#include "tools/io/input_error.hpp"
 
 using namespace stoneskip;
 
@@ -74,6 +79,25 @@ BOOST_AUTO_TEST_CASE(two_reports_of_one_title_are_told_apart_by_folder) {
   BOOST_TEST(has(md, "### [Wii Remote captures (`captures/`)](captures/index.md)"));
   BOOST_TEST(has(md, "### [Wii Remote captures (`capture_scene/`)](capture_scene/index.md)"));
   BOOST_TEST(has(md, "### [Water surface verification](waves/index.md)"));
+}
+
+BOOST_AUTO_TEST_CASE(the_page_replaces_a_front_page_but_not_someone_s_index) {
+  // Oracle: the output contract: a file stoneskip did not write is never replaced. A folder with
+  // someone's index.md is refused and the file kept; the page itself is written, then rewritten.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("stoneskip_front_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string page = front_page_markdown(two_reports());
+  write_front_page(dir, page);
+  write_front_page(dir, page);  // its own page: replaced
+  { std::ofstream(dir / "index.md") << "# My notes\n"; }
+  BOOST_CHECK_THROW(write_front_page(dir, page), InputError);
+  std::ifstream in(dir / "index.md");
+  std::string first;
+  std::getline(in, first);
+  BOOST_TEST(first == "# My notes");
+  fs::remove_all(dir);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -441,6 +441,14 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
   double frame_end_s = 0;
   long frame_rhs0 = 0;
 
+  // Guards (adaptive steps): a window of max_steps_per_ms steps must span 1 ms or more; and in the
+  // physical convention, whose forces only take energy away (model/README.md §1.6), a total energy
+  // above kRunawayFactor × (release energy + 1 J) is a state that ran away (steps forced by a
+  // budget far beyond what the throw allows, or an unstable fixed step), not a throw.
+  constexpr double kRunawayFactor = 1e3;
+  const double runaway_J = kRunawayFactor * (std::abs(energy(initial)) + 1.0);
+  long window_steps = 0;
+  double window_t = 0;
   bool going = settle(0);
   record(0, s, now.wet() ? wetted_area(s) : 0.0);
   double next_output = o.output_dt_s;
@@ -602,6 +610,30 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
     ++r.stats.steps;
     if (near) ++r.stats.contact_steps;
     const double t_new = t + dt;
+    if (adaptive && r.stats.steps - window_steps >= o.max_steps_per_ms) {
+      if (t_new - window_t < 1e-3) {
+        std::ostringstream m;
+        m << "the adaptive step collapsed: " << r.stats.steps - window_steps << " steps from t = " << window_t
+          << " s to " << t_new << " s, less than 1 ms (RealtimeOptions::max_steps_per_ms): a contact too stiff for "
+          << "an explicit scheme, or a vertex held at the surface (the CVODE reference, implicit, may solve it)";
+        failed(t_new, m.str());
+        s = s_new;
+        t = t_new;
+        break;
+      }
+      window_steps = r.stats.steps;
+      window_t = t_new;
+    }
+    if (env.convention == Convention::physical && !(energy(s_new) <= runaway_J)) {
+      std::ostringstream m;
+      m << "the state ran away: energy " << energy(s_new) << " J against " << energy(initial)
+        << " J at release, which the physical convention's forces cannot give (steps of " << dt
+        << " s: too long for this throw)";
+      failed(t_new, m.str());
+      s = s_new;
+      t = t_new;
+      break;
+    }
     // Transitions inside the step, located on the step's cubic Hermite interpolant (the surface is
     // fixed during a step): a contact starts where the first vertex goes under, ends where the last
     // comes out, and the stone sinks where the last goes under.

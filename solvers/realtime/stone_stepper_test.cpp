@@ -520,4 +520,38 @@ BOOST_AUTO_TEST_CASE(cpu_time_is_the_thread_s_own_and_wall_time_includes_waiting
   BOOST_TEST(r.stats.cpu_s <= 0.02, "cpu_s " << r.stats.cpu_s << " s for 10 flight steps and a 50 ms sleep");
 }
 
+BOOST_AUTO_TEST_CASE(a_state_that_runs_away_fails_and_a_collapsing_step_gives_up) {
+  // Oracle: the physical convention's passivity (model/README.md §1.6: every face's power is −C ρ
+  // u³ S ≤ 0, the air's too), so the energy never exceeds the release energy. A budget of 4
+  // right-hand sides per 0.5 s frame forces a 0.5 s step through the first contact, which gives
+  // the stone ~1e9 J: the run must fail saying so, not end as a throw that sank.
+  const Stone stone = prism_stone();
+  Environment env;
+  set_default_water_model(env);
+  ThrowParameters p;
+  p.speed_m_s = 8;
+  p.path_angle_deg = 10;
+  p.attack_angle_deg = 10;
+  p.spin_rev_s = 10;
+  p.height_m = 0.05;
+  RealtimeOptions o;
+  o.record_trajectory = false;
+  o.t_max_s = 2;
+  o.rhs_per_frame = 4;
+  o.frame_dt_s = 0.5;
+  const ThrowResult forced = run_realtime(stone, env, initial_state(stone, p), o);
+  BOOST_TEST(forced.outcome == Outcome::failed);
+  BOOST_TEST(forced.outcome_detail.find("ran away") != std::string::npos, forced.outcome_detail);
+  // A plate 2 m across of density 1 kg/m³ (mass 25 g) meets forces that a 30 g stone of 6 cm
+  // meets: the contact is far too stiff for an explicit scheme at 1e-9, whose steps collapse to
+  // nanoseconds. The run must give up at the guard (20 000 steps in less than 1 ms), within a
+  // bounded work, instead of spinning for minutes.
+  const Stone plate = prism_stone(1.0, 0.008, 11, 1.0);
+  o.rhs_per_frame = 0;
+  const ThrowResult stiff = run_realtime(plate, env, initial_state(plate, p), o);
+  BOOST_TEST(stiff.outcome == Outcome::failed);
+  BOOST_TEST(stiff.outcome_detail.find("collapsed") != std::string::npos, stiff.outcome_detail);
+  BOOST_TEST(stiff.stats.steps <= 2 * o.max_steps_per_ms + 100000);  // the guard's windows, and what led to them
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -86,7 +86,9 @@ void finish_result(ThrowResult& r, const ContactLog& log, const RigidState& fina
   r.lateral_m = d.y();
   r.max_energy_gain_J = 0;
   for (const auto& c : r.contacts) {
-    if (c.end_s > c.start_s) r.max_energy_gain_J = std::max(r.max_energy_gain_J, c.exit_energy_J - c.entry_energy_J);
+    // A contact opened and closed within one step (end = start) counts too: its energies are those
+    // of two located states, and a gain between them is a gain.
+    if (c.end_s >= c.start_s) r.max_energy_gain_J = std::max(r.max_energy_gain_J, c.exit_energy_J - c.entry_energy_J);
   }
 }
 

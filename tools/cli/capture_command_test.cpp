@@ -258,4 +258,33 @@ BOOST_AUTO_TEST_CASE(a_scene_without_water_is_refused) {
   BOOST_TEST(o.status == 2);
 }
 
+BOOST_AUTO_TEST_CASE(synthesize_writes_the_shipped_set_and_replaces_nothing_it_did_not_write) {
+  // Oracle: the shipped files themselves. Into a new folder synthesize writes them byte for byte;
+  // over a file it did not write (different bytes) and through a link it refuses, exit 2, and the
+  // user's file is as it was.
+  const fs::path dir = fs::temp_directory_path() / ("stoneskip_synth_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  BOOST_REQUIRE(run("capture synthesize --out " + dir.string()).status == 0);
+  auto bytes = [](const fs::path& p) {
+    std::ifstream f(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(f), {});
+  };
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    ++files;
+    BOOST_TEST(bytes(e.path()) == bytes(fs::path("cases/captures") / e.path().filename()), e.path().filename());
+  }
+  BOOST_TEST(files >= 16);
+  BOOST_TEST(run("capture synthesize --out " + dir.string()).status == 0);  // the same bytes: left alone
+  { std::ofstream(dir / "gentle_sidearm.log") << "USER\n"; }
+  BOOST_TEST(run("capture synthesize --out " + dir.string()).status == 2);
+  BOOST_TEST(bytes(dir / "gentle_sidearm.log") == "USER\n");
+  const fs::path link = dir.string() + "_link";
+  fs::remove(link);
+  fs::create_directory_symlink(dir, link);
+  BOOST_TEST(run("capture synthesize --out " + link.string()).status == 2);
+  fs::remove(link);
+  fs::remove_all(dir);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -521,4 +521,11 @@ BOOST_AUTO_TEST_CASE(the_limits_are_lifted_by_their_flags) {
                  {"above the limit of 1 MB"});
 }
 
+BOOST_AUTO_TEST_CASE(a_nan_limit_and_an_unknown_command_are_named) {
+  // Oracle: the command-line contract (one line naming what is wrong, exit 2). NaN passes every
+  // range check by comparing false; a misspelt command was only "a subcommand is required".
+  expect_refused(run_apart("run cases/spin_sweep_base.toml --max-memory-gb nan"), {"--max-memory-gb: not a number: nan"});
+  expect_refused(run_apart("frobnicate cases/spin_sweep_base.toml"), {"unknown command 'frobnicate'"});
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -91,6 +91,15 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("stoneskip ") + stoneskip::kVersion + "\nshipped cases: " +
                                         (shipped.empty() ? std::string("none found") : shipped.string()) + "\n");
   for (const auto& add : stoneskip::cli::registered_commands()) add(app);
+  // A first word that is no option and no command is named (CLI11 would only say that a
+  // subcommand is required).
+  bool known = argc < 2 || argv[1][0] == '-';
+  for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
+    known = known || sub->check_name(argv[1]);
+  if (!known) {
+    std::fprintf(stderr, "stoneskip: unknown command '%s' (see --help)\n", one_line(argv[1]).c_str());
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -69,6 +69,9 @@ void add_regress(CLI::App& app) {
     std::vector<BounceSweepSpec> specs;
     for (const auto& p : paths) {
       stored.push_back(read_baseline(p));
+      // --update rewrites the file: one that may not be written (a link, say) is refused now, not
+      // after the sweep.
+      if (*update) check_output_destination(p);
       specs.push_back(sweep_of(stored.back()));
       enforce_limits(estimate_regress({specs.back()}), *limits, p);
     }

@@ -141,4 +141,33 @@ BOOST_AUTO_TEST_CASE(a_misspelt_key_is_bad_input_naming_the_key) {
   BOOST_TEST(r.err.find(bad.string()) != std::string::npos);
 }
 
+BOOST_AUTO_TEST_CASE(a_zero_where_a_positive_setting_is_due_is_bad_input_not_the_case_s_value) {
+  // Oracle: strict case files — a key written with a value out of its range is an error naming
+  // it; only a key left out means "the case's". t_max_s = 0 once ran with the case's 10 s.
+  BOOST_REQUIRE(fs::exists(kStored));
+  for (const std::string key : {"t_max_s", "dt_s", "contact_dt_s"}) {
+    const fs::path bad = copy_baseline(kStored, "zero_" + key + ".toml", [&](const std::string& t) {
+      return std::regex_replace(t, std::regex("\ncompare_tolerance ="), "\n" + key + " = 0\ncompare_tolerance =");
+    });
+    const Run r = run("regress --baseline " + bad.string());
+    BOOST_TEST(r.status == 2, key << ": exit " << r.status);
+    BOOST_TEST(r.err.find(key) != std::string::npos, r.err);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(update_refuses_a_linked_baseline_before_any_work) {
+  // Oracle: the output contract (a link is never written through) and "bad input before any
+  // work": the refusal comes before the sweep starts, which prints its "regress: N baseline" line.
+  const fs::path copy = copy_baseline(kStored, "linked_target.toml", [](const std::string& t) { return t; });
+  const fs::path link = scratch_dir() / "linked.toml";
+  fs::remove(link);
+  fs::create_symlink(copy, link);
+  const std::string before = slurp(copy);
+  const Run r = run("regress --baseline " + link.string() + " --update");
+  BOOST_TEST(r.status == 2);
+  BOOST_TEST(r.err.find("symbolic link") != std::string::npos, r.err);
+  BOOST_TEST(r.out.find("regress:") == std::string::npos, r.out);
+  BOOST_TEST(slurp(copy) == before);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,5 +1,7 @@
 #include "tools/io/toml_table.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cfloat>
@@ -30,6 +32,19 @@ std::string short_type(const toml::value& v) {
 std::string num(double v) {
   char b[64];
   std::snprintf(b, sizeof b, "%.6g", v);
+  return b;
+}
+
+// A value outside [lo, hi] as the message shows it: six digits, or the shortest text that reads
+// back as it where six digits would print a bound ("90.0000001" is not shown as 90).
+std::string got(double v, double lo, double hi) {
+  const std::string six = num(v);
+  if (six != num(lo) && six != num(hi)) return six;
+  char b[64];
+  for (int digits = 7; digits <= 17; ++digits) {
+    std::snprintf(b, sizeof b, "%.*g", digits, v);
+    if (std::strtod(b, nullptr) == v) break;
+  }
   return b;
 }
 
@@ -217,11 +232,42 @@ bool TomlTable::has(const std::string& key) const {
   return table_->is_table() && table_->as_table().count(key) > 0;
 }
 
+namespace {
+// Levenshtein distance, compared without case (a key written "Solver" or "radiuss_m" for the
+// one asked for).
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) == std::tolower(static_cast<unsigned char>(b[j - 1]));
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+}  // namespace
+
 const toml::value& TomlTable::at(const std::string& key) const {
   used_.insert(key);
   if (!has(key)) {
     const auto [f, line] = where("");
-    throw_input_error(f == kSetName ? file_ : f, f == kSetName ? 0 : line, full(key), "missing key");
+    // A key of this table within two edits of the missing one (or differing in case only) is
+    // probably it, misspelt: named with its line, so the error points at the typo.
+    std::string hint;
+    if (table_->is_table())
+      for (const auto& kv : table_->as_table())
+        if (!used_.count(kv.first) && edit_distance(kv.first, key) <= std::min<std::size_t>(2, key.size() / 3)) {
+          const auto [kf, kline] = where(kv.first);
+          hint = " (is '" + kv.first + "'" + (kf == file_ && kline > 0 ? " on line " + std::to_string(kline) : "") +
+                 " a misspelling of it?)";
+          break;
+        }
+    throw_input_error(f == kSetName ? file_ : f, f == kSetName ? 0 : line, full(key), "missing key" + hint);
   }
   return table_->as_table().at(key);
 }
@@ -230,7 +276,10 @@ std::pair<std::string, long> TomlTable::where(const std::string& key) const {
   const toml::value* v = table_;
   if (!key.empty() && has(key)) v = &table_->as_table().at(key);
   const auto loc = v->location();
-  if (loc.file_name() == kSetName) return {kSetName, 0};
+  // From an override: its value (parsed as "--set"), or a table an override's dotted path made
+  // (no location at all).
+  if (loc.file_name() == kSetName || (v != table_ && (loc.file_name().empty() || loc.file_name() == "unknown file")))
+    return {kSetName, 0};
   if (loc.file_name() != file_) return {file_, 0};  // made by an override: no line of the file
   long line = static_cast<long>(loc.line());
   if (lines_ && line > 0) {
@@ -384,7 +433,7 @@ void TomlTable::require_non_negative(const std::string& key, double value) const
 }
 
 void TomlTable::require_in(const std::string& key, double value, double lo, double hi) const {
-  if (!(value >= lo && value <= hi)) fail(key, "must be in [" + num(lo) + ", " + num(hi) + "] (got " + num(value) + ")");
+  if (!(value >= lo && value <= hi)) fail(key, "must be in [" + num(lo) + ", " + num(hi) + "] (got " + got(value, lo, hi) + ")");
 }
 
 double TomlTable::bounded(const std::string& key, double lo, double hi) {

@@ -110,11 +110,12 @@ BounceBaseline read_baseline(const std::string& path) {
     Scheme sc;
     if (!b.scheme.empty() && !parse_scheme(b.scheme, sc))
       t.fail("scheme", "'" + b.scheme + "' is not bs32, semi_implicit_euler, midpoint or rk4");
-    // 0 or absent: the case's; otherwise checked with the case's [solver] in sweep_of().
+    // Absent: the case's (kept as 0); given: positive, and checked with the case's [solver] in
+    // sweep_of().
     b.dt_s = t.number_or("dt_s", 0);
     b.contact_dt_s = t.number_or("contact_dt_s", 0);
-    t.require_non_negative("dt_s", b.dt_s);
-    t.require_non_negative("contact_dt_s", b.contact_dt_s);
+    if (t.has("dt_s")) t.require_positive("dt_s", b.dt_s);
+    if (t.has("contact_dt_s")) t.require_positive("contact_dt_s", b.contact_dt_s);
   } else if (solver == "reference") {
     b.solver = SolverKind::reference;
     b.method = t.string_or("method", "");
@@ -122,8 +123,8 @@ BounceBaseline read_baseline(const std::string& path) {
     if (!b.method.empty() && !parse_reference_method(b.method, m)) t.fail("method", "'" + b.method + "' is not bdf or adams");
     b.rtol = t.number_or("rtol", 0);
     b.atol = t.number_or("atol", 0);
-    if (b.rtol != 0) t.require_in("rtol", b.rtol, 1e-15, 1e-2);
-    if (b.atol != 0) t.require_in("atol", b.atol, 1e-20, 1);
+    if (t.has("rtol")) t.require_in("rtol", b.rtol, 1e-15, 1e-2);  // absent: the case's
+    if (t.has("atol")) t.require_in("atol", b.atol, 1e-20, 1);
     b.restart = t.string_or("restart", "");
     RestartStrategy rs;
     if (!b.restart.empty() && !parse_restart_strategy(b.restart, rs))
@@ -132,7 +133,7 @@ BounceBaseline read_baseline(const std::string& path) {
     t.fail("solver", "'" + solver + "' is not realtime or reference");
   }
   b.t_max_s = t.number_or("t_max_s", 0);
-  if (b.t_max_s != 0) t.require_in("t_max_s", b.t_max_s, kMinDuration_s, kMaxDuration_s);
+  if (t.has("t_max_s")) t.require_in("t_max_s", b.t_max_s, kMinDuration_s, kMaxDuration_s);
   // The bisection halves a bracket of at most the grid's span down to threshold_tolerance: at
   // most log2(span / tolerance) ≤ 30 halvings per threshold with this lower bound (a tolerance of
   // 1e-300 would never be reached: the midpoint rounds onto an end).

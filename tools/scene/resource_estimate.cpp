@@ -131,7 +131,8 @@ ResourceEstimate estimate_wave(const WaveCase& c) {
 ResourceEstimate estimate_sweep(const ResourceEstimate& heaviest_throw, double throws, double row_bytes, double threads) {
   ResourceEstimate e;
   e.add_memory(throws * row_bytes, "the table of " + sci(throws) + " throws");
-  e.add_memory(threads * heaviest_throw.memory_bytes, sci(threads) + " throws at once");
+  const double at_once = std::min(threads, std::max(throws, 1.0));  // no more threads than throws are started
+  e.add_memory(at_once * heaviest_throw.memory_bytes, sci(at_once) + " throws at once");
   for (const auto& w : heaviest_throw.work) {
     e.add_work(w.count, w.limit, w.what + " in the heaviest throw of the design");
     e.add_work(throws * w.count, kSweepWorkFactor * w.limit, "worst-case " + w.what.substr(0, w.what.find(" (")) + " in all (" +

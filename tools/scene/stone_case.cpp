@@ -1,5 +1,6 @@
 #include "tools/scene/stone_case.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -41,6 +42,15 @@ StoneSpec read_stone(TomlTable t, const std::string& file) {
     s.shape = StoneShape::mesh_file;
   else
     t.fail("shape", "must be \"prism\", \"lens\" or \"mesh\" (got \"" + shape + "\")");
+  // A key of the other shapes is named as such, not as a misspelling.
+  const std::vector<std::string> own = s.shape == StoneShape::mesh_file
+                                           ? std::vector<std::string>{"mesh_file", "disk_radius_m"}
+                                           : std::vector<std::string>{"radius_m", "thickness_m", "segments"};
+  for (const char* key : {"mesh_file", "disk_radius_m", "radius_m", "thickness_m", "segments"})
+    if (t.has(key) && std::find(own.begin(), own.end(), key) == own.end())
+      t.fail(key, std::string("is a key of ") +
+                      (s.shape == StoneShape::mesh_file ? "shape \"prism\" or \"lens\"" : "shape \"mesh\"") +
+                      ", not of shape \"" + shape + "\"");
   if (s.shape == StoneShape::mesh_file) {
     s.mesh_file = t.string("mesh_file");
     if (s.mesh_file.empty()) t.fail("mesh_file", "must name a Wavefront OBJ file (got an empty string)");
@@ -121,9 +131,13 @@ void read_throw(TomlTable t, StoneCase& c) {
     s.velocity_m_s = vec3(*st, "velocity_m_s", -kMaxSpeed_m_s, kMaxSpeed_m_s);
     const std::vector<double> q = st->numbers("quaternion_wxyz");
     if (q.size() != 4) st->fail("quaternion_wxyz", "expected 4 numbers (w, x, y, z)");
-    const double qn = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    if (!(qn > 1e-150 && std::isfinite(qn))) st->fail("quaternion_wxyz", "must not be zero");
-    s.orientation = Quat(q[0] / qn, q[1] / qn, q[2] / qn, q[3] / qn);
+    // Normalised with its largest component taken out first, so that neither 1e300 nor 1e-300
+    // overflows or underflows on the way (any direction but zero is an orientation).
+    const double big = std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2]), std::abs(q[3])});
+    if (!(big > 0)) st->fail("quaternion_wxyz", "must not be zero");
+    const double qw = q[0] / big, qx = q[1] / big, qy = q[2] / big, qz = q[3] / big;
+    const double qn = std::sqrt(qw * qw + qx * qx + qy * qy + qz * qz);
+    s.orientation = Quat(qw / qn, qx / qn, qy / qn, qz / qn);
     const Vec3 w = vec3(*st, "angular_velocity_rad_s", -kMaxAngularSpeed_rad_s, kMaxAngularSpeed_rad_s);
     const Mat3 R = s.orientation.toRotationMatrix();
     set_body_angular_velocity(c.stone, s, R.transpose() * w);

@@ -3,6 +3,8 @@
 // and for a law the paper convention does not have; resolved settings that read back the same.
 #include <boost/test/unit_test.hpp>
 
+#include <cmath>
+
 #include "tools/io/input_error.hpp"
 #include "tools/scene/documented_keys.hpp"
 #include "tools/scene/stone_case.hpp"
@@ -105,6 +107,38 @@ BOOST_AUTO_TEST_CASE(a_case_names_a_scheme_and_a_tolerance_and_old_fixed_step_ca
   BOOST_TEST(e.find('\n') == std::string::npos, e);
   const std::string bad = error_of({"solver.scheme=bs32", "solver.rtol=0.5"});
   BOOST_TEST(bad.find("solver.rtol") != std::string::npos, bad);
+}
+
+BOOST_AUTO_TEST_CASE(a_state_quaternion_of_any_size_but_zero_is_an_orientation) {
+  // Oracle: a quaternion names a rotation whatever its length. [1e300, 1e300, 0, 0] overflowed
+  // the norm and was refused as "zero"; it is the quarter turn about x, (1, 1, 0, 0)/√2.
+  auto with_state = [&](const std::string& q) {
+    std::string c = kCase;
+    const auto a = c.find("speed_m_s"), b = c.find("[solver]");
+    c.replace(a, b - a,
+              "[throw.state]\nposition_m = [0.0, 0.0, 0.1]\nvelocity_m_s = [7.9, 0.0, -1.4]\nquaternion_wxyz = " + q +
+                  "\nangular_velocity_rad_s = [0.0, 0.0, 62.8]\n");
+    return c;
+  };
+  const StoneCase big = stone_case_from_document(parse_toml_text(with_state("[1e300, 1e300, 0.0, 0.0]"), "q.toml"));
+  const StoneCase one = stone_case_from_document(parse_toml_text(with_state("[1.0, 1.0, 0.0, 0.0]"), "q.toml"));
+  BOOST_TEST(big.initial.orientation.coeffs().isApprox(one.initial.orientation.coeffs(), 1e-15));
+  BOOST_TEST(std::abs(big.initial.orientation.w() - std::sqrt(0.5)) < 1e-15);
+  try {
+    stone_case_from_document(parse_toml_text(with_state("[0.0, 0.0, 0.0, 0.0]"), "q.toml"));
+    BOOST_FAIL("a zero quaternion was accepted");
+  } catch (const InputError& e) {
+    BOOST_TEST(std::string(e.what()).find("must not be zero") != std::string::npos);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_key_of_another_shape_is_named_as_such_not_as_a_misspelling) {
+  // Oracle: cases/README.md's [stone] keys by shape. radius_m is a prism's key: under shape "mesh"
+  // the error says whose key it is (it said "unknown key (misspelt?)").
+  const std::string e = error_of({"stone.shape=\"mesh\"", "stone.mesh_file=\"x.obj\""});
+  BOOST_TEST(e.find("stone.radius_m: is a key of shape \"prism\" or \"lens\", not of shape \"mesh\"") != std::string::npos, e);
+  const std::string f = error_of({"stone.mesh_file=\"x.obj\""});
+  BOOST_TEST(f.find("stone.mesh_file: is a key of shape \"mesh\", not of shape \"prism\"") != std::string::npos, f);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

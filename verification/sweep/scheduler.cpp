@@ -93,7 +93,10 @@ ScheduleStats run_master(const std::vector<std::uint64_t>& pending, std::size_t 
   ScheduleStats stats;
   stats.ranks = mpi.size();
   const int workers = mpi.size() - 1;
-  const int threads = std::max(workers == 0 ? 1 : 0, options.master_threads);
+  // No more compute threads than throws to compute (--threads 100000 on a 6-throw sweep starts 6).
+  const int threads = static_cast<int>(std::min<std::size_t>(
+      static_cast<std::size_t>(std::max(workers == 0 ? 1 : 0, options.master_threads)),
+      std::max<std::size_t>(pending.size(), workers == 0 ? 1 : 0)));
   stats.master_threads = threads;
   Dispenser dispenser(pending, static_cast<std::size_t>(threads + workers), options.max_chunk);
   LocalResults local;
