@@ -157,7 +157,9 @@ void motion_part(SectionWriter& w, const std::string& key, const Record& c) {
 void release_part(SectionWriter& w, const std::string& key, const Record& c) {
   const Record& th = c.at("throw");
   const Record& s = c.at("settings");
-  const bool gyro_saturated = c.at("motion").at("saturation").flag("gyro_saturated_in_swing");
+  // Records stored before the MotionPlus fill existed lack its bound: their intervals had none.
+  const bool gyro_saturated =
+      c.at("motion").at("saturation").flag("gyro_saturated_in_swing") && s.has_number("max_rate_deg_s");
   w.subheading("The release state, as measured in the room and as mapped to the virtual stone");
   if (!th.flag("computed")) {
     w.text("No release state: the capture's verdict is " + c.at("verdict").text("verdict") + " (its reasons are above).");

@@ -11,7 +11,6 @@
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/hdf5_file.hpp"
 #include "tools/io/input_error.hpp"
-#include "tools/io/input_error.hpp"
 
 namespace stoneskip {
 
@@ -209,8 +208,8 @@ std::string front_page_markdown(const FrontPageInput& in) {
 }
 
 namespace {
-// An existing page is replaced only if it is a front page (stoneskip's own title in its first
-// kilobytes); someone's index.md in that folder is refused, naming it.
+// An existing page is replaced only if it is a front page (stoneskip's own title within its first
+// 4 KB); someone's index.md in that folder is refused, naming it.
 void refuse_unless_front_page(const fs::path& path, const std::string& signature) {
   check_output_destination(path);
   std::error_code ec;

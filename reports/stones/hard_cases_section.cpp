@@ -79,8 +79,10 @@ SectionOutput hard_cases_section(const Record& c) {
   const auto hs = s.has_table("steps_s") ? s.table("steps_s").column("dt_s") : std::vector<double>{};
   w.text("One fixed step h (flight = contact) of " + s.text("scheme") + ", h = " +
          (hs.empty() ? std::string("–") : fmt(hs.front(), 2) + " … " + fmt(hs.back(), 2)) +
-         " s; for each speed the largest h such that every smaller h tried is also (a) finite, (b) finite and without "
-         "energy gain, (c) all that and with the reference's contact and bounce count.");
+         " s; for each speed the largest h such that every smaller h tried is also (a) finite (the run neither "
+         "became NaN nor, in the physical convention, ran away past 10³ × (its release energy + 1 J), where the "
+         "stepper stops it), (b) finite and without energy gain, (c) all that and with the reference's contact and "
+         "bounce count.");
   MarkdownTable mt({"speed (m/s)", "reference bounces / contacts", "(a) finite up to h (s)", "(b) no energy gain up to h (s)",
                     "(c) same contacts up to h (s)"});
   const Table& rows = s.table("rows");

@@ -447,6 +447,10 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
   // budget far beyond what the throw allows, or an unstable fixed step), not a throw.
   constexpr double kRunawayFactor = 1e3;
   const double runaway_J = kRunawayFactor * (std::abs(energy(initial)) + 1.0);
+  // The window holds at least twice the steps of the largest step allowed (a case may allow
+  // nanosecond steps); max_steps_per_ms ≤ 0: no collapse guard.
+  const long collapse_window =
+      o.max_steps_per_ms > 0 ? std::max<long>(o.max_steps_per_ms, static_cast<long>(std::ceil(2e-3 / o.dt_s))) : 0;
   long window_steps = 0;
   double window_t = 0;
   bool going = settle(0);
@@ -610,12 +614,15 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
     ++r.stats.steps;
     if (near) ++r.stats.contact_steps;
     const double t_new = t + dt;
-    if (adaptive && r.stats.steps - window_steps >= o.max_steps_per_ms) {
+    if (adaptive && collapse_window > 0 && r.stats.steps - window_steps >= collapse_window) {
       if (t_new - window_t < 1e-3) {
         std::ostringstream m;
         m << "the adaptive step collapsed: " << r.stats.steps - window_steps << " steps from t = " << window_t
-          << " s to " << t_new << " s, less than 1 ms (RealtimeOptions::max_steps_per_ms): a contact too stiff for "
-          << "an explicit scheme, or a vertex held at the surface (the CVODE reference, implicit, may solve it)";
+          << " s to " << t_new << " s, less than 1 ms (RealtimeOptions::max_steps_per_ms; speed "
+          << s_new.velocity_m_s.norm() << " m/s, spin " << angular_velocity(stone, s_new).norm() << " rad/s, energy "
+          << energy(s_new) << " J against " << energy(initial)
+          << " J at release): a contact too stiff for an explicit scheme, a vertex held at the surface (the CVODE "
+             "reference, implicit, may solve these), or a state running away";
         failed(t_new, m.str());
         s = s_new;
         t = t_new;

@@ -90,9 +90,10 @@ struct RealtimeOptions {
   double output_dt_s = 1e-3;    // trajectory sampling (0: every step); contact transitions always
   bool record_trajectory = true;
   // bs32's step-collapse guard, as the reference's (ReferenceOptions::max_steps_per_ms): the run
-  // fails when this many steps advance it by less than 1 ms (checked on consecutive windows). A
-  // contact too stiff for an explicit scheme, or a vertex held at the surface (a sliding mode),
-  // shrinks the step without bound; bs32 takes about 10 steps a millisecond on a skipping throw.
+  // fails when this many steps (at least twice the steps of dt_s, the largest, in 1 ms) advance it
+  // by less than 1 ms (checked on consecutive windows). A contact too stiff for an explicit
+  // scheme, or a vertex held at the surface (a sliding mode), shrinks the step without bound; bs32
+  // takes about 10 steps a millisecond on a skipping throw. 0 or less: no guard.
   long max_steps_per_ms = 20000;
 };
 

@@ -27,6 +27,12 @@ bool is_hex(std::string_view f) {
   return true;
 }
 
+// A UTF-8 byte-order mark (Windows editors write one) is not part of the first line.
+std::string without_bom(const std::string& text) {
+  constexpr std::string_view kBom = "\xEF\xBB\xBF";
+  return std::string_view(text).substr(0, kBom.size()) == kBom ? text.substr(kBom.size()) : text;
+}
+
 // Looks at up to the first 50 meaningful lines (lines as the readers split them: LF, CR LF or a
 // lone CR).
 std::string detect(const std::vector<TextLine>& lines) {
@@ -88,17 +94,14 @@ void check_sane(const Trace& t) {
 
 std::string detect_capture_format(const std::string& text) {
   try {
-    return detect(split_capture_lines(text, ""));
+    return detect(split_capture_lines(without_bom(text), ""));
   } catch (const InputError&) {
     return "";  // binary data: no format
   }
 }
 
 Trace parse_capture(const std::string& file_text, const std::string& file, const CaptureReadOptions& o) {
-  // A UTF-8 byte-order mark (Windows editors write one) is not part of the first line.
-  constexpr std::string_view kBom = "\xEF\xBB\xBF";
-  const std::string text =
-      std::string_view(file_text).substr(0, kBom.size()) == kBom ? file_text.substr(kBom.size()) : file_text;
+  const std::string text = without_bom(file_text);
   std::string format = o.format;
   const bool csv_options = o.csv.remote != 0 || !o.csv.columns.empty();
   if (format.empty() || format == "auto") {

@@ -139,7 +139,10 @@ BOOST_AUTO_TEST_CASE(a_byte_order_mark_and_lone_cr_line_ends_read_as_the_plain_f
   SyntheticThrow th;
   th.swing_rate_rad_s = 7.0;
   SyntheticTruth truth;
-  for (const std::string& text : {gentle_log(), synthetic_evemu(th, {}, truth), synthetic_gesture(th, {}, truth)}) {
+  const std::string csv = synthetic_wiiyourself_csv(th, {}, {}, truth);
+  const std::string trace = trace_csv_text(parse_capture(gentle_log(), "gentle.log"));
+  for (const std::string& text :
+       {gentle_log(), synthetic_evemu(th, {}, truth), synthetic_gesture(th, {}, truth), csv, trace}) {
     const Trace plain = parse_capture(text, "plain.cap");
     std::string cr = text;
     for (char& c : cr)
@@ -147,6 +150,7 @@ BOOST_AUTO_TEST_CASE(a_byte_order_mark_and_lone_cr_line_ends_read_as_the_plain_f
     for (const std::string& variant : {"\xEF\xBB\xBF" + text, cr}) {
       const Trace t = parse_capture(variant, "variant.cap");
       BOOST_TEST(t.format == plain.format);
+      BOOST_TEST(detect_capture_format(variant) == plain.format);
       BOOST_REQUIRE(t.samples.size() == plain.samples.size());
       bool same = true;
       for (std::size_t k = 0; k < t.samples.size(); ++k)

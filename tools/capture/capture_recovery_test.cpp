@@ -187,7 +187,8 @@ BOOST_AUTO_TEST_CASE(a_saturated_motionplus_widens_the_intervals_to_hold_the_tru
   const CaptureAnalysis a = analyse_capture(parse_capture(log, "fast.log"), o);
   BOOST_REQUIRE(a.gyro_saturated_in_swing);
   BOOST_REQUIRE(a.can_throw());
-  BOOST_TEST_MESSAGE("saturated: spin " << a.spin_rev_s.nominal << " [" << a.spin_rev_s.low << ", " << a.spin_rev_s.high
+  BOOST_TEST_MESSAGE("saturated: spin " << a.measured_spin_rev_s.nominal << " [" << a.measured_spin_rev_s.low << ", "
+                     << a.measured_spin_rev_s.high
                      << "] truth " << truth.spin_rev_s << "; speed " << a.measured_speed_m_s.nominal << " ["
                      << a.measured_speed_m_s.low << ", " << a.measured_speed_m_s.high << "] truth " << truth.speed_m_s
                      << "; attack " << a.attack_angle_deg.nominal << " [" << a.attack_angle_deg.low << ", "

@@ -27,17 +27,23 @@ constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 constexpr double kWyZero = 0x1F7F, kWySlowScale = 0.05, kWyFastScale = 0.25;
 constexpr int kMaxMotionPlusWord = 0x3fff;
 
-// Separators outside double quotes are counted (a quoted field may hold any of them).
+// Fields split at `sep` (RFC 4180): a field that opens with a double quote (after blanks) runs to
+// its closing quote and may hold the separator, "" inside it standing for a quote (kept doubled:
+// the readers take numbers and names, never quoted text apart); a quote elsewhere in a field is
+// an ordinary character (a header `Size (")`). Empty when a quoted field is left open
+// (`unterminated` set).
+std::vector<std::string_view> split_row(std::string_view line, char sep, bool* unterminated = nullptr);
+
+// The separator is the most frequent of `,` `;` and tab between fields (not inside quoted ones).
 char separator_of(std::string_view line) {
-  std::size_t commas = 0, semis = 0, tabs = 0;
-  bool quoted = false;
-  for (char c : line) {
-    if (c == '"') quoted = !quoted;
-    else if (!quoted) commas += c == ',', semis += c == ';', tabs += c == '\t';
+  std::size_t best_count = 0;
+  char best = 0;
+  for (char sep : {',', ';', '\t'}) {
+    bool open = false;
+    const std::size_t count = split_row(line, sep, &open).size();
+    if (!open && count > 1 && count - 1 > best_count) best_count = count - 1, best = sep;
   }
-  if (commas == 0 && semis == 0 && tabs == 0) return 0;
-  if (commas >= semis && commas >= tabs) return ',';
-  return semis >= tabs ? ';' : '\t';
+  return best;
 }
 
 std::string_view unquote(std::string_view f) {
@@ -46,25 +52,35 @@ std::string_view unquote(std::string_view f) {
   return f;
 }
 
-// Fields split at `sep` outside double quotes (RFC 4180: a quoted field may hold the separator,
-// and "" inside it is a quote; the field is kept as written between its quotes). Empty when a
-// quote is left open (`unterminated` set).
-std::vector<std::string_view> split_row(std::string_view line, char sep, bool* unterminated = nullptr) {
+std::vector<std::string_view> split_row(std::string_view line, char sep, bool* unterminated) {
   std::vector<std::string_view> out;
-  std::size_t begin = 0;
-  bool quoted = false;
-  for (std::size_t i = 0; i <= line.size(); ++i) {
-    if (i < line.size() && line[i] == '"') quoted = !quoted;  // "" toggles twice: stays inside
-    if (i == line.size() || (!quoted && line[i] == sep)) {
-      if (i == line.size() && quoted) {
-        if (unterminated) *unterminated = true;
-        return {};
-      }
-      out.push_back(unquote(line.substr(begin, i - begin)));
-      begin = i + 1;
-    }
-  }
+  std::size_t begin = 0, i = 0;
   if (unterminated) *unterminated = false;
+  while (true) {
+    std::size_t j = begin;
+    while (j < line.size() && (line[j] == ' ' || (line[j] == '\t' && sep != '\t'))) ++j;
+    i = j;
+    if (j < line.size() && line[j] == '"') {
+      // A quoted field: to the quote not doubled.
+      for (i = j + 1;; ++i) {
+        if (i >= line.size()) {
+          if (unterminated) *unterminated = true;
+          return {};
+        }
+        if (line[i] != '"') continue;
+        if (i + 1 < line.size() && line[i + 1] == '"') {
+          ++i;  // "" inside: a quote
+          continue;
+        }
+        ++i;
+        break;
+      }
+    }
+    while (i < line.size() && line[i] != sep) ++i;
+    out.push_back(unquote(line.substr(begin, i - begin)));
+    if (i >= line.size()) break;
+    begin = i + 1;
+  }
   return out;
 }
 

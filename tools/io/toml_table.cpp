@@ -277,8 +277,9 @@ std::pair<std::string, long> TomlTable::where(const std::string& key) const {
   if (!key.empty() && has(key)) v = &table_->as_table().at(key);
   const auto loc = v->location();
   // From an override: its value (parsed as "--set"), or a table an override's dotted path made
-  // (no location at all).
-  if (loc.file_name() == kSetName || (v != table_ && (loc.file_name().empty() || loc.file_name() == "unknown file")))
+  // (a table with no location at all; a sweep's axis values, also without one, are not tables).
+  if (loc.file_name() == kSetName ||
+      (v != table_ && v->is_table() && (loc.file_name().empty() || loc.file_name() == "unknown file")))
     return {kSetName, 0};
   if (loc.file_name() != file_) return {file_, 0};  // made by an override: no line of the file
   long line = static_cast<long>(loc.line());

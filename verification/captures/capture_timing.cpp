@@ -71,8 +71,10 @@ TimedSamples analyse_timing(const Trace& trace, const TimingOptions& o) {
   // intervals are shorter than half the median mean interval over kBurstWindow intervals (host
   // jitter alone makes a few; lost reports make intervals longer, not shorter), the stamps are
   // grouped into bursts at those short intervals. A burst is stamped when its last report arrives,
-  // so the time from one burst's last stamp to the next's holds the next burst's reports: the
-  // period is the median of that time over their number.
+  // so the time from one burst's last stamp to a later one's holds the reports of the bursts
+  // between: the period is the median, over runs of consecutive bursts holding at least
+  // kBurstWindow reports (so bursts of varying size, 2, 3, 2, 3 from a 25 ms poll of a 100 Hz
+  // remote, average out), of that time over their number.
   constexpr std::size_t kBurstWindow = 8;
   std::vector<std::size_t> burst_end;  // index of each burst's last stamp (bursts only)
   if (dt.size() >= 2 * kBurstWindow) {
@@ -87,8 +89,12 @@ TimedSamples analyse_timing(const Trace& trace, const TimingOptions& o) {
         if (dt[k] >= split) burst_end.push_back(k);
       burst_end.push_back(dt.size());
       std::vector<double> per_report;
-      for (std::size_t g = 1; g < burst_end.size(); ++g)
-        per_report.push_back((stamps[burst_end[g]] - stamps[burst_end[g - 1]]) / double(burst_end[g] - burst_end[g - 1]));
+      for (std::size_t g = 0, h = 1; g + 1 < burst_end.size(); ++g) {
+        h = std::max(h, g + 1);
+        while (h + 1 < burst_end.size() && burst_end[h] - burst_end[g] < kBurstWindow) ++h;
+        if (burst_end[h] - burst_end[g] < kBurstWindow) break;  // the rest holds fewer reports
+        per_report.push_back((stamps[burst_end[h]] - stamps[burst_end[g]]) / double(burst_end[h] - burst_end[g]));
+      }
       if (!per_report.empty()) {
         std::nth_element(per_report.begin(), per_report.begin() + per_report.size() / 2, per_report.end());
         s.period_s = per_report[per_report.size() / 2];
@@ -117,10 +123,13 @@ TimedSamples analyse_timing(const Trace& trace, const TimingOptions& o) {
     s.max_jitter_s = std::max(s.max_jitter_s, std::abs(dt[k] - s.period_s));
   };
   if (s.bursts) {
-    // Each burst's last report is as many slots after the previous burst's last as the time
-    // between them holds periods, and at least as many as the burst has reports; the others
-    // precede it slot by slot. Slots skipped are reports lost. Every interval inside a burst and
-    // every one into a burst that skips no slot is the bursts' jitter.
+    // Each burst's last report is as many slots after the previous burst's last as it has reports,
+    // and more where the time between them exceeds that by three quarters of a period or more: a
+    // poll that is no whole number of periods (25 ms of a 100 Hz remote: bursts of 2 and 3 in
+    // 2.5 periods) must not count a loss in every short burst, so a loss needs most of a period
+    // to show. The others precede it slot by slot; slots skipped are reports lost (an estimate,
+    // within a report per burst). Every interval inside a burst and every one into a burst that
+    // skips no slot is the bursts' jitter.
     std::size_t first = 0;
     for (std::size_t g = 0; g < burst_end.size(); ++g) {
       const std::size_t last = burst_end[g];
@@ -129,7 +138,7 @@ TimedSamples analyse_timing(const Trace& trace, const TimingOptions& o) {
         const std::size_t prev = burst_end[g - 1];
         const long reports = long(last - prev);
         const double x = std::min((stamps[last] - stamps[prev]) / s.period_s, double(kMaxLostPerGap));
-        const long slots_between = std::max(reports, std::lround(x));
+        const long slots_between = std::max(reports, static_cast<long>(std::floor(x + 0.25)));
         end_slot = out.report_index[prev] + slots_between;
         if (slots_between > reports) lost(prev, slots_between - reports + 1);
         else jitter(prev);

@@ -7,8 +7,10 @@
 //     the recording is reported beside it); an interval of gap_factor typical intervals or more is
 //     a gap, and about round(interval / typical) − 1 reports were lost in it. Reports that reach the
 //     host in bursts (more than a quarter of the intervals shorter than half the median mean
-//     interval over 8 consecutive intervals): the typical interval is that windowed median, and
-//     each report's slot is its time since the first over it, rounded (lost reports: slots skipped);
+//     interval over 8 consecutive intervals) are grouped into bursts: the typical interval is the
+//     median, over runs of bursts holding 8 reports or more, of the time between the runs' last
+//     stamps over their reports, and slots are counted burst by burst (a loss where a burst's
+//     time exceeds its reports by ¾ of a period or more);
 //   * jitter = standard deviation of the intervals that are not gaps, with the largest deviation,
 //     the shortest and longest interval and the number of equal stamps;
 //   * the clock (ClockModel): a Wii Remote sends its reports on its own regular clock and the host
@@ -53,8 +55,8 @@ struct TimingStats {
   std::size_t repeated = 0;     // dropped as repeats
   std::size_t used = 0;
   double duration_s = 0;
-  double period_s = 0;          // median interval
-  double rate_hz = 0;           // 1 / median interval
+  double period_s = 0;          // median interval (bursts: see above)
+  double rate_hz = 0;           // 1 / period_s
   double mean_rate_hz = 0;      // (used − 1) / duration
   double jitter_s = 0;          // std of the non-gap intervals
   double max_jitter_s = 0;      // largest |interval − period| among non-gap intervals
@@ -68,8 +70,7 @@ struct TimingStats {
   double longest_gap_s = 0;
   bool nominal = false;         // times from the nominal rate (no host stamps)
   bool ok = false;              // a positive period could be found
-  bool bursts = false;          // the reports reached the host in bursts: the period is the median
-                                // mean interval over 8 consecutive intervals, slots from the time
+  bool bursts = false;          // the reports reached the host in bursts (see above)
 };
 
 struct TimedSamples {

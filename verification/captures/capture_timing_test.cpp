@@ -2,6 +2,7 @@
 // (its rate, the reports it dropped) and independent computations of the statistics.
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -138,8 +139,25 @@ BOOST_AUTO_TEST_CASE(reports_reaching_the_host_in_bursts_keep_their_rate_and_los
       BOOST_TEST(t.stats.rate_hz == 100.0, boost::test_tools::tolerance(1e-6));
       BOOST_TEST(t.stats.dropped_reports == 3);
       BOOST_TEST(t.stats.jitter_s > 0.003);  // stamps up to b − 1 periods from their slots: a caveat
+      // The slots: increasing, and the last report in the last of the 396 slots.
+      BOOST_TEST(std::is_sorted(t.report_index.begin(), t.report_index.end()));
+      BOOST_TEST((std::adjacent_find(t.report_index.begin(), t.report_index.end()) == t.report_index.end()));
+      BOOST_TEST(t.report_index.back() == 395);
     }
   }
+  // A logger polling every 25 ms reads bursts of 2 and 3 in turn (2.5 periods a poll): the rate
+  // is still 100 Hz (to the 8-report runs' rounding), and no loss is counted where none happened.
+  std::vector<double> polled;
+  for (long n = 0; n < 400; ++n) {
+    const double sent = 1.0 + 0.01 * double(n);
+    const double poll = 1.0 + 0.025 * std::ceil((sent - 1.0) / 0.025 + 1e-9);  // the next poll after it
+    polled.push_back(poll + 0.0002 * double(n % 3));
+  }
+  std::sort(polled.begin(), polled.end());
+  const TimedSamples p = analyse_timing(stamped(polled));
+  BOOST_TEST(p.stats.bursts);
+  BOOST_TEST(std::abs(p.stats.rate_hz - 100.0) <= 2.0, p.stats.rate_hz);
+  BOOST_TEST(p.stats.dropped_reports == 0);
   // A regular stream with host jitter is no burst (the windowed and single medians agree).
   std::vector<double> steady;
   for (long n = 0; n < 400; ++n) steady.push_back(1.0 + 0.01 * double(n) + 0.002 * ((n * 7919) % 3 - 1));

@@ -27,7 +27,9 @@ double FrameBudgetRung::match_fraction() const { return compared > 0 ? double(ma
 void count_budget_matches(FrameBudgetRung& rung, const std::vector<int>& reference) {
   rung.compared = rung.matched = 0;
   for (std::size_t i = 0; i < reference.size() && i < rung.bounces.size(); ++i) {
-    if (reference[i] < 0 || rung.bounces[i] < 0) continue;
+    // A rung's failed run (−1: a state that ran away under forced steps, say) did not give the
+    // reference's count: compared, not matched.
+    if (reference[i] < 0) continue;
     ++rung.compared;
     if (rung.bounces[i] == reference[i]) ++rung.matched;
   }

@@ -45,7 +45,8 @@ std::vector<FrameBudgetRung> run_frame_budget_ladder(const std::vector<ThrowProb
                                                      const std::vector<int>& reference_bounces,
                                                      const FrameBudgetLadderOptions& o);
 
-// Counts the matches of a rung's bounces against reference counts (−1 on either side: not compared).
+// Counts the matches of a rung's bounces against reference counts (a reference of −1: not
+// compared; a rung's −1, a failed run: compared, not matched).
 void count_budget_matches(FrameBudgetRung& rung, const std::vector<int>& reference_bounces);
 
 // The smallest rung at which, and at every larger one, the match fraction is at least `target`;

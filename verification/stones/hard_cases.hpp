@@ -70,7 +70,8 @@ struct StableStepRow {
   double speed_m_s = 0;
   int reference_bounces = 0;
   int reference_contacts = 0;
-  // Largest h such that every step up to it (in the list) is: finite; finite and creates no
+  // Largest h such that every step up to it (in the list) is: finite (the run did not fail: no NaN,
+  // and in the physical convention no run-away, stone_stepper.hpp); finite and creates no
   // energy; finite, no energy and the same contact count as the reference. 0: not even the smallest.
   double largest_finite_s = 0;
   double largest_no_energy_gain_s = 0;
