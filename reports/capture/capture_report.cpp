@@ -165,20 +165,25 @@ void release_part(SectionWriter& w, const std::string& key, const Record& c) {
     w.text("No release state: the capture's verdict is " + c.at("verdict").text("verdict") + " (its reasons are above).");
     return;
   }
+  std::vector<std::string> perturbed{
+      "noise of " + fmt(s.number("accel_noise_g"), 3) + " g and " + fmt(s.number("gyro_noise_deg_s"), 3) +
+          " deg/s per sample",
+      "half a quantisation step", "a calibration offset of ±" + fmt(s.number("accel_bias_g"), 3) + " g per axis",
+      "the release time within its interval",
+      "the MotionPlus scale ±" + fmt(100 * s.number("gyro_scale_rel_uncertainty"), 3) + " %",
+      "the lever arm ±" + fmt(100 * s.number("lever_arm_rel_uncertainty"), 3) + " %",
+      "the thrower's release height ±" + fmt(s.number("height_uncertainty_m"), 3) + " m"};
+  if (th.flag("clipped"))
+    perturbed.push_back("the clipped spans filled with random bumps up to " + fmt(s.number("max_accel_g"), 3) + " g");
+  if (gyro_saturated)
+    perturbed.push_back("the spans where the MotionPlus reached the end of its range filled with random bumps up to " +
+                        fmt(s.number("max_rate_deg_s"), 4) + " deg/s (a saturated rate is a lower bound)");
+  std::string listed;
+  for (std::size_t k = 0; k < perturbed.size(); ++k)
+    listed += (k == 0 ? "" : k + 1 == perturbed.size() ? ", and " : ", ") + perturbed[k];
   w.text("The intervals join the nominal estimate with the " + fmt(s.number("interval_low_percent"), 3) + "–" +
          fmt(s.number("interval_high_percent"), 3) + " % range of " + fmt(th.number("members")) +
-         " re-runs of the whole chain on perturbed inputs: noise of " + fmt(s.number("accel_noise_g"), 3) + " g and " +
-         fmt(s.number("gyro_noise_deg_s"), 3) + " deg/s per sample, half a quantisation step, a calibration offset of ±" +
-         fmt(s.number("accel_bias_g"), 3) + " g per axis, the release time within its interval, the MotionPlus scale ±" +
-         fmt(100 * s.number("gyro_scale_rel_uncertainty"), 3) + " %, the lever arm ±" +
-         fmt(100 * s.number("lever_arm_rel_uncertainty"), 3) + " %, the thrower's release height ±" +
-         fmt(s.number("height_uncertainty_m"), 3) + " m" +
-         (th.flag("clipped") ? ", the clipped spans filled with random bumps up to " + fmt(s.number("max_accel_g"), 3) + " g"
-                             : std::string()) +
-         (gyro_saturated ? ", the spans where the MotionPlus reached the end of its range filled with random bumps up to " +
-                               fmt(s.number("max_rate_deg_s"), 4) + " deg/s (a saturated rate is a lower bound)"
-                         : std::string()) +
-         ".");
+         " re-runs of the whole chain on perturbed inputs: " + listed + ".");
   if (th.flag("clipped"))
     w.text("The accelerometer clipped during the swing, so integrating it gives only a lower bound on the speed (" +
            fmt(th.number("accel_lower_speed_m_s"), 3) + " m/s; " + fmt(th.number("accel_upper_speed_m_s"), 3) +
