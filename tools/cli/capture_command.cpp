@@ -77,7 +77,7 @@ struct CaptureArgs {
   std::string button = "B";
   double saturation_g = 3.4;
   double max_accel_g = 20.0;
-  double max_rate_deg_s = 7700.0;
+  double max_rate_deg_s = CaptureOptions{}.max_rate_deg_s;  // the analysis's default, its source cited there
   int members = 64;
   unsigned seed = 20130101;
   bool json = false;
@@ -132,7 +132,8 @@ void add_common(CLI::App* cmd, CaptureArgs& a) {
   cmd->add_option("--saturation-g", a.saturation_g, "An axis at or beyond this |a| is clipped, g (default 3.4)");
   cmd->add_option("--max-accel-g", a.max_accel_g, "Largest acceleration a clipped span may hide, g (default 20)");
   cmd->add_option("--max-rate-deg-s", a.max_rate_deg_s,
-                  "Largest angular rate a span with the MotionPlus at the end of its range may hide, deg/s (default 7700)");
+                  "Largest angular rate a span with the MotionPlus at the end of its range may hide, deg/s")
+      ->capture_default_str();
   cmd->add_option("--members", a.members, "Ensemble size for the intervals and the bounce distribution (default 64)");
   cmd->add_option("--seed", a.seed, "Seed of the ensemble's random draws");
 }
