@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <utility>
+#include <vector>
 #include <sstream>
 #include <tuple>
 
@@ -130,10 +133,53 @@ std::string rate_label(const Record& c) {
   return c.at("motion").flag("bias_removed") ? "angular rate, bias removed (deg/s)" : "angular rate as read (deg/s)";
 }
 
-// One table with the acceleration and the rate, for both motion figures.
-void add_motion_table(Figure& f, const Record& c) {
-  add_copy(f, "samples", c.at("motion"), "samples",
-           {"t_s", "ax_g", "ay_g", "az_g", "wx_deg_s", "wy_deg_s", "wz_deg_s", "stone_speed_m_s", "lever_speed_m_s"});
+// One table with the acceleration and the rate, for both motion figures: every stored sample,
+// or for a long capture (more than kMaxPlotRows samples: a 10-minute one drew a 43 MB SVG) the
+// samples thinned so that every extreme is kept; with a window, only the samples inside it.
+constexpr std::size_t kMaxPlotRows = 4000;
+void add_motion_table(Figure& f, const Record& c, std::optional<std::pair<double, double>> window = std::nullopt) {
+  const std::vector<std::string> names{"t_s",      "ax_g",     "ay_g",           "az_g",           "wx_deg_s",
+                                       "wy_deg_s", "wz_deg_s", "stone_speed_m_s", "lever_speed_m_s"};
+  const Table& stored = c.at("motion").table("samples");
+  const std::size_t n = stored.rows();
+  if (!window && n <= kMaxPlotRows) {
+    add_copy(f, "samples", c.at("motion"), "samples", names);
+    return;
+  }
+  std::vector<std::vector<double>> col;
+  for (const auto& name : names) col.push_back(stored.column(name));
+  Table t{names, {}};
+  auto row = [&](std::size_t k) {
+    std::vector<double> r;
+    for (const auto& v : col) r.push_back(v[k]);
+    t.add_row(r);
+  };
+  if (window) {
+    for (std::size_t k = 0; k < n; ++k)
+      if (col[0][k] >= window->first && col[0][k] <= window->second) row(k);
+    add_computed_table(f, f.name + "_samples", t,
+                       "the stored samples (" + c.path() + "/motion/samples) from " + g(window->first) + " to " +
+                           g(window->second) + " s, the plot's range, every one");
+    return;
+  }
+  // Runs of k samples; of each, the samples that hold some column's least or largest value in the
+  // run, in time order: at most 2 × 8 of a run, and every peak and trough drawn where it was.
+  const std::size_t k = (n * 2 * (names.size() - 1) + kMaxPlotRows - 1) / kMaxPlotRows;
+  for (std::size_t a = 0; a < n; a += k) {
+    const std::size_t b = std::min(n, a + k);
+    std::vector<std::size_t> keep;
+    for (std::size_t j = 1; j < names.size(); ++j) {
+      keep.push_back(std::size_t(std::min_element(col[j].begin() + a, col[j].begin() + b) - col[j].begin()));
+      keep.push_back(std::size_t(std::max_element(col[j].begin() + a, col[j].begin() + b) - col[j].begin()));
+    }
+    std::sort(keep.begin(), keep.end());
+    keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
+    for (std::size_t i : keep) row(i);
+  }
+  add_computed_table(f, f.name + "_samples", t,
+                     "the stored samples (" + c.path() + "/motion/samples), " + std::to_string(n) +
+                         " of them, thinned for drawing: of each run of " + std::to_string(k) +
+                         ", the samples holding a column's least or largest value in the run");
 }
 
 // The nominal throw's height against distance for each solver that ran, as plot clauses (each
@@ -164,6 +210,8 @@ Figure capture_motion_figure(const std::string& key, const Record& c) {
                   "clipped spans red, the release interval grey (dashed: the release)",
                   1100, 760);
   add_motion_table(f, c);
+  if (c.at("motion").table("samples").rows() > kMaxPlotRows)
+    f.title += " (a long capture, drawn from the samples that hold each run's extremes: every peak is drawn)";
   const Phases p = phases(c);
   const double sat = c.at("motion").at("saturation").number("saturation_g");
   std::ostringstream s;
@@ -186,10 +234,10 @@ std::optional<Figure> capture_swing_figure(const std::string& key, const Record&
                   "The swing: acceleration, angular rate and the stone's speed from the end of the still part to just "
                   "after the release, with the release estimates and their intervals",
                   1100, 980);
-  add_motion_table(f, c);
+  const double t0 = still.number("t1_s") - 0.1, t1 = rel.number("t_high_s") + 0.1;
+  add_motion_table(f, c, std::pair{t0, t1});
   // The estimates at the release: accelerometer, lever arm (a little before and after, to be seen
   // apart) and the one used.
-  const double t0 = still.number("t1_s") - 0.1, t1 = rel.number("t_high_s") + 0.1;
   const double dt = 0.012 * (t1 - t0);  // apart enough to be seen
   const double t = th.number("release_t_s");
   std::vector<std::pair<double, const Record*>> est;

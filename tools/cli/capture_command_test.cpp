@@ -287,4 +287,63 @@ BOOST_AUTO_TEST_CASE(synthesize_writes_the_shipped_set_and_replaces_nothing_it_d
   fs::remove_all(dir);
 }
 
+BOOST_AUTO_TEST_CASE(a_long_capture_is_drawn_thinned_with_every_extreme_and_its_swing_alone) {
+  // Oracle: the capture's own samples. The gentle capture with 60 s of still samples before it
+  // (6 150 in all, a small wiggle on X) is drawn from at most 4 000 rows, among them the sample
+  // with the capture's largest X acceleration (one sample in the swing, which a stride would
+  // likely miss); the swing figure draws only its window, not the whole file.
+  const fs::path dir = fs::temp_directory_path() / ("stoneskip_long_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  BOOST_REQUIRE(run("capture convert cases/captures/gentle_sidearm.log --out " + (dir / "g.csv").string()).status == 0);
+  std::ifstream in(dir / "g.csv");
+  std::string head, first, rest;
+  double largest = -1e300;  // the largest X acceleration of the whole capture
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#' || line.rfind("t_s", 0) == 0) {
+      head += line + "\n";
+      continue;
+    }
+    if (first.empty()) first = line;
+    rest += line + "\n";
+    const std::size_t c = line.find(',');
+    largest = std::max(largest, std::stod(line.substr(c + 1, line.find(',', c + 1) - c - 1)));
+  }
+  const double t0 = std::stod(first.substr(0, first.find(',')));
+  const std::string tail = first.substr(first.find(','));  // ",ax,ay,..."
+  const double ax0 = std::stod(tail.substr(1, tail.find(',', 1) - 1));
+  std::string extra;
+  for (int i = 0; i < 6000; ++i) {
+    const double ax = ax0 + 0.002 * std::sin(0.37 * i);
+    largest = std::max(largest, ax);
+    char t[64];
+    std::snprintf(t, sizeof t, "%.6f,%.6f", t0 - 60 + 0.01 * i, ax);
+    extra += std::string(t) + tail.substr(tail.find(',', 1)) + "\n";
+  }
+  std::ofstream(dir / "long.csv") << head << extra << rest;
+  BOOST_REQUIRE(run("capture validate " + (dir / "long.csv").string() + " --no-reference --no-simulate --out " +
+                    (dir / "out").string()).status == 0);
+  auto rows = [](const fs::path& p) {
+    std::vector<std::vector<double>> r;
+    std::ifstream f(p);
+    for (std::string line; std::getline(f, line);) {
+      if (line.empty() || line[0] == '#') continue;
+      std::istringstream cells(line);
+      std::vector<double> v;
+      for (double x; cells >> x;) v.push_back(x);
+      r.push_back(v);
+    }
+    return r;
+  };
+  const auto motion = rows(dir / "out/figures/long_csv_motion_samples.dat");
+  const auto swing = rows(dir / "out/figures/long_csv_swing_samples.dat");
+  BOOST_TEST(motion.size() <= 4000u);
+  BOOST_TEST(motion.size() >= 100u);
+  double drawn = -1e300;
+  for (const auto& r : motion) drawn = std::max(drawn, r.at(1));
+  BOOST_TEST(drawn == largest, boost::test_tools::tolerance(1e-6));  // the peak of the swing, kept
+  BOOST_TEST(swing.size() < 200u);
+  fs::remove_all(dir);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
