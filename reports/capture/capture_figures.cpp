@@ -155,11 +155,17 @@ void add_motion_table(Figure& f, const Record& c, std::optional<std::pair<double
     t.add_row(r);
   };
   if (window) {
-    for (std::size_t k = 0; k < n; ++k)
-      if (col[0][k] >= window->first && col[0][k] <= window->second) row(k);
+    // The window's samples and one beyond each end, so the lines run to the plot's edges.
+    const auto& t_s = col[0];
+    for (std::size_t k = 0; k < n; ++k) {
+      const bool inside = t_s[k] >= window->first && t_s[k] <= window->second;
+      const bool just_before = t_s[k] < window->first && k + 1 < n && t_s[k + 1] >= window->first;
+      const bool just_after = t_s[k] > window->second && k > 0 && t_s[k - 1] <= window->second;
+      if (inside || just_before || just_after) row(k);
+    }
     add_computed_table(f, f.name + "_samples", t,
                        "the stored samples (" + c.path() + "/motion/samples) from " + g(window->first) + " to " +
-                           g(window->second) + " s, the plot's range, every one");
+                           g(window->second) + " s, the plot's range, every one, and one beyond each end");
     return;
   }
   // Runs of k samples; of each, the samples that hold some column's least or largest value in the
