@@ -133,10 +133,33 @@ std::string rate_label(const Record& c) {
   return c.at("motion").flag("bias_removed") ? "angular rate, bias removed (deg/s)" : "angular rate as read (deg/s)";
 }
 
+// Thinning a long table for drawing: runs of k rows; of each, the rows that hold some column's
+// least or largest value in the run, in order (at most 2 × columns a run): every peak and trough
+// is drawn where it was. k is chosen so that at most about kMaxPlotRows rows are kept.
+constexpr std::size_t kMaxPlotRows = 4000;
+std::size_t extreme_run_length(std::size_t rows, std::size_t columns) {
+  return std::max<std::size_t>(1, (rows * 2 * columns + kMaxPlotRows - 1) / kMaxPlotRows);
+}
+std::vector<std::size_t> extreme_rows(const std::vector<std::vector<double>>& columns, std::size_t k) {
+  std::vector<std::size_t> out;
+  const std::size_t n = columns.empty() ? 0 : columns[0].size();
+  for (std::size_t a = 0; a < n; a += k) {
+    const std::size_t b = std::min(n, a + k);
+    std::vector<std::size_t> keep;
+    for (const auto& v : columns) {
+      keep.push_back(std::size_t(std::min_element(v.begin() + a, v.begin() + b) - v.begin()));
+      keep.push_back(std::size_t(std::max_element(v.begin() + a, v.begin() + b) - v.begin()));
+    }
+    std::sort(keep.begin(), keep.end());
+    keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
+    out.insert(out.end(), keep.begin(), keep.end());
+  }
+  return out;
+}
+
 // One table with the acceleration and the rate, for both motion figures: every stored sample,
 // or for a long capture (more than kMaxPlotRows samples: a 10-minute one drew a 43 MB SVG) the
 // samples thinned so that every extreme is kept; with a window, only the samples inside it.
-constexpr std::size_t kMaxPlotRows = 4000;
 void add_motion_table(Figure& f, const Record& c, std::optional<std::pair<double, double>> window = std::nullopt) {
   const std::vector<std::string> names{"t_s",      "ax_g",     "ay_g",           "az_g",           "wx_deg_s",
                                        "wy_deg_s", "wz_deg_s", "stone_speed_m_s", "lever_speed_m_s"};
@@ -168,20 +191,8 @@ void add_motion_table(Figure& f, const Record& c, std::optional<std::pair<double
                            g(window->second) + " s, the plot's range, every one, and one beyond each end");
     return;
   }
-  // Runs of k samples; of each, the samples that hold some column's least or largest value in the
-  // run, in time order: at most 2 × 8 of a run, and every peak and trough drawn where it was.
-  const std::size_t k = (n * 2 * (names.size() - 1) + kMaxPlotRows - 1) / kMaxPlotRows;
-  for (std::size_t a = 0; a < n; a += k) {
-    const std::size_t b = std::min(n, a + k);
-    std::vector<std::size_t> keep;
-    for (std::size_t j = 1; j < names.size(); ++j) {
-      keep.push_back(std::size_t(std::min_element(col[j].begin() + a, col[j].begin() + b) - col[j].begin()));
-      keep.push_back(std::size_t(std::max_element(col[j].begin() + a, col[j].begin() + b) - col[j].begin()));
-    }
-    std::sort(keep.begin(), keep.end());
-    keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
-    for (std::size_t i : keep) row(i);
-  }
+  const std::size_t k = extreme_run_length(n, names.size() - 1);
+  for (std::size_t i : extreme_rows(std::vector<std::vector<double>>(col.begin() + 1, col.end()), k)) row(i);
   add_computed_table(f, f.name + "_samples", t,
                      "the stored samples (" + c.path() + "/motion/samples), " + std::to_string(n) +
                          " of them, thinned for drawing: of each run of " + std::to_string(k) +
@@ -282,11 +293,37 @@ std::optional<Figure> capture_timing_figure(const std::string& key, const Record
                       (clock ? ", each stamp's distance from the fitted regular clock," : ",") +
                       " and the distribution of the intervals",
                   1100, clock ? 980 : 760);
-  add_copy(f, "intervals", t, "intervals", {"t_s", "interval_ms", "lost_reports", "stamp_minus_clock_ms"});
+  const std::vector<std::string> names{"t_s", "interval_ms", "lost_reports", "stamp_minus_clock_ms"};
+  add_copy(f, "intervals", t, "intervals", names);
+  // The histogram counts every interval; the panels against time draw, for a long capture (a
+  // 10-minute one drew a 14 MB SVG), the intervals that hold each run's extremes and every gap.
+  const Table& stored = t.table("intervals");
+  const std::size_t n = stored.rows();
+  std::string drawn = "intervals";
+  if (n > kMaxPlotRows) {
+    std::vector<std::vector<double>> col;
+    for (const auto& name : names) col.push_back(stored.column(name));
+    const std::size_t k = extreme_run_length(n, 2);
+    std::vector<std::size_t> keep = extreme_rows({col[1], col[3]}, k);
+    for (std::size_t i = 0; i < n; ++i)
+      if (col[2][i] > 0) keep.push_back(i);
+    std::sort(keep.begin(), keep.end());
+    keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
+    Table thin{names, {}};
+    for (std::size_t i : keep) thin.add_row({col[0][i], col[1][i], col[2][i], col[3][i]});
+    drawn = "drawn";
+    add_computed_table(f, f.name + "_drawn", thin,
+                       "the stored intervals (" + t.path() + "/intervals), " + std::to_string(n) +
+                           " of them, thinned for the panels against time: every gap, and of each run of " +
+                           std::to_string(k) + " the intervals holding the run's least or largest interval or stamp "
+                           "offset (the histogram counts them all)");
+    f.title += " (a long capture: the panels against time draw every gap and each run's extremes; the histogram "
+               "counts every interval)";
+  }
   const double p = 1e3 * t.number("period_s"), j = 1e3 * t.number("jitter_s");
   const double max_ms = 1e3 * t.number("max_interval_s");
   const double bin = p / 20;
-  const std::string d = dat(f, "intervals");
+  const std::string d = dat(f, drawn), all = dat(f, "intervals");
   std::ostringstream s;
   s << "set multiplot layout " << (clock ? 3 : 2) << ",1\n" << kStacked
     << "set xlabel 't (s)'\nset ylabel 'interval (ms)'\n" << (max_ms > 4 * p ? "set logscale y\n" : "")
@@ -300,7 +337,7 @@ std::optional<Figure> capture_timing_figure(const std::string& key, const Record
       << g(-p / 2) << " w l dt 2 lc rgb '#555555' notitle\n";
   s << "set xlabel 'interval (ms)'\nset ylabel 'intervals'\nset xrange [0:" << g(std::min(1.05 * max_ms, 6 * p))
     << "]\nset style fill solid 0.6\nset boxwidth " << g(bin) << "\nbin(x) = " << g(bin) << " * floor(x / " << g(bin)
-    << ") + " << g(bin / 2) << "\nplot " << d << " u (bin($2)):(1.0) smooth frequency w boxes lc rgb '" << kAxis[0]
+    << ") + " << g(bin / 2) << "\nplot " << all << " u (bin($2)):(1.0) smooth frequency w boxes lc rgb '" << kAxis[0]
     << "' t 'intervals between kept reports'\nunset multiplot\n";
   f.script = s.str();
   return f;

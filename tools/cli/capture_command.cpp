@@ -49,6 +49,7 @@
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/output_over_input.hpp"
+#include "tools/io/printable_text.hpp"
 #include "tools/io/progress.hpp"
 #include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/stone_case.hpp"
@@ -224,9 +225,9 @@ class FreshSections : public StudySink {
 };
 
 void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
-  std::printf("%s: %s\n", an.source.c_str(), to_string(an.verdict));
-  for (const auto& r : an.reasons) std::printf("  - %s\n", r.c_str());
-  for (const auto& n : an.notes) std::printf("  note: %s\n", n.c_str());
+  std::printf("%s: %s\n", printable_text(an.source).c_str(), to_string(an.verdict));
+  for (const auto& r : an.reasons) std::printf("  - %s\n", printable_text(r).c_str());
+  for (const auto& n : an.notes) std::printf("  note: %s\n", printable_text(n).c_str());
   if (!an.can_throw()) return;
   const auto show = [](const char* name, const Interval& v, const char* unit) {
     std::printf("    %-24s %8.3f  [%.3f, %.3f] %s\n", name, v.nominal, v.low, v.high, unit);
@@ -383,7 +384,7 @@ void validate(const CaptureArgs& a) {
         nlohmann::json j{{"file", file}, {"verdict", "unusable"}, {"reasons", {e.what()}}, {"error", e.what()}};
         std::cout << json_text(j, -1) << std::endl;
       } else {
-        std::fprintf(stderr, "stoneskip: %s\n", e.what());
+        std::fprintf(stderr, "stoneskip: %s\n", printable_text(e.what()).c_str());
       }
     }
   }
@@ -533,7 +534,7 @@ void convert(const CaptureArgs& a) {
   std::optional<Heartbeat> alive(std::in_place, "capture convert");  // a line once reading takes more than 2 s
   Trace t = read_capture(a.files.front(), read_options(a));
   alive.reset();
-  for (const auto& w : t.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  for (const auto& w : t.warnings) std::fprintf(stderr, "warning: %s\n", printable_text(w).c_str());
   write_text_file(a.out, trace_csv_text(t));
   std::printf("wrote %s (%zu samples from %s)\n", a.out.c_str(), t.samples.size(), t.format.c_str());
 }

@@ -343,6 +343,24 @@ BOOST_AUTO_TEST_CASE(a_long_capture_is_drawn_thinned_with_every_extreme_and_its_
   for (const auto& r : motion) drawn = std::max(drawn, r.at(1));
   BOOST_TEST(drawn == largest, boost::test_tools::tolerance(1e-6));  // the peak of the swing, kept
   BOOST_TEST(swing.size() < 200u);
+  // The timing figure: its histogram reads every interval; its panels against time draw at most
+  // about 4 000 of them, every gap and the longest interval among them.
+  const auto intervals = rows(dir / "out/figures/long_csv_timing_intervals.dat");
+  const auto timing = rows(dir / "out/figures/long_csv_timing_drawn.dat");
+  BOOST_TEST(intervals.size() >= 6000u);
+  std::size_t gaps = 0;
+  double longest = 0, longest_drawn = 0;
+  for (const auto& r : intervals) {
+    longest = std::max(longest, r.at(1));
+    if (r.at(2) > 0) {
+      ++gaps;
+      BOOST_TEST(std::count(timing.begin(), timing.end(), r) == 1, "gap at t = " << r.at(0) << " s not drawn");
+    }
+  }
+  for (const auto& r : timing) longest_drawn = std::max(longest_drawn, r.at(1));
+  BOOST_TEST(timing.size() <= 4000u + gaps);
+  BOOST_TEST(timing.size() >= 100u);
+  BOOST_TEST(longest_drawn == longest);
   fs::remove_all(dir);
 }
 

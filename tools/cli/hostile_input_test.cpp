@@ -528,4 +528,19 @@ BOOST_AUTO_TEST_CASE(a_nan_limit_and_an_unknown_command_are_named) {
   expect_refused(run_apart("frobnicate cases/spin_sweep_base.toml"), {"unknown command 'frobnicate'"});
 }
 
+BOOST_AUTO_TEST_CASE(a_latin1_field_is_quoted_as_escapes_not_raw_bytes) {
+  // Main echoed a capture's Latin-1 byte (and would have echoed C1 controls) raw to the terminal.
+  // Oracle: tools/io/printable_text.hpp's rule, \xNN for each byte outside valid UTF-8.
+  Scratch s;
+  std::ifstream in("cases/captures/gentle_sidearm.log");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t third = text.find('\n', text.find('\n', text.find('\n') + 1) + 1) + 1;
+  text.insert(third, "x\xE9\xC2\x9By 1 2\n");
+  const fs::path bad = s.write("latin1.log", text);
+  const RanApart r = run_apart({"capture", "validate", bad.string()});
+  expect_refused(r, {"latin1.log:4:", "got 'x\\xE9\\xC2\\x9By"});
+  BOOST_TEST(std::none_of(r.err.begin(), r.err.end(), [](char c) { return static_cast<unsigned char>(c) >= 0x80; }),
+             r.err);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -19,22 +19,16 @@
 #include "tools/cli/command_registry.hpp"
 #include "stoneskip_version.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/printable_text.hpp"
 #include "tools/io/shipped_files.hpp"
 #include "tools/io/signal_cleanup.hpp"
 
 namespace {
 
-// A message on one line whatever names it quotes: a newline or carriage return in a file name is
-// written as \n or \r (the bad-input rule is one line on stderr).
-std::string one_line(std::string what) {
-  std::string out;
-  for (char c : what) {
-    if (c == '\n') out += "\\n";
-    else if (c == '\r') out += "\\r";
-    else out += c;
-  }
-  return out;
-}
+// A message on one line whatever names it quotes, with no byte a terminal would act on: a newline
+// in a file name is written as \n, a Latin-1 byte of a capture's field as \xE9
+// (tools/io/printable_text.hpp; the bad-input rule is one line on stderr).
+std::string one_line(const std::string& what) { return stoneskip::printable_text(what); }
 
 }  // namespace
 

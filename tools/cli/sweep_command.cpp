@@ -27,6 +27,7 @@
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/output_over_input.hpp"
+#include "tools/io/printable_text.hpp"
 #include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/scene_throw.hpp"
 #include "tools/scene/sweep_file.hpp"
@@ -227,7 +228,7 @@ void compute(const SweepArgs& a, const SweepFile& sweep, const SweepCases& cases
     std::fflush(stdout);
   }
   const SweepSummary summary = plan.run(evaluate, mpi);
-  for (const auto& w : summary.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  for (const auto& w : summary.warnings) std::fprintf(stderr, "warning: %s\n", printable_text(w).c_str());
   std::printf("%s\n", summary.brief().c_str());
 }
 
