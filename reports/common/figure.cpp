@@ -162,6 +162,20 @@ void check_figure_destinations(const fs::path& fig_dir, const std::vector<Figure
 
 }  // namespace
 
+std::vector<fs::path> figure_files(const std::vector<Figure>& figs) {
+  std::vector<fs::path> out;
+  const fs::path d = "figures";
+  for (const auto& f : figs) {
+    for (const auto& [name, table] : f.tables) out.push_back(d / (name + ".dat"));
+    if (!f.sources.empty() || !f.copies.empty()) out.push_back(d / (f.name + ".sources"));
+    for (const std::string kind : kKinds) {
+      out.push_back(d / (f.name + "." + kind));
+      out.push_back(d / script_name(f, kind));
+    }
+  }
+  return out;
+}
+
 RenderSummary render_figures(const fs::path& dir, const std::vector<Figure>& figs) {
   RenderSummary summary;
   const fs::path fig_dir = dir / "figures";

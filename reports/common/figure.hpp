@@ -90,6 +90,9 @@ struct RenderSummary {
 // `figures` that is not a plain folder) is refused with InputError before anything is written.
 RenderSummary render_figures(const std::filesystem::path& dir, const std::vector<Figure>& figs);
 
+// Every file render_figures writes for figs, relative to dir ("figures/<name>.png", …).
+std::vector<std::filesystem::path> figure_files(const std::vector<Figure>& figs);
+
 // Markdown for a figure: ![title](figures/name.png) with a link to the SVG.
 std::string figure_markdown(const Figure& fig);
 

@@ -43,6 +43,12 @@ std::string provenance_markdown(const StoredReport& s) {
   return md;
 }
 
+std::vector<std::filesystem::path> rendered_files(const RenderedReport& r) {
+  std::vector<std::filesystem::path> out{"index.md", "index.html"};
+  for (auto& f : figure_files(r.figures)) out.push_back(std::move(f));
+  return out;
+}
+
 RenderSummary write_rendered_report(const std::filesystem::path& dir, const RenderedReport& r) {
   RenderSummary summary;
   if (gnuplot_available()) {

@@ -42,5 +42,7 @@ std::string provenance_markdown(const StoredReport& s);
 // atomically) and draws the figures into dir/figures/. Figures gnuplot
 // rejects (or all of them, without gnuplot) are listed in the summary, never silently dropped.
 RenderSummary write_rendered_report(const std::filesystem::path& dir, const RenderedReport& r);
+// Every file write_rendered_report writes, relative to dir.
+std::vector<std::filesystem::path> rendered_files(const RenderedReport& r);
 
 }  // namespace stoneskip

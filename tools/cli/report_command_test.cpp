@@ -5,12 +5,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <regex>
 #include <sstream>
 #include <set>
 
 #include "tools/cli/test_support.hpp"
+#include "tools/io/folder_manifest.hpp"
 #include "tools/io/hdf5_file.hpp"
 #include "verification/study/record.hpp"
 #include "verification/study/verdict_rules.hpp"
@@ -363,6 +365,45 @@ BOOST_AUTO_TEST_CASE(waves_quick_report_is_a_function_of_its_data) {
   const auto r = run_stoneskip("report waves --quick --out " + dir.string());
   BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
   check_report(dir);
+
+  // Rendering in place replaces only what stoneskip wrote (oracle: the folder's manifest, and the
+  // user's bytes, which must survive): an edited index.md, or an index.html in a folder without a
+  // manifest, is refused with exit 2 and kept; a folder named through a link is refused; a bare
+  // folder holding only data.h5 is rendered.
+  const auto copy = [&](const std::string& name) {
+    const fs::path to = tmp.path() / name;
+    fs::copy(dir, to, fs::copy_options::recursive);
+    return to;
+  };
+  const fs::path edited = copy("edited");
+  { std::ofstream(edited / "index.md") << "# my notes\n"; }
+  const auto e = run_stoneskip("report render " + edited.string());
+  BOOST_TEST(e.status == 2, e.out);
+  BOOST_TEST(e.out.find("'index.md', which changed since stoneskip wrote it") != std::string::npos, e.out);
+  BOOST_TEST(read_file(edited / "index.md") == "# my notes\n");
+  const fs::path bare = tmp.path() / "bare";
+  fs::create_directories(bare);
+  fs::copy_file(dir / "data.h5", bare / "data.h5");
+  { std::ofstream(bare / "index.html") << "mine\n"; }
+  const auto b = run_stoneskip("report render " + bare.string());
+  BOOST_TEST(b.status == 2, b.out);
+  BOOST_TEST(read_file(bare / "index.html") == "mine\n");
+  fs::remove(bare / "index.html");
+  BOOST_TEST(run_stoneskip("report render " + bare.string()).status == 0);
+  BOOST_TEST(read_file(bare / "index.md") == read_file(dir / "index.md"));
+  fs::create_directory_symlink(dir, tmp.path() / "link");
+  const auto l = run_stoneskip("report render " + (tmp.path() / "link").string());
+  BOOST_TEST(l.status == 2, l.out);
+  BOOST_TEST(l.out.find("is a link") != std::string::npos, l.out);
+  // A figure an earlier rendering drew (listed in the manifest) that this one does not draw is
+  // removed; a file of the user's beside it stays.
+  const fs::path stale = copy("stale");
+  fs::copy_file(stale / "figures" / "convergence_space.png", stale / "figures" / "old_study.png");
+  stoneskip::write_folder_manifest(stale);
+  { std::ofstream(stale / "figures" / "mine.txt") << "mine\n"; }
+  BOOST_TEST(run_stoneskip("report render " + stale.string()).status == 0);
+  BOOST_TEST(!fs::exists(stale / "figures" / "old_study.png"));
+  BOOST_TEST(read_file(stale / "figures" / "mine.txt") == "mine\n");
 }
 
 BOOST_AUTO_TEST_CASE(stones_quick_report_is_a_function_of_its_data) {

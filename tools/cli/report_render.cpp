@@ -25,7 +25,7 @@ RenderedReport render_stored_report(const StoredReport& s) {
   throw_input_error(s.file.string(), 0, "report", "unknown report kind '" + s.kind + "'");
 }
 
-std::pair<int, std::size_t> render_folder(const std::filesystem::path& dir) {
+std::pair<int, std::size_t> render_folder(const std::filesystem::path& dir, bool in_place) {
   const StoredReport stored = load_stored_report(dir / "data.h5");
   // A stored verdict is printed only if its rule, applied to its stored inputs, still says it.
   std::vector<std::string> contradicted;
@@ -50,15 +50,21 @@ std::pair<int, std::size_t> render_folder(const std::filesystem::path& dir) {
   } catch (const RecordError& e) {
     throw_input_error((dir / "data.h5").string(), 0, "", std::string("incomplete report data: ") + e.what());
   }
+  const std::vector<std::filesystem::path> written = rendered_files(r);
+  if (in_place) {
+    // A folder the user names: only what stoneskip wrote there may be replaced (its manifest).
+    std::string why;
+    if (!may_overwrite(dir, written, &why))
+      throw_input_error(dir.string(), 0, "",
+                        "rendering would replace " + why + ": stoneskip replaces only files it wrote (render a copy "
+                        "of the folder, or move the file away)");
+  }
   const Heartbeat alive("drawing " + std::to_string(r.figures.size()) + " figures");  // a line after 2 s
   const RenderSummary s = write_rendered_report(dir, r);
-  // The folder's manifest lists what was just written (and what it listed before, unchanged): a
-  // file of the user's beside them stays unlisted, so no build replaces the folder over it.
-  std::vector<std::filesystem::path> written{"index.md"};
-  for (const auto& f : r.figures) {
-    for (const char* ext : {".gp", ".svg.gp", ".png", ".svg"}) written.push_back(std::filesystem::path("figures") / (f.name + ext));
-    for (const auto& [name, table] : f.tables) written.push_back(std::filesystem::path("figures") / (name + ".dat"));
-  }
+  // Figures an earlier rendering drew and this one does not (another study's data.h5 put here) are
+  // removed; the manifest then lists what was just written (and what it listed before, unchanged):
+  // a file of the user's beside them stays unlisted, so no build replaces the folder over it.
+  remove_listed_except(dir, "figures", written);
   update_folder_manifest(dir, written);
   for (const auto& f : s.failures) std::fprintf(stderr, "figure failed: %s\n", f.c_str());
   if (!s.failures.empty()) set_exit_code(1);

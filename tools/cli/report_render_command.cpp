@@ -3,17 +3,24 @@
 //
 // A report is a function of its data: this is the same rendering the report commands run after
 // their studies, so it reproduces index.md byte for byte.
+#include <sys/stat.h>
+
 #include <cstdio>
 #include <memory>
 
 #include "tools/cli/command_registry.hpp"
 #include "tools/cli/report_render.hpp"
+#include "tools/io/input_error.hpp"
 
 namespace stoneskip::cli {
 namespace {
 
 void render(const std::string& dir) {
-  const auto [drawn, figures] = render_folder(dir);
+  // Never written through: a link named as the folder is refused (its target is not this name's).
+  struct stat st {};
+  if (::lstat(dir.c_str(), &st) == 0 && S_ISLNK(st.st_mode))
+    throw_input_error(dir, 0, "", "is a link: stoneskip does not write through links (render the folder it points to)");
+  const auto [drawn, figures] = render_folder(dir, true);
   std::printf("rendered %s/index.md, %d of %zu figures drawn\n", dir.c_str(), drawn, figures);
 }
 

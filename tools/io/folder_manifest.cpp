@@ -146,6 +146,50 @@ void update_folder_manifest(const fs::path& dir, const std::vector<fs::path>& wr
   write_text_file(dir / kFolderManifest, text_of(keep));
 }
 
+bool may_overwrite(const fs::path& dir, const std::vector<fs::path>& files, std::string* why) {
+  std::map<std::string, Entry> listed;
+  const bool has_manifest = read_manifest(dir, listed);
+  for (const auto& f : files) {
+    std::error_code ec;
+    const fs::path p = dir / f;
+    const fs::file_type type = fs::symlink_status(p, ec).type();
+    if (type == fs::file_type::not_found) continue;
+    const std::string rel = f.generic_string();
+    auto it = listed.find(rel);
+    const bool same = type == fs::file_type::regular && it != listed.end() && !it->second.folder &&
+                      it->second.size == fs::file_size(p, ec) && !ec && it->second.hash == file_hash(p);
+    if (!same) {
+      if (why)
+        *why = "'" + rel + "', which " +
+               (!has_manifest ? std::string("stoneskip did not write (the folder holds no ") + kFolderManifest + ")"
+                : type != fs::file_type::regular ? std::string("is not a plain file")
+                : it == listed.end()             ? std::string("stoneskip did not write")
+                                                 : std::string("changed since stoneskip wrote it"));
+      return false;
+    }
+  }
+  return true;
+}
+
+std::size_t remove_listed_except(const fs::path& dir, const fs::path& under, const std::vector<fs::path>& written) {
+  std::map<std::string, Entry> listed;
+  if (!read_manifest(dir, listed)) return 0;
+  std::vector<std::string> keep;
+  for (const auto& w : written) keep.push_back(w.generic_string());
+  const std::string prefix = under.generic_string() + "/";
+  std::size_t removed = 0;
+  for (const auto& [rel, e] : listed) {
+    if (e.folder || rel.rfind(prefix, 0) != 0 || std::find(keep.begin(), keep.end(), rel) != keep.end()) continue;
+    std::error_code ec;
+    const fs::path p = dir / rel;
+    if (fs::symlink_status(p, ec).type() != fs::file_type::regular || fs::file_size(p, ec) != e.size || ec ||
+        file_hash(p) != e.hash)
+      continue;
+    if (fs::remove(p, ec)) ++removed;
+  }
+  return removed;
+}
+
 bool holds_only_its_manifest(const fs::path& dir, std::string* why) {
   auto say = [&](const std::string& w) {
     if (why) *why = w;

@@ -26,6 +26,20 @@ void write_folder_manifest(const std::filesystem::path& dir);
 // Anything else in the folder (the user's) stays unlisted, so the folder is not replaceable.
 void update_folder_manifest(const std::filesystem::path& dir, const std::vector<std::filesystem::path>& written);
 
+// Before writing `files` (relative to `dir`) into a folder in place: true if that replaces nothing
+// stoneskip did not write, each being absent or a plain file the manifest lists, unchanged. False
+// with the reason (naming the first that is not) otherwise; a folder without a manifest has no
+// file stoneskip may replace.
+bool may_overwrite(const std::filesystem::path& dir, const std::vector<std::filesystem::path>& files,
+                   std::string* why = nullptr);
+
+// After writing `written` in place: removes the files under `under` (relative to `dir`) that the
+// manifest lists, unchanged, and that are not among `written` (what an earlier rendering drew and
+// this one does not), so no stale figure stays listed as stoneskip's. Call before
+// update_folder_manifest. Returns how many were removed.
+std::size_t remove_listed_except(const std::filesystem::path& dir, const std::filesystem::path& under,
+                                 const std::vector<std::filesystem::path>& written);
+
 // True if every entry under `dir` is listed in its manifest, unchanged (files: same size and hash).
 // False with the reason (naming the first entry that is not) otherwise.
 bool holds_only_its_manifest(const std::filesystem::path& dir, std::string* why = nullptr);
