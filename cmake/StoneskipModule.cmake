@@ -20,6 +20,7 @@ function(stoneskip_module name)
   if(srcs)
     add_library(${name} STATIC ${srcs})
     target_link_libraries(${name} PUBLIC stoneskip_options ${A_DEPS})
+    add_dependencies(${name} stoneskip_version)  # the version header, current at every build
   else()
     add_library(${name} INTERFACE)
     target_link_libraries(${name} INTERFACE stoneskip_options ${A_DEPS})

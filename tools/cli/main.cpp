@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   // The version, and where the shipped cases are found (tools/io/shipped_files.hpp).
   const std::filesystem::path shipped = stoneskip::shipped_cases_dir();
-  app.set_version_flag("--version", std::string("stoneskip ") + stoneskip::kVersion + "\nshipped cases: " +
+  app.set_version_flag("--version", std::string("stoneskip ") + stoneskip::kVersion + " (git " + stoneskip::kGitDescribe + ")\nshipped cases: " +
                                         (shipped.empty() ? std::string("none found") : shipped.string()) + "\n");
   for (const auto& add : stoneskip::cli::registered_commands()) add(app);
   // A first word that is no option and no command is named (CLI11 would only say that a
