@@ -110,9 +110,19 @@ ReportBuild::ReportBuild(ReportBuildOptions options) : options_(std::move(option
     fs::remove(work_ / "index.html", ec);
     write_text_file(work_ / kManifest, manifest_text(options_.kind, key_));
   }
+  if (!fs::is_empty(work_ / "sections", ec)) keep_on_signal();  // an earlier run's finished sections
+}
+
+void ReportBuild::keep_on_signal() {
+  // From the first finished section on, a signal leaves the work folder as SIGKILL does, and the
+  // cleanup's line says where: the same command resumes it.
+  if (!registered_.registered()) return;
+  registered_.release();
+  set_interrupt_note("stoneskip: finished sections kept in " + work_.string() + ": run the same command to resume");
 }
 
 ReportBuild::~ReportBuild() {
+  set_interrupt_note("");
   if (lock_fd_ >= 0) ::close(lock_fd_);
   // Stopped by an error before any section was finished: a work folder this run made holds
   // nothing worth resuming, so it goes (bad input leaves no folder behind). With finished
@@ -147,6 +157,7 @@ void ReportBuild::store(const std::string& section, const Record& record) {
   w.commit();
   ++stored_;
   if (std::find(order_.begin(), order_.end(), section) == order_.end()) order_.push_back(section);
+  keep_on_signal();
 }
 
 fs::path ReportBuild::assemble(const Record& root) {
@@ -200,6 +211,7 @@ void ReportBuild::commit() {
     }
     registered_.release();
     committed_ = true;
+    set_interrupt_note("");
   });
   if (!old.empty()) fs::remove_all(old, ec);
 }

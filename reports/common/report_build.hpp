@@ -18,8 +18,10 @@
 // What stops a build, and what it leaves:
 //  * an error (bad input found late, an internal error): the work folder stays if it holds
 //    finished sections (to be resumed); one this run made and stored nothing in is removed;
-//  * SIGINT, SIGTERM, SIGHUP: the work folder is registered with tools/io/signal_cleanup.hpp and
-//    removed whole — an interrupted report leaves nothing partial, even finished sections;
+//  * SIGINT, SIGTERM, SIGHUP: while the work folder holds no finished section it is registered
+//    with tools/io/signal_cleanup.hpp and removed whole (temporaries being written are removed in
+//    any case); from the first finished section on it stays, as after SIGKILL, and the cleanup's
+//    line on stderr says where — finished work is never thrown away by an interruption;
 //  * a crash, SIGKILL, a lost node: the work folder stays and the next run resumes it.
 #include <filesystem>
 #include <optional>
@@ -61,6 +63,7 @@ class ReportBuild : public StudySink {
   int resumed_sections() const { return resumed_; }
 
  private:
+  void keep_on_signal();  // unregisters the work folder once it holds a finished section
   ReportBuildOptions options_;
   std::filesystem::path work_;
   std::string key_;

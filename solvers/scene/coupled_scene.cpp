@@ -155,6 +155,8 @@ class SceneLoop {
       surface_ = std::make_unique<HeightFieldSurface>(*field_, o.water->placement.origin_x_m, o.water->placement.origin_y_m);
       out_.volume_start_m3 = field_->volume_m3();
       dt_s_ = o.water->field.dt_s;
+      stays_flat_ = (o.coupling == Coupling::one_way || o.water->field.wave_speed_m_s == 0) &&
+                    std::all_of(o.water->initial_m.begin(), o.water->initial_m.end(), [](double z) { return z == 0; });
     }
     if (two_way_) {
       const bool periodic = o.water->field.boundary == Boundary::periodic;
@@ -173,7 +175,11 @@ class SceneLoop {
     frame_wall0_ = steady_now();
   }
 
-  const WaterSurface* surface() const { return surface_.get(); }
+  // The surface the stone is clipped against. A field that starts at rest and that nothing moves
+  // (one-way, or two-way with c = 0) stays exactly flat: the stone steps on still water, as with
+  // coupling none, bit for bit (model/README.md §2.4). Given a surface, the stepper must assume
+  // live water (its flight steps bounded by |v|, not by the sinking speed: stone_stepper.cpp).
+  const WaterSurface* surface() const { return stays_flat_ ? nullptr : surface_.get(); }
 
   // The faces' pushes at the start of each stone step, filled by the stepper's own first
   // right-hand side (run_realtime's step_start_pushes): read at the next step's start.
@@ -550,6 +556,7 @@ class SceneLoop {
   double last_volume_m3_ = 0;
   long closed_ = 0;
   bool per_step_budget_ = false;  // Dₙ measured at every step (energy_budget on a damped field)
+  bool stays_flat_ = false;       // the field is still water for the whole scene
   long deferred_ = 0;             // free steps owed to the field
   long owed_by_closed_ = 0;       // of them, those of frames already closed
   std::vector<std::pair<std::size_t, long>> owing_;  // (closed frame, its owed steps)

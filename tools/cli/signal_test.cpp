@@ -1,9 +1,9 @@
 // SIGINT and SIGTERM at random moments: main left partial report and
 // capture folders (a data.h5 and figures without index.md, or an empty folder) and `run --out big.h5` left
 // big.h5.tmp-PID. Oracle: the folder afterwards. A command stopped by the signal exits 128 +
-// signal and leaves nothing at all there (tools/io/signal_cleanup.hpp: the work folder and every
-// temporary are registered and removed); one that finished first exits 0 and leaves exactly the
-// finished output. The moments are drawn from a seeded generator (the seed is printed) over the
+// signal and leaves nothing partial there (tools/io/signal_cleanup.hpp: every temporary is
+// registered and removed), only a report's work folder once it holds finished sections, which the
+// same command then resumes; one that finished first exits 0 and leaves exactly the finished output. The moments are drawn from a seeded generator (the seed is printed) over the
 // command's own measured duration, so every phase — sections, data.h5, figures, the final
 // rename — gets hit across runs.
 #include <boost/test/unit_test.hpp>
@@ -138,6 +138,25 @@ void check_left(const Ended& e, int sig, const fs::path& out, const std::vector<
   }
 }
 
+// A report build stopped by the signal may also keep its work folder "<name>.partial", once it
+// holds finished sections (reports/common/report_build.hpp): then it holds whole section files and
+// no temporary, and stderr says where. Returns whether it was kept.
+bool check_report_left(const Ended& e, int sig, const fs::path& out, const std::string& name, const fs::path& logs) {
+  const fs::path partial = out / (name + ".partial");
+  if (e.status != 128 + sig || !fs::exists(partial)) {
+    check_left(e, sig, out, {name}, logs);
+    return false;
+  }
+  std::ifstream err(logs / "stderr");
+  const std::string stderr_text((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  BOOST_TEST(joined(names_in(out)) == name + ".partial");
+  BOOST_TEST(stderr_text.find("finished sections kept in " + partial.string()) != std::string::npos, stderr_text);
+  BOOST_TEST(!fs::is_empty(partial / "sections"));
+  for (const auto& f : fs::recursive_directory_iterator(partial))
+    BOOST_TEST(f.path().filename().string().find(".tmp-") == std::string::npos, "temporary left: " << f.path());
+  return true;
+}
+
 unsigned seed() {
   const unsigned s = static_cast<unsigned>(std::chrono::system_clock::now().time_since_epoch().count() % 1000003);
   BOOST_TEST_MESSAGE("signal moments drawn with seed " << s);
@@ -148,7 +167,7 @@ unsigned seed() {
 
 BOOST_AUTO_TEST_SUITE(signals)
 
-BOOST_AUTO_TEST_CASE(an_interrupted_report_leaves_nothing_partial) {
+BOOST_AUTO_TEST_CASE(an_interrupted_report_leaves_nothing_partial_and_keeps_its_finished_sections) {
   Scratch s;
   std::mt19937 rng(seed());
   // The whole run once: how long it takes here, and what a finished one leaves.
@@ -165,8 +184,17 @@ BOOST_AUTO_TEST_CASE(an_interrupted_report_leaves_nothing_partial) {
     const double at = moment(rng) * whole.wall_s;
     BOOST_TEST_CONTEXT("report waves, " << (sig == SIGINT ? "SIGINT" : "SIGTERM") << " at " << at << " s of " << whole.wall_s) {
       const Ended e = interrupt(waves, s.dir, sig, at);
-      check_left(e, sig, s.out, {"waves"}, s.dir);
-      if (e.status == 0) BOOST_TEST(joined(names_in(s.out / "waves")) == "data.h5 figures index.html index.md stoneskip-manifest.txt");
+      if (check_report_left(e, sig, s.out, "waves", s.dir)) {
+        // The same command resumes the kept sections and finishes.
+        const Ended again = finish(start(waves, s.dir), std::chrono::steady_clock::now());
+        std::ifstream out(s.dir / "stdout");
+        const std::string said((std::istreambuf_iterator<char>(out)), std::istreambuf_iterator<char>());
+        BOOST_TEST(again.status == 0);
+        BOOST_TEST(said.find("resumed from an earlier run") != std::string::npos, said);
+        BOOST_TEST(joined(names_in(s.out)) == "waves");
+      }
+      if (fs::exists(s.out / "waves"))
+        BOOST_TEST(joined(names_in(s.out / "waves")) == "data.h5 figures index.html index.md stoneskip-manifest.txt");
       fs::remove_all(s.out / "waves");
     }
   }
@@ -176,8 +204,9 @@ BOOST_AUTO_TEST_CASE(an_interrupted_report_leaves_nothing_partial) {
   for (int sig : {SIGTERM, SIGINT}) {
     const double at = early(rng);
     BOOST_TEST_CONTEXT("report stones, signal " << sig << " at " << at << " s") {
-      check_left(interrupt(stones, s.dir, sig, at), sig, s.out, {"stones"}, s.dir);
+      check_report_left(interrupt(stones, s.dir, sig, at), sig, s.out, "stones", s.dir);
       fs::remove_all(s.out / "stones");
+      fs::remove_all(s.out / "stones.partial");
     }
   }
 }

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstring>
@@ -172,7 +173,11 @@ const char* signal_name(int sig) {
   return "a signal";
 }
 
-// "stoneskip: interrupted by SIGINT; removed N temporaries" without allocating.
+// set_interrupt_note's line (written by the cleanup without allocating).
+char g_note[512];
+std::size_t g_note_length = 0;
+
+// "stoneskip: interrupted by SIGINT; removed N temporaries" without allocating, then the note.
 void say_interrupted(int sig, int removed) {
   char line[160];
   std::size_t k = 0;
@@ -192,6 +197,8 @@ void say_interrupted(int sig, int removed) {
   while (nd > 0 && k + 1 < sizeof line) line[k++] = digits[--nd];
   put(removed == 1 ? " temporary file or folder\n" : " temporary files and folders\n");
   if (::write(STDERR_FILENO, line, k) < 0) {
+  }
+  if (g_note_length > 0 && ::write(STDERR_FILENO, g_note, g_note_length) < 0) {
   }
 }
 
@@ -278,6 +285,14 @@ void RegisteredChild::release() {
 void with_registry_lock(const std::function<void()>& f) {
   std::lock_guard<std::recursive_mutex> lock(registry().mutex);
   f();
+}
+
+void set_interrupt_note(const std::string& line) {
+  std::lock_guard<std::recursive_mutex> lock(registry().mutex);
+  std::size_t n = std::min(line.size(), sizeof g_note - 2);
+  std::copy(line.begin(), line.begin() + static_cast<long>(n), g_note);
+  if (n > 0) g_note[n++] = '\n';
+  g_note_length = n;
 }
 
 void install_signal_cleanup() {

@@ -20,6 +20,7 @@
 // or already in place.
 #include <filesystem>
 #include <functional>
+#include <string>
 
 namespace stoneskip {
 
@@ -64,6 +65,11 @@ class RegisteredChild {
 // Runs f while holding the registry's mutex (recursive): create, rename or remove registered paths
 // inside it. A signal's cleanup waits for f to return; f must be short.
 void with_registry_lock(const std::function<void()>& f);
+
+// A line the cleanup writes on stderr after its own when a signal ends the process: where finished
+// work was kept for a resume (a report's sections in "<DIR>.partial"). Empty: none. At most 500
+// bytes are kept; set under the registry's lock, so the cleanup sees the old line or the new one.
+void set_interrupt_note(const std::string& line);
 
 // Installs the handlers and starts the cleanup thread; call once, before any other thread starts.
 void install_signal_cleanup();
