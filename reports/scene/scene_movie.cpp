@@ -11,6 +11,7 @@
 #include "reports/scene/frame_plot.hpp"
 #include "solvers/realtime/clocks.hpp"
 #include "tools/io/atomic_file.hpp"
+#include "tools/io/foreign_output.hpp"
 #include "tools/io/subprocess.hpp"
 #include "verification/scene/scene_still.hpp"
 
@@ -72,6 +73,28 @@ int run_lines(const std::vector<std::string>& argv, const fs::path& dir, const s
 // ffmpeg reads a name with "proto:" as a protocol and one with a leading '-' as an option; a
 // "file:" URL with an absolute path is always the plain file.
 std::string ffmpeg_file(const fs::path& p) { return "file:" + fs::absolute(p).string(); }
+
+// Inserts a GIF89a comment extension (0x21 0xFE, data sub-blocks, 0x00; GIF89a specification §24)
+// after the logical screen descriptor and the global colour table, if any (§18, §19). A file that
+// is not GIF89a is left as it is.
+void add_gif_comment(const fs::path& p, const std::string& text) {
+  std::string g;
+  {
+    std::ifstream in(p, std::ios::binary);
+    g.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  if (g.size() < 13 || g.compare(0, 6, "GIF89a") != 0) return;
+  const auto packed = static_cast<unsigned char>(g[10]);
+  std::size_t at = 13;
+  if (packed & 0x80) at += 3 * (std::size_t{1} << ((packed & 7) + 1));
+  if (at > g.size()) return;
+  std::string block = "\x21\xFE";
+  block += static_cast<char>(std::min<std::size_t>(text.size(), 255));
+  block += text.substr(0, 255);
+  block += '\0';
+  g.insert(at, block);
+  std::ofstream(p, std::ios::binary | std::ios::trunc).write(g.data(), static_cast<std::streamsize>(g.size()));
+}
 
 }  // namespace
 
@@ -344,8 +367,11 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
   rate << s.rate_hz;
   std::vector<std::string> ffmpeg = {"ffmpeg", "-nostdin", "-y", "-loglevel", "error", "-framerate", rate.str(),
                                      "-i", fs::absolute(dir_ / "seq_%05d.png").string()};
+  // The MP4 carries kMovieMarker in its metadata (the GIF in a comment, below): a later --movie to
+  // this name knows the file is stoneskip's to replace (tools/io/foreign_output.hpp).
   if (format_ == MovieFormat::mp4)
-    ffmpeg.insert(ffmpeg.end(), {"-c:v", "libx264", "-pix_fmt", "yuv420p", "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-f", "mp4"});
+    ffmpeg.insert(ffmpeg.end(), {"-c:v", "libx264", "-pix_fmt", "yuv420p", "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2",
+                                 "-metadata", std::string("comment=") + kMovieMarker, "-f", "mp4"});
   else
     ffmpeg.insert(ffmpeg.end(), {"-vf", "split[a][b];[a]palettegen[p];[b][p]paletteuse", "-f", "gif"});
   ffmpeg.push_back(ffmpeg_file(out.temporary_path()));
@@ -354,6 +380,7 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
     if (errors.size() < 2000) errors += line + "\n";
   });
   if (rc != 0) throw std::runtime_error("movie: ffmpeg failed (status " + std::to_string(rc) + "): " + errors);
+  if (format_ == MovieFormat::gif) add_gif_comment(out.temporary_path(), kMovieMarker);
   out.commit();
   s.encode_wall_s = encode.seconds();
   s.bytes = fs::file_size(o_.output);

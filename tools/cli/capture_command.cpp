@@ -48,6 +48,7 @@
 #include "tools/cli/terminal_progress.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/foreign_output.hpp"
 #include "tools/io/output_over_input.hpp"
 #include "tools/io/printable_text.hpp"
 #include "tools/io/progress.hpp"
@@ -477,6 +478,7 @@ void throw_capture(const CaptureArgs& a) {
   enforce_limits(estimate_run(c, RunSolvers{a.solver != "reference", a.solver != "realtime", !a.out.empty()}), a.limits,
                  c.file);
   refuse_output_over_inputs(a.out, OutputKind::file, inputs_of(a, &c, nullptr));
+  refuse_foreign_output(a.out);
   if (!a.out.empty()) AtomicOutput check(a.out);
   check_capture_size(a.files.front(), a.limits);
   const Trace trace = read_capture(a.files.front(), read_options(a));
@@ -530,6 +532,7 @@ void throw_capture(const CaptureArgs& a) {
 
 void convert(const CaptureArgs& a) {
   refuse_output_over_inputs(a.out, OutputKind::file, inputs_of(a, nullptr, nullptr));
+  refuse_foreign_output(a.out);
   check_capture_size(a.files.front(), a.limits);
   std::optional<Heartbeat> alive(std::in_place, "capture convert");  // a line once reading takes more than 2 s
   Trace t = read_capture(a.files.front(), read_options(a));

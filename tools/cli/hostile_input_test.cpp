@@ -543,4 +543,25 @@ BOOST_AUTO_TEST_CASE(a_latin1_field_is_quoted_as_escapes_not_raw_bytes) {
              r.err);
 }
 
+BOOST_AUTO_TEST_CASE(out_replaces_only_a_file_stoneskip_wrote) {
+  // Main replaced any regular file named by --out (a user's notes became an HDF5 file). Oracle:
+  // the user's bytes, which must survive a refusal (exit 2, one line naming --out and the file),
+  // and stoneskip's own outputs (an HDF5 file stamped with its code_version, a converted capture
+  // starting "# stoneskip"), which a second run replaces.
+  Scratch s;
+  const fs::path mine = s.write("notes.txt", "precious\n");
+  expect_refused(run_apart({"run", "cases/spin_sweep_base.toml", "--out", mine.string()}),
+                 {"--out", "notes.txt' exists and stoneskip did not write it"});
+  expect_refused(run_apart({"capture", "convert", "cases/captures/gentle_sidearm.log", "--out", mine.string()}),
+                 {"--out", "notes.txt' exists and stoneskip did not write it"});
+  std::ifstream in(mine);
+  BOOST_TEST(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()) == "precious\n");
+  const fs::path h5 = s.dir / "r.h5", csv = s.dir / "c.csv";
+  for (int run = 0; run < 2; ++run) {
+    BOOST_TEST(run_apart({"run", "cases/spin_sweep_base.toml", "--out", h5.string()}).status == 0, "run " << run);
+    BOOST_TEST(run_apart({"capture", "convert", "cases/captures/gentle_sidearm.log", "--out", csv.string()}).status == 0,
+               "run " << run);
+  }
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -35,6 +35,7 @@
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/hdf5_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/foreign_output.hpp"
 #include "tools/io/output_over_input.hpp"
 #include "tools/io/progress.hpp"
 #include "tools/io/signal_cleanup.hpp"
@@ -261,6 +262,7 @@ void run(const SceneArgs& a) {
   if (a.movie_given && a.movie.empty()) throw_input_error("--movie", 0, "", "needs a file name (got an empty name)");
   if (!a.movie.empty()) {
     mo.output = a.movie;
+    refuse_foreign_output(a.movie, "--movie");
     int w = 0, h = 0;
     char x = 0;
     std::istringstream size(a.movie_size);
@@ -301,6 +303,7 @@ void run(const SceneArgs& a) {
   }
   if (!a.out.empty()) {
     refuse_output_over_inputs(a.out, OutputKind::file, {c.file, c.spec.mesh_file});
+    refuse_foreign_output(a.out);
     AtomicOutput probe(a.out);  // an unwritable place is refused before any work
   }
   // A progress line on stderr for a scene that runs longer than kQuietScene_s (frames done of all,

@@ -105,6 +105,9 @@ void AtomicOutput::commit() {
   // Checked when opened; checked again, since time has passed (a FIFO may have appeared).
   check_output_destination(final_);
   with_registry_lock([&] {
+    // A file replaced keeps its permissions (a read-only baseline stays read-only).
+    struct stat st {};
+    if (::lstat(final_.c_str(), &st) == 0 && S_ISREG(st.st_mode)) ::chmod(tmp_.c_str(), st.st_mode & 07777);
     if (::rename(tmp_.c_str(), final_.c_str()) != 0) {
       const int e = errno;
       refuse(final_, "cannot write: " + errno_words(e));

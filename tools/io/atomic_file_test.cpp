@@ -89,6 +89,20 @@ BOOST_AUTO_TEST_CASE(only_a_regular_file_is_ever_replaced) {
   BOOST_TEST(got == "text");
 }
 
+BOOST_AUTO_TEST_CASE(a_replaced_file_keeps_its_permissions) {
+  // Oracle: stat before and after. `regress --update` on a read-only baseline left it 0644; the
+  // new text goes in with the old mode bits.
+  Scratch s;
+  const fs::path f = s.dir / "baseline.toml";
+  write_text_file(f, "old\n");
+  BOOST_REQUIRE(::chmod(f.c_str(), 0444) == 0);
+  write_text_file(f, "new\n");
+  struct stat st {};
+  BOOST_REQUIRE(::stat(f.c_str(), &st) == 0);
+  BOOST_TEST((st.st_mode & 07777) == 0444u);
+  BOOST_TEST(read_text_file(f) == "new\n");
+}
+
 BOOST_AUTO_TEST_CASE(an_unwritable_place_is_refused_before_any_work) {
   // Oracle: what the kernel says when a file is created there. The output is opened (its
   // temporary created) in the constructor, so the error comes before the caller computes
