@@ -28,7 +28,6 @@
 #include "tools/io/progress.hpp"
 #include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/wave_case.hpp"
-#include "verification/waves/stability.hpp"
 #include "verification/waves/wave_problem.hpp"
 
 namespace stoneskip::cli {
@@ -57,7 +56,7 @@ void run_wave(const WaveArgs& a) {
   const HeightFieldOptions& w = c.water;
   const long steps = c.steps();
   const double sigma = w.courant(), mu_dt = w.damping_per_s * w.dt_s;
-  const double limit = stability_limit(w.stencil, mu_dt);
+  const WaterStability stability = water_stability(w);  // the exact von Neumann limit
 
   // 1. Initial surface and the run, in up to 100 chunks: progress, and a surface that overflows
   //    is caught by the end of the chunk where it did (then nothing is compared: its error is not 0).
@@ -117,7 +116,9 @@ void run_wave(const WaveArgs& a) {
     j["t_end_s"] = field.time_s();
     j["courant"] = sigma;
     j["mu_dt"] = mu_dt;
-    j["stability_limit"] = limit;
+    // null with kind "unbounded" (no spatial coupling); 0 with kind "none" (no stable step).
+    j["stability_limit"] = stability.unbounded() ? nlohmann::json(nullptr) : nlohmann::json(stability.limit);
+    j["stability_limit_kind"] = stability.limit_kind();
     j["boundary"] = to_string(w.boundary);
     j["initial"] = to_string(c.initial.kind);
     j["reference"] = periodic ? nlohmann::json(c.reference_semi_discrete ? "stencil" : "continuum") : nlohmann::json(nullptr);
@@ -134,8 +135,8 @@ void run_wave(const WaveArgs& a) {
     std::printf("%s: %s stencil (centre %.6g, orth %.6g, diag %.6g)/d², %d x %d cells of %.6g m, %s boundary\n",
                 c.title.c_str(), w.stencil.name.c_str(), w.stencil.centre, w.stencil.orth, w.stencil.diag, w.nx, w.ny,
                 w.cell_m, to_string(w.boundary));
-    std::printf("  c = %.6g m/s, mu = %.6g /s, dt = %.6g s, sigma = c dt/d = %.4f (stable up to %.4f at mu dt = %.4g)\n",
-                w.wave_speed_m_s, w.damping_per_s, w.dt_s, sigma, limit, mu_dt);
+    std::printf("  c = %.6g m/s, mu = %.6g /s, dt = %.6g s, sigma = c dt/d = %.4f (%s; mu dt = %.4g)\n",
+                w.wave_speed_m_s, w.damping_per_s, w.dt_s, sigma, stability.limit_text().c_str(), mu_dt);
     std::printf("  initial %s, amplitude %.6g m; %ld steps to t = %.6g s in %.3g s CPU (%.3g cell updates/s)\n",
                 to_string(c.initial.kind), c.initial.amplitude_m, steps, field.time_s(), cpu_s,
                 cpu_s > 0 ? static_cast<double>(w.nx) * w.ny * steps / cpu_s : 0.0);
@@ -149,9 +150,7 @@ void run_wave(const WaveArgs& a) {
       std::printf("  no spectral reference for a %s boundary (periodic only); solution RMS %.4g m\n",
                   to_string(w.boundary), rms(z));
   }
-  if (sigma > limit)
-    std::fprintf(stderr, "note: sigma = %.4f exceeds the von Neumann limit %.4f of %s at mu dt = %.4g: the run is unstable\n",
-                 sigma, limit, w.stencil.name.c_str(), mu_dt);
+  if (!stability.stable()) std::fprintf(stderr, "note: %s: the run is unstable\n", stability.reason().c_str());
   if (!finite) set_exit_code(1);  // a run that blew up is a failed run, like a failed solve
 }
 
