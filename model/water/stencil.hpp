@@ -20,14 +20,21 @@ struct Stencil {
   // The smallest symbol over all wavenumbers. symbol() is bilinear in (cos a, cos b) ∈ [−1, 1]²,
   // so its extremes lie at the four corners (a, b ∈ {0, π}).
   double min_symbol() const;
+  double max_symbol() const;  // likewise at the corners
+  // A symbol within this of 0 is 0: a few ulps of the weights' magnitude, the round-off of a sum
+  // of weights × cosines (the constant mode's exact 0 comes out as ±4e-16 for γ = 1/3).
+  double symbol_roundoff() const;
 };
 
 // The largest σ = cΔt/d for which the damped leapfrog of model/README.md §2.1 is stable with this stencil:
 // a mode is multiplied per step by a root g of (2 + μΔt) g² − (4 + 2σ² s) g + (2 − μΔt) = 0, and
-// both roots lie in the unit disc iff −4 ≤ σ² s ≤ 0 (Schur–Cohn), whatever μΔt ∈ [0, 2): so
-// σ_max = 2/√(−min s), independent of damping (model/README.md §2.2). 0 if some mode has s > 0 (it grows for
-// every σ > 0). Five-point 1/√2, γ = 1/3 √3/2, γ = 1/2 1; verification/waves/stability.hpp finds
-// the same limits by bisection on the amplification factors.
+// both roots lie in the closed unit disc iff −4 ≤ σ² s ≤ 0 (Schur–Cohn: |2 − μΔt| ≤ 2 + μΔt and
+// |4 + 2σ² s| ≤ 4), for every μΔt ≥ 0: so σ_max = 2/√(−min s), independent of damping
+// (model/README.md §2.2). Exact, from the symbol's extremes at the corners of the Brillouin zone.
+// 0 ("no stable step") if some mode has s > 0 (it grows for every σ > 0); +∞ ("unbounded") if the
+// symbol is 0 for every mode (no spatial coupling: g = 1 and (2 − μΔt)/(2 + μΔt) for every σ).
+// Five-point 1/√2, γ = 1/3 √3/2, γ = 1/2 1; verification/waves/stability.hpp finds the same
+// limits by bisection on the amplification factors.
 double leapfrog_courant_limit(const Stencil& stencil);
 
 // The family of model/README.md §2.2: (1 − γ)(Σ_orth − 4z) + (γ/2)(Σ_diag − 4z).

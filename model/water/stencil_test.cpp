@@ -45,6 +45,24 @@ BOOST_AUTO_TEST_CASE(courant_limits_are_the_spec_values) {
   BOOST_TEST(leapfrog_courant_limit(Stencil{"raised", -3.5, 1, 0}) == 0);
 }
 
+BOOST_AUTO_TEST_CASE(courant_limits_are_exact_unbounded_without_coupling_and_zero_when_a_mode_grows) {
+  // Oracle: Schur–Cohn on (1 + a) g² − (2 + σ² s) g + (1 − a) = 0, a = μΔt/2 ≥ 0 (model/README.md
+  // §2.1–2.2): stable iff −4 ≤ σ² s ≤ 0 for every mode, so σ_max = 2/√(−min s) exactly. The corner
+  // symbols are sums of exact weights × cos 0 = 1, cos π = −1, so the limits must equal the closed
+  // forms to the rounding of one square root and one division (kRoundoff is ample). The bisection
+  // reported 0.7071067811339 (five-point) and "stable up to 4" for a stencil of zeros.
+  BOOST_TEST(leapfrog_courant_limit(named_stencil("five_point")) == 2 / std::sqrt(8.0));  // min s = −8 at (π, π)
+  // Centre −1 alone: s = −1 for every mode, σ_max = 2.
+  BOOST_TEST(std::abs(leapfrog_courant_limit(Stencil{"decay", -1, 0, 0}) - 2.0) <= kRoundoff);
+  // No spatial coupling: s = 0 for every mode, roots 1 and (2 − μΔt)/(2 + μΔt) at any σ: unbounded.
+  BOOST_TEST(std::isinf(leapfrog_courant_limit(Stencil{"zeros", 0, 0, 0})));
+  // Anti-diffusive (centre 4, orth −1): s = 8 > 0 at (π, π), a mode that grows at every σ > 0.
+  BOOST_TEST(leapfrog_courant_limit(Stencil{"anti", 4, -1, 0}) == 0);
+  // The isotropic stencil's constant mode comes out as ±4e-16, not 0: round-off, not growth.
+  BOOST_TEST(std::abs(named_stencil("nine_point_isotropic").weight_sum()) <= named_stencil("nine_point_isotropic").symbol_roundoff());
+  BOOST_TEST(leapfrog_courant_limit(named_stencil("nine_point_isotropic")) > 0);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace

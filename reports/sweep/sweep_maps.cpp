@@ -422,9 +422,13 @@ std::vector<Figure> sweep_map_figures(const SweepData& d, const SweepMapOptions&
         }
       }
     }
-  for (const auto& column : o.columns) {
+  for (auto c = o.columns.begin(); c != o.columns.end(); ++c) {
+    const std::string& column = *c;
     if (std::find(d.throws.columns.begin(), d.throws.columns.end(), column) == d.throws.columns.end())
       throw_input_error(column, 0, "", "no such column in the sweep's table (the columns are listed in its /throws)");
+    // A column mapped twice would write its figures twice under the same names.
+    if (std::find(o.columns.begin(), c, column) != c)
+      throw_input_error("--map " + column, 0, "", "given more than once (each column is mapped once)");
     const std::vector<double> v = d.throws.column(column);
     const auto [lo, hi] = finite_range(v);
     std::string stem = pre;

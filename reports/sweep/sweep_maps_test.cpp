@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "reports/sweep/sweep_maps.hpp"
+#include "tools/io/input_error.hpp"
 #include "verification/sweep/sweep_run.hpp"
 
 using namespace stoneskip;
@@ -147,6 +148,23 @@ BOOST_AUTO_TEST_CASE(a_throw_without_a_result_is_a_grey_cell_not_a_hole_in_the_i
   BOOST_REQUIRE_EQUAL(empty.rows(), 1u);
   BOOST_TEST(empty.values[0] == 1);
   BOOST_TEST(empty.values[1] == 2);
+}
+
+BOOST_AUTO_TEST_CASE(a_column_mapped_twice_is_one_line_of_bad_input_naming_it) {
+  // Oracle: the exit-status rule (tools/README.md) — `--map X --map X` is bad input: one InputError
+  // (exit 2) naming --map and the column, where main wrote the figures twice and failed inside
+  // HDF5 ("cannot create group", exit 3). A column mapped once is drawn.
+  SweepData d = grid_data({3, 4}, SweepSolvers::realtime);
+  fill(d, [](const std::vector<double>& p, int) { return p[0]; });
+  SweepMapOptions o;
+  o.columns = {"realtime_bounces"};
+  BOOST_CHECK_NO_THROW(sweep_map_figures(d, o));
+  o.columns = {"realtime_bounces", "k0", "realtime_bounces"};
+  BOOST_CHECK_EXCEPTION(sweep_map_figures(d, o), InputError, [](const InputError& e) {
+    const std::string m = e.what();
+    BOOST_TEST(m == "--map realtime_bounces: given more than once (each column is mapped once)");
+    return m.find('\n') == std::string::npos;
+  });
 }
 
 BOOST_AUTO_TEST_CASE(a_random_design_gets_scatter_maps_and_histograms_that_count_every_throw) {

@@ -248,6 +248,7 @@ BOOST_AUTO_TEST_CASE(item_13_a_wave_run_that_blows_up_says_so) {
   BOOST_TEST(t.status == 1, t.err);
   BOOST_TEST(t.out.find("BLEW UP") != std::string::npos, t.out);
   BOOST_TEST(t.out.find("nan") == std::string::npos, t.out);
+  BOOST_TEST(t.out.find("UNSTABLE: sigma = 0.7500 exceeds") != std::string::npos, t.out);
   const RanApart r = run_apart("wave cases/wave_lengyel_counterexample.toml --set water.t_end_s=100 --json");
   BOOST_TEST(r.status == 1);
   const auto j = nlohmann::json::parse(r.out);
@@ -257,6 +258,13 @@ BOOST_AUTO_TEST_CASE(item_13_a_wave_run_that_blows_up_says_so) {
   const long by = j["blew_up_by_step"].get<long>();
   BOOST_TEST(by > 60);     // the shipped 60 steps stay finite
   BOOST_TEST(by <= 4267);  // and it is found within the run
+  // The steps are those taken, not the 4 267 planned (main printed "4267 steps to t = ..." then
+  // "BLEW UP ... by step 1512").
+  BOOST_TEST(j["steps"].get<long>() == by);
+  BOOST_TEST(j["steps_planned"].get<long>() == 4267);
+  BOOST_TEST(j["stable"].get<bool>() == false);
+  BOOST_TEST(j["stability"].get<std::string>().find("no longer finite by step " + std::to_string(by)) != std::string::npos);
+  BOOST_TEST(t.out.find(std::to_string(by) + " steps of 4267 planned") != std::string::npos, t.out);
 }
 
 BOOST_AUTO_TEST_CASE(item_16_inputs_that_would_run_for_minutes_are_refused_with_their_estimate) {

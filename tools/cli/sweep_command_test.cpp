@@ -294,6 +294,30 @@ BOOST_AUTO_TEST_CASE(a_killed_sweep_resumes_to_the_same_table_computing_only_wha
   BOOST_TEST(again.out.find("already complete") != std::string::npos, again.out);
 }
 
+BOOST_AUTO_TEST_CASE(a_journal_with_no_finished_work_does_not_block_resume) {
+  // Oracle: the same sweep run afresh (bit for bit), and cases/README.md — "with --resume and
+  // nothing to resume the sweep starts afresh, so a batch script can always pass it". A journal
+  // left empty or with its header cut short (a kill inside SweepJournal::create) holds no throw:
+  // --resume replaces it with a warning, where main refused it ("no header record", exit 2).
+  const fs::path sweep = setup("torn", grid_sweep(2, 2, "[\"reference\"]"));
+  const fs::path whole = work() / "torn_whole.h5", out = work() / "torn.h5", journal = out.string() + ".journal";
+  BOOST_REQUIRE(command("sweep " + sweep.string() + " --out " + whole.string() + " --quiet").status == 0);
+  for (const std::string& torn : {std::string(), std::string("SWJ1\x01\0\0\0\x40", 9)}) {
+    fs::remove(out);
+    std::ofstream(journal, std::ios::binary | std::ios::trunc) << torn;
+    const Outcome resumed = command("sweep " + sweep.string() + " --out " + out.string() + " --resume --quiet");
+    BOOST_REQUIRE_MESSAGE(resumed.status == 0, resumed.err);
+    BOOST_TEST(resumed.err.find("warning: " + journal.string() + ": holds no finished throw") != std::string::npos, resumed.err);
+    BOOST_TEST(!fs::exists(journal));
+    expect_same_results(table_of(whole), table_of(out), "afresh after a torn header");
+  }
+  // A foreign file in the journal's place is still refused.
+  fs::remove(out);
+  std::ofstream(journal, std::ios::binary | std::ios::trunc) << "not a journal";
+  expect_bad_input(command("sweep " + sweep.string() + " --out " + out.string() + " --resume"), {"not a sweep journal"}, out, true);
+  fs::remove(journal);
+}
+
 // The offsets of the whole records of a sweep journal (verification/sweep/journal.cpp: a frame of
 // magic, type, payload length and checksum, 24 bytes, then the payload).
 std::vector<std::size_t> journal_records(const fs::path& journal) {

@@ -6,11 +6,13 @@
 // [reference] symbol = "stencil" (then the difference is the time error alone).
 //   stoneskip wave cases/wave_gaussian_five_point.toml
 //   stoneskip wave cases/wave_gaussian_five_point.toml --set water.stencil=nine_point_isotropic --json
-//   stoneskip wave cases/wave_lengyel_counterexample.toml      # an unstable run, shown as such
+//   stoneskip wave cases/wave_lengyel_counterexample.toml      # an unstable run, shown as such: exit 1
 // Prints the resolved configuration, the RMS ("L2") and max errors in metres, the solution's own
 // RMS for scale, the steps and the CPU time. Without a periodic boundary there is no reference
-// and only the run's own figures are printed (errors are null in JSON). A run whose surface
-// overflows says so ("BLEW UP", JSON finite = false, blew_up_by_step, errors null) and exits 1.
+// and only the run's own figures are printed (errors are null in JSON). An unstable run — σ above
+// the stencil's von Neumann limit, or a surface that overflowed — says so first ("UNSTABLE: ...",
+// JSON stable = false and the reason in stability) and exits 1; one whose surface overflowed also
+// says "BLEW UP" (JSON finite = false, blew_up_by_step, errors null) and counts the steps it took.
 // Memory and cell updates are estimated first and held to the limits of cases/README.md.
 #include <algorithm>
 #include <cmath>
@@ -28,7 +30,6 @@
 #include "tools/io/progress.hpp"
 #include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/wave_case.hpp"
-#include "verification/waves/stability.hpp"
 #include "verification/waves/wave_problem.hpp"
 
 namespace stoneskip::cli {
@@ -41,12 +42,6 @@ struct WaveArgs {
   ResourceLimits limits;
 };
 
-double rms(const std::vector<double>& z) {
-  double s = 0;
-  for (double v : z) s += v * v;
-  return std::sqrt(s / static_cast<double>(z.size()));
-}
-
 bool all_finite(const std::vector<double>& z) {
   return std::all_of(z.begin(), z.end(), [](double v) { return std::isfinite(v); });
 }
@@ -57,7 +52,7 @@ void run_wave(const WaveArgs& a) {
   const HeightFieldOptions& w = c.water;
   const long steps = c.steps();
   const double sigma = w.courant(), mu_dt = w.damping_per_s * w.dt_s;
-  const double limit = stability_limit(w.stencil, mu_dt);
+  const WaterStability stability = water_stability(w);  // the exact von Neumann limit
 
   // 1. Initial surface and the run, in up to 100 chunks: progress, and a surface that overflows
   //    is caught by the end of the chunk where it did (then nothing is compared: its error is not 0).
@@ -84,6 +79,12 @@ void run_wave(const WaveArgs& a) {
   }
   const double cpu_s = timer.seconds();
   const bool finite = blown_up_by < 0;
+  const long steps_taken = field.steps();
+  // An unstable run's numbers are not discretisation errors: σ above the von Neumann limit, or a
+  // surface that overflowed, makes the run unstable, said on stdout and in JSON, with exit 1.
+  const bool stable = stability.stable() && finite;
+  std::string why = stability.reason();
+  if (!finite) why += "; the surface was no longer finite by step " + std::to_string(blown_up_by);
 
   // 2. The reference on the same grid and at the same time (periodic only).
   const bool periodic = w.boundary == Boundary::periodic;
@@ -113,46 +114,52 @@ void run_wave(const WaveArgs& a) {
     j["ny"] = w.ny;
     j["cell_m"] = w.cell_m;
     j["dt_s"] = w.dt_s;
-    j["steps"] = steps;
+    j["steps"] = steps_taken;  // taken: fewer than planned when the run blew up
+    j["steps_planned"] = steps;
     j["t_end_s"] = field.time_s();
     j["courant"] = sigma;
     j["mu_dt"] = mu_dt;
-    j["stability_limit"] = limit;
+    // null with kind "unbounded" (no spatial coupling); 0 with kind "none" (no stable step).
+    j["stability_limit"] = stability.unbounded() ? nlohmann::json(nullptr) : nlohmann::json(stability.limit);
+    j["stability_limit_kind"] = stability.limit_kind();
+    j["stable"] = stable;  // false: the errors (null if it blew up) are not discretisation errors
+    j["stability"] = why;
     j["boundary"] = to_string(w.boundary);
     j["initial"] = to_string(c.initial.kind);
     j["reference"] = periodic ? nlohmann::json(c.reference_semi_discrete ? "stencil" : "continuum") : nlohmann::json(nullptr);
     auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
     j["l2_error"] = num(err.l2_m);
     j["max_error"] = num(err.max_m);
-    j["solution_rms_m"] = finite ? num(rms(z)) : nlohmann::json(nullptr);
+    j["solution_rms_m"] = finite ? num(root_mean_square(z)) : nlohmann::json(nullptr);
     j["finite"] = finite;
     j["blew_up_by_step"] = finite ? nlohmann::json(nullptr) : nlohmann::json(blown_up_by);
     j["cpu_s"] = cpu_s;
-    j["cell_updates_per_s"] = cpu_s > 0 ? static_cast<double>(w.nx) * w.ny * steps / cpu_s : 0.0;
+    j["cell_updates_per_s"] = cpu_s > 0 ? static_cast<double>(w.nx) * w.ny * steps_taken / cpu_s : 0.0;
     std::cout << json_text(j) << std::endl;
   } else {
     std::printf("%s: %s stencil (centre %.6g, orth %.6g, diag %.6g)/d², %d x %d cells of %.6g m, %s boundary\n",
                 c.title.c_str(), w.stencil.name.c_str(), w.stencil.centre, w.stencil.orth, w.stencil.diag, w.nx, w.ny,
                 w.cell_m, to_string(w.boundary));
-    std::printf("  c = %.6g m/s, mu = %.6g /s, dt = %.6g s, sigma = c dt/d = %.4f (stable up to %.4f at mu dt = %.4g)\n",
-                w.wave_speed_m_s, w.damping_per_s, w.dt_s, sigma, limit, mu_dt);
-    std::printf("  initial %s, amplitude %.6g m; %ld steps to t = %.6g s in %.3g s CPU (%.3g cell updates/s)\n",
-                to_string(c.initial.kind), c.initial.amplitude_m, steps, field.time_s(), cpu_s,
-                cpu_s > 0 ? static_cast<double>(w.nx) * w.ny * steps / cpu_s : 0.0);
+    std::printf("  c = %.6g m/s, mu = %.6g /s, dt = %.6g s, sigma = c dt/d = %.4f (%s; mu dt = %.4g)\n",
+                w.wave_speed_m_s, w.damping_per_s, w.dt_s, sigma, stability.limit_text().c_str(), mu_dt);
+    std::printf("  initial %s, amplitude %.6g m; %ld steps%s to t = %.6g s in %.3g s CPU (%.3g cell updates/s)\n",
+                to_string(c.initial.kind), c.initial.amplitude_m, steps_taken,
+                finite ? "" : (" of " + std::to_string(steps) + " planned").c_str(), field.time_s(), cpu_s,
+                cpu_s > 0 ? static_cast<double>(w.nx) * w.ny * steps_taken / cpu_s : 0.0);
+    if (!stable)
+      std::printf("  UNSTABLE: %s%s\n", why.c_str(),
+                  finite ? ": the figures below are those of an unstable run, not a discretisation error" : "");
     if (!finite)
       std::printf("  BLEW UP: the surface was no longer finite by step %ld (t = %.6g s); no error is reported\n",
                   blown_up_by, field.time_s());
     else if (periodic)
       std::printf("  error vs the %s spectral reference: L2 (RMS) %.4g m, max %.4g m (solution RMS %.4g m)\n",
-                  c.reference_semi_discrete ? "semi-discrete (stencil symbol)" : "continuum", err.l2_m, err.max_m, rms(z));
+                  c.reference_semi_discrete ? "semi-discrete (stencil symbol)" : "continuum", err.l2_m, err.max_m, root_mean_square(z));
     else
       std::printf("  no spectral reference for a %s boundary (periodic only); solution RMS %.4g m\n",
-                  to_string(w.boundary), rms(z));
+                  to_string(w.boundary), root_mean_square(z));
   }
-  if (sigma > limit)
-    std::fprintf(stderr, "note: sigma = %.4f exceeds the von Neumann limit %.4f of %s at mu dt = %.4g: the run is unstable\n",
-                 sigma, limit, w.stencil.name.c_str(), mu_dt);
-  if (!finite) set_exit_code(1);  // a run that blew up is a failed run, like a failed solve
+  if (!stable) set_exit_code(1);  // an unstable run is a failed run, like one that blew up or a failed solve
 }
 
 void add_wave(CLI::App& app) {

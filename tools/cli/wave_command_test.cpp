@@ -16,9 +16,9 @@ namespace {
 using stoneskip::test::Ran;
 using stoneskip::test::run_stoneskip;
 
-nlohmann::json run_json(const std::string& args) {
+nlohmann::json run_json(const std::string& args, int status = 0) {
   Ran r = run_stoneskip(args + " --json", false);  // stderr may carry notes; stdout is the JSON
-  BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
+  BOOST_REQUIRE_MESSAGE(r.status == status, r.out);
   return nlohmann::json::parse(r.out);
 }
 
@@ -46,9 +46,48 @@ BOOST_AUTO_TEST_CASE(lengyel_counterexample_grows_by_the_predicted_factor) {
   // Oracle: model/README.md §2.2 — five-point, μΔt = 0.5, σ = 0.75: the checkerboard grows by
   // (5 + √10)/5 ≈ 1.632 per step; after 60 steps from a 1 cm impulse the RMS is ~1.63^60 × the
   // impulse's share of that mode, far above any physical height (we ask for > 1e6 m).
-  nlohmann::json j = run_json("wave cases/wave_lengyel_counterexample.toml");
+  // An unstable run exits 1 (cases/README.md) and says why in JSON.
+  nlohmann::json j = run_json("wave cases/wave_lengyel_counterexample.toml", 1);
   BOOST_TEST(j["courant"].get<double>() > j["stability_limit"].get<double>());
   BOOST_TEST(j["solution_rms_m"].get<double>() > 1e6);
+  BOOST_TEST(j["stable"].get<bool>() == false);
+  BOOST_TEST(j["stability"].get<std::string>().find("sigma = 0.7500 exceeds the von Neumann limit 0.7071 of five_point") == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(a_run_above_the_limit_is_reported_unstable_before_its_error_and_exits_1) {
+  // Oracle: σ = c dt/d = 1 × 0.0056 / 0.0078125 = 0.7168 > 1/√2, the five-point limit at every μΔt
+  // (model/README.md §2.2). The run is too short to grow visibly (its L2 looks like 1.5e-6 m, a
+  // converged number): stdout must say UNSTABLE before it, JSON stable = false, exit 1.
+  const std::string line = "wave cases/wave_gaussian_five_point.toml --set water.dt_s=0.0056 --set water.damping_per_s=0";
+  const Ran r = run_stoneskip(line, false);
+  BOOST_TEST(r.status == 1);
+  const auto unstable = r.out.find("UNSTABLE: sigma = 0.7168 exceeds the von Neumann limit 0.7071 of five_point");
+  BOOST_TEST(unstable != std::string::npos, r.out);
+  BOOST_TEST(unstable < r.out.find("L2 (RMS)"), r.out);
+  BOOST_TEST(r.out.find("not a discretisation error") != std::string::npos, r.out);
+  const nlohmann::json j = run_json(line, 1);
+  BOOST_TEST(j["stable"].get<bool>() == false);
+  BOOST_TEST(j["l2_error"].is_number());
+  // Below the limit: stable, exit 0.
+  const nlohmann::json ok = run_json("wave cases/wave_gaussian_five_point.toml");
+  BOOST_TEST(ok["stable"].get<bool>() == true);
+  BOOST_TEST(ok["stability"].get<std::string>().find("is within the von Neumann limit") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(a_surface_whose_squares_overflow_still_has_a_finite_rms) {
+  // Oracle: for N values, max/√N ≤ RMS ≤ max. The Lengyel case run to 25 s reaches 8.6e221 m, whose
+  // square overflows; main printed "L2 (RMS) inf m" and JSON l2_error null with no reason.
+  const nlohmann::json j = run_json("wave cases/wave_lengyel_counterexample.toml --set water.t_end_s=25", 1);
+  BOOST_TEST(j["finite"].get<bool>() == true);
+  BOOST_TEST(j["stable"].get<bool>() == false);
+  const double rms = j["solution_rms_m"].get<double>(), l2 = j["l2_error"].get<double>(), mx = j["max_error"].get<double>();
+  const double n = 32.0 * 32.0;
+  BOOST_TEST(mx > 1e200);
+  // kRms: a few roundings of the scaled sum; the checkerboard's heights are nearly equal, so l2 ≈ max.
+  constexpr double kRms = 1e-12;
+  BOOST_TEST(l2 <= mx * (1 + kRms));
+  BOOST_TEST(l2 >= mx / std::sqrt(n) * (1 - kRms));
+  BOOST_TEST(rms > 1e200);
 }
 
 BOOST_AUTO_TEST_CASE(a_walled_pool_has_no_reference_and_says_so_in_json) {

@@ -2,7 +2,7 @@
 // stone of 1e-30 m (exit speed 7.6e22 m/s), water of density 0, a release 1 m under water, an
 // unstable scene water blamed on the stone — is refused with the key and the bound, and every
 // shipped case stays inside the bounds and the limits. Oracles: the bounds documented per key in
-// cases/README.md, the von Neumann limit of the stencil (verification/waves/stability.hpp), and
+// cases/README.md, the exact von Neumann limit of the stencil (model/water/stencil.hpp), and
 // the arithmetic of the estimates (array counts × cells × 8 bytes).
 #include <boost/test/unit_test.hpp>
 
@@ -96,6 +96,39 @@ BOOST_AUTO_TEST_CASE(an_unstable_scene_water_is_refused_naming_its_step) {
   const std::string e = error_of(text, {"water.dt_s=0.05"});
   BOOST_TEST(e.find("c.toml: --set water.dt_s: the water would be unstable: sigma = c dt_s / cell_m = 3.125") == 0u, e);
   BOOST_TEST(e.find("take dt_s <= 0.0138564") != std::string::npos, e);
+}
+
+BOOST_AUTO_TEST_CASE(a_scene_water_with_no_stable_step_says_so_and_gives_no_step) {
+  // Oracle: model/water/stencil.hpp (Schur–Cohn) — centre 4, orth −1 has symbol 8 > 0 at (π, π),
+  // a mode that grows at every σ > 0, so no dt_s is stable; the bisection's "take dt_s <= 2.1e-08"
+  // named a step that does not exist. A stencil of zeros couples no cells and is stable at any σ.
+  const std::string water = std::string(kCase) + stoneskip::test::kPlainWater;
+  const std::string anti = error_of(water + "\n[stencil]\nname = \"anti\"\ncentre = 4.0\north = -1.0\ndiag = 0.0\n",
+                                    {"water.stencil=\"custom\""});
+  BOOST_TEST(anti.find("the anti stencil has no stable step") != std::string::npos, anti);
+  BOOST_TEST(anti.find("take dt_s") == std::string::npos, anti);
+  const std::string zeros = error_of(water + "\n[stencil]\nname = \"zeros\"\ncentre = 0.0\north = 0.0\ndiag = 0.0\n",
+                                     {"water.stencil=\"custom\"", "water.dt_s=0.05"});
+  BOOST_TEST(zeros == "", zeros);  // σ = 3.125, stable: nothing to refuse
+}
+
+BOOST_AUTO_TEST_CASE(wave_and_scene_say_the_same_exact_limit) {
+  // Oracle: σ_max = 2/√8 = 1/√2 for the five-point stencil at every μΔt ≥ 0 (model/water/stencil.hpp);
+  // the bisection gave 0.7071068157 at μΔt = 390.6, above the true limit. Exact to the last bit.
+  HeightFieldOptions w;
+  w.stencil = named_stencil("five_point");
+  w.cell_m = 1;
+  w.wave_speed_m_s = 1;
+  for (double mu : {0.0, 0.5, 390.6 / 0.7})
+    for (double sigma : {0.7, 0.7071067811866, 0.72}) {
+      w.dt_s = sigma;
+      w.damping_per_s = mu;
+      const WaterStability s = water_stability(w);
+      BOOST_TEST(s.limit == 2 / std::sqrt(8.0));
+      BOOST_TEST(s.stable() == (sigma < 0.7071067811865), sigma << " at mu " << mu);
+      BOOST_TEST(s.reason().find(s.stable() ? "is within the von Neumann limit 0.7071 of five_point"
+                                            : "exceeds the von Neumann limit 0.7071 of five_point") != std::string::npos);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(estimates_count_what_the_run_will_hold) {

@@ -5,7 +5,6 @@
 #include "model/coupling/draught.hpp"
 #include "tools/scene/stone_case.hpp"
 #include "tools/scene/wave_case.hpp"
-#include "verification/waves/stability.hpp"
 
 namespace stoneskip {
 
@@ -44,18 +43,18 @@ WaterScene read_water(TomlTable w, TomlTable& top) {
   scene.field.tiles.tile_cells = static_cast<int>(tile);
   scene.field.tiles.epsilon_m = how.tiles.epsilon_m;
   // A scene's water must be stable (a wave case may be unstable on purpose; a scene's water that
-  // blows up would be blamed on the stone): the free von Neumann limit at μΔt (verification/waves/stability).
+  // blows up would be blamed on the stone): the exact free von Neumann limit (wave_case.hpp).
   {
-    const HeightFieldOptions& f = scene.field;
-    const double mu_dt = f.damping_per_s * f.dt_s, sigma = f.courant();
-    const double limit = stability_limit(f.stencil, mu_dt);
-    if (sigma > limit) {
+    const WaterStability st = water_stability(scene.field);
+    if (!st.stable()) {
       std::ostringstream m;
       m.precision(6);
-      m << "the water would be unstable: sigma = c dt_s / cell_m = " << sigma << " exceeds the " << f.stencil.name
-        << " stencil's limit " << limit << " at mu dt = " << mu_dt;
-      if (limit > 0) m << "; take dt_s <= " << limit * f.cell_m / f.wave_speed_m_s;
-      else m << "; it is unstable at any step";
+      m << "the water would be unstable: sigma = c dt_s / cell_m = " << st.sigma;
+      if (st.no_stable_step())
+        m << ", but the " << st.stencil << " stencil has no stable step (a mode grows at every sigma > 0): change its weights";
+      else
+        m << " exceeds the " << st.stencil << " stencil's limit " << st.limit << " (at every mu dt); take dt_s <= "
+          << st.limit * scene.field.cell_m / scene.field.wave_speed_m_s;
       checked.fail("dt_s", m.str());
     }
   }

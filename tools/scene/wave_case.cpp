@@ -16,6 +16,38 @@ std::string num(double v) {
 }
 }  // namespace
 
+WaterStability water_stability(const HeightFieldOptions& water) {
+  WaterStability s;
+  s.stencil = water.stencil.name;
+  s.sigma = water.courant();
+  s.mu_dt = water.damping_per_s * water.dt_s;
+  s.limit = leapfrog_courant_limit(water.stencil);
+  return s;
+}
+
+std::string WaterStability::limit_kind() const { return unbounded() ? "unbounded" : no_stable_step() ? "none" : "bounded"; }
+
+std::string WaterStability::limit_text() const {
+  if (unbounded()) return "stable at every sigma: the stencil couples no cells";
+  if (no_stable_step()) return "no stable step: a mode of the stencil grows at every sigma > 0";
+  char b[64];
+  std::snprintf(b, sizeof b, "stable up to %.4f", limit);
+  return b;
+}
+
+std::string WaterStability::reason() const {
+  char b[256];
+  if (unbounded())
+    std::snprintf(b, sizeof b, "the %s stencil couples no cells: stable at every sigma", stencil.c_str());
+  else if (no_stable_step())
+    std::snprintf(b, sizeof b, "the %s stencil has no stable step: a mode grows at every sigma > 0 (sigma = %.4f)",
+                  stencil.c_str(), sigma);
+  else
+    std::snprintf(b, sizeof b, "sigma = %.4f %s the von Neumann limit %.4f of %s (at every mu dt)", sigma,
+                  stable() ? "is within" : "exceeds", limit, stencil.c_str());
+  return b;
+}
+
 HeightFieldOptions read_height_field(TomlTable t, TomlTable& top, double* t_end_s) {
   HeightFieldOptions w;
   for (const char* key : {"nx", "ny"}) {

@@ -3,6 +3,7 @@
 // height field's options, the initial disturbance and the end time: [water], [initial], and
 // optionally [case], [stencil] (custom weights, with water.stencil = "custom") and [reference].
 // Every error is a one-line InputError naming the file and the line or key.
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,26 @@ struct WaveCase {
 // and a disturbance table ([initial] here, [water.initial] in a stone case).
 HeightFieldOptions read_height_field(TomlTable t, TomlTable& top, double* t_end_s);
 Disturbance read_disturbance(TomlTable t);
+
+// Whether the free water is stable at its σ = cΔt/d: the exact von Neumann limit of its stencil
+// (model/water/stencil.hpp: leapfrog_courant_limit, the same for every μΔt ≥ 0), said the same way
+// by `wave` and by a scene's check of its water.
+struct WaterStability {
+  std::string stencil;
+  double sigma = 0, mu_dt = 0;
+  double limit = 0;  // +∞: unbounded (the stencil couples no cells); 0: no stable step
+  bool stable() const { return sigma <= limit; }
+  bool unbounded() const { return std::isinf(limit); }
+  bool no_stable_step() const { return limit == 0; }
+  std::string limit_kind() const;  // "bounded", "unbounded" or "none"
+  // "stable up to 0.7071", "stable at every sigma: the stencil couples no cells", or "no stable
+  // step: a mode of the stencil grows at every sigma > 0".
+  std::string limit_text() const;
+  // "sigma = 0.7168 exceeds the von Neumann limit 0.7071 of five_point (at every mu dt)", or that
+  // it is within it, or that the stencil has no stable step.
+  std::string reason() const;
+};
+WaterStability water_stability(const HeightFieldOptions& water);
 
 WaveCase load_wave_case(const std::string& path, const std::vector<std::string>& overrides = {});
 WaveCase wave_case_from_document(const TomlDocument& doc);

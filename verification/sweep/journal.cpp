@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
@@ -74,7 +75,41 @@ std::size_t read_records(const std::vector<unsigned char>& bytes, std::vector<st
   return pos;
 }
 
+// A header's payload is the texts of a sweep file and a base case and a few names: a length past
+// this is not one of ours, whatever the bytes before it say.
+constexpr std::uint64_t kMaxHeaderPayload = std::uint64_t{1} << 30;
+
+// True when `bytes` are a strict prefix of a header record (see remove_journal_with_torn_header).
+bool is_torn_header(const std::vector<unsigned char>& bytes) {
+  unsigned char start[8];
+  std::memcpy(start, &kMagic, 4);
+  std::memcpy(start + 4, &kHeader, 4);
+  if (std::memcmp(bytes.data(), start, std::min<std::size_t>(bytes.size(), 8)) != 0) return false;
+  if (bytes.size() < 16) return true;  // the length not yet whole
+  std::uint64_t len = 0;
+  std::memcpy(&len, &bytes[8], 8);
+  return len <= kMaxHeaderPayload && bytes.size() < kFrame + len;
+}
+
 }  // namespace
+
+bool remove_journal_with_torn_header(const fs::path& path) {
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return false;  // resume() says what it is
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+  if (fd < 0) return false;
+  lock_or_fail(path, fd);  // a sweep still creating it holds the lock: refused, never removed under it
+  std::vector<unsigned char> bytes;
+  bool torn = false;
+  if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && static_cast<std::uint64_t>(st.st_size) < kFrame + kMaxHeaderPayload) {
+    bytes.resize(static_cast<std::size_t>(st.st_size));
+    torn = ::pread(fd, bytes.data(), bytes.size(), 0) == static_cast<ssize_t>(bytes.size()) && is_torn_header(bytes);
+  }
+  // Removed while still locked, so no other run can take it up in between.
+  if (torn && ::unlink(path.c_str()) != 0) torn = false;
+  ::close(fd);
+  return torn;
+}
 
 fs::path journal_path_for(const fs::path& result_file) {
   fs::path p = result_file;

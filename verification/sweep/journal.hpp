@@ -43,6 +43,14 @@ struct JournalRecovery {
   std::size_t damaged_records = 0;
 };
 
+// For --resume: removes the journal at `path` and returns true when it holds no finished work
+// because its header was never completed — the file is empty, or a strict prefix of a header
+// record (the magic and type so far, then fewer bytes than the record's length says), as a kill
+// between create()'s open(O_CREAT | O_EXCL) and its header's write leaves it. Anything else (a
+// whole journal, a foreign or damaged file) is left for resume() to read or refuse: false.
+// InputError if another sweep holds the journal's lock.
+bool remove_journal_with_torn_header(const std::filesystem::path& path);
+
 class SweepJournal {
  public:
   // A new journal; InputError if it exists or cannot be created or locked.

@@ -225,6 +225,48 @@ BOOST_AUTO_TEST_CASE(a_fifo_or_a_link_as_the_journal_is_refused_without_blocking
   fs::remove(target);
 }
 
+BOOST_AUTO_TEST_CASE(a_journal_whose_header_was_cut_short_is_removed_and_anything_else_is_kept) {
+  // Oracle: the bytes create() writes. Every strict prefix of the header record (0 bytes … one
+  // byte short: a kill between open(O_CREAT | O_EXCL) and the header's write) holds no finished
+  // throw and is removed; the whole header, a journal with rows, a foreign file, and a prefix
+  // with one byte of its magic or type changed are not ours to remove (resume() judges them).
+  const fs::path p = scratch("torn.journal"), whole = scratch("whole.journal");
+  fs::remove(whole);
+  SweepJournal::create(whole, kId, 1.0);  // closed at once: the header alone
+  const std::vector<char> header = bytes_of(whole);
+  BOOST_REQUIRE(header.size() > 24u);
+  for (std::size_t cut = 0; cut < header.size(); ++cut) {
+    write_bytes(p, header, cut);
+    BOOST_TEST(remove_journal_with_torn_header(p), "cut at " << cut);
+    BOOST_TEST(!fs::exists(p), "cut at " << cut);
+  }
+  BOOST_TEST(!remove_journal_with_torn_header(whole));
+  BOOST_TEST(fs::exists(whole));
+  for (std::size_t flip : {std::size_t{0}, std::size_t{5}}) {  // the magic, the type
+    std::vector<char> bad = header;
+    bad[flip] ^= 0x01;
+    write_bytes(p, bad, 20);
+    BOOST_TEST(!remove_journal_with_torn_header(p), "byte " << flip << " changed");
+    BOOST_TEST(fs::exists(p));
+  }
+  const std::string foreign = "a file of the user's, not a journal";
+  write_bytes(p, std::vector<char>(foreign.begin(), foreign.end()), foreign.size());
+  BOOST_TEST(!remove_journal_with_torn_header(p));
+  BOOST_TEST(fs::exists(p));
+  // A header's frame whose length is past any header's (1 GiB): not a torn header of ours.
+  std::vector<char> huge = header;
+  const std::uint64_t len = std::uint64_t{1} << 40;
+  std::memcpy(&huge[8], &len, 8);
+  write_bytes(p, huge, huge.size());
+  BOOST_TEST(!remove_journal_with_torn_header(p));
+  // A sweep still creating the journal holds its lock: refused, not removed under it.
+  fs::remove(whole);
+  SweepJournal live = SweepJournal::create(whole, kId, 1.0);
+  BOOST_CHECK_THROW(remove_journal_with_torn_header(whole), InputError);
+  BOOST_TEST(fs::exists(whole));
+  live.close_and_remove();
+}
+
 BOOST_AUTO_TEST_CASE(a_journal_being_written_cannot_be_opened_twice) {
   // Oracle: flock(LOCK_EX) held by the first writer.
   const fs::path p = scratch("locked.journal");

@@ -99,7 +99,14 @@ SweepPlan SweepPlan::prepare(const SweepData& spec, const SweepRunOptions& optio
   const fs::path jp = journal_path_for(options.out);
   const JournalIdentity identity = identity_of(plan.data_);
   std::error_code ec;
-  const bool journal_exists = fs::exists(jp, ec);
+  bool journal_exists = fs::exists(jp, ec);
+  // A journal whose header was never completed holds no finished throw (a sweep killed as it
+  // started): with --resume it is replaced, and the sweep starts afresh as with no journal.
+  if (options.resume && journal_exists && remove_journal_with_torn_header(jp)) {
+    plan.warnings_.push_back(jp.string() + ": holds no finished throw (empty, or its header cut short by a sweep "
+                             "killed as it started): replaced, and the sweep starts afresh");
+    journal_exists = false;
+  }
   if (!options.resume && journal_exists)
     throw_input_error(jp.string(), 0, "",
                       "the journal of an interrupted sweep is here: finish it with --resume, or delete it to start again");

@@ -25,11 +25,9 @@ double amplification(double symbol, double sigma, double mu_dt) {
 }
 
 double max_amplification(const Stencil& stencil, double sigma, double mu_dt, int n) {
-  // The symbol is a sum of weights × cosines: a few ulps of the weights' magnitude are round-off
-  // (the constant mode's exact 0 comes out as ±4e-16 for γ = 1/3, and a positive s would read as
-  // growth of √(σ² s) per step, 2e-9 at σ = 0.1). Such a symbol is the neutral s = 0.
-  const double symbol_roundoff = 16 * std::numeric_limits<double>::epsilon() *
-                                 (std::abs(stencil.centre) + 4 * std::abs(stencil.orth) + 4 * std::abs(stencil.diag));
+  // A symbol within round-off of 0 (Stencil::symbol_roundoff) is the neutral s = 0: a positive
+  // round-off s would read as growth of √(σ² s) per step, 2e-9 at σ = 0.1.
+  const double symbol_roundoff = stencil.symbol_roundoff();
   double worst = 0;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {

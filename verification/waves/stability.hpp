@@ -3,7 +3,9 @@
 // symbol s (d² × the stencil's eigenvalue) is multiplied each step by a root g of
 //   (2 + μΔt) g² − (4 + 2σ² s) g + (2 − μΔt) = 0,   σ = cΔt/d,
 // found by inserting z ∝ gⁿ e^{ik·x} into the update. The scheme is stable when |g| ≤ 1 for every
-// mode of the wavenumber grid. The limit is found by bisection on σ, not from a formula.
+// mode of the wavenumber grid. stability_limit() finds the limit by bisection on σ, not from a
+// formula: the waves studies use it as an independent check of the closed form
+// (model/water/stencil.hpp: leapfrog_courant_limit), which is what `wave` and `scene` report.
 #include <cstdint>
 #include <string>
 

@@ -9,13 +9,8 @@ namespace stoneskip {
 
 FieldError field_error(const std::vector<double>& a, const std::vector<double>& b) {
   FieldError e;
-  double s = 0;
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    const double d = a[k] - b[k];
-    s += d * d;
-    e.max_m = std::max(e.max_m, std::abs(d));
-  }
-  e.l2_m = std::sqrt(s / static_cast<double>(a.size()));
+  for (std::size_t k = 0; k < a.size(); ++k) e.max_m = std::max(e.max_m, std::abs(a[k] - b[k]));
+  e.l2_m = root_mean_square(a.size(), [&](std::size_t k) { return a[k] - b[k]; });
   return e;
 }
 
