@@ -379,7 +379,7 @@ BOOST_AUTO_TEST_CASE(waves_quick_report_is_a_function_of_its_data) {
   { std::ofstream(edited / "index.md") << "# my notes\n"; }
   const auto e = run_stoneskip("report render " + edited.string());
   BOOST_TEST(e.status == 2, e.out);
-  BOOST_TEST(e.out.find("'index.md', which changed since stoneskip wrote it") != std::string::npos, e.out);
+  BOOST_TEST(e.out.find("index.md', which changed since stoneskip wrote it") != std::string::npos, e.out);
   BOOST_TEST(read_file(edited / "index.md") == "# my notes\n");
   const fs::path bare = tmp.path() / "bare";
   fs::create_directories(bare);

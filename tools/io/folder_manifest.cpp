@@ -1,5 +1,7 @@
 #include "tools/io/folder_manifest.hpp"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
@@ -159,12 +161,14 @@ bool may_overwrite(const fs::path& dir, const std::vector<fs::path>& files, std:
     const bool same = type == fs::file_type::regular && it != listed.end() && !it->second.folder &&
                       it->second.size == fs::file_size(p, ec) && !ec && it->second.hash == file_hash(p);
     if (!same) {
+      struct stat st {};
+      const bool regular = type == fs::file_type::regular;
       if (why)
-        *why = "'" + rel + "', which " +
-               (!has_manifest ? std::string("stoneskip did not write (the folder holds no ") + kFolderManifest + ")"
-                : type != fs::file_type::regular ? std::string("is not a plain file")
-                : it == listed.end()             ? std::string("stoneskip did not write")
-                                                 : std::string("changed since stoneskip wrote it"));
+        *why = "'" + p.string() + "', which " +
+               (!regular && ::lstat(p.c_str(), &st) == 0 ? "is " + file_type_words(st.st_mode)
+                : !has_manifest ? std::string("stoneskip did not write (the folder holds no ") + kFolderManifest + ")"
+                : it == listed.end() ? std::string("stoneskip did not write")
+                                     : std::string("changed since stoneskip wrote it"));
       return false;
     }
   }

@@ -32,8 +32,9 @@ echo "== The built-in wave cases: height field against the spectral reference ==
 mkdir -p "$out/wave_cases"
 for c in cases/wave_*.toml; do
   echo "-- $c"
-  "$exe" wave "$c"
-  "$exe" wave "$c" --json > "$out/wave_cases/$(basename "${c%.toml}").json"
+  # Exit 1: the run is unstable or blew up, and says so (the Lengyel counter-example, on purpose).
+  "$exe" wave "$c" || [ $? -eq 1 ]
+  "$exe" wave "$c" --json > "$out/wave_cases/$(basename "${c%.toml}").json" || [ $? -eq 1 ]
 done
 
 echo "== Report: waves =="
