@@ -116,7 +116,7 @@ ReportBuild::ReportBuild(ReportBuildOptions options) : options_(std::move(option
 void ReportBuild::keep_on_signal() {
   // From the first finished section on, a signal leaves the work folder as SIGKILL does, and the
   // cleanup's line says where: the same command resumes it.
-  if (!registered_.registered()) return;
+  if (!registered_.registered() || !options_.keep_sections_on_signal) return;
   registered_.release();
   set_interrupt_note("stoneskip: finished sections kept in " + work_.string() + ": run the same command to resume");
 }

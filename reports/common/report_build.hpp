@@ -39,6 +39,9 @@ struct ReportBuildOptions {
   std::string settings_text;  // what the sections were computed from (study files, options)
   std::string command_line;   // stored with the data
   ProgressFactory progress;
+  // Whether a signal leaves finished sections for a resume (below). A command that never resumes
+  // them (`capture validate`: a capture takes seconds) sets false: a signal then removes it all.
+  bool keep_sections_on_signal = true;
 };
 
 class ReportBuild : public StudySink {

@@ -397,7 +397,7 @@ void validate(const CaptureArgs& a) {
   if (!a.out.empty())
     build.emplace(ReportBuildOptions{a.out, "captures",
                                      "# " + command + "\n" + (c ? "# case " + c->file + "\n" + c->text : std::string()),
-                                     command, terminal_progress()});
+                                     command, terminal_progress(), /*keep_sections_on_signal=*/false});
   std::optional<FreshSections> sections;
   if (build) sections.emplace(*build);
   CaptureFindingsContext ctx;

@@ -268,6 +268,7 @@ BOOST_AUTO_TEST_CASE(an_interrupted_capture_validation_leaves_no_folder) {
     const int sig = i % 2 ? SIGINT : SIGTERM;
     const double at = moment(rng) * whole.wall_s;
     BOOST_TEST_CONTEXT("capture validate --out, signal " << sig << " at " << at << " s of " << whole.wall_s) {
+      // Its sections are never resumed (tools/capture/README.md): nothing of them stays.
       check_left(interrupt(validate, s.dir, sig, at), sig, s.out, {"cv"}, s.dir);
       fs::remove_all(s.out / "cv");
     }
