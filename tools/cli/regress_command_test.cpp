@@ -170,4 +170,22 @@ BOOST_AUTO_TEST_CASE(update_refuses_a_linked_baseline_before_any_work) {
   BOOST_TEST(slurp(copy) == before);
 }
 
+BOOST_AUTO_TEST_CASE(a_case_on_live_water_is_refused_not_run_on_still_water) {
+  // Main dropped the case's [water] and stored still-water counts for a swell (1, 1, 9 bounces,
+  // where `stoneskip run` on the swell gives 0, 0, 0). Oracle: the input rules — exit 2, one line
+  // naming the baseline, its key and the case, and no sweep started.
+  BOOST_REQUIRE(fs::exists(kStored));
+  const fs::path swell = fs::current_path() / "cases/scenes/swell_8ms.toml";
+  BOOST_REQUIRE(fs::exists(swell));
+  const fs::path bad = copy_baseline(kStored, "live_water.toml", [&](const std::string& t) {
+    return std::regex_replace(t, std::regex("case = \"[^\"]*\""), "case = \"" + swell.string() + "\"");
+  });
+  const Run r = run("regress --baseline " + bad.string());
+  BOOST_TEST(r.status == 2, r.err);
+  BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, r.err);
+  BOOST_TEST(r.err.find("baseline.case") != std::string::npos, r.err);
+  BOOST_TEST(r.err.find("has [water]") != std::string::npos, r.err);
+  BOOST_TEST(r.out.find("regress:") == std::string::npos, r.out);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "tools/io/input_error.hpp"
+#include "tools/io/shipped_files.hpp"
 #include "tools/io/toml_table.hpp"
 #include "tools/scene/case_problem.hpp"
 
@@ -177,9 +178,12 @@ BounceBaseline read_baseline(const std::string& path) {
 fs::path resolve_case_file(const BounceBaseline& b) {
   fs::path c(b.case_file);
   if (c.is_absolute() || fs::exists(c)) return c;
-  fs::path root = fs::path(b.file).parent_path().parent_path().parent_path();
+  // Beside the baseline's cases/ folder (the baseline as found: a shipped "cases/baselines/X.toml"
+  // named from another folder is read from the source tree), then among the shipped files.
+  fs::path root = fs::absolute(locate_input(b.file)).parent_path().parent_path().parent_path();
   fs::path alt = root / c;
   if (fs::exists(alt)) return alt;
+  if (const fs::path shipped = locate_input(c); fs::exists(shipped)) return shipped;
   throw_input_error(b.file, 0, "baseline.case", "case file '" + b.case_file + "' not found (relative to the working directory or to " +
                                                      (root.empty() ? std::string(".") : root.string()) + ")");
 }
@@ -190,6 +194,12 @@ BounceSweepSpec sweep_of(const BounceBaseline& b) {
   if (b.pressure_distribution)
     overrides.push_back(std::string("environment.pressure_distribution=") + to_string(*b.pressure_distribution));
   const StoneCase c = load_stone_case(resolve_case_file(b).string(), overrides);
+  // A baseline is a bounce-count sweep on still water (the CVODE reference and the sweep's
+  // ThrowProblem know no live surface): a case with [water] would be run on still water without a word.
+  if (c.water)
+    throw_input_error(b.file, 0, "baseline.case",
+                      "'" + c.file + "' has [water] (a live surface): a baseline counts bounces on still water; "
+                      "sweep a live-water case with `stoneskip sweep`");
   BounceSweepSpec s;
   s.name = b.name;
   s.base = problem_from_case(c);
