@@ -1,10 +1,14 @@
 #include "reports/waves/waves_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "reports/common/markdown.hpp"
 #include "reports/waves/waves_figures.hpp"
+#include "verification/convergence/order_fit.hpp"
 
 namespace stoneskip {
 
@@ -101,6 +105,42 @@ SectionOutput consistency_section(const Record& c) {
 
 // ---- 2. convergence ---------------------------------------------------------------------------
 
+// The page states each sequence's errors, its fit and its verdict from three stored copies: the
+// points, the fit, and the verdict's own inputs (which `report render` re-judges). They must be
+// one story: the fit is recomputed here from the stored errors (fit_order over the finest
+// fit_points, as the study fits them; equal to round-off, 1e-12 relative, as the same code on the
+// same doubles), and the verdict's inputs must be the fit's and the section's settings. Anything
+// else is data edited by hand or from another run: RecordError, refused by `report render`.
+void require_one_story(const Record& c, const std::string& name, const Record& q) {
+  const auto same = [](double a, double b) {
+    return a == b || (std::isnan(a) && std::isnan(b)) || std::abs(a - b) <= 1e-12 * std::max(std::abs(a), std::abs(b));
+  };
+  const auto fail = [&](const std::string& what, double stored, double expected) {
+    std::ostringstream m;
+    m.precision(17);
+    m << q.path() << ": " << what << " is " << stored << " but " << expected << " follows from the stored data";
+    throw RecordError(m.str());
+  };
+  const Table& pts = q.table("points");
+  const auto& h_all = pts.column("h");
+  const auto& e_all = pts.column("l2_error_m");
+  const double fp = c.number("fit_points");
+  const std::size_t first = fp > 0 && pts.rows() > static_cast<std::size_t>(fp) ? pts.rows() - static_cast<std::size_t>(fp) : 0;
+  const OrderFit fit = fit_order(std::vector<double>(h_all.begin() + static_cast<long>(first), h_all.end()),
+                                 std::vector<double>(e_all.begin() + static_cast<long>(first), e_all.end()));
+  const Record& f = q.at("fit");
+  const Record& v = f.at("verdict");
+  if (fit.valid) {
+    for (const auto& [key, x] : {std::pair<const char*, double>{"order", fit.order}, {"order_low", fit.order_low},
+                                 {"order_high", fit.order_high}}) {
+      if (!same(f.number(key), x)) fail(name + " fit " + key, f.number(key), x);
+      if (!same(v.number(key), x)) fail(name + " verdict's " + key, v.number(key), x);
+    }
+  }
+  for (const char* key : {"tolerance", "minimum_order", "expected_order"})
+    if (!same(v.number(key), c.number(key))) fail(name + " verdict's " + key, v.number(key), c.number(key));
+}
+
 SectionOutput convergence_section(const Record& c) {
   const Record& p = c.at("problem");
   SectionWriter w(c, "2. Convergence against the exact solution");
@@ -135,6 +175,7 @@ SectionOutput convergence_section(const Record& c) {
   for (const auto& n : names)
     for (const char* kind : {"space", "time", "both"}) {
       const Record& q = c.at(n).at(kind);
+      require_one_story(c, n + " " + kind, q);
       const Table& pts = q.table("points");
       const std::size_t last = pts.rows() - 1;
       const bool time = std::string(kind) == "time";

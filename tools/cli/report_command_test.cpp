@@ -3,6 +3,8 @@
 // data.h5 alone.
 #include <boost/test/unit_test.hpp>
 
+#include <hdf5.h>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -38,6 +40,21 @@ void stored_verdicts(const Record& r, std::set<std::pair<std::string, std::strin
 constexpr double kTenDigits = 1e-9;
 
 using Points = std::vector<std::pair<double, double>>;
+
+// Edits a stored number as a user with h5py would: one double attribute of an object replaced
+// (deleted and made again: HDF5 1.10 cannot rewrite an attribute of these files in place).
+void set_double_attribute(const fs::path& file, const char* object, const char* name, double value) {
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  BOOST_REQUIRE(f >= 0);
+  BOOST_REQUIRE(H5Adelete_by_name(f, object, name, H5P_DEFAULT) >= 0);
+  const hid_t space = H5Screate(H5S_SCALAR);
+  const hid_t a = H5Acreate_by_name(f, object, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  BOOST_REQUIRE(a >= 0);
+  BOOST_REQUIRE(H5Awrite(a, H5T_NATIVE_DOUBLE, &value) >= 0);
+  H5Aclose(a);
+  H5Sclose(space);
+  H5Fclose(f);
+}
 
 // The rows of a figure's .dat with both x and y finite (gnuplot draws no other).
 Points plotted_points(const fs::path& dat) {
@@ -404,6 +421,14 @@ BOOST_AUTO_TEST_CASE(waves_quick_report_is_a_function_of_its_data) {
   BOOST_TEST(run_stoneskip("report render " + stale.string()).status == 0);
   BOOST_TEST(!fs::exists(stale / "figures" / "old_study.png"));
   BOOST_TEST(read_file(stale / "figures" / "mine.txt") == "mine\n");
+  // Stored numbers edited apart from the verdicts decided on them are refused, not rendered beside
+  // them: the section's tolerance (the verdicts' is 0.1), and an error the fit no longer follows.
+  const fs::path tolerance = copy("tolerance");
+  set_double_attribute(tolerance / "data.h5", "/sections/convergence", "tolerance", 0.3);
+  const auto t = run_stoneskip("report render " + tolerance.string());
+  BOOST_TEST(t.status == 2, t.out);
+  BOOST_TEST(t.out.find("verdict's tolerance") != std::string::npos, t.out);
+  BOOST_TEST(read_file(tolerance / "index.md") == read_file(dir / "index.md"));  // nothing rewritten
 }
 
 BOOST_AUTO_TEST_CASE(stones_quick_report_is_a_function_of_its_data) {
@@ -431,6 +456,14 @@ BOOST_AUTO_TEST_CASE(scene_quick_report_is_a_function_of_its_data) {
   BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
   check_report(dir);
   BOOST_TEST(fs::file_size(dir / "figures" / "still_seed_8ms.png") > 0u);
+  // A measured figure edited apart from the verdict decided on it (900 frames/s under "meets the
+  // target" of 3000) is refused, not rendered.
+  const fs::path edited = tmp.path() / "edited";
+  fs::copy(dir, edited, fs::copy_options::recursive);
+  set_double_attribute(edited / "data.h5", "/sections/speed", "scene_fps_1core", 900);
+  const auto e = run_stoneskip("report render " + edited.string());
+  BOOST_TEST(e.status == 2, e.out);
+  BOOST_TEST(e.out.find("scene_fps_1core is 900 but its verdict scene_target was decided on") != std::string::npos, e.out);
 }
 
 BOOST_AUTO_TEST_CASE(captures_report_is_a_function_of_its_data) {

@@ -48,7 +48,7 @@ std::pair<int, std::size_t> render_folder(const std::filesystem::path& dir, bool
   try {
     r = render_stored_report(stored);
   } catch (const RecordError& e) {
-    throw_input_error((dir / "data.h5").string(), 0, "", std::string("incomplete report data: ") + e.what());
+    throw_input_error((dir / "data.h5").string(), 0, "", std::string("the report data is incomplete or inconsistent: ") + e.what());
   }
   const std::vector<std::filesystem::path> written = rendered_files(r);
   if (in_place) {
