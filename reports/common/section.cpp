@@ -1,10 +1,28 @@
 #include "reports/common/section.hpp"
 
+#include <algorithm>
+
 namespace stoneskip {
 
 std::string verdict_markdown(const Record& v) { return "**" + v.text("verdict") + "** — " + v.text("reason"); }
 
-std::string code(const std::string& s) { return "`" + s + "`"; }
+std::string code(const std::string& s) {
+  // A code span holds any text (CommonMark 0.30 §6.1): delimited by more backticks than the longest
+  // run inside, padded with a space where the text starts or ends with one; a line break, which
+  // would end the span or the paragraph (a stored name used to start a heading), is written \n.
+  std::string text;
+  std::size_t run = 0, longest = 0;
+  for (char ch : s) {
+    run = ch == '`' ? run + 1 : 0;
+    longest = std::max(longest, run);
+    if (ch == '\n') text += "\\n";
+    else if (ch == '\r') text += "\\r";
+    else text += ch;
+  }
+  const std::string fence(longest + 1, '`');
+  const bool pad = !text.empty() && (text.front() == '`' || text.back() == '`');
+  return fence + (pad ? " " : "") + text + (pad ? " " : "") + fence;
+}
 
 std::string fmt_or_dash(double v, int significant) { return fmt(v, significant); }
 

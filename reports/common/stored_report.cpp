@@ -2,6 +2,10 @@
 
 #include "reports/common/html_page.hpp"
 #include "reports/common/summary.hpp"
+#include <algorithm>
+
+#include "reports/common/section.hpp"
+#include "stoneskip_version.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/hdf5_file.hpp"
 #include "tools/io/input_error.hpp"
@@ -26,6 +30,29 @@ StoredReport load_stored_report(const std::filesystem::path& data_h5) {
   } catch (const std::exception& e) {
     throw_input_error(data_h5.string(), 0, "", std::string("unreadable report data: ") + e.what());
   }
+  // The provenance strings go into the page as they are: each is what stoneskip writes there (one
+  // line of plausible length; the time as stamp_provenance writes it), or the file is refused.
+  // A 50 MB or many-line code_version made a 50 MB page, or a second "Findings" heading.
+  const auto one_line = [&](const std::string& key, const std::string& v, std::size_t most) {
+    if (v.size() > most || v.find_first_of("\n\r") != std::string::npos)
+      throw_input_error(data_h5.string(), 0, key,
+                        v.size() > most ? "is " + std::to_string(v.size()) + " characters long (at most " + std::to_string(most) + ")"
+                                        : std::string("holds a line break; stoneskip writes one line there"));
+  };
+  one_line("code_version", s.code_version, 200);
+  if (s.code_version.rfind("stoneskip ", 0) != 0)
+    throw_input_error(data_h5.string(), 0, "code_version", "does not start with 'stoneskip ' (not written by stoneskip)");
+  one_line("created_utc", s.created_utc, 20);
+  const bool utc = s.created_utc.size() == 20 && std::all_of(s.created_utc.begin(), s.created_utc.end(), [i = 0](char ch) mutable {
+                     const int k = i++;
+                     if (k == 4 || k == 7) return ch == '-';
+                     if (k == 10) return ch == 'T';
+                     if (k == 13 || k == 16) return ch == ':';
+                     if (k == 19) return ch == 'Z';
+                     return ch >= '0' && ch <= '9';
+                   });
+  if (!utc) throw_input_error(data_h5.string(), 0, "created_utc", "is not a time as YYYY-MM-DDThh:mm:ssZ");
+  one_line("command", s.command, 1 << 20);
   return s;
 }
 
@@ -37,7 +64,9 @@ void append(RenderedReport& r, const SectionOutput& s) {
 std::string provenance_markdown(const StoredReport& s) {
   std::string md = "## Provenance\n\n";
   md += "* Code: " + s.code_version + "; data written " + s.created_utc + ".\n";
-  if (!s.command.empty()) md += "* Made by: `" + s.command + "`.\n";
+  // The page may be rendered later, by other code, from the same data.h5 (`report render`).
+  md += std::string("* This page rendered by: stoneskip ") + kVersion + " (git " + kGitDescribe + ").\n";
+  if (!s.command.empty()) md += "* Made by: " + code(s.command) + ".\n";
   md += "* Everything above is formatted from `data.h5` (settings under its root attribute `settings`, findings "
         "under `/sections`); `stoneskip report render DIR` rebuilds this page and the figures from it.\n";
   return md;

@@ -56,6 +56,25 @@ void set_double_attribute(const fs::path& file, const char* object, const char* 
   H5Fclose(f);
 }
 
+// The same for a root text attribute (variable-length UTF-8, as stoneskip writes them).
+void set_root_text(const fs::path& file, const char* name, const std::string& value) {
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  BOOST_REQUIRE(f >= 0);
+  BOOST_REQUIRE(H5Adelete(f, name) >= 0);
+  const hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, H5T_VARIABLE);
+  H5Tset_cset(type, H5T_CSET_UTF8);
+  const hid_t space = H5Screate(H5S_SCALAR);
+  const hid_t a = H5Acreate2(f, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
+  BOOST_REQUIRE(a >= 0);
+  const char* text = value.c_str();
+  BOOST_REQUIRE(H5Awrite(a, type, &text) >= 0);
+  H5Aclose(a);
+  H5Sclose(space);
+  H5Tclose(type);
+  H5Fclose(f);
+}
+
 // The rows of a figure's .dat with both x and y finite (gnuplot draws no other).
 Points plotted_points(const fs::path& dat) {
   Points pts;
@@ -429,6 +448,23 @@ BOOST_AUTO_TEST_CASE(waves_quick_report_is_a_function_of_its_data) {
   BOOST_TEST(t.status == 2, t.out);
   BOOST_TEST(t.out.find("verdict's tolerance") != std::string::npos, t.out);
   BOOST_TEST(read_file(tolerance / "index.md") == read_file(dir / "index.md"));  // nothing rewritten
+  // Provenance that stoneskip does not write (a line break that would start a heading, a huge
+  // string, a time in another form) is refused, naming the attribute; a command holding backticks
+  // is shown whole as code (CommonMark: a longer fence).
+  const fs::path provenance = copy("provenance");
+  for (const auto& [name, value] : {std::pair<const char*, std::string>{"code_version", "stoneskip 1\n\n## Findings\n"},
+                                    {"code_version", "stoneskip " + std::string(300, 'x')},
+                                    {"created_utc", "yesterday"}}) {
+    set_root_text(provenance / "data.h5", name, value);
+    const auto p = run_stoneskip("report render " + provenance.string());
+    BOOST_TEST(p.status == 2, name << ": " << p.out);
+    BOOST_TEST(p.out.find(name) != std::string::npos, p.out);
+    fs::copy_file(dir / "data.h5", provenance / "data.h5", fs::copy_options::overwrite_existing);
+  }
+  set_root_text(provenance / "data.h5", "command", "stoneskip report waves --out `a``b`");
+  BOOST_TEST(run_stoneskip("report render " + provenance.string()).status == 0);
+  BOOST_TEST(read_file(provenance / "index.md").find("* Made by: ``` stoneskip report waves --out `a``b` ```.") !=
+             std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(stones_quick_report_is_a_function_of_its_data) {
