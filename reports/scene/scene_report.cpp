@@ -74,7 +74,8 @@ SectionOutput coupling_section(const Record& c) {
          "with its pressure or its draught as the case says, model/README.md §2.4), **one-way** (the stone is clipped against the field, which it does not disturb: on a "
          "still pond the field stays flat) and **still water** (no field at all). The contacts are compared in order (a "
          "contact is a maximal interval with some triangle wet, model/README.md §1.8). The bounce counts are compared on ensembles of "
-         "perturbed throws (a count that changes under a 1e-9 relative change of the speed says nothing run against run); a change "
+         "perturbed throws (a bounce count can change under a nudge of the speed far below any measurement's precision, so one run "
+         "against one says nothing; each case's perturbations are given with its ensemble below); a change "
          "of the first contact's times beyond " + us(c.number("time_tolerance_s")) + " counts as visible.");
   for (const auto& name : c.strings("cases")) {
     const Record& r = c.at(name);
