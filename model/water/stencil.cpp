@@ -35,7 +35,7 @@ double leapfrog_courant_limit(const Stencil& stencil) {
   if (stencil.max_symbol() > tiny) return 0;  // a growing mode at every σ > 0
   const double smin = stencil.min_symbol();
   if (smin >= -tiny) return std::numeric_limits<double>::infinity();  // every symbol 0: no coupling
-  return 2 / std::sqrt(-smin);  // Schur–Cohn, model/README.md §2.2
+  return 2 / std::sqrt(-smin);  // Schur–Cohn/Jury on the amplification quadratic (stencil.hpp)
 }
 
 Stencil stencil_family(double gamma, std::string name) {

@@ -28,9 +28,12 @@ struct Stencil {
 
 // The largest σ = cΔt/d for which the damped leapfrog of model/README.md §2.1 is stable with this stencil:
 // a mode is multiplied per step by a root g of (2 + μΔt) g² − (4 + 2σ² s) g + (2 − μΔt) = 0, and
-// both roots lie in the closed unit disc iff −4 ≤ σ² s ≤ 0 (Schur–Cohn: |2 − μΔt| ≤ 2 + μΔt and
-// |4 + 2σ² s| ≤ 4), for every μΔt ≥ 0: so σ_max = 2/√(−min s), independent of damping
-// (model/README.md §2.2). Exact, from the symbol's extremes at the corners of the Brillouin zone.
+// both roots lie in the closed unit disc iff −4 ≤ σ² s ≤ 0, for every μΔt ≥ 0 (the Schur–Cohn/Jury
+// test for a real quadratic a g² + b g + c with a > 0: both roots in the closed disc iff |c| ≤ a and
+// |b| ≤ a + c; here |2 − μΔt| ≤ 2 + μΔt always, and |4 + 2σ² s| ≤ 4): so σ_max = 2/√(−min s),
+// independent of damping (the limits are listed in model/README.md §2.2). At σ_max with μ = 0 the
+// root −1 is double, so the highest mode grows linearly there: the limit is the supremum of the
+// stable steps. Exact, from the symbol's extremes at the corners of the Brillouin zone.
 // 0 ("no stable step") if some mode has s > 0 (it grows for every σ > 0); +∞ ("unbounded") if the
 // symbol is 0 for every mode (no spatial coupling: g = 1 and (2 − μΔt)/(2 + μΔt) for every σ).
 // Five-point 1/√2, γ = 1/3 √3/2, γ = 1/2 1; verification/waves/stability.hpp finds the same

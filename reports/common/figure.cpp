@@ -147,19 +147,6 @@ const char* const kKinds[] = {"png", "svg"};
 
 std::string script_name(const Figure& f, const std::string& kind) { return f.name + (kind == "png" ? ".gp" : ".svg.gp"); }
 
-// Every file the figures will write, checked before the first is written (a link, a FIFO or a
-// device among them is refused with nothing changed).
-void check_figure_destinations(const fs::path& fig_dir, const std::vector<Figure>& figs) {
-  for (const auto& f : figs) {
-    for (const auto& [name, table] : f.tables) check_output_destination(fig_dir / (name + ".dat"));
-    if (!f.sources.empty() || !f.copies.empty()) check_output_destination(fig_dir / (f.name + ".sources"));
-    for (const std::string kind : kKinds) {
-      check_output_destination(fig_dir / (f.name + "." + kind));
-      check_output_destination(fig_dir / script_name(f, kind));
-    }
-  }
-}
-
 }  // namespace
 
 std::vector<fs::path> figure_files(const std::vector<Figure>& figs) {
@@ -180,7 +167,9 @@ RenderSummary render_figures(const fs::path& dir, const std::vector<Figure>& fig
   RenderSummary summary;
   const fs::path fig_dir = dir / "figures";
   require_figures_folder(fig_dir);
-  check_figure_destinations(fig_dir, figs);
+  // Every file the figures will write, checked before the first is written (a link, a FIFO or a
+  // device among them is refused with nothing changed).
+  for (const auto& f : figure_files(figs)) check_output_destination(dir / f);
   for (const auto& f : figs) {
     for (const auto& [name, table] : f.tables) write_dat(fig_dir / (name + ".dat"), table);
     if (!f.sources.empty() || !f.copies.empty()) write_sources(fig_dir / (f.name + ".sources"), f);

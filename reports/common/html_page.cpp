@@ -37,14 +37,42 @@ std::string html_target(const std::string& url) {
   return url;
 }
 
+// A code span opening at s[open] (a run of n backticks, CommonMark 0.30 §6.1): it ends at the next
+// run of exactly n backticks. Returns the index after that run (npos when there is none) and the
+// content, with one space stripped from each end when both ends have one (reports/common/section.cpp
+// pads a content that starts or ends with a backtick).
+std::size_t code_span(const std::string& s, std::size_t open, std::string* content = nullptr) {
+  std::size_t n = 0;
+  while (open + n < s.size() && s[open + n] == '`') ++n;
+  for (std::size_t i = open + n; i < s.size();) {
+    if (s[i] != '`') {
+      ++i;
+      continue;
+    }
+    std::size_t m = 0;
+    while (i + m < s.size() && s[i + m] == '`') ++m;
+    if (m == n) {
+      if (content) {
+        std::string c = s.substr(open + n, i - open - n);
+        if (c.size() >= 2 && c.front() == ' ' && c.back() == ' ' && c.find_first_not_of(' ') != std::string::npos)
+          c = c.substr(1, c.size() - 2);
+        *content = c;
+      }
+      return i + m;
+    }
+    i += m;
+  }
+  return std::string::npos;
+}
+
 // Index of the ']' closing the '[' at `open`, skipping code spans; npos when there is none.
 std::size_t closing_bracket(const std::string& s, std::size_t open) {
   int depth = 0;
   for (std::size_t i = open; i < s.size(); ++i) {
     if (s[i] == '`') {
-      const std::size_t end = s.find('`', i + 1);
+      const std::size_t end = code_span(s, i);
       if (end == std::string::npos) return std::string::npos;
-      i = end;
+      i = end - 1;
     } else if (s[i] == '[') {
       ++depth;
     } else if (s[i] == ']' && --depth == 0) {
@@ -79,12 +107,15 @@ std::string inline_html(const std::string& s) {
   while (i < s.size()) {
     const char c = s[i];
     if (c == '`') {
-      const std::size_t end = s.find('`', i + 1);
+      std::string content;
+      const std::size_t end = code_span(s, i, &content);
       if (end != std::string::npos) {
-        out += "<code>" + escape(s.substr(i + 1, end - i - 1)) + "</code>";
-        i = end + 1;
+        out += "<code>" + escape(content) + "</code>";
+        i = end;
         continue;
       }
+      while (i < s.size() && s[i] == '`') out += s[i++];  // an unclosed run is text, whole
+      continue;
     } else if (c == '!' && i + 1 < s.size() && s[i + 1] == '[') {
       std::string text, url;
       std::size_t next = 0;
@@ -156,7 +187,6 @@ std::string plain_text(const std::string& s) {
 std::vector<std::string> table_cells(const std::string& line) {
   std::vector<std::string> cells;
   std::string cell;
-  bool in_code = false;
   std::size_t i = line.find('|') + 1;
   for (; i < line.size(); ++i) {
     const char c = line[i];
@@ -164,9 +194,15 @@ std::vector<std::string> table_cells(const std::string& line) {
       cell += "\\|";
       ++i;
     } else if (c == '`') {
-      in_code = !in_code;
-      cell += c;
-    } else if (c == '|' && !in_code) {
+      // A whole code span, '|' inside it included; an unclosed run is text.
+      const std::size_t end = code_span(line, i);
+      while (i < line.size() && line[i] == '`') cell += line[i++];  // the opening run (or an unclosed one)
+      if (end != std::string::npos) {
+        cell += line.substr(i, end - i);
+        i = end;
+      }
+      --i;
+    } else if (c == '|') {
       cells.push_back(cell);
       cell.clear();
     } else {

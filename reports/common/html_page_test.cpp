@@ -6,6 +6,7 @@
 #include <string>
 
 #include "reports/common/html_page.hpp"
+#include "reports/common/section.hpp"
 
 using namespace stoneskip;
 
@@ -52,6 +53,23 @@ BOOST_AUTO_TEST_CASE(inline_marks_links_and_images) {
   BOOST_TEST(markdown_to_html("[`x`](#x_log) [w](waves/index.md#2-a) [o](https://e.org/a.md)\n") ==
              "<p><a href=\"#x_log\"><code>x</code></a> <a href=\"waves/index.html#2-a\">w</a> "
              "<a href=\"https://e.org/a.md\">o</a></p>\n");
+}
+
+BOOST_AUTO_TEST_CASE(code_spans_of_several_backticks_hold_backticks_and_pipes) {
+  // CommonMark 0.30 §6.1, examples 328–331 and 339 (a span ends at a run of exactly its opening
+  // length; one space is stripped from each end when both have one), and code() writing them.
+  BOOST_TEST(markdown_to_html("``foo ` bar``\n") == "<p><code>foo ` bar</code></p>\n");
+  BOOST_TEST(markdown_to_html("` `` `\n") == "<p><code>``</code></p>\n");
+  BOOST_TEST(markdown_to_html("a ```foo`` b\n") == "<p>a ```foo`` b</p>\n");
+  BOOST_TEST(markdown_to_html("| ``a|`b`` | c |\n|---|---|\n") ==
+             "<div class=\"table\"><table>\n<thead><tr><th><code>a|`b</code></th><th>c</th></tr></thead>\n"
+             "<tbody>\n</tbody>\n</table></div>\n");
+  BOOST_TEST(code("a`b") == "``a`b``");
+  BOOST_TEST(code("`a``b`") == "``` `a``b` ```");
+  BOOST_TEST(code(" x ") == "`  x  `");
+  BOOST_TEST(code("two\nlines") == "`two\\nlines`");
+  BOOST_TEST(markdown_to_html("Made by: " + code("run --out `a``b`") + ".\n") ==
+             "<p>Made by: <code>run --out `a``b`</code>.</p>\n");
 }
 
 BOOST_AUTO_TEST_CASE(anchor_lines_pass_through_and_other_html_is_text) {

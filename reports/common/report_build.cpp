@@ -117,8 +117,10 @@ void ReportBuild::keep_on_signal() {
   // From the first finished section on, a signal leaves the work folder as SIGKILL does, and the
   // cleanup's line says where: the same command resumes it.
   if (!registered_.registered() || !options_.keep_sections_on_signal) return;
-  registered_.release();
-  set_interrupt_note("stoneskip: finished sections kept in " + work_.string() + ": run the same command to resume");
+  with_registry_lock([&] {  // a signal sees the folder registered, or kept and said where
+    registered_.release();
+    set_interrupt_note("stoneskip: finished sections kept in " + work_.string() + ": run the same command to resume");
+  });
 }
 
 ReportBuild::~ReportBuild() {
@@ -182,16 +184,19 @@ fs::path ReportBuild::assemble(const Record& root) {
 
 void ReportBuild::commit() {
   std::error_code ec;
-  fs::remove_all(work_ / "sections", ec);
-  fs::remove(work_ / kManifest, ec);
-  fs::remove(work_ / kLock, ec);
-  write_folder_manifest(work_);  // what this build wrote: the folder may be replaced while it holds only that
+  // What this build wrote, less the work files removed below: the folder may be replaced while it
+  // holds only that.
+  write_folder_manifest(work_, {"sections", kManifest, kLock});
   const fs::path& out = options_.out_dir;
   fs::path old;
   RegisteredTemporary old_registered;
-  // Under the registry's lock: a signal sees the old report either in place or already replaced,
-  // never moved aside with nothing in its place.
+  // Under the registry's lock: a signal sees the work folder whole (its sections resumable) or the
+  // report in place, and the old report in place or already replaced, never moved aside with
+  // nothing in its place.
   with_registry_lock([&] {
+    fs::remove_all(work_ / "sections", ec);
+    fs::remove(work_ / kManifest, ec);
+    fs::remove(work_ / kLock, ec);
     struct stat st {};
     if (::lstat(out.c_str(), &st) == 0) {
       // Checked in the constructor; checked again, since time has passed.

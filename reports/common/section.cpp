@@ -20,7 +20,10 @@ std::string code(const std::string& s) {
     else text += ch;
   }
   const std::string fence(longest + 1, '`');
-  const bool pad = !text.empty() && (text.front() == '`' || text.back() == '`');
+  // Padded where the text starts or ends with a backtick, or starts and ends with a space (one of
+  // which a reader strips).
+  const bool pad = !text.empty() && (text.front() == '`' || text.back() == '`' ||
+                                     (text.front() == ' ' && text.back() == ' ' && text.find_first_not_of(' ') != std::string::npos));
   return fence + (pad ? " " : "") + text + (pad ? " " : "") + fence;
 }
 

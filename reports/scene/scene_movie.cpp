@@ -93,7 +93,10 @@ void add_gif_comment(const fs::path& p, const std::string& text) {
   block += text.substr(0, 255);
   block += '\0';
   g.insert(at, block);
-  std::ofstream(p, std::ios::binary | std::ios::trunc).write(g.data(), static_cast<std::streamsize>(g.size()));
+  std::ofstream f(p, std::ios::binary | std::ios::trunc);
+  f.write(g.data(), static_cast<std::streamsize>(g.size()));
+  f.close();
+  if (!f) throw std::runtime_error("movie: cannot write the GIF's comment into " + p.string());
 }
 
 }  // namespace

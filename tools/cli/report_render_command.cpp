@@ -2,7 +2,8 @@
 // stoneskip plot DIR              an alias of `report render DIR` (its older name), nothing more
 //
 // A report is a function of its data: this is the same rendering the report commands run after
-// their studies, so it reproduces index.md byte for byte.
+// their studies, so the same build reproduces index.md byte for byte (the page names the code that
+// rendered it beside the code that made the data).
 #include <sys/stat.h>
 
 #include <cstdio>
@@ -15,8 +16,10 @@
 namespace stoneskip::cli {
 namespace {
 
-void render(const std::string& dir) {
-  // Never written through: a link named as the folder is refused (its target is not this name's).
+void render(std::string dir) {
+  // Never written through: a link named as the folder is refused (its target is not this name's);
+  // "link/" names what the link points to, so the trailing slashes go first.
+  while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
   struct stat st {};
   if (::lstat(dir.c_str(), &st) == 0 && S_ISLNK(st.st_mode))
     throw_input_error(dir, 0, "", "is a link: stoneskip does not write through links (render the folder it points to)");

@@ -90,8 +90,26 @@ std::string text_of(const std::map<std::string, Entry>& entries) {
   return s;
 }
 
-// The manifest's entries; false if there is none or it is not one.
+// A manifest's entry stays inside its folder: relative, without "." or ".." components (a crafted
+// "figures/../../x" would otherwise let a render remove a file outside the folder).
+bool inside_name(const std::string& rel) {
+  const fs::path p(rel);
+  if (p.is_absolute() || rel.empty()) return false;
+  for (const auto& part : p)
+    if (part == ".." || part == "." || part.empty()) return false;
+  return true;
+}
+
+bool read_manifest_entries(const fs::path& dir, std::map<std::string, Entry>& out);
+
+// The manifest's entries; false (and none) if there is none or it is not one.
 bool read_manifest(const fs::path& dir, std::map<std::string, Entry>& out) {
+  if (read_manifest_entries(dir, out)) return true;
+  out.clear();
+  return false;
+}
+
+bool read_manifest_entries(const fs::path& dir, std::map<std::string, Entry>& out) {
   std::error_code ec;
   const fs::path m = dir / kFolderManifest;
   if (fs::symlink_status(m, ec).type() != fs::file_type::regular) return false;
@@ -102,6 +120,7 @@ bool read_manifest(const fs::path& dir, std::map<std::string, Entry>& out) {
     Entry e;
     if (line.rfind("d ", 0) == 0) {
       e.folder = true;
+      if (!inside_name(line.substr(2))) return false;
       out[line.substr(2)] = e;
       continue;
     }
@@ -109,7 +128,7 @@ bool read_manifest(const fs::path& dir, std::map<std::string, Entry>& out) {
     std::string kind, rel;
     if (!(in >> kind >> e.size >> e.hash) || kind != "f" || e.hash.size() != 16) return false;
     std::getline(in >> std::ws, rel);
-    if (rel.empty()) return false;
+    if (!inside_name(rel)) return false;
     out[rel] = e;
   }
   return true;
@@ -117,9 +136,13 @@ bool read_manifest(const fs::path& dir, std::map<std::string, Entry>& out) {
 
 }  // namespace
 
-void write_folder_manifest(const fs::path& dir) {
+void write_folder_manifest(const fs::path& dir, const std::vector<std::string>& leave_out) {
   std::string other;
-  const auto entries = scan(dir, true, &other);
+  auto entries = scan(dir, true, &other);
+  for (auto it = entries.begin(); it != entries.end();) {
+    const std::string top = it->first.substr(0, it->first.find('/'));
+    it = std::find(leave_out.begin(), leave_out.end(), top) != leave_out.end() ? entries.erase(it) : std::next(it);
+  }
   if (!other.empty())
     throw_input_error(dir.string(), 0, "", "holds '" + other + "', which is not a plain file or folder: no manifest written");
   write_text_file(dir / kFolderManifest, text_of(entries));

@@ -17,9 +17,10 @@ namespace stoneskip {
 
 inline constexpr const char* kFolderManifest = "stoneskip-manifest.txt";
 
-// Lists everything under `dir` (the manifest itself excepted) and writes the manifest atomically.
-// A link or a special file under `dir` is an InputError: stoneskip writes neither.
-void write_folder_manifest(const std::filesystem::path& dir);
+// Lists everything under `dir` (the manifest itself excepted, and the top-level entries named in
+// `leave_out`, which the caller removes next) and writes the manifest atomically. A link or a
+// special file under `dir` is an InputError: stoneskip writes neither.
+void write_folder_manifest(const std::filesystem::path& dir, const std::vector<std::string>& leave_out = {});
 
 // After writing `written` (paths relative to `dir`) into a folder in place (`report render DIR`):
 // the manifest lists those files, and of what it listed before, what is still there unchanged.

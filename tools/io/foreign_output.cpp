@@ -50,7 +50,11 @@ bool stoneskip_wrote(const fs::path& path) {
     }
   }
   if (got >= sizeof kTextMark - 1 && std::memcmp(head, kTextMark, sizeof kTextMark - 1) == 0) return true;
-  return holds_marker(f);
+  // The movie's mark counts only in a movie (a GIF89a, or an ISO media file: "ftyp" at byte 4,
+  // ISO/IEC 14496-12 §4.3): a user's notes that say "made by stoneskip" are theirs.
+  const bool gif = got >= 6 && std::memcmp(head, "GIF89a", 6) == 0;
+  const bool mp4 = got >= 8 && std::memcmp(head + 4, "ftyp", 4) == 0;
+  return (gif || mp4) && holds_marker(f);
 }
 
 void refuse_foreign_output(const fs::path& path, const std::string& option) {

@@ -1,6 +1,7 @@
 #pragma once
 // Temporaries that must not outlive an interrupted command. AtomicOutput's "<file>.tmp-PID" files
-// and ReportBuild's "<DIR>.partial" work folders register here while they exist; when SIGINT,
+// and ReportBuild's "<DIR>.partial" work folders (until they hold a finished section, which is
+// kept for a resume) register here while they exist; when SIGINT,
 // SIGTERM or SIGHUP arrives, every registered path is removed and the process ends with status
 // 128 + signal (130 for SIGINT, 143 for SIGTERM, 129 for SIGHUP). SIGKILL cannot be caught: a
 // killed process leaves its temporaries (and a report build resumes from its work folder).
@@ -14,7 +15,8 @@
 //     SIGUSR2 whose handler never returns), so nothing can create a file behind it.
 //  3. It kills and reaps the registered child processes (RegisteredChild: gnuplot, ffmpeg), removes
 //     the registered paths with plain system calls (no allocation: a stopped thread may hold the
-//     allocator's lock), writes one line on stderr and calls _exit(128 + signal).
+//     allocator's lock), writes one line on stderr (and the note of set_interrupt_note, if any)
+//     and calls _exit(128 + signal).
 // Registered paths are created, renamed into place and unregistered while holding the same mutex
 // (with_registry_lock), so the cleanup sees each one either absent, whole at its temporary name,
 // or already in place.
@@ -67,8 +69,8 @@ class RegisteredChild {
 void with_registry_lock(const std::function<void()>& f);
 
 // A line the cleanup writes on stderr after its own when a signal ends the process: where finished
-// work was kept for a resume (a report's sections in "<DIR>.partial"). Empty: none. At most 500
-// bytes are kept; set under the registry's lock, so the cleanup sees the old line or the new one.
+// work was kept for a resume (a report's sections in "<DIR>.partial"). Empty: none. The first
+// 510 bytes are kept; set under the registry's lock, so the cleanup sees the old line or the new one.
 void set_interrupt_note(const std::string& line);
 
 // Installs the handlers and starts the cleanup thread; call once, before any other thread starts.

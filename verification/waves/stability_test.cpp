@@ -25,7 +25,7 @@ BOOST_AUTO_TEST_CASE(computed_limits_match_the_spec_and_do_not_grow_with_damping
 }
 
 BOOST_AUTO_TEST_CASE(the_limit_is_independent_of_damping_down_to_round_off_damping) {
-  // Oracle: model/water/stencil.hpp (Schur–Cohn) — σ_max = 2/√(−min s) for every μΔt ∈ [0, 2),
+  // Oracle: model/water/stencil.hpp (Schur–Cohn) — σ_max = 2/√(−min s) for every μΔt ≥ 0 (checked here on [0, 1]),
   // so 1/√2, √3/2, 1 at every μΔt of [0, 1], including 1e-11 … 1e-7 where the discriminant's
   // μΔt² is below the round-off of 16 (the limit came out 0 there). Tolerance kLimit as above.
   const double dampings[] = {0.0,  1e-14, 1e-12, 1e-11, 1.8e-11, 5e-11, 1e-10, 1e-9, 5.12e-9,
