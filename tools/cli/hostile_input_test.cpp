@@ -17,8 +17,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include <hdf5.h>
-
+#include "tools/cli/hdf5_edit.hpp"
 #include "tools/cli/test_support.hpp"
 
 namespace fs = std::filesystem;
@@ -92,21 +91,6 @@ fs::path baseline_with(const Scratch& s, const std::string& from, const std::str
   BOOST_REQUIRE(text.find(from) != std::string::npos);
   text.replace(text.find(from), from.size(), to);
   return s.write("baseline.toml", text);
-}
-
-// Damages a result file as an editor would: one integer attribute replaced (deleted and made
-// again: HDF5 1.10 cannot rewrite an attribute of these files in place).
-void set_int_attribute(const fs::path& file, const char* object, const char* name, long long value) {
-  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-  BOOST_REQUIRE(f >= 0);
-  BOOST_REQUIRE(H5Adelete_by_name(f, object, name, H5P_DEFAULT) >= 0);
-  const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t a = H5Acreate_by_name(f, object, name, H5T_NATIVE_LLONG, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  BOOST_REQUIRE(a >= 0);
-  BOOST_REQUIRE(H5Awrite(a, H5T_NATIVE_LLONG, &value) >= 0);
-  H5Aclose(a);
-  H5Sclose(space);
-  H5Fclose(f);
 }
 
 }  // namespace
@@ -497,7 +481,7 @@ BOOST_AUTO_TEST_CASE(a_damaged_sweep_design_is_refused_by_sweep_plot) {
            {1000000, "describes 2000000 throws but /throws has 4 rows"}}) {
     const fs::path bad = s.dir / ("bad" + std::to_string(count) + ".h5");
     fs::copy_file(good, bad);
-    set_int_attribute(bad, "/design/axis_0", "count", count);
+    stoneskip::test::set_attribute(bad, "/design/axis_0", "count", static_cast<long long>(count));
     expect_refused(run_apart({"sweep-plot", bad.string(), "--no-render", "--out", (s.dir / "page").string()}), {bad.string(), fragment});
     BOOST_TEST(!fs::exists(s.dir / "page"));
   }

@@ -3,8 +3,6 @@
 // data.h5 alone.
 #include <boost/test/unit_test.hpp>
 
-#include <hdf5.h>
-
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -13,6 +11,7 @@
 #include <sstream>
 #include <set>
 
+#include "tools/cli/hdf5_edit.hpp"
 #include "tools/cli/test_support.hpp"
 #include "tools/io/folder_manifest.hpp"
 #include "tools/io/hdf5_file.hpp"
@@ -23,6 +22,7 @@ namespace {
 
 using stoneskip::Record;
 using stoneskip::test::read_file;
+using stoneskip::test::set_attribute;
 using stoneskip::test::run_stoneskip;
 using stoneskip::test::TempDir;
 namespace fs = std::filesystem;
@@ -40,40 +40,6 @@ void stored_verdicts(const Record& r, std::set<std::pair<std::string, std::strin
 constexpr double kTenDigits = 1e-9;
 
 using Points = std::vector<std::pair<double, double>>;
-
-// Edits a stored number as a user with h5py would: one double attribute of an object replaced
-// (deleted and made again: HDF5 1.10 cannot rewrite an attribute of these files in place).
-void set_double_attribute(const fs::path& file, const char* object, const char* name, double value) {
-  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-  BOOST_REQUIRE(f >= 0);
-  BOOST_REQUIRE(H5Adelete_by_name(f, object, name, H5P_DEFAULT) >= 0);
-  const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t a = H5Acreate_by_name(f, object, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  BOOST_REQUIRE(a >= 0);
-  BOOST_REQUIRE(H5Awrite(a, H5T_NATIVE_DOUBLE, &value) >= 0);
-  H5Aclose(a);
-  H5Sclose(space);
-  H5Fclose(f);
-}
-
-// The same for a root text attribute (variable-length UTF-8, as stoneskip writes them).
-void set_root_text(const fs::path& file, const char* name, const std::string& value) {
-  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-  BOOST_REQUIRE(f >= 0);
-  BOOST_REQUIRE(H5Adelete(f, name) >= 0);
-  const hid_t type = H5Tcopy(H5T_C_S1);
-  H5Tset_size(type, H5T_VARIABLE);
-  H5Tset_cset(type, H5T_CSET_UTF8);
-  const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t a = H5Acreate2(f, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
-  BOOST_REQUIRE(a >= 0);
-  const char* text = value.c_str();
-  BOOST_REQUIRE(H5Awrite(a, type, &text) >= 0);
-  H5Aclose(a);
-  H5Sclose(space);
-  H5Tclose(type);
-  H5Fclose(f);
-}
 
 // The rows of a figure's .dat with both x and y finite (gnuplot draws no other).
 Points plotted_points(const fs::path& dat) {
@@ -443,7 +409,7 @@ BOOST_AUTO_TEST_CASE(waves_quick_report_is_a_function_of_its_data) {
   // Stored numbers edited apart from the verdicts decided on them are refused, not rendered beside
   // them: the section's tolerance (the verdicts' is 0.1), and an error the fit no longer follows.
   const fs::path tolerance = copy("tolerance");
-  set_double_attribute(tolerance / "data.h5", "/sections/convergence", "tolerance", 0.3);
+  set_attribute(tolerance / "data.h5", "/sections/convergence", "tolerance", 0.3);
   const auto t = run_stoneskip("report render " + tolerance.string());
   BOOST_TEST(t.status == 2, t.out);
   BOOST_TEST(t.out.find("verdict's tolerance") != std::string::npos, t.out);
@@ -455,13 +421,13 @@ BOOST_AUTO_TEST_CASE(waves_quick_report_is_a_function_of_its_data) {
   for (const auto& [name, value] : {std::pair<const char*, std::string>{"code_version", "stoneskip 1\n\n## Findings\n"},
                                     {"code_version", "stoneskip " + std::string(300, 'x')},
                                     {"created_utc", "yesterday"}}) {
-    set_root_text(provenance / "data.h5", name, value);
+    set_attribute(provenance / "data.h5", "/", name, value);
     const auto p = run_stoneskip("report render " + provenance.string());
     BOOST_TEST(p.status == 2, name << ": " << p.out);
     BOOST_TEST(p.out.find(name) != std::string::npos, p.out);
     fs::copy_file(dir / "data.h5", provenance / "data.h5", fs::copy_options::overwrite_existing);
   }
-  set_root_text(provenance / "data.h5", "command", "stoneskip report waves --out `a``b`");
+  set_attribute(provenance / "data.h5", "/", "command", std::string("stoneskip report waves --out `a``b`"));
   BOOST_TEST(run_stoneskip("report render " + provenance.string()).status == 0);
   BOOST_TEST(read_file(provenance / "index.md").find("* Made by: ``` stoneskip report waves --out `a``b` ```.") !=
              std::string::npos);
@@ -496,7 +462,7 @@ BOOST_AUTO_TEST_CASE(scene_quick_report_is_a_function_of_its_data) {
   // target" of 3000) is refused, not rendered.
   const fs::path edited = tmp.path() / "edited";
   fs::copy(dir, edited, fs::copy_options::recursive);
-  set_double_attribute(edited / "data.h5", "/sections/speed", "scene_fps_1core", 900);
+  set_attribute(edited / "data.h5", "/sections/speed", "scene_fps_1core", 900.0);
   const auto e = run_stoneskip("report render " + edited.string());
   BOOST_TEST(e.status == 2, e.out);
   BOOST_TEST(e.out.find("scene_fps_1core is 900 but its verdict scene_target was decided on") != std::string::npos, e.out);

@@ -5,13 +5,13 @@
 // index.md left as it was.
 #include <boost/test/unit_test.hpp>
 
-#include <hdf5.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <string>
 
+#include "tools/cli/hdf5_edit.hpp"
 #include "tools/cli/test_support.hpp"
 #include "verification/study/record.hpp"
 #include "verification/study/verdict_rules.hpp"
@@ -32,25 +32,6 @@ const Record* first_verdict(const Record& r) {
   for (const auto& c : r.child_names())
     if (const Record* v = first_verdict(r.at(c))) return v;
   return nullptr;
-}
-
-// Edits a text attribute as a hand with an HDF5 editor would (deleted and made again).
-void set_text_attribute(const fs::path& file, const std::string& object, const char* name, const std::string& value) {
-  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-  BOOST_REQUIRE(f >= 0);
-  BOOST_REQUIRE(H5Adelete_by_name(f, object.c_str(), name, H5P_DEFAULT) >= 0);
-  const hid_t type = H5Tcopy(H5T_C_S1);
-  H5Tset_size(type, H5T_VARIABLE);
-  H5Tset_cset(type, H5T_CSET_UTF8);
-  const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t a = H5Acreate_by_name(f, object.c_str(), name, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  BOOST_REQUIRE(a >= 0);
-  const char* text = value.c_str();
-  BOOST_REQUIRE(H5Awrite(a, type, &text) >= 0);
-  H5Aclose(a);
-  H5Sclose(space);
-  H5Tclose(type);
-  H5Fclose(f);
 }
 
 }  // namespace
@@ -77,7 +58,7 @@ BOOST_AUTO_TEST_CASE(a_data_file_whose_verdict_contradicts_its_rule_is_refused_b
     stored = v->text("verdict");
   }
   const std::string index = read_file(page / "index.md");
-  set_text_attribute(page / "data.h5", path, "verdict", stored + " (edited)");
+  stoneskip::test::set_attribute(page / "data.h5", path, "verdict", stored + " (edited)");
   const RanApart r = run_apart({"report", "render", page.string()}, kTimeout_s);
   BOOST_TEST(r.status == 2, "exit " << r.status << ": " << r.err);
   BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, r.err);

@@ -112,8 +112,9 @@ BOOST_AUTO_TEST_CASE(a_scene_water_with_no_stable_step_says_so_and_gives_no_step
   BOOST_TEST(zeros == "", zeros);  // σ = 3.125, stable: nothing to refuse
 }
 
-BOOST_AUTO_TEST_CASE(wave_and_scene_say_the_same_exact_limit) {
-  // Oracle: σ_max = 2/√8 = 1/√2 for the five-point stencil at every μΔt ≥ 0 (model/water/stencil.hpp);
+BOOST_AUTO_TEST_CASE(the_limit_wave_and_scene_share_is_exact_at_every_damping) {
+  // Oracle: σ_max = 2/√8 = 1/√2 for the five-point stencil at every μΔt ≥ 0 (model/water/stencil.hpp),
+  // from water_stability, which both `wave` and `scene` call;
   // the bisection gave 0.7071068157 at μΔt = 390.6, above the true limit. Exact to the last bit.
   HeightFieldOptions w;
   w.stencil = named_stencil("five_point");
