@@ -128,9 +128,10 @@ std::set<long> chosen_frames(const std::vector<double>& times_s, const SceneOpti
                                                    std::to_string(times_s.size()) + ")");
   std::set<long> frames;
   for (double t : times_s) {
-    if (!(t >= 0 && t <= o.duration_s))
-      throw_input_error("--water-frames", 0, "", "every time must lie in the scene, 0 to " + general(o.duration_s) + " s (got " +
-                                                     general(t) + ")");
+    // The scene's last frame ends it (it runs whole frames): a time past it has no frame at or after it.
+    if (!(t >= 0 && t <= o.end_s() * (1 + 1e-12)))
+      throw_input_error("--water-frames", 0, "", "every time must lie in the scene, 0 to " + general(o.end_s()) +
+                                                     " s, its last frame (got " + general(t) + ")");
     const long k = std::max(1L, static_cast<long>(std::ceil(t * o.frame_rate_hz - 1e-9)));
     frames.insert(std::min(k, o.frames()));
   }
@@ -252,6 +253,11 @@ void run(const SceneArgs& a) {
   o.energy_budget = a.json;
   std::string why;
   if (!o.valid(&why)) throw_input_error(c.file, 0, "scene", why);
+  // A scene runs whole frames (SceneOptions::frames): a duration between two is said, not cut silently.
+  if (std::abs(o.end_s() - o.duration_s) > 1e-9 * o.duration_s)
+    std::fprintf(stderr, "note: scene.duration_s = %s s is %s frames of 1/%s s: the scene runs %ld whole frames, to %s s\n",
+                 general(o.duration_s, 6).c_str(), general(o.duration_s * o.frame_rate_hz, 4).c_str(),
+                 general(o.frame_rate_hz, 6).c_str(), o.frames(), general(o.end_s(), 6).c_str());
   // Limits before any work (cases/README.md, Limits): the stone and its water over the scene's
   // duration (the stone stops at its t_max_s, the water runs on), and a cost record per frame.
   enforce_limits(estimate_scene(c, o.duration_s, o.frame_rate_hz), a.limits, c.file);
@@ -357,7 +363,8 @@ void run(const SceneArgs& a) {
         g.set_attr("coupling", std::string(to_string(o.coupling)));
         g.set_attr("frame_rate_hz", o.frame_rate_hz);
         g.set_attr("frames", static_cast<long long>(s.frames));
-        g.set_attr("duration_s", o.duration_s);
+        g.set_attr("duration_s", o.end_s());  // what was simulated: whole frames
+        g.set_attr("duration_asked_s", o.duration_s);
         if (!water.t_s.empty()) write_water(root, o, water);
       });
       if (!a.json) std::cout << "wrote     " << a.out << (water.t_s.empty() ? std::string() : " (" + std::to_string(water.t_s.size()) + " water frames)") << "\n";
@@ -386,6 +393,10 @@ void add_scene(CLI::App& app) {
   cmd->callback([a, cmd] {
     a->movie_given = cmd->count("--movie") > 0;
     a->out_given = cmd->count("--out") > 0;
+    // A movie setting without a movie would be ignored without a word.
+    if (!a->movie_given)
+      for (const char* option : {"--movie-size", "--movie-rate", "--movie-slow"})
+        if (cmd->count(option) > 0) throw_input_error(option, 0, "", "needs --movie FILE (no movie is drawn without it)");
     run(*a);
   });
 }

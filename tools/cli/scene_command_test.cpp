@@ -220,10 +220,27 @@ BOOST_AUTO_TEST_CASE(water_frames_out_of_the_scene_or_without_a_file_are_refused
     BOOST_TEST(!fs::exists(out));
   };
   refused("--water-frames 0.05", "needs --out");
+  for (const char* option : {"--movie-size 100x100", "--movie-rate 30", "--movie-slow 2"}) {
+    const auto r = run_stoneskip("scene " + small_seed(0.1) + " " + option);
+    BOOST_TEST(r.status == 2, option);
+    BOOST_TEST(r.out.find("needs --movie FILE") != std::string::npos, r.out);
+  }
   refused("--out " + out.string() + " --water-frames 0.2", "0 to 0.1 s");
   std::string many;
   for (int i = 0; i < 101; ++i) many += (i ? "," : "") + std::string("0.05");
   refused("--out " + out.string() + " --water-frames " + many, "at most 100");
+  // A duration between two frames: 0.105 s at 90 frames/s is 9.45 frames. The scene runs 9 whole
+  // frames, to 0.1 s, and says so; a time past its last frame has no frame "at or after" it (main
+  // returned frame 9 for 0.104 s, and stored a duration of 0.105 s).
+  const auto cut = run_stoneskip("scene " + small_seed(0.105) + " --out " + out.string() + " --water-frames 0.104");
+  BOOST_TEST(cut.status == 2, cut.out);
+  BOOST_TEST(cut.out.find("0 to 0.1 s, its last frame (got 0.104)") != std::string::npos, cut.out);
+  const auto ran = run_stoneskip("scene " + small_seed(0.105) + " --out " + out.string());
+  BOOST_REQUIRE_MESSAGE(ran.status == 0, ran.out);
+  BOOST_TEST(ran.out.find("is 9.45 frames of 1/90 s: the scene runs 9 whole frames, to 0.1 s") != std::string::npos, ran.out);
+  const stoneskip::Hdf5Reader f(out);
+  BOOST_TEST(f.root().open_group("scene").attr_double("duration_s") == 9 / 90.0);
+  BOOST_TEST(f.root().open_group("scene").attr_double("duration_asked_s") == 0.105);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
