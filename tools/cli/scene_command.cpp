@@ -253,11 +253,6 @@ void run(const SceneArgs& a) {
   o.energy_budget = a.json;
   std::string why;
   if (!o.valid(&why)) throw_input_error(c.file, 0, "scene", why);
-  // A scene runs whole frames (SceneOptions::frames): a duration between two is said, not cut silently.
-  if (std::abs(o.end_s() - o.duration_s) > 1e-9 * o.duration_s)
-    std::fprintf(stderr, "note: scene.duration_s = %s s is %s frames of 1/%s s: the scene runs %ld whole frames, to %s s\n",
-                 general(o.duration_s, 6).c_str(), general(o.duration_s * o.frame_rate_hz, 4).c_str(),
-                 general(o.frame_rate_hz, 6).c_str(), o.frames(), general(o.end_s(), 6).c_str());
   // Limits before any work (cases/README.md, Limits): the stone and its water over the scene's
   // duration (the stone stops at its t_max_s, the water runs on), and a cost record per frame.
   enforce_limits(estimate_scene(c, o.duration_s, o.frame_rate_hz), a.limits, c.file);
@@ -312,6 +307,12 @@ void run(const SceneArgs& a) {
     refuse_foreign_output(a.out);
     AtomicOutput probe(a.out);  // an unwritable place is refused before any work
   }
+  // Every input checked (bad input stays one line): a scene runs whole frames (SceneOptions::frames),
+  // and a duration between two is said, not cut silently.
+  if (std::abs(o.end_s() - o.duration_s) > 1e-9 * o.duration_s)
+    std::fprintf(stderr, "note: scene.duration_s = %s s is %s frames of 1/%s s: the scene runs %ld whole frames, to %s s\n",
+                 general(o.duration_s, 6).c_str(), general(o.duration_s * o.frame_rate_hz, 4).c_str(),
+                 general(o.frame_rate_hz, 6).c_str(), o.frames(), general(o.end_s(), 6).c_str());
   // A progress line on stderr for a scene that runs longer than kQuietScene_s (frames done of all,
   // the time left); a short scene prints nothing. Its tick costs a clock read per frame.
   constexpr double kQuietScene_s = 2.0;
