@@ -222,6 +222,14 @@ void run(const SweepArgs& a) {
 
 void compute(const SweepArgs& a, const SweepFile& sweep, const SweepCases& cases, SweepPlan& plan,
              const ThrowEvaluator& evaluate, MpiSession& mpi) {
+  // A key the sweep both fixes (`set`) and varies: legal (a base case may need the fixed value to
+  // load, e.g. a fixed scheme's contact_dt_s), but the axis replaces it, which is said.
+  for (std::size_t k = 0; k < sweep.design.axes.size(); ++k)
+    for (const std::string& fixed : sweep.base_sets)
+      if (fixed.substr(0, fixed.find('=')) == sweep.design.axes[k].key)
+        std::fprintf(stderr, "warning: %s:%ld: vary[%zu].key: \"%s\" is also fixed by the top-level set (\"%s\"): the axis's values replace it\n",
+                     printable_text(sweep.file).c_str(), sweep.axis_lines[k], k + 1, sweep.design.axes[k].key.c_str(),
+                     printable_text(fixed).c_str());
   if (!a.quiet) {
     std::printf("%s", describe(sweep, cases).c_str());
     std::printf("run       %d rank%s%s; %zu of %zu throws to compute; output %s\n", mpi.size(), mpi.size() == 1 ? "" : "s",
@@ -244,7 +252,8 @@ void add_sweep(CLI::App& app) {
   cmd->add_option("--threads", a->threads,
                   "Compute threads on rank 0 (default: every core when it runs alone, 1 beside MPI workers; "
                   "0 with workers: rank 0 only schedules)");
-  cmd->add_option("--max-chunk", a->max_chunk, "Largest number of throws handed out at once (default 32)");
+  cmd->add_option("--max-chunk", a->max_chunk, "Largest number of throws handed out at once (default 32)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 40));
   cmd->add_flag("--quiet", a->quiet, "No configuration, no progress line");
   add_limit_options(cmd, a->limits);
   cmd->callback([a] { run(*a); });

@@ -208,6 +208,17 @@ BOOST_AUTO_TEST_CASE(a_case_that_names_no_fixed_scheme_is_swept_with_the_adaptiv
     BOOST_TEST(at(t, row, "realtime_rhs_evaluations") != f["stats"]["rhs_evaluations"].get<double>());
     BOOST_TEST(at(t, row, "realtime_bounces") == a["bounces"].get<double>());
   }
+  // A key both fixed by `set` and varied: the axis's values replace the fixed one, and a warning
+  // says so, naming the [[vary]] key's line (oracle: the sweep file's text, line 7).
+  const fs::path both = setup("both", replace(sweep_text, "\"solver.t_max_s=2.0\"", "\"solver.t_max_s=2.0\", \"throw.spin_rev_s=5\""));
+  const fs::path both_out = work() / "both.h5";
+  const Outcome w = command("sweep " + both.string() + " --out " + both_out.string() + " --quiet");
+  BOOST_REQUIRE_MESSAGE(w.status == 0, w.err);
+  BOOST_TEST(w.err.find("both.toml:7: vary[1].key: \"throw.spin_rev_s\" is also fixed by the top-level set "
+                        "(\"throw.spin_rev_s=5\"): the axis's values replace it") != std::string::npos, w.err);
+  const stoneskip::Table tb = table_of(both_out);
+  BOOST_TEST(at(tb, 0, "throw.spin_rev_s") == 0.0);
+  BOOST_TEST(at(tb, 1, "throw.spin_rev_s") == 20.0);
 }
 
 BOOST_AUTO_TEST_CASE(bad_sweep_files_fail_before_any_throw_with_one_line_and_no_output) {
@@ -235,6 +246,10 @@ BOOST_AUTO_TEST_CASE(bad_sweep_files_fail_before_any_throw_with_one_line_and_no_
   // A bad option, not read as its default (−1 once meant "every core").
   expect_bad_input(command("sweep " + (work() / "bad.toml").string() + " --out " + out.string() + " --threads -1"),
                    {"--threads: must be >= 0 (got -1)"}, out);
+  // A chunk beyond 64 bits was read as 2⁶⁴ − 1 without a word.
+  expect_bad_input(command("sweep " + (work() / "bad.toml").string() + " --out " + out.string() +
+                           " --max-chunk 99999999999999999999"),
+                   {"--max-chunk"}, out);
   const fs::path nowhere = work() / "no_such_folder" / "x.h5";
   expect_bad_input(command("sweep " + (work() / "bad.toml").string() + " --out " + nowhere.string()),
                    {nowhere.string(), "does not exist"}, nowhere);
