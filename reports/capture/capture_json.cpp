@@ -49,6 +49,7 @@ nlohmann::json capture_json(const CaptureAnalysis& a, const CaptureSimulation* s
   if (sim) {
     j["bounces_realtime"] = sim->realtime ? nlohmann::json(sim->realtime->bounces) : nlohmann::json(nullptr);
     j["bounces_reference"] = sim->reference ? nlohmann::json(sim->reference->bounces) : nlohmann::json(nullptr);
+    if (sim->realtime) j["realtime_outcome"] = to_string(sim->realtime->outcome);
     if (sim->reference) j["reference_outcome"] = to_string(sim->reference->outcome);
     if (!sim->ensemble_bounces.empty()) {
       nlohmann::json h = nlohmann::json::object();
@@ -57,6 +58,7 @@ nlohmann::json capture_json(const CaptureAnalysis& a, const CaptureSimulation* s
       j["ensemble_bounces_low"] = sim->bounces_low;
       j["ensemble_bounces_high"] = sim->bounces_high;
       j["ensemble_bounces_median"] = sim->bounces_median;
+      j["ensemble_failed"] = sim->ensemble_failed;
     }
   }
   return j;

@@ -37,6 +37,7 @@ std::string bounces_cell(const Record& c) {
   if (sim.has_child("ensemble")) {
     const Record& e = sim.at("ensemble");
     ens = fmt(e.number("bounces_low")) + "–" + fmt(e.number("bounces_high"));
+    if (e.has_number("failed") && e.number("failed") > 0) ens += " (" + fmt(e.number("failed")) + " failed)";
   }
   return count("realtime") + " / " + count("reference") + " / " + ens;
 }

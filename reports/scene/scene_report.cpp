@@ -13,6 +13,9 @@ namespace stoneskip {
 
 namespace {
 
+// An ensemble member's count, or "failed" (NaN: the run failed and has no count).
+std::string count_or_failed(double c) { return std::isnan(c) ? std::string("failed") : fmt(c); }
+
 std::string interval(const Record& fit) {
   if (!fit.flag("valid")) return "–";
   return fmt(fit.number("order"), 3) + " [" + fmt(fit.number("order_low"), 3) + ", " + fmt(fit.number("order_high"), 3) + "]";
@@ -139,10 +142,15 @@ SectionOutput coupling_section(const Record& c) {
              fmt(e.number("perturbation_smallest"), 2) + " to " + fmt(e.number("perturbation_largest"), 2) + ": two-way " +
              fmt(e.number("mean_two_way"), 3) + " ± " + fmt(e.number("sd_two_way"), 2) + ", one-way " + fmt(e.number("mean_one_way"), 3) + " ± " +
              fmt(e.number("sd_one_way"), 2) + " (mean ± sd); difference " + fmt(e.number("difference"), 3) + ", 95 % interval [" +
-             fmt(e.number("difference_low"), 3) + ", " + fmt(e.number("difference_high"), 3) + "] (Welch).");
+             fmt(e.number("difference_low"), 3) + ", " + fmt(e.number("difference_high"), 3) + "] (Welch)" +
+             (e.has_number("failed_two_way") && e.number("failed_two_way") + e.number("failed_one_way") > 0
+                  ? "; " + fmt(e.number("failed_two_way")) + " two-way and " + fmt(e.number("failed_one_way")) +
+                        " one-way runs failed and have no count, so nothing is decided on these ensembles."
+                  : "."));
       MarkdownTable et({"speed factor − 1", "two-way bounces", "one-way bounces"});
       for (std::size_t k = 0; k < m.rows(); ++k)
-        et.row({fmt(m.column("speed_factor")[k] - 1, 2), fmt(m.column("two_way_bounces")[k]), fmt(m.column("one_way_bounces")[k])});
+        et.row({fmt(m.column("speed_factor")[k] - 1, 2), count_or_failed(m.column("two_way_bounces")[k]),
+                count_or_failed(m.column("one_way_bounces")[k])});
       w.table(et);
     }
     {

@@ -31,7 +31,7 @@ SectionOutput count_ensembles_section(const Record& c) {
              fmt(c.number("perturbation_smallest"), 2) + " to " + fmt(c.number("perturbation_largest"), 2) +
              ". Test: Welch's t interval (95 %) of the difference of the mean counts (real-time − reference); a difference "
              "is established only where the interval excludes 0, and the verdict says \"no difference established\" "
-             "where the ensembles cannot tell.");
+             "where the ensembles cannot tell; where any run of either ensemble failed, nothing is decided.");
   const Table& t = c.table("throws");
   const auto& params = c.strings("parameters");
   const Record& verdicts = c.at("verdicts");
@@ -51,7 +51,12 @@ SectionOutput count_ensembles_section(const Record& c) {
   w.text("Of " + fmt(c.number("sampled"), 4) + " sampled throws the single runs agree on " + fmt(c.number("single_agree"), 4) +
          "; on the ensembles a difference is established on " + fmt(c.number("different"), 4) + ", none is established on " +
          fmt(c.number("not_established"), 4) + ", and both ensembles give one and the same count on " +
-         fmt(c.number("same"), 4) + ".");
+         fmt(c.number("same"), 4) +
+         (c.has_number("undecided_failed") && c.number("undecided_failed") > 0
+              ? "; on " + fmt(c.number("undecided_failed"), 4) +
+                    " nothing is decided because runs of an ensemble failed (a failed run has no count, and the runs "
+                    "that fail are not a random sample of the ensemble, so the survivors' means are not the ensemble's)."
+              : "."));
   w.subheading("Reasons");
   for (std::size_t i = 0; i < keys.size(); ++i) w.verdict(axis_name(params[i]) + " = " + fmt(value[i], 4), verdicts.at(keys[i]));
   w.end_list();

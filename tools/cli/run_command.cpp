@@ -60,6 +60,13 @@ std::string seconds(double t_s) {
   return b;
 }
 
+// Which runs failed ("" when none): a failed run's bounces until the failure are not its count,
+// so the counts are then not compared.
+std::string failed_runs(const ThrowResult& rt, const ThrowResult& ref) {
+  const bool a = rt.outcome == Outcome::failed, b = ref.outcome == Outcome::failed;
+  return a && b ? "both runs failed" : a ? "the real-time run failed" : b ? "the reference run failed" : "";
+}
+
 // How the real-time run agrees with the reference: one line, and the same as JSON.
 std::string agreement_line(const ThrowResult& rt, const ThrowResult& ref) {
   const ContactComparison c = compare_contacts(rt, ref);
@@ -67,7 +74,10 @@ std::string agreement_line(const ThrowResult& rt, const ThrowResult& ref) {
   char diff[64] = "";
   if (std::isfinite(d)) std::snprintf(diff, sizeof diff, ", difference %+.3g ms", 1e3 * d);
   return "agreement bounces realtime " + std::to_string(rt.bounces) + ", reference " + std::to_string(ref.bounces) +
-         (rt.bounces == ref.bounces ? " (same)" : " (differ)") + "; first contact at " + seconds(first_contact_s(rt)) +
+         (!failed_runs(rt, ref).empty() ? " (not compared: " + failed_runs(rt, ref) + ")"
+          : rt.bounces == ref.bounces    ? " (same)"
+                                         : " (differ)") +
+         "; first contact at " + seconds(first_contact_s(rt)) +
          " and " + seconds(first_contact_s(ref)) + diff + "; contacts: " + c.brief() + "\n";
 }
 
@@ -77,7 +87,8 @@ nlohmann::json agreement_json(const ThrowResult& rt, const ThrowResult& ref) {
   nlohmann::json j;
   j["bounces_realtime"] = rt.bounces;
   j["bounces_reference"] = ref.bounces;
-  j["same_bounces"] = rt.bounces == ref.bounces;
+  // null where a run failed: its count is not known (failed_runs above).
+  j["same_bounces"] = failed_runs(rt, ref).empty() ? nlohmann::json(rt.bounces == ref.bounces) : nlohmann::json(nullptr);
   j["first_contact_difference_s"] = std::isfinite(d) ? nlohmann::json(d) : nlohmann::json(nullptr);
   j["same_contacts"] = c.same_contacts();
   j["contacts"] = c.brief();

@@ -140,6 +140,20 @@ BOOST_AUTO_TEST_CASE(solver_both_says_how_far_the_two_solvers_agree) {
   BOOST_TEST(t.out.find(want) != std::string::npos, t.out);
 }
 
+BOOST_AUTO_TEST_CASE(a_failed_run_is_not_compared_by_its_count) {
+  // Oracle: the reference stopped after one step (max_steps = 1, at t ≈ 0) has counted 0 bounces
+  // because it never got there, not because the throw makes none: the counts are not compared
+  // (JSON null, text "not compared"), where the same numbers once read "(differ)".
+  const std::string cmd = "run cases/spin_sweep_base.toml --solver both --set reference.max_steps=1";
+  const Run j = run(cmd + " --json");
+  BOOST_TEST(j.status == 1);  // a failed solve
+  const auto a = nlohmann::json::parse(j.out)["agreement"];
+  BOOST_TEST(a["same_bounces"].is_null(), a.dump());
+  const Run t = run(cmd);
+  BOOST_TEST(t.out.find("(not compared: the reference run failed)") != std::string::npos, t.out);
+  BOOST_TEST(t.out.find("(differ)") == std::string::npos, t.out);
+}
+
 BOOST_AUTO_TEST_CASE(an_overridden_throw_says_so_in_its_title) {
   // Oracle: the case file's title ("... 8 m/s throw ...") and the override given: the title must
   // not claim the file's throw unchanged when --set changed it.

@@ -196,7 +196,7 @@ Record throw_findings(const CaptureAnalysis& a, const CaptureSimulation& sim) {
     const ReleaseKinematics& x = a.ensemble[k];
     e.add_row({x.speed_m_s, x.attack_angle_deg, x.path_angle_deg, x.spin_rev_s, x.height_m, x.measured_speed_m_s,
                x.accel_speed_m_s, x.lever_speed_m_s, x.measured_spin_rev_s, x.measured.rise_m,
-               bounces ? double(sim.ensemble_bounces[k]) : kNaN});
+               bounces && sim.ensemble_bounces[k] >= 0 ? double(sim.ensemble_bounces[k]) : kNaN});
   }
   r.set_table("ensemble", e);
   // The stone in the room from the start of the still part to the last sample before the release.
@@ -244,13 +244,19 @@ Record simulation_findings(const CaptureSimulation& sim, const CaptureFindingsCo
   if (sim.realtime && sim.reference) {
     Record in;
     in.set("realtime_bounces", sim.realtime->bounces).set("reference_bounces", sim.reference->bounces);
+    in.set("realtime_failed", sim.realtime->outcome == Outcome::failed);
+    in.set("reference_failed", sim.reference->outcome == Outcome::failed);
+    auto made = [](const ThrowResult& t) {
+      return t.outcome == Outcome::failed ? "fails after " + bounce_words(t.bounces) : "makes " + bounce_words(t.bounces);
+    };
     decide_verdict(r, "agreement", "bounce_agreement", in,
-                   "the real-time model makes " + bounce_words(sim.realtime->bounces) + " of the nominal throw, the "
-                   "reference (CVODE) " + bounce_words(sim.reference->bounces));
+                   "the real-time model " + made(*sim.realtime) + " of the nominal throw, the reference (CVODE) " +
+                       made(*sim.reference));
   }
   if (!sim.ensemble_bounces.empty()) {
     Record& e = r.child("ensemble");
     e.set("members", sim.ensemble_bounces.size());
+    e.set("failed", sim.ensemble_failed);
     e.set("cpu_s", sim.ensemble_cpu_s);
     e.set("wall_s", sim.ensemble_wall_s);
     e.set("bounces_low", sim.bounces_low);
@@ -262,7 +268,7 @@ Record simulation_findings(const CaptureSimulation& sim, const CaptureFindingsCo
     for (const auto& [b, m] : sim.bounce_histogram) h.add_row({double(b), double(m)});
     e.set_table("histogram", h);
     Record in;
-    in.set("bounces_low", sim.bounces_low).set("bounces_high", sim.bounces_high);
+    in.set("bounces_low", sim.bounces_low).set("bounces_high", sim.bounces_high).set("failed_runs", sim.ensemble_failed);
     const std::string range = sim.bounces_low == sim.bounces_high
                                   ? bounce_words(sim.bounces_low)
                                   : num(sim.bounces_low) + " to " + bounce_words(sim.bounces_high);
@@ -270,7 +276,11 @@ Record simulation_findings(const CaptureSimulation& sim, const CaptureFindingsCo
                    "the central " + num(100 * (kIntervalHighQuantile - kIntervalLowQuantile)) + " % of the " +
                        num(double(sim.ensemble_bounces.size())) +
                        " throws drawn from the capture's intervals make " + range + " in the real-time model (median " +
-                       num(sim.bounces_median) + ")");
+                       num(sim.bounces_median) + ")" +
+                       (sim.ensemble_failed > 0 ? "; " + num(double(sim.ensemble_failed)) + " of the " +
+                                                      num(double(sim.ensemble_bounces.size())) +
+                                                      " runs failed and have no count, so the spread is that of the rest"
+                                                : std::string()));
   }
   return r;
 }

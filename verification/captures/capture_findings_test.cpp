@@ -1,10 +1,15 @@
 // Tests of a capture's findings record and of the capture verdict rule it stores.
 #include <boost/test/unit_test.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <unistd.h>
 
+#include "model/stone/mass_properties.hpp"
+#include "model/stone/mesh.hpp"
+#include "model/stone/stone.hpp"
 #include "verification/captures/capture_findings.hpp"
+#include "verification/captures/capture_throw.hpp"
 #include "verification/study/verdict_rules.hpp"
 
 using namespace stoneskip;
@@ -191,6 +196,64 @@ BOOST_AUTO_TEST_CASE(the_findings_read_back_from_hdf5_unchanged_and_their_verdic
   Record forged = back;
   forged.child("verdict").set("jitter_s", 1.0);  // a stored input changed: the stored phrase no longer follows
   BOOST_TEST(contradicted_verdicts(forged).size() == 1u);
+}
+
+BOOST_AUTO_TEST_CASE(a_failed_run_decides_no_count) {
+  // Oracle: a failed run's bounces until the failure are not its count. The nominal pair (1 and 1
+  // bounces, the reference failed) is not "the same count"; the ensemble whose surviving members
+  // all make 1 bounce, with one member failed, is not "decided by the capture", and the failed
+  // member is NaN in the stored table, not its partial count.
+  CaptureAnalysis a = small_analysis();
+  judge_capture(a, a.options.rules);
+  CaptureSimulation sim;
+  sim.realtime.emplace();
+  sim.realtime->bounces = 1;
+  sim.reference.emplace();
+  sim.reference->bounces = 1;
+  sim.reference->outcome = Outcome::failed;
+  sim.ensemble_bounces = {1, -1, 1};
+  sim.ensemble_failed = 1;
+  sim.bounce_histogram = {{1, 2}};
+  sim.bounces_low = sim.bounces_median = sim.bounces_high = 1;
+  const Record r = capture_findings(a, sim, {"cases/x.toml", "prism", "physical", "newtonian"});
+  const Record& m = r.at("simulation");
+  BOOST_TEST(m.at("agreement").text("verdict") == "not decided: a run failed");
+  BOOST_TEST(m.at("agreement").text("reason").find("(CVODE) fails after 1 bounce") != std::string::npos,
+             m.at("agreement").text("reason"));
+  BOOST_TEST(m.at("ensemble").at("spread").text("verdict") == "not decided: runs failed");
+  BOOST_TEST(m.at("ensemble").number("failed") == 1.0);
+  const auto counts = r.at("throw").table("ensemble").column("bounces_realtime");
+  BOOST_REQUIRE(counts.size() == 3u);
+  BOOST_TEST(std::isnan(counts[1]));
+  BOOST_TEST(counts[0] == 1.0);
+  BOOST_TEST(contradicted_verdicts(r).empty());
+}
+
+BOOST_AUTO_TEST_CASE(simulate_capture_marks_a_failed_member_and_keeps_it_out_of_the_spread) {
+  // Oracle: each member run alone by run_realtime with the same options. A budget of 4 right-hand
+  // sides per 0.5 s frame runs the state away, which fails the run (stone_stepper.hpp); such a
+  // member is −1, counted in ensemble_failed, and in neither the histogram nor the quantiles.
+  CaptureAnalysis a = small_analysis();
+  a.nominal.velocity_m_s = Vec3(8, 0, -1.4);
+  a.nominal.height_m = 0.1;
+  a.ensemble.assign(2, a.nominal);
+  const Mesh mesh = make_prism(0.03, 0.008, 11);
+  const Stone stone = make_stone(mesh, mass_properties_from_density(mesh, 2500), 0.03, "test prism");
+  const Environment env;
+  CaptureSimulationOptions o;
+  o.reference = false;
+  o.realtime_options.rhs_per_frame = 4;
+  o.realtime_options.frame_dt_s = 0.5;
+  const CaptureSimulation sim = simulate_capture(stone, env, a, o);
+  RealtimeOptions alone = o.realtime_options;
+  alone.record_trajectory = false;
+  const ThrowResult r = run_realtime(stone, env, capture_initial_state(stone, a.nominal), alone);
+  BOOST_REQUIRE(r.outcome == Outcome::failed);  // the premise: the budget fails the throw
+  BOOST_TEST(sim.ensemble_bounces == (std::vector<int>{-1, -1}), boost::test_tools::per_element());
+  BOOST_TEST(sim.ensemble_failed == 2);
+  BOOST_TEST(sim.bounce_histogram.empty());
+  BOOST_TEST(sim.bounces_low == -1);
+  BOOST_TEST(sim.bounces_high == -1);
 }
 
 BOOST_AUTO_TEST_CASE(section_keys_name_figures_and_never_collide) {

@@ -29,15 +29,20 @@ CaptureSimulation simulate_capture(const Stone& stone, const Environment& env, c
     const WallTimer wall;
     for (const ReleaseKinematics& m : a.ensemble) {
       const ThrowResult r = run_realtime(stone, env, capture_initial_state(stone, m), ro);
-      sim.ensemble_bounces.push_back(r.bounces);
-      ++sim.bounce_histogram[r.bounces];
+      // A failed run's bounces until the failure are not its count.
+      const bool failed = r.outcome == Outcome::failed;
+      sim.ensemble_bounces.push_back(failed ? -1 : r.bounces);
+      if (failed) ++sim.ensemble_failed;
+      else ++sim.bounce_histogram[r.bounces];
       if (o.progress) o.progress(sim.ensemble_bounces.size(), a.ensemble.size());
     }
     sim.ensemble_cpu_s = cpu.seconds();
     sim.ensemble_wall_s = wall.seconds();
-    std::vector<int> b = sim.ensemble_bounces;
+    std::vector<int> b;
+    for (int n : sim.ensemble_bounces)
+      if (n >= 0) b.push_back(n);
     std::sort(b.begin(), b.end());
-    auto at = [&](double p) { return b[std::size_t(p * double(b.size() - 1) + 0.5)]; };
+    auto at = [&](double p) { return b.empty() ? -1 : b[std::size_t(p * double(b.size() - 1) + 0.5)]; };
     sim.bounces_low = at(kIntervalLowQuantile);
     sim.bounces_high = at(kIntervalHighQuantile);
     sim.bounces_median = at(0.5);

@@ -30,11 +30,13 @@ struct CaptureSimulationOptions {
 struct CaptureSimulation {
   std::optional<ThrowResult> realtime;   // nominal throw
   std::optional<ThrowResult> reference;  // nominal throw
-  std::vector<int> ensemble_bounces;     // one per ensemble member (real-time model)
-  std::map<int, int> bounce_histogram;   // bounces → members
+  std::vector<int> ensemble_bounces;     // one per ensemble member (real-time model); −1: the run failed
+  std::map<int, int> bounce_histogram;   // bounces → members, over the members that did not fail
+  int ensemble_failed = 0;               // members whose run failed (they have no count)
   double ensemble_cpu_s = 0;   // thread CPU time of the ensemble's runs (solvers/realtime/clocks.hpp)
   double ensemble_wall_s = 0;  // … and wall-clock time
-  int bounces_low = 0, bounces_high = 0, bounces_median = 0;  // the interval quantiles and the median of the ensemble
+  // The interval quantiles and the median over the members that did not fail (−1: none did).
+  int bounces_low = 0, bounces_high = 0, bounces_median = 0;
 };
 
 CaptureSimulation simulate_capture(const Stone& stone, const Environment& env, const CaptureAnalysis& a,

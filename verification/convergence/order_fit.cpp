@@ -194,7 +194,18 @@ OrderDecision judge_order(const OrderFit& fit, const OrderJudgement& j) {
   const double band_low = j.expected_order - j.tolerance, band_high = j.expected_order + j.tolerance;
   const bool within = fit.order_low >= band_low && fit.order_high <= band_high;
   const bool misses_band = fit.order_high < band_low || fit.order_low > band_high;
-  if (within) {
+  // An error that grows at some refinement (a pairwise order ≤ 0) is not approaching C h^p, so
+  // no order is claimed from it, however narrow the fit's interval (its residuals are not the
+  // scatter the interval assumes): the interval alone would call an erratic series convergent.
+  int growing = 0;
+  for (double p : fit.pairwise)
+    if (!(p > 0)) ++growing;
+  const bool claims_order = within || (misses_band && fit.order_low > j.minimum_order);
+  if (claims_order && growing > 0) {
+    d.verdict = OrderVerdict::order_not_established;
+    d.reason = interval + ", but the error grows at " + std::to_string(growing) + " of " +
+               std::to_string(fit.pairwise.size()) + " refinements (pairwise orders ≤ 0): not in the asymptotic range";
+  } else if (within) {
     d.verdict = OrderVerdict::converges_at_expected_order;
     d.reason = interval + " lies within " + num(j.tolerance) + " of " + expected;
   } else if (fit.order_high <= j.minimum_order) {

@@ -73,7 +73,9 @@ double richardson_extrapolate(double phi_fine, double phi_coarse, double ratio, 
 //                                lies above minimum_order (it excludes no convergence too);
 //   does_not_converge            the whole interval lies at or below minimum_order: the data show
 //                                that the error does not fall (a wide interval shows nothing);
-//   order_not_established        anything else: the interval is too wide to decide;
+//   order_not_established        anything else: the interval is too wide to decide, or the error
+//                                grows at some refinement (a pairwise order ≤ 0) where one of the
+//                                two verdicts above would claim an order;
 //   insufficient_data            fewer than 3 points in the fit (a two-point fit has no residual,
 //                                so its "interval" is the point itself), or no fit at all.
 enum class OrderVerdict {

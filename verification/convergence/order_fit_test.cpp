@@ -2,6 +2,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
 #include <random>
@@ -96,6 +97,32 @@ BOOST_AUTO_TEST_CASE(another_order_needs_an_interval_that_excludes_both_the_expe
   const OrderDecision d = judge_order(f);
   BOOST_TEST(d.verdict == OrderVerdict::converges_at_other_order, f.brief());
   BOOST_TEST(d.reason == "p = 1.58 [1.28, 1.88] excludes the expected 2");
+}
+
+BOOST_AUTO_TEST_CASE(an_error_that_grows_at_some_refinement_claims_no_order) {
+  // Oracle: errors built from the stones report's rk4 row "state after an interval holding the
+  // whole first contact", whose pairwise orders were -0.0243, 2.15, 2, 0.167, -0.482, 4.11, -0.833
+  // and fit 1.13 [0.728, 1.52]: an interval that excludes both 4 and 0, which the interval alone
+  // called "converges, not at the expected order" although the error grows at 3 of 7 halvings.
+  const std::vector<double> pairwise{-0.0243, 2.15, 2, 0.167, -0.482, 4.11, -0.833};
+  std::vector<double> h{0.01}, e{1e-3};
+  for (double p : pairwise) {
+    h.push_back(h.back() / 2);
+    e.push_back(e.back() / std::pow(2.0, p));
+  }
+  const OrderFit f = fit_order(h, e);
+  BOOST_TEST(f.order == 1.13, boost::test_tools::tolerance(0.01));  // the report's fit, rounded
+  BOOST_TEST(f.order_low > 0.25);
+  BOOST_TEST(f.order_high < 3.8);
+  OrderJudgement j{4, 0.25, 0.25};
+  j.expected_name = "formal";
+  const OrderDecision d = judge_order(f, j);
+  BOOST_TEST(d.verdict == OrderVerdict::order_not_established, d.reason);
+  BOOST_TEST(d.reason.find("grows at 3 of 7 refinements") != std::string::npos, d.reason);
+  // The same series with every halving lowering the error keeps its verdict: only growth vetoes.
+  std::vector<double> e2{1e-3};
+  for (double p : pairwise) e2.push_back(e2.back() / std::pow(2.0, std::max(p, 0.5)));
+  BOOST_TEST(judge_order(fit_order(h, e2), j).verdict == OrderVerdict::converges_at_other_order);
 }
 
 BOOST_AUTO_TEST_CASE(the_reason_names_the_interval_and_what_it_excludes) {

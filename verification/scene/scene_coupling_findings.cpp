@@ -46,14 +46,27 @@ void store_forcing(Record& k, const SceneSummary& s) {
   k.set("bounces", s.stone.bounces);
 }
 
-// The bounce counts of an ensemble of throws of one setting, each run only as long as its throw.
+// The bounce counts of an ensemble of throws of one setting, each run only as long as its throw;
+// a throw whose solve failed has no count: NaN (its bounces until the failure are not its count).
 std::vector<double> ensemble_bounces(SceneOptions s, const std::vector<double>& factors) {
   s.end = SceneEnd::with_the_throw;
   std::vector<double> out;
   for (double f : factors) {
     SceneOptions t = s;
     t.initial.velocity_m_s *= f;  // the speed, relatively; direction and spin kept
-    out.push_back(run_scene(t).stone.bounces);
+    const ThrowResult r = run_scene(t).stone;
+    out.push_back(r.outcome == Outcome::failed ? std::nan("") : static_cast<double>(r.bounces));
+  }
+  return out;
+}
+
+// The counts that exist (NaN: a failed run), and how many did not.
+std::vector<double> counted_runs(const std::vector<double>& counts, long& failed) {
+  std::vector<double> out;
+  failed = 0;
+  for (double c : counts) {
+    if (std::isnan(c)) ++failed;
+    else out.push_back(c);
   }
   return out;
 }
@@ -164,7 +177,8 @@ Record scene_coupling_findings(const SceneStudiesOptions& o, const ProgressFacto
     for (std::size_t k = 0; k < factors.size(); ++k) ticker->tick();
     const std::vector<double> counts_one = ensemble_bounces(one, factors);
     for (std::size_t k = 0; k < factors.size(); ++k) ticker->tick();
-    const MeanDifference md = welch_difference(counts_two, counts_one);
+    long failed_two = 0, failed_one = 0;
+    const MeanDifference md = welch_difference(counted_runs(counts_two, failed_two), counted_runs(counts_one, failed_one));
     Table ens = table({"speed_factor", "two_way_bounces", "one_way_bounces"});
     for (std::size_t k = 0; k < factors.size(); ++k) ens.add_row({factors[k], counts_two[k], counts_one[k]});
     Record& er = r.child("ensemble");
@@ -179,6 +193,8 @@ Record scene_coupling_findings(const SceneStudiesOptions& o, const ProgressFacto
     er.set("difference", md.difference);
     er.set("difference_low", md.low);
     er.set("difference_high", md.high);
+    er.set("failed_two_way", failed_two);
+    er.set("failed_one_way", failed_one);
     const auto& cb = b.summary.stone.contacts;
     double first_change = 0;
     if (!ca.empty() && !cb.empty())
@@ -189,12 +205,14 @@ Record scene_coupling_findings(const SceneStudiesOptions& o, const ProgressFacto
     reason << "bounces over " << factors.size() << " throws each (speed × 1 ± 1e" << num(std::log10(o.coupling.perturbation_smallest), 2)
            << " … 1e" << num(std::log10(o.coupling.perturbation_largest), 2) << "): two-way " << num(md.mean_a, 3) << " ± " << num(md.sd_a, 2)
            << ", one-way " << num(md.mean_b, 3) << " ± " << num(md.sd_b, 2) << " (mean ± sd); difference " << num(md.difference, 3)
-           << ", 95 % interval [" << num(md.low, 3) << ", " << num(md.high, 3) << "] (Welch); the first contact's times differ by "
+           << ", 95 % interval [" << num(md.low, 3) << ", " << num(md.high, 3) << "] (Welch; " << failed_two << " and "
+           << failed_one << " runs failed); the first contact's times differ by "
            << duration(first_change);
     Record in;
     in.set("difference_low", md.low);
     in.set("difference_high", md.high);
     in.set("count_spread", md.sd_a + md.sd_b);
+    in.set("failed_runs", failed_two + failed_one);
     in.set("max_time_change_s", first_change);
     in.set("time_tolerance_s", o.coupling.time_tolerance_s);
     decide_verdict(r, "verdict", "coupling_change", in, reason.str());

@@ -109,7 +109,7 @@ Record count_ensembles_findings(const std::vector<CountEnsembleThrow>& throws, c
            "established"},
           {}};
   std::vector<std::string> params, keys;
-  int single_agree = 0, established = 0, none_established = 0, same = 0;
+  int single_agree = 0, established = 0, none_established = 0, same = 0, undecided = 0;
   for (std::size_t i = 0; i < throws.size(); ++i) {
     const CountEnsembleThrow& c = throws[i];
     MeanDifference d = c.difference;
@@ -131,6 +131,8 @@ Record count_ensembles_findings(const std::vector<CountEnsembleThrow>& throws, c
     in.set("difference_low", d.low);
     in.set("difference_high", d.high);
     in.set("count_spread", d.sd_a + d.sd_b);
+    in.set("realtime_failed", c.realtime_failed);
+    in.set("reference_failed", c.reference_failed);
     char reason[400];
     std::snprintf(reason, sizeof reason,
                   "%s = %.4g %s: over %zu throws each (speed × 1 ± 1e%.3g … 1e%.3g) real-time %.3g ± %.2g, reference "
@@ -145,6 +147,7 @@ Record count_ensembles_findings(const std::vector<CountEnsembleThrow>& throws, c
     if (phrase == "different bounce counts") ++established;
     else if (phrase == "no difference established") ++none_established;
     else if (phrase == "same bounce count") ++same;
+    else if (phrase == "not decided: runs failed") ++undecided;
   }
   r.set_table("throws", t);
   r.set_strings("parameters", params);
@@ -154,6 +157,7 @@ Record count_ensembles_findings(const std::vector<CountEnsembleThrow>& throws, c
   r.set("different", established);
   r.set("not_established", none_established);
   r.set("same", same);
+  r.set("undecided_failed", undecided);
   return r;
 }
 

@@ -37,6 +37,22 @@ BOOST_AUTO_TEST_CASE(a_difference_is_established_only_where_the_interval_exclude
   BOOST_TEST(decide("ensemble_bounce_agreement", in) == "not measured");
 }
 
+BOOST_AUTO_TEST_CASE(an_ensemble_with_a_failed_run_decides_nothing) {
+  // The stones report's spin-40 paper throw: real-time 4.38 ± 0.87, reference 7.4 ± 2.9 over the
+  // runs that finished, interval [-5.13, -0.9], with 3 and 6 of 16 failed. The interval excludes
+  // 0, but a failed run's count is unknown and the failures are not a random sample: no verdict.
+  Record in;
+  in.set("valid", 1.0).set("difference_low", -5.13).set("difference_high", -0.9).set("count_spread", 3.77);
+  in.set("realtime_failed", 3.0).set("reference_failed", 6.0);
+  BOOST_TEST(decide("ensemble_bounce_agreement", in) == "not decided: runs failed");
+  in.set("realtime_failed", 0.0);  // one side alone failing is enough
+  BOOST_TEST(decide("ensemble_bounce_agreement", in) == "not decided: runs failed");
+  in.set("reference_failed", 0.0);  // no failure: the interval decides again
+  BOOST_TEST(decide("ensemble_bounce_agreement", in) == "different bounce counts");
+  in.set("difference_low", 0.0).set("difference_high", 0.0).set("count_spread", 0.0).set("reference_failed", 1.0);
+  BOOST_TEST(decide("ensemble_bounce_agreement", in) == "not decided: runs failed");  // not "same" either
+}
+
 BOOST_AUTO_TEST_CASE(members_are_independent_solves_and_verdicts_follow_welch, *boost::unit_test::timeout(120)) {
   // The convergence throw's first contact and the flight after it (the short sweep of
   // bounce_sweep_test), in the physical convention, real-time against real-time at two steps.

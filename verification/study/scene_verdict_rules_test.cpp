@@ -26,6 +26,11 @@ BOOST_AUTO_TEST_CASE(a_coupling_change_is_an_ensemble_count_change_before_a_time
   BOOST_TEST(decide("coupling_change", in) == "changes the bounce count");
   in.set("difference_low", -3.0).set("difference_high", -0.01);
   BOOST_TEST(decide("coupling_change", in) == "changes the bounce count");
+  // A failed run has no count and the failures are not a random sample: nothing is decided.
+  in.set("failed_runs", 1.0);
+  BOOST_TEST(decide("coupling_change", in) == "not decided: runs failed");
+  in.set("failed_runs", 0.0);
+  BOOST_TEST(decide("coupling_change", in) == "changes the bounce count");
 }
 
 BOOST_AUTO_TEST_CASE(the_coupled_limit_needs_all_three_runs_to_agree) {

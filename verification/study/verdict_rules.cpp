@@ -254,6 +254,9 @@ const std::map<std::string, Rule>& rules() {
       {"capture_verdict", capture_verdict_phrase},
       {"bounce_agreement",
        [](const Record& in) {
+         // A failed run's bounces until the failure are not its count.
+         const auto failed = [&](const char* k) { return in.has_number(k) && in.number(k) > 0; };
+         if (failed("realtime_failed") || failed("reference_failed")) return std::string("not decided: a run failed");
          return std::string(in.number("realtime_bounces") == in.number("reference_bounces") ? "same bounce count"
                                                                                           : "different bounce counts");
        }},
@@ -265,6 +268,7 @@ const std::map<std::string, Rule>& rules() {
        }},
       {"bounce_spread",
        [](const Record& in) {
+         if (in.has_number("failed_runs") && in.number("failed_runs") > 0) return std::string("not decided: runs failed");
          return std::string(in.number("bounces_low") == in.number("bounces_high") ? "decided by the capture"
                                                                                  : "not decided by the capture");
        }},
@@ -272,12 +276,20 @@ const std::map<std::string, Rule>& rules() {
        [](const Record& in) {
          // Two solvers' bounce counts on ensembles: the 95 % interval of the difference of the means.
          if (!in.flag("valid")) return std::string("not measured");
+         // A failed run has no count, and the runs that fail are not a random sample of the
+         // ensemble (a run that blows up or collapses its steps is the one whose contacts went
+         // wrong): the survivors' means would be a selected subset's, so nothing is decided on them.
+         // (Records written before the failures were inputs have no such key: judged as before.)
+         const auto failed = [&](const char* k) { return in.has_number(k) && in.number(k) > 0; };
+         if (failed("realtime_failed") || failed("reference_failed")) return std::string("not decided: runs failed");
          if (in.number("difference_low") > 0 || in.number("difference_high") < 0) return std::string("different bounce counts");
          return std::string(in.number("count_spread") > 0 ? "no difference established" : "same bounce count");
        }},
       {"coupling_change",
        [](const Record& in) {
-         // Bounce counts on ensembles: the 95 % interval of the difference of the means.
+         // Bounce counts on ensembles: the 95 % interval of the difference of the means; nothing is
+         // decided on an ensemble with a failed run (see ensemble_bounce_agreement).
+         if (in.has_number("failed_runs") && in.number("failed_runs") > 0) return std::string("not decided: runs failed");
          if (in.number("difference_low") > 0 || in.number("difference_high") < 0) return std::string("changes the bounce count");
          if (in.number("count_spread") > 0) return std::string("no difference established");
          // Counts that did not depend on the perturbation and agree: the first contact decides.

@@ -34,16 +34,20 @@
 //   capture_verdict      the findings of a Wii Remote capture and CaptureVerdictRules' thresholds
 //                        (verification/captures/capture_verdict.hpp; inputs: capture_conditions
 //                        below) → usable | usable with caveats | unusable
-//   bounce_agreement     realtime_bounces, reference_bounces → same bounce count | different bounce counts
-//   bounce_spread        bounces_low, bounces_high (the ensemble's interval quantiles) →
-//                        decided by the capture | not decided by the capture
+//   bounce_agreement     realtime_bounces, reference_bounces, realtime_failed, reference_failed →
+//                        not decided: a run failed | same bounce count | different bounce counts
+//   bounce_spread        bounces_low, bounces_high (the ensemble's interval quantiles), failed_runs →
+//                        not decided: runs failed | decided by the capture | not decided by the capture
 //   ensemble_bounce_agreement  valid, difference_low, difference_high (95 % interval of the two
-//                        ensembles' mean bounce counts), count_spread → not measured |
-//                        different bounce counts | no difference established | same bounce count
+//                        ensembles' mean bounce counts), count_spread, realtime_failed,
+//                        reference_failed (runs without a count) → not measured |
+//                        not decided: runs failed | different bounce counts |
+//                        no difference established | same bounce count
 //   coupling_change      difference_low, difference_high (95 % interval of the ensembles' mean bounce
 //                        counts, verification/study/ensemble_difference.hpp), count_spread (sum of
 //                        their standard deviations), max_time_change_s (first contact),
-//                        time_tolerance_s → changes the bounce count | no difference established |
+//                        time_tolerance_s, failed_runs (runs without a count) → not decided: runs
+//                        failed | changes the bounce count | no difference established |
 //                        moves the contacts | no visible change
 //   coupled_limit        growth_below, growth_above, growth_free_above, growth_tolerance →
 //                        stable below the limit, unstable above it | the limit is not confirmed
