@@ -24,6 +24,19 @@ struct StepperPoint {
   StateAt at_free_flight;
 };
 
+// The scale of a relative state error's round-off over an interval: 1 (velocity, orientation,
+// angular momentum are relative or angles) or the largest |x| in stone radii at its ends (the
+// position error is |Δx| / R, and x + h v rounds at ε |x|), whichever is larger.
+double position_scale(const Stone& stone, const RigidState& a, const RigidState& b) {
+  const double r = std::max(stone.bounding_radius_m, 1e-6);  // as position_error
+  return std::max({1.0, a.position_m.norm() / r, b.position_m.norm() / r});
+}
+
+// N steps' worst-case accumulated rounding: N ε × scale (ε the double's unit round-off × 2).
+double roundoff_bound(long steps, double scale) {
+  return static_cast<double>(steps) * std::numeric_limits<double>::epsilon() * scale;
+}
+
 // Fills in_fit/notes from the errors and the reference's own error, then fits the order, judges it
 // and (for scalar quantities) computes the GCI of the three finest runs.
 void finish_series(ConvergenceSeries& s, const RealtimeConvergenceOptions& o) {
@@ -43,6 +56,13 @@ void finish_series(ConvergenceSeries& s, const RealtimeConvergenceOptions& o) {
       s.below_floor[i] = true;
       continue;
     }
+    if (i < s.roundoff.size() && s.error[i] <= s.roundoff[i]) {
+      char note[96];
+      std::snprintf(note, sizeof note, "at round-off (N ε × scale = %.3g)", s.roundoff[i]);
+      s.notes[i] = note;
+      s.below_floor[i] = true;
+      continue;
+    }
     s.in_fit[i] = true;
     h.push_back(s.h_s[i]);
     e.push_back(s.error[i]);
@@ -55,6 +75,28 @@ void finish_series(ConvergenceSeries& s, const RealtimeConvergenceOptions& o) {
   j.tolerance = o.order_tolerance;
   j.expected_name = "formal";
   s.decision = judge_order(s.fit, j);
+  if (h.size() < n) {
+    // Say which points the fit lacks and why (a fit of too few points otherwise reads as if the
+    // runs had no error at all).
+    int failed = 0, floor = 0, lists = 0, roundoff = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (s.in_fit[i]) continue;
+      if (s.notes[i].rfind("contact lists differ", 0) == 0) ++lists;
+      else if (s.notes[i].rfind("at round-off", 0) == 0) ++roundoff;
+      else if (s.below_floor[i]) ++floor;
+      else ++failed;
+    }
+    std::string why;
+    auto add = [&](int k, const char* what) {
+      if (k == 0) return;
+      why += (why.empty() ? "" : ", ") + std::to_string(k) + " " + what;
+    };
+    add(lists, "with a contact list unlike the reference's");
+    add(floor, "below the reference's error bound");
+    add(roundoff, "at round-off");
+    add(failed, "failed");
+    s.decision.reason += " (of " + std::to_string(n) + " runs, left out: " + why + ")";
+  }
   // GCI (Celik et al. 2008) from the three finest steps with finite values; h_s is descending.
   std::vector<std::size_t> idx;
   for (std::size_t i = n; i-- > 0 && idx.size() < 3;)
@@ -243,7 +285,9 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
       auto s = make_series("flight_interval_state",
                            "state after a free-flight interval (scheme alone, N equal steps)", "1 (relative)", sc);
       s.reference_error = at_fine[0].ok ? state_error(p.stone, at_ref[0].state, at_fine[0].state) : 0;
+      const double flight_scale = position_scale(p.stone, p.initial, at_ref[0].state);
       for (std::size_t b = 0; b < nN; ++b) {
+        s.roundoff.push_back(roundoff_bound(o.interval_steps[b], flight_scale));
         s.h_s.push_back(times[0] / o.interval_steps[b]);
         s.value.push_back(kNaN);
         s.error.push_back(state_error(p.stone, flight_end[a * nN + b], at_ref[0].state));
@@ -261,6 +305,7 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
                              part == 0 ? "1 (radii)" : "rad", sc);
         q.reference_error = at_fine[0].ok ? err(at_ref[0].state, at_fine[0].state) : 0;
         for (std::size_t b = 0; b < nN; ++b) {
+          q.roundoff.push_back(roundoff_bound(o.interval_steps[b], part == 0 ? flight_scale : 1.0));
           q.h_s.push_back(times[0] / o.interval_steps[b]);
           q.value.push_back(kNaN);
           q.error.push_back(err(flight_end[a * nN + b], at_ref[0].state));
@@ -274,7 +319,9 @@ RealtimeConvergenceResult run_realtime_convergence(const ThrowProblem& p, const 
                            "state after an interval holding the whole first contact (scheme alone, N equal steps)",
                            "1 (relative)", sc);
       s.reference_error = at_fine[2].ok ? state_error(p.stone, at_ref[2].state, at_fine[2].state) : 0;
+      const double contact_scale = position_scale(p.stone, at_ref[1].state, at_ref[2].state);
       for (std::size_t b = 0; b < nN; ++b) {
+        s.roundoff.push_back(roundoff_bound(o.interval_steps[b], contact_scale));
         s.h_s.push_back((times[2] - times[1]) / o.interval_steps[b]);
         s.value.push_back(kNaN);
         const RigidState& e = contact_end[a * nN + b];

@@ -74,7 +74,12 @@ struct ConvergenceSeries {
   std::vector<double> value; // the scalar measured (NaN for vector quantities)
   std::vector<double> error; // against the reference; NaN where the run failed
   std::vector<bool> in_fit;  // false: failed or below the reference's accuracy
-  std::vector<bool> below_floor;  // true: left out because below the reference's accuracy
+  std::vector<bool> below_floor;  // true: left out because below the reference's accuracy or round-off
+  // Per point (empty: not estimated): a bound on the round-off the N steps can accumulate, N ε
+  // times the quantity's scale (a step's additions round at ε of the values they add to). An
+  // error at or below it is not the scheme's truncation error (a scheme exact on the problem, as
+  // rk4 on a parabola, shows round-off that grows with N), so it is left out of the fit.
+  std::vector<double> roundoff;
   std::vector<std::string> notes;  // per point: empty, or why it is not in the fit
   double reference_error = 0;      // the reference's own error on this quantity
   OrderFit fit;
