@@ -6,10 +6,11 @@ namespace stoneskip {
 
 namespace {
 nlohmann::json number(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
-void put(nlohmann::json& j, const std::string& key, const Interval& v, bool valid) {
+// valid: the value exists; interval: an ensemble drew its bounds (null otherwise, not the value twice).
+void put(nlohmann::json& j, const std::string& key, const Interval& v, bool valid, bool interval = true) {
   j[key] = valid ? number(v.nominal) : nlohmann::json(nullptr);
-  j[key + "_low"] = valid ? number(v.low) : nlohmann::json(nullptr);
-  j[key + "_high"] = valid ? number(v.high) : nlohmann::json(nullptr);
+  j[key + "_low"] = valid && interval ? number(v.low) : nlohmann::json(nullptr);
+  j[key + "_high"] = valid && interval ? number(v.high) : nlohmann::json(nullptr);
 }
 }  // namespace
 
@@ -37,14 +38,14 @@ nlohmann::json capture_json(const CaptureAnalysis& a, const CaptureSimulation* s
   j["gyro_bias_deg_s"] = {a.gyro_bias_deg_s.x(), a.gyro_bias_deg_s.y(), a.gyro_bias_deg_s.z()};
   j["release_found"] = a.release_found;
   j["release_t_s"] = a.release_found ? number(a.release_t_s) : nlohmann::json(nullptr);
-  put(j, "release_speed_m_s", a.speed_m_s, ok);
+  put(j, "release_speed_m_s", a.speed_m_s, ok, !a.ensemble.empty());
   j["release_speed_is_lower_bound_only"] = a.clipped;
-  put(j, "accelerometer_speed_m_s", a.accel_speed_m_s, ok);
-  put(j, "lever_arm_speed_m_s", a.lever_speed_m_s, ok);
-  put(j, "attack_angle_deg", a.attack_angle_deg, ok);
-  put(j, "path_angle_deg", a.path_angle_deg, ok);
-  put(j, "spin_rev_s", a.spin_rev_s, ok);
-  put(j, "release_height_m", a.height_m, ok);
+  put(j, "accelerometer_speed_m_s", a.accel_speed_m_s, ok, !a.ensemble.empty());
+  put(j, "lever_arm_speed_m_s", a.lever_speed_m_s, ok, !a.ensemble.empty());
+  put(j, "attack_angle_deg", a.attack_angle_deg, ok, !a.ensemble.empty());
+  put(j, "path_angle_deg", a.path_angle_deg, ok, !a.ensemble.empty());
+  put(j, "spin_rev_s", a.spin_rev_s, ok, !a.ensemble.empty());
+  put(j, "release_height_m", a.height_m, ok, !a.ensemble.empty());
   j["ensemble_members"] = a.ensemble.size();
   if (sim) {
     j["bounces_realtime"] = sim->realtime ? nlohmann::json(sim->realtime->bounces) : nlohmann::json(nullptr);

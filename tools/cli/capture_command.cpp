@@ -92,6 +92,9 @@ struct CaptureArgs {
   std::string scene;
   std::vector<std::string> scene_sets;
   ResourceLimits limits;
+  // throw's --members and --seed, registered only to be refused by name (it draws no ensemble).
+  CLI::Option* throw_members = nullptr;
+  CLI::Option* throw_seed = nullptr;
 };
 
 void add_read(CLI::App* cmd, CaptureArgs& a) {
@@ -124,7 +127,9 @@ CaptureReadOptions read_options(const CaptureArgs& a) {
   return o;
 }
 
-void add_common(CLI::App* cmd, CaptureArgs& a) {
+// ensemble: the command draws the ensemble (validate); throw runs the nominal throw alone, so it
+// has no --members or --seed to ignore.
+void add_common(CLI::App* cmd, CaptureArgs& a, bool ensemble) {
   add_read(cmd, a);
   cmd->add_option("--mount", a.mounts, "Mounting setting key=value (stone_normal, stone_forward, stone_offset_m, lever_arm_m, lever_arm_rel_uncertainty), repeatable");
   cmd->add_option("--clock", a.clock, "automatic (default), regular_reports (the remote's clock fitted through the stamps) or stamps_as_given")
@@ -136,7 +141,12 @@ void add_common(CLI::App* cmd, CaptureArgs& a) {
   cmd->add_option("--max-rate-deg-s", a.max_rate_deg_s,
                   "Largest angular rate a span with the MotionPlus at the end of its range may hide, deg/s")
       ->capture_default_str();
-  cmd->add_option("--members", a.members, "Ensemble size for the intervals and the bounce distribution (default 64)");
+  if (!ensemble) {
+    a.throw_members = cmd->add_option("--members", a.members, "Not used: capture throw draws no ensemble (capture validate does)");
+    a.throw_seed = cmd->add_option("--seed", a.seed, "Not used: capture throw draws no ensemble (capture validate does)");
+    return;
+  }
+  cmd->add_option("--members", a.members, "Ensemble size for the intervals and the bounce distribution (default 64; 0: none, no intervals)");
   cmd->add_option("--seed", a.seed, "Seed of the ensemble's random draws");
 }
 
@@ -177,8 +187,11 @@ void add_details(nlohmann::json& j, const CaptureAnalysis& an) {
                  {"clock_residual_max_ms", number(1e3 * t.clock_residual_max_s)},
                  {"longest_gap_ms", number(1e3 * t.longest_gap_s)}};
   const bool ok = an.can_throw();
+  const bool drawn = !an.ensemble.empty();  // bounds only where an ensemble drew them (null otherwise)
   auto put = [&](const char* key, const Interval& v) {
-    j["measured"][key] = ok ? nlohmann::json{number(v.nominal), number(v.low), number(v.high)} : nlohmann::json(nullptr);
+    j["measured"][key] = ok ? nlohmann::json{number(v.nominal), drawn ? number(v.low) : nlohmann::json(nullptr),
+                                             drawn ? number(v.high) : nlohmann::json(nullptr)}
+                            : nlohmann::json(nullptr);
   };
   j["measured"] = nlohmann::json::object();
   put("speed_m_s", an.measured_speed_m_s);
@@ -230,8 +243,11 @@ void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
   for (const auto& r : an.reasons) std::printf("  - %s\n", printable_text(r).c_str());
   for (const auto& n : an.notes) std::printf("  note: %s\n", printable_text(n).c_str());
   if (!an.can_throw()) return;
-  const auto show = [](const char* name, const Interval& v, const char* unit) {
-    std::printf("    %-24s %8.3f  [%.3f, %.3f] %s\n", name, v.nominal, v.low, v.high, unit);
+  // Without an ensemble (capture throw; validate --members 0) there is no interval to print.
+  const bool intervals = !an.ensemble.empty();
+  const auto show = [intervals](const char* name, const Interval& v, const char* unit) {
+    if (intervals) std::printf("    %-24s %8.3f  [%.3f, %.3f] %s\n", name, v.nominal, v.low, v.high, unit);
+    else std::printf("    %-24s %8.3f  %s\n", name, v.nominal, unit);
   };
   const TimingStats& t = an.timing.stats;
   std::printf("  timing: rate %.1f Hz (mean %.1f Hz), jitter %.2f ms, intervals %.1f-%.1f ms, %d gaps (about %ld reports "
@@ -239,7 +255,8 @@ void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
               t.rate_hz, t.mean_rate_hz, 1e3 * t.jitter_s, 1e3 * t.min_interval_s, 1e3 * t.max_interval_s, t.gaps,
               t.dropped_reports, t.repeated, to_string(t.clock));
   std::printf("  saturated fraction %.3f\n", an.saturated_fraction);
-  std::printf("  as measured (the stone at the remote's mounting, in the room):\n");
+  std::printf("  as measured (the stone at the remote's mounting, in the room)%s:\n",
+              intervals ? "" : "; no intervals (no ensemble: capture validate --members N gives them)");
   show("speed", an.measured_speed_m_s,
        an.clipped ? "m/s (accelerometer clipped: the lever-arm value; the interval spans the accelerometer's bounds)" : "m/s");
   show("  accelerometer", an.accel_speed_m_s, "m/s");
@@ -352,7 +369,12 @@ void validate(const CaptureArgs& a) {
   if (!a.no_simulate) c = load_stone_case(a.case_file, a.sets);
   const std::optional<StoneCase> scene = load_scene_case(a);
   if (scene && a.no_simulate) throw InputError("capture validate: --scene and --no-simulate cannot be given together");
-  if (a.members < 0) throw_input_error("--members", 0, "", "must be >= 0 (got " + std::to_string(a.members) + ")");
+  if (a.members < 0 || a.members == 1)
+    throw_input_error("--members", 0, "",
+                      "must be 0 (no ensemble, no intervals) or at least 2 (got " + std::to_string(a.members) + ")");
+  if (a.no_simulate && (!a.sets.empty() || a.case_file != CaptureArgs{}.case_file))
+    throw InputError("capture validate: --case and --set are not used with --no-simulate (no solver runs)");
+  if (a.scene.empty() && !a.scene_sets.empty()) throw InputError("capture validate: --scene-set needs --scene");
   refuse_output_over_inputs(a.out, OutputKind::folder, inputs_of(a, c ? &*c : nullptr, scene ? &*scene : nullptr));
   if (c) {
     // Limits before any work (cases/README.md, Limits): every capture's ensemble is a throw per member.
@@ -466,6 +488,11 @@ void validate(const CaptureArgs& a) {
 }
 
 void throw_capture(const CaptureArgs& a) {
+  if (a.scene.empty() && !a.scene_sets.empty()) throw InputError("capture throw: --scene-set needs --scene");
+  for (const CLI::Option* o : {a.throw_members, a.throw_seed})
+    if (o && o->count() > 0)
+      throw InputError("capture throw: " + o->get_name() +
+                       " is not used: the throw is the nominal one, with no ensemble (capture validate draws it)");
   const std::optional<StoneCase> scene = load_scene_case(a);
   if (scene && !a.out.empty()) throw InputError("capture throw: --out is not written with --scene (use capture validate --scene --out DIR for the report)");
   // The throw is the capture's: a --set of the case's [throw] would be ignored without a word.
@@ -683,7 +710,7 @@ void add_capture(CLI::App& app) {
   v->add_flag("--progress", a->progress, "Show the ensemble's progress on stderr at once (otherwise after 2 s)");
   v->add_option("--scene", a->scene, "Also throw each usable capture into this scene case against both references (its report section shows them)");
   v->add_option("--scene-set", a->scene_sets, "Override a key of the scene case: section.key=value (repeatable)");
-  add_common(v, *a);
+  add_common(v, *a, true);
   add_case(v, *a);
   add_limit_options(v, a->limits);
   v->callback([a] { validate(*a); });
@@ -696,7 +723,7 @@ void add_capture(CLI::App& app) {
       ->check([](const std::string& f) { return f.empty() ? std::string("needs a file name (got an empty one)") : std::string(); });
   t->add_option("--scene", a->scene, "Throw it into this scene case ([water], [scene]) against the CVODE and the forced spectral references");
   t->add_option("--scene-set", a->scene_sets, "Override a key of the scene case: section.key=value (repeatable)");
-  add_common(t, *a);
+  add_common(t, *a, false);
   add_case(t, *a);
   add_limit_options(t, a->limits);
   t->callback([a] { throw_capture(*a); });

@@ -157,6 +157,35 @@ BOOST_AUTO_TEST_CASE(capture_throw_refuses_a_throw_override_and_a_throw_past_the
   BOOST_TEST(std::count(heavy.out.begin(), heavy.out.end(), '\n') == 1, heavy.out);
 }
 
+BOOST_AUTO_TEST_CASE(a_throw_without_an_ensemble_claims_no_interval) {
+  // Oracle: capture throw runs the nominal throw with no ensemble, so no bound was drawn: its
+  // text has no "[a, b]" and its JSON bounds are null, where it printed 5.186 [5.186, 5.186] and
+  // ignored --members 8. validate with 16 members draws real bounds (low < high for the speed of
+  // a capture with noise). Options that would be ignored are refused (exit 2, one line).
+  const std::string file = "cases/captures/gentle_sidearm.log";
+  const Run text = run("capture throw " + file + " --solver realtime");
+  BOOST_TEST(text.status == 0);
+  BOOST_TEST(text.out.find("no intervals") != std::string::npos, text.out);
+  BOOST_TEST(text.out.find("m/s") != std::string::npos, text.out);
+  BOOST_TEST(text.out.find(" [") == std::string::npos, text.out);
+  const Run json = run("capture throw " + file + " --solver realtime --json");
+  const auto j = nlohmann::json::parse(json.out);
+  BOOST_TEST(j["release_speed_m_s"].is_number());
+  BOOST_TEST(j["release_speed_m_s_low"].is_null(), j.dump());
+  BOOST_TEST(j["measured"]["speed_m_s"][1].is_null(), j.dump());
+  const auto v = validate(file);
+  BOOST_TEST(v["release_speed_m_s_low"].get<double>() < v["release_speed_m_s_high"].get<double>());
+  for (const std::string& bad : {"capture throw " + file + " --members 8", "capture throw " + file + " --seed 3",
+                                 "capture throw " + file + " --scene-set water.nx=10",
+                                 "capture validate " + file + " --members 1",
+                                 "capture validate " + file + " --no-simulate --case /nonexistent.toml",
+                                 "capture validate " + file + " --no-simulate --set stone.radius_m=-1"}) {
+    const auto r = stoneskip::test::run_stoneskip(bad);
+    BOOST_TEST(r.status == 2, bad << ": " << r.out);
+    BOOST_TEST(std::count(r.out.begin(), r.out.end(), '\n') == 1, bad << ": " << r.out);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(the_threshold_capture_straddles_the_physical_conventions_first_bounce) {
   // Oracle: the threshold of the law this capture was made for, newtonian with uniform pressure in
   // the physical convention (0 bounces at the measured 13.7 m/s and 31° attack, 1 or more at
