@@ -7,10 +7,13 @@
 
 #include "reports/common/html_page.hpp"
 #include "reports/common/markdown.hpp"
+#include "reports/common/section.hpp"
 #include "reports/common/summary.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/hdf5_file.hpp"
+#include "tools/io/foreign_output.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/printable_text.hpp"
 
 namespace stoneskip {
 
@@ -86,13 +89,21 @@ std::string verdict_line(const std::vector<std::string>& findings) {
 
 FrontPageInput read_front_page_input(const fs::path& out, const std::function<RenderedReport(const StoredReport&)>& render) {
   FrontPageInput in;
+  std::error_code ec;
+  auto linked = [&](const fs::path& p) { return fs::is_symlink(fs::symlink_status(p, ec)); };
   for (const fs::path& dir : sorted_entries(out)) {
+    if (linked(dir)) {
+      if (is_file(dir / "data.h5")) in.skipped.push_back({relative_name(dir, out), "a link: not followed"});
+      continue;
+    }
     if (!is_file(dir / "data.h5")) continue;
     StoredReport stored;
     try {
       stored = load_stored_report(dir / "data.h5");
-    } catch (const InputError&) {
-      continue;  // a sweep page or another file: not a report
+    } catch (const InputError& e) {
+      // A sweep page or a damaged file: not shown, and said.
+      in.skipped.push_back({relative_name(dir / "data.h5", out), printable_text(e.what())});
+      continue;
     }
     const RenderedReport rendered = render(stored);
     FrontReport r;
@@ -119,7 +130,11 @@ FrontPageInput read_front_page_input(const fs::path& out, const std::function<Re
   for (const auto& r : in.reports)
     if (r.kind == "scene" && scene_picture.empty()) scene_picture = r.picture;
   for (const fs::path& f : sorted_entries(out / "movies")) {
-    if (f.extension() != ".mp4" || !is_file(f)) continue;
+    if (f.extension() != ".mp4") continue;
+    if (linked(f) || !is_file(f) || !stoneskip_wrote(f)) {
+      in.skipped.push_back({relative_name(f, out), linked(f) ? "a link: not followed" : "not a movie stoneskip made (no mark)"});
+      continue;
+    }
     FrontMovie m;
     m.file = relative_name(f, out);
     m.size_mb = static_cast<double>(fs::file_size(f)) / 1e6;
@@ -131,8 +146,26 @@ FrontPageInput read_front_page_input(const fs::path& out, const std::function<Re
     if (m.picture.empty()) m.picture = scene_picture;
     in.movies.push_back(m);
   }
-  for (const fs::path& f : sorted_entries(out / "throws"))
-    if (f.extension() == ".h5" && is_file(f)) in.throws.push_back(read_throw(f, out));
+  for (const fs::path& f : sorted_entries(out / "throws")) {
+    if (f.extension() != ".h5") continue;
+    if (linked(f)) {
+      in.skipped.push_back({relative_name(f, out), "a link: not followed"});
+      continue;
+    }
+    if (!is_file(f)) continue;
+    FrontThrow t;
+    try {
+      t = read_throw(f, out);
+    } catch (const InputError& e) {
+      in.skipped.push_back({relative_name(f, out), printable_text(e.what())});
+      continue;
+    }
+    if (t.runs.empty()) {  // no realtime or reference group: another file (a report's data.h5, say)
+      in.skipped.push_back({relative_name(f, out), "holds no realtime or reference run: not a throw's file"});
+      continue;
+    }
+    in.throws.push_back(std::move(t));
+  }
   return in;
 }
 
@@ -195,6 +228,12 @@ std::string front_page_markdown(const FrontPageInput& in) {
       md << "* " << f << "\n";
     }
     md << "\n[The whole report](" << r.folder << "/index.md).\n\n";
+  }
+  if (!in.skipped.empty()) {
+    md << "## Not shown\n\n"
+       << "Found in this folder and left off this page (the main job writes none of them):\n\n";
+    for (const auto& s : in.skipped) md << "* " << code(s.path) << ": " << s.reason << "\n";
+    md << "\n";
   }
   md << "## Provenance\n\n";
   std::set<std::string> versions;

@@ -38,14 +38,24 @@ struct FrontThrow {
   std::vector<FrontThrowRun> runs;     // in stored order: realtime, reference
 };
 
+// Something in OUT that looked like a report, a movie or a throw and is not shown, and why.
+struct FrontSkipped {
+  std::string path;    // relative to OUT
+  std::string reason;  // one line
+};
+
 struct FrontPageInput {
   std::vector<FrontReport> reports;
   std::vector<FrontMovie> movies;
   std::vector<FrontThrow> throws;
+  std::vector<FrontSkipped> skipped;  // listed on the page under "Not shown", never dropped silently
 };
 
 // Reads OUT: every sub-folder holding a report's data.h5 (rendered in memory by `render`, which
 // draws nothing), OUT/movies/*.mp4 and OUT/throws/*.h5. InputError naming OUT when it holds no report.
+// A linked sub-folder or file is not followed, a data.h5 that cannot be read as a report, a movie
+// stoneskip did not make (no mark, foreign_output.hpp) and a throw file that is not a throw's are
+// not shown: each goes into `skipped` with its reason.
 FrontPageInput read_front_page_input(const std::filesystem::path& out,
                                      const std::function<RenderedReport(const StoredReport&)>& render);
 

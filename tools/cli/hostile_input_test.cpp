@@ -8,6 +8,7 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "tools/cli/hdf5_edit.hpp"
 #include "tools/cli/test_support.hpp"
@@ -554,6 +556,32 @@ BOOST_AUTO_TEST_CASE(out_replaces_only_a_file_stoneskip_wrote) {
     BOOST_TEST(run_apart({"capture", "convert", "cases/captures/gentle_sidearm.log", "--out", csv.string()}).status == 0,
                "run " << run);
   }
+}
+
+BOOST_AUTO_TEST_CASE(output_that_cannot_reach_stdout_is_an_error) {
+  // Oracle: the kernel's /dev/full refuses every write (ENOSPC), as a full disk behind a
+  // redirection does. The command's result never arrives, so the exit status must not be 0 (it
+  // was, for mesh --json, run --json, capture validate --json and the like) and stderr says why.
+  if (::access("/dev/full", W_OK) != 0) return;  // no such device here: nothing to try
+  const auto argv = stoneskip::test::stoneskip_argv({"mesh", "--json", "cases/paper_8ms_spin.toml"});
+  const pid_t pid = ::fork();
+  BOOST_REQUIRE(pid >= 0);
+  if (pid == 0) {
+    const int full = ::open("/dev/full", O_WRONLY);
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (full < 0 || null < 0 || ::dup2(full, 1) < 0 || ::dup2(null, 2) < 0) ::_exit(99);
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    ::execv(args[0], args.data());
+    ::_exit(98);
+  }
+  int status = 0;
+  BOOST_REQUIRE(::waitpid(pid, &status, 0) == pid);
+  BOOST_REQUIRE(WIFEXITED(status));
+  BOOST_TEST(WEXITSTATUS(status) == 2);
+  // The same command to a pipe succeeds: the failure is the device's, not the command's.
+  BOOST_TEST(stoneskip::test::run_stoneskip("mesh --json cases/paper_8ms_spin.toml").status == 0);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -9,9 +9,12 @@
 // naming the file and the line or key; an output place that cannot be written is bad input too),
 // 3 an internal error, 128 + N stopped by signal N (SIGINT 130, SIGTERM 143: temporaries removed,
 // tools/io/signal_cleanup.hpp).
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <filesystem>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -117,6 +120,15 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::fprintf(stderr, "stoneskip: internal error: %s\n", one_line(e.what()).c_str());
     return 3;
+  }
+  // What went to stdout must have arrived: a full disk or a closed pipe behind a redirection
+  // would otherwise leave an empty or cut result file beside exit 0.
+  std::cout.flush();
+  errno = 0;
+  if (!std::cout.good() || std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    std::fprintf(stderr, "stoneskip: could not write the output to standard output%s%s\n", errno ? ": " : "",
+                 errno ? std::strerror(errno) : "");
+    return 2;
   }
   return stoneskip::cli::exit_code();
 }

@@ -11,6 +11,7 @@
 #include "tools/cli/command_registry.hpp"
 #include "tools/cli/report_render.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/printable_text.hpp"
 
 namespace stoneskip::cli {
 namespace {
@@ -18,8 +19,15 @@ namespace {
 void front(const std::string& dir) {
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec)) throw_input_error(dir, 0, "", "not a folder (the main job's output folder was expected)");
+  // As report render: the pages are written into DIR itself, never through a link to elsewhere.
+  std::string bare = dir;
+  while (bare.size() > 1 && bare.back() == '/') bare.pop_back();
+  if (std::filesystem::is_symlink(std::filesystem::symlink_status(bare, ec)))
+    throw_input_error(dir, 0, "", "is a link: stoneskip does not write through links (give the folder itself)");
   const FrontPageInput in = read_front_page_input(dir, render_stored_report);
   write_front_page(dir, front_page_markdown(in));
+  for (const FrontSkipped& s : in.skipped)
+    std::fprintf(stderr, "stoneskip: report front: not shown: %s: %s\n", printable_text(s.path).c_str(), printable_text(s.reason).c_str());
   std::printf("front page: %s/index.html (and index.md): %zu reports, %zu movies, %zu throws\n", dir.c_str(), in.reports.size(),
               in.movies.size(), in.throws.size());
 }
