@@ -43,6 +43,8 @@
 #include "verification/stones/frame_budget_ladder.hpp"
 #include "verification/stones/parallel_runs.hpp"
 #include "verification/stones/throw_problem.hpp"
+#include "verification/stones/work_precision_grid_stats.hpp"
+#include "stoneskip_version.hpp"
 
 namespace stoneskip::cli {
 namespace {
@@ -271,6 +273,7 @@ void bench(const BenchArgs& a) {
                      {"cvode_matched_throws", r.matched},
                      {"cvode_compared_throws", r.compared},
                      {"cvode_match_fraction", r.match_fraction()},
+                     {"cvode_match_fraction_low", wilson_interval(static_cast<int>(r.matched), static_cast<int>(r.compared)).low},
                      {"forced_step_fraction", r.forced_fraction()},
                      {"max_error_ratio", r.max_error_ratio},
                      {"max_energy_gain_J", r.max_energy_gain_J},
@@ -307,17 +310,43 @@ void bench(const BenchArgs& a) {
   j["clocks"] = "frames/s and throws/s: wall (best of the repeats; _median: median), _cpu: the scene thread's CPU; "
                 "stencil: wall (thread CPU with --cpu-clock: stencil_clock), best sample against the copy kernel's best sample";
   j["quick"] = a.quick;
+  // The proportion's 95 % Wilson interval (verification/stones/work_precision_grid_stats.hpp): the
+  // verdict on the 0.98 target reads its lower end, not the point estimate.
+  const ProportionInterval match = wilson_interval(static_cast<int>(cvode.matched), static_cast<int>(cvode.agreeing));
+  j["sweep_cvode_match_fraction_low"] = match.low;
+  j["sweep_cvode_match_fraction_high"] = match.high;
+  j["sweep_cvode_match_verdict_on"] = "the 95 % Wilson interval's lower end";
+  j["scene_case"] = scene_case.file;
+  j["sweep_case"] = sweep_case.file;
+  j["code_version"] = std::string(kGitDescribe);
+  if (o.sweep_only) {
+    // Not measured: null, never a zero that reads as a measurement.
+    for (auto it = j.begin(); it != j.end(); ++it)
+      if (it.key().rfind("scene_", 0) == 0 || it.key().rfind("stencil", 0) == 0 || it.key().rfind("bandwidth_", 0) == 0 ||
+          it.key().rfind("copy_bound_", 0) == 0 || it.key().rfind("per_cell_", 0) == 0 ||
+          it.key().rfind("temporal_blocking_", 0) == 0 || it.key().rfind("plain_loop_", 0) == 0)
+        if (it.key() != "scene_case") it.value() = nullptr;
+  }
   if (a.json) {
     std::cout << json_text(j) << std::endl;
     return;
   }
+  // A figure without a target says "—" and no verdict.
   auto line = [](const std::string& what, const std::string& value, const std::string& target, bool met) {
-    std::printf("%-58s %-26s %s\n", what.c_str(), value.c_str(), (target + (met ? "  met" : "  MISSED")).c_str());
+    std::printf("%-58s %-26s %s\n", what.c_str(), value.c_str(),
+                target.empty() ? "—" : (target + (met ? "  met" : "  MISSED")).c_str());
   };
   std::printf("stoneskip bench%s — %s, %d cores, stencil path %s; load average %s before, %s after; wall clock unless marked CPU%s\n",
-              a.quick ? " (quick: a smoke run)" : "", h.cpu_model.c_str(), h.cores, h.stencil_large.kernel_isa.c_str(),
+              a.quick ? " (quick: a smoke run)" : "", h.cpu_model.c_str(), h.cores, h.stencil_large.kernel_isa.empty() ? "– (not measured)" : h.stencil_large.kernel_isa.c_str(),
               g(h.load_before).c_str(), g(h.load_after).c_str(), a.cpu_clock ? " (stencil: thread CPU)" : "");
+  // (The stencil path is empty with --sweep-only: no stencil ran.)
+  std::printf("scene case %s; sweep case %s; code %s\n", scene_case.file.c_str(), sweep_case.file.c_str(), kGitDescribe);
+  if (h.sweep.workers > h.cores)
+    std::printf("note: %d sweep workers on %d usable core%s (the affinity mask): throws/s is not the %d-core figure\n",
+                h.sweep.workers, h.cores, h.cores == 1 ? "" : "s", h.sweep.workers);
   std::printf("%-58s %-26s %s\n", "", "measured", "target");
+  if (o.sweep_only) std::printf("scene and stencil: not measured (--sweep-only)\n");
+  if (!o.sweep_only) {
   line("seed's scene (" + std::to_string(h.scene_one.frames) + " frames), 1 thread: frames/s", g(h.scene_one.fps_best_wall(), 4) +
            " (median " + g(h.scene_one.fps_median_wall(), 4) + ", CPU " + g(h.scene_one.fps_cpu(), 4) + ")",
        ">= " + g(kSceneFpsTarget), h.scene_one.fps_best_wall() >= kSceneFpsTarget);
@@ -341,14 +370,15 @@ void bench(const BenchArgs& a) {
   line("stencil at " + std::to_string(h.stencil_small.options.n) + "² over a plain loop of it (no SIMD, " +
            g(h.stencil_small.plain_cells_per_s) + " cells/s)", g(over_plain), ">= " + g(kOverPlainLoopTarget),
        over_plain >= kOverPlainLoopTarget);
+  }
   line("bounce-count sweep (" + std::to_string(h.sweep.throws) + " throws, " + std::string(to_string(o.sweep.base.realtime.scheme)) +
            " rtol " + g(o.sweep.base.realtime.rtol) + ", " + std::to_string(h.sweep.workers) + " workers): throws/s",
        g(h.sweep.throws_per_s(), 4) + " (CPU " + g(h.sweep.cpu_s, 3) + " s)", ">= " + g(kThrowsPerSecondTarget),
        h.sweep.throws_per_s() >= kThrowsPerSecondTarget);
   line("sweep: bounce counts equal to CVODE's (where rtol " + g(kCvodeTolerances[0]) + " and " + g(kCvodeTolerances[1]) + " agree: " +
            std::to_string(cvode.agreeing) + " throws)",
-       g(cvode.fraction(), 4) + " (" + std::to_string(cvode.matched) + ")", ">= " + g(kMatchFractionTarget),
-       cvode.fraction() >= kMatchFractionTarget);
+       g(cvode.fraction(), 4) + " [" + g(match.low, 3) + ", " + g(match.high, 3) + "] (" + std::to_string(cvode.matched) + ")",
+       ">= " + g(kMatchFractionTarget) + " (95 % interval)", match.low >= kMatchFractionTarget);
   std::printf("  of those, %ld have a flight shorter than %s ms in CVODE's solution (a rim vertex lifting clear): "
               "%ld of them match; of the other %ld, %ld match (%s)\n",
               cvode.with_short_flight, g(1e3 * kShortFlight_s).c_str(), cvode.matched_with_short_flight,
@@ -366,19 +396,22 @@ void bench(const BenchArgs& a) {
                 g(r.forced_fraction()).c_str(), g(r.max_error_ratio).c_str(), g(1e6 * r.cpu_per_frame_bound_s()).c_str(),
                 g(1e6 * r.mean_cpu_per_frame_s()).c_str(),
                 (g(r.max_energy_gain_J) + " (" + std::to_string(r.throws_gaining_energy) + ")").c_str());
-  std::printf("  the smallest budget of these that keeps CVODE's count on >= %s of the throws (and every larger one does): %s\n",
+  std::printf("  the smallest budget of these whose match, 95 %% Wilson interval, lies at or above %s (and every larger one's): %s\n",
               g(kMatchFractionTarget).c_str(), budget_for_target > 0 ? std::to_string(budget_for_target).c_str() : "none");
   std::printf("sweep profile: %s ms CPU per throw, %s s simulated per throw, %s steps per throw (%s with the contact step), %s µs CPU per step\n",
               g(1e3 * h.sweep.cpu_s / std::max(1L, h.sweep.throws)).c_str(), g(h.sweep.simulated_s / std::max(1L, h.sweep.throws)).c_str(),
               g(double(h.sweep.steps) / std::max(1L, h.sweep.throws)).c_str(),
               g(double(h.sweep.contact_steps) / std::max(1L, h.sweep.throws)).c_str(),
               g(1e6 * h.sweep.cpu_s / std::max(1L, h.sweep.steps)).c_str());
+  if (!o.sweep_only)
   std::printf("scene parts (1 thread, best run, wall): stone %s ms, draught %s ms, water %s ms; slowest frame %s ms\n",
               g(1e3 * h.scene_one.best.stone_wall_s).c_str(), g(1e3 * h.scene_one.best.draught_wall_s).c_str(),
               g(1e3 * h.scene_one.best.water_wall_s).c_str(), g(1e3 * h.scene_one.best.slowest_frame_wall_s).c_str());
   if (!h.by_isa.empty()) {
     std::printf("\nstencil on every path (cells/s; fraction of the copy bound at %d²):\n", h.stencil_large.options.n);
-    std::printf("%-8s %14s %14s %10s %12s %18s\n", "path", "500²", "2048²", "fraction", "500²/2048²", "temporal fraction");
+    const std::string small = std::to_string(h.stencil_small.options.n) + "²", large = std::to_string(h.stencil_large.options.n) + "²";
+    std::printf("%-8s %14s %14s %10s %12s %18s\n", "path", small.c_str(), large.c_str(), "fraction", (small + "/" + large).c_str(),
+                "temporal fraction");
     for (const IsaStencilSpeed& s : h.by_isa)
       std::printf("%-8s %14s %14s %10s %12s %18s\n", s.isa.c_str(), g(s.small.cells_per_s).c_str(), g(s.large.cells_per_s).c_str(),
                   g(s.large.fraction).c_str(), g(s.large.cells_per_s > 0 ? s.small.cells_per_s / s.large.cells_per_s : 0).c_str(),

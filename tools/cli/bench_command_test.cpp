@@ -188,7 +188,7 @@ BOOST_AUTO_TEST_CASE(bench_budget_ladder_counts_are_stoneskip_run_s_and_its_matc
   BOOST_TEST(nlohmann::json::parse(a.out)["bounces"].get<int>() == ladder[1]["bounces"][3].get<int>());
   long smallest = -1;
   for (std::size_t k = ladder.size(); k-- > 0;) {
-    if (!(ladder[k]["cvode_match_fraction"].is_number() && ladder[k]["cvode_match_fraction"].get<double>() >= 0.98)) break;
+    if (!(ladder[k]["cvode_match_fraction_low"].get<double>() >= 0.98)) break;
     smallest = ladder[k]["rhs_per_frame"].get<long>();
   }
   const auto& key = j["budget_rhs_per_frame_for_match_target"];
@@ -226,6 +226,31 @@ BOOST_AUTO_TEST_CASE(bench_text_names_the_grid_it_measured) {
   BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
   BOOST_TEST(r.out.find("1024²") != std::string::npos, r.out);
   BOOST_TEST(r.out.find("2048²") == std::string::npos, r.out);
+}
+
+BOOST_AUTO_TEST_CASE(bench_sweep_only_claims_nothing_it_did_not_measure_and_judges_on_the_interval) {
+  // Oracle: --sweep-only runs no scene and no stencil, so their keys are null (they were zeros, and
+  // the text said "met" and "MISSED" of them); the sweep's match fraction carries its 95 % Wilson
+  // interval, recomputed here from its counts, and the verdict reads its lower end: 6 of 6 (lower
+  // end 6/(6 + z²) = 0.61) does not show 0.98.
+  const auto r = stoneskip::test::run_stoneskip("bench --quick --sweep-only --json", false);
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"scene_fps_1core", "scene_fps_2cores", "scene_frames", "stencil_cells_per_s_500", "stencil_isa",
+                          "bandwidth_fraction_2048", "per_cell_ratio_500_over_2048", "temporal_blocking_fraction_2048",
+                          "plain_loop_cells_per_s_500"})
+    BOOST_TEST(j[key].is_null(), key << " = " << j[key].dump());
+  BOOST_TEST(j["sweep_throws_per_s"].get<double>() > 0);
+  const double n = j["sweep_cvode_agreeing_throws"].get<double>(), k = j["sweep_cvode_matched_throws"].get<double>();
+  const double z = 1.959963984540054, p = k / n;
+  const double low = (p + z * z / (2 * n) - z * std::sqrt(p * (1 - p) / n + z * z / (4 * n * n))) / (1 + z * z / n);
+  BOOST_TEST(j["sweep_cvode_match_fraction_low"].get<double>() == low, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(j["sweep_cvode_match_fraction_low"].get<double>() < 0.98);
+  const auto t = stoneskip::test::run_stoneskip("bench --quick --sweep-only", false);
+  BOOST_REQUIRE_MESSAGE(t.status == 0, t.out);
+  BOOST_TEST(t.out.find("not measured (--sweep-only)") != std::string::npos, t.out);
+  BOOST_TEST(t.out.find("seed's scene") == std::string::npos, t.out);
+  BOOST_TEST(t.out.find("(95 % interval)  MISSED") != std::string::npos, t.out);
 }
 
 BOOST_AUTO_TEST_CASE(bench_refuses_a_bad_repeat_count) {

@@ -35,6 +35,7 @@
 #include "verification/sweep/row_batch.hpp"
 #include "verification/sweep/sweep_run.hpp"
 #include "solvers/realtime/clocks.hpp"
+#include "tools/io/usable_cores.hpp"
 
 namespace stoneskip::cli {
 namespace {
@@ -164,7 +165,7 @@ void run(const SweepArgs& a) {
     refuse_foreign_output(out_file(a));
     // Limits decided before any throw (cases/README.md, Limits): the table, the heaviest throw, all.
     const double width = static_cast<double>(sweep_record(sweep->design, sweep->solvers).width());
-    const double threads = a.threads.value_or(0) > 0 ? *a.threads : std::max(1u, std::thread::hardware_concurrency());
+    const double threads = a.threads.value_or(0) > 0 ? *a.threads : usable_cores();
     enforce_limits(estimate_sweep(cases->heaviest_throw(), static_cast<double>(sweep->design.size()),
                                   (width + 1) * sizeof(double), threads),
                    a.limits, sweep->file);

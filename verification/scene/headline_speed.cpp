@@ -10,6 +10,7 @@
 #include "model/water/leapfrog_kernel.hpp"
 #include "solvers/realtime/clocks.hpp"
 #include "verification/stones/parallel_runs.hpp"
+#include "tools/io/usable_cores.hpp"
 
 namespace stoneskip {
 
@@ -148,7 +149,7 @@ HeadlineSpeed measure_headline_speed(const HeadlineSpeedOptions& o, const Progre
   std::string why;
   if (!o.is_valid(&why)) throw std::invalid_argument("headline speed: " + why);
   HeadlineSpeed h;
-  h.cores = static_cast<int>(std::thread::hardware_concurrency());
+  h.cores = usable_cores();  // the affinity mask's: a run pinned to one core says so
   h.load_before = load_average();
   h.cpu_model = cpu_model();
   for (SimdPath p : supported_simd_paths()) h.supported_isas.push_back(to_string(p));

@@ -49,8 +49,8 @@ std::vector<FrameBudgetRung> run_frame_budget_ladder(const std::vector<ThrowProb
 // compared; a rung's −1, a failed run: compared, not matched).
 void count_budget_matches(FrameBudgetRung& rung, const std::vector<int>& reference_bounces);
 
-// The smallest rung at which, and at every larger one, the match fraction is at least `target`;
-// −1 when there is none.
+// The smallest rung at which, and at every larger one, the match fraction's 95 % Wilson interval
+// lies at or above `target` (its lower end; work_precision_grid_stats.hpp); −1 when there is none.
 long smallest_budget_meeting(const std::vector<FrameBudgetRung>& rungs, double target);
 
 }  // namespace stoneskip

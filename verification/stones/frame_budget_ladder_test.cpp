@@ -36,15 +36,24 @@ BOOST_AUTO_TEST_CASE(matches_skip_throws_without_a_reference_and_count_a_failure
 }
 
 BOOST_AUTO_TEST_CASE(the_smallest_budget_meets_the_target_at_every_larger_one) {
-  // Oracle: by hand. Fractions 1.0 (16: by chance), 0.5 (64), 1.0 (256), 1.0 (1024) against 0.98:
-  // 256, not 16. A largest rung that misses: none (−1).
-  const std::vector<int> ref{1, 2};
-  std::vector<FrameBudgetRung> rs{rung(16, {1, 2}), rung(64, {1, 0}), rung(256, {1, 2}), rung(1024, {1, 2})};
+  // Oracle: the Wilson lower end by hand, n / (n + z²) for n of n (z = 1.96): 200 of 200 gives
+  // 0.9812 ≥ 0.98. Over 200 throws: all match at 16 (by chance), half at 64, all at 256 and 1024:
+  // 256, not 16. A largest rung that misses: none (−1). 2 of 2 (lower end 0.34) shows nothing.
+  std::vector<int> ref(200), half(200);
+  for (int i = 0; i < 200; ++i) {
+    ref[i] = 1 + i % 3;
+    half[i] = i % 2 ? ref[i] : ref[i] + 1;
+  }
+  std::vector<FrameBudgetRung> rs{rung(16, ref), rung(64, half), rung(256, ref), rung(1024, ref)};
   for (auto& r : rs) count_budget_matches(r, ref);
   BOOST_TEST(smallest_budget_meeting(rs, 0.98) == 256);
-  rs.back() = rung(1024, {0, 2});
+  rs.back() = rung(1024, half);
   count_budget_matches(rs.back(), ref);
   BOOST_TEST(smallest_budget_meeting(rs, 0.98) == -1);
+  std::vector<FrameBudgetRung> two{rung(16, {1, 2})};
+  count_budget_matches(two.back(), {1, 2});
+  BOOST_TEST(two.back().match_fraction() == 1.0);
+  BOOST_TEST(smallest_budget_meeting(two, 0.98) == -1);
 }
 
 BOOST_AUTO_TEST_CASE(a_ladder_spends_at_most_its_budget_per_frame) {

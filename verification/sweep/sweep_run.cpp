@@ -11,6 +11,7 @@
 #include "stoneskip_version.hpp"
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/usable_cores.hpp"
 
 namespace stoneskip {
 
@@ -178,7 +179,7 @@ SweepSummary SweepPlan::run(const ThrowEvaluator& evaluate, MpiSession& mpi) {
   so.max_chunk = options_.max_chunk;
   so.master_threads = options_.master_threads >= 0 ? options_.master_threads
                       : mpi.size() > 1              ? 1
-                                                    : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+                                                    : usable_cores();
   summary.schedule = run_master(pending_, data_.throws.columns.size(), evaluate, sink, so, mpi);
   progress.reset();
   summary.computed = summary.schedule.throws;
