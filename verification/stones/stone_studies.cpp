@@ -128,6 +128,19 @@ bool StoneStudiesOptions::valid(std::string* why) const {
           return fail(study + " throw '" + n + "': its case is in the paper convention, which has only its printed law");
       }
     }
+  // The same throw twice (a plain name whose case already has the law an "@law" entry names)
+  // would count one throw twice in a study's totals.
+  for (const auto* list : {&work_precision_throws, &restarts.throws})
+    for (std::size_t i = 0; i < list->size(); ++i)
+      for (std::size_t k = 0; k < i; ++k) {
+        const ThrowProblem a = work_throw(*this, (*list)[k]), b = work_throw(*this, (*list)[i]);
+        const std::string na = (*list)[k].substr(0, (*list)[k].find('@')), nb = (*list)[i].substr(0, (*list)[i].find('@'));
+        if (na == nb && a.environment.convention == b.environment.convention && a.environment.water_law == b.environment.water_law &&
+            a.environment.water_coefficient == b.environment.water_coefficient &&
+            a.environment.pressure_distribution == b.environment.pressure_distribution)
+          return fail(std::string(list == &restarts.throws ? "restarts" : "work_precision") + " throws '" + (*list)[k] +
+                      "' and '" + (*list)[i] + "' are the same throw under the same law");
+      }
   if (restarts.rtol.empty() || restarts.methods.empty()) return fail("the restart study needs methods and tolerances");
   if (!work_precision_grid_base.file.empty()) {
     if (!work_precision_grid.valid(why)) return false;
