@@ -164,6 +164,15 @@ SectionOutput sweeps_section(const Record& c, const Record& fig9) {
         txt << (i ? "; " : "") << fmt(0.5 * (lo + hi), 4)
             << (t.column("bisected")[i] != 0 ? " ± " + fmt(0.5 * (hi - lo), 2) : std::string(" (not bisected)")) << " ("
             << count_text(t.column("count_below")[i]) << "→" << count_text(t.column("count_above")[i]) << ")";
+        // Bisection follows one change per grid cell; a cell whose far end has another count holds more.
+        if (std::find(t.columns.begin(), t.columns.end(), "count_at_cell_end") != t.columns.end() &&
+            t.column("bisected")[i] != 0 && t.column("count_at_cell_end")[i] != t.column("count_above")[i]) {
+          double end = hi;  // the grid value that closes the cell: the smallest at or above hi
+          for (double v : s.table("counts").column("value"))
+            if (v >= hi && (end == hi || v < end)) end = v;
+          txt << ", then " << count_text(t.column("count_at_cell_end")[i]) << " at " << fmt(end, 4)
+              << ": more changes in this cell, not located";
+        }
       }
       if (t.rows() == 0) txt << "none: the count does not change";
       th.row({who(s), txt.str(), fmt(s.number("runs"), 8), fmt(s.number("cpu_s"), 3)});
@@ -178,7 +187,11 @@ SectionOutput sweeps_section(const Record& c, const Record& fig9) {
       std::string line = conv + " convention: the reference counts " + counts_range + " bounces";
       if (k.number("reference_failed") > 0) line += " (" + fmt(k.number("reference_failed")) + " reference runs failed)";
       line += "; the real-time stepper agrees at " + fmt(k.number("agree")) + " of " + fmt(k.number("grid_points")) +
-              " grid values; " + fmt(k.number("reference_thresholds")) + " changes of the reference count — " +
+              " grid values; " + fmt(k.number("reference_thresholds")) +
+              (k.has_number("cells_with_more_changes") && k.number("cells_with_more_changes") > 0
+                   ? " or more changes of the reference count (" + fmt(k.number("cells_with_more_changes")) +
+                         " grid cells hold changes bisection did not locate) — "
+                   : " changes of the reference count — ") +
               verdict_markdown(k.at("character"));
       w.bullet(line + ".");
     }

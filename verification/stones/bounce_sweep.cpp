@@ -109,6 +109,7 @@ std::vector<BounceSweepResult> run_bounce_sweeps(const std::vector<BounceSweepSp
       t.hi = v[i + 1];
       t.count_below = c[i];
       t.count_above = c[i + 1];
+      t.count_at_cell_end = c[i + 1];
       out[k].thresholds.push_back(t);
     }
     for (std::size_t j = 0; j < out[k].thresholds.size() && static_cast<int>(j) < specs[k].max_thresholds; ++j)

@@ -33,6 +33,11 @@ struct CountThreshold {
   double lo = 0, hi = 0;            // count_below at lo, count_above at hi, hi − lo ≤ tolerance
   int count_below = 0, count_above = 0;
   bool bisected = false;            // false: only bracketed by the grid
+  // The grid's count at the upper end of the cell the change was found in. Bisection follows one
+  // change; where count_above differs from it (1 → 2 at 10.9, 0 at the grid's 14), the cell holds
+  // at least one more change that was not located.
+  int count_at_cell_end = 0;
+  bool more_in_cell() const { return bisected && count_above != count_at_cell_end; }
   double value() const { return 0.5 * (lo + hi); }
 };
 

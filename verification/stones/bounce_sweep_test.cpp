@@ -8,7 +8,9 @@
 #include <cmath>
 
 #include "verification/stones/bounce_sweep.hpp"
+#include "solvers/realtime/stone_stepper.hpp"
 #include "verification/stones/convergence_throw.hpp"
+#include "verification/stones/throw_problem.hpp"
 
 namespace stoneskip {
 namespace {
@@ -39,6 +41,36 @@ BOOST_AUTO_TEST_CASE(a_tolerance_below_the_double_spacing_ends_at_neighbouring_d
   BOOST_TEST(t.hi < 60.0);
   // About 52 + log2(60 / |t|) halvings reach neighbouring doubles: the runs are bounded by that.
   BOOST_TEST(r[0].runs <= 2 + 64);
+}
+
+BOOST_AUTO_TEST_CASE(a_cell_holding_more_than_one_change_says_so, *boost::unit_test::timeout(300)) {
+  // Oracle: independent solves of the same throw. The convergence throw makes 1 bounce at a path
+  // angle of 22°, 2 at 24° and none at 26° (measured on a 2° grid when written). Bisection follows
+  // one change; where the count just above it (a solve at its bracket's upper end) is not the
+  // grid's 0 at 26°, a second change lies between them, and the threshold must say so: the stones
+  // report had listed "10.88 (1→2)" in a cell that ends at 0, as if that were the only change.
+  BounceSweepSpec s;
+  s.name = "wide_cell";
+  s.base = convergence_throw();
+  s.parameter = SweepParameter::path_angle_deg;
+  s.values = {22.0, 26.0};
+  s.solver = realtime_choice(s.base.realtime);
+  s.threshold_tolerance = 0.5;
+  const auto r = run_bounce_sweeps({s}, ParallelOptions{2, "", {}});
+  BOOST_REQUIRE(r.at(0).thresholds.size() == 1u);
+  const CountThreshold& t = r[0].thresholds[0];
+  BOOST_TEST_MESSAGE("counts " << r[0].counts[0] << ", " << r[0].counts[1] << "; change " << t.lo << " .. " << t.hi << ": "
+                               << t.count_below << " -> " << t.count_above);
+  BOOST_TEST(t.count_at_cell_end == r[0].counts[1]);
+  ThrowParameters p = s.base.parameters;
+  p.path_angle_deg = t.hi;
+  RealtimeOptions o = s.base.realtime;
+  o.record_trajectory = false;
+  const ThrowProblem q = with_parameters(s.base, p);
+  const int above = run_realtime(q.stone, q.environment, q.initial, o).bounces;
+  BOOST_TEST(above == t.count_above);
+  BOOST_REQUIRE_MESSAGE(above != r[0].counts[1], "the premise: the count above the located change is not the cell's end count");
+  BOOST_TEST(t.more_in_cell());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

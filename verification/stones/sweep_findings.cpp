@@ -72,8 +72,9 @@ void compare_solvers(Record& parent, const std::vector<const BounceSweepResult*>
   }
   // A bisected threshold within two tolerances of a grid value: the count changes as soon as the
   // parameter moves off that value.
-  int hugging = 0, bisected = 0;
+  int hugging = 0, bisected = 0, more = 0;
   for (const auto& x : ref->thresholds) {
+    more += x.more_in_cell() ? 1 : 0;
     if (!x.bisected) continue;
     ++bisected;
     for (double v : ref->spec.values)
@@ -90,6 +91,7 @@ void compare_solvers(Record& parent, const std::vector<const BounceSweepResult*>
   r.set("reference_thresholds", ref->thresholds.size());
   r.set("bisected", bisected);
   r.set("near_grid", hugging);
+  r.set("cells_with_more_changes", more);  // grid cells holding a change bisection did not follow
   const bool sensitive = bisected >= 3 && 2 * hugging >= bisected;
   Record in;
   in.set("near_grid", hugging);
@@ -153,9 +155,10 @@ Record sweeps_findings(const std::vector<BounceSweepResult>& sweeps) {
       for (std::size_t i = 0; i < s->spec.values.size(); ++i) t.add_row({s->spec.values[i], double(s->counts[i])});
       sr.set_table("counts", t);
       sr.set_strings("failures", s->failures);
-      Table th{{"lo", "hi", "count_below", "count_above", "bisected"}, {}, {unit, unit, "1", "1", "1"}};
+      Table th{{"lo", "hi", "count_below", "count_above", "bisected", "count_at_cell_end"}, {}, {unit, unit, "1", "1", "1", "1"}};
       for (const auto& x : s->thresholds)
-        th.add_row({x.lo, x.hi, double(x.count_below), double(x.count_above), x.bisected ? 1.0 : 0.0});
+        th.add_row({x.lo, x.hi, double(x.count_below), double(x.count_above), x.bisected ? 1.0 : 0.0,
+                    double(x.count_at_cell_end)});
       sr.set_table("thresholds", th);
     }
     Record& cmp = pr.child("comparison");
