@@ -8,7 +8,16 @@
 
 namespace stoneskip {
 
-Mesh make_prism(double radius_m, double thickness_m, int segments) {
+const char* to_string(RimSplit s) { return s == RimSplit::centre ? "centre" : "diagonal"; }
+
+bool parse_rim_split(const std::string& s, RimSplit& out) {
+  if (s == "diagonal") out = RimSplit::diagonal;
+  else if (s == "centre") out = RimSplit::centre;
+  else return false;
+  return true;
+}
+
+Mesh make_prism(double radius_m, double thickness_m, int segments, RimSplit split) {
   // Spec §1.1: face centres (0, 0, ±h/2), rim vertices (R cos θk, R sin θk, ±h/2), θk = 2πk/N;
   // a fan on each face (N + N triangles) and two triangles per rim segment (2N): 4N in all.
   Mesh m;
@@ -26,8 +35,19 @@ Mesh make_prism(double radius_m, double thickness_m, int segments) {
   for (int k = 0; k < n; ++k) {
     m.triangles.push_back({0, top(k), top(k + 1)});             // top face, normal +z
     m.triangles.push_back({1, bot(k + 1), bot(k)});             // bottom face, normal −z
-    m.triangles.push_back({bot(k), bot(k + 1), top(k + 1)});    // rim, normal outward
-    m.triangles.push_back({bot(k), top(k + 1), top(k)});
+    if (split == RimSplit::diagonal) {
+      m.triangles.push_back({bot(k), bot(k + 1), top(k + 1)});  // rim, normal outward
+      m.triangles.push_back({bot(k), top(k + 1), top(k)});
+    } else {
+      // The face's centre: the mean of its four corners (on the chord, at z = 0).
+      const Vec3 c = 0.25 * (m.vertices[bot(k)] + m.vertices[bot(k + 1)] + m.vertices[top(k)] + m.vertices[top(k + 1)]);
+      const int ci = static_cast<int>(m.vertices.size());
+      m.vertices.push_back(c);
+      m.triangles.push_back({ci, bot(k), bot(k + 1)});          // rim, normal outward, each
+      m.triangles.push_back({ci, bot(k + 1), top(k + 1)});
+      m.triangles.push_back({ci, top(k + 1), top(k)});
+      m.triangles.push_back({ci, top(k), bot(k)});
+    }
   }
   return m;
 }

@@ -20,8 +20,20 @@ struct Mesh {
   std::vector<std::array<int, 3>> triangles;  // counter-clockwise seen from outside
 };
 
+// How a prism's rectangular rim faces are cut into triangles.
+//   diagonal: two triangles per face, each cut along the diagonal from its bottom corner at θ_k to
+//             its top corner at θ_(k+1) (spec §1.1: 4N triangles, the paper's 44 at N = 11). Every
+//             cut has the same hand, so the mesh is not its own mirror image: a throw and its mirror
+//             (spin reversed) do not mirror each other, as the triangles' forces differ (model/README.md
+//             §1.1 gives the size of the effect).
+//   centre:   four triangles per face, fanned from the face's centre (6N triangles): the mesh is its
+//             own mirror image in every plane through the axis and a vertex or a face's middle.
+enum class RimSplit { diagonal, centre };
+const char* to_string(RimSplit s);
+bool parse_rim_split(const std::string& s, RimSplit& out);
+
 // Flat cylinder approximated by a regular N-gon prism of circumradius R and thickness h (§1.1).
-Mesh make_prism(double radius_m, double thickness_m, int segments);
+Mesh make_prism(double radius_m, double thickness_m, int segments, RimSplit split = RimSplit::diagonal);
 // Biconvex lens: rim ring of N vertices at z = 0, apexes at z = ±h/2 (§1.1).
 Mesh make_lens(double radius_m, double thickness_m, int segments);
 // Sphere of radius R: the regular icosahedron inscribed in it, each triangle split `subdivisions`

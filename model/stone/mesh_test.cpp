@@ -1,8 +1,11 @@
 // Mesh construction, closure checks and mass properties against closed forms (model/README.md §1.1–1.2).
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include "model/stone/mass_properties.hpp"
 #include "model/stone/mesh.hpp"
@@ -85,6 +88,43 @@ BOOST_AUTO_TEST_CASE(parametric_meshes_are_closed_and_outward) {
     BOOST_TEST(c.ok, c.problem);
     BOOST_TEST(c.signed_volume_m3 > 0);
   }
+}
+
+BOOST_AUTO_TEST_CASE(a_centre_split_rim_is_its_own_mirror_image_and_the_diagonal_split_is_not) {
+  // Oracle: geometry. A triangle's water force depends on its centroid, area and normal, so a mesh
+  // whose set of (centroid, area × normal) is unchanged by the mirror y → −y (normals mirror too)
+  // gives a mirrored throw the mirrored forces. The prism's vertices are symmetric (θ_k and −θ_k),
+  // but every diagonal cut has the same hand: its mirror image is a mesh cut the other way. The
+  // centre split (6N triangles, same solid) is symmetric; the volume is the prism's either way.
+  auto mirror_mismatch = [](const Mesh& m) {
+    std::vector<std::pair<Vec3, Vec3>> faces;  // centroid, area-weighted normal
+    for (const auto& t : m.triangles) {
+      const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
+      faces.emplace_back((a + b + c) / 3, 0.5 * (b - a).cross(c - a));
+    }
+    double worst = 0;  // the largest distance from a mirrored face to the nearest face
+    for (const auto& [c, n] : faces) {
+      const Vec3 mc(c.x(), -c.y(), c.z()), mn(n.x(), -n.y(), n.z());
+      double best = 1e300;
+      for (const auto& [d, k] : faces) best = std::min(best, (mc - d).norm() + (mn - k).norm() / 0.03);
+      worst = std::max(worst, best);
+    }
+    return worst;
+  };
+  constexpr double kSame = 1e-15;  // round-off of the vertex coordinates (metres, R = 0.03)
+  for (int n : {3, 11, 12}) {
+    const Mesh centre = make_prism(0.03, 0.008, n, RimSplit::centre), diagonal = make_prism(0.03, 0.008, n);
+    BOOST_TEST(centre.triangles.size() == 6u * n);
+    BOOST_TEST(check_mesh(centre).ok, check_mesh(centre).problem);
+    BOOST_TEST(mirror_mismatch(centre) <= kSame, "N=" << n);
+    BOOST_TEST(mirror_mismatch(diagonal) > 1e-3, "N=" << n);  // a rim triangle's centroid moves by ~h/3
+    const double v = mass_properties_from_density(centre, 1.0).volume_m3, w = mass_properties_from_density(diagonal, 1.0).volume_m3;
+    BOOST_TEST(std::abs(v - w) <= kRoundoff * w);
+  }
+  RimSplit s;
+  BOOST_TEST(parse_rim_split("centre", s));
+  BOOST_TEST((s == RimSplit::centre));
+  BOOST_TEST(!parse_rim_split("center", s));
 }
 
 BOOST_AUTO_TEST_CASE(open_flipped_and_inward_meshes_are_rejected) {

@@ -376,7 +376,7 @@ BOOST_AUTO_TEST_CASE(items_14_15_16_a_capture_with_an_impossible_mounting_or_ens
   expect_refused(run_apart("capture validate " + cap + " --mount lever_arm_m=0,0,0"), {"mounting.lever_arm_m: must be 0.05 to 3 m long"});
   expect_refused(run_apart("capture validate " + cap + " --members 100000 --out " + (s.dir / "cv").string()),
                  {"--members: about 4.4e+12 triangle evaluations in the ensembles", "--allow-large"});
-  expect_refused(run_apart("capture validate " + cap + " --members -1"), {"--members: must be >= 0"});
+  expect_refused(run_apart("capture validate " + cap + " --members -1"), {"--members: must be 0 (no ensemble, no intervals) or at least 2"});
   expect_refused(run_apart({"capture", "validate", cap, "--out", ""}), {"--out", "needs a folder name"});
   expect_refused(run_apart({"capture", "throw", cap, "--out", ""}), {"--out", "needs a file name"});
   // A 3-million-row trace took 1.44 GB to read: a capture file over 64 MB is refused unread (a

@@ -43,14 +43,21 @@ StoneSpec read_stone(TomlTable t, const std::string& file) {
   else
     t.fail("shape", "must be \"prism\", \"lens\" or \"mesh\" (got \"" + shape + "\")");
   // A key of the other shapes is named as such, not as a misspelling.
-  const std::vector<std::string> own = s.shape == StoneShape::mesh_file
-                                           ? std::vector<std::string>{"mesh_file", "disk_radius_m"}
-                                           : std::vector<std::string>{"radius_m", "thickness_m", "segments"};
-  for (const char* key : {"mesh_file", "disk_radius_m", "radius_m", "thickness_m", "segments"})
+  const std::vector<std::string> own =
+      s.shape == StoneShape::mesh_file ? std::vector<std::string>{"mesh_file", "disk_radius_m"}
+      : s.shape == StoneShape::prism   ? std::vector<std::string>{"radius_m", "thickness_m", "segments", "rim_split"}
+                                       : std::vector<std::string>{"radius_m", "thickness_m", "segments"};
+  for (const char* key : {"mesh_file", "disk_radius_m", "radius_m", "thickness_m", "segments", "rim_split"})
     if (t.has(key) && std::find(own.begin(), own.end(), key) == own.end())
       t.fail(key, std::string("is a key of ") +
-                      (s.shape == StoneShape::mesh_file ? "shape \"prism\" or \"lens\"" : "shape \"mesh\"") +
+                      (std::string(key) == "rim_split"           ? "shape \"prism\""
+                       : s.shape == StoneShape::mesh_file ? "shape \"prism\" or \"lens\""
+                                                          : "shape \"mesh\"") +
                       ", not of shape \"" + shape + "\"");
+  if (s.shape == StoneShape::prism && t.has("rim_split")) {
+    const std::string split = t.string("rim_split");
+    if (!parse_rim_split(split, s.rim_split)) t.fail("rim_split", "must be \"diagonal\" or \"centre\" (got \"" + split + "\")");
+  }
   if (s.shape == StoneShape::mesh_file) {
     s.mesh_file = t.string("mesh_file");
     if (s.mesh_file.empty()) t.fail("mesh_file", "must name a Wavefront OBJ file (got an empty string)");
@@ -257,8 +264,9 @@ Stone build_stone(const StoneSpec& spec, const std::string& file) {
   std::ostringstream d;
   switch (spec.shape) {
     case StoneShape::prism:
-      mesh = make_prism(spec.radius_m, spec.thickness_m, spec.segments);
+      mesh = make_prism(spec.radius_m, spec.thickness_m, spec.segments, spec.rim_split);
       d << "prism R=" << spec.radius_m << " m, h=" << spec.thickness_m << " m, N=" << spec.segments;
+      if (spec.rim_split == RimSplit::centre) d << ", rim faces split at their centres";
       break;
     case StoneShape::lens:
       mesh = make_lens(spec.radius_m, spec.thickness_m, spec.segments);
@@ -334,8 +342,12 @@ std::string StoneCase::resolved_settings() const {
   s << "[stone]\nshape = \"" << to_string(spec.shape) << "\"\n";
   if (spec.shape == StoneShape::mesh_file) s << "mesh_file = \"" << spec.mesh_file << "\"\n";
   else s << "radius_m = " << spec.radius_m << "\nthickness_m = " << spec.thickness_m << "\nsegments = " << spec.segments << "\n";
-  s << "density_kg_m3 = " << stone.mass.density_kg_m3 << "\nmass_kg = " << stone.mass.mass_kg << "\n";
-  s << "disk_radius_m = " << stone.disk_radius_m << "\n";
+  if (spec.shape == StoneShape::prism) s << "rim_split = \"" << to_string(spec.rim_split) << "\"\n";
+  // The keys a case file takes (so the settings run as a case): the one of density and mass the
+  // case gave, and disk_radius_m only for a mesh (a prism's and a lens's is their radius).
+  if (spec.mass_kg > 0) s << "mass_kg = " << stone.mass.mass_kg << "\n";
+  else s << "density_kg_m3 = " << stone.mass.density_kg_m3 << "\n";
+  if (spec.shape == StoneShape::mesh_file) s << "disk_radius_m = " << stone.disk_radius_m << "\n";
   s << "\n[environment]\nconvention = \"" << to_string(environment.convention) << "\"\nwater_law = \""
     << to_string(environment.water_law) << "\"\npressure_distribution = \"" << to_string(environment.pressure_distribution)
     << "\"\nattitude = \"" << to_string(environment.attitude) << "\"\n"

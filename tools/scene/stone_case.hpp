@@ -50,6 +50,7 @@ struct StoneSpec {
   double radius_m = 0;
   double thickness_m = 0;
   int segments = 11;
+  RimSplit rim_split = RimSplit::diagonal;  // prism: how its rim faces are cut (model/stone/mesh.hpp)
   double density_kg_m3 = 0;  // one of density and mass is given
   double mass_kg = 0;
   std::string mesh_file;     // resolved relative to the case file's folder
