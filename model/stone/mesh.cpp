@@ -107,19 +107,32 @@ MeshCheck check_mesh(const Mesh& mesh) {
   // Directed edge counts: a closed, consistently oriented 2-manifold uses every edge exactly
   // once in each direction.
   std::map<std::pair<int, int>, int> directed;
-  double scale = 0;
-  for (const auto& v : mesh.vertices) scale = std::max(scale, v.norm());
+  // Sizes relative to the mesh itself, not to the origin: a stone's file may place it far away
+  // (a 6 cm box at 1.2e5 m was called inward and at 1.8e5 m degenerate, its coordinates' magnitude
+  // swamping its size). The scale is the bounding box's diagonal; the volume's tetrahedra meet at
+  // the box's centre, where the cancellation is that of the stone's own size.
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  for (const auto& v : mesh.vertices) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  const double scale = nv > 0 ? (hi - lo).norm() : 0;
+  const Vec3 o = nv > 0 ? Vec3(0.5 * (lo + hi)) : Vec3::Zero();
   for (const auto& t : mesh.triangles) {
     if (t[0] < 0 || t[1] < 0 || t[2] < 0 || t[0] >= nv || t[1] >= nv || t[2] >= nv) {
       ++c.bad_indices;
       continue;
     }
-    const Vec3& a = mesh.vertices[t[0]];
-    const Vec3& b = mesh.vertices[t[1]];
-    const Vec3& d = mesh.vertices[t[2]];
+    const Vec3 a = mesh.vertices[t[0]] - o;
+    const Vec3 b = mesh.vertices[t[1]] - o;
+    const Vec3 d = mesh.vertices[t[2]] - o;
     const Vec3 cr = (b - a).cross(d - a);
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+      ++c.repeated_vertex_triangles;  // "f 1 1 2": not a triangle; its edges would read as misoriented
+      continue;
+    }
     if (cr.norm() <= 1e-14 * scale * scale) ++c.degenerate_triangles;
-    c.signed_volume_m3 += a.dot(b.cross(d)) / 6.0;  // divergence theorem, tetrahedra from the origin
+    c.signed_volume_m3 += a.dot(b.cross(d)) / 6.0;  // divergence theorem, tetrahedra from the box's centre
     for (int e = 0; e < 3; ++e) ++directed[{t[e], t[(e + 1) % 3]}];
   }
   for (const auto& [edge, count] : directed) {
@@ -136,6 +149,8 @@ MeshCheck check_mesh(const Mesh& mesh) {
     c.problem = "the mesh has fewer than 4 vertices or no triangles";
   else if (c.bad_indices)
     c.problem = std::to_string(c.bad_indices) + " triangles index vertices that do not exist";
+  else if (c.repeated_vertex_triangles)
+    c.problem = std::to_string(c.repeated_vertex_triangles) + " triangles name one vertex twice (no area)";
   else if (c.boundary_edges)
     c.problem = "the mesh is open: " + std::to_string(c.boundary_edges) + " edges belong to one triangle only";
   else if (c.nonmanifold_edges)

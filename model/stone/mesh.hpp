@@ -48,6 +48,7 @@ struct MeshCheck {
   int misoriented_edges = 0;       // edges traversed twice in the same direction
   int degenerate_triangles = 0;    // zero-area triangles
   int bad_indices = 0;             // triangle indices outside the vertex list
+  int repeated_vertex_triangles = 0;  // triangles naming one vertex twice ("f 1 1 2")
   double signed_volume_m3 = 0;     // > 0 for an outward-oriented closed mesh
   std::string problem;             // first problem found, in words; empty when ok
 };

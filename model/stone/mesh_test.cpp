@@ -127,6 +127,30 @@ BOOST_AUTO_TEST_CASE(a_centre_split_rim_is_its_own_mirror_image_and_the_diagonal
   BOOST_TEST(!parse_rim_split("center", s));
 }
 
+BOOST_AUTO_TEST_CASE(a_mesh_far_from_the_origin_is_judged_by_its_own_size) {
+  // Oracle: translation invariance. A closed outward box of 6 × 4 × 1 cm is the same solid at the
+  // origin and 1.2e5, 1.8e5 or 9e5 m away (coordinates exact to 1e-11 m there): accepted each time,
+  // with the box's volume to the round-off of those coordinates. It had been called inward at
+  // 1.2e5 m and degenerate at 1.8e5 m. A triangle that names one vertex twice is named as such.
+  auto box = [](double off) {
+    Mesh m;
+    for (int i = 0; i < 8; ++i)
+      m.vertices.push_back(Vec3(off + (i & 1 ? 0.06 : 0.0), off + (i & 2 ? 0.04 : 0.0), off + (i & 4 ? 0.01 : 0.0)));
+    // Outward triangles of the six faces (x−, x+, y−, y+, z−, z+).
+    m.triangles = {{0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}, {0, 1, 5}, {0, 5, 4},
+                   {2, 6, 7}, {2, 7, 3}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}};
+    return m;
+  };
+  for (double off : {0.0, 1.2e5, 1.8e5, 9e5}) {
+    const MeshCheck c = check_mesh(box(off));
+    BOOST_TEST(c.ok, "offset " << off << ": " << c.problem);
+    BOOST_TEST(std::abs(c.signed_volume_m3 - 2.4e-5) <= 1e-9, "offset " << off << ": " << c.signed_volume_m3);
+  }
+  Mesh bad = box(0);
+  bad.triangles.push_back({0, 0, 1});
+  BOOST_TEST(check_mesh(bad).problem.find("name one vertex twice") != std::string::npos, check_mesh(bad).problem);
+}
+
 BOOST_AUTO_TEST_CASE(open_flipped_and_inward_meshes_are_rejected) {
   // Oracle: edge counting; each defect planted by hand.
   Mesh open = make_prism(0.03, 0.008, 11);

@@ -1,6 +1,7 @@
 #include "reports/front/front_page.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 #include <set>
 #include <sstream>
@@ -48,6 +49,24 @@ std::vector<fs::path> sorted_entries(const fs::path& dir) {
 }
 
 std::string relative_name(const fs::path& p, const fs::path& out) { return p.lexically_relative(out).generic_string(); }
+
+// A relative path as a link target: every byte but the unreserved ones and '/' percent-encoded
+// (RFC 3986 §2.1, §2.3), so a folder named "#x", "a b" or "%41" links to itself and a line break
+// in a name cannot end the line of Markdown it is in.
+std::string link(const std::string& path) {
+  static const char* hex = "0123456789ABCDEF";
+  std::string out;
+  for (unsigned char ch : path) {
+    if (std::isalnum(ch) || ch == '-' || ch == '.' || ch == '_' || ch == '~' || ch == '/') {
+      out += static_cast<char>(ch);
+    } else {
+      out += '%';
+      out += hex[ch >> 4];
+      out += hex[ch & 15];
+    }
+  }
+  return out;
+}
 
 FrontThrow read_throw(const fs::path& file, const fs::path& out) {
   FrontThrow t;
@@ -182,23 +201,23 @@ std::string front_page_markdown(const FrontPageInput& in) {
   std::map<std::string, int> titles;
   for (const auto& r : in.reports) ++titles[r.title];
   auto name = [&](const FrontReport& r) {
-    return (r.title.empty() ? r.folder : r.title) + (titles[r.title] > 1 ? " (`" + r.folder + "/`)" : "");
+    return (r.title.empty() ? code(r.folder) : r.title) + (titles[r.title] > 1 ? " (" + code(r.folder + "/") + ")" : "");
   };
   for (const auto& r : in.reports) {
-    md << "### [" << name(r) << "](" << r.folder << "/index.md)\n\n";
+    md << "### [" << name(r) << "](" << link(r.folder) << "/index.md)\n\n";
     const std::string verdicts = verdict_line(r.findings);
     md << "**Verdicts:** " << (verdicts.empty() ? std::string("none stated") : verdicts) << ". "
-       << "Folder `" << r.folder << "/` (`" << r.kind << "` report, data written " << r.created_utc << "): "
-       << "[page](" << r.folder << "/index.md), `data.h5`, `figures/`.\n\n";
-    if (!r.picture.empty()) md << "![" << r.title << "](" << r.picture << ")\n\n";
+       << "Folder " << code(r.folder + "/") << " (`" << r.kind << "` report, data written " << r.created_utc << "): "
+       << "[page](" << link(r.folder) << "/index.md), `data.h5`, `figures/`.\n\n";
+    if (!r.picture.empty()) md << "![" << r.title << "](" << link(r.picture) << ")\n\n";
   }
   if (!in.movies.empty()) {
     md << "## The movie\n\n";
     for (const auto& m : in.movies) {
-      md << "* [`" << m.file << "`](" << m.file << ") (" << fmt(m.size_mb, 3) << " MB): the scene as a movie.\n";
+      md << "* [" << code(m.file) << "](" << link(m.file) << ") (" << fmt(m.size_mb, 3) << " MB): the scene as a movie.\n";
     }
     md << "\n";
-    if (!in.movies.front().picture.empty()) md << "![A still of the scene](" << in.movies.front().picture << ")\n\n";
+    if (!in.movies.front().picture.empty()) md << "![A still of the scene](" << link(in.movies.front().picture) << ")\n\n";
   }
   if (!in.throws.empty()) {
     md << "## The shipped throws\n\n"
@@ -208,7 +227,7 @@ std::string front_page_markdown(const FrontPageInput& in) {
     for (const auto& th : in.throws) {
       std::map<std::string, std::string> cell{{"realtime", "–"}, {"reference", "–"}};
       for (const auto& r : th.runs) cell[r.solver] = fmt(r.bounces) + ", " + fmt(r.distance_m, 3) + ", " + r.outcome;
-      t.row({"[`" + fs::path(th.file).filename().string() + "`](" + th.file + ")", th.title, th.case_file.empty() ? "–" : "`" + th.case_file + "`",
+      t.row({"[" + code(fs::path(th.file).filename().string()) + "](" + link(th.file) + ")", th.title, th.case_file.empty() ? "–" : "`" + th.case_file + "`",
              cell["realtime"], cell["reference"]});
     }
     md << t.str() << "\n";
@@ -218,16 +237,16 @@ std::string front_page_markdown(const FrontPageInput& in) {
   for (const auto& r : in.reports) {
     md << "### " << name(r) << "\n\n";
     if (r.findings.empty()) {
-      md << "The report states no findings list; [read it](" << r.folder << "/index.md).\n\n";
+      md << "The report states no findings list; [read it](" << link(r.folder) << "/index.md).\n\n";
       continue;
     }
     for (std::string f : r.findings) {
       // A link into the report's own page ("(#2-…)") points into that page from here.
       for (std::size_t at = f.find("](#"); at != std::string::npos; at = f.find("](#", at + 2))
-        f.insert(at + 2, r.folder + "/index.md");
+        f.insert(at + 2, link(r.folder) + "/index.md");
       md << "* " << f << "\n";
     }
-    md << "\n[The whole report](" << r.folder << "/index.md).\n\n";
+    md << "\n[The whole report](" << link(r.folder) << "/index.md).\n\n";
   }
   if (!in.skipped.empty()) {
     md << "## Not shown\n\n"

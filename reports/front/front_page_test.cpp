@@ -81,6 +81,20 @@ BOOST_AUTO_TEST_CASE(two_reports_of_one_title_are_told_apart_by_folder) {
   BOOST_TEST(has(md, "### [Water surface verification](waves/index.md)"));
 }
 
+BOOST_AUTO_TEST_CASE(a_folder_name_is_a_link_to_itself_whatever_its_characters) {
+  // Oracle: RFC 3986 percent-encoding of the link target. "#x" had become an in-page anchor, "%41"
+  // a link to "A", and a line break ended the heading's line.
+  FrontPageInput in = two_reports();
+  in.reports[0].folder = "#x %41\nb";
+  in.reports[0].picture = "#x %41\nb/figures/c.png";
+  const std::string md = front_page_markdown(in);
+  BOOST_TEST(has(md, "](%23x%20%2541%0Ab/index.md)"), md);
+  BOOST_TEST(has(md, "(%23x%20%2541%0Ab/figures/c.png)"), md);
+  BOOST_TEST(!has(md, "](#x"), md);
+  const std::string heading = md.substr(md.find("### [Water surface verification]"));
+  BOOST_TEST(heading.substr(0, heading.find('\n')).find("index.md)") != std::string::npos, heading.substr(0, 200));
+}
+
 BOOST_AUTO_TEST_CASE(the_page_replaces_a_front_page_but_not_someone_s_index) {
   // Oracle: the output contract: a file stoneskip did not write is never replaced. A folder with
   // someone's index.md is refused and the file kept; the page itself is written, then rewritten.

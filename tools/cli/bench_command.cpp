@@ -425,13 +425,14 @@ void add_bench(CLI::App& app) {
   cmd->add_flag("--json", a->json, "Print one JSON object");
   cmd->add_flag("--quick", a->quick, "A smoke run of seconds (shorter scene, fewer samples, a small sweep, 1024² instead of 2048²)");
   cmd->add_flag("--sweep-only", a->sweep_only,
-                "Only the bounce-count sweep and its CVODE agreement (the scene and stencil keys are then 0)");
+                "Only the bounce-count sweep and its CVODE agreement (the scene and stencil keys are then null)");
   cmd->add_flag("--every-isa", a->every_isa, "Also measure the stencil on every instruction-set path the CPU supports, side by side");
   cmd->add_flag("--cpu-clock", a->cpu_clock,
                 "Time the stencil on the thread's CPU clock (one thread), not wall: on a loaded machine it leaves out the time "
                 "other processes held the core");
-  cmd->add_option("--scene", a->scene, "The scene to time")->capture_default_str();
-  cmd->add_option("--sweep-case", a->sweep_case, "The throw whose spin and attack angle the sweep varies")->capture_default_str();
+  const auto named = [](const std::string& f) { return f.empty() ? std::string("needs a file name (got an empty one)") : std::string(); };
+  cmd->add_option("--scene", a->scene, "The scene to time")->capture_default_str()->check(named);
+  cmd->add_option("--sweep-case", a->sweep_case, "The throw whose spin and attack angle the sweep varies")->capture_default_str()->check(named);
   cmd->add_option("--sweep-rtol", a->sweep_rtol,
                   "The sweep's tolerance (bs32, rtol = atol_m; default " + g(kSweepTolerance) + ", from solvers/README.md's work-precision table)");
   cmd->add_option("--sweep-kinks", a->sweep_kinks, "Which kinks end the sweep's steps: none, crossings or all (default: the scheme's own, crossings for bs32)");

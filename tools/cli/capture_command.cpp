@@ -169,7 +169,15 @@ CaptureOptions capture_options(const CaptureArgs& a, const Trace& t) {
   o.members = a.members;
   o.seed = a.seed;
   std::string why;
-  if (!o.is_valid(&why)) throw_input_error("capture options", 0, "", why);
+  if (!o.is_valid(&why)) {
+    // The analysis names its fields; the user gave options: name those.
+    for (const auto& [field, option] : std::vector<std::pair<std::string, std::string>>{
+             {"max_rate_deg_s", "--max-rate-deg-s"}, {"max_accel_g", "--max-accel-g"}, {"saturation_g", "--saturation-g"},
+             {"members", "--members"}})
+      for (std::size_t at = why.find(field); at != std::string::npos; at = why.find(field, at + option.size()))
+        why.replace(at, field.size(), option);
+    throw_input_error("capture options", 0, "", why);
+  }
   return o;
 }
 
@@ -739,7 +747,9 @@ void add_capture(CLI::App& app) {
   cols->callback([] { print_columns(); });
 
   auto* s = cmd->add_subcommand("synthesize", "Write the shipped synthetic captures and their truth files");
-  s->add_option("--out", a->out, "Folder (e.g. cases/captures)")->required();
+  s->add_option("--out", a->out, "Folder (e.g. cases/captures)")
+      ->required()
+      ->check([](const std::string& d) { return d.empty() ? std::string("needs a folder name (got an empty one)") : std::string(); });
   s->callback([a] { synthesize(*a); });
 }
 

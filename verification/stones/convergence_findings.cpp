@@ -29,7 +29,8 @@ void store_series(Record& parent, const ConvergenceSeries& s, OrderJudgement j) 
   r.set_table("points", t);
   r.set_strings("notes", s.notes);
   j.expected_order = s.formal_order;
-  store_order_fit(r, "fit", s.fit, j);
+  // The rule's reason, plus which points the fit lacks and why (finish_series).
+  store_order_fit(r, "fit", s.fit, j).child("verdict").set("reason", judge_order(s.fit, j).reason + s.left_out);
   if (s.has_gci) {
     Record& g = r.child("gci");
     g.set("kind", std::string(to_string(s.gci.kind)));

@@ -95,7 +95,8 @@ void finish_series(ConvergenceSeries& s, const RealtimeConvergenceOptions& o) {
     add(floor, "below the reference's error bound");
     add(roundoff, "at round-off");
     add(failed, "failed");
-    s.decision.reason += " (of " + std::to_string(n) + " runs, left out: " + why + ")";
+    s.left_out = " (of " + std::to_string(n) + " runs, left out: " + why + ")";
+    s.decision.reason += s.left_out;
   }
   // GCI (Celik et al. 2008) from the three finest steps with finite values; h_s is descending.
   std::vector<std::size_t> idx;

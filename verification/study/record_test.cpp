@@ -135,6 +135,21 @@ BOOST_AUTO_TEST_CASE(an_order_fit_verdict_is_decided_again_from_its_stored_input
   BOOST_TEST(contradicted_verdicts(forged).size() == 1u);
 }
 
+BOOST_AUTO_TEST_CASE(a_stored_order_fit_whose_error_grew_at_a_refinement_claims_no_order) {
+  // Oracle: judge_order on the fit itself. Errors 1e-2, 2e-3, 2.2e-3, 1e-4, 2e-5 over halvings
+  // fall overall (the interval excludes 0 and 4) but grow once: the stored phrase, decided from
+  // the stored inputs, must be judge_order's "order not established", as the reason says, and not
+  // the interval-only verdict it had been ("converges, not at the expected order").
+  Record r;
+  const OrderFit fit = fit_order({0.16, 0.08, 0.04, 0.02, 0.01}, {1e-2, 2e-3, 2.2e-3, 1e-4, 2e-5});
+  const OrderJudgement j{4, 0.25, 0.25};
+  BOOST_REQUIRE(fit.order_low > 0.25);
+  BOOST_TEST((judge_order(fit, j).verdict == OrderVerdict::order_not_established));
+  store_order_fit(r, "fit", fit, j);
+  BOOST_TEST(r.at("fit").at("verdict").text("verdict") == to_string(OrderVerdict::order_not_established));
+  BOOST_TEST(contradicted_verdicts(r).empty());
+}
+
 BOOST_AUTO_TEST_CASE(rules_decide_from_their_inputs_at_the_edges) {
   // Oracle: each rule's definition (verification/study/verdict_rules.hpp) at and beside its edge.
   Record in;

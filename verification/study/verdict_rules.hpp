@@ -6,7 +6,8 @@
 //
 // Rules (inputs → phrases):
 //   order_fit            valid, order, order_low, order_high, points, expected_order, tolerance,
-//                        minimum_order → verification/convergence/order_fit.hpp judge_order()
+//                        minimum_order, refinements, growing_refinements (pairwise orders ≤ 0) →
+//                        verification/convergence/order_fit.hpp judge_order()
 //   consistency          constant_term, laplacian_coefficient, tolerance → consistent | inconsistent
 //   gci_band             usable, order_does_not_converge, gci_fine, actual_relative_error →
 //                        no estimate | misleading | contains the exact value | misses the exact value
