@@ -58,7 +58,9 @@ struct BenchArgs {
   std::string scene = "cases/scenes/seed_8ms.toml";
   std::string sweep_case = "cases/spin_sweep_base.toml";
   double sweep_rtol = kDefaultAdaptiveTolerance;  // the cases' default (kSweepTolerance below)
-  std::string sweep_kinks;  // empty: the scheme's default
+  std::string sweep_kinks;  // the scheme's default unless --sweep-kinks is given
+  CLI::Option* sweep_kinks_option = nullptr;
+  CLI::Option* repeats_option = nullptr;
   int repeats = 3;
   ResourceLimits limits;
 };
@@ -182,7 +184,7 @@ void bench(const BenchArgs& a) {
   o.sweep.base.realtime.scheme = Scheme::bs32;
   o.sweep.base.realtime.rtol = o.sweep.base.realtime.atol_m = sweep_tolerance;
   KinkSteps kinks = default_kink_steps(Scheme::bs32);
-  if (!a.sweep_kinks.empty() && !parse_kink_steps(a.sweep_kinks, kinks))
+  if (a.sweep_kinks_option->count() > 0 && !parse_kink_steps(a.sweep_kinks, kinks))
     throw_input_error("--sweep-kinks", 0, "", "must be none, crossings or all (got " + a.sweep_kinks + ")");
   o.sweep.base.realtime.kinks = kinks;
   o.sweep.spins_rev_s = range(0, 60, 2.5);
@@ -192,14 +194,17 @@ void bench(const BenchArgs& a) {
   o.sweep_only = a.sweep_only;
   if (a.quick) {
     o.scene.duration_s = std::min(o.scene.duration_s, 0.5);
-    o.scene_repeats = 1;
+    // --quick runs each part once unless --repeats says otherwise.
+    if (a.repeats_option->count() == 0) o.scene_repeats = 1;
     o.stencil.samples = 4;
     o.stencil.sample_s = 0.002;
     o.stencil_large_n = 1024;
     o.sweep.spins_rev_s = {0, 20, 40};
     o.sweep.attack_angles_deg = {10, 20};
-    o.sweep.repeats = 1;
+    if (a.repeats_option->count() == 0) o.sweep.repeats = 1;
   }
+  if (a.sweep_only && a.every_isa)
+    throw InputError("bench: --every-isa measures the stencil, which --sweep-only leaves out: give one of them");
   std::string why;
   if (!o.is_valid(&why)) throw_input_error(a.scene, 0, "", why);
   // The scene and the sweep case are held to the limits of `scene` and `run` (cases/README.md, Limits).
@@ -435,8 +440,10 @@ void add_bench(CLI::App& app) {
   cmd->add_option("--sweep-case", a->sweep_case, "The throw whose spin and attack angle the sweep varies")->capture_default_str()->check(named);
   cmd->add_option("--sweep-rtol", a->sweep_rtol,
                   "The sweep's tolerance (bs32, rtol = atol_m; default " + g(kSweepTolerance) + ", from solvers/README.md's work-precision table)");
-  cmd->add_option("--sweep-kinks", a->sweep_kinks, "Which kinks end the sweep's steps: none, crossings or all (default: the scheme's own, crossings for bs32)");
-  cmd->add_option("--repeats", a->repeats, "Runs of the scene and of the sweep (the best is reported)")->capture_default_str();
+  a->sweep_kinks_option = cmd->add_option("--sweep-kinks", a->sweep_kinks, "Which kinks end the sweep's steps: none, crossings or all (default: the scheme's own, crossings for bs32)");
+  a->repeats_option =
+      cmd->add_option("--repeats", a->repeats, "Runs of the scene and of the sweep (the best is reported; --quick: 1 unless given)")
+          ->capture_default_str();
   add_limit_options(cmd, a->limits);
   cmd->callback([a] { bench(*a); });
 }

@@ -35,6 +35,13 @@ void add_mesh(CLI::App& app) {
       j["density_kg_m3"] = s.mass.density_kg_m3;
       j["mass_kg"] = s.mass.mass_kg;
       j["disk_radius_m"] = s.disk_radius_m;
+      j["disk_area_m2"] = s.disk_area_m2;
+      // The mesh itself, as the text form prints it (body frame, metres; counter-clockwise from outside).
+      nlohmann::json vs = nlohmann::json::array(), ts = nlohmann::json::array();
+      for (const auto& v : s.body_mesh.vertices) vs.push_back({v.x(), v.y(), v.z()});
+      for (const auto& t : s.body_mesh.triangles) ts.push_back({t[0], t[1], t[2]});
+      j["vertex_list_m"] = vs;
+      j["triangle_list"] = ts;
       j["inertia_body_kg_m2"] = {{I(0, 0), I(0, 1), I(0, 2)}, {I(1, 0), I(1, 1), I(1, 2)}, {I(2, 0), I(2, 1), I(2, 2)}};
       std::cout << json_text(j) << std::endl;
       return;
