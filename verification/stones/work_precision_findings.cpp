@@ -39,6 +39,7 @@ Record work_precision_findings(const WorkPrecisionResult& wp, const WorkPrecisio
     Record& g = r.child(key);
     g.set("label", t.label);
     g.set("law", std::string(to_string(t.law)));
+    g.set("convention", std::string(to_string(t.convention)));
     g.set("headline", std::string(to_string(t.headline)));
     g.set("truth_contacts", t.truth.contacts.size());
     g.set("truth_bounces", t.truth.bounces);
