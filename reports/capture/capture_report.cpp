@@ -2,6 +2,8 @@
 // holds): the verdicts first, then one section per capture.
 #include "reports/capture/capture_report.hpp"
 
+#include <cmath>
+
 #include "reports/capture/capture_figures.hpp"
 #include "reports/common/markdown.hpp"
 
@@ -36,7 +38,8 @@ std::string bounces_cell(const Record& c) {
   std::string ens = "–";
   if (sim.has_child("ensemble")) {
     const Record& e = sim.at("ensemble");
-    ens = fmt(e.number("bounces_low")) + "–" + fmt(e.number("bounces_high"));
+    ens = std::isnan(e.number("bounces_low")) ? std::string("none finished")
+                                               : fmt(e.number("bounces_low")) + "–" + fmt(e.number("bounces_high"));
     if (e.has_number("failed") && e.number("failed") > 0) ens += " (" + fmt(e.number("failed")) + " failed)";
   }
   return count("realtime") + " / " + count("reference") + " / " + ens;

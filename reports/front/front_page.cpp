@@ -15,6 +15,7 @@
 #include "tools/io/foreign_output.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/printable_text.hpp"
+#include "verification/study/verdict_rules.hpp"
 
 namespace stoneskip {
 
@@ -111,20 +112,28 @@ FrontPageInput read_front_page_input(const fs::path& out, const std::function<Re
   std::error_code ec;
   auto linked = [&](const fs::path& p) { return fs::is_symlink(fs::symlink_status(p, ec)); };
   for (const fs::path& dir : sorted_entries(out)) {
-    if (linked(dir)) {
+    if (linked(dir) || linked(dir / "data.h5")) {
       if (is_file(dir / "data.h5")) in.skipped.push_back({relative_name(dir, out), "a link: not followed"});
       continue;
     }
     if (!is_file(dir / "data.h5")) continue;
+    // A sweep page, a damaged file, a report whose stored verdicts contradict their rules or that
+    // cannot be rendered: not shown, and said (report render would refuse it too).
     StoredReport stored;
+    RenderedReport rendered;
     try {
       stored = load_stored_report(dir / "data.h5");
-    } catch (const InputError& e) {
-      // A sweep page or a damaged file: not shown, and said.
-      in.skipped.push_back({relative_name(dir / "data.h5", out), printable_text(e.what())});
+      std::vector<std::string> contradicted = contradicted_verdicts(stored.report);
+      for (auto& c : contradicted_verdicts(stored.sections)) contradicted.push_back(std::move(c));
+      if (!contradicted.empty()) throw InputError("a stored verdict contradicts its rule: " + contradicted.front());
+      rendered = render(stored);
+    } catch (const std::exception& e) {
+      std::string why = e.what();
+      const std::string file = (dir / "data.h5").string() + ": ";
+      if (why.rfind(file, 0) == 0) why = why.substr(file.size());  // the path is the line's own
+      in.skipped.push_back({relative_name(dir / "data.h5", out), printable_text(why)});
       continue;
     }
-    const RenderedReport rendered = render(stored);
     FrontReport r;
     r.folder = relative_name(dir, out);
     r.kind = stored.kind;
@@ -175,8 +184,10 @@ FrontPageInput read_front_page_input(const fs::path& out, const std::function<Re
     FrontThrow t;
     try {
       t = read_throw(f, out);
-    } catch (const InputError& e) {
-      in.skipped.push_back({relative_name(f, out), printable_text(e.what())});
+    } catch (const std::exception& e) {
+      std::string why = e.what();
+      if (why.rfind(f.string() + ": ", 0) == 0) why = why.substr(f.string().size() + 2);
+      in.skipped.push_back({relative_name(f, out), printable_text(why)});
       continue;
     }
     if (t.runs.empty()) {  // no realtime or reference group: another file (a report's data.h5, say)
@@ -227,7 +238,9 @@ std::string front_page_markdown(const FrontPageInput& in) {
     for (const auto& th : in.throws) {
       std::map<std::string, std::string> cell{{"realtime", "–"}, {"reference", "–"}};
       for (const auto& r : th.runs) cell[r.solver] = fmt(r.bounces) + ", " + fmt(r.distance_m, 3) + ", " + r.outcome;
-      t.row({"[" + code(fs::path(th.file).filename().string()) + "](" + link(th.file) + ")", th.title, th.case_file.empty() ? "–" : "`" + th.case_file + "`",
+      const std::string title = printable_text(th.title);  // a case's own words: one line in a cell
+      t.row({"[" + code(fs::path(th.file).filename().string()) + "](" + link(th.file) + ")", title,
+             th.case_file.empty() ? "–" : code(th.case_file),
              cell["realtime"], cell["reference"]});
     }
     md << t.str() << "\n";
@@ -250,8 +263,8 @@ std::string front_page_markdown(const FrontPageInput& in) {
   }
   if (!in.skipped.empty()) {
     md << "## Not shown\n\n"
-       << "Found in this folder and left off this page (the main job writes none of them):\n\n";
-    for (const auto& s : in.skipped) md << "* " << code(s.path) << ": " << s.reason << "\n";
+       << "Found in this folder and left off this page, each with the reason:\n\n";
+    for (const auto& s : in.skipped) md << "* " << code(s.path) << ": " << code(s.reason) << "\n";
     md << "\n";
   }
   md << "## Provenance\n\n";

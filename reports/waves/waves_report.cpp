@@ -136,6 +136,14 @@ void require_one_story(const Record& c, const std::string& name, const Record& q
       if (!same(f.number(key), x)) fail(name + " fit " + key, f.number(key), x);
       if (!same(v.number(key), x)) fail(name + " verdict's " + key, v.number(key), x);
     }
+    // The refinements at which the error grew, an input of the verdict (order_record.cpp).
+    if (v.has_number("refinements")) {
+      double grew = 0;
+      for (double p : fit.pairwise) grew += p > 0 ? 0 : 1;
+      if (!same(v.number("refinements"), double(fit.pairwise.size())))
+        fail(name + " verdict's refinements", v.number("refinements"), double(fit.pairwise.size()));
+      if (!same(v.number("growing_refinements"), grew)) fail(name + " verdict's growing_refinements", v.number("growing_refinements"), grew);
+    }
   }
   for (const char* key : {"tolerance", "minimum_order", "expected_order"})
     if (!same(v.number(key), c.number(key))) fail(name + " verdict's " + key, v.number(key), c.number(key));

@@ -93,6 +93,7 @@ struct CaptureArgs {
   std::vector<std::string> scene_sets;
   ResourceLimits limits;
   // throw's --members and --seed, registered only to be refused by name (it draws no ensemble).
+  CLI::Option* validate_case = nullptr;  // validate's --case (given, or the default)
   CLI::Option* throw_members = nullptr;
   CLI::Option* throw_seed = nullptr;
 };
@@ -150,9 +151,11 @@ void add_common(CLI::App* cmd, CaptureArgs& a, bool ensemble) {
   cmd->add_option("--seed", a.seed, "Seed of the ensemble's random draws");
 }
 
-void add_case(CLI::App* cmd, CaptureArgs& a) {
-  cmd->add_option("--case", a.case_file, "Stone case giving the stone, water and solver settings (default cases/paper_8ms_spin.toml)");
+// where: the command's --case option, so that a command can tell a default from a given one.
+void add_case(CLI::App* cmd, CaptureArgs& a, CLI::Option** where = nullptr) {
+  CLI::Option* o = cmd->add_option("--case", a.case_file, "Stone case giving the stone, water and solver settings (default cases/paper_8ms_spin.toml)");
   cmd->add_option("--set", a.sets, "Override a case key: section.key=value (repeatable)");
+  if (where) *where = o;
 }
 
 CaptureOptions capture_options(const CaptureArgs& a, const Trace& t) {
@@ -280,11 +283,15 @@ void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
   show("spin", an.spin_rev_s, "rev/s");
   show("height above the water", an.height_m, "m");
   if (sim) {
-    if (sim->realtime) std::printf("  bounces: real-time %d", sim->realtime->bounces);
-    if (sim->reference) std::printf(", reference %d", sim->reference->bounces);
-    if (!sim->ensemble_bounces.empty())
-      std::printf(", ensemble median %d [%d, %d] of %zu", sim->bounces_median, sim->bounces_low, sim->bounces_high,
-                  sim->ensemble_bounces.size());
+    auto run = [](const ThrowResult& t) { return (t.outcome == Outcome::failed ? "failed after " : "") + std::to_string(t.bounces); };
+    if (sim->realtime) std::printf("  bounces: real-time %s", run(*sim->realtime).c_str());
+    if (sim->reference) std::printf(", reference %s", run(*sim->reference).c_str());
+    if (!sim->ensemble_bounces.empty() && sim->ensemble_failed == static_cast<int>(sim->ensemble_bounces.size()))
+      std::printf(", ensemble: all %zu runs failed", sim->ensemble_bounces.size());
+    else if (!sim->ensemble_bounces.empty())
+      std::printf(", ensemble median %d [%d, %d] of %zu%s", sim->bounces_median, sim->bounces_low, sim->bounces_high,
+                  sim->ensemble_bounces.size(),
+                  sim->ensemble_failed > 0 ? (" (" + std::to_string(sim->ensemble_failed) + " failed)").c_str() : "");
     std::printf("\n");
   }
 }
@@ -380,9 +387,11 @@ void validate(const CaptureArgs& a) {
   if (a.members < 0 || a.members == 1)
     throw_input_error("--members", 0, "",
                       "must be 0 (no ensemble, no intervals) or at least 2 (got " + std::to_string(a.members) + ")");
-  if (a.no_simulate && (!a.sets.empty() || a.case_file != CaptureArgs{}.case_file))
+  if (a.no_simulate && (!a.sets.empty() || (a.validate_case && a.validate_case->count() > 0)))
     throw InputError("capture validate: --case and --set are not used with --no-simulate (no solver runs)");
   if (a.scene.empty() && !a.scene_sets.empty()) throw InputError("capture validate: --scene-set needs --scene");
+  if (!a.out.empty() && a.members == 0)
+    throw InputError("capture validate: --members 0 with --out: the report's intervals and bounce spread need an ensemble");
   refuse_output_over_inputs(a.out, OutputKind::folder, inputs_of(a, c ? &*c : nullptr, scene ? &*scene : nullptr));
   if (c) {
     // Limits before any work (cases/README.md, Limits): every capture's ensemble is a throw per member.
@@ -719,7 +728,7 @@ void add_capture(CLI::App& app) {
   v->add_option("--scene", a->scene, "Also throw each usable capture into this scene case against both references (its report section shows them)");
   v->add_option("--scene-set", a->scene_sets, "Override a key of the scene case: section.key=value (repeatable)");
   add_common(v, *a, true);
-  add_case(v, *a);
+  add_case(v, *a, &a->validate_case);
   add_limit_options(v, a->limits);
   v->callback([a] { validate(*a); });
 

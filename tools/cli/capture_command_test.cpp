@@ -179,7 +179,10 @@ BOOST_AUTO_TEST_CASE(a_throw_without_an_ensemble_claims_no_interval) {
                                  "capture throw " + file + " --scene-set water.nx=10",
                                  "capture validate " + file + " --members 1",
                                  "capture validate " + file + " --no-simulate --case /nonexistent.toml",
-                                 "capture validate " + file + " --no-simulate --set stone.radius_m=-1"}) {
+                                 "capture validate " + file + " --no-simulate --set stone.radius_m=-1",
+                                 "capture validate " + file + " --no-simulate --case cases/paper_8ms_spin.toml",
+                                 "capture validate " + file + " --no-simulate --members 0 --out /tmp/stoneskip_no_report_" +
+                                     std::to_string(::getpid())}) {
     const auto r = stoneskip::test::run_stoneskip(bad);
     BOOST_TEST(r.status == 2, bad << ": " << r.out);
     BOOST_TEST(std::count(r.out.begin(), r.out.end(), '\n') == 1, bad << ": " << r.out);

@@ -9,9 +9,7 @@
 // naming the file and the line or key; an output place that cannot be written is bad input too),
 // 3 an internal error, 128 + N stopped by signal N (SIGINT 130, SIGTERM 143: temporaries removed,
 // tools/io/signal_cleanup.hpp).
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <iostream>
@@ -97,14 +95,16 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "stoneskip: unknown command '%s' (see --help)\n", one_line(argv[1]).c_str());
     return 2;
   }
+  int code = 0;
   try {
     app.parse(argc, argv);
+    code = stoneskip::cli::exit_code();
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    code = app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    code = app.exit(e);
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    code = app.exit(e);
   } catch (const CLI::ParseError& e) {
     // Usage errors are bad input: one line, exit 2.
     std::fprintf(stderr, "stoneskip: %s (see --help)\n", one_line(e.what()).c_str());
@@ -121,14 +121,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "stoneskip: internal error: %s\n", one_line(e.what()).c_str());
     return 3;
   }
-  // What went to stdout must have arrived: a full disk or a closed pipe behind a redirection
-  // would otherwise leave an empty or cut result file beside exit 0.
+  // What went to stdout must have arrived: a full disk behind a redirection would otherwise leave
+  // an empty or cut result beside exit 0 (a closed pipe ends the process with SIGPIPE first). Exit
+  // 2 then, also over a check's exit 1: its result was not delivered.
   std::cout.flush();
-  errno = 0;
   if (!std::cout.good() || std::fflush(stdout) != 0 || std::ferror(stdout)) {
-    std::fprintf(stderr, "stoneskip: could not write the output to standard output%s%s\n", errno ? ": " : "",
-                 errno ? std::strerror(errno) : "");
+    std::fprintf(stderr, "stoneskip: could not write the output to standard output (a full disk?)\n");
     return 2;
   }
-  return stoneskip::cli::exit_code();
+  return code;
 }

@@ -359,12 +359,16 @@ std::string StoneCase::resolved_settings() const {
       << "\nattack_angle_deg = " << throw_parameters.attack_angle_deg << "\nspin_rev_s = " << throw_parameters.spin_rev_s
       << "\nheight_m = " << throw_parameters.height_m << "\nwobble_rad_s = " << throw_parameters.wobble_rad_s << "\n";
   }
+  // A case gives the throw's parameters or its state, never both (cases/README.md): with parameters
+  // the state they give is written as comments, so the settings still run as a case.
   const Vec3 w = angular_velocity(stone, initial);
   const auto& q = initial.orientation;
-  s << "\n[throw.state]\nposition_m = [" << initial.position_m.x() << ", " << initial.position_m.y() << ", " << initial.position_m.z()
-    << "]\nvelocity_m_s = [" << initial.velocity_m_s.x() << ", " << initial.velocity_m_s.y() << ", " << initial.velocity_m_s.z()
-    << "]\nquaternion_wxyz = [" << q.w() << ", " << q.x() << ", " << q.y() << ", " << q.z()
-    << "]\nangular_velocity_rad_s = [" << w.x() << ", " << w.y() << ", " << w.z() << "]\n";
+  const char* c = throw_from_parameters ? "# " : "";
+  s << "\n" << c << "[throw.state]" << (throw_from_parameters ? "  (the state the parameters above give)" : "") << "\n"
+    << c << "position_m = [" << initial.position_m.x() << ", " << initial.position_m.y() << ", " << initial.position_m.z()
+    << "]\n" << c << "velocity_m_s = [" << initial.velocity_m_s.x() << ", " << initial.velocity_m_s.y() << ", "
+    << initial.velocity_m_s.z() << "]\n" << c << "quaternion_wxyz = [" << q.w() << ", " << q.x() << ", " << q.y() << ", " << q.z()
+    << "]\n" << c << "angular_velocity_rad_s = [" << w.x() << ", " << w.y() << ", " << w.z() << "]\n";
   s << "\n[solver]\nscheme = \"" << to_string(realtime.scheme) << "\"\ndt_s = " << realtime.dt_s;
   if (is_adaptive(realtime.scheme))
     s << "\nrtol = " << realtime.rtol << "\natol_m = " << realtime.atol_m;

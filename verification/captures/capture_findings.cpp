@@ -259,19 +259,27 @@ Record simulation_findings(const CaptureSimulation& sim, const CaptureFindingsCo
     e.set("failed", sim.ensemble_failed);
     e.set("cpu_s", sim.ensemble_cpu_s);
     e.set("wall_s", sim.ensemble_wall_s);
-    e.set("bounces_low", sim.bounces_low);
-    e.set("bounces_median", sim.bounces_median);
-    e.set("bounces_high", sim.bounces_high);
+    // Every member failed: no count to take quantiles of (NaN, not the −1 that marks a failure).
+    const bool none = sim.ensemble_failed == static_cast<int>(sim.ensemble_bounces.size());
+    auto count = [none](int c) { return none ? kNaN : double(c); };
+    e.set("bounces_low", count(sim.bounces_low));
+    e.set("bounces_median", count(sim.bounces_median));
+    e.set("bounces_high", count(sim.bounces_high));
     e.set("low_percent", 100 * kIntervalLowQuantile);
     e.set("high_percent", 100 * kIntervalHighQuantile);
     Table h{{"bounces", "members"}, {}};
     for (const auto& [b, m] : sim.bounce_histogram) h.add_row({double(b), double(m)});
     e.set_table("histogram", h);
     Record in;
-    in.set("bounces_low", sim.bounces_low).set("bounces_high", sim.bounces_high).set("failed_runs", sim.ensemble_failed);
+    in.set("bounces_low", count(sim.bounces_low)).set("bounces_high", count(sim.bounces_high)).set("failed_runs", sim.ensemble_failed);
     const std::string range = sim.bounces_low == sim.bounces_high
                                   ? bounce_words(sim.bounces_low)
                                   : num(sim.bounces_low) + " to " + bounce_words(sim.bounces_high);
+    if (none)
+      decide_verdict(e, "spread", "bounce_spread", in,
+                     "no member finished: all " + num(double(sim.ensemble_bounces.size())) +
+                         " throws drawn from the capture's intervals failed in the real-time model");
+    else
     decide_verdict(e, "spread", "bounce_spread", in,
                    "the central " + num(100 * (kIntervalHighQuantile - kIntervalLowQuantile)) + " % of the " +
                        num(double(sim.ensemble_bounces.size())) +

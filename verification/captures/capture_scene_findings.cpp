@@ -79,10 +79,15 @@ Record stone(const CaptureSceneComparison& c) {
   r.set("reference_cpu_s", c.reference.stats.cpu_s).set("reference_wall_s", c.reference.stats.wall_s);
   Record in;
   in.set("realtime_bounces", c.scene.stone.bounces).set("reference_bounces", c.reference.bounces);
+  // A failed run's bounces until the failure are not its count (rule bounce_agreement).
+  in.set("realtime_failed", c.scene.stone.outcome == Outcome::failed);
+  in.set("reference_failed", c.reference.outcome == Outcome::failed);
+  auto made = [](const ThrowResult& t) {
+    return (t.outcome == Outcome::failed ? "fails after " : "makes ") + bounce_words(t.bounces);
+  };
   decide_verdict(r, "agreement", "bounce_agreement", in,
-                 "in the scene's " + num(c.scene.simulated_s) + " s the scene's stone makes " +
-                     bounce_words(c.scene.stone.bounces) + ", the CVODE reference on still water " +
-                     bounce_words(c.reference.bounces) + "; the first " + num(double(c.contacts.size()), 9) +
+                 "in the scene's " + num(c.scene.simulated_s) + " s the scene's stone " + made(c.scene.stone) +
+                     ", the CVODE reference on still water " + made(c.reference) + "; the first " + num(double(c.contacts.size()), 9) +
                      " contact(s) start at most " + num(1e3 * c.max_start_difference_s) + " ms apart (the stepper on "
                      "still water: " + num(1e3 * c.still_max_start_difference_s) + " ms)");
   return r;

@@ -91,7 +91,7 @@ const std::map<std::string, Rule>& rules() {
          f.points = static_cast<int>(in.number("points"));
          // Only how many refinements grew the error matters to the rule (order_fit.hpp); records
          // written before it was an input have none.
-         if (in.has_number("refinements")) {
+         if (in.has_number("refinements") && in.has_number("growing_refinements")) {
            const long n = static_cast<long>(in.number("refinements")), grew = static_cast<long>(in.number("growing_refinements"));
            f.pairwise.assign(static_cast<std::size_t>(std::max(0L, n)), 1.0);
            for (long k = 0; k < grew && k < n; ++k) f.pairwise[static_cast<std::size_t>(k)] = -1.0;
