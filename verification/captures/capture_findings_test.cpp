@@ -88,6 +88,16 @@ CaptureAnalysis small_analysis() {
   return a;
 }
 
+// A nominal throw that makes 1 bounce in both solvers (no ensemble yet).
+CaptureSimulation one_bounce_each() {
+  CaptureSimulation sim;
+  sim.realtime.emplace();
+  sim.realtime->bounces = 1;
+  sim.reference.emplace();
+  sim.reference->bounces = 1;
+  return sim;
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(capture_findings_)
@@ -158,11 +168,7 @@ BOOST_AUTO_TEST_CASE(the_findings_read_back_from_hdf5_unchanged_and_their_verdic
   // from its stored inputs (1 and 1 bounces: the same count; an ensemble from 0 to 2: undecided).
   CaptureAnalysis a = small_analysis();
   judge_capture(a, a.options.rules);
-  CaptureSimulation sim;
-  sim.realtime.emplace();
-  sim.realtime->bounces = 1;
-  sim.reference.emplace();
-  sim.reference->bounces = 1;
+  CaptureSimulation sim = one_bounce_each();
   sim.ensemble_bounces = {0, 1, 2};
   sim.bounce_histogram = {{0, 1}, {1, 1}, {2, 1}};
   sim.bounces_low = 0;
@@ -205,11 +211,7 @@ BOOST_AUTO_TEST_CASE(a_failed_run_decides_no_count) {
   // member is NaN in the stored table, not its partial count.
   CaptureAnalysis a = small_analysis();
   judge_capture(a, a.options.rules);
-  CaptureSimulation sim;
-  sim.realtime.emplace();
-  sim.realtime->bounces = 1;
-  sim.reference.emplace();
-  sim.reference->bounces = 1;
+  CaptureSimulation sim = one_bounce_each();
   sim.reference->outcome = Outcome::failed;
   sim.ensemble_bounces = {1, -1, 1};
   sim.ensemble_failed = 1;
