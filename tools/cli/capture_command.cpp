@@ -92,8 +92,8 @@ struct CaptureArgs {
   std::string scene;
   std::vector<std::string> scene_sets;
   ResourceLimits limits;
-  // throw's --members and --seed, registered only to be refused by name (it draws no ensemble).
   CLI::Option* validate_case = nullptr;  // validate's --case (given, or the default)
+  // throw's --members and --seed, registered only to be refused by name (it draws no ensemble).
   CLI::Option* throw_members = nullptr;
   CLI::Option* throw_seed = nullptr;
 };

@@ -275,20 +275,17 @@ Record simulation_findings(const CaptureSimulation& sim, const CaptureFindingsCo
     const std::string range = sim.bounces_low == sim.bounces_high
                                   ? bounce_words(sim.bounces_low)
                                   : num(sim.bounces_low) + " to " + bounce_words(sim.bounces_high);
-    if (none)
-      decide_verdict(e, "spread", "bounce_spread", in,
-                     "no member finished: all " + num(double(sim.ensemble_bounces.size())) +
-                         " throws drawn from the capture's intervals failed in the real-time model");
-    else
-    decide_verdict(e, "spread", "bounce_spread", in,
-                   "the central " + num(100 * (kIntervalHighQuantile - kIntervalLowQuantile)) + " % of the " +
-                       num(double(sim.ensemble_bounces.size())) +
-                       " throws drawn from the capture's intervals make " + range + " in the real-time model (median " +
-                       num(sim.bounces_median) + ")" +
-                       (sim.ensemble_failed > 0 ? "; " + num(double(sim.ensemble_failed)) + " of the " +
-                                                      num(double(sim.ensemble_bounces.size())) +
-                                                      " runs failed and have no count, so the spread is that of the rest"
-                                                : std::string()));
+    const std::string why =
+        none ? "no member finished: all " + num(double(sim.ensemble_bounces.size())) +
+                   " throws drawn from the capture's intervals failed in the real-time model"
+             : "the central " + num(100 * (kIntervalHighQuantile - kIntervalLowQuantile)) + " % of the " +
+                   num(double(sim.ensemble_bounces.size())) + " throws drawn from the capture's intervals make " + range +
+                   " in the real-time model (median " + num(sim.bounces_median) + ")" +
+                   (sim.ensemble_failed > 0 ? "; " + num(double(sim.ensemble_failed)) + " of the " +
+                                                  num(double(sim.ensemble_bounces.size())) +
+                                                  " runs failed and have no count, so the spread is that of the rest"
+                                            : std::string());
+    decide_verdict(e, "spread", "bounce_spread", in, why);
   }
   return r;
 }
