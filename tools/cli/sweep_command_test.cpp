@@ -5,7 +5,9 @@
 // result table itself for the figures' data; the sweep file's text for bad-input messages.
 #include <boost/test/unit_test.hpp>
 
+#include <fcntl.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -253,6 +255,23 @@ BOOST_AUTO_TEST_CASE(bad_sweep_files_fail_before_any_throw_with_one_line_and_no_
   const fs::path nowhere = work() / "no_such_folder" / "x.h5";
   expect_bad_input(command("sweep " + (work() / "bad.toml").string() + " --out " + nowhere.string()),
                    {nowhere.string(), "does not exist"}, nowhere);
+}
+
+BOOST_AUTO_TEST_CASE(a_second_sweep_into_a_running_one_is_told_it_is_running) {
+  // Oracle: the journal's writer holds flock(LOCK_EX) while it runs (verification/sweep/journal.cpp);
+  // a lock taken here stands for it. A second sweep, with or without --resume, is refused (exit 2,
+  // one line) saying a sweep is running, not that one was interrupted; the journal is left alone.
+  const fs::path sweep = setup("live", grid_sweep(2, 2, "[\"realtime\"]"));
+  const fs::path out = work() / "live.h5", journal = out.string() + ".journal";
+  fs::remove(out);
+  { std::ofstream(journal) << "a running sweep's journal"; }
+  const int fd = ::open(journal.c_str(), O_RDONLY);
+  BOOST_REQUIRE(fd >= 0);
+  BOOST_REQUIRE(::flock(fd, LOCK_EX | LOCK_NB) == 0);
+  for (const char* resume : {"", " --resume"})
+    expect_bad_input(command("sweep " + sweep.string() + " --out " + out.string() + resume), {"another sweep is running"}, out, true);
+  ::close(fd);
+  fs::remove(journal);
 }
 
 BOOST_AUTO_TEST_CASE(a_killed_sweep_resumes_to_the_same_table_computing_only_what_is_missing) {

@@ -56,6 +56,18 @@ int lock_or_fail(const fs::path& path, int fd) {
   return fd;
 }
 
+}  // namespace
+
+bool journal_in_use(const fs::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+  if (fd < 0) return false;
+  const bool held = ::flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+  ::close(fd);  // releases the lock this probe may have taken
+  return held;
+}
+
+namespace {
+
 // Reads records from the start; returns the offset just past the last good record.
 std::size_t read_records(const std::vector<unsigned char>& bytes, std::vector<std::pair<std::uint32_t, std::vector<unsigned char>>>& out) {
   std::size_t pos = 0;

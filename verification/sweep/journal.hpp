@@ -51,6 +51,10 @@ struct JournalRecovery {
 // InputError if another sweep holds the journal's lock.
 bool remove_journal_with_torn_header(const std::filesystem::path& path);
 
+// True if a running sweep holds the journal at `path` (its writer's flock, as lock_or_fail takes
+// it); false for a journal nobody writes (an interrupted sweep's) or a path that cannot be opened.
+bool journal_in_use(const std::filesystem::path& path);
+
 class SweepJournal {
  public:
   // A new journal; InputError if it exists or cannot be created or locked.

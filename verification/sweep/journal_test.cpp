@@ -274,8 +274,16 @@ BOOST_AUTO_TEST_CASE(a_journal_being_written_cannot_be_opened_twice) {
   SweepJournal j = SweepJournal::create(p, kId, 1.0);
   JournalRecovery rec;
   BOOST_CHECK_THROW(SweepJournal::resume(p, kId, 1.0, rec), InputError);
+  // A second sweep is told a sweep is running, not that one was interrupted (journal_in_use).
+  BOOST_TEST(journal_in_use(p));
   j.close_and_remove();
   BOOST_TEST(!fs::exists(p));
+  BOOST_TEST(!journal_in_use(p));  // no file
+  { SweepJournal idle = SweepJournal::create(p, kId, 1.0); }  // written, then its writer gone
+  if (fs::exists(p)) {
+    BOOST_TEST(!journal_in_use(p));
+    fs::remove(p);
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

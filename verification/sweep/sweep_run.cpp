@@ -101,6 +101,10 @@ SweepPlan SweepPlan::prepare(const SweepData& spec, const SweepRunOptions& optio
   const JournalIdentity identity = identity_of(plan.data_);
   std::error_code ec;
   bool journal_exists = fs::exists(jp, ec);
+  if (journal_exists && journal_in_use(jp))
+    throw_input_error(jp.string(), 0, "",
+                      "another sweep is running into this file now (it holds the journal's lock): wait for it to finish, "
+                      "or stop it and run again with --resume");
   // A journal whose header was never completed holds no finished throw (a sweep killed as it
   // started): with --resume it is replaced, and the sweep starts afresh as with no journal.
   if (options.resume && journal_exists && remove_journal_with_torn_header(jp)) {
