@@ -193,6 +193,10 @@ RenderSummary render_figures(const fs::path& dir, const std::vector<Figure>& fig
       std::string errors;
       if (!run_gnuplot(fig_dir, script_name(f, kind), image.temporary_path().filename().string(), errors)) {
         summary.failures.push_back(f.name + "." + kind + ": " + errors.substr(0, errors.find('\n', 200)));
+        // No picture rather than an older one beside this data (the page says which failed). The
+        // name was checked above to be a plain file or absent, and render replaces only its own.
+        std::error_code ec;
+        fs::remove(fig_dir / (f.name + "." + kind), ec);
         continue;
       }
       image.commit();
