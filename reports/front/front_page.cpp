@@ -112,11 +112,19 @@ FrontPageInput read_front_page_input(const fs::path& out, const std::function<Re
   std::error_code ec;
   auto linked = [&](const fs::path& p) { return fs::is_symlink(fs::symlink_status(p, ec)); };
   for (const fs::path& dir : sorted_entries(out)) {
-    if (linked(dir) || linked(dir / "data.h5")) {
-      if (is_file(dir / "data.h5")) in.skipped.push_back({relative_name(dir, out), "a link: not followed"});
+    // A report folder is one holding a data.h5 of any kind; what is not a plain file there is said.
+    std::error_code e2;
+    const fs::path data = dir / "data.h5";
+    const bool present = fs::exists(fs::symlink_status(data, e2));
+    if (linked(dir)) {
+      if (present) in.skipped.push_back({relative_name(dir, out), "a link: not followed"});
       continue;
     }
-    if (!is_file(dir / "data.h5")) continue;
+    if (!present) continue;
+    if (linked(data) || !is_file(data)) {
+      in.skipped.push_back({relative_name(data, out), linked(data) ? "a link: not followed" : "not a plain file"});
+      continue;
+    }
     // A sweep page, a damaged file, a report whose stored verdicts contradict their rules or that
     // cannot be rendered: not shown, and said (report render would refuse it too).
     StoredReport stored;
@@ -180,7 +188,10 @@ FrontPageInput read_front_page_input(const fs::path& out, const std::function<Re
       in.skipped.push_back({relative_name(f, out), "a link: not followed"});
       continue;
     }
-    if (!is_file(f)) continue;
+    if (!is_file(f)) {
+      in.skipped.push_back({relative_name(f, out), "not a plain file"});
+      continue;
+    }
     FrontThrow t;
     try {
       t = read_throw(f, out);

@@ -93,9 +93,9 @@ struct CaptureArgs {
   std::vector<std::string> scene_sets;
   ResourceLimits limits;
   CLI::Option* validate_case = nullptr;  // validate's --case (given, or the default)
-  // throw's --members and --seed, registered only to be refused by name (it draws no ensemble).
-  CLI::Option* throw_members = nullptr;
-  CLI::Option* throw_seed = nullptr;
+  // throw's ensemble options, registered only to be refused by name (it draws no ensemble).
+  std::vector<CLI::Option*> throw_refused;
+  std::string refused_value;
 };
 
 void add_read(CLI::App* cmd, CaptureArgs& a) {
@@ -128,8 +128,9 @@ CaptureReadOptions read_options(const CaptureArgs& a) {
   return o;
 }
 
-// ensemble: the command draws the ensemble (validate); throw runs the nominal throw alone, so it
-// has no --members or --seed to ignore.
+// ensemble: the command draws the ensemble (validate); throw runs the nominal throw alone, so the
+// options that only shape the ensemble (--max-accel-g, --max-rate-deg-s: what a clipped span may
+// hide; --members, --seed) are refused by name there rather than ignored.
 void add_common(CLI::App* cmd, CaptureArgs& a, bool ensemble) {
   add_read(cmd, a);
   cmd->add_option("--mount", a.mounts, "Mounting setting key=value (stone_normal, stone_forward, stone_offset_m, lever_arm_m, lever_arm_rel_uncertainty), repeatable");
@@ -138,15 +139,16 @@ void add_common(CLI::App* cmd, CaptureArgs& a, bool ensemble) {
   cmd->add_option("--button", a.button, "The action button held through the swing (default B)")->check(CLI::IsMember({"A", "B"}));
   cmd->add_option("--thrower", a.thrower, "Virtual thrower setting key=value (height_mapping, release_height_m, still_height_m, height_uncertainty_m, speed_scale, spin_scale, finger_spin_rev_s), repeatable");
   cmd->add_option("--saturation-g", a.saturation_g, "An axis at or beyond this |a| is clipped, g (default 3.4)");
+  if (!ensemble) {
+    const char* unused = "Not used: capture throw draws no ensemble (capture validate does)";
+    for (const char* name : {"--max-accel-g", "--max-rate-deg-s", "--members", "--seed"})
+      a.throw_refused.push_back(cmd->add_option(name, a.refused_value, unused));
+    return;
+  }
   cmd->add_option("--max-accel-g", a.max_accel_g, "Largest acceleration a clipped span may hide, g (default 20)");
   cmd->add_option("--max-rate-deg-s", a.max_rate_deg_s,
                   "Largest angular rate a span with the MotionPlus at the end of its range may hide, deg/s")
       ->capture_default_str();
-  if (!ensemble) {
-    a.throw_members = cmd->add_option("--members", a.members, "Not used: capture throw draws no ensemble (capture validate does)");
-    a.throw_seed = cmd->add_option("--seed", a.seed, "Not used: capture throw draws no ensemble (capture validate does)");
-    return;
-  }
   cmd->add_option("--members", a.members, "Ensemble size for the intervals and the bounce distribution (default 64; 0: none, no intervals)");
   cmd->add_option("--seed", a.seed, "Seed of the ensemble's random draws");
 }
@@ -256,9 +258,9 @@ void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
   if (!an.can_throw()) return;
   // Without an ensemble (capture throw; validate --members 0) there is no interval to print.
   const bool intervals = !an.ensemble.empty();
-  const auto show = [intervals](const char* name, const Interval& v, const char* unit) {
-    if (intervals) std::printf("    %-24s %8.3f  [%.3f, %.3f] %s\n", name, v.nominal, v.low, v.high, unit);
-    else std::printf("    %-24s %8.3f  %s\n", name, v.nominal, unit);
+  const auto show = [intervals](const char* name, const Interval& v, const std::string& unit) {
+    if (intervals) std::printf("    %-24s %8.3f  [%.3f, %.3f] %s\n", name, v.nominal, v.low, v.high, unit.c_str());
+    else std::printf("    %-24s %8.3f  %s\n", name, v.nominal, unit.c_str());
   };
   const TimingStats& t = an.timing.stats;
   std::printf("  timing: rate %.1f Hz (mean %.1f Hz), jitter %.2f ms, intervals %.1f-%.1f ms, %d gaps (about %ld reports "
@@ -269,7 +271,9 @@ void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
   std::printf("  as measured (the stone at the remote's mounting, in the room)%s:\n",
               intervals ? "" : "; no intervals (no ensemble: capture validate --members N gives them)");
   show("speed", an.measured_speed_m_s,
-       an.clipped ? "m/s (accelerometer clipped: the lever-arm value; the interval spans the accelerometer's bounds)" : "m/s");
+       !an.clipped ? std::string("m/s")
+       : intervals ? std::string("m/s (accelerometer clipped: the lever-arm value; the interval spans the accelerometer's bounds)")
+                   : std::string("m/s (accelerometer clipped: the lever-arm value)"));
   show("  accelerometer", an.accel_speed_m_s, "m/s");
   show("  angular rate x lever", an.lever_speed_m_s, "m/s");
   show("attack angle", an.attack_angle_deg, "deg");
@@ -506,8 +510,8 @@ void validate(const CaptureArgs& a) {
 
 void throw_capture(const CaptureArgs& a) {
   if (a.scene.empty() && !a.scene_sets.empty()) throw InputError("capture throw: --scene-set needs --scene");
-  for (const CLI::Option* o : {a.throw_members, a.throw_seed})
-    if (o && o->count() > 0)
+  for (const CLI::Option* o : a.throw_refused)
+    if (o->count() > 0)
       throw InputError("capture throw: " + o->get_name() +
                        " is not used: the throw is the nominal one, with no ensemble (capture validate draws it)");
   const std::optional<StoneCase> scene = load_scene_case(a);

@@ -176,6 +176,7 @@ BOOST_AUTO_TEST_CASE(a_throw_without_an_ensemble_claims_no_interval) {
   const auto v = validate(file);
   BOOST_TEST(v["release_speed_m_s_low"].get<double>() < v["release_speed_m_s_high"].get<double>());
   for (const std::string& bad : {"capture throw " + file + " --members 8", "capture throw " + file + " --seed 3",
+                                 "capture throw " + file + " --max-rate-deg-s 100", "capture throw " + file + " --max-accel-g 900",
                                  "capture throw " + file + " --scene-set water.nx=10",
                                  "capture validate " + file + " --members 1",
                                  "capture validate " + file + " --no-simulate --case /nonexistent.toml",

@@ -57,6 +57,9 @@ BOOST_AUTO_TEST_CASE(what_is_not_shown_is_said_and_links_are_not_followed) {
     std::ofstream(f.out / "broken" / "data.h5", std::ios::binary) << h5.substr(0, 2048);
   }
   fs::create_directory_symlink(f.out / "captures", f.out / "linked");
+  fs::create_directories(f.out / "linked_data");  // a real folder whose data.h5 is a link
+  fs::create_symlink(f.out / "captures" / "data.h5", f.out / "linked_data" / "data.h5");
+  fs::create_directories(f.out / "folder_data" / "data.h5");  // a data.h5 that is a folder
   fs::create_directories(f.out / "movies");
   std::ofstream(f.out / "movies" / "fake.mp4") << "not a movie\n";
   fs::create_directories(f.out / "throws");
@@ -66,7 +69,8 @@ BOOST_AUTO_TEST_CASE(what_is_not_shown_is_said_and_links_are_not_followed) {
   BOOST_TEST(has(r.out, "1 reports, 0 movies, 0 throws"), r.out);
   const std::string md = read(f.out / "index.md");
   BOOST_TEST(has(md, "## Not shown"), md);
-  for (const char* path : {"`broken/data.h5`", "`linked`", "`movies/fake.mp4`", "`throws/report.h5`"}) {
+  for (const char* path : {"`broken/data.h5`", "`linked`", "`movies/fake.mp4`", "`throws/report.h5`", "`linked_data/data.h5`",
+                           "`folder_data/data.h5`"}) {
     BOOST_TEST(has(md, path), path << "\n" << md);
     BOOST_TEST(has(r.out, std::string("not shown: ") + std::string(path).substr(1, std::string(path).size() - 2)), path << "\n" << r.out);
   }
