@@ -434,21 +434,21 @@ Trace read_header_csv(const std::string& text, const std::string& file, const He
     constexpr double kTicks = 4294967296.0, kMaxWrapStep = 60000;
     double offset = 0;
     for (std::size_t i = 0; i < kept.size(); ++i) {
-      const double raw = kept[i]->cells[col.at(F::time)];
-      times[i] = raw + offset;
+      const double stamp = kept[i]->cells[col.at(F::time)];
+      times[i] = stamp + offset;
       if (i > 0 && times[i] < times[i - 1]) {
-        const double previous_raw = times[i - 1] - offset;
-        const bool whole = raw == std::floor(raw) && previous_raw == std::floor(previous_raw);
-        if (whole && raw >= 0 && previous_raw < kTicks && previous_raw - raw > kTicks / 2 &&
-            raw + kTicks - previous_raw <= kMaxWrapStep) {
+        const double previous_stamp = times[i - 1] - offset;
+        const bool whole = stamp == std::floor(stamp) && previous_stamp == std::floor(previous_stamp);
+        if (whole && stamp >= 0 && previous_stamp < kTicks && previous_stamp - stamp > kTicks / 2 &&
+            stamp + kTicks - previous_stamp <= kMaxWrapStep) {
           offset += kTicks;
-          times[i] = raw + offset;
+          times[i] = stamp + offset;
           t.notes.push_back(input_location(file, kept[i]->line, tc.header) +
                             ": the 32-bit tick counter wrapped; later times unwrapped (+2^32)");
           continue;
         }
         char what[160];
-        std::snprintf(what, sizeof what, "time goes backwards (%.15g after %.15g)", raw, previous_raw);
+        std::snprintf(what, sizeof what, "time goes backwards (%.15g after %.15g)", stamp, previous_stamp);
         throw_input_error(file, kept[i]->line, tc.header, what);
       }
     }

@@ -287,7 +287,7 @@ void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
   show("spin", an.spin_rev_s, "rev/s");
   show("height above the water", an.height_m, "m");
   if (sim) {
-    auto run = [](const ThrowResult& t) { return (t.outcome == Outcome::failed ? "failed after " : "") + std::to_string(t.bounces); };
+    auto run = [](const ThrowResult& r) { return (r.outcome == Outcome::failed ? "failed after " : "") + std::to_string(r.bounces); };
     if (sim->realtime) std::printf("  bounces: real-time %s", run(*sim->realtime).c_str());
     if (sim->reference) std::printf(", reference %s", run(*sim->reference).c_str());
     if (!sim->ensemble_bounces.empty() && sim->ensemble_failed == static_cast<int>(sim->ensemble_bounces.size()))

@@ -261,7 +261,7 @@ Record simulation_findings(const CaptureSimulation& sim, const CaptureFindingsCo
     e.set("wall_s", sim.ensemble_wall_s);
     // Every member failed: no count to take quantiles of (NaN, not the −1 that marks a failure).
     const bool none = sim.ensemble_failed == static_cast<int>(sim.ensemble_bounces.size());
-    auto count = [none](int c) { return none ? kNaN : double(c); };
+    auto count = [none](int n) { return none ? kNaN : double(n); };
     e.set("bounces_low", count(sim.bounces_low));
     e.set("bounces_median", count(sim.bounces_median));
     e.set("bounces_high", count(sim.bounces_high));

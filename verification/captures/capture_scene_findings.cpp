@@ -82,8 +82,8 @@ Record stone(const CaptureSceneComparison& c) {
   // A failed run's bounces until the failure are not its count (rule bounce_agreement).
   in.set("realtime_failed", c.scene.stone.outcome == Outcome::failed);
   in.set("reference_failed", c.reference.outcome == Outcome::failed);
-  auto made = [](const ThrowResult& t) {
-    return (t.outcome == Outcome::failed ? "fails after " : "makes ") + bounce_words(t.bounces);
+  auto made = [](const ThrowResult& run) {
+    return (run.outcome == Outcome::failed ? "fails after " : "makes ") + bounce_words(run.bounces);
   };
   decide_verdict(r, "agreement", "bounce_agreement", in,
                  "in the scene's " + num(c.scene.simulated_s) + " s the scene's stone " + made(c.scene.stone) +

@@ -191,11 +191,11 @@ TimedSamples analyse_timing(const Trace& trace, const TimingOptions& o) {
         phase[k] = x - std::floor(x);
       }
       std::sort(phase.begin(), phase.end());
-      double gap = phase.front() + 1.0 - phase.back(), start = phase.front();  // the wrap-around gap
+      double widest = phase.front() + 1.0 - phase.back(), start = phase.front();  // the widest gap, the wrap-around one first
       for (std::size_t k = 1; k < m; ++k)
-        if (phase[k] - phase[k - 1] > gap) gap = phase[k] - phase[k - 1], start = phase[k];
-      centre = start + 0.5 * (1.0 - gap);
-      return 1.0 - gap;
+        if (phase[k] - phase[k - 1] > widest) widest = phase[k] - phase[k - 1], start = phase[k];
+      centre = start + 0.5 * (1.0 - widest);
+      return 1.0 - widest;
     };
     auto assign = [&](double period, double centre, std::size_t m) {  // false unless increasing
       for (std::size_t k = 0; k < m; ++k) {
