@@ -57,7 +57,7 @@ nlohmann::json capture_json(const CaptureAnalysis& a, const CaptureSimulation* s
       for (const auto& [b, n] : sim->bounce_histogram) h[std::to_string(b)] = n;
       j["ensemble_bounce_histogram"] = h;
       // null where every member failed (no count to take quantiles of).
-      const bool none = sim->ensemble_failed == static_cast<int>(sim->ensemble_bounces.size());
+      const bool none = sim->every_member_failed();
       j["ensemble_bounces_low"] = none ? nlohmann::json(nullptr) : nlohmann::json(sim->bounces_low);
       j["ensemble_bounces_high"] = none ? nlohmann::json(nullptr) : nlohmann::json(sim->bounces_high);
       j["ensemble_bounces_median"] = none ? nlohmann::json(nullptr) : nlohmann::json(sim->bounces_median);

@@ -138,8 +138,7 @@ void require_one_story(const Record& c, const std::string& name, const Record& q
     }
     // The refinements at which the error grew, an input of the verdict (order_record.cpp).
     if (v.has_number("refinements")) {
-      double grew = 0;
-      for (double p : fit.pairwise) grew += p > 0 ? 0 : 1;
+      const double grew = fit.growing_refinements();
       if (!same(v.number("refinements"), double(fit.pairwise.size())))
         fail(name + " verdict's refinements", v.number("refinements"), double(fit.pairwise.size()));
       if (!same(v.number("growing_refinements"), grew)) fail(name + " verdict's growing_refinements", v.number("growing_refinements"), grew);

@@ -290,7 +290,7 @@ void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
     auto run = [](const ThrowResult& r) { return (r.outcome == Outcome::failed ? "failed after " : "") + std::to_string(r.bounces); };
     if (sim->realtime) std::printf("  bounces: real-time %s", run(*sim->realtime).c_str());
     if (sim->reference) std::printf(", reference %s", run(*sim->reference).c_str());
-    if (!sim->ensemble_bounces.empty() && sim->ensemble_failed == static_cast<int>(sim->ensemble_bounces.size()))
+    if (sim->every_member_failed())
       std::printf(", ensemble: all %zu runs failed", sim->ensemble_bounces.size());
     else if (!sim->ensemble_bounces.empty())
       std::printf(", ensemble median %d [%d, %d] of %zu%s", sim->bounces_median, sim->bounces_low, sim->bounces_high,

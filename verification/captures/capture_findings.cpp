@@ -260,7 +260,7 @@ Record simulation_findings(const CaptureSimulation& sim, const CaptureFindingsCo
     e.set("cpu_s", sim.ensemble_cpu_s);
     e.set("wall_s", sim.ensemble_wall_s);
     // Every member failed: no count to take quantiles of (NaN, not the −1 that marks a failure).
-    const bool none = sim.ensemble_failed == static_cast<int>(sim.ensemble_bounces.size());
+    const bool none = sim.every_member_failed();
     auto count = [none](int n) { return none ? kNaN : double(n); };
     e.set("bounces_low", count(sim.bounces_low));
     e.set("bounces_median", count(sim.bounces_median));

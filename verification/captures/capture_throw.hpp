@@ -33,6 +33,10 @@ struct CaptureSimulation {
   std::vector<int> ensemble_bounces;     // one per ensemble member (real-time model); −1: the run failed
   std::map<int, int> bounce_histogram;   // bounces → members, over the members that did not fail
   int ensemble_failed = 0;               // members whose run failed (they have no count)
+  // An ensemble ran and every member failed: no count to take quantiles of.
+  bool every_member_failed() const {
+    return !ensemble_bounces.empty() && ensemble_failed == static_cast<int>(ensemble_bounces.size());
+  }
   double ensemble_cpu_s = 0;   // thread CPU time of the ensemble's runs (solvers/realtime/clocks.hpp)
   double ensemble_wall_s = 0;  // … and wall-clock time
   // The interval quantiles and the median over the members that did not fail (−1: none did).

@@ -147,6 +147,12 @@ OrderFit fit_order(const std::vector<double>& h, const std::vector<double>& erro
   return fit;
 }
 
+int OrderFit::growing_refinements() const {
+  int n = 0;
+  for (double p : pairwise) n += p > 0 ? 0 : 1;
+  return n;
+}
+
 std::string OrderFit::brief() const {
   if (!valid) return "no fit: " + problem;
   char buf[128];
@@ -197,9 +203,7 @@ OrderDecision judge_order(const OrderFit& fit, const OrderJudgement& j) {
   // An error that grows at some refinement (a pairwise order ≤ 0) is not approaching C h^p, so
   // no order is claimed from it, however narrow the fit's interval (its residuals are not the
   // scatter the interval assumes): the interval alone would call an erratic series convergent.
-  int growing = 0;
-  for (double p : fit.pairwise)
-    if (!(p > 0)) ++growing;
+  const int growing = fit.growing_refinements();
   const bool claims_order = within || (misses_band && fit.order_low > j.minimum_order);
   if (claims_order && growing > 0) {
     d.verdict = OrderVerdict::order_not_established;

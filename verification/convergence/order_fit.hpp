@@ -39,6 +39,7 @@ struct OrderFit {
   double correction = 0;
   double f_statistic = 0, f_critical = 0;  // the test's F and its 95 % quantile (0: not tested)
   std::string brief() const;     // "p = 2.01 [1.98, 2.04] (5 points)"
+  int growing_refinements() const;  // pairwise orders ≤ 0 (or NaN): refinements at which the error grew
 };
 
 // The first correction term of the error's asymptotic expansion. A fixed-step one-step method of

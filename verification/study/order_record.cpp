@@ -39,10 +39,8 @@ Record& store_order_fit(Record& parent, const std::string& key, const OrderFit& 
   in.set("tolerance", j.tolerance);
   in.set("minimum_order", j.minimum_order);
   // The refinements at which the error grew (pairwise order ≤ 0): judge_order claims no order then.
-  long growing = 0;
-  for (double p : fit.pairwise) growing += p > 0 ? 0 : 1;
   in.set("refinements", static_cast<long>(fit.pairwise.size()));
-  in.set("growing_refinements", growing);
+  in.set("growing_refinements", fit.growing_refinements());
   decide_verdict(r, "verdict", "order_fit", in, judge_order(fit, j).reason);
   return r;
 }
