@@ -142,6 +142,15 @@ FrontPageInput read_front_page_input(const fs::path& out, const std::function<Re
       in.skipped.push_back({relative_name(dir / "data.h5", out), printable_text(why)});
       continue;
     }
+    // The page links the report's own index.md: without it (data written, page not yet rendered)
+    // the link would lead nowhere.
+    const fs::path page = dir / "index.md";
+    if (linked(page) || !is_file(page)) {
+      in.skipped.push_back({relative_name(page, out), linked(page) ? "a link: not followed"
+                                                                   : "missing or not a plain file (render it: stoneskip report render " +
+                                                                         relative_name(dir, out) + ")"});
+      continue;
+    }
     FrontReport r;
     r.folder = relative_name(dir, out);
     r.kind = stored.kind;
@@ -152,8 +161,10 @@ FrontPageInput read_front_page_input(const fs::path& out, const std::function<Re
     std::vector<std::string> candidates;
     if (!rendered.headline_figure.empty()) candidates.push_back(rendered.headline_figure);
     for (const auto& f : rendered.figures) candidates.push_back(f.name);
+    // Pictures only from the report's own figures/ folder: a linked folder or picture is not followed.
+    const bool own_figures = !linked(dir / "figures");
     for (const auto& name : candidates)
-      if (is_file(dir / "figures" / (name + ".png"))) {
+      if (own_figures && !linked(dir / "figures" / (name + ".png")) && is_file(dir / "figures" / (name + ".png"))) {
         r.picture = relative_name(dir / "figures" / (name + ".png"), out);
         break;
       }
@@ -175,7 +186,7 @@ FrontPageInput read_front_page_input(const fs::path& out, const std::function<Re
     m.file = relative_name(f, out);
     m.size_mb = static_cast<double>(fs::file_size(f)) / 1e6;
     for (const fs::path& p : sorted_entries(out / "movies"))
-      if (p.extension() == ".png" && p.stem().string().rfind(f.stem().string(), 0) == 0 && is_file(p)) {
+      if (p.extension() == ".png" && p.stem().string().rfind(f.stem().string(), 0) == 0 && !linked(p) && is_file(p)) {
         m.picture = relative_name(p, out);
         break;
       }

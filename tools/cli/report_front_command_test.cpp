@@ -78,6 +78,31 @@ BOOST_AUTO_TEST_CASE(what_is_not_shown_is_said_and_links_are_not_followed) {
   BOOST_TEST(!has(md, "the scene as a movie"), md);
 }
 
+BOOST_AUTO_TEST_CASE(a_report_without_its_page_is_not_linked_and_linked_figures_are_not_shown) {
+  // A copy of the report with no index.md (data written, page not rendered) would be a link that
+  // leads nowhere: it is listed under "Not shown" with the command that renders it. A copy whose
+  // figures/ is a link to another folder is shown, but with no picture read through the link.
+  Folder f;
+  BOOST_REQUIRE(fs::is_regular_file(f.out / "captures" / "index.md"));
+  BOOST_REQUIRE(fs::is_directory(f.out / "captures" / "figures"));
+  fs::create_directories(f.out / "unrendered");
+  fs::copy_file(f.out / "captures" / "data.h5", f.out / "unrendered" / "data.h5");
+  fs::create_directories(f.out / "zlinked_figures");
+  fs::copy_file(f.out / "captures" / "data.h5", f.out / "zlinked_figures" / "data.h5");
+  fs::copy_file(f.out / "captures" / "index.md", f.out / "zlinked_figures" / "index.md");
+  fs::create_directory_symlink(f.out / "captures" / "figures", f.out / "zlinked_figures" / "figures");
+  const auto r = stoneskip::test::run_stoneskip("report front " + f.out.string());
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
+  BOOST_TEST(has(r.out, "2 reports, 0 movies, 0 throws"), r.out);
+  const std::string md = read(f.out / "index.md");
+  BOOST_TEST(has(md, "`unrendered/index.md`"), md);
+  BOOST_TEST(has(md, "stoneskip report render unrendered"), md);
+  BOOST_TEST(!has(md, "(unrendered/index.md)"), md);
+  BOOST_TEST(has(md, "(zlinked_figures/index.md)"), md);
+  BOOST_TEST(has(md, "(captures/figures/"), md);
+  BOOST_TEST(!has(md, "(zlinked_figures/figures/"), md);
+}
+
 BOOST_AUTO_TEST_CASE(a_linked_output_folder_is_refused) {
   // The pages go into OUT itself: through a link they would land in another folder. Refused with
   // one line, exit 2, nothing written there (with or without a trailing slash).

@@ -137,10 +137,24 @@ SweepFile load_sweep_file(const std::string& path) { return sweep_file_from_text
 
 SweepCases::SweepCases(const SweepFile& sweep) : sweep_(sweep) {
   // 1. The base case, with the sweep's fixed overrides.
+  std::string base_text;
   try {
-    base_doc_ = parse_toml_text(read_text_file(sweep.base_file), sweep.base_file, sweep.base_sets);
+    base_text = read_text_file(sweep.base_file);
+    base_doc_ = parse_toml_text(base_text, sweep.base_file, sweep.base_sets);
     base_ = stone_case_from_document(base_doc_);
   } catch (const InputError& e) {
+    // Blame the `set` line where the base alone loads (an override that does not apply), else the base.
+    bool base_alone_loads = !base_text.empty();
+    if (base_alone_loads && !sweep.base_sets.empty()) {
+      try {
+        stone_case_from_document(parse_toml_text(base_text, sweep.base_file, {}));
+      } catch (const InputError&) {
+        base_alone_loads = false;
+      }
+    }
+    if (base_alone_loads && !sweep.base_sets.empty())
+      throw_input_error(sweep.file, sweep.set_line, "set",
+                        std::string("an override does not apply to the base case: ") + e.what());
     throw_input_error(sweep.file, sweep.base_line, "base", std::string("the base case does not load: ") + e.what());
   }
   if (base_.water && runs_reference(sweep.solvers))

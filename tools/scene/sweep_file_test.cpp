@@ -204,6 +204,10 @@ BOOST_AUTO_TEST_CASE(bad_sweep_files_fail_with_one_line_naming_file_line_and_key
       {replace(kGrid, "key = \"environment.water_coefficient\"\nfrom = 0.5\nto = 2.0\ncount = 3\nscale = \"log\"",
                "key = \"stone.segments\"\nfrom = 11\nto = 12\ncount = 3"),
        "s.toml:11: vary[2]", "expected an integer"},
+      // An override that does not apply is the `set` line's fault, not the base's (which loads alone).
+      {replace(kGrid, "solvers =", "set = [\"throw.spinn_rev_s=3\"]\nsolvers ="), "s.toml:2: set", "spinn_rev_s"},
+      {replace(kGrid, "solvers =", "set = [\"throw.spin_rev_s=fast\"]\nsolvers ="), "s.toml:2: set", "expected a number"},
+      {replace(kGrid, "solvers =", "set = [\"throw.speed_m_s=-1\"]\nsolvers ="), "s.toml:2: set", "speed_m_s"},
   };
   for (const auto& b : bad) {
     const std::string m = error_of(b.text);
