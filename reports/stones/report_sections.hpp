@@ -11,6 +11,7 @@ SectionOutput work_precision_section(const Record& work_precision);
 SectionOutput work_precision_grid_section(const Record& work_precision_grid);  // subsection 2.1
 SectionOutput sweeps_section(const Record& sweeps, const Record& fig9);
 SectionOutput count_ensembles_section(const Record& count_ensembles);  // count_ensembles_section.cpp
+SectionOutput mesh_section(const Record& mesh);                        // mesh_section.cpp
 SectionOutput hard_cases_section(const Record& hard_cases);
 SectionOutput validation_section(const Record& validation);
 SectionOutput ranking_section(const Record& validation);  // the validation record's "ranking"

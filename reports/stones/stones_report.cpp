@@ -96,6 +96,33 @@ std::string findings_markdown(const Record& secs, const std::string& md) {
     }
     if (!line.empty()) f << "* Bounce count against `" << p << "`: " << line << section_link(md, "3") << ".\n";
   }
+  if (secs.has_child("mesh")) {
+    // The paper's mesh (N = 11, diagonal cut) where the study has it, else its first mesh, against
+    // the reference mesh; and each mesh's mirror pairs.
+    const Record& m = secs.at("mesh");
+    const Table& t = m.table("meshes");
+    const auto n = t.column("segments"), cut = t.column("centre_cut"), tri = t.column("triangles");
+    const std::size_t ref = static_cast<std::size_t>(m.number("reference_mesh"));
+    std::size_t paper = ref == 0 ? 1 : 0;
+    for (std::size_t k = 0; k < t.rows(); ++k)
+      if (n[k] == 11 && cut[k] == 0 && k != ref) paper = k;
+    auto name = [&](std::size_t k) {
+      return "N = " + fmt(n[k], 6) + ", " + (cut[k] > 0 ? "centre" : "diagonal") + " cut (" + fmt(tri[k], 6) + " triangles)";
+    };
+    const std::string throws = fmt(m.number("throws"), 4);
+    f << "* Bounce counts against the mesh: the stone of " << name(paper) << " against " << name(ref) << ": **different bounce counts** on "
+      << fmt(t.column("changed")[paper], 4) << " of " << throws << " throws (ensembles, 95 % interval)";
+    if (t.column("mirror_pairs")[paper] > 0) {
+      f << "; a throw against its mirror image: different on " << fmt(t.column("mirror_different")[paper], 4) << " of "
+        << fmt(t.column("mirror_pairs")[paper], 4) << " pairs with that mesh";
+      for (std::size_t k = 0; k < t.rows(); ++k)
+        if (cut[k] > 0) {
+          f << ", " << fmt(t.column("mirror_different")[k], 4) << " with " << name(k);
+          break;
+        }
+    }
+    f << section_link(md, "3c") << ".\n";
+  }
   const Record& v = secs.at("validation");
   if (v.has_child("conventions")) {
     const Record& cv = v.at("conventions");
@@ -143,6 +170,7 @@ RenderedReport render_stones_report(const StoredReport& s) {
   if (secs.has_child("work_precision_grid")) append(out, work_precision_grid_section(secs.at("work_precision_grid")));
   append(out, sweeps_section(secs.at("sweeps"), secs.at("validation").at("fig9")));
   if (secs.has_child("count_ensembles")) append(out, count_ensembles_section(secs.at("count_ensembles")));
+  if (secs.has_child("mesh")) append(out, mesh_section(secs.at("mesh")));
   append(out, hard_cases_section(secs.at("hard_cases")));
   append(out, validation_section(secs.at("validation")));
   append(out, ranking_section(secs.at("validation")));

@@ -270,6 +270,53 @@ void read_work_precision_grid(const fs::path& dir, TomlTable t, StoneStudiesOpti
   t.finish();
 }
 
+// Bounce counts against the stone's mesh (verification/stones/mesh_study.hpp): the base case's
+// prism rebuilt with each number of segments and each rim cut.
+void read_mesh(const fs::path& dir, TomlTable t, StoneStudiesOptions& o) {
+  MeshStudyOptions& m = o.mesh;
+  o.mesh_base = load_throw(dir, t, "base");
+  const fs::path path = dir / o.mesh_base.file;
+  const StoneCase c = load_stone_case(path.string());
+  if (c.spec.shape != StoneShape::prism) t.fail("base", "the mesh study rebuilds a prism; '" + path.string() + "' has another shape");
+  if (!o.mesh_base.problem.from_parameters) t.fail("base", "the mesh study's base throw must give [throw] parameters");
+  std::vector<int> segments;
+  for (double n : positive_list(t, "segments", {11, 16, 32, 64})) {
+    if (n != std::floor(n) || n < 3 || n > 4096) t.fail("segments", "each must be a whole number in [3, 4096]");
+    if (std::find(segments.begin(), segments.end(), static_cast<int>(n)) != segments.end()) t.fail("segments", "lists one value twice");
+    segments.push_back(static_cast<int>(n));
+  }
+  std::vector<RimSplit> splits{RimSplit::diagonal, RimSplit::centre};
+  if (auto names = t.maybe_strings("rim_splits")) {
+    if (names->empty()) t.fail("rim_splits", "must not be empty");
+    splits.clear();
+    for (const auto& n : *names) {
+      RimSplit r;
+      if (!parse_rim_split(n, r)) t.fail("rim_splits", "'" + n + "' is not one of diagonal, centre");
+      if (std::find(splits.begin(), splits.end(), r) != splits.end()) t.fail("rim_splits", "'" + n + "' is listed twice");
+      splits.push_back(r);
+    }
+  }
+  m.meshes.clear();
+  for (int n : segments)
+    for (RimSplit r : splits) {
+      StoneSpec spec = c.spec;
+      spec.segments = n;
+      spec.rim_split = r;
+      m.meshes.push_back(MeshVariant{n, r, build_stone(spec, path.string())});
+    }
+  if (m.meshes.size() < 2) t.fail("segments", "the study needs at least 2 meshes (segments × rim_splits)");
+  m.spins_rev_s = any_list(t, "spins_rev_s", m.spins_rev_s);
+  for (double s : m.spins_rev_s) t.require_in("spins_rev_s", s, -200.0, 200.0);
+  m.attack_angles_deg = any_list(t, "attack_angles_deg", m.attack_angles_deg);
+  for (double a : m.attack_angles_deg) t.require_in("attack_angles_deg", a, -90.0, 90.0);
+  m.members = count(t, "members", m.members, 2, 1000);
+  if (m.members % 2 != 0) t.fail("members", "must be even (members of both signs)");
+  m.perturbation_smallest = positive(t, "perturbation_smallest", m.perturbation_smallest);
+  m.perturbation_largest = positive(t, "perturbation_largest", m.perturbation_largest);
+  t.require_in("perturbation_largest", m.perturbation_largest, m.perturbation_smallest, 0.1);
+  t.finish();
+}
+
 void read_sweeps(TomlTable t, StoneStudiesOptions& o) {
   o.max_thresholds = count(t, "max_thresholds", o.max_thresholds, 0, 1000);
   o.sweep_reference_rtol = positive(t, "reference_rtol", o.sweep_reference_rtol);
@@ -478,6 +525,7 @@ StoneStudyFile load_stone_study_file(const std::string& path, const std::vector<
   if (auto t = top.maybe_table("restarts")) read_restarts(*t, o);
   if (auto t = top.maybe_table("work_precision_grid")) read_work_precision_grid(dir, *t, o);
   read_sweeps(top.table("sweeps"), o);
+  if (auto t = top.maybe_table("mesh")) read_mesh(dir, *t, o);
   if (auto t = top.maybe_table("validation")) read_validation(*t, o);
   if (auto t = top.maybe_table("hard_cases")) read_hard_cases(*t, o);
   if (auto t = top.maybe_table("stable_step")) read_stable_step(*t, o);
@@ -488,6 +536,7 @@ StoneStudyFile load_stone_study_file(const std::string& path, const std::vector<
                               &o.stable_step_base, &o.flat_drop})
     if (!t->file.empty()) f.settings_text += "\n# case " + t->file + "\n" + t->case_text;
   for (const auto& h : o.hard) f.settings_text += "\n# hard case " + h.file + "\n" + h.case_text;
+  if (!o.mesh_base.file.empty()) f.settings_text += "\n# case " + o.mesh_base.file + "\n" + o.mesh_base.case_text;
   if (!o.work_precision_grid_base.file.empty())
     f.settings_text += "\n# case " + o.work_precision_grid_base.file + "\n" + o.work_precision_grid_base.case_text;
   std::string why;

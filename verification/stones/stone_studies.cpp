@@ -112,6 +112,7 @@ bool StoneStudiesOptions::valid(std::string* why) const {
     return false;
   };
   if (workers < 1) return fail("workers must be >= 1");
+  if (!mesh_base.file.empty() && !mesh.valid(why)) return false;
   if (convergence.dt_s.empty() || convergence.interval_steps.empty()) return fail("convergence needs steps");
   if (work_precision.dt_s.empty() || work_precision.rtol.empty()) return fail("work_precision needs steps and tolerances");
   for (const auto* list : {&work_precision_throws, &restarts.throws})
@@ -295,6 +296,14 @@ Record run_stone_studies(const StoneStudiesOptions& o, StudySink& sink) {
                                               reference_choice(r), axes, o.count_ensembles,
                                               ParallelOptions{o.workers, "stones: bounce counts on ensembles", progress});
       return count_ensembles_findings(throws, o.count_ensembles);
+    });
+
+  if (!o.mesh_base.file.empty())
+    run_section(sink, "mesh", [&] {
+      const SolverChoice solver = realtime_choice(o.mesh_base.problem.realtime);
+      const auto runs = run_mesh_study(o.mesh_base.problem, solver, o.mesh,
+                                       ParallelOptions{o.workers, "stones: bounce counts against the mesh", progress});
+      return mesh_study_findings(runs, o.mesh, solver.label());
     });
 
   run_section(sink, "hard_cases", [&] {

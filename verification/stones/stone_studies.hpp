@@ -22,6 +22,7 @@
 
 #include "verification/stones/bounce_sweep.hpp"
 #include "verification/stones/count_ensembles.hpp"
+#include "verification/stones/mesh_study.hpp"
 #include "verification/stones/hard_cases.hpp"
 #include "verification/stones/realtime_convergence.hpp"
 #include "verification/stones/reference_tolerance.hpp"
@@ -86,6 +87,9 @@ struct StoneStudiesOptions {
   int max_thresholds = 8;
   double sweep_reference_rtol = 1e-8, sweep_reference_atol = 1e-10;
   CountEnsembleOptions count_ensembles;  // the sweeps' paper-convention counts, solver against solver, on ensembles
+  // Bounce counts against the stone's mesh (optional: base file empty when not given).
+  StudyThrow mesh_base;
+  MeshStudyOptions mesh;
   HardCaseOptions hard_cases;
   StableStepOptions stable_step;
   ValidationOptions validation;

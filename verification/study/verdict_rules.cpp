@@ -292,6 +292,16 @@ const std::map<std::string, Rule>& rules() {
          if (in.number("difference_low") > 0 || in.number("difference_high") < 0) return std::string("different bounce counts");
          return std::string(in.number("count_spread") > 0 ? "no difference established" : "same bounce count");
        }},
+      {"ensemble_count_difference",
+       [](const Record& in) {
+         // Two settings of one throw (two meshes; a throw and its mirror image) on ensembles: the
+         // 95 % interval of the difference of the mean counts; nothing is decided on an ensemble
+         // with a failed run (see ensemble_bounce_agreement).
+         if (!in.flag("valid")) return std::string("not measured");
+         if (in.number("failed_runs") > 0) return std::string("not decided: runs failed");
+         if (in.number("difference_low") > 0 || in.number("difference_high") < 0) return std::string("different bounce counts");
+         return std::string(in.number("count_spread") > 0 ? "no difference established" : "same bounce count");
+       }},
       {"coupling_change",
        [](const Record& in) {
          // Bounce counts on ensembles: the 95 % interval of the difference of the means; nothing is

@@ -44,6 +44,11 @@
 //                        reference_failed (runs without a count) → not measured |
 //                        not decided: runs failed | different bounce counts |
 //                        no difference established | same bounce count
+//   ensemble_count_difference  valid, difference_low, difference_high (95 % interval of two
+//                        settings' ensemble mean counts: two meshes, or a throw and its mirror),
+//                        count_spread, failed_runs (runs of either ensemble without a count) →
+//                        not measured | not decided: runs failed | different bounce counts |
+//                        no difference established | same bounce count
 //   coupling_change      difference_low, difference_high (95 % interval of the ensembles' mean bounce
 //                        counts, verification/study/ensemble_difference.hpp), count_spread (sum of
 //                        their standard deviations), max_time_change_s (first contact),

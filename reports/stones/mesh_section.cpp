@@ -1,0 +1,143 @@
+// The stones report's section on bounce counts against the stone's mesh
+// (verification/stones/mesh_study.hpp), formatted from its stored record.
+#include <cstdio>
+
+#include "reports/common/markdown.hpp"
+#include "reports/stones/report_sections.hpp"
+
+namespace stoneskip {
+
+namespace {
+
+std::string mesh_name(const Table& meshes, std::size_t m) {
+  const auto n = meshes.column("segments"), c = meshes.column("centre_cut"), t = meshes.column("triangles");
+  return "N = " + fmt(n[m], 6) + ", " + (c[m] > 0 ? "centre" : "diagonal") + " cut (" + fmt(t[m], 6) + " triangles)";
+}
+
+std::string throw_name(double spin, double attack) { return "spin " + fmt(spin, 4) + " rev/s, attack " + fmt(attack, 4) + "°"; }
+
+// "k of n" tallies of one mesh, in words.
+std::string tally_words(double changed, double none, double same, double undecided) {
+  std::string s = "different on " + fmt(changed, 4) + ", no difference established on " + fmt(none, 4) + ", the same count on " +
+                  fmt(same, 4);
+  if (undecided > 0) s += ", not decided (runs failed, or too few members ran) on " + fmt(undecided, 4);
+  return s;
+}
+
+}  // namespace
+
+SectionOutput mesh_section(const Record& m) {
+  SectionWriter w(m, "3c. Bounce counts against the stone's mesh");
+  const Table& meshes = m.table("meshes");
+  const Table& counts = m.table("counts");
+  const std::size_t ref = static_cast<std::size_t>(m.number("reference_mesh"));
+  const std::size_t nm = meshes.rows();
+  w.lead("What is measured.",
+         "Is a bounce count a property of the stone, or of the triangles it is drawn with? The same throws are thrown "
+         "with prisms of N rim segments, each rim face cut along one diagonal (the paper's 44-triangle stone at N = 11: "
+         "a mesh with a hand, model/README.md §1.1) or at its centre (a mesh that is its own mirror image). The density "
+         "is the case's, so the N-gon's mass and inertia follow N. Each throw runs as an ensemble of " +
+             fmt(m.number("members"), 4) + " throws per mesh, the speed multiplied by 1 ± ε with ε log-spaced from " +
+             fmt(m.number("perturbation_smallest"), 2) + " to " + fmt(m.number("perturbation_largest"), 2) +
+             " (the same factors for every mesh), solved by " + m.text("solver") +
+             ". Each mesh's ensemble is compared with the reference mesh's, the one with the most triangles (" +
+             mesh_name(meshes, ref) +
+             "), and where the throws hold a spin and its mirror image (−spin, the same attack angle), each mesh's two "
+             "ensembles are compared with each other. Test: Welch's t interval (95 %) of the difference of the mean "
+             "counts; a difference is established only where the interval excludes 0; where a run of either ensemble "
+             "failed, nothing is decided.");
+  // Mean ± sd per mesh (rows) and throw (columns).
+  const auto thr = counts.column("throw"), spin = counts.column("spin_rev_s"), attack = counts.column("attack_angle_deg"),
+             mesh = counts.column("mesh"), mean = counts.column("count_mean"), sd = counts.column("count_sd"),
+             lo = counts.column("count_min"), hi = counts.column("count_max"), failed = counts.column("failed");
+  const std::size_t nt = static_cast<std::size_t>(m.number("throws"));
+  std::vector<std::string> headers{"mesh", "mass (g)"};
+  for (std::size_t t = 0; t < nt; ++t)
+    for (std::size_t i = 0; i < counts.rows(); ++i)
+      if (thr[i] == double(t)) {
+        headers.push_back(throw_name(spin[i], attack[i]));
+        break;
+      }
+  const Record& verdicts = m.at("verdicts");
+  MarkdownTable table(headers);
+  const auto mass = meshes.column("mass_kg");
+  for (std::size_t k = 0; k < nm; ++k) {
+    std::vector<std::string> row{mesh_name(meshes, k) + (k == ref ? " (reference)" : ""), fmt(1e3 * mass[k], 4)};
+    for (std::size_t t = 0; t < nt; ++t)
+      for (std::size_t i = 0; i < counts.rows(); ++i) {
+        if (thr[i] != double(t) || mesh[i] != double(k)) continue;
+        std::string cell = fmt_or_dash(mean[i]) + " ± " + fmt_or_dash(sd[i], 2) + " (" + fmt_or_dash(lo[i]) + "–" + fmt_or_dash(hi[i]) +
+                           (failed[i] > 0 ? ", " + fmt(failed[i], 4) + " failed" : "") + ")";
+        char key[64];
+        std::snprintf(key, sizeof key, "throw_%zu_mesh_%zu", t + 1, k + 1);
+        if (verdicts.has_child(key)) {
+          const std::string v = verdicts.at(key).text("verdict");
+          cell += v == "different bounce counts" ? " **≠**" : v == "same bounce count" ? " =" : v == "no difference established" ? "" : " ?";
+        }
+        row.push_back(cell);
+      }
+    table.row(row);
+  }
+  w.text("Mean ± sd (least–most) of the bounce counts of each ensemble. **≠**: different from the reference mesh's "
+         "(95 % interval); =: every member of both gives one and the same count; ?: not decided; no mark: no difference "
+         "established.");
+  w.table(table);
+  // The tallies, per mesh.
+  const auto changed = meshes.column("changed"), none = meshes.column("not_established"), same = meshes.column("same"),
+             undecided = meshes.column("undecided"), pairs = meshes.column("mirror_pairs"),
+             mdiff = meshes.column("mirror_different"), mnone = meshes.column("mirror_not_established"),
+             msame = meshes.column("mirror_same"), mund = meshes.column("mirror_undecided");
+  for (std::size_t k = 0; k < nm; ++k) {
+    if (k == ref) continue;
+    std::string line = "Against the reference mesh, " + mesh_name(meshes, k) + ": " +
+                       tally_words(changed[k], none[k], same[k], undecided[k]) + " of " + fmt(double(nt), 4) + " throws";
+    w.bullet(line + ".");
+  }
+  w.end_list();
+  if (pairs.size() > 0 && pairs[0] > 0) {
+    w.text("A throw against its mirror image (spin reversed), per mesh, over " + fmt(pairs[0], 4) + " pair(s):");
+    for (std::size_t k = 0; k < nm; ++k)
+      w.bullet(mesh_name(meshes, k) + ": " + tally_words(mdiff[k], mnone[k], msame[k], mund[k]) + ".");
+    w.end_list();
+  }
+  {
+    // One line per throw and cut: the mean count against N.
+    std::vector<PlotSeries> series;
+    const auto family = counts.column("family");
+    std::vector<double> seen;
+    for (std::size_t i = 0; i < counts.rows(); ++i) {
+      bool known = false;
+      for (double f : seen) known = known || f == family[i];
+      if (known) continue;
+      seen.push_back(family[i]);
+      TableSource how;
+      how.x_column = "segments";
+      how.y_column = "count_mean";
+      how.where_column = "family";
+      how.where_value = family[i];
+      const bool centre = counts.column("centre_cut")[i] > 0;
+      series.push_back(table_series(throw_name(spin[i], attack[i]) + (centre ? ", centre cut" : ", diagonal cut"), m, "counts",
+                                    how, centre ? "linespoints lw 2" : "linespoints dt 2"));
+    }
+    PlotAxes ax;
+    ax.x_label = "rim segments N";
+    ax.y_label = "mean bounce count of the ensemble";
+    ax.log_x = true;
+    ax.extra = "set key outside right\nset autoscale xfix\nset yrange [0:*]";
+    Figure f = line_figure("mesh_counts", "Mean bounce count of each throw's ensemble against the number of rim segments", ax,
+                           series, "segments", "count_mean");
+    f.data_path = m.path();
+    w.figure(f);
+  }
+  w.subheading("Reasons");
+  const auto& order = verdicts.strings("order");
+  const auto& subjects = m.strings("subjects");
+  for (std::size_t i = 0; i < order.size(); ++i) w.verdict(subjects[i], verdicts.at(order[i]));
+  const auto& mirror_order = verdicts.strings("mirror_order");
+  const auto& mirror_subjects = m.strings("mirror_subjects");
+  for (std::size_t i = 0; i < mirror_order.size(); ++i) w.verdict("mirror " + mirror_subjects[i], verdicts.at(mirror_order[i]));
+  w.end_list();
+  return w.finish();
+}
+
+}  // namespace stoneskip

@@ -1,0 +1,220 @@
+#include "verification/stones/mesh_study.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <stdexcept>
+
+#include "verification/study/ensemble_difference.hpp"
+#include "verification/study/verdict_rules.hpp"
+
+namespace stoneskip {
+
+bool MeshStudyOptions::valid(std::string* why) const {
+  auto fail = [&](const std::string& w) {
+    if (why) *why = w;
+    return false;
+  };
+  if (meshes.size() < 2) return fail("the mesh study needs at least 2 meshes");
+  for (std::size_t i = 0; i < meshes.size(); ++i)
+    for (std::size_t j = i + 1; j < meshes.size(); ++j)
+      if (meshes[i].segments == meshes[j].segments && meshes[i].split == meshes[j].split)
+        return fail("the mesh study lists one mesh twice");
+  if (spins_rev_s.empty() || attack_angles_deg.empty()) return fail("the mesh study needs at least one spin and one attack angle");
+  if (members < 2 || members % 2 != 0 || members > 1000) return fail("mesh study members must be even, in [2, 1000]");
+  if (!(perturbation_smallest > 0) || !(perturbation_largest >= perturbation_smallest) || !(perturbation_largest < 1))
+    return fail("mesh study perturbations must satisfy 0 < smallest <= largest < 1");
+  return true;
+}
+
+std::size_t MeshStudyOptions::reference() const {
+  std::size_t best = 0;
+  for (std::size_t i = 0; i < meshes.size(); ++i)
+    if (meshes[i].stone.body_mesh.triangles.size() >= meshes[best].stone.body_mesh.triangles.size()) best = i;
+  return best;
+}
+
+namespace {
+
+// A count as the sweeps take it (no trajectory recorded: count_ensembles.cpp says why).
+double bounces_of(const ThrowProblem& p, SolverChoice s) {
+  s.realtime.record_trajectory = false;
+  s.reference.record_trajectory = false;
+  const ThrowResult r = solve(p, s);
+  return r.outcome == Outcome::failed ? -1.0 : static_cast<double>(r.bounces);
+}
+
+struct Summary {
+  std::vector<double> ran;  // the members with a count
+  int failed = 0;
+  double mean = std::nan(""), sd = std::nan(""), low = std::nan(""), high = std::nan("");
+};
+
+Summary summary_of(const std::vector<double>& counts) {
+  Summary s;
+  for (double c : counts) {
+    if (c < 0) ++s.failed;
+    else s.ran.push_back(c);
+  }
+  if (s.ran.empty()) return s;
+  double sum = 0;
+  for (double c : s.ran) sum += c;
+  s.mean = sum / s.ran.size();
+  double ss = 0;
+  for (double c : s.ran) ss += (c - s.mean) * (c - s.mean);
+  s.sd = s.ran.size() > 1 ? std::sqrt(ss / (s.ran.size() - 1)) : std::nan("");
+  s.low = *std::min_element(s.ran.begin(), s.ran.end());
+  s.high = *std::max_element(s.ran.begin(), s.ran.end());
+  return s;
+}
+
+const char* cut_name(RimSplit s) { return s == RimSplit::centre ? "centre cut" : "diagonal cut"; }
+
+std::string mesh_name(const MeshVariant& m) {
+  return "N = " + std::to_string(m.segments) + ", " + cut_name(m.split) + " (" +
+         std::to_string(m.stone.body_mesh.triangles.size()) + " triangles)";
+}
+
+std::string throw_name(double spin, double attack) {
+  char b[96];
+  std::snprintf(b, sizeof b, "spin %.4g rev/s, attack %.4g°", spin, attack);
+  return b;
+}
+
+// The verdict of two ensembles of one throw (a and b), with its reason.
+const Record& compare(Record& verdicts, const std::string& key, const std::vector<double>& a, const std::vector<double>& b,
+                      const std::string& what) {
+  const Summary sa = summary_of(a), sb = summary_of(b);
+  MeanDifference d = welch_difference(sa.ran, sb.ran);
+  Record in;
+  in.set("valid", d.valid);
+  in.set("difference_low", d.valid ? d.low : std::nan(""));
+  in.set("difference_high", d.valid ? d.high : std::nan(""));
+  in.set("count_spread", d.valid ? d.sd_a + d.sd_b : std::nan(""));
+  in.set("failed_runs", sa.failed + sb.failed);
+  char reason[512];
+  std::snprintf(reason, sizeof reason,
+                "%s: %.3g ± %.2g against %.3g ± %.2g bounces (mean ± sd over %zu members each; %d and %d failed); "
+                "difference %.3g, 95 %% interval [%.3g, %.3g] (Welch)",
+                what.c_str(), sa.mean, sa.sd, sb.mean, sb.sd, a.size(), sa.failed, sb.failed, d.valid ? d.difference : std::nan(""),
+                d.valid ? d.low : std::nan(""), d.valid ? d.high : std::nan(""));
+  return decide_verdict(verdicts, key, "ensemble_count_difference", in, reason);
+}
+
+}  // namespace
+
+std::vector<MeshThrowRuns> run_mesh_study(const ThrowProblem& base, const SolverChoice& solver, const MeshStudyOptions& o,
+                                          const ParallelOptions& parallel) {
+  std::string why;
+  if (!o.valid(&why)) throw std::invalid_argument("mesh study: " + why);
+  if (!base.from_parameters) throw std::invalid_argument("mesh study: the base throw must give [throw] parameters");
+  const std::vector<double> factors = perturbation_factors(o.members, o.perturbation_smallest, o.perturbation_largest);
+  std::vector<MeshThrowRuns> out;
+  for (double attack : o.attack_angles_deg)
+    for (double spin : o.spins_rev_s) {
+      MeshThrowRuns r;
+      r.spin_rev_s = spin;
+      r.attack_angle_deg = attack;
+      r.counts.assign(o.meshes.size(), std::vector<double>(factors.size(), -1.0));
+      out.push_back(r);
+    }
+  // The problems: the base with each mesh's stone, each throw's parameters, each member's speed.
+  std::vector<ThrowProblem> problems;
+  std::vector<double*> slots;
+  for (MeshThrowRuns& r : out)
+    for (std::size_t m = 0; m < o.meshes.size(); ++m) {
+      ThrowProblem p = base;
+      p.stone = o.meshes[m].stone;
+      for (std::size_t k = 0; k < factors.size(); ++k) {
+        ThrowParameters tp = base.parameters;
+        tp.spin_rev_s = r.spin_rev_s;
+        tp.attack_angle_deg = r.attack_angle_deg;
+        tp.speed_m_s *= factors[k];
+        problems.push_back(with_parameters(p, tp));
+        slots.push_back(&r.counts[m][k]);
+      }
+    }
+  parallel_for(problems.size(), [&](std::size_t i) { *slots[i] = bounces_of(problems[i], solver); }, parallel);
+  return out;
+}
+
+Record mesh_study_findings(const std::vector<MeshThrowRuns>& runs, const MeshStudyOptions& o, const std::string& solver_label) {
+  Record r;
+  const std::size_t ref = o.reference();
+  r.set("solver", solver_label);
+  r.set("members", o.members);
+  r.set("perturbation_smallest", o.perturbation_smallest);
+  r.set("perturbation_largest", o.perturbation_largest);
+  r.set("reference_mesh", ref);  // row of the meshes table
+  Table meshes{{"segments", "centre_cut", "triangles", "mass_kg", "changed", "not_established", "same", "undecided",
+                "mirror_pairs", "mirror_different", "mirror_not_established", "mirror_same", "mirror_undecided"},
+               {}};
+  std::vector<std::vector<double>> tally(o.meshes.size(), std::vector<double>(8, 0.0));
+  // One row per throw and mesh; family = 2 × throw + centre cut: one line of the figure.
+  Table counts{{"throw", "spin_rev_s", "attack_angle_deg", "mesh", "segments", "centre_cut", "family", "count_mean", "count_sd",
+                "count_min", "count_max", "failed", "members"},
+               {}};
+  Record& verdicts = r.child("verdicts");
+  std::vector<std::string> order, subjects;
+  auto tally_of = [](const std::string& phrase) {
+    if (phrase == "different bounce counts") return 0;
+    if (phrase == "no difference established") return 1;
+    if (phrase == "same bounce count") return 2;
+    return 3;  // not decided: runs failed, not measured
+  };
+  for (std::size_t t = 0; t < runs.size(); ++t) {
+    const MeshThrowRuns& run = runs[t];
+    for (std::size_t m = 0; m < o.meshes.size(); ++m) {
+      const Summary s = summary_of(run.counts[m]);
+      const double centre = o.meshes[m].split == RimSplit::centre ? 1.0 : 0.0;
+      counts.add_row({double(t), run.spin_rev_s, run.attack_angle_deg, double(m), double(o.meshes[m].segments), centre,
+                      2.0 * double(t) + centre, s.mean, s.sd, s.low, s.high, double(s.failed), double(run.counts[m].size())});
+      if (m == ref) continue;
+      char key[64];
+      std::snprintf(key, sizeof key, "throw_%zu_mesh_%zu", t + 1, m + 1);
+      const Record& v = compare(verdicts, key, run.counts[m], run.counts[ref],
+                                mesh_name(o.meshes[m]) + " against " + mesh_name(o.meshes[ref]));
+      ++tally[m][tally_of(v.text("verdict"))];
+      order.push_back(key);
+      subjects.push_back(throw_name(run.spin_rev_s, run.attack_angle_deg) + ", " + mesh_name(o.meshes[m]));
+    }
+  }
+  // Mirror pairs: spin s > 0 and −s at one attack angle.
+  std::vector<std::string> mirror_order, mirror_subjects;
+  for (std::size_t t = 0; t < runs.size(); ++t)
+    for (std::size_t u = 0; u < runs.size(); ++u) {
+      if (!(runs[t].spin_rev_s > 0) || runs[u].spin_rev_s != -runs[t].spin_rev_s ||
+          runs[u].attack_angle_deg != runs[t].attack_angle_deg)
+        continue;
+      for (std::size_t m = 0; m < o.meshes.size(); ++m) {
+        char key[96];
+        std::snprintf(key, sizeof key, "mirror_%zu_%zu_mesh_%zu", t + 1, u + 1, m + 1);
+        const Record& v = compare(verdicts, key, runs[t].counts[m], runs[u].counts[m],
+                                  mesh_name(o.meshes[m]) + ": " + throw_name(runs[t].spin_rev_s, runs[t].attack_angle_deg) +
+                                      " against its mirror image");
+        ++tally[m][4 + tally_of(v.text("verdict"))];
+        mirror_order.push_back(key);
+        char subject[128];
+        std::snprintf(subject, sizeof subject, "±%.4g rev/s, attack %.4g°, ", runs[t].spin_rev_s, runs[t].attack_angle_deg);
+        mirror_subjects.push_back(subject + mesh_name(o.meshes[m]));
+      }
+    }
+  const std::size_t pairs = o.meshes.empty() ? 0 : mirror_order.size() / o.meshes.size();
+  for (std::size_t m = 0; m < o.meshes.size(); ++m) {
+    const MeshVariant& v = o.meshes[m];
+    const std::vector<double>& c = tally[m];
+    meshes.add_row({double(v.segments), v.split == RimSplit::centre ? 1.0 : 0.0, double(v.stone.body_mesh.triangles.size()),
+                    v.stone.mass.mass_kg, c[0], c[1], c[2], c[3], double(pairs), c[4], c[5], c[6], c[7]});
+  }
+  r.set_table("meshes", meshes);
+  r.set_table("counts", counts);
+  r.set("throws", runs.size());
+  verdicts.set_strings("order", order);
+  r.set_strings("subjects", subjects);
+  verdicts.set_strings("mirror_order", mirror_order);
+  r.set_strings("mirror_subjects", mirror_subjects);
+  return r;
+}
+
+}  // namespace stoneskip

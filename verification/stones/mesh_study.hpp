@@ -1,0 +1,59 @@
+#pragma once
+// Bounce counts against the stone's mesh (model/README.md §1.1): is a count a property of the
+// stone, or of the 44 triangles it is drawn with? The same throws are thrown with prisms of N rim
+// segments, each rim face cut along one diagonal (the paper's mesh: it has a hand) or at its centre
+// (a mesh that is its own mirror image), and each mesh's counts are compared with those of the
+// reference mesh, the one with the most triangles. The stone's density is kept: the N-gon's volume
+// and inertia follow N (a mesh is a change of the solid as well as of its faces).
+//
+// A count is chaotic (it may change under a 1e-9 relative change of the speed), so each throw runs
+// as an ensemble (speed × 1 ± ε, ε log-spaced over [smallest, largest], the same factors for every
+// mesh) and two ensembles are compared by Welch's 95 % interval of the difference of their mean
+// counts (verification/study/ensemble_difference.hpp; rule ensemble_count_difference). Where the
+// throws hold a spin s and its mirror −s at one attack angle, each mesh's pair is compared the same
+// way: a difference is the mesh's hand.
+#include <string>
+#include <vector>
+
+#include "model/stone/mesh.hpp"
+#include "verification/stones/parallel_runs.hpp"
+#include "verification/stones/throw_problem.hpp"
+#include "verification/study/record.hpp"
+
+namespace stoneskip {
+
+struct MeshVariant {
+  int segments = 11;
+  RimSplit split = RimSplit::diagonal;
+  Stone stone;  // built from the base case's stone with these segments and this cut
+};
+
+struct MeshStudyOptions {
+  std::vector<MeshVariant> meshes;          // at least 2; the reference is the one with the most triangles
+  std::vector<double> spins_rev_s{-40, 0, 40};
+  std::vector<double> attack_angles_deg{10, 20};
+  int members = 16;                         // perturbed throws per mesh and throw (even, ≥ 2)
+  double perturbation_smallest = 1e-9;
+  double perturbation_largest = 1e-4;
+  bool valid(std::string* why = nullptr) const;
+  // The reference mesh: the most triangles (the later of a tie).
+  std::size_t reference() const;
+};
+
+// One throw (spin, attack angle) on every mesh: counts[mesh][member], −1 where the solve failed.
+struct MeshThrowRuns {
+  double spin_rev_s = 0, attack_angle_deg = 0;
+  std::vector<std::vector<double>> counts;
+};
+
+// Every throw on every mesh with the solver given (the base's parameters with each spin and attack
+// angle; the base must give [throw] parameters), on the workers.
+std::vector<MeshThrowRuns> run_mesh_study(const ThrowProblem& base, const SolverChoice& solver, const MeshStudyOptions& options,
+                                          const ParallelOptions& parallel);
+
+// The section's record: the meshes, every ensemble's mean and spread, a verdict per mesh and throw
+// against the reference mesh, a verdict per mesh and mirror pair, and the tallies per mesh.
+Record mesh_study_findings(const std::vector<MeshThrowRuns>& runs, const MeshStudyOptions& options,
+                           const std::string& solver_label);
+
+}  // namespace stoneskip
