@@ -148,7 +148,7 @@ FrontPageInput read_front_page_input(const fs::path& out, const std::function<Re
     if (linked(page) || !is_file(page)) {
       in.skipped.push_back({relative_name(page, out), linked(page) ? "a link: not followed"
                                                                    : "missing or not a plain file (render it: stoneskip report render " +
-                                                                         relative_name(dir, out) + ")"});
+                                                                         dir.string() + ")"});
       continue;
     }
     FrontReport r;

@@ -1,5 +1,7 @@
 // The stones report's section on bounce counts against the stone's mesh
 // (verification/stones/mesh_study.hpp), formatted from its stored record.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "reports/common/markdown.hpp"
@@ -14,7 +16,7 @@ std::string mesh_name(const Table& meshes, std::size_t m) {
   return "N = " + fmt(n[m], 6) + ", " + (c[m] > 0 ? "centre" : "diagonal") + " cut (" + fmt(t[m], 6) + " triangles)";
 }
 
-std::string throw_name(double spin, double attack) { return "spin " + fmt(spin, 4) + " rev/s, attack " + fmt(attack, 4) + "°"; }
+std::string throw_name(double spin, double attack) { return "spin " + fmt(spin, 6) + " rev/s, attack " + fmt(attack, 6) + "°"; }
 
 // "k of n" tallies of one mesh, in words.
 std::string tally_words(double changed, double none, double same, double undecided) {
@@ -30,22 +32,34 @@ SectionOutput mesh_section(const Record& m) {
   SectionWriter w(m, "3c. Bounce counts against the stone's mesh");
   const Table& meshes = m.table("meshes");
   const Table& counts = m.table("counts");
-  const std::size_t ref = static_cast<std::size_t>(m.number("reference_mesh"));
   const std::size_t nm = meshes.rows();
+  const auto mass = meshes.column("mass_kg"), segs = meshes.column("segments"), refs = meshes.column("reference");
+  // The solid changes with N: say how, from the stored masses.
+  std::size_t lo_n = 0, hi_n = 0;
+  for (std::size_t k = 0; k < nm; ++k) {
+    if (segs[k] < segs[lo_n]) lo_n = k;
+    if (segs[k] > segs[hi_n]) hi_n = k;
+  }
+  const std::string solid =
+      mass[lo_n] == mass[hi_n]
+          ? "The stone's mass is the case's at every N (" + fmt(1e3 * mass[lo_n], 4) + " g); its inertia follows the N-gon."
+          : "With the case's density the N-gon's mass and inertia follow N: " + fmt(1e3 * mass[lo_n], 4) + " g at N = " +
+                fmt(segs[lo_n], 6) + ", " + fmt(1e3 * mass[hi_n], 4) + " g at N = " + fmt(segs[hi_n], 6) + ".";
   w.lead("What is measured.",
          "Is a bounce count a property of the stone, or of the triangles it is drawn with? The same throws are thrown "
          "with prisms of N rim segments, each rim face cut along one diagonal (the paper's 44-triangle stone at N = 11: "
-         "a mesh with a hand, model/README.md §1.1) or at its centre (a mesh that is its own mirror image). The density "
-         "is the case's, so the N-gon's mass and inertia follow N. Each throw runs as an ensemble of " +
+         "a mesh with a hand, model/README.md §1.1) or at its centre (a mesh that is its own mirror image). The cut "
+         "changes the faces, not the solid; N changes both. " + solid + " Each throw runs as an ensemble of " +
              fmt(m.number("members"), 4) + " throws per mesh, the speed multiplied by 1 ± ε with ε log-spaced from " +
              fmt(m.number("perturbation_smallest"), 2) + " to " + fmt(m.number("perturbation_largest"), 2) +
-             " (the same factors for every mesh), solved by " + m.text("solver") +
-             ". Each mesh's ensemble is compared with the reference mesh's, the one with the most triangles (" +
-             mesh_name(meshes, ref) +
-             "), and where the throws hold a spin and its mirror image (−spin, the same attack angle), each mesh's two "
-             "ensembles are compared with each other. Test: Welch's t interval (95 %) of the difference of the mean "
-             "counts; a difference is established only where the interval excludes 0; where a run of either ensemble "
-             "failed, nothing is decided.");
+             " (the same factors for every mesh, so members pair up), solved by " + m.text("solver") +
+             ". Each mesh is compared with its cut's reference, the same cut at the largest N; where both cuts reach "
+             "that N, the two references are compared with each other; and where the throws hold a spin and its mirror "
+             "image (−spin, the same attack angle), each mesh's two ensembles are compared. Test: the paired t interval "
+             "(95 %) of the mean difference of the counts; a difference is established only where the interval "
+             "excludes 0; where a run of either ensemble failed, nothing is decided. Each verdict holds at 95 %: of "
+             "this section's " + fmt(m.number("verdict_count"), 4) + " verdicts, about " +
+             fmt(0.05 * m.number("verdict_count"), 2) + " could say \"different\" by chance where there is no difference.");
   // Mean ± sd per mesh (rows) and throw (columns).
   const auto thr = counts.column("throw"), spin = counts.column("spin_rev_s"), attack = counts.column("attack_angle_deg"),
              mesh = counts.column("mesh"), mean = counts.column("count_mean"), sd = counts.column("count_sd"),
@@ -60,9 +74,9 @@ SectionOutput mesh_section(const Record& m) {
       }
   const Record& verdicts = m.at("verdicts");
   MarkdownTable table(headers);
-  const auto mass = meshes.column("mass_kg");
   for (std::size_t k = 0; k < nm; ++k) {
-    std::vector<std::string> row{mesh_name(meshes, k) + (k == ref ? " (reference)" : ""), fmt(1e3 * mass[k], 4)};
+    std::vector<std::string> row{mesh_name(meshes, k) + (refs[k] == double(k) ? " (its cut's reference)" : ""),
+                                 fmt(1e3 * mass[k], 4)};
     for (std::size_t t = 0; t < nt; ++t)
       for (std::size_t i = 0; i < counts.rows(); ++i) {
         if (thr[i] != double(t) || mesh[i] != double(k)) continue;
@@ -78,7 +92,7 @@ SectionOutput mesh_section(const Record& m) {
       }
     table.row(row);
   }
-  w.text("Mean ± sd (least–most) of the bounce counts of each ensemble. **≠**: different from the reference mesh's "
+  w.text("Mean ± sd (least–most) of the bounce counts of each ensemble. **≠**: different from its cut's reference "
          "(95 % interval); =: every member of both gives one and the same count; ?: not decided; no mark: no difference "
          "established.");
   w.table(table);
@@ -88,12 +102,44 @@ SectionOutput mesh_section(const Record& m) {
              mdiff = meshes.column("mirror_different"), mnone = meshes.column("mirror_not_established"),
              msame = meshes.column("mirror_same"), mund = meshes.column("mirror_undecided");
   for (std::size_t k = 0; k < nm; ++k) {
-    if (k == ref) continue;
-    std::string line = "Against the reference mesh, " + mesh_name(meshes, k) + ": " +
-                       tally_words(changed[k], none[k], same[k], undecided[k]) + " of " + fmt(double(nt), 4) + " throws";
-    w.bullet(line + ".");
+    const std::size_t r = static_cast<std::size_t>(refs[k]);
+    if (r == k) continue;
+    w.bullet(mesh_name(meshes, k) + " against " + mesh_name(meshes, r) + ": " +
+             tally_words(changed[k], none[k], same[k], undecided[k]) + " of " + fmt(double(nt), 4) + " throws.");
   }
   w.end_list();
+  // Per cut: from which N on no difference from the reference is established.
+  const Table& cuts = m.table("cuts");
+  const auto cut_centre = cuts.column("centre_cut"), cut_ref = cuts.column("reference_segments"),
+             cut_meshes = cuts.column("meshes"), settled = cuts.column("settled_segments");
+  for (std::size_t c = 0; c < cuts.rows(); ++c) {
+    const std::string cut = cut_centre[c] > 0 ? "centre" : "diagonal";
+    if (cut_meshes[c] < 2)
+      w.bullet("The " + cut + " cut has one mesh: nothing to compare it with.");
+    else if (std::isnan(settled[c]))
+      w.bullet("The " + cut + " cut: its reference is N = " + fmt(cut_ref[c], 6) +
+               ", and even the next mesh below it differs from it, or is undecided, at some throw: **the count is not "
+               "shown to settle** over these N.");
+    else {
+      bool below = false;
+      const auto centre_col = meshes.column("centre_cut");
+      for (std::size_t k = 0; k < nm; ++k) below = below || ((centre_col[k] > 0) == (cut_centre[c] > 0) && segs[k] < settled[c]);
+      w.bullet("The " + cut + " cut: from N = " + fmt(settled[c], 6) + " to " + fmt(cut_ref[c], 6) +
+               " no mesh differs from the reference at any throw (no difference established, none undecided)" +
+               (below ? "; the next N below differs or is undecided at some throw." : "."));
+    }
+  }
+  w.end_list();
+  const auto& cut_order = verdicts.strings("cut_order");
+  if (!cut_order.empty()) {
+    int diff = 0, none_cut = 0, same_cut = 0, und = 0;
+    for (const auto& key : cut_order) {
+      const std::string v = verdicts.at(key).text("verdict");
+      (v == "different bounce counts" ? diff : v == "no difference established" ? none_cut : v == "same bounce count" ? same_cut : und)++;
+    }
+    w.text("The two cuts' references against each other (the cut alone, at one N): " +
+           tally_words(diff, none_cut, same_cut, und) + " of " + fmt(double(cut_order.size()), 4) + " throws.");
+  }
   if (pairs.size() > 0 && pairs[0] > 0) {
     w.text("A throw against its mirror image (spin reversed), per mesh, over " + fmt(pairs[0], 4) + " pair(s):");
     for (std::size_t k = 0; k < nm; ++k)
@@ -115,24 +161,40 @@ SectionOutput mesh_section(const Record& m) {
       how.y_column = "count_mean";
       how.where_column = "family";
       how.where_value = family[i];
+      // One colour per throw; the centre cut solid, the diagonal cut dashed with open points.
       const bool centre = counts.column("centre_cut")[i] > 0;
+      const std::string colour = " lc " + fmt(thr[i] + 1, 4);
       series.push_back(table_series(throw_name(spin[i], attack[i]) + (centre ? ", centre cut" : ", diagonal cut"), m, "counts",
-                                    how, centre ? "linespoints lw 2" : "linespoints dt 2"));
+                                    how, centre ? "linespoints lw 2 pt 7" + colour : "linespoints dt 2 pt 6 ps 1.5" + colour));
+    }
+    // Ticks at the meshes' N, and a margin beyond the first and the last.
+    std::string tics;
+    double n_lo = segs.empty() ? 1 : segs[0], n_hi = n_lo;
+    for (std::size_t k = 0; k < segs.size(); ++k) {
+      if (tics.find("\"" + fmt(segs[k], 6) + "\"") == std::string::npos)
+        tics += (tics.empty() ? "" : ", ") + ("\"" + fmt(segs[k], 6) + "\" " + fmt(segs[k], 6));
+      n_lo = std::min(n_lo, segs[k]);
+      n_hi = std::max(n_hi, segs[k]);
     }
     PlotAxes ax;
     ax.x_label = "rim segments N";
     ax.y_label = "mean bounce count of the ensemble";
     ax.log_x = true;
-    ax.extra = "set key outside right\nset autoscale xfix\nset yrange [0:*]";
+    ax.extra = "set key outside right\nset xtics (" + tics + ")\nset xrange [" + fmt(n_lo / 1.1, 6) + ":" + fmt(n_hi * 1.1, 6) +
+               "]\nset yrange [0:*]";
     Figure f = line_figure("mesh_counts", "Mean bounce count of each throw's ensemble against the number of rim segments", ax,
                            series, "segments", "count_mean");
     f.data_path = m.path();
     w.figure(f);
+    w.text("Means only: the table gives each ensemble's spread. Where a mesh's mirror pairs give the same counts, a "
+           "spin's line and its mirror's lie on one another.");
   }
   w.subheading("Reasons");
   const auto& order = verdicts.strings("order");
   const auto& subjects = m.strings("subjects");
   for (std::size_t i = 0; i < order.size(); ++i) w.verdict(subjects[i], verdicts.at(order[i]));
+  const auto& cut_subjects = m.strings("cut_subjects");
+  for (std::size_t i = 0; i < cut_order.size(); ++i) w.verdict("cuts, " + cut_subjects[i], verdicts.at(cut_order[i]));
   const auto& mirror_order = verdicts.strings("mirror_order");
   const auto& mirror_subjects = m.strings("mirror_subjects");
   for (std::size_t i = 0; i < mirror_order.size(); ++i) w.verdict("mirror " + mirror_subjects[i], verdicts.at(mirror_order[i]));

@@ -3,6 +3,7 @@
 #include "reports/stones/stones_report.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <sstream>
 
@@ -98,29 +99,38 @@ std::string findings_markdown(const Record& secs, const std::string& md) {
   }
   if (secs.has_child("mesh")) {
     // The paper's mesh (N = 11, diagonal cut) where the study has it, else its first mesh, against
-    // the reference mesh; and each mesh's mirror pairs.
+    // its cut's reference; each cut's settled N; the paper mesh's mirror pairs.
     const Record& m = secs.at("mesh");
     const Table& t = m.table("meshes");
-    const auto n = t.column("segments"), cut = t.column("centre_cut"), tri = t.column("triangles");
-    const std::size_t ref = static_cast<std::size_t>(m.number("reference_mesh"));
-    std::size_t paper = ref == 0 ? 1 : 0;
+    const auto n = t.column("segments"), cut = t.column("centre_cut"), tri = t.column("triangles"), refs = t.column("reference");
+    std::size_t paper = 0;
     for (std::size_t k = 0; k < t.rows(); ++k)
-      if (n[k] == 11 && cut[k] == 0 && k != ref) paper = k;
+      if (n[k] == 11 && cut[k] == 0) paper = k;
     auto name = [&](std::size_t k) {
       return "N = " + fmt(n[k], 6) + ", " + (cut[k] > 0 ? "centre" : "diagonal") + " cut (" + fmt(tri[k], 6) + " triangles)";
     };
     const std::string throws = fmt(m.number("throws"), 4);
-    f << "* Bounce counts against the mesh: the stone of " << name(paper) << " against " << name(ref) << ": **different bounce counts** on "
-      << fmt(t.column("changed")[paper], 4) << " of " << throws << " throws (ensembles, 95 % interval)";
-    if (t.column("mirror_pairs")[paper] > 0) {
-      f << "; a throw against its mirror image: different on " << fmt(t.column("mirror_different")[paper], 4) << " of "
-        << fmt(t.column("mirror_pairs")[paper], 4) << " pairs with that mesh";
-      for (std::size_t k = 0; k < t.rows(); ++k)
-        if (cut[k] > 0) {
-          f << ", " << fmt(t.column("mirror_different")[k], 4) << " with " << name(k);
-          break;
-        }
+    const std::size_t ref = static_cast<std::size_t>(refs[paper]);
+    f << "* Bounce counts against the mesh:";
+    if (ref != paper) {
+      f << " the stone of " << name(paper) << " against " << name(ref) << ": **different bounce counts** on "
+        << fmt(t.column("changed")[paper], 4) << " of " << throws << " throws";
+      if (t.column("not_established")[paper] > 0) f << ", no difference established on " << fmt(t.column("not_established")[paper], 4);
+      if (t.column("undecided")[paper] > 0) f << ", **not decided** on " << fmt(t.column("undecided")[paper], 4);
+      f << " (ensembles, 95 % interval)";
     }
+    const Table& cuts = m.table("cuts");
+    for (std::size_t row = 0; row < cuts.rows(); ++row) {
+      const double settled = cuts.column("settled_segments")[row];
+      if (cuts.column("meshes")[row] < 2) continue;
+      f << "; " << (cuts.column("centre_cut")[row] > 0 ? "centre" : "diagonal") << " cut: "
+        << (std::isnan(settled) ? std::string("**the count is not shown to settle**")
+                                : "no difference established from N = " + fmt(settled, 6) + " to " +
+                                      fmt(cuts.column("reference_segments")[row], 6));
+    }
+    if (t.column("mirror_pairs")[paper] > 0)
+      f << "; a throw against its mirror image: different on " << fmt(t.column("mirror_different")[paper], 4) << " of "
+        << fmt(t.column("mirror_pairs")[paper], 4) << " pairs with " << name(paper);
     f << section_link(md, "3c") << ".\n";
   }
   const Record& v = secs.at("validation");

@@ -96,7 +96,7 @@ BOOST_AUTO_TEST_CASE(a_report_without_its_page_is_not_linked_and_linked_figures_
   BOOST_TEST(has(r.out, "2 reports, 0 movies, 0 throws"), r.out);
   const std::string md = read(f.out / "index.md");
   BOOST_TEST(has(md, "`unrendered/index.md`"), md);
-  BOOST_TEST(has(md, "stoneskip report render unrendered"), md);
+  BOOST_TEST(has(md, "stoneskip report render " + (f.out / "unrendered").string()), md);
   BOOST_TEST(!has(md, "(unrendered/index.md)"), md);
   BOOST_TEST(has(md, "(zlinked_figures/index.md)"), md);
   BOOST_TEST(has(md, "(captures/figures/"), md);

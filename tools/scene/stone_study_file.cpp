@@ -279,6 +279,8 @@ void read_mesh(const fs::path& dir, TomlTable t, StoneStudiesOptions& o) {
   const StoneCase c = load_stone_case(path.string());
   if (c.spec.shape != StoneShape::prism) t.fail("base", "the mesh study rebuilds a prism; '" + path.string() + "' has another shape");
   if (!o.mesh_base.problem.from_parameters) t.fail("base", "the mesh study's base throw must give [throw] parameters");
+  if (o.mesh_base.problem.environment.convention != Convention::physical)
+    t.fail("base", "the mesh study's base throw must be in the physical convention (the paper's gains energy: no mirror, no settled count)");
   std::vector<int> segments;
   for (double n : positive_list(t, "segments", {11, 16, 32, 64})) {
     if (n != std::floor(n) || n < 3 || n > 4096) t.fail("segments", "each must be a whole number in [3, 4096]");
@@ -309,6 +311,11 @@ void read_mesh(const fs::path& dir, TomlTable t, StoneStudiesOptions& o) {
   for (double s : m.spins_rev_s) t.require_in("spins_rev_s", s, -200.0, 200.0);
   m.attack_angles_deg = any_list(t, "attack_angles_deg", m.attack_angles_deg);
   for (double a : m.attack_angles_deg) t.require_in("attack_angles_deg", a, -90.0, 90.0);
+  for (const char* key : {"spins_rev_s", "attack_angles_deg"}) {
+    const std::vector<double>& v = std::string(key) == "spins_rev_s" ? m.spins_rev_s : m.attack_angles_deg;
+    for (std::size_t i = 0; i < v.size(); ++i)
+      if (std::find(v.begin() + i + 1, v.end(), v[i]) != v.end()) t.fail(key, "lists one value twice");
+  }
   m.members = count(t, "members", m.members, 2, 1000);
   if (m.members % 2 != 0) t.fail("members", "must be even (members of both signs)");
   m.perturbation_smallest = positive(t, "perturbation_smallest", m.perturbation_smallest);

@@ -105,15 +105,17 @@ BOOST_AUTO_TEST_CASE(bad_laws_ranges_and_strategies_are_one_line_errors_naming_t
 }
 
 BOOST_AUTO_TEST_CASE(the_mesh_study_reads_its_meshes_and_refuses_bad_ones) {
-  // The quick preset's [mesh]: segments 11 and 16 × both cuts, in that order; the reference is the
-  // mesh with the most triangles (16 × 6 = 96, the centre cut: 6N triangles, the diagonal 4N).
+  // The quick preset's [mesh]: segments 11 and 16 × both cuts, in that order (the centre cut: 6N
+  // triangles, the diagonal 4N); each mesh's reference is its cut's at N = 16.
   const StoneStudyFile f = load_stone_study_file(kQuick);
   const MeshStudyOptions& m = f.options.mesh;
   BOOST_REQUIRE_EQUAL(m.meshes.size(), 4u);
   BOOST_TEST(m.meshes[0].stone.body_mesh.triangles.size() == 44u);  // the paper's stone
   BOOST_TEST(m.meshes[1].stone.body_mesh.triangles.size() == 66u);
   BOOST_TEST(m.meshes[3].stone.body_mesh.triangles.size() == 96u);
-  BOOST_TEST(m.reference() == 3u);
+  BOOST_TEST(m.reference_of(0) == 2u);
+  BOOST_TEST(m.reference_of(1) == 3u);
+  BOOST_TEST(m.reference_of(3) == 3u);
   // One solid, two cuts: the same mass to round-off.
   BOOST_TEST(m.meshes[0].stone.mass.mass_kg == m.meshes[1].stone.mass.mass_kg, boost::test_tools::tolerance(1e-12));
   auto names = [](const std::string& message, const std::string& part) {
@@ -129,6 +131,8 @@ BOOST_AUTO_TEST_CASE(the_mesh_study_reads_its_meshes_and_refuses_bad_ones) {
   names(error_of({"mesh.perturbation_largest=0.5"}), "mesh.perturbation_largest");
   names(error_of({"mesh.base=\"../hard/tumbling_asymmetric.toml\""}), "mesh.base");  // a mesh file, not a prism
   names(error_of({"mesh.colour=1"}), "colour");
+  names(error_of({"mesh.spins_rev_s=[40.0, -40.0, 40.0]"}), "mesh.spins_rev_s");
+  names(error_of({"mesh.base=\"../hard/paper_high_spin.toml\""}), "physical convention");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -20,7 +20,8 @@ const std::set<std::string> kTopKeys = {"base", "set", "solvers", "title", "desc
 long line_of(const toml::value& v) { return static_cast<long>(v.location().line()); }
 
 // A top-level array of strings (`solvers`, `set`) with the line of the array.
-std::vector<std::string> strings(TomlTable& top, const toml::value& root, const std::string& key, long& line) {
+std::vector<std::string> strings(TomlTable& top, const toml::value& root, const std::string& key, long& line,
+                                 std::vector<long>* lines = nullptr) {
   std::vector<std::string> out;
   if (!top.has(key)) return out;
   const toml::value& v = root.as_table().at(key);
@@ -29,6 +30,7 @@ std::vector<std::string> strings(TomlTable& top, const toml::value& root, const 
   for (const auto& e : v.as_array()) {
     if (!e.is_string()) top.fail(key, "expected an array of strings");
     out.push_back(e.as_string().str);
+    if (lines) lines->push_back(line_of(e));
   }
   return out;
 }
@@ -80,7 +82,7 @@ SweepFile sweep_file_from_text(const std::string& text, const std::string& name)
   fs::path bp(base);
   if (bp.is_relative()) bp = fs::path(name).parent_path() / bp;
   s.base_file = bp.lexically_normal().string();
-  s.base_sets = strings(top, doc.root, "set", s.set_line);
+  s.base_sets = strings(top, doc.root, "set", s.set_line, &s.set_lines);
   s.solvers = read_solvers(top, doc.root, s.solvers_line);
 
   // [design]
@@ -152,9 +154,25 @@ SweepCases::SweepCases(const SweepFile& sweep) : sweep_(sweep) {
         base_alone_loads = false;
       }
     }
-    if (base_alone_loads && !sweep.base_sets.empty())
-      throw_input_error(sweep.file, sweep.set_line, "set",
-                        std::string("an override does not apply to the base case: ") + e.what());
+    if (base_alone_loads && !sweep.base_sets.empty()) {
+      // The first entry that does not apply, on its own line (an array may span lines).
+      std::size_t bad = sweep.base_sets.size() - 1;
+      std::string why = e.what();
+      for (std::size_t k = 0; k + 1 < sweep.base_sets.size(); ++k) {
+        try {
+          stone_case_from_document(parse_toml_text(
+              base_text, sweep.base_file, std::vector<std::string>(sweep.base_sets.begin(), sweep.base_sets.begin() + k + 1)));
+        } catch (const InputError& first) {
+          bad = k;
+          why = first.what();
+          break;
+        }
+      }
+      // The message of the reader names a command-line override ("--set key"): here it is an entry.
+      if (const auto at = why.find("--set "); at != std::string::npos) why.replace(at, 6, "entry ");
+      const long line = bad < sweep.set_lines.size() ? sweep.set_lines[bad] : sweep.set_line;
+      throw_input_error(sweep.file, line, "set", "an override does not apply to the base case: " + why);
+    }
     throw_input_error(sweep.file, sweep.base_line, "base", std::string("the base case does not load: ") + e.what());
   }
   if (base_.water && runs_reference(sweep.solvers))

@@ -37,6 +37,7 @@ struct SweepFile {
   long base_line = 0;
   std::vector<std::string> base_sets;  // `set`: fixed overrides applied to the base case
   long set_line = 0;
+  std::vector<long> set_lines;         // the line of each `set` entry (an array may span lines)
   SweepSolvers solvers = SweepSolvers::realtime;
   long solvers_line = 0;
   SweepDesign design;

@@ -208,6 +208,9 @@ BOOST_AUTO_TEST_CASE(bad_sweep_files_fail_with_one_line_naming_file_line_and_key
       {replace(kGrid, "solvers =", "set = [\"throw.spinn_rev_s=3\"]\nsolvers ="), "s.toml:2: set", "spinn_rev_s"},
       {replace(kGrid, "solvers =", "set = [\"throw.spin_rev_s=fast\"]\nsolvers ="), "s.toml:2: set", "expected a number"},
       {replace(kGrid, "solvers =", "set = [\"throw.speed_m_s=-1\"]\nsolvers ="), "s.toml:2: set", "speed_m_s"},
+      // An array over several lines: the entry's own line.
+      {replace(kGrid, "solvers =", "set = [\n  \"throw.spin_rev_s=3\",\n  \"throw.spin_rev_s=fast\",\n]\nsolvers ="), "s.toml:4: set",
+       "entry throw.spin_rev_s"},
   };
   for (const auto& b : bad) {
     const std::string m = error_of(b.text);

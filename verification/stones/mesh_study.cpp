@@ -22,16 +22,20 @@ bool MeshStudyOptions::valid(std::string* why) const {
       if (meshes[i].segments == meshes[j].segments && meshes[i].split == meshes[j].split)
         return fail("the mesh study lists one mesh twice");
   if (spins_rev_s.empty() || attack_angles_deg.empty()) return fail("the mesh study needs at least one spin and one attack angle");
+  for (const auto* list : {&spins_rev_s, &attack_angles_deg})
+    for (std::size_t i = 0; i < list->size(); ++i)
+      for (std::size_t j = i + 1; j < list->size(); ++j)
+        if ((*list)[i] == (*list)[j]) return fail("the mesh study lists one throw twice");
   if (members < 2 || members % 2 != 0 || members > 1000) return fail("mesh study members must be even, in [2, 1000]");
   if (!(perturbation_smallest > 0) || !(perturbation_largest >= perturbation_smallest) || !(perturbation_largest < 1))
     return fail("mesh study perturbations must satisfy 0 < smallest <= largest < 1");
   return true;
 }
 
-std::size_t MeshStudyOptions::reference() const {
-  std::size_t best = 0;
+std::size_t MeshStudyOptions::reference_of(std::size_t m) const {
+  std::size_t best = m;
   for (std::size_t i = 0; i < meshes.size(); ++i)
-    if (meshes[i].stone.body_mesh.triangles.size() >= meshes[best].stone.body_mesh.triangles.size()) best = i;
+    if (meshes[i].split == meshes[m].split && meshes[i].segments > meshes[best].segments) best = i;
   return best;
 }
 
@@ -78,7 +82,7 @@ std::string mesh_name(const MeshVariant& m) {
 
 std::string throw_name(double spin, double attack) {
   char b[96];
-  std::snprintf(b, sizeof b, "spin %.4g rev/s, attack %.4g°", spin, attack);
+  std::snprintf(b, sizeof b, "spin %.6g rev/s, attack %.6g°", spin, attack);
   return b;
 }
 
@@ -86,7 +90,17 @@ std::string throw_name(double spin, double attack) {
 const Record& compare(Record& verdicts, const std::string& key, const std::vector<double>& a, const std::vector<double>& b,
                       const std::string& what) {
   const Summary sa = summary_of(a), sb = summary_of(b);
-  MeanDifference d = welch_difference(sa.ran, sb.ran);
+  // The members pair up by their speed factor; those where either run failed leave the pairs (and
+  // any failure leaves the verdict undecided).
+  std::vector<double> pa, pb;
+  int unequal = 0;
+  for (std::size_t k = 0; k < a.size() && k < b.size(); ++k)
+    if (a[k] >= 0 && b[k] >= 0) {
+      pa.push_back(a[k]);
+      pb.push_back(b[k]);
+      unequal += a[k] != b[k] ? 1 : 0;
+    }
+  MeanDifference d = paired_difference(pa, pb);
   Record in;
   in.set("valid", d.valid);
   in.set("difference_low", d.valid ? d.low : std::nan(""));
@@ -94,11 +108,12 @@ const Record& compare(Record& verdicts, const std::string& key, const std::vecto
   in.set("count_spread", d.valid ? d.sd_a + d.sd_b : std::nan(""));
   in.set("failed_runs", sa.failed + sb.failed);
   char reason[512];
+  in.set("unequal_pairs", unequal);
   std::snprintf(reason, sizeof reason,
                 "%s: %.3g ± %.2g against %.3g ± %.2g bounces (mean ± sd over %zu members each; %d and %d failed); "
-                "difference %.3g, 95 %% interval [%.3g, %.3g] (Welch)",
-                what.c_str(), sa.mean, sa.sd, sb.mean, sb.sd, a.size(), sa.failed, sb.failed, d.valid ? d.difference : std::nan(""),
-                d.valid ? d.low : std::nan(""), d.valid ? d.high : std::nan(""));
+                "%d of %zu pairs differ; mean difference %.3g, 95 %% interval [%.3g, %.3g] (paired t)",
+                what.c_str(), sa.mean, sa.sd, sb.mean, sb.sd, a.size(), sa.failed, sb.failed, unequal, pa.size(),
+                d.valid ? d.difference : std::nan(""), d.valid ? d.low : std::nan(""), d.valid ? d.high : std::nan(""));
   return decide_verdict(verdicts, key, "ensemble_count_difference", in, reason);
 }
 
@@ -109,6 +124,10 @@ std::vector<MeshThrowRuns> run_mesh_study(const ThrowProblem& base, const Solver
   std::string why;
   if (!o.valid(&why)) throw std::invalid_argument("mesh study: " + why);
   if (!base.from_parameters) throw std::invalid_argument("mesh study: the base throw must give [throw] parameters");
+  // The paper convention's forces gain energy and its counts are chaotic run by run: neither the
+  // mirror premise nor a settled count holds there (model/README.md §1.6).
+  if (base.environment.convention != Convention::physical)
+    throw std::invalid_argument("mesh study: the base throw must be in the physical convention");
   const std::vector<double> factors = perturbation_factors(o.members, o.perturbation_smallest, o.perturbation_largest);
   std::vector<MeshThrowRuns> out;
   for (double attack : o.attack_angles_deg)
@@ -141,13 +160,11 @@ std::vector<MeshThrowRuns> run_mesh_study(const ThrowProblem& base, const Solver
 
 Record mesh_study_findings(const std::vector<MeshThrowRuns>& runs, const MeshStudyOptions& o, const std::string& solver_label) {
   Record r;
-  const std::size_t ref = o.reference();
   r.set("solver", solver_label);
   r.set("members", o.members);
   r.set("perturbation_smallest", o.perturbation_smallest);
   r.set("perturbation_largest", o.perturbation_largest);
-  r.set("reference_mesh", ref);  // row of the meshes table
-  Table meshes{{"segments", "centre_cut", "triangles", "mass_kg", "changed", "not_established", "same", "undecided",
+  Table meshes{{"segments", "centre_cut", "triangles", "mass_kg", "reference", "changed", "not_established", "same", "undecided",
                 "mirror_pairs", "mirror_different", "mirror_not_established", "mirror_same", "mirror_undecided"},
                {}};
   std::vector<std::vector<double>> tally(o.meshes.size(), std::vector<double>(8, 0.0));
@@ -170,7 +187,8 @@ Record mesh_study_findings(const std::vector<MeshThrowRuns>& runs, const MeshStu
       const double centre = o.meshes[m].split == RimSplit::centre ? 1.0 : 0.0;
       counts.add_row({double(t), run.spin_rev_s, run.attack_angle_deg, double(m), double(o.meshes[m].segments), centre,
                       2.0 * double(t) + centre, s.mean, s.sd, s.low, s.high, double(s.failed), double(run.counts[m].size())});
-      if (m == ref) continue;
+      const std::size_t ref = o.reference_of(m);
+      if (ref == m) continue;
       char key[64];
       std::snprintf(key, sizeof key, "throw_%zu_mesh_%zu", t + 1, m + 1);
       const Record& v = compare(verdicts, key, run.counts[m], run.counts[ref],
@@ -180,6 +198,21 @@ Record mesh_study_findings(const std::vector<MeshThrowRuns>& runs, const MeshStu
       subjects.push_back(throw_name(run.spin_rev_s, run.attack_angle_deg) + ", " + mesh_name(o.meshes[m]));
     }
   }
+  // The two cuts' references against each other, where they share one N (the cut alone).
+  std::size_t ref_diagonal = o.meshes.size(), ref_centre = o.meshes.size();
+  for (std::size_t m = 0; m < o.meshes.size(); ++m)
+    if (o.reference_of(m) == m) (o.meshes[m].split == RimSplit::centre ? ref_centre : ref_diagonal) = m;
+  std::vector<std::string> cut_order, cut_subjects;
+  if (ref_diagonal < o.meshes.size() && ref_centre < o.meshes.size() &&
+      o.meshes[ref_diagonal].segments == o.meshes[ref_centre].segments)
+    for (std::size_t t = 0; t < runs.size(); ++t) {
+      char key[64];
+      std::snprintf(key, sizeof key, "cuts_throw_%zu", t + 1);
+      compare(verdicts, key, runs[t].counts[ref_diagonal], runs[t].counts[ref_centre],
+              mesh_name(o.meshes[ref_diagonal]) + " against " + mesh_name(o.meshes[ref_centre]));
+      cut_order.push_back(key);
+      cut_subjects.push_back(throw_name(runs[t].spin_rev_s, runs[t].attack_angle_deg));
+    }
   // Mirror pairs: spin s > 0 and −s at one attack angle.
   std::vector<std::string> mirror_order, mirror_subjects;
   for (std::size_t t = 0; t < runs.size(); ++t)
@@ -196,7 +229,7 @@ Record mesh_study_findings(const std::vector<MeshThrowRuns>& runs, const MeshStu
         ++tally[m][4 + tally_of(v.text("verdict"))];
         mirror_order.push_back(key);
         char subject[128];
-        std::snprintf(subject, sizeof subject, "±%.4g rev/s, attack %.4g°, ", runs[t].spin_rev_s, runs[t].attack_angle_deg);
+        std::snprintf(subject, sizeof subject, "±%.6g rev/s, attack %.6g°, ", runs[t].spin_rev_s, runs[t].attack_angle_deg);
         mirror_subjects.push_back(subject + mesh_name(o.meshes[m]));
       }
     }
@@ -205,13 +238,35 @@ Record mesh_study_findings(const std::vector<MeshThrowRuns>& runs, const MeshStu
     const MeshVariant& v = o.meshes[m];
     const std::vector<double>& c = tally[m];
     meshes.add_row({double(v.segments), v.split == RimSplit::centre ? 1.0 : 0.0, double(v.stone.body_mesh.triangles.size()),
-                    v.stone.mass.mass_kg, c[0], c[1], c[2], c[3], double(pairs), c[4], c[5], c[6], c[7]});
+                    v.stone.mass.mass_kg, double(o.reference_of(m)), c[0], c[1], c[2], c[3], double(pairs), c[4], c[5], c[6],
+                    c[7]});
+  }
+  // Per cut: the smallest N from which on no mesh of that cut differs from its reference, nor is
+  // undecided, at any throw (NaN: not even the mesh below the reference, or the cut has one mesh).
+  Table cuts{{"centre_cut", "reference_segments", "meshes", "settled_segments"}, {}};
+  for (RimSplit split : {RimSplit::diagonal, RimSplit::centre}) {
+    std::vector<std::size_t> of;
+    for (std::size_t m = 0; m < o.meshes.size(); ++m)
+      if (o.meshes[m].split == split) of.push_back(m);
+    if (of.empty()) continue;
+    std::sort(of.begin(), of.end(), [&](std::size_t a, std::size_t b) { return o.meshes[a].segments > o.meshes[b].segments; });
+    double settled = o.meshes[of.front()].segments;  // the reference
+    for (std::size_t k = 1; k < of.size(); ++k) {
+      if (tally[of[k]][0] > 0 || tally[of[k]][3] > 0) break;
+      settled = o.meshes[of[k]].segments;
+    }
+    if (settled == o.meshes[of.front()].segments) settled = std::nan("");
+    cuts.add_row({split == RimSplit::centre ? 1.0 : 0.0, double(o.meshes[of.front()].segments), double(of.size()), settled});
   }
   r.set_table("meshes", meshes);
   r.set_table("counts", counts);
+  r.set_table("cuts", cuts);
   r.set("throws", runs.size());
+  r.set("verdict_count", order.size() + cut_order.size() + mirror_order.size());
   verdicts.set_strings("order", order);
   r.set_strings("subjects", subjects);
+  verdicts.set_strings("cut_order", cut_order);
+  r.set_strings("cut_subjects", cut_subjects);
   verdicts.set_strings("mirror_order", mirror_order);
   r.set_strings("mirror_subjects", mirror_subjects);
   return r;

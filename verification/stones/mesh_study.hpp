@@ -2,14 +2,16 @@
 // Bounce counts against the stone's mesh (model/README.md §1.1): is a count a property of the
 // stone, or of the 44 triangles it is drawn with? The same throws are thrown with prisms of N rim
 // segments, each rim face cut along one diagonal (the paper's mesh: it has a hand) or at its centre
-// (a mesh that is its own mirror image), and each mesh's counts are compared with those of the
-// reference mesh, the one with the most triangles. The stone's density is kept: the N-gon's volume
-// and inertia follow N (a mesh is a change of the solid as well as of its faces).
+// (a mesh that is its own mirror image), and each mesh's counts are compared with those of its
+// cut's reference mesh, the same cut at the largest N (the cut changes the faces, not the solid; N
+// changes both: with the case's density the N-gon's mass follows N, with its mass the inertia).
+// Where both cuts reach one largest N, their two references are compared with each other too.
 //
 // A count is chaotic (it may change under a 1e-9 relative change of the speed), so each throw runs
 // as an ensemble (speed × 1 ± ε, ε log-spaced over [smallest, largest], the same factors for every
-// mesh) and two ensembles are compared by Welch's 95 % interval of the difference of their mean
-// counts (verification/study/ensemble_difference.hpp; rule ensemble_count_difference). Where the
+// mesh) and two ensembles, whose members pair up by their speed factor, are compared by the paired
+// t interval (95 %) of the difference of their counts (verification/study/ensemble_difference.hpp;
+// rule ensemble_count_difference). Where the
 // throws hold a spin s and its mirror −s at one attack angle, each mesh's pair is compared the same
 // way: a difference is the mesh's hand.
 #include <string>
@@ -29,15 +31,15 @@ struct MeshVariant {
 };
 
 struct MeshStudyOptions {
-  std::vector<MeshVariant> meshes;          // at least 2; the reference is the one with the most triangles
+  std::vector<MeshVariant> meshes;          // at least 2, no two alike
   std::vector<double> spins_rev_s{-40, 0, 40};
   std::vector<double> attack_angles_deg{10, 20};
   int members = 16;                         // perturbed throws per mesh and throw (even, ≥ 2)
   double perturbation_smallest = 1e-9;
   double perturbation_largest = 1e-4;
   bool valid(std::string* why = nullptr) const;
-  // The reference mesh: the most triangles (the later of a tie).
-  std::size_t reference() const;
+  // The reference of mesh m: the mesh of its cut with the largest N (m itself where it is that one).
+  std::size_t reference_of(std::size_t m) const;
 };
 
 // One throw (spin, attack angle) on every mesh: counts[mesh][member], −1 where the solve failed.
@@ -52,7 +54,9 @@ std::vector<MeshThrowRuns> run_mesh_study(const ThrowProblem& base, const Solver
                                           const ParallelOptions& parallel);
 
 // The section's record: the meshes, every ensemble's mean and spread, a verdict per mesh and throw
-// against the reference mesh, a verdict per mesh and mirror pair, and the tallies per mesh.
+// against its cut's reference, per throw between the two cuts' references (where they share N), per
+// mesh and mirror pair, the tallies per mesh, and per cut the N from which no difference from the
+// reference is established.
 Record mesh_study_findings(const std::vector<MeshThrowRuns>& runs, const MeshStudyOptions& options,
                            const std::string& solver_label);
 

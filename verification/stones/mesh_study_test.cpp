@@ -37,36 +37,65 @@ BOOST_AUTO_TEST_CASE(the_count_difference_rule_decides_on_the_interval_and_not_o
   BOOST_TEST(decide("ensemble_count_difference", in) == "not measured");
 }
 
-BOOST_AUTO_TEST_CASE(the_reference_is_the_mesh_with_most_triangles_and_the_verdicts_are_welch_s) {
-  // Listed finest first: the reference is still the one with the most triangles (16 centre: 96).
+BOOST_AUTO_TEST_CASE(each_mesh_is_compared_with_its_cut_s_finest_on_paired_members) {
+  // Listed finest first: each mesh's reference is the same cut at the largest N, whatever the order.
   MeshStudyOptions o;
-  o.meshes = {prism(16, RimSplit::centre), prism(11, RimSplit::diagonal), prism(16, RimSplit::diagonal)};
+  o.meshes = {prism(16, RimSplit::centre), prism(11, RimSplit::diagonal), prism(16, RimSplit::diagonal),
+              prism(11, RimSplit::centre)};
   o.spins_rev_s = {-40, 40};
   o.attack_angles_deg = {10};
   o.members = 4;
-  BOOST_REQUIRE_EQUAL(o.reference(), 0u);
+  BOOST_TEST(o.reference_of(0) == 0u);
+  BOOST_TEST(o.reference_of(1) == 2u);
+  BOOST_TEST(o.reference_of(3) == 0u);
   // Synthetic counts: throw 1 (−40) and throw 2 (+40); mesh 2 fails once on throw 2.
   std::vector<MeshThrowRuns> runs(2);
-  runs[0] = {-40, 10, {{5, 5, 5, 5}, {11, 12, 12, 12}, {6, 6, 6, 6}}};
-  runs[1] = {40, 10, {{5, 5, 5, 5}, {9, 9, -1, 9}, {5, 5, 5, 5}}};
+  runs[0] = {-40, 10, {{5, 5, 5, 5}, {11, 12, 12, 12}, {6, 6, 6, 6}, {8, 9, 8, 9}}};
+  runs[1] = {40, 10, {{5, 5, 5, 5}, {9, 9, -1, 9}, {5, 5, 5, 5}, {9, 8, 9, 8}}};
   const Record r = mesh_study_findings(runs, o, "test");
   const Record& v = r.at("verdicts");
-  BOOST_TEST(r.number("reference_mesh") == 0);
   BOOST_TEST(v.at("throw_1_mesh_2").text("verdict") == "different bounce counts");
-  const MeanDifference d = welch_difference({11, 12, 12, 12}, {5, 5, 5, 5});
+  const MeanDifference d = paired_difference({11, 12, 12, 12}, {6, 6, 6, 6});  // against N = 16 diagonal
   BOOST_TEST(v.at("throw_1_mesh_2").number("difference_low") == d.low, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(v.at("throw_2_mesh_2").text("verdict") == "not decided: runs failed");
-  BOOST_TEST(v.at("throw_2_mesh_3").text("verdict") == "same bounce count");
-  BOOST_TEST(!v.has_child("throw_1_mesh_1"));  // the reference is not compared with itself
-  // One mirror pair (+40 against −40) per mesh.
-  BOOST_TEST(v.strings("mirror_order").size() == 3u);
+  BOOST_TEST(!v.has_child("throw_1_mesh_1"));  // a reference is not compared with itself
+  BOOST_TEST(!v.has_child("throw_1_mesh_3"));
+  // The two references (N = 16 both): throw 1 differs (6 against 5), throw 2 does not.
+  BOOST_TEST(v.at("cuts_throw_1").text("verdict") == "different bounce counts");
+  BOOST_TEST(v.at("cuts_throw_2").text("verdict") == "same bounce count");
+  // Mirror pairs (+40 against −40) per mesh. Mesh 4's members swap 8 and 9 between the throws:
+  // every pair differs, and the paired interval of their mean difference (0 ± 1.84) holds 0.
+  BOOST_TEST(v.strings("mirror_order").size() == 4u);
   BOOST_TEST(v.at("mirror_2_1_mesh_1").text("verdict") == "same bounce count");
   BOOST_TEST(v.at("mirror_2_1_mesh_2").text("verdict") == "not decided: runs failed");
   BOOST_TEST(v.at("mirror_2_1_mesh_3").text("verdict") == "different bounce counts");
+  BOOST_TEST(v.at("mirror_2_1_mesh_4").text("verdict") == "no difference established");
+  BOOST_TEST(v.at("mirror_2_1_mesh_4").number("unequal_pairs") == 4);
   const Table& m = r.table("meshes");
   BOOST_TEST(m.column("changed")[1] == 1);
   BOOST_TEST(m.column("undecided")[1] == 1);
   BOOST_TEST(m.column("mirror_different")[2] == 1);
+  // Settled N per cut: the diagonal's N = 11 differs at throw 1, so not shown to settle; the
+  // centre's N = 11 differs too (8.5 against 5).
+  const Table& cuts = r.table("cuts");
+  BOOST_REQUIRE_EQUAL(cuts.rows(), 2u);
+  BOOST_TEST(std::isnan(cuts.column("settled_segments")[0]));
+  BOOST_TEST(std::isnan(cuts.column("settled_segments")[1]));
+}
+
+BOOST_AUTO_TEST_CASE(a_cut_settles_from_the_smallest_n_whose_meshes_all_agree_with_its_reference) {
+  // Diagonal cut at N = 11, 16, 32: N = 16 and 32 agree at every throw, N = 11 does not: settled
+  // from 16. A failed run at N = 16 would leave it undecided, and then nothing settles.
+  MeshStudyOptions o;
+  o.meshes = {prism(11, RimSplit::diagonal), prism(16, RimSplit::diagonal), prism(32, RimSplit::diagonal)};
+  o.spins_rev_s = {40};
+  o.attack_angles_deg = {10};
+  o.members = 2;
+  std::vector<MeshThrowRuns> runs(1);
+  runs[0] = {40, 10, {{9, 9}, {3, 3}, {3, 3}}};
+  BOOST_TEST(mesh_study_findings(runs, o, "test").table("cuts").column("settled_segments")[0] == 16.0);
+  runs[0].counts[1] = {3, -1};
+  BOOST_TEST(std::isnan(mesh_study_findings(runs, o, "test").table("cuts").column("settled_segments")[0]));
 }
 
 BOOST_AUTO_TEST_CASE(a_stone_that_is_its_own_mirror_image_counts_the_same_either_way_round) {

@@ -49,4 +49,35 @@ MeanDifference welch_difference(const std::vector<double>& a, const std::vector<
   return d;
 }
 
+MeanDifference paired_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  MeanDifference d;
+  d.n_a = static_cast<int>(a.size());
+  d.n_b = static_cast<int>(b.size());
+  if (a.size() != b.size() || d.n_a < 2) return d;
+  d.valid = true;
+  auto moments = [](const std::vector<double>& x, double& mean, double& sd) {
+    mean = std::accumulate(x.begin(), x.end(), 0.0) / x.size();
+    double ss = 0;
+    for (double v : x) ss += (v - mean) * (v - mean);
+    sd = std::sqrt(ss / (x.size() - 1));
+  };
+  moments(a, d.mean_a, d.sd_a);
+  moments(b, d.mean_b, d.sd_b);
+  std::vector<double> diff(a.size());
+  for (std::size_t k = 0; k < a.size(); ++k) diff[k] = a[k] - b[k];
+  double sd = 0;
+  moments(diff, d.difference, sd);
+  d.standard_error = sd / std::sqrt(static_cast<double>(diff.size()));
+  if (!(d.standard_error > 0)) {
+    d.low = d.high = d.difference;
+    return d;
+  }
+  d.dof = static_cast<double>(diff.size() - 1);
+  const boost::math::students_t dist(d.dof);
+  const double t = boost::math::quantile(boost::math::complement(dist, 0.025));
+  d.low = d.difference - t * d.standard_error;
+  d.high = d.difference + t * d.standard_error;
+  return d;
+}
+
 }  // namespace stoneskip

@@ -29,4 +29,11 @@ struct MeanDifference {
 
 MeanDifference welch_difference(const std::vector<double>& a, const std::vector<double>& b);
 
+// The same for two ensembles whose members are paired (a_k and b_k thrown with the same
+// perturbation: two meshes, or a throw and its mirror image): the t interval of the mean of the
+// differences d_k = a_k − b_k, se = sd(d)/√n, ν = n − 1 (Student 1908). Members without spread in
+// d give the difference itself as the interval. a and b must have one size (≥ 2 to be valid);
+// mean_a, sd_a, mean_b, sd_b are each ensemble's own.
+MeanDifference paired_difference(const std::vector<double>& a, const std::vector<double>& b);
+
 }  // namespace stoneskip
