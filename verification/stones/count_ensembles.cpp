@@ -35,17 +35,6 @@ std::vector<double> sampled_values(const std::vector<double>& grid, int count) {
 
 namespace {
 
-// A count as the sweeps of section 3 take it (bounce_sweep.cpp): no trajectory recorded. CVODE
-// returns at every output time when it records one, which moves its solution within its tolerance,
-// and in the paper convention that alone changes counts (attack 20°, rtol 1e-8: 6 with 1 ms
-// samples, 15 without), so the single runs here would not be section 3's.
-int bounces_of(const ThrowProblem& p, SolverChoice s) {
-  s.realtime.record_trajectory = false;
-  s.reference.record_trajectory = false;
-  const ThrowResult r = solve(p, s);
-  return r.outcome == Outcome::failed ? -1 : r.bounces;
-}
-
 // The members that ran (a failed solve has no count).
 std::vector<double> ran(const std::vector<double>& counts, int& failed) {
   std::vector<double> out;
@@ -87,14 +76,14 @@ std::vector<CountEnsembleThrow> run_count_ensembles(const ThrowProblem& base, co
   for (std::size_t i = 0; i < out.size(); ++i) {
     CountEnsembleThrow& t = out[i];
     const ThrowProblem& p = problems[i];
-    jobs.push_back([&t, &p, &realtime] { t.realtime_single = bounces_of(p, realtime); });
-    jobs.push_back([&t, &p, &reference] { t.reference_single = bounces_of(p, reference); });
+    jobs.push_back([&t, &p, &realtime] { t.realtime_single = sweep_bounce_count(p, realtime); });
+    jobs.push_back([&t, &p, &reference] { t.reference_single = sweep_bounce_count(p, reference); });
     for (std::size_t k = 0; k < factors.size(); ++k) {
       ThrowParameters tp = p.parameters;
       tp.speed_m_s *= factors[k];  // the speed, relatively; direction, attitude and spin kept
       const ThrowProblem q = with_parameters(p, tp);
-      jobs.push_back([&t, q, k, &realtime] { t.realtime[k] = bounces_of(q, realtime); });
-      jobs.push_back([&t, q, k, &reference] { t.reference[k] = bounces_of(q, reference); });
+      jobs.push_back([&t, q, k, &realtime] { t.realtime[k] = sweep_bounce_count(q, realtime); });
+      jobs.push_back([&t, q, k, &reference] { t.reference[k] = sweep_bounce_count(q, reference); });
     }
   }
   run_jobs(jobs, parallel);

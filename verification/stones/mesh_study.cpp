@@ -41,14 +41,6 @@ std::size_t MeshStudyOptions::reference_of(std::size_t m) const {
 
 namespace {
 
-// A count as the sweeps take it (no trajectory recorded: count_ensembles.cpp says why).
-double bounces_of(const ThrowProblem& p, SolverChoice s) {
-  s.realtime.record_trajectory = false;
-  s.reference.record_trajectory = false;
-  const ThrowResult r = solve(p, s);
-  return r.outcome == Outcome::failed ? -1.0 : static_cast<double>(r.bounces);
-}
-
 struct Summary {
   std::vector<double> ran;  // the members with a count
   int failed = 0;
@@ -154,7 +146,7 @@ std::vector<MeshThrowRuns> run_mesh_study(const ThrowProblem& base, const Solver
         slots.push_back(&r.counts[m][k]);
       }
     }
-  parallel_for(problems.size(), [&](std::size_t i) { *slots[i] = bounces_of(problems[i], solver); }, parallel);
+  parallel_for(problems.size(), [&](std::size_t i) { *slots[i] = sweep_bounce_count(problems[i], solver); }, parallel);
   return out;
 }
 

@@ -86,4 +86,11 @@ StateAt state_at(const ThrowProblem& p, const SolverChoice& s, double t_s) {
   return out;
 }
 
+int sweep_bounce_count(const ThrowProblem& p, SolverChoice s) {
+  s.realtime.record_trajectory = false;
+  s.reference.record_trajectory = false;
+  const ThrowResult r = solve(p, s);
+  return r.outcome == Outcome::failed ? -1 : r.bounces;
+}
+
 }  // namespace stoneskip
