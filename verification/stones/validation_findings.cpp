@@ -286,12 +286,27 @@ Record variant_record(const VariantResult& R, const ValidationOptions& o) {
     const std::size_t at = index_of(o.clanet_attack_deg, o.min_speed_attack_deg);
     if (at < R.min_speed.size()) store_bisected(g, "min_speed_at_compared_attack", R.min_speed[at]);
     double best = kNaN, speed = 1e300;
+    std::size_t best_i = 0;
     for (std::size_t i = 0; i < R.min_speed.size(); ++i)
       if (R.min_speed[i].found && R.min_speed[i].value() < speed) {
         speed = R.min_speed[i].value();
         best = o.clanet_attack_deg[i];
+        best_i = i;
       }
     g.set("best_attack_deg", best);
+    // The grid's argmin is not one angle where another angle's minimum-speed bracket overlaps the
+    // lowest one's (equal to the bisection's resolution): the span of such angles is stored, and
+    // the ranking's argmin row holds only if every angle of it lies within the bound.
+    double tied_lo = best, tied_hi = best;
+    if (std::isfinite(best))
+      for (std::size_t i = 0; i < R.min_speed.size(); ++i) {
+        const BisectedValue& b = R.min_speed[i];
+        if (!b.found || b.lo > R.min_speed[best_i].hi) continue;
+        tied_lo = std::min(tied_lo, o.clanet_attack_deg[i]);
+        tied_hi = std::max(tied_hi, o.clanet_attack_deg[i]);
+      }
+    g.set("best_attack_tied_low_deg", tied_lo);
+    g.set("best_attack_tied_high_deg", tied_hi);
     store_bisected(g, "largest_path_angle", R.largest_path_angle);
     Table ct{{"speed_m_s", "contact_s"}, {}};
     for (std::size_t i = 0; i < o.clanet_contact_speeds_m_s.size(); ++i)
@@ -373,6 +388,10 @@ ScoredValue scored_value(const Record& g, const std::string& key, const Validati
     s.model = g.number("best_attack_deg");
     s.has_value = std::isfinite(s.model);
     if (!s.has_value) s.note = "no bounce at any attack angle tried";
+    else if (g.has_number("best_attack_tied_low_deg") &&
+             g.number("best_attack_tied_low_deg") < g.number("best_attack_tied_high_deg"))
+      s.note = "tied: the minimum speeds at " + num(g.number("best_attack_tied_low_deg")) + "–" +
+               num(g.number("best_attack_tied_high_deg")) + "° lie within the bisection's bracket of the lowest";
   } else if (key == "clanet_max_path_angle") {
     from_bisection(g.at("largest_path_angle"));
   } else if (key == "clanet_contact_time") {
@@ -409,6 +428,10 @@ void skip_inputs(Record& in, const std::string& prefix, const Record& g, const s
   };
   in.set(prefix + "min_speed", value("clanet_min_speed"));
   in.set(prefix + "best_attack", value("clanet_best_attack"));
+  if (g.has_number("best_attack_tied_low_deg")) {
+    in.set(prefix + "best_attack_tied_low", g.number("best_attack_tied_low_deg"));
+    in.set(prefix + "best_attack_tied_high", g.number("best_attack_tied_high_deg"));
+  }
   in.set(prefix + "max_path_angle", value("clanet_max_path_angle"));
   in.set(prefix + "contact_time", value("clanet_contact_time"));
   const Record& e = g.at("contact_exponent");

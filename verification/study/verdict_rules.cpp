@@ -38,8 +38,13 @@ std::vector<std::string> missed_rows(const Record& in, const std::string& v) {
   };
   const double f = in.number("min_speed_fraction"), g = in.number("contact_time_fraction");
   row(within(in.number(v + "min_speed"), in.number("min_speed_low") * (1 - f), in.number("min_speed_high") * (1 + f)), "U_min");
-  row(within(in.number(v + "best_attack"), in.number("best_attack_low") - in.number("best_attack_bound"),
-             in.number("best_attack_high") + in.number("best_attack_bound")),
+  // The argmin: where the grid's lowest minimum speeds tie over a span of angles (records since
+  // the span was stored), every angle of it must lie within the bound.
+  const double a_lo = in.number("best_attack_low") - in.number("best_attack_bound"),
+               a_hi = in.number("best_attack_high") + in.number("best_attack_bound");
+  const bool tied = in.has_number(v + "best_attack_tied_low");
+  row(tied ? within(in.number(v + "best_attack_tied_low"), a_lo, a_hi) && within(in.number(v + "best_attack_tied_high"), a_lo, a_hi)
+           : within(in.number(v + "best_attack"), a_lo, a_hi),
       "argmin α");
   row(within(in.number(v + "max_path_angle"), in.number("max_path_angle_low") - in.number("max_path_angle_bound"),
              in.number("max_path_angle_high") + in.number("max_path_angle_bound")),

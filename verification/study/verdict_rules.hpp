@@ -71,7 +71,9 @@
 //                        excludes the expected exponent | exponent not established
 //                        (the 95 % interval decides, as for order_fit: within expected ± tolerance,
 //                        entirely outside it, or neither; fewer than 3 points or no fit: too few)
-//   skips_like_a_stone   a variant's min_speed, best_attack, max_path_angle, contact_time,
+//   skips_like_a_stone   a variant's min_speed, best_attack (and, where stored, best_attack_tied_low/
+//                        high: the span of grid angles whose minimum speeds tie with the lowest, all
+//                        of which must lie within the bound), max_path_angle, contact_time,
 //                        contact_exponent_low/high, pitch_change_deg, roll_change_deg, surfing, diving,
 //                        trout (0/1: reproduced), max_residual_ratio, max_gain_ratio; the measured
 //                        ranges (min_speed_low/high, best_attack_low/high, max_path_angle_low/high,

@@ -83,6 +83,21 @@ BOOST_AUTO_TEST_CASE(a_variant_skips_like_a_stone_only_within_every_bound) {
   BOOST_TEST(decide("skips_like_a_stone", in) == "not passive");
 }
 
+BOOST_AUTO_TEST_CASE(a_tied_argmin_holds_only_if_every_tied_angle_is_within_the_bound) {
+  // Oracle: the rule's definition. The argmin window is [15, 25]° (bounds(): measured 20°, bound
+  // 5°). A point argmin of 20° whose minimum speed ties with 30° (their bisection brackets overlap)
+  // does not hold the row: the model's argmin may be 30°. Records without the tied span are judged
+  // on the point, as before.
+  Record in = bounds();
+  passing(in, "");
+  in.set("best_attack", 20.0).set("best_attack_tied_low", 20.0).set("best_attack_tied_high", 20.0);
+  BOOST_TEST(decide("skips_like_a_stone", in) == "skips like a real stone");
+  in.set("best_attack_tied_high", 30.0);
+  BOOST_TEST(decide("skips_like_a_stone", in) == "misses argmin α");
+  in.set("best_attack_tied_low", 15.0).set("best_attack_tied_high", 25.0);
+  BOOST_TEST(decide("skips_like_a_stone", in) == "skips like a real stone");
+}
+
 BOOST_AUTO_TEST_CASE(the_cheapest_passing_free_variant_is_named_or_the_rows_none_meets_and_the_closest) {
   // Oracle: by hand — of three variants, the cheapest passes but is held (not a candidate), the
   // next passes and is free: it is named. When no free variant passes, the rows that every free
