@@ -315,6 +315,8 @@ void bench(const BenchArgs& a) {
   j["clocks"] = "frames/s and throws/s: wall (best of the repeats; _median: median), _cpu: the scene thread's CPU; "
                 "stencil: wall (thread CPU with --cpu-clock: stencil_clock), best sample against the copy kernel's best sample";
   j["quick"] = a.quick;
+  j["scene_repeats"] = o.scene_repeats;  // runs whose best (and median) the figures are
+  j["sweep_repeats"] = o.sweep.repeats;
   // The proportion's 95 % Wilson interval (verification/stones/work_precision_grid_stats.hpp): the
   // verdict on the 0.98 target reads its lower end, not the point estimate.
   const ProportionInterval match = wilson_interval(static_cast<int>(cvode.matched), static_cast<int>(cvode.agreeing));

@@ -62,6 +62,8 @@ BOOST_AUTO_TEST_CASE(bench_json_names_every_headline_figure_and_they_agree) {
   // The sweep's throws ran on sweep_workers threads during its wall time.
   BOOST_TEST(j["sweep_cpu_s"].get<double>() <= (1 + kClockSlack) * j["sweep_workers"].get<double>() * j["sweep_wall_s"].get<double>());
   BOOST_TEST(j["scene_frames"].get<long>() == 45);  // the quick scene: 0.5 s at 90 frames/s
+  BOOST_TEST(j["scene_repeats"].get<long>() == 1);   // --quick without --repeats: each part once
+  BOOST_TEST(j["sweep_repeats"].get<long>() == 1);
   BOOST_TEST(j["sweep_throws"].get<long>() == 6);   // 3 spins × 2 attack angles
   BOOST_TEST(j["sweep_throws_per_s"].get<double>() * j["sweep_wall_s"].get<double>() == 6.0, boost::test_tools::tolerance(kRoundoff));
 }
