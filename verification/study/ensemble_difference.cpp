@@ -7,6 +7,18 @@
 
 namespace stoneskip {
 
+namespace {
+
+// The sample mean and standard deviation (n − 1) of x (at least 2 values).
+void moments(const std::vector<double>& x, double& mean, double& sd) {
+  mean = std::accumulate(x.begin(), x.end(), 0.0) / x.size();
+  double ss = 0;
+  for (double v : x) ss += (v - mean) * (v - mean);
+  sd = std::sqrt(ss / (x.size() - 1));
+}
+
+}  // namespace
+
 std::vector<double> perturbation_factors(int members, double smallest, double largest) {
   std::vector<double> out;
   const int half = members / 2;
@@ -25,12 +37,6 @@ MeanDifference welch_difference(const std::vector<double>& a, const std::vector<
   d.n_b = static_cast<int>(b.size());
   if (d.n_a < 2 || d.n_b < 2) return d;
   d.valid = true;
-  auto moments = [](const std::vector<double>& x, double& mean, double& sd) {
-    mean = std::accumulate(x.begin(), x.end(), 0.0) / x.size();
-    double ss = 0;
-    for (double v : x) ss += (v - mean) * (v - mean);
-    sd = std::sqrt(ss / (x.size() - 1));
-  };
   moments(a, d.mean_a, d.sd_a);
   moments(b, d.mean_b, d.sd_b);
   d.difference = d.mean_a - d.mean_b;
@@ -55,12 +61,6 @@ MeanDifference paired_difference(const std::vector<double>& a, const std::vector
   d.n_b = static_cast<int>(b.size());
   if (a.size() != b.size() || d.n_a < 2) return d;
   d.valid = true;
-  auto moments = [](const std::vector<double>& x, double& mean, double& sd) {
-    mean = std::accumulate(x.begin(), x.end(), 0.0) / x.size();
-    double ss = 0;
-    for (double v : x) ss += (v - mean) * (v - mean);
-    sd = std::sqrt(ss / (x.size() - 1));
-  };
   moments(a, d.mean_a, d.sd_a);
   moments(b, d.mean_b, d.sd_b);
   std::vector<double> diff(a.size());
