@@ -187,7 +187,14 @@ void release_part(SectionWriter& w, const std::string& key, const Record& c) {
     listed += (k == 0 ? "" : k + 1 == perturbed.size() ? ", and " : ", ") + perturbed[k];
   w.text("The intervals join the nominal estimate with the " + fmt(s.number("interval_low_percent"), 3) + "–" +
          fmt(s.number("interval_high_percent"), 3) + " % range of " + fmt(th.number("members")) +
-         " re-runs of the whole chain on perturbed inputs: " + listed + ".");
+         " re-runs of the whole chain on perturbed inputs: " + listed + "." +
+         // With few re-runs the quantiles are read off the extreme draws (0.025 (n − 1) < 1).
+         (s.number("interval_low_percent") / 100 * (th.number("members") - 1) < 1
+              ? " With " + fmt(th.number("members")) + " re-runs the quantiles are interpolated between the extreme draws: "
+                "**too few re-runs to resolve a " + fmt(s.number("interval_low_percent"), 3) + "–" +
+                fmt(s.number("interval_high_percent"), 3) + " % range**; these intervals are rough (about " +
+                fmt(std::ceil(100 / s.number("interval_low_percent")) + 1) + " re-runs resolve it)."
+              : std::string()));
   if (th.flag("clipped"))
     w.text("The accelerometer clipped during the swing, so integrating it gives only a lower bound on the speed (" +
            fmt(th.number("accel_lower_speed_m_s"), 3) + " m/s; " + fmt(th.number("accel_upper_speed_m_s"), 3) +

@@ -268,8 +268,11 @@ void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
               t.rate_hz, t.mean_rate_hz, 1e3 * t.jitter_s, 1e3 * t.min_interval_s, 1e3 * t.max_interval_s, t.gaps,
               t.dropped_reports, t.repeated, to_string(t.clock));
   std::printf("  saturated fraction %.3f\n", an.saturated_fraction);
+  const bool rough = intervals && static_cast<int>(an.ensemble.size()) < kMembersResolvingInterval;
   std::printf("  as measured (the stone at the remote's mounting, in the room)%s:\n",
-              intervals ? "" : "; no intervals (no ensemble: capture validate --members N gives them)");
+              !intervals ? "; no intervals (no ensemble: capture validate --members N gives them)"
+              : rough    ? "; rough intervals: too few members to resolve the 2.5-97.5 % range (about 41 do)"
+                         : "");
   show("speed", an.measured_speed_m_s,
        !an.clipped ? std::string("m/s")
        : intervals ? std::string("m/s (accelerometer clipped: the lever-arm value; the interval spans the accelerometer's bounds)")

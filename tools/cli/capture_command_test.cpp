@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <toml.hpp>
@@ -247,7 +248,24 @@ BOOST_AUTO_TEST_CASE(a_report_holds_every_capture_or_none_and_json_stays_json) {
   BOOST_TEST(objects == 2);
   BOOST_TEST(fs::exists(dir / "index.md"));
   BOOST_TEST(fs::exists(dir / "data.h5"));
+  // 4 re-runs cannot resolve a 2.5–97.5 % range (0.025 × 3 < 1): the page says so.
+  std::ifstream page(dir / "index.md");
+  const std::string md((std::istreambuf_iterator<char>(page)), std::istreambuf_iterator<char>());
+  BOOST_TEST(md.find("too few re-runs to resolve a 2.5–97.5 % range") != std::string::npos);
   fs::remove_all(tmp);
+}
+
+BOOST_AUTO_TEST_CASE(intervals_from_too_few_members_are_called_rough) {
+  // Oracle: the quantile rule (capture_analysis.hpp): the 2.5 % quantile of n members lies beyond
+  // the least of them only when 0.025 (n − 1) ≥ 1, so from 41 members on; 40 are rough, 41 are not.
+  const std::string file = "cases/captures/gentle_sidearm.log --no-simulate --members ";
+  const Run few = run("capture validate " + file + "40");
+  BOOST_TEST(few.status == 0);
+  BOOST_TEST(few.out.find("rough intervals") != std::string::npos, few.out);
+  const Run enough = run("capture validate " + file + "41");
+  BOOST_TEST(enough.status == 0);
+  BOOST_TEST(enough.out.find("rough intervals") == std::string::npos, enough.out);
+  BOOST_TEST(enough.out.find(" [") != std::string::npos, enough.out);
 }
 
 // The shipped pond for measured throws, shrunk for a test: 0.3 s (the first contact and its rings)

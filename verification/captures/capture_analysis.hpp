@@ -83,6 +83,10 @@ struct CaptureOptions {
 // The intervals (and the ensemble's bounce-count range) span these quantiles of the members.
 constexpr double kIntervalLowQuantile = 0.025;
 constexpr double kIntervalHighQuantile = 0.975;
+// The fewest members whose 2.5 % quantile lies beyond the least of them (0.025 (n − 1) ≥ 1): with
+// fewer, the interval's ends are read between the extreme draws and their neighbours, and the
+// range the quantiles name is not resolved.
+constexpr int kMembersResolvingInterval = 41;
 
 struct Interval {
   double nominal = 0, low = 0, high = 0;
