@@ -128,6 +128,7 @@ void error_callback(int code, const char* module, const char* function, char* ms
 struct CvodeObjects {
   SUNContext ctx = nullptr;
   N_Vector y = nullptr;
+  N_Vector dky = nullptr;  // an output time's state, interpolated (sampled runs)
   SUNMatrix A = nullptr;
   SUNLinearSolver LS = nullptr;
   SUNNonlinearSolver NLS = nullptr;
@@ -140,6 +141,7 @@ struct CvodeObjects {
     if (NLS) SUNNonlinSolFree(NLS);
     if (LS) SUNLinSolFree(LS);
     if (A) SUNMatDestroy(A);
+    if (dky) N_VDestroy(dky);
     if (y) N_VDestroy(y);
     if (ctx) SUNContext_Free(&ctx);
   }
@@ -229,6 +231,7 @@ bool ReferenceSolve::check_inputs(const RigidState& initial) {
 void ReferenceSolve::setup(const RigidState& s0) {
   check(SUNContext_Create(nullptr, &cv_.ctx), "SUNContext_Create");
   cv_.y = check_ptr(N_VNew_Serial(kStateSize, cv_.ctx), "N_VNew_Serial");
+  cv_.dky = check_ptr(N_VNew_Serial(kStateSize, cv_.ctx), "N_VNew_Serial");
   const StateVector y0 = to_vector(s0);
   std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(cv_.y));
   const bool bdf = o_.method == ReferenceMethod::bdf;
@@ -432,19 +435,36 @@ void ReferenceSolve::run(const RigidState& initial) {
   finish(s0);
 }
 
-// 3. To the next output time, or to an event (a restart there, or not, by the strategy).
+// 3. Toward t_max, step by step when sampled, to an event (a restart there, or not, by the
+// strategy). CVODE is always asked for t_max, never for an output time: it bounds the first step
+// of each segment by the distance to the time it is asked for (cvHin), so asking for output times
+// made the steps, and the solution within its tolerance, depend on the sampling. Sampled runs take
+// one step a call (CV_ONE_STEP) and interpolate the output times inside it (CVodeGetDky, the
+// interpolant CV_NORMAL itself uses): they take the steps of a run that records nothing.
 void ReferenceSolve::integrate() {
   const bool sampled = o_.record_trajectory && o_.output_dt_s > 0;
   const double eps = std::numeric_limits<double>::epsilon();
   long k_out = 1;
-  while (!done_) {
-    const double tout = sampled ? std::min(o_.t_max_s, k_out * o_.output_dt_s) : o_.t_max_s;
-    // An output time that an event has just reached: CVODE refuses a tout this close to t.
-    if (tout - t_ <= 16 * eps * std::max(std::abs(t_), std::abs(tout))) {
-      if (tout >= o_.t_max_s) break;
-      ++k_out;
-      continue;
+  double t_left = 0;  // the time the last call returned (the interpolant reaches back to here)
+  // The output times in (t_left, t_to] (all at or before t_max), interpolated in CVODE's last step;
+  // one an event has just reached (within round-off of t_left) was sampled there.
+  auto samples_to = [&](double t_to) {
+    for (;; ++k_out) {
+      const double tk = std::min(o_.t_max_s, static_cast<double>(k_out) * o_.output_dt_s);
+      if (tk > t_to) return;
+      if (tk - t_left <= 16 * eps * std::max(std::abs(t_left), std::abs(tk))) {
+        if (tk >= o_.t_max_s) return;
+        continue;
+      }
+      check(CVodeGetDky(cv_.mem, tk, 0, cv_.dky), "CVodeGetDky");
+      RigidState s = from_vector(N_VGetArrayPointer(cv_.dky));
+      s.orientation.normalize();
+      sample(tk, s);
+      if (tk >= o_.t_max_s) return;
     }
+  };
+  while (!done_) {
+    if (t_ >= o_.t_max_s) break;
     long nst = 0;
     check(CVodeGetNumSteps(cv_.mem, &nst), "CVodeGetNumSteps");
     const long total = r_.stats.steps + nst;
@@ -471,17 +491,19 @@ void ReferenceSolve::integrate() {
     check(CVodeSetMaxNumSteps(cv_.mem, std::min(left, o_.max_steps_per_ms - (total - window_steps_))),
           "CVodeSetMaxNumSteps");
     double t_ret = t_;
-    const int flag = CVode(cv_.mem, tout, cv_.y, &t_ret, CV_NORMAL);
+    const int flag = CVode(cv_.mem, o_.t_max_s, cv_.y, &t_ret, sampled ? CV_ONE_STEP : CV_NORMAL);
     if (flag == CV_ROOT_RETURN) {
-      t_ = t_ret;
+      // The output times before the event, in the mode before it.
+      if (sampled) samples_to(std::nextafter(t_ret, -1.0));
+      t_ = t_left = t_ret;
       if (!handle_root(t_)) break;
       continue;
     }
     if (flag == CV_SUCCESS || flag == CV_TSTOP_RETURN) {
-      t_ = t_ret;
-      sample(t_, state());
+      if (sampled) samples_to(t_ret);
+      t_ = t_left = t_ret;
+      if (!sampled) sample(t_, state());  // at t_max: unsampled runs return only there and at events
       if (flag == CV_TSTOP_RETURN || t_ >= o_.t_max_s) break;
-      ++k_out;
       continue;
     }
     if (flag == CV_TOO_MUCH_WORK) {

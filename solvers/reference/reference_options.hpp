@@ -54,7 +54,7 @@ struct ReferenceOptions {
   double atol = 1e-12;          // absolute tolerance on positions (m); see atol_scaling
   ToleranceScaling atol_scaling = ToleranceScaling::per_component;
   double t_max_s = 10.0;
-  double output_dt_s = 1e-3;    // trajectory sampling; located events are always sampled
+  double output_dt_s = 1e-3;    // trajectory sampling (interpolated: the steps do not depend on it); located events are always sampled
   long max_steps = 2000000;     // over the whole throw; exceeding it fails the solve
   bool record_trajectory = true;
   // The default is the cheapest strategy whose contact times stay within the stated tolerance of

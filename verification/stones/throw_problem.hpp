@@ -40,9 +40,8 @@ SolverChoice reference_choice(const ReferenceOptions& o);
 // Solves the throw; t_max_s and record_trajectory of the choice are used as given.
 ThrowResult solve(const ThrowProblem& p, const SolverChoice& s);
 // The bounce count of a solve as the sweeps take it, −1 where the solve failed. No trajectory is
-// recorded: CVODE returns at every output time when it records one, which moves its solution within
-// its tolerance, and in the paper convention that alone changes counts (attack 20°, rtol 1e-8: 6
-// with 1 ms samples, 15 without), so a count taken with samples would not be the sweeps'.
+// recorded (a count needs none; either solver takes the same steps with samples as without,
+// solvers/README.md).
 int sweep_bounce_count(const ThrowProblem& p, SolverChoice s);
 
 // Solves `repeats` times and returns the last result with stats.cpu_s the minimum over the runs
