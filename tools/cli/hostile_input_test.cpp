@@ -489,6 +489,36 @@ BOOST_AUTO_TEST_CASE(a_damaged_sweep_design_is_refused_by_sweep_plot) {
   }
 }
 
+BOOST_AUTO_TEST_CASE(a_hand_edited_sweep_table_is_refused_by_sweep_plot) {
+  // main: a count of 1e300 or 2.5, an outcome code of 99, a throw index of 1000 and an off-grid
+  // spin were drawn and counted without a word (a mean of 8e298 bounces on the page). Oracle: the
+  // table's rules (verification/sweep/sweep_table_check.hpp); columns of the 2 × 2 realtime grid:
+  // throw, speed, spin, realtime_bounces (3), realtime_outcome (4).
+  Scratch s;
+  const std::string base = (fs::current_path() / "cases" / "paper_8ms_spin.toml").string();
+  const fs::path sweep = s.write("small.toml", "base = \"" + base +
+                                                   "\"\n[design]\nkind = \"grid\"\n[[vary]]\nkey = \"throw.speed_m_s\"\nfrom = 4.0\nto = "
+                                                   "14.0\ncount = 2\n[[vary]]\nkey = \"throw.spin_rev_s\"\nfrom = 0.0\nto = 40.0\ncount = 2\n");
+  const fs::path good = s.dir / "good.h5";
+  BOOST_REQUIRE(run_apart({"sweep", sweep.string(), "--quiet", "--out", good.string()}).status == 0);
+  struct Edit {
+    unsigned long long row, column;
+    double value;
+    std::string fragment;
+  };
+  for (const Edit& e : std::vector<Edit>{{0, 3, 1e300, "throws.realtime_bounces: throw 0: 1.0000000000000001e+300 is not a count"},
+                                         {1, 3, 2.5, "throws.realtime_bounces: throw 1: 2.5 is not a count"},
+                                         {2, 4, 99, "throws.realtime_outcome: throw 2: 99 is not an outcome code"},
+                                         {3, 0, 1000, "throws.throw: throw 3: the row holds throw 1000"},
+                                         {1, 2, 7.5, "throws.throw.spin_rev_s: throw 1: 7.5 is not the design's value 40"}}) {
+    const fs::path bad = s.dir / "bad.h5";
+    fs::copy_file(good, bad, fs::copy_options::overwrite_existing);
+    stoneskip::test::set_cell(bad, "/throws", e.row, e.column, e.value);
+    expect_refused(run_apart({"sweep-plot", bad.string(), "--no-render", "--out", (s.dir / "page").string()}), {bad.string(), e.fragment});
+    BOOST_TEST(!fs::exists(s.dir / "page"));
+  }
+}
+
 BOOST_AUTO_TEST_CASE(bad_movie_options_are_refused_before_the_scene_runs) {
   // main: --movie-rate 1e-300 → SIGFPE (a stride of 1e302 frames); --movie "" → no movie and exit
   // 0; a scene shorter than one movie frame failed only after it had run. Oracle: the movie

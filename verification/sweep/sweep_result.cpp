@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "tools/io/input_error.hpp"
+#include "verification/sweep/sweep_table_check.hpp"
 
 namespace stoneskip {
 
@@ -111,9 +112,14 @@ SweepData read_sweep_file(const std::filesystem::path& path) {
     p.code_version = root.attr_string("code_version");
     p.created_utc = root.attr_string("created_utc");
     const std::string solvers = root.attr_string("solvers");
-    d.solvers = solvers == "realtime" ? SweepSolvers::realtime
-                : solvers == "reference" ? SweepSolvers::reference
-                                         : SweepSolvers::both;
+    bool known = false;
+    for (SweepSolvers s : {SweepSolvers::realtime, SweepSolvers::reference, SweepSolvers::both})
+      if (solvers == to_string(s)) {
+        d.solvers = s;
+        known = true;
+      }
+    if (!known)
+      throw_input_error(path.string(), 0, "solvers", "'" + solvers + "' is not realtime, reference or realtime,reference");
     d.throws = root.read_table("throws");
     const H5Group design = root.open_group("design");
     if (!parse_design_kind(design.attr_string("kind"), d.design.kind))
@@ -140,6 +146,7 @@ SweepData read_sweep_file(const std::filesystem::path& path) {
     if (d.design.size() != d.throws.rows())
       throw_input_error(path.string(), 0, "design", "describes " + std::to_string(d.design.size()) + " throws but /throws has " +
                                                        std::to_string(d.throws.rows()) + " rows");
+    check_sweep_table(path.string(), d.design, d.solvers, d.throws);
     const H5Group notes = root.open_group("notes");
     const auto ids = notes.read_ints("throw");
     const auto solver = notes.read_strings("solver");
