@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <optional>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
@@ -13,6 +14,7 @@
 
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/signal_cleanup.hpp"
 
 namespace stoneskip {
 
@@ -176,14 +178,49 @@ void SweepJournal::stop_syncing() {
   syncer_.join();
 }
 
+// The journal is made whole before it has its name: created, locked and given its header under a
+// temporary name of this process, then linked to `path` (link(2) fails where `path` exists, as
+// O_EXCL did) and the temporary name removed. Created at `path` itself, it was there for a moment
+// empty and unlocked, and a `sweep --resume` started then took it for a journal whose header a kill
+// had torn, removed it, and ran into the same output. Where the file system has no hard links,
+// the journal is created at `path` as before.
 SweepJournal SweepJournal::create(const fs::path& path, const JournalIdentity& identity, double sync_interval_s) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_APPEND | O_CLOEXEC, 0644);
+  const fs::path tmp = path.string() + ".tmp-" + std::to_string(::getpid());
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_APPEND | O_CLOEXEC, 0644);
   if (fd < 0)
     throw_input_error(path.string(), 0, "", std::string("cannot create the sweep journal: ") + std::strerror(errno));
-  SweepJournal j(path, lock_or_fail(path, fd), sync_interval_s);
-  j.write_record(kHeader, encode_identity(with_byte_order(identity)));
-  j.sync();
-  return j;
+  // Ours from here: removed on every way out of this function, and by a signal meanwhile.
+  RegisteredTemporary registered(tmp, TemporaryKind::file);
+  struct RemoveTemporary {
+    const fs::path& tmp;
+    RegisteredTemporary& registered;
+    ~RemoveTemporary() {
+      ::unlink(tmp.c_str());
+      registered.release();
+    }
+  };
+  int linked = -1, link_errno = 0;
+  std::optional<SweepJournal> j;
+  {
+    const RemoveTemporary remove{tmp, registered};
+    j.emplace(SweepJournal(path, lock_or_fail(tmp, fd), sync_interval_s));
+    j->write_record(kHeader, encode_identity(with_byte_order(identity)));
+    j->sync();
+    linked = ::link(tmp.c_str(), path.c_str());
+    link_errno = errno;
+  }
+  if (linked == 0) return std::move(*j);
+  j.reset();  // closes the temporary journal (already unlinked)
+  if (link_errno != EPERM && link_errno != EOPNOTSUPP && link_errno != ENOSYS)
+    throw_input_error(path.string(), 0, "", std::string("cannot create the sweep journal: ") + std::strerror(link_errno));
+  // No hard links here: created in place (the moment without a header remains on such a file system).
+  const int fd2 = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_APPEND | O_CLOEXEC, 0644);
+  if (fd2 < 0)
+    throw_input_error(path.string(), 0, "", std::string("cannot create the sweep journal: ") + std::strerror(errno));
+  SweepJournal in_place(path, lock_or_fail(path, fd2), sync_interval_s);
+  in_place.write_record(kHeader, encode_identity(with_byte_order(identity)));
+  in_place.sync();
+  return in_place;
 }
 
 SweepJournal SweepJournal::resume(const fs::path& path, const JournalIdentity& identity, double sync_interval_s,

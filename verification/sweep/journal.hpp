@@ -46,7 +46,8 @@ struct JournalRecovery {
 // For --resume: removes the journal at `path` and returns true when it holds no finished work
 // because its header was never completed — the file is empty, or a strict prefix of a header
 // record (the magic and type so far, then fewer bytes than the record's length says), as a kill
-// between create()'s open(O_CREAT | O_EXCL) and its header's write leaves it. Anything else (a
+// left it in builds that created the journal at its name before writing the header (create() now
+// links it whole; on a file system without hard links it still may). Anything else (a
 // whole journal, a foreign or damaged file) is left for resume() to read or refuse: false.
 // InputError if another sweep holds the journal's lock.
 bool remove_journal_with_torn_header(const std::filesystem::path& path);
@@ -57,7 +58,8 @@ bool journal_in_use(const std::filesystem::path& path);
 
 class SweepJournal {
  public:
-  // A new journal; InputError if it exists or cannot be created or locked.
+  // A new journal, made whole and locked under "<path>.tmp-PID" and then linked to `path`; InputError
+  // if `path` exists or the journal cannot be created or locked.
   static SweepJournal create(const std::filesystem::path& path, const JournalIdentity& identity, double sync_interval_s);
   // An existing journal, for --resume: checks it was written for the same identity (InputError
   // naming the first field that differs), reads every complete record, and truncates a torn tail

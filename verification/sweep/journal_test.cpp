@@ -8,11 +8,13 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <thread>
 
 #include "tools/io/input_error.hpp"
 #include "verification/sweep/journal.hpp"
@@ -284,6 +286,54 @@ BOOST_AUTO_TEST_CASE(a_journal_being_written_cannot_be_opened_twice) {
     BOOST_TEST(!journal_in_use(p));
     fs::remove(p);
   }
+}
+
+BOOST_AUTO_TEST_CASE(a_journal_appears_under_its_name_whole_and_locked) {
+  // Oracle: what `sweep --resume` does with a journal it finds (remove_journal_with_torn_header,
+  // then the lock). Created at its name, a journal was there for a moment empty and unlocked, and
+  // a --resume in that moment removed the live journal as a torn one. A thread here tries that on
+  // the name while this one creates and removes the journal 300 times: it must never find a torn
+  // journal (the old moment was microseconds wide, and this stress did not hit it in 3 runs of the
+  // old code: the fix rests on its construction, a journal linked to its name only when whole and
+  // locked; the stress guards against one that shows a journal early). The folder holds nothing
+  // else after each create (no temporary file), nor after a create refused because the name is taken.
+  const fs::path dir = scratch_dir() / "appears";
+  fs::create_directories(dir);
+  const fs::path p = dir / "j.journal";
+  std::atomic<bool> done{false};
+  std::atomic<long> torn{0}, seen{0};
+  std::thread resumer([&] {
+    while (!done) {
+      try {
+        if (remove_journal_with_torn_header(p)) ++torn;
+        else if (fs::exists(p)) ++seen;
+      } catch (const InputError&) {
+        ++seen;  // locked: a running sweep's, as it should be
+      }
+    }
+  });
+  for (int k = 0; k < 300; ++k) {
+    SweepJournal j = SweepJournal::create(p, kId, 1.0);
+    BOOST_TEST(journal_in_use(p));
+    std::size_t entries = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++entries;
+    BOOST_TEST(entries == 1u);
+    j.close_and_remove();
+  }
+  done = true;
+  resumer.join();
+  BOOST_TEST(torn.load() == 0);
+  BOOST_TEST_MESSAGE("the resuming thread found the live journal " << seen.load() << " times");
+  // Refused where the name is taken (a file of someone's): kept as it was, nothing else left.
+  { std::ofstream(p) << "someone's"; }
+  BOOST_CHECK_THROW(SweepJournal::create(p, kId, 1.0), InputError);
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++entries;
+  BOOST_TEST(entries == 1u);
+  std::ifstream in(p);
+  std::string text;
+  std::getline(in, text);
+  BOOST_TEST(text == "someone's");
 }
 
 BOOST_AUTO_TEST_SUITE_END()
