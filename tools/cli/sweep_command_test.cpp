@@ -15,6 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -272,6 +273,44 @@ BOOST_AUTO_TEST_CASE(a_second_sweep_into_a_running_one_is_told_it_is_running) {
     expect_bad_input(command("sweep " + sweep.string() + " --out " + out.string() + resume), {"another sweep is running"}, out, true);
   ::close(fd);
   fs::remove(journal);
+}
+
+BOOST_AUTO_TEST_CASE(a_journal_name_that_is_a_link_or_a_folder_is_refused_as_such_first) {
+  // main: a link at the journal's name (to someone's file) was first called "the journal of an
+  // interrupted sweep: finish it with --resume", which then refused it as a link; a dangling link
+  // gave "cannot create the sweep journal: File exists". Oracle: only a regular file can be a
+  // journal (journal.hpp); with or without --resume the line says what is there, and nothing is
+  // written through the link or into the folder.
+  const fs::path sweep = setup("linked", grid_sweep(2, 2, "[\"realtime\"]"));
+  const fs::path out = work() / "linked.h5", journal = out.string() + ".journal";
+  const fs::path someones = work() / "someones.txt";
+  fs::remove(out);
+  { std::ofstream(someones) << "someone's words"; }
+  struct Case {
+    const char* what;
+    std::function<void()> make;
+  };
+  const std::vector<Case> cases = {
+      {"a symbolic link", [&] { fs::create_symlink(someones, journal); }},
+      {"a symbolic link", [&] { fs::create_symlink(work() / "nowhere", journal); }},
+      {"a folder", [&] { fs::create_directory(journal); }},
+  };
+  for (const Case& c : cases) {
+    for (const char* resume : {"", " --resume"}) {
+      c.make();
+      const Outcome r = command("sweep " + sweep.string() + " --out " + out.string() + resume);
+      BOOST_TEST(r.status == 2, "exit status " << r.status << ", stderr: " << r.err);
+      BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, "stderr must be one line: " << r.err);
+      BOOST_TEST(r.err.find(journal.string() + ": is " + c.what + ", not a sweep journal") != std::string::npos, r.err);
+      BOOST_TEST(!fs::exists(out));
+      fs::remove(journal);
+    }
+  }
+  std::ifstream in(someones);
+  std::string text;
+  std::getline(in, text);
+  BOOST_TEST(text == "someone's words");
+  fs::remove(someones);
 }
 
 BOOST_AUTO_TEST_CASE(a_killed_sweep_resumes_to_the_same_table_computing_only_what_is_missing) {

@@ -1,5 +1,7 @@
 #include "verification/sweep/sweep_run.hpp"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -100,6 +102,13 @@ SweepPlan SweepPlan::prepare(const SweepData& spec, const SweepRunOptions& optio
   const fs::path jp = journal_path_for(options.out);
   const JournalIdentity identity = identity_of(plan.data_);
   std::error_code ec;
+  // Only a regular file can be a journal: a link (to anything, or dangling), a folder or a FIFO at
+  // its name is nobody's interrupted sweep, and stoneskip writes through no link. Said first, so
+  // that neither the "interrupted" advice nor --resume's refusal comes before it.
+  struct stat jst {};
+  if (::lstat(jp.c_str(), &jst) == 0 && !S_ISREG(jst.st_mode))
+    throw_input_error(jp.string(), 0, "",
+                      "is " + file_type_words(jst.st_mode) + ", not a sweep journal: move it away and run again");
   bool journal_exists = fs::exists(jp, ec);
   if (journal_exists && journal_in_use(jp))
     throw_input_error(jp.string(), 0, "",
