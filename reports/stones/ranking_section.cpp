@@ -39,7 +39,8 @@ SectionOutput ranking_section(const Record& v) {
              "° of [" + fmt(b.number("max_path_angle_low"), 3) + ", " + fmt(b.number("max_path_angle_high"), 3) +
              "]°; contact time within " + fmt(100 * b.number("contact_time_fraction"), 3) + " % of [" +
              fmt(1000 * b.number("contact_time_low"), 3) + ", " + fmt(1000 * b.number("contact_time_high"), 3) +
-             "] ms and its exponent's 95 % interval containing " + fmt(b.number("contact_exponent_measured"), 3) +
+             "] ms and, the contact times being one power law of U (not bending: rule `power_law_exponent`), its "
+             "exponent's 95 % interval containing " + fmt(b.number("contact_exponent_measured"), 3) +
              "; pitch and roll each changing by at most " + fmt(b.number("attitude_bound_deg"), 3) +
              "° through the first contact at " + fmt(r.number("held_spin_rev_s"), 3) + " rev/s (α = " +
              fmt(r.number("regime_attack_deg"), 3) +

@@ -34,7 +34,11 @@ std::string contact_time_text(const Table& t, double at) {
 std::string exponent_text(const Record& e) {
   if (!e.flag("valid")) return "– (" + e.text("problem") + ")";
   if (e.number("points") < 3) return fmt(e.number("exponent"), 3) + " (" + fmt(e.number("points")) + " points, no interval)";
-  return fmt(e.number("exponent"), 3) + " [" + fmt(e.number("exponent_low"), 3) + ", " + fmt(e.number("exponent_high"), 3) + "]";
+  std::string s = fmt(e.number("exponent"), 3) + " [" + fmt(e.number("exponent_low"), 3) + ", " + fmt(e.number("exponent_high"), 3) + "]";
+  if (e.has_number("curved") && e.flag("curved"))
+    s += "; bends (F " + fmt(e.number("curvature_f"), 3) + " > " + fmt(e.number("curvature_f_critical"), 3) + "): local " +
+         fmt(e.number("local_exponent_min"), 3) + " to " + fmt(e.number("local_exponent_max"), 3);
+  return s;
 }
 
 std::string regime_text(const Record& g) {
@@ -183,7 +187,11 @@ SectionOutput validation_section(const Record& v) {
   {
     const Record& first = vars.at(vars.strings("keys").front());
     w.lead("Fitted exponents.", "Each against the expected value ± " + fmt(v.number("exponent_tolerance"), 2) +
-                                    ": the whole 95 % interval must lie within it (rule `power_law_exponent`).");
+                                    ": the whole 95 % interval must lie within it (rule `power_law_exponent`). First the "
+                                    "series must be one power law: a quadratic term in log–log coordinates, tested by "
+                                    "the extra-sum-of-squares F test at 95 % (n ≥ 4 points), that is significant means "
+                                    "the local exponent drifts across the speeds, and the verdict is then *not a single "
+                                    "power law*, with the exponents between neighbouring speeds beside the fit.");
     MarkdownTable e({"model", "contact time against U (expected " +
                                   fmt(first.at("contact_exponent").at("verdict").number("expected"), 3) + ")"});
     for (const auto& key : vars.strings("keys")) {

@@ -470,9 +470,12 @@ ValidationResult run_validation(const ThrowProblem& clanet, const ThrowProblem& 
   for (auto& R : res.variants) {
     if (R.variant.use != VariantUse::table) continue;
     R.contact_time_fit = exponent_fit(o.clanet_contact_speeds_m_s, R.contact_time_s);
+    R.contact_time_shape = test_power_law_shape(o.clanet_contact_speeds_m_s, R.contact_time_s);
     if (!R.variant.beside_models()) continue;
     R.speed_fit = exponent_fit(squares(o.bocquet_speeds_m_s), as_doubles(R.count_vs_speed));
     R.spin_fit = exponent_fit(squares(o.bocquet_spins_rev_s), as_doubles(R.count_vs_spin));
+    R.speed_shape = test_power_law_shape(squares(o.bocquet_speeds_m_s), as_doubles(R.count_vs_speed));
+    R.spin_shape = test_power_law_shape(squares(o.bocquet_spins_rev_s), as_doubles(R.count_vs_spin));
   }
   for (auto& L : res.costs) {
     for (const auto& t : L.throws) {

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "verification/convergence/order_fit.hpp"
+#include "verification/convergence/power_law_shape.hpp"
 #include "verification/stones/throw_history.hpp"
 #include "verification/stones/throw_problem.hpp"
 #include "verification/stones/validation_score.hpp"
@@ -166,6 +167,7 @@ struct VariantResult {
   BisectedValue largest_path_angle;
   std::vector<double> contact_time_s;     // per contact speed: the first contact's, if it bounced (else NaN)
   OrderFit contact_time_fit;              // log τ against log U over the bouncing first contacts
+  PowerLawShape contact_time_shape;       // whether one power law describes them at all
   std::vector<ThrowHistory> regimes;      // per regime spin, at α = regime_attack_deg
   ThrowHistory surfing;                   // α = surfing_attack_deg, β = surfing_path_angle_deg
   std::vector<ContactEnergy> energy;      // per contact of Clanet's reference throw (reference variants)
@@ -174,6 +176,7 @@ struct VariantResult {
   // Bocquet's stone (table variants).
   std::vector<int> count_vs_speed, count_vs_spin;
   OrderFit speed_fit, spin_fit;           // log N against log V², log Ω² (N > 0, V, Ω > 0)
+  PowerLawShape speed_shape, spin_shape;
   // The seed's 8 m/s throws (every variant).
   ThrowHistory without_spin, with_spin;
 };

@@ -42,9 +42,11 @@ void store_bisected(Record& r, const std::string& key, const BisectedValue& b) {
   c.set("runs", b.runs);
 }
 
-// A fitted exponent with its 95 % interval and its verdict against the expected one.
-void store_exponent(Record& parent, const std::string& key, const OrderFit& f, double expected, double tolerance,
-                    const std::string& what) {
+// A fitted exponent with its 95 % interval and its verdict against the expected one; where the
+// series bends in log–log coordinates (power_law_shape.hpp) the verdict says that no single power
+// law describes it, and the local exponents stand beside the fit.
+void store_exponent(Record& parent, const std::string& key, const OrderFit& f, const PowerLawShape& shape, double expected,
+                    double tolerance, const std::string& what) {
   Record& r = parent.child(key);
   r.set("valid", f.valid);
   r.set("exponent", f.valid ? f.order : kNaN);
@@ -53,6 +55,12 @@ void store_exponent(Record& parent, const std::string& key, const OrderFit& f, d
   r.set("points", f.points);
   r.set("r_squared", f.valid ? f.r_squared : kNaN);
   r.set("problem", f.problem);
+  r.set("shape_tested", shape.tested);
+  r.set("curved", shape.curved);
+  r.set("curvature_f", shape.tested ? shape.f_statistic : kNaN);
+  r.set("curvature_f_critical", shape.tested ? shape.f_critical : kNaN);
+  r.set("local_exponent_min", shape.local_min);
+  r.set("local_exponent_max", shape.local_max);
   Record in;
   in.set("valid", f.valid);
   in.set("exponent", r.number("exponent"));
@@ -61,12 +69,20 @@ void store_exponent(Record& parent, const std::string& key, const OrderFit& f, d
   in.set("points", f.points);
   in.set("expected", expected);
   in.set("tolerance", tolerance);
-  const std::string reason =
+  in.set("curved", shape.curved);
+  in.set("curvature_f", r.number("curvature_f"));
+  in.set("curvature_f_critical", r.number("curvature_f_critical"));
+  in.set("local_exponent_min", shape.local_min);
+  in.set("local_exponent_max", shape.local_max);
+  std::string reason =
       !f.valid ? what + ": no fit, " + f.problem
       : f.points < 3
           ? what + ": " + num(f.order) + " from only " + num(f.points, 2) + " points (an interval needs 3)"
           : what + ": " + num(f.order) + " [" + num(f.order_low) + ", " + num(f.order_high) + "] (95 %, " +
                 num(f.points, 2) + " points) against the expected " + num(expected) + " ± " + num(tolerance);
+  if (f.valid && shape.curved)
+    reason += "; the series bends in log–log coordinates (quadratic term: F = " + num(shape.f_statistic) + " > " +
+              num(shape.f_critical) + ", 95 %), local exponents " + num(shape.local_min) + " to " + num(shape.local_max);
   decide_verdict(r, "verdict", "power_law_exponent", in, reason);
 }
 
@@ -312,7 +328,7 @@ Record variant_record(const VariantResult& R, const ValidationOptions& o) {
     for (std::size_t i = 0; i < o.clanet_contact_speeds_m_s.size(); ++i)
       ct.add_row({o.clanet_contact_speeds_m_s[i], R.contact_time_s[i]});
     g.set_table("contact_time", ct);
-    store_exponent(g, "contact_exponent", R.contact_time_fit, o.contact_exponent_expected, o.exponent_tolerance,
+    store_exponent(g, "contact_exponent", R.contact_time_fit, R.contact_time_shape, o.contact_exponent_expected, o.exponent_tolerance,
                    "exponent of the contact time against U");
     std::vector<std::string> regimes;
     for (std::size_t i = 0; i < o.regime_spins_rev_s.size(); ++i) {
@@ -335,9 +351,9 @@ Record variant_record(const VariantResult& R, const ValidationOptions& o) {
     Table w{{"spin_rev_s", "count"}, {}};
     for (std::size_t i = 0; i < o.bocquet_spins_rev_s.size(); ++i) w.add_row({o.bocquet_spins_rev_s[i], double(R.count_vs_spin[i])});
     g.set_table("bocquet_spin", w);
-    store_exponent(g, "speed_exponent", R.speed_fit, o.count_exponent_expected, o.exponent_tolerance,
+    store_exponent(g, "speed_exponent", R.speed_fit, R.speed_shape, o.count_exponent_expected, o.exponent_tolerance,
                    "exponent of N against V² (N > 0)");
-    store_exponent(g, "spin_exponent", R.spin_fit, o.count_exponent_expected, o.exponent_tolerance,
+    store_exponent(g, "spin_exponent", R.spin_fit, R.spin_shape, o.count_exponent_expected, o.exponent_tolerance,
                    "exponent of N against Ω² (N > 0, Ω > 0)");
   }
   // The seed's throws.
@@ -434,8 +450,10 @@ void skip_inputs(Record& in, const std::string& prefix, const Record& g, const s
   }
   in.set(prefix + "max_path_angle", value("clanet_max_path_angle"));
   in.set(prefix + "contact_time", value("clanet_contact_time"));
+  // The exponent's interval counts only where one power law describes the series (records written
+  // before the shape test have no "curved": their fit counts as before).
   const Record& e = g.at("contact_exponent");
-  const bool fitted = e.flag("valid") && e.number("points") >= 3;
+  const bool fitted = e.flag("valid") && e.number("points") >= 3 && !(e.has_number("curved") && e.flag("curved"));
   in.set(prefix + "contact_exponent_low", fitted ? e.number("exponent_low") : kNaN);
   in.set(prefix + "contact_exponent_high", fitted ? e.number("exponent_high") : kNaN);
   const Record& held = g.at(held_key).at("first_contact");

@@ -66,11 +66,14 @@
 //   reference_resolves   reference_error_m, smallest_error_m, margin → the reference resolves the errors
 //                        (margin · reference error ≤ smallest error) | the reference's own error is too
 //                        large to measure the smallest error
-//   power_law_exponent   valid, exponent, exponent_low, exponent_high, points, expected, tolerance →
-//                        too few points to fit | consistent with the expected exponent |
-//                        excludes the expected exponent | exponent not established
+//   power_law_exponent   valid, exponent, exponent_low, exponent_high, points, expected, tolerance
+//                        (and curved, where stored) → too few points to fit | not a single power
+//                        law | consistent with the expected exponent | excludes the expected
+//                        exponent | exponent not established
 //                        (the 95 % interval decides, as for order_fit: within expected ± tolerance,
-//                        entirely outside it, or neither; fewer than 3 points or no fit: too few)
+//                        entirely outside it, or neither; fewer than 3 points or no fit: too few;
+//                        curved, the series bending in log–log coordinates by the F test of
+//                        verification/convergence/power_law_shape.hpp: not a single power law)
 //   skips_like_a_stone   a variant's min_speed, best_attack (and, where stored, best_attack_tied_low/
 //                        high: the span of grid angles whose minimum speeds tie with the lowest, all
 //                        of which must lie within the bound), max_path_angle, contact_time,

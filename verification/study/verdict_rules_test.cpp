@@ -31,6 +31,12 @@ BOOST_AUTO_TEST_CASE(a_power_law_exponent_is_judged_by_its_interval) {
   Record none = exponent(0.9, 1.1, 5);
   none.set("valid", 0.0);
   BOOST_TEST(decide("power_law_exponent", none) == "too few points to fit");
+  // A bending series: no exponent is judged, however its interval falls; straight, as before.
+  Record bent = exponent(0.9, 1.1, 8);
+  bent.set("curved", 1.0);
+  BOOST_TEST(decide("power_law_exponent", bent) == "not a single power law");
+  bent.set("curved", 0.0);
+  BOOST_TEST(decide("power_law_exponent", bent) == "consistent with the expected exponent");
 }
 
 // The measured ranges and bounds of the study file (Clanet et al., Rosellini et al.).
