@@ -467,17 +467,23 @@ BOOST_AUTO_TEST_CASE(sweeps_too_large_or_written_where_they_must_not_be) {
   BOOST_TEST(s.holds_only({"big.toml", "huge.toml", "small.toml", "fifo", "s.h5", "page"}));
 }
 
-BOOST_AUTO_TEST_CASE(a_damaged_sweep_design_is_refused_by_sweep_plot) {
-  // main: an axis count of 0 → SIGFPE, -3 → SIGSEGV, 1e6 → 2.9 GB and growing. Oracle: the 2 × 2
-  // grid written here has 4 rows; a count below 1 breaks the design's own rule, and 1e6 × 2
-  // throws disagree with the table's 4 rows.
-  Scratch s;
+// A finished 2 × 2 grid sweep (speed × spin) of the seed's throw, real-time only, in s: its result file.
+fs::path small_sweep_result(Scratch& s) {
   const std::string base = (fs::current_path() / "cases" / "paper_8ms_spin.toml").string();
   const fs::path sweep = s.write("small.toml", "base = \"" + base +
                                                    "\"\n[design]\nkind = \"grid\"\n[[vary]]\nkey = \"throw.speed_m_s\"\nfrom = 4.0\nto = "
                                                    "14.0\ncount = 2\n[[vary]]\nkey = \"throw.spin_rev_s\"\nfrom = 0.0\nto = 40.0\ncount = 2\n");
   const fs::path good = s.dir / "good.h5";
   BOOST_REQUIRE(run_apart({"sweep", sweep.string(), "--quiet", "--out", good.string()}).status == 0);
+  return good;
+}
+
+BOOST_AUTO_TEST_CASE(a_damaged_sweep_design_is_refused_by_sweep_plot) {
+  // main: an axis count of 0 → SIGFPE, -3 → SIGSEGV, 1e6 → 2.9 GB and growing. Oracle: the 2 × 2
+  // grid written here has 4 rows; a count below 1 breaks the design's own rule, and 1e6 × 2
+  // throws disagree with the table's 4 rows.
+  Scratch s;
+  const fs::path good = small_sweep_result(s);
   for (const auto& [count, fragment] : std::vector<std::pair<long long, std::string>>{
            {0, "design.axis_0.count: must be >= 1 (got 0)"}, {-3, "design.axis_0.count: must be >= 1 (got -3)"},
            {1000000, "describes 2000000 throws but /throws has 4 rows"}}) {
@@ -495,12 +501,7 @@ BOOST_AUTO_TEST_CASE(a_hand_edited_sweep_table_is_refused_by_sweep_plot) {
   // table's rules (verification/sweep/sweep_table_check.hpp); columns of the 2 × 2 realtime grid:
   // throw, speed, spin, realtime_bounces (3), realtime_outcome (4).
   Scratch s;
-  const std::string base = (fs::current_path() / "cases" / "paper_8ms_spin.toml").string();
-  const fs::path sweep = s.write("small.toml", "base = \"" + base +
-                                                   "\"\n[design]\nkind = \"grid\"\n[[vary]]\nkey = \"throw.speed_m_s\"\nfrom = 4.0\nto = "
-                                                   "14.0\ncount = 2\n[[vary]]\nkey = \"throw.spin_rev_s\"\nfrom = 0.0\nto = 40.0\ncount = 2\n");
-  const fs::path good = s.dir / "good.h5";
-  BOOST_REQUIRE(run_apart({"sweep", sweep.string(), "--quiet", "--out", good.string()}).status == 0);
+  const fs::path good = small_sweep_result(s);
   struct Edit {
     unsigned long long row, column;
     double value;

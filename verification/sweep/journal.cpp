@@ -6,10 +6,10 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <optional>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 
 #include "tools/io/atomic_file.hpp"
@@ -185,10 +185,19 @@ void SweepJournal::stop_syncing() {
 // had torn, removed it, and ran into the same output. Where the file system has no hard links,
 // the journal is created at `path` as before.
 SweepJournal SweepJournal::create(const fs::path& path, const JournalIdentity& identity, double sync_interval_s) {
+  // A journal named `path` on the open file `fd` at `at`, locked and given its header.
+  auto written = [&](const fs::path& at, int fd) {
+    SweepJournal j(path, lock_or_fail(at, fd), sync_interval_s);
+    j.write_record(kHeader, encode_identity(with_byte_order(identity)));
+    j.sync();
+    return j;
+  };
+  auto cannot = [&](int e) {
+    throw_input_error(path.string(), 0, "", std::string("cannot create the sweep journal: ") + std::strerror(e));
+  };
   const fs::path tmp = path.string() + ".tmp-" + std::to_string(::getpid());
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_APPEND | O_CLOEXEC, 0644);
-  if (fd < 0)
-    throw_input_error(path.string(), 0, "", std::string("cannot create the sweep journal: ") + std::strerror(errno));
+  if (fd < 0) cannot(errno);
   // Ours from here: removed on every way out of this function, and by a signal meanwhile.
   RegisteredTemporary registered(tmp, TemporaryKind::file);
   struct RemoveTemporary {
@@ -203,24 +212,17 @@ SweepJournal SweepJournal::create(const fs::path& path, const JournalIdentity& i
   std::optional<SweepJournal> j;
   {
     const RemoveTemporary remove{tmp, registered};
-    j.emplace(SweepJournal(path, lock_or_fail(tmp, fd), sync_interval_s));
-    j->write_record(kHeader, encode_identity(with_byte_order(identity)));
-    j->sync();
+    j.emplace(written(tmp, fd));
     linked = ::link(tmp.c_str(), path.c_str());
     link_errno = errno;
   }
   if (linked == 0) return std::move(*j);
   j.reset();  // closes the temporary journal (already unlinked)
-  if (link_errno != EPERM && link_errno != EOPNOTSUPP && link_errno != ENOSYS)
-    throw_input_error(path.string(), 0, "", std::string("cannot create the sweep journal: ") + std::strerror(link_errno));
+  if (link_errno != EPERM && link_errno != EOPNOTSUPP && link_errno != ENOSYS) cannot(link_errno);
   // No hard links here: created in place (the moment without a header remains on such a file system).
   const int fd2 = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_APPEND | O_CLOEXEC, 0644);
-  if (fd2 < 0)
-    throw_input_error(path.string(), 0, "", std::string("cannot create the sweep journal: ") + std::strerror(errno));
-  SweepJournal in_place(path, lock_or_fail(path, fd2), sync_interval_s);
-  in_place.write_record(kHeader, encode_identity(with_byte_order(identity)));
-  in_place.sync();
-  return in_place;
+  if (fd2 < 0) cannot(errno);
+  return written(path, fd2);
 }
 
 SweepJournal SweepJournal::resume(const fs::path& path, const JournalIdentity& identity, double sync_interval_s,
