@@ -163,6 +163,7 @@ FrontPageInput read_front_page_input(const fs::path& out, const std::function<Re
     for (const auto& f : rendered.figures) candidates.push_back(f.name);
     // Pictures only from the report's own figures/ folder: a linked folder or picture is not followed.
     const bool own_figures = !linked(dir / "figures");
+    r.figures = !own_figures ? "link" : fs::is_directory(fs::symlink_status(dir / "figures", ec)) ? "folder" : "";
     for (const auto& name : candidates)
       if (own_figures && !linked(dir / "figures" / (name + ".png")) && is_file(dir / "figures" / (name + ".png"))) {
         r.picture = relative_name(dir / "figures" / (name + ".png"), out);
@@ -241,7 +242,11 @@ std::string front_page_markdown(const FrontPageInput& in) {
     const std::string verdicts = verdict_line(r.findings);
     md << "**Verdicts:** " << (verdicts.empty() ? std::string("none stated") : verdicts) << ". "
        << "Folder " << code(r.folder + "/") << " (`" << r.kind << "` report, data written " << r.created_utc << "): "
-       << "[page](" << link(r.folder) << "/index.md), `data.h5`, `figures/`.\n\n";
+       << "[page](" << link(r.folder) << "/index.md), `data.h5`"
+       << (r.figures == "folder" ? ", `figures/`"
+           : r.figures == "link" ? " (its `figures/` is a link, not followed)"
+                                 : " (no `figures/`)")
+       << ".\n\n";
     if (!r.picture.empty()) md << "![" << r.title << "](" << link(r.picture) << ")\n\n";
   }
   if (!in.movies.empty()) {

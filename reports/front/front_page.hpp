@@ -20,6 +20,8 @@ struct FrontReport {
   std::string code_version, created_utc;
   std::vector<std::string> findings;  // report_findings() of its page
   std::string picture;                // a figure of it, relative to OUT ("waves/figures/x.png"); empty: none drawn
+  // Its figures/: "folder" (its own), "link" (a link, not followed) or "" (none).
+  std::string figures = "folder";
 };
 
 struct FrontMovie {

@@ -101,6 +101,9 @@ BOOST_AUTO_TEST_CASE(a_report_without_its_page_is_not_linked_and_linked_figures_
   BOOST_TEST(has(md, "(zlinked_figures/index.md)"), md);
   BOOST_TEST(has(md, "(captures/figures/"), md);
   BOOST_TEST(!has(md, "(zlinked_figures/figures/"), md);
+  // Its folder line says the link is not followed, where it listed `figures/` among its contents.
+  BOOST_TEST(has(md, "[page](zlinked_figures/index.md), `data.h5` (its `figures/` is a link, not followed)."), md);
+  BOOST_TEST(has(md, "[page](captures/index.md), `data.h5`, `figures/`."), md);
 }
 
 BOOST_AUTO_TEST_CASE(a_linked_output_folder_is_refused) {
