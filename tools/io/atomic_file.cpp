@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -101,17 +102,50 @@ AtomicOutput::~AtomicOutput() {
   }
 }
 
+void move_into_place(const fs::path& tmp, const fs::path& final_path, bool replacing) {
+  const char *from = tmp.c_str(), *to = final_path.c_str();
+  auto unsupported = [](int e) { return e == EINVAL || e == ENOSYS || e == EOPNOTSUPP; };
+  if (!replacing) {
+    if (::renameat2(AT_FDCWD, from, AT_FDCWD, to, RENAME_NOREPLACE) == 0) return;
+    const int e = errno;
+    if (e == EEXIST) {
+      struct stat now {};
+      const std::string what = ::lstat(to, &now) == 0 ? file_type_words(now.st_mode) : std::string("something");
+      refuse(final_path, "cannot write: " + what + " appeared at this name while the output was written: refusing to replace it");
+    }
+    if (!unsupported(e)) refuse(final_path, "cannot write: " + errno_words(e));
+  } else {
+    if (::renameat2(AT_FDCWD, from, AT_FDCWD, to, RENAME_EXCHANGE) == 0) {
+      struct stat old {};
+      if (::lstat(from, &old) == 0 && S_ISREG(old.st_mode)) {
+        ::unlink(from);  // the file replaced, now under the temporary name
+        return;
+      }
+      // Not the regular file that was checked: put it back, and keep ours under its temporary name.
+      const std::string what = file_type_words(old.st_mode);
+      ::renameat2(AT_FDCWD, from, AT_FDCWD, to, RENAME_EXCHANGE);
+      refuse(final_path, "cannot write: it became " + what + " while the output was written: refusing to replace it");
+    }
+    const int e = errno;
+    if (e == ENOENT) return move_into_place(tmp, final_path, false);  // removed meanwhile: a free name again
+    if (!unsupported(e)) refuse(final_path, "cannot write: " + errno_words(e));
+  }
+  if (::rename(from, to) != 0) {
+    const int e = errno;
+    refuse(final_path, "cannot write: " + errno_words(e));
+  }
+}
+
 void AtomicOutput::commit() {
-  // Checked when opened; checked again, since time has passed (a FIFO may have appeared).
+  // Checked when opened; checked again, since time has passed (a FIFO may have appeared), and the
+  // move itself is atomic against a change after this check (move_into_place).
   check_output_destination(final_);
   with_registry_lock([&] {
     // A file replaced keeps its permissions (a read-only baseline stays read-only).
     struct stat st {};
-    if (::lstat(final_.c_str(), &st) == 0 && S_ISREG(st.st_mode)) ::chmod(tmp_.c_str(), st.st_mode & 07777);
-    if (::rename(tmp_.c_str(), final_.c_str()) != 0) {
-      const int e = errno;
-      refuse(final_, "cannot write: " + errno_words(e));
-    }
+    const bool replacing = ::lstat(final_.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+    if (replacing) ::chmod(tmp_.c_str(), st.st_mode & 07777);
+    move_into_place(tmp_, final_, replacing);
     registered_.release();
     committed_ = true;
   });

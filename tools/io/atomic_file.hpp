@@ -83,4 +83,12 @@ void require_regular_file(const std::filesystem::path& path);
 // "a folder", "a FIFO", "a character device", ... for the file type of an lstat/stat mode.
 std::string file_type_words(unsigned mode);
 
+// Moves the finished file `tmp` to `final_path`, atomic against a destination that changes after
+// it was checked (Linux renameat2): where the check found no file (`replacing` false) the name is
+// taken only while it is free (RENAME_NOREPLACE); where it found a regular file the two are swapped
+// (RENAME_EXCHANGE) and what came back is looked at: anything but a regular file is swapped back.
+// A file system without these flags gets a plain rename. InputError naming `final_path` when
+// something else is there now; `tmp` is then left for its owner to remove.
+void move_into_place(const std::filesystem::path& tmp, const std::filesystem::path& final_path, bool replacing);
+
 }  // namespace stoneskip

@@ -150,6 +150,62 @@ BOOST_AUTO_TEST_CASE(a_destination_turned_into_a_fifo_before_commit_is_not_repla
   BOOST_TEST(no_temporaries(s.dir));
 }
 
+BOOST_AUTO_TEST_CASE(the_move_into_place_is_atomic_against_a_destination_changed_after_its_check) {
+  // Oracle: what is at the name afterwards (lstat, the link's target, the files' texts). The check
+  // and the move are apart in time; move_into_place is handed the check's answer (`replacing`) and
+  // the name is changed here in between, as another program could: a link, a folder or a file
+  // that appeared is left as it is, with the output kept under its temporary name; a regular file
+  // is replaced, and a name emptied meanwhile is taken.
+  Scratch s;
+  auto text = [](const fs::path& p) {
+    std::ifstream in(p);
+    std::string t;
+    std::getline(in, t);
+    return t;
+  };
+  const fs::path tmp = s.dir / "out.tmp-1", out = s.dir / "out", someones = s.dir / "someones";
+  auto ours = [&] { std::ofstream(tmp) << "ours"; };
+  auto refused = [&](bool replacing, const std::string& words) {
+    try {
+      move_into_place(tmp, out, replacing);
+    } catch (const InputError& e) {
+      return std::string(e.what()).find(words) != std::string::npos;
+    }
+    return false;
+  };
+  { std::ofstream(someones) << "someone's"; }
+  // Checked as a regular file, now a link to someone's file: not written through, not replaced.
+  ours();
+  fs::create_symlink(someones, out);
+  BOOST_TEST(refused(true, "it became a symbolic link while the output was written"));
+  BOOST_TEST(fs::is_symlink(fs::symlink_status(out)));
+  BOOST_TEST(fs::read_symlink(out) == someones);
+  BOOST_TEST(text(someones) == "someone's");
+  BOOST_TEST(text(tmp) == "ours");
+  fs::remove(out);
+  // Checked as a regular file, now a folder.
+  fs::create_directory(out);
+  BOOST_TEST(refused(true, "it became a folder"));
+  BOOST_TEST(fs::is_directory(fs::symlink_status(out)));
+  BOOST_TEST(text(tmp) == "ours");
+  fs::remove(out);
+  // Checked as free, now a file: kept.
+  { std::ofstream(out) << "appeared"; }
+  BOOST_TEST(refused(false, "a regular file appeared at this name"));
+  BOOST_TEST(text(out) == "appeared");
+  BOOST_TEST(text(tmp) == "ours");
+  // Checked as a regular file, still one: replaced, and nothing left under the temporary name.
+  move_into_place(tmp, out, true);
+  BOOST_TEST(text(out) == "ours");
+  BOOST_TEST(!fs::exists(fs::symlink_status(tmp)));
+  // Checked as a regular file, removed meanwhile: the free name is taken.
+  fs::remove(out);
+  ours();
+  move_into_place(tmp, out, true);
+  BOOST_TEST(text(out) == "ours");
+  BOOST_TEST(!fs::exists(fs::symlink_status(tmp)));
+}
+
 BOOST_AUTO_TEST_CASE(inputs_that_are_not_regular_files_are_named_for_what_they_are) {
   // Oracle: lstat's type. A folder, a FIFO (never opened: reading it would wait forever) and a
   // character device are "not a regular file", a missing name is "no such file", and a file
