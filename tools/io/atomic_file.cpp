@@ -193,28 +193,77 @@ AtomicFolder::~AtomicFolder() {
   });
 }
 
+FolderMove move_folder_into_place(const fs::path& work, const fs::path& final_dir,
+                                  const std::function<bool(const fs::path&)>& replaceable) {
+  const char *from = work.c_str(), *to = final_dir.c_str();
+  auto unsupported = [](int e) { return e == EINVAL || e == ENOSYS || e == EOPNOTSUPP; };
+  // A few tries: what is at the name may go away between one call and the next.
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    if (::renameat2(AT_FDCWD, from, AT_FDCWD, to, RENAME_NOREPLACE) == 0) return FolderMove::placed;
+    int e = errno;
+    if (unsupported(e)) return FolderMove::unsupported;
+    if (e != EEXIST) refuse(final_dir, "cannot write: " + errno_words(e));
+    struct stat st {};
+    if (::lstat(to, &st) != 0) continue;  // gone again
+    if (!S_ISDIR(st.st_mode))
+      refuse(final_dir, "cannot write: " + file_type_words(st.st_mode) +
+                            " appeared at this name while the output was written: refusing to replace it");
+    if (::renameat2(AT_FDCWD, from, AT_FDCWD, to, RENAME_EXCHANGE) != 0) {
+      e = errno;
+      if (e == ENOENT) continue;
+      if (unsupported(e)) return FolderMove::unsupported;
+      refuse(final_dir, "cannot write: " + errno_words(e));
+    }
+    // What came back is what was at the name at the moment of the swap: look at it again.
+    struct stat old {};
+    const bool folder = ::lstat(from, &old) == 0 && S_ISDIR(old.st_mode);
+    std::error_code ec;
+    if (folder && (fs::is_empty(work, ec) || (replaceable && replaceable(work)))) return FolderMove::swapped;
+    ::renameat2(AT_FDCWD, from, AT_FDCWD, to, RENAME_EXCHANGE);  // put it back; ours stays at `work`
+    refuse(final_dir, folder ? std::string("cannot write: the folder now at this name is not one stoneskip made (it changed "
+                                           "while the output was written): refusing to replace it")
+                             : "cannot write: it became " + file_type_words(old.st_mode) +
+                                   " while the output was written: refusing to replace it");
+  }
+  refuse(final_dir, "cannot write: the name keeps changing while the output is moved into place");
+}
+
 void AtomicFolder::commit() {
   write_folder_manifest(work_);  // what stoneskip wrote: the folder may be replaced while it holds only that
-  check_destination();  // again: time has passed
+  check_destination();  // again: time has passed; the move itself is atomic against a later change
   std::error_code ec;
   fs::path old = final_;
   old += ".old-" + std::to_string(::getpid());
   RegisteredTemporary old_registered;
+  bool old_at_work = false;
   // Under the registry's lock: a signal sees the old folder in place or already replaced.
   with_registry_lock([&] {
-    if (fs::exists(final_, ec)) {
-      old_registered = RegisteredTemporary(old, TemporaryKind::folder);
-      if (::rename(final_.c_str(), old.c_str()) != 0) refuse(final_, std::string("cannot replace: ") + errno_words(errno));
+    const FolderMove m = move_folder_into_place(work_, final_, replaceable_);
+    if (m == FolderMove::swapped) {
+      old_at_work = true;  // the replaced folder, still registered under the work folder's name
+      committed_ = true;
+      return;
     }
-    if (::rename(work_.c_str(), final_.c_str()) != 0) {
-      const int e = errno;
-      if (old_registered.registered()) ::rename(old.c_str(), final_.c_str());
-      refuse(final_, "cannot write: " + errno_words(e));
+    if (m == FolderMove::unsupported) {
+      // No renameat2 flags: the old folder moved aside, then the new one renamed into place.
+      if (fs::exists(fs::symlink_status(final_, ec))) {
+        old_registered = RegisteredTemporary(old, TemporaryKind::folder);
+        if (::rename(final_.c_str(), old.c_str()) != 0) refuse(final_, std::string("cannot replace: ") + errno_words(errno));
+      }
+      if (::rename(work_.c_str(), final_.c_str()) != 0) {
+        const int e = errno;
+        if (old_registered.registered()) ::rename(old.c_str(), final_.c_str());
+        refuse(final_, "cannot write: " + errno_words(e));
+      }
     }
     registered_.release();
     committed_ = true;
   });
   if (old_registered.registered()) fs::remove_all(old, ec);
+  if (old_at_work) {
+    fs::remove_all(work_, ec);
+    with_registry_lock([&] { registered_.release(); });
+  }
 }
 
 void write_text_file(const fs::path& path, const std::string& text) {

@@ -43,7 +43,8 @@ class AtomicOutput {
 // and renamed to DIR on commit(). Destroyed before commit() (an error) or stopped by a signal, the
 // work folder is removed. An existing DIR is replaced only if it is an empty folder or
 // `replaceable(DIR)` says stoneskip made it; anything else (a file, a link, a device, someone's
-// folder) is refused with an InputError before any work.
+// folder) is refused with an InputError before any work, and again at commit(), whose move is
+// atomic against a change after that check (move_folder_into_place).
 class AtomicFolder {
  public:
   AtomicFolder(std::filesystem::path final_dir, const std::function<bool(const std::filesystem::path&)>& replaceable);
@@ -90,5 +91,21 @@ std::string file_type_words(unsigned mode);
 // A file system without these flags gets a plain rename. InputError naming `final_path` when
 // something else is there now; `tmp` is then left for its owner to remove.
 void move_into_place(const std::filesystem::path& tmp, const std::filesystem::path& final_path, bool replacing);
+
+// How move_folder_into_place left things.
+enum class FolderMove {
+  placed,      // the name was free and is now the new folder's
+  swapped,     // the folder that was there is now at `work`, for the caller to remove
+  unsupported  // the file system has no renameat2 flags: nothing moved, the caller renames
+};
+
+// Moves the finished folder `work` to `final_dir`, atomic against a destination changed after it
+// was checked (Linux renameat2): a free name is taken only while it is still free
+// (RENAME_NOREPLACE); a folder there is swapped with `work` (RENAME_EXCHANGE) and what came back
+// is looked at again: unless it is a folder that is empty or `replaceable`, it is swapped back.
+// Anything else at the name (a file, a link, a device) is refused without a move. InputError naming
+// `final_dir` when refused; `work` then holds the new folder still, for its owner to remove.
+FolderMove move_folder_into_place(const std::filesystem::path& work, const std::filesystem::path& final_dir,
+                                  const std::function<bool(const std::filesystem::path&)>& replaceable);
 
 }  // namespace stoneskip

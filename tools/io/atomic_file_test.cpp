@@ -296,4 +296,79 @@ BOOST_AUTO_TEST_CASE(an_atomic_folder_appears_whole_and_replaces_only_what_it_ma
   BOOST_TEST(registered_temporary_count() == registered);
 }
 
+BOOST_AUTO_TEST_CASE(an_atomic_folder_moves_into_place_atomically_against_a_destination_changed_after_its_check) {
+  // Oracle: what is at the name afterwards (lstat, the link's target, the files' texts). The check
+  // (AtomicFolder's, at construction and at commit) and the move are apart in time; the name is
+  // changed here in between, as another program could. A folder made by someone else, a link to
+  // a folder and a file that appeared are left as they are, with the output still in its work
+  // folder; an empty folder or one the predicate says stoneskip made is replaced; a free name is
+  // taken. With the code before (the old folder renamed aside, the new one renamed in) 7 of these
+  // checks fail: someone's folder, the link and the file are replaced.
+  Scratch s;
+  auto text = [](const fs::path& p) {
+    std::ifstream in(p);
+    std::string t;
+    std::getline(in, t);
+    return t;
+  };
+  const fs::path work = s.dir / "page.partial-1", out = s.dir / "page", theirs = s.dir / "theirs";
+  const auto ours = [](const fs::path& d) { return fs::is_regular_file(d / "made-by-stoneskip"); };
+  auto fill_work = [&] {
+    fs::create_directories(work);
+    std::ofstream(work / "index.md") << "ours";
+  };
+  auto refused = [&](const std::string& words) {
+    try {
+      move_folder_into_place(work, out, ours);
+    } catch (const InputError& e) {
+      return std::string(e.what()).find(words) != std::string::npos;
+    }
+    return false;
+  };
+  fs::create_directories(theirs);
+  std::ofstream(theirs / "notes.txt") << "someone's";
+  fill_work();
+  // A free name is taken.
+  BOOST_TEST((move_folder_into_place(work, out, ours) == FolderMove::placed));
+  BOOST_TEST(text(out / "index.md") == "ours");
+  BOOST_TEST(!fs::exists(fs::symlink_status(work)));
+  fs::remove_all(out);
+  // Someone's folder appeared: swapped, looked at, swapped back, refused.
+  fill_work();
+  fs::create_directories(out);
+  std::ofstream(out / "notes.txt") << "someone's";
+  BOOST_TEST(refused("is not one stoneskip made"));
+  BOOST_TEST(text(out / "notes.txt") == "someone's");
+  BOOST_TEST(!fs::exists(out / "index.md"));
+  BOOST_TEST(text(work / "index.md") == "ours");
+  fs::remove_all(out);
+  // A link to someone's folder appeared: not followed, not replaced.
+  fs::create_directory_symlink(theirs, out);
+  BOOST_TEST(refused("a symbolic link appeared at this name"));
+  BOOST_TEST(fs::is_symlink(fs::symlink_status(out)));
+  BOOST_TEST(fs::read_symlink(out) == theirs);
+  BOOST_TEST(text(theirs / "notes.txt") == "someone's");
+  BOOST_TEST(text(work / "index.md") == "ours");
+  fs::remove(out);
+  // A file appeared.
+  std::ofstream(out) << "appeared";
+  BOOST_TEST(refused("a regular file appeared at this name"));
+  BOOST_TEST(text(out) == "appeared");
+  BOOST_TEST(text(work / "index.md") == "ours");
+  fs::remove(out);
+  // An empty folder, and then a folder stoneskip made, are replaced: the old one comes back at
+  // the work folder's name for the caller to remove.
+  fs::create_directories(out);
+  BOOST_TEST((move_folder_into_place(work, out, ours) == FolderMove::swapped));
+  BOOST_TEST(text(out / "index.md") == "ours");
+  BOOST_TEST(fs::is_empty(work));
+  fs::remove_all(work);
+  std::ofstream(out / "made-by-stoneskip") << "";
+  fill_work();
+  std::ofstream(work / "index.md") << "newer";
+  BOOST_TEST((move_folder_into_place(work, out, ours) == FolderMove::swapped));
+  BOOST_TEST(text(out / "index.md") == "newer");
+  BOOST_TEST(text(work / "index.md") == "ours");
+}
+
 BOOST_AUTO_TEST_SUITE_END()
