@@ -196,7 +196,11 @@ nlohmann::json json_of(const StoneCase& c, const SceneOptions& o, const SceneSum
   if (o.water) {
     j["grid"] = {o.water->field.nx, o.water->field.ny};
     j["courant"] = o.water->field.courant();
-    j["coupled_courant_limit"] = coupled_courant_limit(o.water->field.stencil);
+    // A stencil that couples no cell (every weight 0) is stable at every σ: its limit is infinite,
+    // which JSON cannot hold, so it is null and the next key says why.
+    const double limit = coupled_courant_limit(o.water->field.stencil);
+    j["coupled_courant_limit"] = std::isfinite(limit) ? nlohmann::json(limit) : nlohmann::json(nullptr);
+    j["coupled_courant_limit_unbounded"] = std::isinf(limit);
     j["tile_steps_fraction"] = s.tiles.fraction();
     j["precision"] = to_string(o.water->field.precision);
     j["threads"] = o.water->field.threads;

@@ -68,6 +68,19 @@ BOOST_AUTO_TEST_CASE(json_reports_frames_speed_and_parts) {
   BOOST_TEST(parts <= wall * (1 + 1e-9));
   BOOST_TEST(j["slowest_frame"]["wall_s"].get<double>() <= wall);
   BOOST_TEST(j["water_steps"].get<long>() == 18);  // one water step per frame (Δt = 1/90 s)
+  // The coupled limit of model/README.md §2.2: the free limit 2/√(−min symbol) over √2, √6/4 for
+  // the seed's isotropic stencil (to round-off); a stencil of zero weights couples no cell, has no
+  // limit, and says so (JSON has no infinity).
+  BOOST_TEST(std::abs(j["coupled_courant_limit"].get<double>() - std::sqrt(6.0) / 4) <= 1e-15);
+  BOOST_TEST(!j["coupled_courant_limit_unbounded"].get<bool>());
+  const auto zero = run_stoneskip("scene " + small_seed(0.05) +
+                                      " --set water.stencil=custom --set stencil.centre=0 --set stencil.orth=0 "
+                                      "--set stencil.diag=0 --json",
+                                  false);
+  BOOST_REQUIRE_MESSAGE(zero.status == 0, zero.out);
+  const auto z = nlohmann::json::parse(zero.out);
+  BOOST_TEST(z["coupled_courant_limit"].is_null());
+  BOOST_TEST(z["coupled_courant_limit_unbounded"].get<bool>());
   const auto run = run_stoneskip("run " + small_seed(0.2) + " --json", false);
   BOOST_REQUIRE(run.status == 0);
   const auto t = nlohmann::json::parse(run.out);
