@@ -190,6 +190,7 @@ void ReportBuild::commit() {
   const fs::path& out = options_.out_dir;
   fs::path old;
   RegisteredTemporary old_registered;
+  bool old_at_work = false;  // the replaced report, swapped to the work folder's name
   // Under the registry's lock: a signal sees the work folder whole (its sections resumable) or the
   // report in place, and the old report in place or already replaced, never moved aside with
   // nothing in its place.
@@ -202,23 +203,42 @@ void ReportBuild::commit() {
       // Checked in the constructor; checked again, since time has passed.
       if (!S_ISDIR(st.st_mode) || (!fs::is_empty(out, ec) && !is_report_folder(out)))
         throw_input_error(out.string(), 0, "", "exists and is not a stoneskip report folder: refusing to replace it");
-      old = out;
-      old += ".old-" + std::to_string(::getpid());
-      old_registered = RegisteredTemporary(old, TemporaryKind::folder);
-      fs::rename(out, old, ec);
-      if (ec) throw_input_error(out.string(), 0, "", "cannot replace: " + ec.message());
     }
-    fs::rename(work_, out, ec);
-    if (ec) {
-      if (!old.empty()) fs::rename(old, out, ec);
-      old_registered.release();
-      throw_input_error(out.string(), 0, "", "cannot move the finished report into place");
+    // Atomic against a change after that check: what is replaced is looked at again after the swap.
+    const FolderMove m = move_folder_into_place(work_, out, [](const fs::path& d) { return is_report_folder(d); });
+    if (m == FolderMove::swapped) {
+      old_at_work = true;
+      // Removed below; a signal meanwhile removes it too (it is no longer resumable work).
+      if (!registered_.registered()) registered_ = RegisteredTemporary(work_, TemporaryKind::folder);
+      committed_ = true;
+      set_interrupt_note("");
+      return;
+    }
+    if (m == FolderMove::unsupported) {
+      // A file system without renameat2's flags: the old report moved aside, the new one renamed in.
+      if (::lstat(out.c_str(), &st) == 0) {
+        old = out;
+        old += ".old-" + std::to_string(::getpid());
+        old_registered = RegisteredTemporary(old, TemporaryKind::folder);
+        fs::rename(out, old, ec);
+        if (ec) throw_input_error(out.string(), 0, "", "cannot replace: " + ec.message());
+      }
+      fs::rename(work_, out, ec);
+      if (ec) {
+        if (!old.empty()) fs::rename(old, out, ec);
+        old_registered.release();
+        throw_input_error(out.string(), 0, "", "cannot move the finished report into place");
+      }
     }
     registered_.release();
     committed_ = true;
     set_interrupt_note("");
   });
   if (!old.empty()) fs::remove_all(old, ec);
+  if (old_at_work) {
+    fs::remove_all(work_, ec);
+    with_registry_lock([&] { registered_.release(); });
+  }
 }
 
 }  // namespace stoneskip

@@ -13,7 +13,9 @@
 // settings is discarded. Only one process may build a folder at a time (a lock file).
 // An existing <DIR> is replaced only if it is a report folder stoneskip made (it holds nothing but
 // what its manifest, `stoneskip-manifest.txt`, lists, unchanged, and a data.h5 with a `report`
-// attribute) or an empty folder; anything else is refused with an InputError.
+// attribute) or an empty folder; anything else is refused with an InputError, when the build
+// starts and again at commit(), whose move is atomic against a change after that check
+// (tools/io/atomic_file.hpp, move_folder_into_place).
 //
 // What stops a build, and what it leaves:
 //  * an error (bad input found late, an internal error): the work folder stays if it holds

@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "tools/io/scratch_dir.hpp"
 #include "reports/common/report_build.hpp"
@@ -140,6 +142,38 @@ BOOST_AUTO_TEST_CASE(a_report_folder_with_anything_of_the_users_in_it_is_not_rep
   fs::remove(out / kFolderManifest);
   BOOST_TEST(!holds_only_its_manifest(out, &why));
   BOOST_TEST(why.find("no stoneskip manifest") != std::string::npos, why);
+}
+
+BOOST_AUTO_TEST_CASE(a_report_replaced_leaves_nothing_beside_it_and_a_folder_put_there_meanwhile_is_kept) {
+  // Oracle: the listing of the parent folder. Replacing a report swaps the two folders and removes
+  // the old one: only the report is left, no work or old folder beside it. A folder of someone
+  // else's put at the name while the build runs is refused at commit() and left as it was.
+  Scratch s;
+  const fs::path out = s.dir / "rep";
+  for (double v : {1.0, 2.0}) {
+    ReportBuild b(options(out));
+    b.store("first", section(v));
+    b.assemble(Record{});
+    b.commit();
+  }
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(s.dir)) names.push_back(e.path().filename().string());
+  BOOST_TEST(names == std::vector<std::string>{"rep"}, names.size());
+  BOOST_TEST(is_report_folder(out));
+  {
+    ReportBuild b(options(out));
+    b.store("first", section(3.0));
+    b.assemble(Record{});
+    fs::remove_all(out);
+    fs::create_directories(out);
+    std::ofstream(out / "notes.txt") << "someone's";
+    BOOST_CHECK_THROW(b.commit(), InputError);
+  }
+  std::ifstream in(out / "notes.txt");
+  std::string text;
+  std::getline(in, text);
+  BOOST_TEST(text == "someone's");
+  BOOST_TEST(!fs::exists(out / "data.h5"));
 }
 
 BOOST_AUTO_TEST_SUITE_END()
