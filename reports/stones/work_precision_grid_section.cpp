@@ -7,6 +7,7 @@
 #include "reports/common/markdown.hpp"
 #include "reports/common/plot.hpp"
 #include "reports/stones/report_sections.hpp"
+#include "verification/stones/work_precision_grid_check.hpp"
 
 namespace stoneskip {
 
@@ -58,6 +59,7 @@ void budget_text(SectionWriter& w, const Record& c) {
 }  // namespace
 
 SectionOutput work_precision_grid_section(const Record& c) {
+  check_work_precision_grid_record(c);  // what follows from other stored values is derived again, not trusted
   SectionWriter w(c, "2.1 Speed against error over a grid of throws: the adaptive stepper's default");
   const Record& ch = c.at("default_choice");
   const auto& families = c.strings("families");
