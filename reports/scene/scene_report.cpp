@@ -177,7 +177,8 @@ SectionOutput coupling_section(const Record& c) {
         ct.row({fmt(double(k + 1)), fmt(ci.column("start_s")[k], 6) + " … " + fmt(ci.column("end_s")[k], 6), fmt(st, 4), fmt(wa, 4),
                 st != 0 ? fmt(wa / st - 1, 2) : std::string("–")});
       }
-      w.text("Pressure forcing, contact by contact (runs of stone steps with the stone pressing on the water):");
+      w.text("Pressure forcing, contact by contact (runs of stone steps with the stone pressing on the water; the water's "
+             "column is what the grid keeps of the head, nothing for a pressing beyond the pond's rim, where it reads −1):");
       w.table(ct);
       if (ci.rows() > 20) w.text("(" + fmt(double(ci.rows())) + " in all; the first 20 shown, every one in data.h5.)");
     }

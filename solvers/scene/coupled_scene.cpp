@@ -390,7 +390,9 @@ class SceneLoop {
     pushes_.clear();
     pending_wet_ = h.wet() && !head_.empty();
     pending_force_N_ = h.force_N;
-    pending_rastered_N_ = h.rastered_N;
+    // What the grid receives of the head: the points beyond a pond's rim are dropped (DraughtWindow).
+    const double cell = o_.water->field.cell_m;
+    pending_rastered_N_ = pending_wet_ ? window_->kept_sum(head_) * rho_g_ * cell * cell : 0.0;
     if (pending_wet_ && !in_contact_) {
       out_.contact_impulses.emplace_back();
       out_.contact_impulses.back().start_s = t_s;

@@ -167,7 +167,8 @@ struct DraughtEpisode {
 
 // The vertical impulse over one run of consecutive stone steps with the stone pressing on the
 // water (pressure forcing): what the stone received, Σ F_z h, and what the grid received from
-// the rasterised head, Σ (Σ h ρ_w g d²) h (model/coupling/pressure_head.hpp).
+// the rasterised head, Σ (Σ h ρ_w g d²) h (model/coupling/pressure_head.hpp) over the points the
+// grid keeps (none beyond a pond's rim: there the water receives nothing).
 struct ContactImpulse {
   double start_s = 0, end_s = 0;
   double stone_N_s = 0, water_N_s = 0;

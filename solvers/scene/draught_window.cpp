@@ -30,6 +30,20 @@ void DraughtWindow::add(const DraughtPatch& p, double weight) {
   }
 }
 
+double DraughtWindow::kept_sum(const DraughtPatch& p) const {
+  double sum = 0;
+  for (int c = 0; c < p.nj; ++c) {
+    const int j = p.j0 + c;
+    if (!periodic_ && (j < 0 || j >= ny_)) continue;
+    for (int a = 0; a < p.ni; ++a) {
+      const int i = p.i0 + a;
+      if (!periodic_ && (i < 0 || i >= nx_)) continue;
+      sum += p.at(a, c);
+    }
+  }
+  return sum;
+}
+
 void DraughtWindow::take(DraughtPatch& out) {
   if (empty()) {
     out.clear();

@@ -24,6 +24,9 @@ class DraughtWindow {
 
   // Adds weight · b of a sample (weight = samples it stands for / K).
   void add(const DraughtPatch& sample, double weight);
+  // Σ b over the points of `sample` that add() keeps (all on a periodic field; those inside the
+  // grid elsewhere): what the field receives of it, by the same rule.
+  double kept_sum(const DraughtPatch& sample) const;
   bool empty() const { return i_lo_ > i_hi_; }
   // The window's b̄ over the touched box, into `out` (empty when nothing was added); the window
   // is cleared for the next step.

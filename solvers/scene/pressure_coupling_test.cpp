@@ -62,6 +62,34 @@ BOOST_AUTO_TEST_CASE(the_water_receives_the_stones_vertical_impulse) {
   BOOST_TEST(std::abs(sum - s.stone_vertical_impulse_N_s) <= kImpulseRoundoff * s.stone_vertical_impulse_N_s);
 }
 
+BOOST_AUTO_TEST_CASE(a_pressing_beyond_the_ponds_rim_gives_the_water_only_what_the_grid_keeps) {
+  // Oracle: the field's rule (model/water/draught_patch.hpp): points beyond a walled pond's rim are
+  // dropped, so each pressing's water impulse is the part of its head inside the grid, and the
+  // pressings' sum is the water's total impulse (summed over the water steps) to round-off. The
+  // same throw over a pond moved so that its rim (x = 0.44 m) cuts the contact's footprint, and over
+  // one beyond the whole contact (x ≥ 1 m): there the water receives nothing at all.
+  for (double origin_x_m : {0.44, 1.0}) {
+    SceneOptions o = seed_throw_scene(64, 48, origin_x_m, -0.47, 0.3, Coupling::two_way, 0.5);
+    o.environment.air_density_kg_m3 = 0;
+    o.forcing = Forcing::pressure;
+    const SceneSummary s = run_scene(o);
+    BOOST_REQUIRE(!s.contact_impulses.empty());
+    double water = 0;
+    for (const ContactImpulse& c : s.contact_impulses) water += c.water_N_s;
+    BOOST_TEST_MESSAGE("pond from x = " << origin_x_m << " m: stone " << s.stone_vertical_impulse_N_s << " N s, water "
+                                        << s.water_vertical_impulse_N_s << " N s, pressings' water " << water << " N s");
+    BOOST_TEST(s.stone_vertical_impulse_N_s > 0.01);
+    BOOST_TEST(std::abs(water - s.water_vertical_impulse_N_s) <= kImpulseRoundoff * s.stone_vertical_impulse_N_s);
+    if (origin_x_m < 1) {
+      BOOST_TEST(s.water_vertical_impulse_N_s > 0.01 * s.stone_vertical_impulse_N_s);  // the rim cuts, not misses
+      BOOST_TEST(s.water_vertical_impulse_N_s < 0.99 * s.stone_vertical_impulse_N_s);
+    } else {
+      BOOST_TEST(s.water_vertical_impulse_N_s == 0.0);
+      BOOST_TEST(water == 0.0);
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(the_displacement_model_gives_the_water_far_less_than_the_stone) {
   // Oracle: model/README.md §2.4 — the draught's head ρ g b is millimetres against the law's
   // dynamic pressure of ≈ ½ ρ U² sin² (a head of decimetres): the water receives under a tenth of

@@ -8,9 +8,11 @@ namespace stoneskip {
 namespace {
 
 // Suffix → unit, longest suffixes first so "_m_s" wins over "_s" and "_kg_m_s" over "_m_s".
-// "volume_time_m3_s" is a product (m³ · s), the one name where "_s" multiplies.
-constexpr std::array<std::pair<const char*, const char*>, 20> kSuffixes{{
+// "volume_time_m3_s" is a product (m³ · s) and "_N_s" an impulse (N · s): the names where "_s"
+// multiplies.
+constexpr std::array<std::pair<const char*, const char*>, 21> kSuffixes{{
     {"_time_m3_s", "m^3 s"},
+    {"_N_s", "N s"},
     {"_kg_m_s", "kg m/s"},
     {"_kg_m2", "kg m^2"},
     {"_kg_m3", "kg/m^3"},

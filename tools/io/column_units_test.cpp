@@ -30,6 +30,7 @@ BOOST_AUTO_TEST_CASE(a_column_unit_is_the_suffix_its_name_ends_with_the_longest_
   BOOST_TEST(column_unit("entry_speed_m_s") == "m/s");        // not "s"
   BOOST_TEST(column_unit("momentum_kg_m_s") == "kg m/s");     // not "m/s"
   BOOST_TEST(column_unit("volume_time_m3_s") == "m^3 s");     // a product, not a rate
+  BOOST_TEST(column_unit("water_N_s") == "N s");              // an impulse, not a time
   BOOST_TEST(column_unit("max_wetted_area_m2") == "m^2");
   BOOST_TEST(column_unit("spin_rev_s") == "rev/s");
   BOOST_TEST(column_unit("wx_rad_s") == "rad/s");
