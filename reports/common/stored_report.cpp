@@ -9,10 +9,13 @@
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/hdf5_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/isolated_read.hpp"
 
 namespace stoneskip {
 
-StoredReport load_stored_report(const std::filesystem::path& data_h5) {
+namespace {
+
+StoredReport load_in_process(const std::filesystem::path& data_h5) {
   Hdf5Reader in(data_h5);
   const H5Group& root = in.root();
   if (!root.has_attr("report") || !root.has("sections") || !root.has("report"))
@@ -57,6 +60,15 @@ StoredReport load_stored_report(const std::filesystem::path& data_h5) {
   if (s.command.size() > (1u << 20))
     throw_input_error(data_h5.string(), 0, "command", "is " + std::to_string(s.command.size()) + " characters long (at most 1048576)");
   return s;
+}
+
+}  // namespace
+
+StoredReport load_stored_report(const std::filesystem::path& data_h5) {
+  // A damaged file can crash or hang the HDF5 library before any check of ours: read it in a
+  // child first (tools/io/isolated_read.hpp).
+  read_in_child_first(data_h5, [&] { load_in_process(data_h5); });
+  return load_in_process(data_h5);
 }
 
 void append(RenderedReport& r, const SectionOutput& s) {

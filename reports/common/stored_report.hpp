@@ -21,7 +21,8 @@ struct StoredReport {
   Record sections;           // /sections, children in the order the study stored them
 };
 
-// InputError naming the file when it is not a stoneskip report's data.h5.
+// InputError naming the file when it is not a stoneskip report's data.h5, or one so damaged that
+// reading it crashes or hangs the HDF5 library (read in a child first: tools/io/isolated_read.hpp).
 StoredReport load_stored_report(const std::filesystem::path& data_h5);
 
 struct RenderedReport {

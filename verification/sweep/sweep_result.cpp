@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "tools/io/input_error.hpp"
+#include "tools/io/isolated_read.hpp"
 #include "verification/sweep/sweep_table_check.hpp"
 
 namespace stoneskip {
@@ -91,7 +92,7 @@ void write_sweep_file(const std::filesystem::path& path, const SweepData& d) {
   w.commit();
 }
 
-SweepData read_sweep_file(const std::filesystem::path& path) {
+static SweepData read_in_process(const std::filesystem::path& path) {
   Hdf5Reader r(path);
   const H5Group& root = r.root();
   if (!root.has("throws") || !root.has("design") || !root.has_attr("sweep_text"))
@@ -173,6 +174,13 @@ SweepData read_sweep_file(const std::filesystem::path& path) {
     throw_input_error(path.string(), 0, "", std::string("not a complete sweep result file: ") + e.what());
   }
   return d;
+}
+
+SweepData read_sweep_file(const std::filesystem::path& path) {
+  // A damaged file can crash or hang the HDF5 library before any check of ours: read it in a
+  // child first (tools/io/isolated_read.hpp).
+  read_in_child_first(path, [&] { read_in_process(path); });
+  return read_in_process(path);
 }
 
 }  // namespace stoneskip

@@ -59,7 +59,8 @@ struct SweepData {
 };
 
 void write_sweep_file(const std::filesystem::path& path, const SweepData& data);
-// InputError naming the file when it is not a sweep result file.
+// InputError naming the file when it is not a sweep result file, or one so damaged that reading
+// it crashes or hangs the HDF5 library (read in a child first: tools/io/isolated_read.hpp).
 SweepData read_sweep_file(const std::filesystem::path& path);
 
 }  // namespace stoneskip
