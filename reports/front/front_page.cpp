@@ -179,7 +179,7 @@ FrontPageInput read_front_page_input(const fs::path& out, const std::function<Re
     if (r.kind == "scene" && scene_picture.empty()) scene_picture = r.picture;
   for (const fs::path& f : sorted_entries(out / "movies")) {
     if (f.extension() != ".mp4") continue;
-    if (linked(f) || !is_file(f) || !stoneskip_wrote(f)) {
+    if (linked(f) || !is_file(f) || !stoneskip_wrote(f, OutputFormat::movie)) {
       in.skipped.push_back({relative_name(f, out), linked(f) ? "a link: not followed" : "not a movie stoneskip made (no mark)"});
       continue;
     }

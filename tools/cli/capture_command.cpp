@@ -529,7 +529,7 @@ void throw_capture(const CaptureArgs& a) {
   enforce_limits(estimate_run(c, RunSolvers{a.solver != "reference", a.solver != "realtime", !a.out.empty()}), a.limits,
                  c.file);
   refuse_output_over_inputs(a.out, OutputKind::file, inputs_of(a, &c, nullptr));
-  refuse_foreign_output(a.out);
+  refuse_foreign_output(a.out, OutputFormat::hdf5);
   if (!a.out.empty()) AtomicOutput check(a.out);
   check_capture_size(a.files.front(), a.limits);
   const Trace trace = read_capture(a.files.front(), read_options(a));
@@ -583,7 +583,7 @@ void throw_capture(const CaptureArgs& a) {
 
 void convert(const CaptureArgs& a) {
   refuse_output_over_inputs(a.out, OutputKind::file, inputs_of(a, nullptr, nullptr));
-  refuse_foreign_output(a.out);
+  refuse_foreign_output(a.out, OutputFormat::trace_csv);
   check_capture_size(a.files.front(), a.limits);
   std::optional<Heartbeat> alive(std::in_place, "capture convert");  // a line once reading takes more than 2 s
   Trace t = read_capture(a.files.front(), read_options(a));

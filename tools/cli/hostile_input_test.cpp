@@ -436,6 +436,9 @@ BOOST_AUTO_TEST_CASE(sweeps_too_large_or_written_where_they_must_not_be) {
                  {"huge.toml:8: vary[1].count: the design has 1e+12 throws"});
   const fs::path small = sweep("small.toml", "2", "2");
   expect_refused(run_apart({"sweep", small.string(), "--quiet", "--out", ""}), {"--out: needs a file name"});
+  // main: no upper bound (100 000 threads asked for; one the system would not start was std::terminate).
+  expect_refused(run_apart({"sweep", small.string(), "--quiet", "--threads", "100000", "--out", (s.dir / "t.h5").string()}),
+                 {"--threads: must be in [0, 256] (got 100000)"});
   const fs::path fifo = s.dir / "fifo";
   BOOST_REQUIRE(::mkfifo(fifo.c_str(), 0644) == 0);
   expect_refused(run_apart("sweep " + small.string() + " --quiet --out " + fifo.string()), {"a FIFO", "refusing to replace it"});
@@ -617,24 +620,34 @@ BOOST_AUTO_TEST_CASE(a_latin1_field_is_quoted_as_escapes_not_raw_bytes) {
 }
 
 BOOST_AUTO_TEST_CASE(out_replaces_only_a_file_stoneskip_wrote) {
-  // Main replaced any regular file named by --out (a user's notes became an HDF5 file). Oracle:
-  // the user's bytes, which must survive a refusal (exit 2, one line naming --out and the file),
-  // and stoneskip's own outputs (an HDF5 file stamped with its code_version, a converted capture
-  // starting "# stoneskip"), which a second run replaces.
+  // Main replaced any regular file named by --out (a user's notes became an HDF5 file); later, any
+  // text starting "# stoneskip" (notes headed so, a shipped synthetic capture, an input) was taken
+  // for stoneskip's own, by any command (`run --out` put HDF5 over a trace). Oracle: the user's
+  // bytes, which must survive a refusal (exit 2, one line naming --out, the file and the kind
+  // wanted), and stoneskip's own outputs of the same kind (an HDF5 file stamped with its
+  // code_version; a trace whose first line is "# stoneskip trace v1"), which a second run replaces.
   Scratch s;
-  const fs::path mine = s.write("notes.txt", "precious\n");
-  expect_refused(run_apart({"run", "cases/spin_sweep_base.toml", "--out", mine.string()}),
-                 {"--out", "notes.txt' exists and stoneskip did not write it"});
-  expect_refused(run_apart({"capture", "convert", "cases/captures/gentle_sidearm.log", "--out", mine.string()}),
-                 {"--out", "notes.txt' exists and stoneskip did not write it"});
+  const std::string precious = "# stoneskip lab notebook, day 1\nprecious\n";
+  const fs::path mine = s.write("notes.txt", precious);
+  fs::copy_file("cases/captures/gentle_sidearm.log", s.dir / "capture.log");
+  for (const fs::path& p : {mine, s.dir / "capture.log"}) {
+    expect_refused(run_apart({"run", "cases/spin_sweep_base.toml", "--out", p.string()}),
+                   {"--out", p.filename().string() + "' exists and is not an HDF5 file stoneskip wrote"});
+    expect_refused(run_apart({"capture", "convert", "cases/captures/gentle_sidearm.log", "--out", p.string()}),
+                   {"--out", p.filename().string() + "' exists and is not a trace stoneskip wrote"});
+  }
   std::ifstream in(mine);
-  BOOST_TEST(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()) == "precious\n");
+  BOOST_TEST(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()) == precious);
   const fs::path h5 = s.dir / "r.h5", csv = s.dir / "c.csv";
   for (int run = 0; run < 2; ++run) {
     BOOST_TEST(run_apart({"run", "cases/spin_sweep_base.toml", "--out", h5.string()}).status == 0, "run " << run);
     BOOST_TEST(run_apart({"capture", "convert", "cases/captures/gentle_sidearm.log", "--out", csv.string()}).status == 0,
                "run " << run);
   }
+  // Each kind only over its own: a trace is not replaced by an HDF5 file, nor the other way round.
+  expect_refused(run_apart({"run", "cases/spin_sweep_base.toml", "--out", csv.string()}), {"is not an HDF5 file stoneskip wrote"});
+  expect_refused(run_apart({"capture", "convert", "cases/captures/gentle_sidearm.log", "--out", h5.string()}),
+                 {"is not a trace stoneskip wrote"});
 }
 
 BOOST_AUTO_TEST_CASE(output_that_cannot_reach_stdout_is_an_error) {

@@ -111,7 +111,7 @@ void run(const RunArgs& a) {
   const bool writes = a.out_option->count() > 0;
   if (writes && a.out.empty()) throw_input_error("--out", 0, "", "needs a file name (got an empty one)");
   if (writes) refuse_output_over_inputs(a.out, OutputKind::file, {c.file, c.spec.mesh_file});
-  if (writes) refuse_foreign_output(a.out);
+  if (writes) refuse_foreign_output(a.out, OutputFormat::hdf5);
   if (c.water && reference)
     throw_input_error(c.file, 0, "water", "the CVODE reference supports still water only: use --solver realtime with [water]");
   enforce_limits(estimate_run(c, RunSolvers{realtime, reference, writes}), a.limits, c.file);

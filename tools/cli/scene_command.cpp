@@ -267,7 +267,7 @@ void run(const SceneArgs& a) {
   if (a.movie_given && a.movie.empty()) throw_input_error("--movie", 0, "", "needs a file name (got an empty name)");
   if (!a.movie.empty()) {
     mo.output = a.movie;
-    refuse_foreign_output(a.movie, "--movie");
+    refuse_foreign_output(a.movie, OutputFormat::movie, "--movie");
     int w = 0, h = 0;
     char x = 0;
     std::istringstream size(a.movie_size);
@@ -308,7 +308,7 @@ void run(const SceneArgs& a) {
   }
   if (!a.out.empty()) {
     refuse_output_over_inputs(a.out, OutputKind::file, {c.file, c.spec.mesh_file});
-    refuse_foreign_output(a.out);
+    refuse_foreign_output(a.out, OutputFormat::hdf5);
     AtomicOutput probe(a.out);  // an unwritable place is refused before any work
   }
   // Every input checked (bad input stays one line): a scene runs whole frames (SceneOptions::frames),

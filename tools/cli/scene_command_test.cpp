@@ -107,14 +107,14 @@ BOOST_AUTO_TEST_CASE(a_movie_has_duration_times_rate_frames) {
     // The movie carries stoneskip's mark (MP4 metadata, a GIF comment that ffprobe still reads
     // past, above), so a second run replaces it; a file of the user's under the name is refused
     // (exit 2) and kept (tools/io/foreign_output.hpp).
-    BOOST_TEST(stoneskip::stoneskip_wrote(movie), name);
+    BOOST_TEST(stoneskip::stoneskip_wrote(movie, stoneskip::OutputFormat::movie), name);
     const auto again = run_stoneskip("scene " + small_seed(0.2) + " --movie-slow 1 --movie " + movie.string() + " --movie-size 320x160");
     BOOST_TEST(again.status == 0, again.out);
     const fs::path mine = tmp.path() / ("mine_" + name);
     { std::ofstream(mine) << "precious\n"; }
     const auto refused = run_stoneskip("scene " + small_seed(0.2) + " --movie " + mine.string());
     BOOST_TEST(refused.status == 2, refused.out);
-    BOOST_TEST(refused.out.find("stoneskip did not write it") != std::string::npos, refused.out);
+    BOOST_TEST(refused.out.find("exists and is not a movie stoneskip wrote") != std::string::npos, refused.out);
     BOOST_TEST(read_file(mine) == "precious\n");
   }
 }

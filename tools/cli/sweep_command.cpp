@@ -40,6 +40,10 @@
 namespace stoneskip::cli {
 namespace {
 
+// The most compute threads rank 0 may be asked for: far more than the cores of any machine it runs
+// on, far fewer than would exhaust a process's memory with their stacks (8 MB each by default).
+constexpr int kMaxSweepThreads = 256;
+
 struct SweepArgs {
   std::string file;
   std::optional<std::string> out;
@@ -158,11 +162,13 @@ void run(const SweepArgs& a) {
                                              " processes cannot share a sweep: install libopenmpi-dev and rebuild");
     sweep = load_sweep_file(a.file);
     cases = std::make_unique<SweepCases>(*sweep);
-    if (a.threads && *a.threads < 0) throw_input_error("--threads", 0, "", "must be >= 0 (got " + std::to_string(*a.threads) + ")");
+    if (a.threads && (*a.threads < 0 || *a.threads > kMaxSweepThreads))
+      throw_input_error("--threads", 0, "",
+                        "must be in [0, " + std::to_string(kMaxSweepThreads) + "] (got " + std::to_string(*a.threads) + ")");
     if (a.max_chunk < 1) throw_input_error("--max-chunk", 0, "", "must be >= 1");
     if (a.out && a.out->empty()) throw_input_error("--out", 0, "", "needs a file name (got an empty one)");
     refuse_output_over_inputs(out_file(a), OutputKind::file, {sweep->file, sweep->base_file, cases->base().spec.mesh_file});
-    refuse_foreign_output(out_file(a));
+    refuse_foreign_output(out_file(a), OutputFormat::hdf5);
     // Limits decided before any throw (cases/README.md, Limits): the table, the heaviest throw, all.
     const double width = static_cast<double>(sweep_record(sweep->design, sweep->solvers).width());
     const double threads = a.threads.value_or(0) > 0 ? *a.threads : usable_cores();
@@ -252,7 +258,7 @@ void add_sweep(CLI::App& app) {
   cmd->add_flag("--resume", a->resume, "Finish an interrupted sweep from its journal (FILE.h5.journal)");
   cmd->add_option("--threads", a->threads,
                   "Compute threads on rank 0 (default: every core when it runs alone, 1 beside MPI workers; "
-                  "0 with workers: rank 0 only schedules)");
+                  "0 with workers: rank 0 only schedules; at most 256)");
   cmd->add_option("--max-chunk", a->max_chunk, "Largest number of throws handed out at once (default 32)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 40));
   cmd->add_flag("--quiet", a->quiet, "No configuration, no progress line");

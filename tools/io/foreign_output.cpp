@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr char kHdf5Signature[8] = {'\x89', 'H', 'D', 'F', '\r', '\n', '\x1a', '\n'};  // HDF5 spec §II.A
-constexpr char kTextMark[] = "# stoneskip";
+constexpr char kTraceLine[] = "# stoneskip trace v1";  // tools/capture/trace_csv.hpp kTraceCsvMagic
 
 bool holds_marker(std::ifstream& f) {
   const std::string marker = kMovieMarker;
@@ -34,36 +34,55 @@ bool holds_marker(std::ifstream& f) {
 
 }  // namespace
 
-bool stoneskip_wrote(const fs::path& path) {
+const char* to_string(OutputFormat f) {
+  switch (f) {
+    case OutputFormat::hdf5: return "an HDF5 file";
+    case OutputFormat::trace_csv: return "a trace";
+    case OutputFormat::movie: return "a movie";
+  }
+  return "?";
+}
+
+bool stoneskip_wrote(const fs::path& path, OutputFormat format) {
   struct stat st {};
   if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return false;
   std::ifstream f(path, std::ios::binary);
-  char head[16] = {};
+  char head[32] = {};
   f.read(head, sizeof head);
   const auto got = static_cast<std::size_t>(f.gcount());
-  if (got >= sizeof kHdf5Signature && std::memcmp(head, kHdf5Signature, sizeof kHdf5Signature) == 0) {
-    try {
-      const Hdf5Reader r(path);
-      return r.root().has_attr("code_version") && r.root().attr_string("code_version").rfind("stoneskip ", 0) == 0;
-    } catch (const std::exception&) {
-      return false;
+  switch (format) {
+    case OutputFormat::hdf5:
+      if (got < sizeof kHdf5Signature || std::memcmp(head, kHdf5Signature, sizeof kHdf5Signature) != 0) return false;
+      try {
+        const Hdf5Reader r(path);
+        return r.root().has_attr("code_version") && r.root().attr_string("code_version").rfind("stoneskip ", 0) == 0;
+      } catch (const std::exception&) {
+        return false;
+      }
+    case OutputFormat::trace_csv: {
+      // The whole first line is the trace's (a line "# stoneskip trace v1 and my notes" is not).
+      const std::size_t n = sizeof kTraceLine - 1;
+      return got > n && std::memcmp(head, kTraceLine, n) == 0 && (head[n] == '\n' || (head[n] == '\r' && got > n + 1 && head[n + 1] == '\n'));
+    }
+    case OutputFormat::movie: {
+      // The movie's mark counts only in a movie (a GIF89a, or an ISO media file: "ftyp" at byte 4,
+      // ISO/IEC 14496-12 §4.3): a user's notes that say "made by stoneskip" are theirs.
+      const bool gif = got >= 6 && std::memcmp(head, "GIF89a", 6) == 0;
+      const bool mp4 = got >= 8 && std::memcmp(head + 4, "ftyp", 4) == 0;
+      return (gif || mp4) && holds_marker(f);
     }
   }
-  if (got >= sizeof kTextMark - 1 && std::memcmp(head, kTextMark, sizeof kTextMark - 1) == 0) return true;
-  // The movie's mark counts only in a movie (a GIF89a, or an ISO media file: "ftyp" at byte 4,
-  // ISO/IEC 14496-12 §4.3): a user's notes that say "made by stoneskip" are theirs.
-  const bool gif = got >= 6 && std::memcmp(head, "GIF89a", 6) == 0;
-  const bool mp4 = got >= 8 && std::memcmp(head + 4, "ftyp", 4) == 0;
-  return (gif || mp4) && holds_marker(f);
+  return false;
 }
 
-void refuse_foreign_output(const fs::path& path, const std::string& option) {
+void refuse_foreign_output(const fs::path& path, OutputFormat format, const std::string& option) {
   struct stat st {};
   if (path.empty() || ::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return;
-  if (!stoneskip_wrote(path))
+  if (!stoneskip_wrote(path, format))
     throw_input_error(option, 0, "",
-                      "'" + path.string() + "' exists and stoneskip did not write it (no stoneskip mark in it): "
-                      "refusing to replace it; remove it or choose another name");
+                      "'" + path.string() + "' exists and is not " + to_string(format) +
+                          " stoneskip wrote (no stoneskip mark of that kind in it): refusing to replace it; remove it or "
+                          "choose another name");
 }
 
 }  // namespace stoneskip

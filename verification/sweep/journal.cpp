@@ -11,6 +11,7 @@
 #include <cstring>
 #include <optional>
 #include <stdexcept>
+#include <system_error>
 
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
@@ -151,6 +152,7 @@ SweepJournal::~SweepJournal() {
 
 void SweepJournal::request_sync() {
   if (!syncer_.joinable()) {
+    try {
     syncer_ = std::thread([this] {
       std::unique_lock<std::mutex> lock(sync_mutex_);
       for (;;) {
@@ -162,6 +164,10 @@ void SweepJournal::request_sync() {
         lock.lock();
       }
     });
+    } catch (const std::system_error&) {
+      ::fdatasync(fd_);  // no thread to spare (the system would not start one): the sync is done here
+      return;
+    }
   }
   std::lock_guard<std::mutex> lock(sync_mutex_);
   sync_pending_ = true;

@@ -8,6 +8,7 @@
 #include <exception>
 #include <mutex>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 
 #include "solvers/realtime/clocks.hpp"
@@ -57,6 +58,11 @@ class Dispenser {
     std::lock_guard<std::mutex> lock(mutex_);
     return chunks_;
   }
+  // Nothing more is handed out: each taker gets an empty chunk from now on.
+  void stop() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    next_ = pending_.size();
+  }
   std::size_t next_chunk_size() const {
     std::lock_guard<std::mutex> lock(mutex_);
     return guided_chunk(pending_.size() - next_, consumers_, max_chunk_);
@@ -94,7 +100,7 @@ ScheduleStats run_master(const std::vector<std::uint64_t>& pending, std::size_t 
   stats.ranks = mpi.size();
   const int workers = mpi.size() - 1;
   // No more compute threads than throws to compute (--threads 100000 on a 6-throw sweep starts 6).
-  const int threads = static_cast<int>(std::min<std::size_t>(
+  int threads = static_cast<int>(std::min<std::size_t>(
       static_cast<std::size_t>(std::max(workers == 0 ? 1 : 0, options.master_threads)),
       std::max<std::size_t>(pending.size(), workers == 0 ? 1 : 0)));
   stats.master_threads = threads;
@@ -104,8 +110,23 @@ ScheduleStats run_master(const std::vector<std::uint64_t>& pending, std::size_t 
 
   // 1. The master's own compute threads: rows handed over at the end of each chunk, and within a
   //    long chunk at least every handover_interval_s (what a kill can lose).
+  //    A thread the system will not start (no memory for its stack, no process slot) leaves the
+  //    work to those it did start; with none at all the sweep stops here, before any throw.
   std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) {
+  // Whatever ends this function early (a failed write of the sink, no memory), the threads stop
+  // taking throws and are joined first: a joinable thread destroyed is std::terminate.
+  struct JoinOnExit {
+    Dispenser& dispenser;
+    std::vector<std::thread>& pool;
+    ~JoinOnExit() {
+      dispenser.stop();
+      for (auto& t : pool)
+        if (t.joinable()) t.join();
+    }
+  } join_on_exit{dispenser, pool};
+  std::string refused;
+  for (int t = 0; t < threads && refused.empty(); ++t) {
+    try {
     pool.emplace_back([&, t] {
       const ThrowSite site{mpi.rank(), t};
       try {
@@ -136,6 +157,16 @@ ScheduleStats run_master(const std::vector<std::uint64_t>& pending, std::size_t 
       ++local.threads_done;
       local.ready.notify_one();
     });
+    } catch (const std::system_error& e) {
+      refused = e.what();
+    }
+  }
+  if (!refused.empty()) {
+    if (pool.empty() && workers == 0)
+      throw std::runtime_error("cannot start a compute thread (" + refused + "): nothing computed; try fewer --threads");
+    std::lock_guard<std::mutex> lock(local.mutex);  // the threads started count their ends against this
+    threads = static_cast<int>(pool.size());
+    stats.master_threads = threads;
   }
 
   // 2. The MPI thread: answer workers, collect rows, feed the sink.
