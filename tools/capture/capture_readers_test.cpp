@@ -93,6 +93,17 @@ BOOST_AUTO_TEST_CASE(time_going_backwards_names_the_line) {
   BOOST_TEST(contains(error_of("10.0 31 00 00 80 80 9a\n9.9 31 00 00 80 80 9a\n"), "bad.cap:2"));
   BOOST_TEST(contains(error_of(kCsvHead + "1,0,0,1,0,0,0,0,0,0,0,-\n0.5,0,0,1,0,0,0,0,0,0,0,-\n"), "backwards"));
   BOOST_TEST(contains(error_of("N: Nintendo Wii Remote Accelerometer\nE: 1.0 0003 0003 1\nE: 0.5 0003 0003 2\n"), "bad.cap:3"));
+  // A device's second block goes on from its first (main: each block started a clock of its own,
+  // so the accelerometer recorded twice was read as one capture with time running back 1.5 s);
+  // another device's block has its own order, and a block that goes on is one recording split.
+  const std::string accel_at = "N: Nintendo Wii Remote Accelerometer\nE: 1.0 0003 0003 1\nE: 1.0 0000 0000 0\n";
+  BOOST_TEST(contains(error_of(accel_at + "N: Nintendo Wii Remote Motion Plus\nE: 0.5 0003 0003 9\n" + accel_at.substr(0, 37) +
+                               "E: 0.9 0003 0003 2\n"),
+                      "bad.cap:7: time goes backwards (0.9 s after 1 s, the last event of this device's earlier block)"));
+  const Trace split = parse_capture(accel_at + "N: Nintendo Wii Remote Motion Plus\nE: 0.5 0003 0003 9\nE: 0.5 0000 0000 0\n" +
+                                        accel_at.substr(0, 37) + "E: 1.5 0003 0003 2\nE: 1.5 0000 0000 0\n",
+                                    "split.evemu");
+  BOOST_TEST(split.samples.size() == 2u);
 }
 
 BOOST_AUTO_TEST_CASE(unknown_and_truncated_reports_are_skipped_with_a_warning_naming_the_line) {

@@ -1,6 +1,7 @@
 #include "tools/capture/evemu_reader.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -46,7 +47,11 @@ Trace read_evemu(const std::string& text, const std::string& file) {
   bool saw_keys = false;
   std::array<double, 3> accel{}, gyro{};
   bool accel_changed = false, gyro_changed = false;
+  // Each device's last event time: its events go forward in time, also across a second block of
+  // the same device (a recording split in two); the other devices' blocks have their own clocks' order.
+  std::array<double, 5> last_time_of{-1e300, -1e300, -1e300, -1e300, -1e300};
   double last_time = -1e300;
+  bool block_started = false;  // an event seen since the last 'N:' line
   std::vector<Frame> accel_frames, gyro_frames;
   std::vector<KeyEvent> keys;
   for (const TextLine& line : split_capture_lines(text, file)) {
@@ -63,8 +68,9 @@ Trace read_evemu(const std::string& text, const std::string& file) {
       if (device == Device::keys) saw_keys = true;
       if (device == Device::other)
         t.warnings.push_back(input_location(file, line.number, "") + ": device '" + std::string(rest) + "' ignored");
-      last_time = -1e300;
+      last_time = device == Device::other ? -1e300 : last_time_of[static_cast<std::size_t>(device)];
       accel_changed = gyro_changed = false;
+      block_started = false;
       continue;
     }
     if (tag != 'E') continue;  // I:, P:, B:, A:, L:, S: describe the device
@@ -84,11 +90,18 @@ Trace read_evemu(const std::string& text, const std::string& file) {
       continue;
     }
     if (*time < last_time) {
-      char what[128];
-      std::snprintf(what, sizeof what, "time goes backwards (%.15g s after %.15g s)", *time, last_time);
+      char what[200];
+      if (block_started)
+        std::snprintf(what, sizeof what, "time goes backwards (%.15g s after %.15g s)", *time, last_time);
+      else  // a second block of a device already recorded (the same recording twice?)
+        std::snprintf(what, sizeof what,
+                      "time goes backwards (%.15g s after %.15g s, the last event of this device's earlier block)", *time,
+                      last_time);
       throw_input_error(file, line.number, "", what);
     }
+    block_started = true;
     last_time = *time;
+    if (device != Device::other) last_time_of[static_cast<std::size_t>(device)] = *time;
     if (device == Device::other) continue;
     if (*type == kEvAbs && (device == Device::accel || device == Device::gyro)) {
       const int axis = *code == kAbsRx ? 0 : *code == kAbsRy ? 1 : *code == kAbsRz ? 2 : -1;
