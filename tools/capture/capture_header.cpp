@@ -5,6 +5,7 @@
 
 #include "tools/capture/capture_text.hpp"
 #include "tools/capture/wiimote_report.hpp"
+#include "tools/io/edit_distance.hpp"
 #include "tools/io/input_error.hpp"
 #include "verification/captures/mounting.hpp"
 #include "verification/captures/virtual_thrower.hpp"
@@ -144,11 +145,26 @@ std::string header_lines(const Trace& t) {
   return s;
 }
 
+void refuse_misspelt_header_key(const std::string& key, const std::vector<std::string>& more_keys, const std::string& file,
+                                long line) {
+  std::vector<std::string> known{"nominal_rate_hz"};
+  known.insert(known.end(), more_keys.begin(), more_keys.end());
+  const auto dot = key.find('.');
+  for (const std::string& k : known)
+    if (looks_misspelt(key, k))
+      throw_input_error(file, line, key, "not a header key: a misspelling of '" + k + "'? (a comment that is no key must not read '# word: …' so close to one)");
+  if (dot != std::string::npos)
+    for (const char* prefix : {"calibration", "mounting", "thrower"})
+      if (looks_misspelt(key.substr(0, dot), prefix))
+        throw_input_error(file, line, key, std::string("not a header key: a misspelling of '") + prefix + "." + key.substr(dot + 1) + "'?");
+}
+
 bool skip_blank_or_header(Trace& trace, std::string_view trimmed_line, const std::string& file, long line) {
   if (trimmed_line.empty()) return true;
   if (trimmed_line.front() != '#') return false;
   std::string key, value;
-  if (header_comment(trimmed_line, key, value)) apply_header_key(trace, key, value, file, line);
+  if (header_comment(trimmed_line, key, value) && !apply_header_key(trace, key, value, file, line))
+    refuse_misspelt_header_key(key, {}, file, line);
   return true;
 }
 

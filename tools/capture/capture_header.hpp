@@ -9,9 +9,11 @@
 //   # nominal_rate_hz: 100
 //   # mounting.lever_arm_m: 0,0.6,0                        (any key of mounting.hpp)
 //   # thrower.release_height_m: 0.3                        (any key of virtual_thrower.hpp)
-// Other comments are ignored; an unknown calibration.*, mounting.* or thrower.* key is an error.
+// Other comments are ignored; an unknown calibration.*, mounting.* or thrower.* key is an error,
+// and so is a key within two edits of one of ours (refuse_misspelt_header_key).
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "verification/captures/capture_trace.hpp"
 
@@ -22,8 +24,16 @@ namespace stoneskip {
 bool apply_header_key(Trace& trace, const std::string& key, const std::string& value, const std::string& file,
                       long line);
 
+// A comment key that is none of ours (apply_header_key returned false) but within two edits of
+// one — nominal_rate_hz, `more_keys` (a format's own), or the prefix of calibration.*, mounting.*,
+// thrower.* — is a misspelt key, not a comment: InputError naming FILE:LINE, the key and the key
+// it resembles. Anything further from every key stays a comment.
+void refuse_misspelt_header_key(const std::string& key, const std::vector<std::string>& more_keys, const std::string& file,
+                                long line);
+
 // For the line-by-line readers: true when the (trimmed) line is blank or a comment, which the
-// reader then skips; a "# key: value" comment is applied to the trace on the way.
+// reader then skips; a "# key: value" comment is applied to the trace on the way (a misspelt key
+// refused, above).
 bool skip_blank_or_header(Trace& trace, std::string_view trimmed_line, const std::string& file, long line);
 
 // The header lines (with "# ") describing a trace's calibration, rate and mounting.

@@ -106,6 +106,24 @@ BOOST_AUTO_TEST_CASE(time_going_backwards_names_the_line) {
   BOOST_TEST(split.samples.size() == 2u);
 }
 
+BOOST_AUTO_TEST_CASE(a_misspelt_header_key_or_another_trace_version_is_refused_a_note_is_not) {
+  // main: "# has_gyroo: false" was ignored (and the MotionPlus taken as present: another verdict),
+  // "# nominal_rate_Hz: 100" too, and "# stoneskip trace v2" read as v1. Oracle: the keys of
+  // capture_header.hpp and trace_csv.hpp; a key within two edits of one is its misspelling, a
+  // comment further from every key ("# note: …") stays a comment.
+  const std::string row = "0,0,0,1,0,0,0,0,0,0,0,-\n0.01,0,0,1,0,0,0,0,0,0,0,-\n";
+  const std::string trace = std::string(kTraceCsvMagic) + "\n# has_gyroo: false\n" + kTraceCsvColumns + "\n" + row;
+  BOOST_TEST(contains(error_of(trace), "bad.cap:2: has_gyroo: not a header key: a misspelling of 'has_gyro'?"), error_of(trace));
+  const std::string v2 = "# stoneskip trace v2\n" + std::string(kTraceCsvColumns) + "\n" + row;
+  BOOST_TEST(contains(error_of(v2), "bad.cap:1: '# stoneskip trace v2' is not a trace version this build reads"), error_of(v2));
+  const std::string log = "10.00 31 00 00 80 80 9a\n10.01 31 00 00 80 80 9a\n";
+  BOOST_TEST(contains(error_of("# nominal_rate_Hz: 100\n" + log), "bad.cap:1: nominal_rate_Hz: not a header key: a misspelling of 'nominal_rate_hz'?"));
+  BOOST_TEST(contains(error_of("# calibraton.block: 80 80 80 00 9a 9a 9a 00 00 c5\n" + log),
+                      "a misspelling of 'calibration.block'?"));
+  const Trace noted = parse_capture("# note: thrown at the lake\n# rate: fast\n" + log, "noted.log");
+  BOOST_TEST(noted.samples.size() == 2u);
+}
+
 BOOST_AUTO_TEST_CASE(unknown_and_truncated_reports_are_skipped_with_a_warning_naming_the_line) {
   const Trace t = parse_capture("10.00 31 00 00 80 80 9a\n10.01 99 00 00\n10.02 35 00 00 80\n10.03 31 00 00 80 80 9a\n",
                                 "odd.log");

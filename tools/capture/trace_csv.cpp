@@ -25,6 +25,11 @@ Trace read_trace_csv(const std::string& text, const std::string& file) {
     const std::string_view s = trim(line.text);
     if (s.empty()) continue;
     if (s.front() == '#') {
+      // The format's line: this build reads its own version and no other.
+      if (!columns_seen && s.rfind("# stoneskip trace", 0) == 0 && s != kTraceCsvMagic)
+        throw_input_error(file, line.number, "",
+                          "'" + std::string(s.substr(0, 60)) + "' is not a trace version this build reads (it reads '" +
+                              kTraceCsvMagic + "')");
       std::string key, value;
       if (columns_seen || !header_comment(s, key, value)) continue;
       bool flag = false;
@@ -42,8 +47,9 @@ Trace read_trace_csv(const std::string& text, const std::string& file) {
         if (!parse_bool(value, flag)) throw_input_error(file, line.number, key, "expected true or false");
         (key == "has_gyro" ? t.has_gyro : key == "has_accel" ? t.has_accel : t.has_buttons) = flag;
         has_gyro_given = has_gyro_given || key == "has_gyro";
-      } else {
-        apply_header_key(t, key, value, file, line.number);
+      } else if (!apply_header_key(t, key, value, file, line.number)) {
+        refuse_misspelt_header_key(key, {"source", "timestamps", "gyro_mode", "has_gyro", "has_buttons", "has_accel"}, file,
+                                   line.number);
       }
       continue;
     }

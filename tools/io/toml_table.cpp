@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "tools/io/atomic_file.hpp"
+#include "tools/io/edit_distance.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/toml_prescan.hpp"
 
@@ -232,25 +233,6 @@ bool TomlTable::has(const std::string& key) const {
   return table_->is_table() && table_->as_table().count(key) > 0;
 }
 
-namespace {
-// Levenshtein distance, compared without case (a key written "Solver" or "radiuss_m" for the
-// one asked for).
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) == std::tolower(static_cast<unsigned char>(b[j - 1]));
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
-}  // namespace
 
 const toml::value& TomlTable::at(const std::string& key) const {
   used_.insert(key);
@@ -261,7 +243,7 @@ const toml::value& TomlTable::at(const std::string& key) const {
     std::string hint;
     if (table_->is_table())
       for (const auto& kv : table_->as_table())
-        if (!used_.count(kv.first) && edit_distance(kv.first, key) <= std::min<std::size_t>(2, key.size() / 3)) {
+        if (!used_.count(kv.first) && looks_misspelt(kv.first, key)) {
           const auto [kf, kline] = where(kv.first);
           hint = " (is '" + kv.first + "'" + (kf == file_ && kline > 0 ? " on line " + std::to_string(kline) : "") +
                  " a misspelling of it?)";
