@@ -2,19 +2,32 @@
 
 #include <cmath>
 
+#include "tools/io/input_error.hpp"
 #include "tools/io/toml_table.hpp"
 
 namespace stoneskip {
 
 namespace fs = std::filesystem;
 
+namespace {
+constexpr double kMaxSpeed_m_s = 1000, kMaxSpin_rev_s = 1000;
+}  // namespace
+
 fs::path capture_truth_file(const fs::path& capture) {
   std::error_code ec;
   fs::path direct = capture;
   direct += ".truth.toml";
-  if (fs::is_regular_file(direct, ec)) return direct;
   const fs::path by_stem = capture.parent_path() / (capture.stem().string() + ".truth.toml");
-  if (capture.has_extension() && fs::is_regular_file(by_stem, ec)) return by_stem;
+  for (const fs::path& p : {direct, by_stem}) {
+    if (p == by_stem && !capture.has_extension()) break;
+    if (fs::is_regular_file(p, ec)) return p;
+    // Something under the truth's name that is no file (a folder, a FIFO, a dangling link) is not
+    // passed over in silence: the comparison with the truth would vanish without a word.
+    if (fs::symlink_status(p, ec).type() != fs::file_type::not_found && !ec)
+      throw_input_error(p.string(), 0, "",
+                        "is not a regular file (a truth file beside the capture must be one; move it away to read the "
+                        "capture without its truth)");
+  }
   return {};
 }
 
@@ -26,13 +39,30 @@ std::optional<CaptureTruth> read_capture_truth(const fs::path& capture) {
   TomlTable th = top.table("throw");
   CaptureTruth t;
   t.file = file.string();
-  t.speed_m_s = th.number("speed_m_s");
-  t.attack_angle_deg = th.number("attack_angle_deg");
-  t.path_angle_deg = th.number("path_angle_deg");
-  t.spin_rev_s = th.number("spin_rev_s");
-  t.rise_m = th.number("rise_m");
-  t.arm_speed_m_s = th.number_or("arm_speed_m_s", std::nan(""));
-  t.pivot_speed_m_s = th.number_or("pivot_speed_m_s", std::nan(""));
+  // The bounds of the case files' [throw] keys (tools/scene/stone_case.hpp: kMaxSpeed_m_s,
+  // kMaxSpin_rev_s), a throw's speed > 0.
+  t.speed_m_s = th.bounded("speed_m_s", 0, kMaxSpeed_m_s);
+  th.require_positive("speed_m_s", t.speed_m_s);
+  t.attack_angle_deg = th.bounded("attack_angle_deg", -90, 90);
+  t.path_angle_deg = th.bounded("path_angle_deg", -90, 90);
+  t.spin_rev_s = th.bounded("spin_rev_s", -kMaxSpin_rev_s, kMaxSpin_rev_s);
+  t.rise_m = th.bounded("rise_m", -10, 10);
+  t.arm_speed_m_s = th.bounded_or("arm_speed_m_s", std::nan(""), 0, kMaxSpeed_m_s);
+  t.pivot_speed_m_s = th.bounded_or("pivot_speed_m_s", std::nan(""), 0, kMaxSpeed_m_s);
+  th.maybe_number("release_t_s");
+  th.finish();
+  // What synthesize writes beside them (SyntheticTruth::toml), not compared: read, so that a
+  // misspelt or unknown key anywhere in the file is an error, not ignored.
+  if (auto st = top.maybe_table("stone")) {
+    for (const char* k : {"height_m", "finger_spin_rev_s", "total_spin_rev_s"}) st->maybe_number(k);
+    st->finish();
+  }
+  if (auto rec = top.maybe_table("recording")) {
+    for (const char* k : {"still_s", "reports_sent", "dropped_reports", "repeated_reports", "range_switches", "clipped_samples"})
+      rec->maybe_number(k);
+    rec->finish();
+  }
+  top.finish();
   return t;
 }
 
