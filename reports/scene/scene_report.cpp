@@ -432,7 +432,7 @@ Figure still_figure(const std::string& name, const Record& r) {
 SectionOutput frames_section(const Record& f) {
   SectionWriter w(f, "7. Still frames");
   w.text("For each scene the most telling frame: the one with the most disturbed water (cells with |z| above " +
-         pct(f.number("threshold_fraction")) + " of the scene's largest |z|) among the frames before the waves reach the pond's edge. "
+         pct(f.number("threshold_fraction")) + " of the scene's largest |z|) among the frames before a cell above that height reaches the pond's edge (smaller waves may reach it first). "
          "Left, the water from above (the dashed square is the right panel's window), the stone's track (line), its first "
          "touches (crosses) and the stone (filled; hollow once sunk); right, the water around the stone (while it is in the air, "
          "around its latest touch), heights on the colour scale. The colour scale is symmetric, ± the 99th percentile of |z| over the "

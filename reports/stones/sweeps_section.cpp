@@ -184,7 +184,8 @@ SectionOutput sweeps_section(const Record& c, const Record& fig9) {
       std::string counts_range = std::isnan(k.number("reference_max_bounces"))
                                      ? std::string("nothing")
                                      : fmt(k.number("reference_min_bounces")) + "–" + fmt(k.number("reference_max_bounces"));
-      std::string line = conv + " convention: the reference counts " + counts_range + " bounces";
+      std::string line = conv + " convention: at the grid's values the reference counts " + counts_range +
+                         " bounces (the bisections between them may find more; the table above has them)";
       if (k.number("reference_failed") > 0) line += " (" + fmt(k.number("reference_failed")) + " reference runs failed)";
       line += "; the real-time stepper agrees at " + fmt(k.number("agree")) + " of " + fmt(k.number("grid_points")) +
               " grid values; " + fmt(k.number("reference_thresholds")) +

@@ -16,7 +16,8 @@ namespace {
 
 std::string bisected(const Record& b, const std::string& unit) {
   if (!b.flag("found")) return b.text("note");
-  return fmt(b.number("value"), 3) + " ± " + fmt(b.number("half_width"), 1) + " " + unit;
+  // Two digits of the half-width: one rounded 0.0146 down to 0.01, a third narrower than bisected.
+  return fmt(b.number("value"), 3) + " ± " + fmt(b.number("half_width"), 2) + " " + unit;
 }
 
 // The contact time at the compared speed, or at the first faster speed with a bouncing first contact.

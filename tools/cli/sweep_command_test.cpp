@@ -248,7 +248,7 @@ BOOST_AUTO_TEST_CASE(bad_sweep_files_fail_before_any_throw_with_one_line_and_no_
   write(work() / "bad.toml", g);
   // A bad option, not read as its default (−1 once meant "every core").
   expect_bad_input(command("sweep " + (work() / "bad.toml").string() + " --out " + out.string() + " --threads -1"),
-                   {"--threads: must be >= 0 (got -1)"}, out);
+                   {"--threads: must be in [0, 256] (got -1)"}, out);
   // A chunk beyond 64 bits was read as 2⁶⁴ − 1 without a word.
   expect_bad_input(command("sweep " + (work() / "bad.toml").string() + " --out " + out.string() +
                            " --max-chunk 99999999999999999999"),

@@ -81,7 +81,7 @@ Record scene_frames_findings(const SceneStudiesOptions& o, const ProgressFactory
       r.set("why", "frame " + std::to_string(s.frame) + " of " + std::to_string(s.frames) + " (t = " + num(s.t_s, 3) + " s) has the most disturbed water, " +
                        std::to_string(s.disturbed_cells) + " cells above " + num(1e3 * s.threshold_m, 2) + " mm (" +
                        num(100 * o.frames.threshold_fraction, 2) + " % of the scene's largest |z|, " + num(1e3 * s.largest_m, 3) + " mm), among the " +
-                       std::to_string(s.frames_considered) + " frames before the waves reach the pond's edge");
+                       std::to_string(s.frames_considered) + " frames before a cell above that height reaches the pond's edge");
     }
     ticker->tick();
   }

@@ -93,14 +93,19 @@ void compare_solvers(Record& parent, const std::vector<const BounceSweepResult*>
   r.set("near_grid", hugging);
   r.set("cells_with_more_changes", more);  // grid cells holding a change bisection did not follow
   const bool sensitive = bisected >= 3 && 2 * hugging >= bisected;
+  const int unlocated = static_cast<int>(ref->thresholds.size()) - bisected + more;
   Record in;
   in.set("near_grid", hugging);
   in.set("bisected", bisected);
+  in.set("unlocated", unlocated);
   decide_verdict(
       r, "character", "thresholds_near_grid", in,
       std::to_string(hugging) + " of the " + std::to_string(bisected) +
           " bisected changes of the reference count lie within two bisection tolerances of a grid value" +
-          (sensitive ? ": the count changes as soon as the parameter moves off the grid value" : ""));
+          (sensitive ? ": the count changes as soon as the parameter moves off the grid value" : "") +
+          (unlocated > 0 ? "; " + std::to_string(unlocated) +
+                               " changes were not located (not bisected, or more in a grid cell than the one bisected)"
+                         : ""));
 }
 
 }  // namespace

@@ -185,14 +185,15 @@ void store_first_contact(Record& r, const ThrowHistory& h) {
   in.set("tolerance_deg", kAttitudeHeld_deg);
   decide_verdict(c, "pitch", "attack_change", in,
                  "the attack angle goes from " + num(k.entry_attack_angle_deg) + "° at entry to " +
-                     num(k.exit_attack_angle_deg) + "° at the end of the contact (held: within ±" +
-                     num(kAttitudeHeld_deg) + "°)");
+                     num(k.exit_attack_angle_deg) + "° at the end of the contact (a change within ±" +
+                     num(kAttitudeHeld_deg) + "° would count as held)");
   Record rin;
   rin.set("change_deg", roll);
   rin.set("tolerance_deg", kAttitudeHeld_deg);
   decide_verdict(c, "roll", "roll_change", rin,
                  "the roll angle goes from " + num(k.entry_roll_deg) + "° at entry to " + num(k.exit_roll_deg) +
-                     "° at the end of the contact (held: within ±" + num(kAttitudeHeld_deg) + "°)");
+                     "° at the end of the contact (a change within ±" + num(kAttitudeHeld_deg) +
+                     "° would count as held)");
 }
 
 // The energy balance of each contact (ContactEnergy) and its verdict.

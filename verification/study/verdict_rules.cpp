@@ -151,7 +151,10 @@ const std::map<std::string, Rule>& rules() {
        [](const Record& in) {
          const double near = in.number("near_grid"), n = in.number("bisected");
          if (n < 3) return std::string("too few thresholds to tell");
-         return std::string(2 * near >= n ? "sensitive dependence" : "clean steps");
+         if (2 * near >= n) return std::string("sensitive dependence");
+         // Clean steps only where every change was located (data stored before `unlocated`: as then).
+         if (in.has_number("unlocated") && !(in.number("unlocated") == 0)) return std::string("not all changes located");
+         return std::string("clean steps");
        }},
       {"attack_change",
        [](const Record& in) {

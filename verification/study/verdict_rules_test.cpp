@@ -39,6 +39,23 @@ BOOST_AUTO_TEST_CASE(a_power_law_exponent_is_judged_by_its_interval) {
   BOOST_TEST(decide("power_law_exponent", bent) == "consistent with the expected exponent");
 }
 
+BOOST_AUTO_TEST_CASE(clean_steps_are_said_only_where_every_change_was_located) {
+  // Oracle: the rule's definition (verdict_rules.hpp). main said "clean steps" for the paper spin
+  // sweep's 3 of 8 near the grid while 3 changes were never bisected and 4 cells held more.
+  auto in = [](double near, double bisected, double unlocated) {
+    Record r;
+    r.set("near_grid", near).set("bisected", bisected).set("unlocated", unlocated);
+    return r;
+  };
+  BOOST_TEST(decide("thresholds_near_grid", in(3, 8, 0)) == "clean steps");
+  BOOST_TEST(decide("thresholds_near_grid", in(3, 8, 7)) == "not all changes located");
+  BOOST_TEST(decide("thresholds_near_grid", in(4, 8, 7)) == "sensitive dependence");
+  BOOST_TEST(decide("thresholds_near_grid", in(0, 2, 0)) == "too few thresholds to tell");
+  Record older;  // stored before `unlocated`: decided as it was then
+  older.set("near_grid", 3.0).set("bisected", 8.0);
+  BOOST_TEST(decide("thresholds_near_grid", older) == "clean steps");
+}
+
 // The measured ranges and bounds of the study file (Clanet et al., Rosellini et al.).
 Record bounds() {
   Record in;
