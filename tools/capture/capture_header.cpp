@@ -37,7 +37,8 @@ std::array<int, 3> signs(const std::string& value, const std::string& file, long
 
 double positive(const std::string& value, const std::string& file, long line, const std::string& key) {
   const auto x = parse_real(value);
-  if (!x || *x <= 0 || *x > 1e6) throw_input_error(file, line, key, "expected a positive number, got '" + value + "'");
+  if (!x) throw_input_error(file, line, key, "expected a positive number, got '" + value + "'");
+  if (*x <= 0 || *x > 1e6) throw_input_error(file, line, key, "must be in (0, 1e6] (got " + value + ")");
   return *x;
 }
 

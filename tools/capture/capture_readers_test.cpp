@@ -120,6 +120,8 @@ BOOST_AUTO_TEST_CASE(a_misspelt_header_key_or_another_trace_version_is_refused_a
   BOOST_TEST(contains(error_of("# nominal_rate_Hz: 100\n" + log), "bad.cap:1: nominal_rate_Hz: not a header key: a misspelling of 'nominal_rate_hz'?"));
   BOOST_TEST(contains(error_of("# calibraton.block: 80 80 80 00 9a 9a 9a 00 00 c5\n" + log),
                       "a misspelling of 'calibration.block'?"));
+  // A rate out of range is said to be so (main: "expected a positive number, got '1e7'").
+  BOOST_TEST(contains(error_of("# nominal_rate_hz: 1e7\n" + log), "bad.cap:1: nominal_rate_hz: must be in (0, 1e6] (got 1e7)"));
   const Trace noted = parse_capture("# note: thrown at the lake\n# rate: fast\n" + log, "noted.log");
   BOOST_TEST(noted.samples.size() == 2u);
 }

@@ -306,7 +306,15 @@ void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
 // The scene case of --scene, checked before any work: it must have a water field.
 std::optional<StoneCase> load_scene_case(const CaptureArgs& a) {
   if (a.scene.empty()) return std::nullopt;
-  StoneCase c = load_stone_case(a.scene, a.scene_sets);
+  StoneCase c;
+  try {
+    c = load_stone_case(a.scene, a.scene_sets);
+  } catch (const InputError& e) {
+    // The case reader names an override "--set KEY"; here the user wrote --scene-set.
+    std::string m = e.what();
+    if (const auto at = m.find("--set "); at != std::string::npos) m.replace(at, 6, "--scene-set ");
+    throw InputError(m);
+  }
   if (!c.water || c.water->coupling == Coupling::none)
     throw_input_error(a.scene, 0, "water", "--scene needs a case with [water] and a coupling other than none");
   return c;
@@ -573,7 +581,7 @@ void throw_capture(const CaptureArgs& a) {
   for (const auto& [name, r] : results) failed = failed || r.outcome == Outcome::failed;
   if (failed) set_exit_code(1);
   if (!a.out.empty() && failed) {
-    std::fprintf(stderr, "stoneskip: %s not written: the solve failed (a failed run leaves no result file)\n", a.out.c_str());
+    std::fprintf(stderr, "stoneskip: %s not written: the solve failed (a failed run writes no result file; one already at that name is left as it was)\n", a.out.c_str());
   } else if (!a.out.empty()) {
     std::vector<std::pair<std::string, const ThrowResult*>> refs;
     for (const auto& [name, r] : results) refs.emplace_back(name, &r);

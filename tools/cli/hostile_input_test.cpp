@@ -571,6 +571,13 @@ BOOST_AUTO_TEST_CASE(a_sweep_file_damaged_where_hdf5_does_not_check_is_refused_n
   }
 }
 
+BOOST_AUTO_TEST_CASE(a_bad_scene_set_is_named_as_the_option_the_user_wrote) {
+  // main: "--set water.foo: unknown key" for a key given with --scene-set. Oracle: the option's name.
+  expect_refused(run_apart({"capture", "throw", "cases/captures/skip_12ms_14revs.log", "--scene", "cases/captures/pond_two_way.toml",
+                            "--scene-set", "water.foo=1"}),
+                 {"--scene-set water.foo: unknown key"});
+}
+
 BOOST_AUTO_TEST_CASE(bad_movie_options_are_refused_before_the_scene_runs) {
   // main: --movie-rate 1e-300 → SIGFPE (a stride of 1e302 frames); --movie "" → no movie and exit
   // 0; a scene shorter than one movie frame failed only after it had run. Oracle: the movie

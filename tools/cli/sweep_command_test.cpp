@@ -384,6 +384,14 @@ BOOST_AUTO_TEST_CASE(a_journal_with_no_finished_work_does_not_block_resume) {
     BOOST_TEST(!fs::exists(journal));
     expect_same_results(table_of(whole), table_of(out), "afresh after a torn header");
   }
+  // Nothing at all to resume from: started afresh as promised, and said (main was silent).
+  fs::remove(out);
+  const Outcome fresh = command("sweep " + sweep.string() + " --out " + out.string() + " --resume --quiet");
+  BOOST_REQUIRE_MESSAGE(fresh.status == 0, fresh.err);
+  BOOST_TEST(fresh.err.find("warning: " + journal.string() + ": no journal and no result to resume from: the sweep starts afresh") !=
+                 std::string::npos,
+             fresh.err);
+  expect_same_results(table_of(whole), table_of(out), "afresh with nothing to resume");
   // A foreign file in the journal's place is still refused.
   fs::remove(out);
   std::ofstream(journal, std::ios::binary | std::ios::trunc) << "not a journal";

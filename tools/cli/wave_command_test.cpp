@@ -101,6 +101,16 @@ BOOST_AUTO_TEST_CASE(a_walled_pool_has_no_reference_and_says_so_in_json) {
   BOOST_TEST(j["solution_rms_m"].get<double>() < 0.02);
 }
 
+BOOST_AUTO_TEST_CASE(a_surface_that_is_zero_everywhere_says_its_zero_error_means_nothing) {
+  // main printed "L2 (RMS) 0 m" with nothing beside it. Oracle: a zero amplitude gives the zero
+  // surface, whose error is zero whatever the scheme.
+  Ran r = run_stoneskip("wave cases/wave_gaussian_five_point.toml --set initial.amplitude_m=0");
+  BOOST_TEST(r.status == 0, r.out);
+  BOOST_TEST(r.out.find("the solution is zero everywhere") != std::string::npos, r.out);
+  Ran n = run_stoneskip("wave cases/wave_gaussian_five_point.toml");
+  BOOST_TEST(n.out.find("zero everywhere") == std::string::npos, n.out);
+}
+
 BOOST_AUTO_TEST_CASE(misspelt_key_is_rejected_with_its_name_and_status_2) {
   // Oracle: cases/README.md — an unknown key is an error naming the key, exit status 2.
   Ran r = run_stoneskip("wave cases/wave_gaussian_five_point.toml --set water.wave_sped_m_s=2");

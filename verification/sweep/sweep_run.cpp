@@ -110,6 +110,7 @@ SweepPlan SweepPlan::prepare(const SweepData& spec, const SweepRunOptions& optio
     throw_input_error(jp.string(), 0, "",
                       "is " + file_type_words(jst.st_mode) + ", not a sweep journal: move it away and run again");
   bool journal_exists = fs::exists(jp, ec);
+  const bool journal_found = journal_exists;
   if (journal_exists && journal_in_use(jp))
     throw_input_error(jp.string(), 0, "",
                       "another sweep is running into this file now (it holds the journal's lock): wait for it to finish, "
@@ -154,6 +155,9 @@ SweepPlan SweepPlan::prepare(const SweepData& spec, const SweepRunOptions& optio
     plan.have_.assign(total, true);
     return plan;
   } else {
+    // --resume with nothing to resume from (no journal, no result): said, then started afresh.
+    if (options.resume && !journal_found)
+      plan.warnings_.push_back(jp.string() + ": no journal and no result to resume from: the sweep starts afresh");
     plan.journal_ = std::make_unique<SweepJournal>(SweepJournal::create(jp, identity, options.sync_interval_s));
   }
   for (std::size_t i = 0; i < total; ++i)
