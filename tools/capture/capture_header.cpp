@@ -153,11 +153,14 @@ void refuse_misspelt_header_key(const std::string& key, const std::vector<std::s
   const auto dot = key.find('.');
   for (const std::string& k : known)
     if (looks_misspelt(key, k))
-      throw_input_error(file, line, key, "not a header key: a misspelling of '" + k + "'? (a comment that is no key must not read '# word: …' so close to one)");
+      throw_input_error(file, line, key,
+                        "not a header key: a misspelling of '" + k +
+                            "'? (a comment that is no key must not read '# word: …' so close to one)");
   if (dot != std::string::npos)
     for (const char* prefix : {"calibration", "mounting", "thrower"})
       if (looks_misspelt(key.substr(0, dot), prefix))
-        throw_input_error(file, line, key, std::string("not a header key: a misspelling of '") + prefix + "." + key.substr(dot + 1) + "'?");
+        throw_input_error(file, line, key,
+                          std::string("not a header key: a misspelling of '") + prefix + "." + key.substr(dot + 1) + "'?");
 }
 
 bool skip_blank_or_header(Trace& trace, std::string_view trimmed_line, const std::string& file, long line) {

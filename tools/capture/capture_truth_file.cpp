@@ -1,6 +1,7 @@
 #include "tools/capture/capture_truth_file.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include "tools/io/input_error.hpp"
 #include "tools/io/toml_table.hpp"
@@ -17,9 +18,9 @@ fs::path capture_truth_file(const fs::path& capture) {
   std::error_code ec;
   fs::path direct = capture;
   direct += ".truth.toml";
-  const fs::path by_stem = capture.parent_path() / (capture.stem().string() + ".truth.toml");
-  for (const fs::path& p : {direct, by_stem}) {
-    if (p == by_stem && !capture.has_extension()) break;
+  std::vector<fs::path> names{direct};
+  if (capture.has_extension()) names.push_back(capture.parent_path() / (capture.stem().string() + ".truth.toml"));
+  for (const fs::path& p : names) {
     if (fs::is_regular_file(p, ec)) return p;
     // Something under the truth's name that is no file (a folder, a FIFO, a dangling link) is not
     // passed over in silence: the comparison with the truth would vanish without a word.

@@ -62,6 +62,10 @@ BOOST_AUTO_TEST_CASE(a_folder_or_a_fifo_under_the_truths_name_is_said_not_passed
   BOOST_TEST(error_of(capture).find("b.truth.toml: is not a regular file") != std::string::npos, error_of(capture));
   std::filesystem::remove(s.dir / "b.truth.toml");
   BOOST_TEST(!read_capture_truth(capture).has_value());  // none at all: no truth, no error
+  // A capture named without an extension has its truth at NAME.truth.toml too.
+  const auto bare = s.write("c", "10.00 31 00 00 80 80 9a\n");
+  s.write("c.truth.toml", kThrow);
+  BOOST_TEST(read_capture_truth(bare).has_value());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

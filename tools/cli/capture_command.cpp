@@ -581,7 +581,9 @@ void throw_capture(const CaptureArgs& a) {
   for (const auto& [name, r] : results) failed = failed || r.outcome == Outcome::failed;
   if (failed) set_exit_code(1);
   if (!a.out.empty() && failed) {
-    std::fprintf(stderr, "stoneskip: %s not written: the solve failed (a failed run writes no result file; one already at that name is left as it was)\n", a.out.c_str());
+    std::fprintf(stderr, "stoneskip: %s not written: the solve failed (a failed run writes no result file; one already at "
+                 "that name is left as it was)\n",
+                 a.out.c_str());
   } else if (!a.out.empty()) {
     std::vector<std::pair<std::string, const ThrowResult*>> refs;
     for (const auto& [name, r] : results) refs.emplace_back(name, &r);

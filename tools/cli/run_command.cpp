@@ -148,7 +148,9 @@ void run(const RunArgs& a) {
   }
   if (writes) {
     if (failed) {
-      std::fprintf(stderr, "stoneskip: %s not written: the solve failed (a failed run writes no result file; one already at that name is left as it was)\n", a.out.c_str());
+      std::fprintf(stderr, "stoneskip: %s not written: the solve failed (a failed run writes no result file; one already at "
+                   "that name is left as it was)\n",
+                   a.out.c_str());
     } else {
       std::vector<std::pair<std::string, const ThrowResult*>> refs;
       for (const auto& [name, r] : results) refs.emplace_back(name, &r);

@@ -361,7 +361,9 @@ void run(const SceneArgs& a) {
   }
   if (!a.out.empty()) {
     if (s.stone.outcome == Outcome::failed) {
-      std::fprintf(stderr, "stoneskip: %s not written: the stone's solve failed (a failed run writes no result file; one already at that name is left as it was)\n", a.out.c_str());
+      std::fprintf(stderr, "stoneskip: %s not written: the stone's solve failed (a failed run writes no result file; one "
+                   "already at that name is left as it was)\n",
+                   a.out.c_str());
     } else {
       write_throw_file(a.out, c, {{"realtime", &s.stone}}, [&](const H5Group& root) {
         H5Group g = root.create_group("scene");

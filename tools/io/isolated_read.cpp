@@ -6,8 +6,8 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdio>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <sstream>
 #include <string>
@@ -34,8 +34,8 @@ std::string seconds_text(double s) {
   return o.str();
 }
 
-// The child: quiet, killable, crashable, the read, then _exit (no atexit handlers, no destructors of the
-// parent's objects: the HDF5 library's own cleanup would run on a copy of its state).
+// The child: quiet, killable, crashable; the read, then _exit (no atexit handlers, no destructors
+// of the parent's objects: the HDF5 library's own cleanup would run on a copy of its state).
 [[noreturn]] void child(const std::function<void()>& read) {
   // The default actions: a crash ends the child (no handler of the host's, a test framework's say,
   // turns it into an exception), and a signal to the process group ends it too.

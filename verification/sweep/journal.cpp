@@ -152,8 +152,7 @@ SweepJournal::~SweepJournal() {
 
 void SweepJournal::request_sync() {
   if (!syncer_.joinable()) {
-    try {
-    syncer_ = std::thread([this] {
+    const auto syncer = [this] {
       std::unique_lock<std::mutex> lock(sync_mutex_);
       for (;;) {
         sync_wanted_.wait(lock, [this] { return sync_pending_ || stopping_; });
@@ -163,7 +162,9 @@ void SweepJournal::request_sync() {
         ::fdatasync(fd_);
         lock.lock();
       }
-    });
+    };
+    try {
+      syncer_ = std::thread(syncer);
     } catch (const std::system_error&) {
       ::fdatasync(fd_);  // no thread to spare (the system would not start one): the sync is done here
       return;

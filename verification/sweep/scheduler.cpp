@@ -124,39 +124,40 @@ ScheduleStats run_master(const std::vector<std::uint64_t>& pending, std::size_t 
         if (t.joinable()) t.join();
     }
   } join_on_exit{dispenser, pool};
+  const auto compute = [&](int t) {
+    const ThrowSite site{mpi.rank(), t};
+    try {
+      RowBatch done;
+      done.width = width;
+      auto last = Clock::now();
+      auto hand_over = [&] {
+        std::lock_guard<std::mutex> lock(local.mutex);
+        local.batch.append(done);
+        local.ready.notify_one();
+        done.clear();
+        last = Clock::now();
+      };
+      for (;;) {
+        const std::vector<std::uint64_t> chunk = dispenser.take();
+        if (chunk.empty()) break;
+        for (std::uint64_t i : chunk) {
+          evaluate(i, site, done);
+          if (Clock::now() - last >= std::chrono::duration<double>(options.handover_interval_s)) hand_over();
+        }
+        hand_over();
+      }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(local.mutex);
+      if (!local.failure) local.failure = std::current_exception();
+    }
+    std::lock_guard<std::mutex> lock(local.mutex);
+    ++local.threads_done;
+    local.ready.notify_one();
+  };
   std::string refused;
   for (int t = 0; t < threads && refused.empty(); ++t) {
     try {
-    pool.emplace_back([&, t] {
-      const ThrowSite site{mpi.rank(), t};
-      try {
-        RowBatch done;
-        done.width = width;
-        auto last = Clock::now();
-        auto hand_over = [&] {
-          std::lock_guard<std::mutex> lock(local.mutex);
-          local.batch.append(done);
-          local.ready.notify_one();
-          done.clear();
-          last = Clock::now();
-        };
-        for (;;) {
-          const std::vector<std::uint64_t> chunk = dispenser.take();
-          if (chunk.empty()) break;
-          for (std::uint64_t i : chunk) {
-            evaluate(i, site, done);
-            if (Clock::now() - last >= std::chrono::duration<double>(options.handover_interval_s)) hand_over();
-          }
-          hand_over();
-        }
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(local.mutex);
-        if (!local.failure) local.failure = std::current_exception();
-      }
-      std::lock_guard<std::mutex> lock(local.mutex);
-      ++local.threads_done;
-      local.ready.notify_one();
-    });
+      pool.emplace_back(compute, t);
     } catch (const std::system_error& e) {
       refused = e.what();
     }
