@@ -96,6 +96,11 @@ BOOST_AUTO_TEST_CASE(an_unstable_scene_water_is_refused_naming_its_step) {
   const std::string e = error_of(text, {"water.dt_s=0.05"});
   BOOST_TEST(e.find("c.toml: --set water.dt_s: the water would be unstable: sigma = c dt_s / cell_m = 3.125") == 0u, e);
   BOOST_TEST(e.find("take dt_s <= 0.0138564") != std::string::npos, e);
+  // Two-way, the advice is the coupled limit √3/2/√2 = 0.6124 (main advised 0.01386, which the
+  // coupled check then refused): 0.6124 · 0.02 / 1.25 = 0.009798 s.
+  const std::string two = error_of(text, {"water.dt_s=0.05", "water.coupling=\"two_way\""});
+  BOOST_TEST(two.find("take dt_s <= 0.00979796") != std::string::npos, two);
+  BOOST_TEST(error_of(text, {"water.dt_s=0.0097", "water.coupling=\"two_way\""}) == "");  // the advice passes
 }
 
 BOOST_AUTO_TEST_CASE(a_scene_water_with_no_stable_step_says_so_and_gives_no_step) {
