@@ -153,11 +153,12 @@ void run_wave(const WaveArgs& a) {
       std::printf("  BLEW UP: the surface was no longer finite by step %ld (t = %.6g s); no error is reported\n",
                   blown_up_by, field.time_s());
     else if (periodic) {
+      const double rms = root_mean_square(z);
       std::printf("  error vs the %s spectral reference: L2 (RMS) %.4g m, max %.4g m (solution RMS %.4g m)\n",
-                  c.reference_semi_discrete ? "semi-discrete (stencil symbol)" : "continuum", err.l2_m, err.max_m, root_mean_square(z));
+                  c.reference_semi_discrete ? "semi-discrete (stencil symbol)" : "continuum", err.l2_m, err.max_m, rms);
       // A surface that is zero everywhere (an amplitude of 0, a bump far outside the pond) makes
       // a zero error that says nothing of the scheme: said, not left to look like exactness.
-      if (root_mean_square(z) == 0)
+      if (rms == 0)
         std::printf("  note: the solution is zero everywhere (initial amplitude 0, or the initial shape outside the grid): "
                     "the zero error says nothing about the scheme\n");
     }

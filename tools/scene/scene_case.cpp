@@ -52,15 +52,14 @@ WaterScene read_water(TomlTable w, TomlTable& top) {
       m << "the water would be unstable: sigma = c dt_s / cell_m = " << st.sigma;
       if (st.no_stable_step())
         m << ", but the " << st.stencil << " stencil has no stable step (a mode grows at every sigma > 0): change its weights";
-      else if (scene.coupling == Coupling::two_way && coupled_courant_limit(scene.field.stencil) < st.limit)
-        // The step it advises must pass the next check too: under a two-way stone the limit is lower.
-        m << " exceeds the " << st.stencil << " stencil's limit " << st.limit
-          << " (at every mu dt), and a two-way stone lowers it to " << coupled_courant_limit(scene.field.stencil)
-          << " under the stone (model/README.md §2.4); take dt_s <= "
-          << coupled_courant_limit(scene.field.stencil) * scene.field.cell_m / scene.field.wave_speed_m_s;
-      else
-        m << " exceeds the " << st.stencil << " stencil's limit " << st.limit << " (at every mu dt); take dt_s <= "
-          << st.limit * scene.field.cell_m / scene.field.wave_speed_m_s;
+      else {
+        // The step it advises must pass the two-way check below too: under the stone the limit is lower.
+        const double coupled = coupled_courant_limit(scene.field.stencil);
+        const bool lowered = scene.coupling == Coupling::two_way && coupled < st.limit;
+        m << " exceeds the " << st.stencil << " stencil's limit " << st.limit << " (at every mu dt)";
+        if (lowered) m << ", and a two-way stone lowers it to " << coupled << " under the stone (model/README.md §2.4)";
+        m << "; take dt_s <= " << (lowered ? coupled : st.limit) * scene.field.cell_m / scene.field.wave_speed_m_s;
+      }
       checked.fail("dt_s", m.str());
     }
   }
