@@ -195,12 +195,19 @@ void release_part(SectionWriter& w, const std::string& key, const Record& c) {
                 fmt(s.number("interval_high_percent"), 3) + " % range**; these intervals are rough (about " +
                 fmt(std::ceil(100 / s.number("interval_low_percent")) + 1) + " re-runs resolve it)."
               : std::string()));
-  if (th.flag("clipped"))
+  if (th.flag("clipped")) {
+    // Raised to the bound: the speed used is then faster than the lever arm's (the same otherwise).
+    const Record& ms = th.at("measured");
+    const double used = ms.at("speed_m_s").number("nominal"), lever = ms.at("lever_speed_m_s").number("nominal");
     w.text("The accelerometer clipped during the swing, so integrating it gives only a lower bound on the speed (" +
            fmt(th.number("accel_lower_speed_m_s"), 3) + " m/s; " + fmt(th.number("accel_upper_speed_m_s"), 3) +
            " m/s with every clipped span at " + fmt(s.number("max_accel_g"), 3) +
-           " g). The throw takes the lever-arm velocity (angular rate × lever arm, which the gyro still measures), and "
-           "the speed's interval spans both.");
+           " g). The throw takes the lever-arm velocity (angular rate × lever arm, which the gyro still measures)" +
+           (used > lever ? ", here raised to that lower bound, since its speed (" + fmt(lever, 3) + " m/s) falls below it"
+                         : std::string()) +
+           ". The speed's interval spans the accelerometer's bounds and the re-runs, each re-run's speed raised the "
+           "same way to its own bound where slower.");
+  }
   const bool fixed = s.text("height_mapping") == "fixed_release_height";
   const double finger = s.number("finger_spin_rev_s");
   w.text("The virtual thrower (" + code(s.text("height_mapping")) + "): " +
@@ -270,8 +277,8 @@ void truth_part(SectionWriter& w, const Record& c) {
            fmt(lever.number("truth"), 4) + " m/s). The rest is the pivot's own motion (the trunk's turn, " +
            fmt(t.number("pivot_speed_m_s"), 3) +
            " m/s at the release), which no sensor on the forearm measures: where the accelerometer clips and the throw "
-           "takes the lever-arm estimate, its nominal speed is low by that much, and only the accelerometer's bounds "
-           "in the speed's interval cover it.");
+           "takes the lever-arm estimate, its nominal speed is low by up to that much (less where it is raised to "
+           "the accelerometer's lower bound), and only the accelerometer's bounds in the speed's interval cover it.");
   }
 }
 

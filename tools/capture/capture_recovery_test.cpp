@@ -117,6 +117,17 @@ BOOST_AUTO_TEST_CASE(a_clipped_throw_is_flagged_and_its_speed_interval_contains_
              "[" << a.speed_m_s.low << ", " << a.speed_m_s.high << "] vs truth " << truth.speed_m_s);
   // The clipped accelerometer alone underestimates the speed: its value is a lower bound.
   BOOST_TEST(a.accel_lower.accel_speed_m_s < truth.speed_m_s);
+  // So the speed used is not below it (the lever arm, which misses the pivot's share, is: 8.38 of
+  // the bound's 8.65 m/s here) and keeps the lever arm's direction (1e-12: a rescaled vector's
+  // round-off); the interval's low end is a member's own bound, within the members' spread
+  // (MotionPlus scale ±5 %) of the nominal one, never the lever arm's 20 % lower low end.
+  BOOST_TEST(a.nominal.lever_speed_m_s < a.accel_lower.accel_speed_m_s);
+  BOOST_TEST(a.nominal.speed_floored);
+  BOOST_TEST(a.nominal.measured_speed_m_s == a.accel_lower.accel_speed_m_s, boost::test_tools::tolerance(1e-12));
+  const Vec3 used = a.nominal.measured.velocity_m_s.normalized(), lever = a.nominal.lever_velocity_m_s.normalized();
+  BOOST_TEST((used - lever).norm() <= 1e-12);
+  BOOST_TEST(a.measured_speed_m_s.low >= 0.95 * a.accel_lower.accel_speed_m_s);
+  BOOST_TEST(a.measured_speed_m_s.low > a.lever_speed_m_s.low);
 }
 
 BOOST_AUTO_TEST_CASE(dropped_and_repeated_reports_and_jitter_are_counted_exactly) {

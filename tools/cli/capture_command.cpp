@@ -273,10 +273,12 @@ void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
               !intervals ? "; no intervals (no ensemble: capture validate --members N gives them)"
               : rough    ? "; rough intervals: too few members to resolve the 2.5-97.5 % range (about 41 do)"
                          : "");
+  const std::string used = an.nominal.speed_floored ? "the accelerometer's lower bound, which the lever-arm value is below"
+                                                    : "the lever-arm value";
   show("speed", an.measured_speed_m_s,
        !an.clipped ? std::string("m/s")
-       : intervals ? std::string("m/s (accelerometer clipped: the lever-arm value; the interval spans the accelerometer's bounds)")
-                   : std::string("m/s (accelerometer clipped: the lever-arm value)"));
+       : intervals ? "m/s (accelerometer clipped: " + used + "; the interval is the accelerometer's bounds and the re-runs)"
+                   : "m/s (accelerometer clipped: " + used + ")");
   show("  accelerometer", an.accel_speed_m_s, "m/s");
   show("  angular rate x lever", an.lever_speed_m_s, "m/s");
   show("attack angle", an.attack_angle_deg, "deg");

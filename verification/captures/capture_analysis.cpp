@@ -144,13 +144,27 @@ void estimate_throw(CaptureAnalysis& a, const ChainInput& in, const CaptureOptio
   a.still_accel_error_g = d.still_accel_g - 1.0;
   a.gyro_bias_deg_s = d.gyro_bias_deg_s;
   if (!a.nominal.finite()) return;
-  a.accel_lower = a.nominal;
+  a.accel_lower = a.nominal;  // clipped spans as recorded: the accelerometer's lower bound
+  ChainInput floored = in;    // clipped: the lever arm's speed raised to that bound where slower
+  if (a.clipped) {
+    floored.speed_floor_m_s = a.accel_lower.accel_speed_m_s;
+    a.nominal = run_chain(floored, o, Perturbation{}, &a.series, nullptr);
+    if (!a.nominal.finite()) return;
+  }
   a.accel_upper = a.clipped ? run_chain(in, o, Perturbation{Perturb::none, ClipFill::at_max, ClipFill::as_recorded, 0}, nullptr, nullptr) : a.nominal;
   std::mt19937_64 seeds(o.seed);
   for (int m = 0; m < o.members; ++m) {
     const Perturbation p{Perturb::random, a.clipped ? ClipFill::random_bump : ClipFill::as_recorded,
                          a.gyro_saturated_in_swing ? ClipFill::random_bump : ClipFill::as_recorded, seeds()};
-    const ReleaseKinematics r = run_chain(in, o, p, nullptr, nullptr);
+    if (a.clipped) {
+      // The member's own bound: the same member with its clipped spans as recorded.
+      Perturbation twin = p;
+      twin.fill = ClipFill::as_recorded;
+      const ReleaseKinematics bound = run_chain(in, o, twin, nullptr, nullptr);
+      if (!bound.finite()) continue;
+      floored.speed_floor_m_s = bound.accel_speed_m_s;
+    }
+    const ReleaseKinematics r = run_chain(floored, o, p, nullptr, nullptr);
     if (r.finite()) a.ensemble.push_back(r);
   }
   const auto& e = a.ensemble;
@@ -168,7 +182,9 @@ void estimate_throw(CaptureAnalysis& a, const ChainInput& in, const CaptureOptio
   a.rise_m = interval_of(nom, e, [](R r) { return r.measured.rise_m; });
   if (a.clipped) {
     // The accelerometer alone bounds the speed and the rise: clipped spans as recorded … at
-    // max_accel_g. The measured (and so the virtual) speed spans them and the lever arm's interval.
+    // max_accel_g. The measured (and so the virtual) speed spans them and the members' speeds,
+    // each at least its own lower bound; not the lever arm's interval, whose low end can lie below
+    // the accelerometer's bound (the lever arm misses the pivot's motion).
     auto widen = [](Interval& v, double x, double y) {
       v.low = std::min({v.low, x, y});
       v.high = std::max({v.high, x, y});
@@ -176,7 +192,6 @@ void estimate_throw(CaptureAnalysis& a, const ChainInput& in, const CaptureOptio
     widen(a.accel_speed_m_s, a.accel_lower.accel_speed_m_s, a.accel_upper.accel_speed_m_s);
     widen(a.rise_m, a.accel_lower.measured.rise_m, a.accel_upper.measured.rise_m);
     widen(a.measured_speed_m_s, a.accel_speed_m_s.low, a.accel_speed_m_s.high);
-    widen(a.measured_speed_m_s, a.lever_speed_m_s.low, a.lever_speed_m_s.high);
     const double scale = o.thrower.speed_scale;
     widen(a.speed_m_s, scale * a.measured_speed_m_s.low, scale * a.measured_speed_m_s.high);
     if (o.thrower.height_mapping == HeightMapping::still_part_height)

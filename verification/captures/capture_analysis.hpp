@@ -25,8 +25,10 @@
 //      virtual water, speed and spin scaling, finger spin;
 //   9. the verdict (capture_verdict.hpp).
 // When the accelerometer clipped during the swing its velocity is only a lower bound: the throw
-// then takes the lever-arm velocity, and the speed interval spans the accelerometer's bounds
-// (clipped spans as recorded … filled at max_accel_g) and the lever-arm interval.
+// then takes the lever-arm velocity, raised to that bound where it is slower (the lever arm misses
+// the pivot's own motion), and the speed interval is the accelerometer's bounds (clipped spans as
+// recorded … filled at max_accel_g) joined with the members' speeds, each member raised to its own
+// bound (its spans as recorded, its other perturbations the same).
 // Uncertainty: the whole chain is re-run on perturbed copies (per-sample noise and quantisation,
 // a per-member accelerometer bias, release time within its interval, gyro scale, lever arm,
 // virtual height, clipped spans filled with random bumps up to max_accel_g, and spans where the
@@ -108,6 +110,7 @@ struct ReleaseKinematics {
   double speed_m_s = 0, accel_speed_m_s = 0, lever_speed_m_s = 0;  // virtual; measured; measured
   double measured_speed_m_s = 0, measured_spin_rev_s = 0;
   double attack_angle_deg = 0, path_angle_deg = 0, roll_angle_deg = 0, spin_rev_s = 0;
+  bool speed_floored = false;  // clipped: the lever arm's speed raised to the accelerometer's lower bound
   bool finite() const;
 };
 

@@ -174,10 +174,13 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
     }
   // 2. Clipped spans: what the accelerometer could not show. A random bump is a half sine in time
   // from the last unclipped sample before the span to the first after it; each span on each axis
-  // draws its own height (a share of the way from the recorded level up to max_value).
+  // draws its own height (a share of the way from the recorded level up to max_value). The
+  // accelerometer's spans draw last from the member's stream and the MotionPlus's from a stream of
+  // their own, so a member re-run with its accelerometer spans as recorded (its speed floor,
+  // estimate_throw) draws every other perturbation as the member does.
   const double edge = in.period_s > 0 ? in.period_s : 0.01;
   auto fill_spans = [&](ClipFill fill, const auto& in_span, const std::vector<Vec3>& recorded, double max_value,
-                        std::vector<Vec3>& out) {
+                        std::vector<Vec3>& out, std::mt19937_64& stream) {
     for (int i = 0; i < 3; ++i)
       for (std::size_t k = 0; k <= stop;) {
         if (!in_span(k, i)) {
@@ -188,7 +191,7 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
         while (e <= stop && in_span(e, i)) ++e;
         const double ta = k > 0 ? t[k - 1] : t[k] - edge;
         const double tb = e <= stop ? t[e] : t[e - 1] + edge;
-        const double s = fill == ClipFill::at_max ? 1.0 : unit(rng);
+        const double s = fill == ClipFill::at_max ? 1.0 : unit(stream);
         for (std::size_t j = k; j < e; ++j) {
           const double bump = fill == ClipFill::at_max ? 1.0 : std::sin(std::numbers::pi * (t[j] - ta) / (tb - ta));
           const double level = std::abs(recorded[j][i]);
@@ -200,7 +203,7 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
   };
   if (p.fill != ClipFill::as_recorded)
     fill_spans(p.fill, [&](std::size_t k, int i) { return (in.flags[k] & (kSaturatedX << i)) != 0; }, in.accel_g,
-               o.max_accel_g, f);
+               o.max_accel_g, f, rng);
   // The MotionPlus's saturated samples (kGyroSaturated: some axis at the end of its 14-bit range):
   // on each axis at 90 % of its range or more (the zero offset moves the ends by a few percent),
   // or, if none is, on the axis nearest its range, the rate is a lower bound, filled as above up to
@@ -219,7 +222,9 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
       }
       if (!any) at_end[k][nearest] = true;
     }
-    fill_spans(p.gyro_fill, [&](std::size_t k, int i) { return at_end[k][i]; }, in.rate_deg_s, o.max_rate_deg_s, w);
+    std::mt19937_64 gyro_stream(p.seed ^ 0x9e3779b97f4a7c15ULL);
+    fill_spans(p.gyro_fill, [&](std::size_t k, int i) { return at_end[k][i]; }, in.rate_deg_s, o.max_rate_deg_s, w,
+               gyro_stream);
   }
   // 3. The still part: gravity direction, |a|, gyro bias (slow-mode deg/s).
   Vec3 f_still = Vec3::Zero(), bias_slow = Vec3::Zero();
@@ -313,7 +318,13 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
   const Vec3 w_world = R * wr;
   const Vec3 v_accel = vr + w_world.cross(R * in.mounting.stone_offset_m);
   const Vec3 v_lever = R * wr.cross(lever_scale * in.mounting.lever_arm_m);
-  const Vec3 v_used = in.use_lever ? v_lever : v_accel;
+  // Clipped: the lever arm's velocity, but not slower than the accelerometer shows even with its
+  // clipped spans as recorded (the lever arm misses the pivot's own motion, so it can fall below
+  // that bound; the direction stays the lever arm's).
+  const double lever_speed = v_lever.norm();
+  const bool floored = in.use_lever && lever_speed > 0 && lever_speed < in.speed_floor_m_s;
+  const Vec3 v_used = !in.use_lever ? v_accel : floored ? Vec3(v_lever * (in.speed_floor_m_s / lever_speed)) : v_lever;
+  r.speed_floored = floored;
   // 6. Turn the heading so the horizontal velocity points along +x.
   const double psi = std::hypot(v_used.x(), v_used.y()) > 1e-9 ? std::atan2(v_used.y(), v_used.x()) : 0.0;
   const Mat3 turn = Eigen::AngleAxisd(-psi, Vec3::UnitZ()).toRotationMatrix();

@@ -23,7 +23,9 @@ struct ChainInput {
   Mounting mounting;
   std::size_t still_begin = 0, still_end = 0, release_sample = 0;
   double release_t_s = 0, release_t_low_s = 0, release_t_high_s = 0;
-  bool use_lever = false;                  // clipped: the throw takes the lever-arm velocity
+  bool use_lever = false;                  // clipped: the throw takes the lever-arm velocity …
+  double speed_floor_m_s = 0;              // … scaled up to this speed where it is slower (the
+                                           // accelerometer's own lower bound, clipped spans as recorded)
   // Rate in slow-mode deg/s (for still detection and bias).
   Vec3 rate_slow_deg_s(std::size_t k) const {
     Vec3 w = rate_deg_s[k];

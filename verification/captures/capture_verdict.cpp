@@ -152,7 +152,11 @@ std::string reason_for(const std::string& c, const CaptureAnalysis& a, const Rec
            format(" in %.0f of the swing's %.0f samples: the accelerometer gives only a lower bound on the speed "
                   "(%.3g m/s)",
                   a.saturated_in_swing, a.swing_samples, a.accel_lower.accel_speed_m_s) +
-           format("; the throw uses the lever-arm estimate %.3g m/s", a.nominal.lever_speed_m_s);
+           (a.nominal.speed_floored
+                ? format("; the lever-arm estimate, %.3g m/s, falls below it, so the throw takes the bound in the "
+                         "lever arm's direction",
+                         a.nominal.lever_speed_m_s)
+                : format("; the throw uses the lever-arm estimate %.3g m/s", a.nominal.lever_speed_m_s));
   if (c == "gyro_saturated") return "the MotionPlus reached the end of its range during the swing";
   if (c == "reports_lost")
     return format("about %.0f reports lost in %.0f gaps (%.2g %% of the reports)", double(ts.dropped_reports), ts.gaps,
