@@ -78,6 +78,27 @@ struct Counter {
 
 }  // namespace
 
+void bisect_threshold(CountThreshold& t, double tolerance, const std::function<int(double)>& count) {
+  while (t.hi - t.lo > tolerance) {
+    const double mid = t.lo + 0.5 * (t.hi - t.lo);
+    // No double strictly between the ends (a tolerance below the values' spacing, e.g. 1e-300):
+    // the bracket is as narrow as the arithmetic allows. Stop, or it never would.
+    if (!(mid > t.lo && mid < t.hi)) break;
+    const int n = count(mid);
+    if (n < 0) {  // a failed run is no count: it cannot say on which side of it the change lies
+      t.failed_at = mid;
+      return;
+    }
+    if (n == t.count_below) {
+      t.lo = mid;
+    } else {
+      t.hi = mid;
+      t.count_above = n;  // the count just above the change (may differ from the grid's)
+    }
+  }
+  t.bisected = true;
+}
+
 std::vector<BounceSweepResult> run_bounce_sweeps(const std::vector<BounceSweepSpec>& specs,
                                                  const ParallelOptions& options) {
   std::vector<BounceSweepResult> out(specs.size());
@@ -114,21 +135,8 @@ std::vector<BounceSweepResult> run_bounce_sweeps(const std::vector<BounceSweepSp
     }
     for (std::size_t j = 0; j < out[k].thresholds.size() && static_cast<int>(j) < specs[k].max_thresholds; ++j)
       bisect_jobs.push_back([&, k, j] {
-        CountThreshold& t = out[k].thresholds[j];
-        while (t.hi - t.lo > specs[k].threshold_tolerance) {
-          const double mid = t.lo + 0.5 * (t.hi - t.lo);
-          // No double strictly between the ends (a tolerance below the values' spacing, e.g.
-          // 1e-300): the bracket is as narrow as the arithmetic allows. Stop, or it never would.
-          if (!(mid > t.lo && mid < t.hi)) break;
-          const int n = counters[k]->count(specs[k], mid, nullptr);
-          if (n == t.count_below) {
-            t.lo = mid;
-          } else {
-            t.hi = mid;
-            t.count_above = n;  // the count just above the change (may differ from the grid's)
-          }
-        }
-        t.bisected = true;
+        bisect_threshold(out[k].thresholds[j], specs[k].threshold_tolerance,
+                         [&](double x) { return counters[k]->count(specs[k], x, nullptr); });
       });
   }
   ParallelOptions bis = options;

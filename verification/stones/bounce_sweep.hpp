@@ -3,6 +3,8 @@
 // path angle), with every change of the count located by bisection: between two
 // neighbouring grid values whose counts differ, the parameter is halved down to a stated
 // tolerance, so a threshold is reported as a value ± tolerance/2, not only as counts on a grid.
+#include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -37,6 +39,9 @@ struct CountThreshold {
   // change; where count_above differs from it (1 → 2 at 10.9, 0 at the grid's 14), the cell holds
   // at least one more change that was not located.
   int count_at_cell_end = 0;
+  // Bisection stopped where a run failed (no count: the change may lie on either side of it), and
+  // [lo, hi] is the bracket before that run; bisected stays false (not located to the tolerance).
+  double failed_at = std::numeric_limits<double>::quiet_NaN();
   bool more_in_cell() const { return bisected && count_above != count_at_cell_end; }
   double value() const { return 0.5 * (lo + hi); }
 };
@@ -49,6 +54,12 @@ struct BounceSweepResult {
   long runs = 0;                    // throws solved (grid + bisection)
   double cpu_s = 0;                 // summed over the runs
 };
+
+// Narrows t's bracket [lo, hi] (count_below at lo, count_above at hi) by halving until it is no
+// wider than `tolerance` or no double lies strictly between its ends; count(x) is the bounce count
+// at x, < 0 where the run fails. A failed run stops it (failed_at; bisected stays false), else
+// bisected is set. count_above becomes the count just above the change.
+void bisect_threshold(CountThreshold& t, double tolerance, const std::function<int(double)>& count);
 
 // Runs every sweep's grid, then every bisection, sharing the workers.
 std::vector<BounceSweepResult> run_bounce_sweeps(const std::vector<BounceSweepSpec>& specs,

@@ -73,6 +73,36 @@ BOOST_AUTO_TEST_CASE(a_cell_holding_more_than_one_change_says_so, *boost::unit_t
   BOOST_TEST(t.more_in_cell());
 }
 
+BOOST_AUTO_TEST_CASE(a_failed_run_stops_the_bisection_and_leaves_the_change_unlocated) {
+  // Oracle: a step function with a failing region, where every midpoint is known in advance. The
+  // count is 1 below 5.8 and 3 from it; runs in [5.9, 6.0) fail. The bracket [5, 10] halves to
+  // 7.5 (3), 6.25 (3), 5.625 (1), 5.9375 (fails): the stones report had listed the failure as a
+  // change "1→failed", located to the tolerance, where a failed run says nothing of the change.
+  auto count = [](double x) { return x >= 5.9 && x < 6.0 ? -1 : x < 5.8 ? 1 : 3; };
+  CountThreshold t;
+  t.lo = 5.0;
+  t.hi = 10.0;
+  t.count_below = 1;
+  t.count_above = t.count_at_cell_end = 3;
+  bisect_threshold(t, 0.25, count);
+  BOOST_TEST(!t.bisected);
+  BOOST_TEST(t.failed_at == 5.9375);
+  BOOST_TEST(t.lo == 5.625);  // the last bracket whose ends both have counts
+  BOOST_TEST(t.hi == 6.25);
+  BOOST_TEST(t.count_above == 3);
+  BOOST_TEST(!t.more_in_cell());
+  // Without the failing region the same bracket is located: [5.78125, 5.9375], 1 → 3.
+  CountThreshold u = t;
+  u.lo = 5.0;
+  u.hi = 10.0;
+  u.failed_at = NAN;
+  bisect_threshold(u, 0.25, [](double x) { return x < 5.8 ? 1 : 3; });
+  BOOST_TEST(u.bisected);
+  BOOST_TEST(std::isnan(u.failed_at));
+  BOOST_TEST(u.lo == 5.78125);
+  BOOST_TEST(u.hi == 5.9375);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace

@@ -160,10 +160,12 @@ Record sweeps_findings(const std::vector<BounceSweepResult>& sweeps) {
       for (std::size_t i = 0; i < s->spec.values.size(); ++i) t.add_row({s->spec.values[i], double(s->counts[i])});
       sr.set_table("counts", t);
       sr.set_strings("failures", s->failures);
-      Table th{{"lo", "hi", "count_below", "count_above", "bisected", "count_at_cell_end"}, {}, {unit, unit, "1", "1", "1", "1"}};
+      Table th{{"lo", "hi", "count_below", "count_above", "bisected", "count_at_cell_end", "failed_at"},
+               {},
+               {unit, unit, "1", "1", "1", "1", unit}};
       for (const auto& x : s->thresholds)
         th.add_row({x.lo, x.hi, double(x.count_below), double(x.count_above), x.bisected ? 1.0 : 0.0,
-                    double(x.count_at_cell_end)});
+                    double(x.count_at_cell_end), x.failed_at});
       sr.set_table("thresholds", th);
     }
     Record& cmp = pr.child("comparison");
