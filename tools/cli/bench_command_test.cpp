@@ -259,6 +259,25 @@ BOOST_AUTO_TEST_CASE(bench_sweep_only_claims_nothing_it_did_not_measure_and_judg
   BOOST_TEST(t.out.find("(95 % interval)  MISSED") != std::string::npos, t.out);
 }
 
+BOOST_AUTO_TEST_CASE(bench_names_another_scene_by_its_file_and_holds_it_to_no_target) {
+  // Oracle: the bench's targets (README, "Speed"): 3000 frames/s is the seed's scene's; a scene
+  // given with --scene is another workload, which had been labelled "seed's scene" and marked
+  // against that target.
+  const auto other = stoneskip::test::run_stoneskip("bench --quick --scene cases/scenes/swell_8ms.toml", false);
+  BOOST_REQUIRE_MESSAGE(other.status == 0, other.out);
+  BOOST_TEST(other.out.find("seed's scene") == std::string::npos, other.out);
+  const auto at = other.out.find("scene swell_8ms.toml (");
+  BOOST_REQUIRE_MESSAGE(at != std::string::npos, other.out);
+  const std::string row = other.out.substr(at, other.out.find('\n', at) - at);
+  BOOST_TEST(row.find(">=") == std::string::npos, row);
+  const auto seed = stoneskip::test::run_stoneskip("bench --quick --scene cases/scenes/seed_8ms.toml", false);
+  BOOST_REQUIRE_MESSAGE(seed.status == 0, seed.out);
+  const auto seed_at = seed.out.find("seed's scene (");
+  BOOST_REQUIRE_MESSAGE(seed_at != std::string::npos, seed.out);
+  const std::string seed_row = seed.out.substr(seed_at, seed.out.find('\n', seed_at) - seed_at);
+  BOOST_TEST(seed_row.find(">= 3e+03") != std::string::npos, seed_row);
+}
+
 BOOST_AUTO_TEST_CASE(bench_refuses_a_bad_repeat_count) {
   // Oracle: the input rules — one line naming the option, exit 2.
   const auto r = stoneskip::test::run_stoneskip("bench --quick --repeats 0");
