@@ -135,6 +135,22 @@ BOOST_AUTO_TEST_CASE(unknown_and_truncated_reports_are_skipped_with_a_warning_na
   BOOST_TEST(contains(t.warnings[1], "odd.log:3: truncated report 0x35"));
 }
 
+BOOST_AUTO_TEST_CASE(a_report_longer_than_any_the_remote_sends_is_warned_of) {
+  // Oracle: the Wii Remote's input reports are at most 22 bytes with the id (0x35: id, 2 button,
+  // 3 accelerometer, 16 extension bytes; WiiBrew, "Wiimote", Data Reporting). A logger may pad a
+  // shorter report up to that (accepted in silence) or prefix the HID header 0xa1; a 23rd byte is
+  // no part of any report (main read it in silence).
+  const std::string r35 = " 35 00 00 80 80 9a 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00 00";
+  const Trace ok = parse_capture("10.00" + r35 + "\n10.01 a1" + r35 + "\n10.02 31 00 00 80 80 9a 00 00\n", "ok.log");
+  BOOST_TEST(ok.samples.size() == 3u);
+  for (const auto& w : ok.warnings) BOOST_TEST(!contains(w, "longer than"), w);
+  const Trace t = parse_capture("10.00" + r35 + "\n10.01" + r35 + " 7f\n10.02" + r35 + " 7f 7f\n", "long.log");
+  BOOST_TEST(t.samples.size() == 3u);
+  BOOST_TEST(std::count_if(t.warnings.begin(), t.warnings.end(), [](const std::string& w) {
+               return contains(w, "long.log:2: 2 reports are longer than 22 bytes");
+             }) == 1);
+}
+
 BOOST_AUTO_TEST_CASE(a_capture_without_a_button_press_or_still_part_is_unusable_with_the_reason) {
   // Oracle: a log whose button bits were all cleared has no press; a throw that starts 0.1 s
   // into the recording has no still part.

@@ -46,6 +46,11 @@ Trace read_report_log(const std::string& text, const std::string& file) {
   double previous_time = 0, first_time = 0;
   bool have_time = false;
   long without_accel = 0, without_gyro = 0;
+  // Reports longer than any the remote sends (22 bytes with the id; a logger may pad shorter ones
+  // up to that, and may prefix the HID header 0xa1): the bytes past 22 are not the remote's.
+  constexpr std::size_t kLongestReport = 22;
+  long overlong = 0;
+  std::size_t first_overlong_line = 0;
   std::vector<char> sample_has_gyro;
   for (const TextLine& line : split_capture_lines(text, file)) {
     const std::string_view s = trim(line.text);
@@ -79,6 +84,7 @@ Trace read_report_log(const std::string& text, const std::string& file) {
                            "): skipped");
       continue;
     }
+    if (bytes.size() - (bytes[0] == 0xa1 ? 1 : 0) > kLongestReport && overlong++ == 0) first_overlong_line = line.number;
     if (r.kind == ReportKind::unknown) {
       t.warnings.push_back(input_location(file, line.number, "") + ": unknown report type " + id + ": skipped");
       continue;
@@ -161,6 +167,12 @@ Trace read_report_log(const std::string& text, const std::string& file) {
       x.gyro_fast = last_fast;
     }
   }
+  if (overlong > 0)
+    t.warnings.push_back(input_location(file, first_overlong_line, "") + ": " + std::to_string(overlong) +
+                         (overlong == 1 ? " report is" : " reports are") + " longer than " +
+                         std::to_string(kLongestReport) +
+                         " bytes, the longest a Wii Remote sends (this line is the first): the bytes past " +
+                         std::to_string(kLongestReport) + " were ignored");
   if (without_accel > 0)
     t.warnings.push_back(file + ": " + std::to_string(without_accel) + " reports without accelerometer data skipped");
   if (without_gyro > 0)
