@@ -53,9 +53,26 @@ bool is_report_folder(const fs::path& dir) {
   }
 }
 
+// The report's folder as named, without "." components or a trailing "/": `--out waves/` is the
+// folder waves, whose work folder is its sibling waves.partial (main put it at waves/.partial,
+// inside the report's own folder, and refused that folder as not empty after all the work). A name
+// ending in "." or ".." names a folder that holds more than the report (the current one, its
+// parent): refused, as is the root.
+fs::path report_folder_name(const fs::path& given) {
+  if (given.empty()) throw_input_error("--out", 0, "", "an output folder is required (got an empty name)");
+  fs::path p = given.lexically_normal();
+  while (p.has_relative_path() && p.filename().empty()) p = p.parent_path();
+  if (!p.has_relative_path() || p.filename() == "." || p.filename() == "..")
+    throw_input_error(given.string(), 0, "",
+                      "names " + std::string(p.has_relative_path() ? "the current folder or a parent" : "the root") +
+                          ", not a folder of the report's own: give one inside it, such as " +
+                          (p.has_relative_path() ? (p / "report").string() : std::string("/tmp/report")));
+  return p;
+}
+
 ReportBuild::ReportBuild(ReportBuildOptions options) : options_(std::move(options)) {
+  options_.out_dir = report_folder_name(options_.out_dir);
   const fs::path& out = options_.out_dir;
-  if (out.empty()) throw_input_error("--out", 0, "", "an output folder is required (got an empty name)");
   std::error_code ec;
   fs::path parent = out.parent_path();
   if (parent.empty()) parent = ".";

@@ -93,6 +93,36 @@ BOOST_AUTO_TEST_CASE(a_file_link_or_empty_name_as_the_folder_is_refused_before_a
   BOOST_TEST(fs::is_symlink(s.dir / "alink"));
 }
 
+BOOST_AUTO_TEST_CASE(a_trailing_slash_names_the_folder_and_the_current_folder_is_refused) {
+  // Oracle: the folders on disk. `--out out/` names the folder out: its work folder is the sibling
+  // out.partial and the report lands in out (main made out/.partial, inside the report's own
+  // folder, and at commit refused out as "not a stoneskip report folder" after all the work). ".",
+  // ".." and "/" name folders that hold more than the report: refused before anything is made.
+  Scratch s;
+  for (const std::string slash : {"/", "//", "/./"}) {
+    BOOST_TEST_CONTEXT(slash) {
+      const fs::path out = s.dir / ("out" + std::to_string(slash.size()));
+      {
+        ReportBuild b(options(fs::path(out.string() + slash)));
+        b.store("a", section(1));
+        b.assemble(Record{});
+        BOOST_TEST(fs::exists(fs::path(out.string() + ".partial")));
+        b.commit();
+      }
+      BOOST_TEST(is_report_folder(out));
+      BOOST_TEST(!fs::exists(out / ".partial"));
+      BOOST_TEST(!fs::exists(fs::path(out.string() + ".partial")));
+    }
+  }
+  for (const fs::path& p : {fs::path("."), fs::path("./"), fs::path(".."), fs::path("../"), fs::path("/")}) {
+    BOOST_TEST_CONTEXT(p) {
+      BOOST_CHECK_THROW(ReportBuild b(options(p)), InputError);
+    }
+  }
+  BOOST_TEST(!fs::exists("..partial"));  // what main made for "."
+  BOOST_TEST(!fs::exists("../..partial"));
+}
+
 BOOST_AUTO_TEST_CASE(a_report_folder_with_anything_of_the_users_in_it_is_not_replaced) {
   // Oracle: the folder's manifest (tools/io/folder_manifest.hpp), written by commit(): what the
   // build wrote. A file of the user's dropped in — even one named like a figure, which a list of
