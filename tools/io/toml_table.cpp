@@ -205,22 +205,68 @@ void apply_override(toml::value& root, const std::string& file, const std::strin
 
 }  // namespace
 
-void set_value(toml::value& root, const std::string& file, const std::string& path, toml::value value) {
-  toml::value* node = &root;
-  std::size_t start = 0;
+// A dotted key as TOML writes one (TOML 1.0, "Keys"): bare parts, or parts quoted "…" (escapes as
+// in a basic string) or '…' (literal), joined by dots with optional blanks around them.
+std::vector<std::string> dotted_key_parts(const std::string& file, const std::string& path) {
+  auto fail = [&](const std::string& what) { throw_input_error(file, 0, "--set " + path, what); };
+  std::vector<std::string> parts;
+  std::size_t i = 0;
+  auto blanks = [&] {
+    while (i < path.size() && (path[i] == ' ' || path[i] == '\t')) ++i;
+  };
   while (true) {
-    std::size_t dot = path.find('.', start);
-    std::string part = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-    if (part.empty()) throw_input_error(file, 0, "--set " + path, "empty key component");
+    blanks();
+    std::string part;
+    if (i < path.size() && (path[i] == '"' || path[i] == '\'')) {
+      const char quote = path[i];
+      std::size_t end = i + 1;
+      while (end < path.size() && path[end] != quote) end += quote == '"' && path[end] == '\\' ? 2 : 1;
+      if (end >= path.size()) fail("a quoted key component has no closing quote");
+      const std::string quoted = path.substr(i, end + 1 - i);
+      if (quote == '"') {
+        try {  // the escapes, read by the TOML parser itself
+          std::istringstream in("k = " + quoted + "\n");
+          part = toml::find<std::string>(toml::parse(in, kSetName), "k");
+        } catch (const std::exception&) {
+          fail("a quoted key component is not a TOML string: " + quoted);
+        }
+      } else {
+        part = quoted.substr(1, quoted.size() - 2);
+      }
+      i = end + 1;
+    } else {
+      const std::size_t start = i;
+      auto bare = [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '-'; };
+      while (i < path.size() && bare(static_cast<unsigned char>(path[i]))) ++i;
+      part = path.substr(start, i - start);
+      if (part.empty())
+        fail(i < path.size() && path[i] != '.'
+                 ? "a bare key component holds only letters, digits, _ and - (quote any other: \"…\")"
+                 : "empty key component");
+    }
+    parts.push_back(part);
+    blanks();
+    if (i == path.size()) return parts;
+    if (path[i] != '.')
+      fail("expected '.' after the key component '" + part +
+           "' (a bare key component holds only letters, digits, _ and -; quote any other: \"…\")");
+    ++i;
+  }
+}
+
+void set_value(toml::value& root, const std::string& file, const std::string& path, toml::value value) {
+  const std::vector<std::string> parts = dotted_key_parts(file, path);
+  toml::value* node = &root;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const std::string& part = parts[k];
     if (!node->is_table()) throw_input_error(file, 0, "--set " + path, "'" + part + "' is not inside a table");
     auto& tbl = node->as_table();
-    if (dot == std::string::npos) {
+    if (k + 1 == parts.size()) {
       tbl[part] = std::move(value);
       return;
     }
     if (tbl.find(part) == tbl.end()) tbl[part] = toml::table{};
     node = &tbl[part];
-    start = dot + 1;
   }
 }
 

@@ -161,6 +161,38 @@ BOOST_AUTO_TEST_CASE(a_bad_override_is_blamed_on_the_override_not_on_line_1) {
   BOOST_TEST(d.top().table("t").string("s") == "a\"b\\c\td");
 }
 
+BOOST_AUTO_TEST_CASE(an_override_key_is_read_as_toml_writes_a_dotted_key) {
+  // Oracle: TOML 1.0, "Keys": a dotted key's parts are bare (A-Za-z0-9_-) or quoted, "…" with a
+  // basic string's escapes or '…' literal, with blanks allowed around the dots. Each of these sets
+  // t.x (main read 't."x"' as a key named "x" with its quotes: "unknown key").
+  const std::string text = "[t]\nx = 2.0\n";
+  for (const std::string& o : {std::string("t.\"x\"=3"), std::string("t.'x'=3"), std::string("t . x=3"),
+                               std::string("\"t\".\"\\u0078\"=3")}) {
+    BOOST_TEST_CONTEXT(o) {
+      const TomlDocument d = parse_toml_text(text, "hostile.toml", {o});
+      BOOST_TEST(d.top().table("t").number("x") == 3.0);
+    }
+  }
+  // Malformed keys: one line naming --set and what is wrong.
+  const struct {
+    const char* set;
+    const char* says;
+  } bad[] = {{"t.\"x=3", "no closing quote"},
+             {"t..x=3", "empty key component"},
+             {"t.x y=3", "expected '.' after the key component 'x'"},
+             {"t\"x\"=3", "expected '.' after the key component 't'"},
+             {"t.\xc3\xa9=3", "a bare key component holds only letters"},
+             {"t.\"\\q\"=3", "not a TOML string"}};
+  for (const auto& b : bad) {
+    BOOST_TEST_CONTEXT(b.set) {
+      const std::string e = error_of(text, {b.set});
+      BOOST_TEST(e.find("hostile.toml: --set ") == 0u, e);
+      BOOST_TEST(e.find(b.says) != std::string::npos, e);
+      BOOST_TEST(one_line(e), e);
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(range_messages_print_numbers_as_numbers) {
   // Oracle: the number as the user would write it (%g): "-1e+300", never 301 digits of
   // std::to_string, nor "-0.030000".
