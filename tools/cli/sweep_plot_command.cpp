@@ -67,7 +67,7 @@ void add_sweep_plot(CLI::App& app) {
   auto* cmd = app.add_subcommand("sweep-plot", "Draw a finished sweep: bounce-count maps, disagreement, histograms");
   cmd->add_option("FILE", a->file, "Sweep result file (from stoneskip sweep)")->required();
   cmd->add_option("--out", a->out, "Folder for index.md, data.h5 and figures/ (default: FILE without .h5 + _plots)");
-  cmd->add_flag("--no-render", a->no_render, "Store the figures' data and scripts without running gnuplot");
+  cmd->add_flag("--no-render", a->no_render, "Store the figures' data in data.h5 and write the page without running gnuplot (no figures/ folder: the page's images are missing)");
   cmd->add_option("--map", a->columns,
                   "Also map this column of the table, e.g. realtime_distance_m or cost_realtime_wall_s (repeatable)");
   cmd->callback([a] { run(*a); });

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "tools/io/input_error.hpp"
+#include "tools/io/shipped_files.hpp"
 #include "tools/scene/case_problem.hpp"
 #include "tools/scene/scene_throw.hpp"
 #include "tools/scene/study_keys.hpp"
@@ -16,7 +17,8 @@ namespace {
 StoneCase load_case(const fs::path& dir, TomlTable& t, const std::string& key, const std::string& file) {
   const fs::path path = dir / file;
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) t.fail(key, "no case file '" + path.string() + "'");
+  // From any folder: a study's "cases/…" path is looked up in the shipped cases (shipped_files.hpp).
+  if (!fs::is_regular_file(locate_input(path), ec)) t.fail(key, "no case file '" + path.string() + "'");
   return load_stone_case(path.string());
 }
 

@@ -6,6 +6,7 @@
 
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
+#include "tools/io/shipped_files.hpp"
 #include "tools/scene/case_problem.hpp"
 #include "tools/scene/study_keys.hpp"
 
@@ -80,7 +81,8 @@ StudyThrow load_throw(const fs::path& study_dir, TomlTable& t, const std::string
   st.file = t.string(key);
   const fs::path path = study_dir / st.file;
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) t.fail(key, "no case file '" + path.string() + "'");
+  // From any folder: a study's "cases/…" path is looked up in the shipped cases (shipped_files.hpp).
+  if (!fs::is_regular_file(locate_input(path), ec)) t.fail(key, "no case file '" + path.string() + "'");
   const StoneCase c = load_stone_case(path.string());
   if (c.water) t.fail(key, "the stone studies run on still water; '" + path.string() + "' has a [water] table");
   st.case_text = c.text;
@@ -99,9 +101,9 @@ void read_throws(const fs::path& dir, TomlTable t, StoneStudiesOptions& o) {
   if (t.has("flat_drop")) o.flat_drop = load_throw(dir, t, "flat_drop");
   const std::string hard = t.string("hard");
   const int limit = count(t, "hard_limit", 0, 0, 1000);
-  const fs::path hard_dir = dir / hard;
+  const fs::path hard_dir = locate_input(dir / hard);
   std::error_code ec;
-  if (!fs::is_directory(hard_dir, ec)) t.fail("hard", "no folder '" + hard_dir.string() + "'");
+  if (!fs::is_directory(hard_dir, ec)) t.fail("hard", "no folder '" + (dir / hard).string() + "'");
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(hard_dir, ec))
     if (e.path().extension() == ".toml") files.push_back(e.path());
