@@ -4,6 +4,7 @@
 #include <system_error>
 
 #include "tools/io/input_error.hpp"
+#include "tools/io/shipped_files.hpp"
 
 namespace stoneskip {
 
@@ -38,8 +39,11 @@ void refuse_output_over_inputs(const fs::path& output, OutputKind kind, const st
   const fs::path out = resolved(output);
   for (const auto& input : inputs) {
     if (input.empty()) continue;
-    const fs::path in = resolved(input);
-    if (in == out || same_file(output, input))
+    // The file that is read: a "cases/…" name missing here is the shipped case (shipped_files.hpp),
+    // which an output here cannot hold (main blamed `--out .` for a shipped input it did not hold).
+    const fs::path read = locate_input(input);
+    const fs::path in = resolved(read);
+    if (in == out || same_file(output, read))
       throw_input_error(option, 0, "", "'" + output.string() + "' is the input '" + input.string() + "': refusing to overwrite it");
     if (kind == OutputKind::folder && inside(in, out))
       throw_input_error(option, 0, "",

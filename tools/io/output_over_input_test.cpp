@@ -13,6 +13,7 @@
 #include "tools/io/scratch_dir.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/output_over_input.hpp"
+#include "tools/io/shipped_files.hpp"
 
 using namespace stoneskip;
 namespace fs = std::filesystem;
@@ -70,6 +71,27 @@ BOOST_AUTO_TEST_CASE(a_folder_holding_the_input_is_refused_a_sibling_is_not) {
   BOOST_TEST(refusal(s.dir / "sp1" / "other", OutputKind::folder, in).empty());
   // An output file is not a folder: a file named like a parent is simply another name.
   BOOST_TEST(refusal(s.dir / "sp2", OutputKind::file, in).empty());
+}
+
+BOOST_AUTO_TEST_CASE(a_shipped_case_read_from_elsewhere_is_not_in_the_current_folder) {
+  // Oracle: tools/io/shipped_files.hpp — from a folder without cases/, "cases/captures/x.log" is
+  // read from the shipped cases, so an output folder here does not hold it (main refused `--out .`
+  // naming that input as inside "."); where the name exists here it is that file, and is held.
+  Scratch s;
+  const fs::path home = fs::current_path();
+  fs::current_path(s.dir);
+  struct Back {
+    fs::path to;
+    ~Back() { fs::current_path(to); }
+  } back{home};
+  const fs::path shipped = "cases/captures/gentle_sidearm.log";
+  BOOST_REQUIRE(!fs::exists(shipped));
+  BOOST_REQUIRE(!shipped_cases_dir().empty());  // the test binary knows the source tree
+  BOOST_TEST(refusal(".", OutputKind::folder, shipped).empty());
+  BOOST_TEST(refusal("cases", OutputKind::folder, shipped).empty());
+  fs::create_directories("cases/captures");
+  std::ofstream(shipped) << "x\n";
+  BOOST_TEST(!refusal(".", OutputKind::folder, shipped).empty());
 }
 
 BOOST_AUTO_TEST_SUITE_END()
