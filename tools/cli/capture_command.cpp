@@ -47,6 +47,7 @@
 #include "tools/cli/report_render.hpp"
 #include "tools/cli/terminal_progress.hpp"
 #include "tools/io/atomic_file.hpp"
+#include "tools/io/dotted_key.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/foreign_output.hpp"
 #include "tools/io/output_over_input.hpp"
@@ -396,7 +397,21 @@ std::vector<fs::path> inputs_of(const CaptureArgs& a, const StoneCase* c, const 
   return in;
 }
 
+// The throw is the capture's: a --set of the case's [throw] (however its key is written: "throw",
+// '"throw"', " throw ") would be ignored without a word. A malformed key is left to the case loader.
+void refuse_throw_sets(const std::string& command, const std::vector<std::string>& sets) {
+  for (const std::string& set : sets) {
+    const auto eq = assignment_equals(set);
+    std::vector<std::string> parts;
+    if (eq == std::string::npos || !parse_dotted_key(set.substr(0, eq), parts, nullptr) || parts.front() != "throw")
+      continue;
+    throw_input_error("--set " + join_dotted_key(parts), 0, "",
+                      command + " takes the throw from the capture; [throw] keys of the case are not used");
+  }
+}
+
 void validate(const CaptureArgs& a) {
+  refuse_throw_sets("capture validate", a.sets);
   std::optional<StoneCase> c;
   if (!a.no_simulate) c = load_stone_case(a.case_file, a.sets);
   const std::optional<StoneCase> scene = load_scene_case(a);
@@ -529,11 +544,7 @@ void throw_capture(const CaptureArgs& a) {
                        " is not used: the throw is the nominal one, with no ensemble (capture validate draws it)");
   const std::optional<StoneCase> scene = load_scene_case(a);
   if (scene && !a.out.empty()) throw InputError("capture throw: --out is not written with --scene (use capture validate --scene --out DIR for the report)");
-  // The throw is the capture's: a --set of the case's [throw] would be ignored without a word.
-  for (const std::string& set : a.sets)
-    if (set.rfind("throw.", 0) == 0)
-      throw_input_error("--set " + set.substr(0, set.find('=')), 0, "",
-                        "capture throw takes the throw from the capture; [throw] keys of the case are not used");
+  refuse_throw_sets("capture throw", a.sets);
   StoneCase c = load_stone_case(a.case_file, a.sets);
   // The solves are held to the limits of `run` (cases/README.md, Limits) before the capture is read.
   enforce_limits(estimate_run(c, RunSolvers{a.solver != "reference", a.solver != "realtime", !a.out.empty()}), a.limits,

@@ -152,6 +152,14 @@ BOOST_AUTO_TEST_CASE(capture_throw_refuses_a_throw_override_and_a_throw_past_the
   BOOST_TEST(speed.status == 2, speed.out);
   BOOST_TEST(speed.out.find("--set throw.speed_m_s") != std::string::npos, speed.out);
   BOOST_TEST(std::count(speed.out.begin(), speed.out.end(), '\n') == 1, speed.out);
+  // However the key is written (TOML's quoted parts, which --set reads), and by validate too
+  // (main checked the text "throw." and ran these, the override ignored).
+  for (const std::string command : {"capture throw --solver realtime", "capture validate --members 0"})
+    for (const std::string set : {"\"throw\".speed_m_s=100", "'throw'.speed_m_s=100", "throw.\"speed_m_s\"=100"}) {
+      const auto r = stoneskip::test::run_stoneskip(command + " " + file + " --set " + set);
+      BOOST_TEST(r.status == 2, command << " " << set << ": " << r.out);
+      BOOST_TEST(r.out.find("--set throw.speed_m_s: ") != std::string::npos, r.out);
+    }
   const auto heavy = stoneskip::test::run_stoneskip("capture throw " + file + " --solver realtime --set solver.t_max_s=100 --set stone.segments=1000");
   BOOST_TEST(heavy.status == 2, heavy.out);
   BOOST_TEST(heavy.out.find("above the limit") != std::string::npos, heavy.out);

@@ -25,6 +25,7 @@
 #include "tools/cli/limit_options.hpp"
 #include "tools/cli/terminal_progress.hpp"
 #include "tools/io/atomic_file.hpp"
+#include "tools/io/dotted_key.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/foreign_output.hpp"
 #include "tools/io/output_over_input.hpp"
@@ -233,7 +234,7 @@ void compute(const SweepArgs& a, const SweepFile& sweep, const SweepCases& cases
   // load, e.g. a fixed scheme's contact_dt_s), but the axis replaces it, which is said.
   for (std::size_t k = 0; k < sweep.design.axes.size(); ++k)
     for (const std::string& fixed : sweep.base_sets)
-      if (fixed.substr(0, fixed.find('=')) == sweep.design.axes[k].key)
+      if (canonical_dotted_key(fixed.substr(0, assignment_equals(fixed))) == sweep.design.axes[k].key)
         std::fprintf(stderr, "warning: %s:%ld: vary[%zu].key: \"%s\" is also fixed by the top-level set (\"%s\"): the axis's values replace it\n",
                      printable_text(sweep.file).c_str(), sweep.axis_lines[k], k + 1, sweep.design.axes[k].key.c_str(),
                      printable_text(fixed).c_str());

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "tools/io/atomic_file.hpp"
+#include "tools/io/dotted_key.hpp"
 #include "tools/io/edit_distance.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/toml_prescan.hpp"
@@ -177,10 +178,16 @@ std::string toml_string_literal(const std::string& s) {
 
 // Apply "a.b.c=value" to the document. The value is parsed as TOML; if that fails it is a string.
 void apply_override(toml::value& root, const std::string& file, const std::string& assignment) {
-  auto eq = assignment.find('=');
+  const auto eq = assignment_equals(assignment);  // an '=' inside a quoted key part is the key's
   if (eq == std::string::npos || eq == 0)
     throw_input_error(file, 0, "--set " + assignment, "expected section.key=value");
-  std::string path = assignment.substr(0, eq);
+  const std::string key = assignment.substr(0, eq);
+  std::string path = key;  // in messages: the key one way however written ("stone.radius_m")
+  {
+    std::vector<std::string> parts;
+    if (parse_dotted_key(key, parts, nullptr) && assignment.find_first_of("\n\r") == std::string::npos)
+      path = join_dotted_key(parts);
+  }
   std::string raw = assignment.substr(eq + 1);
   // TOML would read the text after a line break as a further line (another key, a table header)
   // or drop it: one --set is one key and one value.
@@ -200,66 +207,19 @@ void apply_override(toml::value& root, const std::string& file, const std::strin
     }
   }
   check_numbers(parsed, path, file, nullptr);
-  set_value(root, file, path, std::move(parsed));
+  set_value(root, file, key, std::move(parsed));
 }
 
 }  // namespace
 
-// A dotted key as TOML writes one (TOML 1.0, "Keys"): bare parts, or parts quoted "…" (escapes as
-// in a basic string) or '…' (literal), joined by dots with optional blanks around them.
-std::vector<std::string> dotted_key_parts(const std::string& file, const std::string& path) {
-  auto fail = [&](const std::string& what) { throw_input_error(file, 0, "--set " + path, what); };
-  std::vector<std::string> parts;
-  std::size_t i = 0;
-  auto blanks = [&] {
-    while (i < path.size() && (path[i] == ' ' || path[i] == '\t')) ++i;
-  };
-  while (true) {
-    blanks();
-    std::string part;
-    if (i < path.size() && (path[i] == '"' || path[i] == '\'')) {
-      const char quote = path[i];
-      std::size_t end = i + 1;
-      while (end < path.size() && path[end] != quote) end += quote == '"' && path[end] == '\\' ? 2 : 1;
-      if (end >= path.size()) fail("a quoted key component has no closing quote");
-      const std::string quoted = path.substr(i, end + 1 - i);
-      if (quote == '"') {
-        try {  // the escapes, read by the TOML parser itself
-          std::istringstream in("k = " + quoted + "\n");
-          part = toml::find<std::string>(toml::parse(in, kSetName), "k");
-        } catch (const std::exception&) {
-          fail("a quoted key component is not a TOML string: " + quoted);
-        }
-      } else {
-        part = quoted.substr(1, quoted.size() - 2);
-      }
-      i = end + 1;
-    } else {
-      const std::size_t start = i;
-      auto bare = [](unsigned char c) { return std::isalnum(c) || c == '_' || c == '-'; };
-      while (i < path.size() && bare(static_cast<unsigned char>(path[i]))) ++i;
-      part = path.substr(start, i - start);
-      if (part.empty())
-        fail(i < path.size() && path[i] != '.'
-                 ? "a bare key component holds only letters, digits, _ and - (quote any other: \"…\")"
-                 : "empty key component");
-    }
-    parts.push_back(part);
-    blanks();
-    if (i == path.size()) return parts;
-    if (path[i] != '.')
-      fail("expected '.' after the key component '" + part +
-           "' (a bare key component holds only letters, digits, _ and -; quote any other: \"…\")");
-    ++i;
-  }
-}
-
 void set_value(toml::value& root, const std::string& file, const std::string& path, toml::value value) {
-  const std::vector<std::string> parts = dotted_key_parts(file, path);
+  std::vector<std::string> parts;
+  std::string why;
+  if (!parse_dotted_key(path, parts, &why)) throw_input_error(file, 0, "--set " + path, why);
   toml::value* node = &root;
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const std::string& part = parts[k];
-    if (!node->is_table()) throw_input_error(file, 0, "--set " + path, "'" + part + "' is not inside a table");
+    if (!node->is_table()) throw_input_error(file, 0, "--set " + join_dotted_key(parts), "'" + part + "' is not inside a table");
     auto& tbl = node->as_table();
     if (k + 1 == parts.size()) {
       tbl[part] = std::move(value);

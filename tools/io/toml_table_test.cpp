@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "tools/io/dotted_key.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/io/toml_prescan.hpp"
 #include "tools/io/toml_table.hpp"
@@ -182,7 +183,10 @@ BOOST_AUTO_TEST_CASE(an_override_key_is_read_as_toml_writes_a_dotted_key) {
              {"t.x y=3", "expected '.' after the key component 'x'"},
              {"t\"x\"=3", "expected '.' after the key component 't'"},
              {"t.\xc3\xa9=3", "a bare key component holds only letters"},
-             {"t.\"\\q\"=3", "not a TOML string"}};
+             {"t.\"\\q\"=3", "not a TOML string"},
+             {"t.\"\"=3", "empty key component"},
+             {"\"\"=3", "empty key component"},
+             {"\"t.x\"=3", "holds a '.'"}};
   for (const auto& b : bad) {
     BOOST_TEST_CONTEXT(b.set) {
       const std::string e = error_of(text, {b.set});
@@ -191,6 +195,16 @@ BOOST_AUTO_TEST_CASE(an_override_key_is_read_as_toml_writes_a_dotted_key) {
       BOOST_TEST(one_line(e), e);
     }
   }
+}
+
+BOOST_AUTO_TEST_CASE(an_equals_sign_in_a_quoted_key_part_belongs_to_the_key) {
+  // Oracle: TOML 1.0 — a quoted key part may hold '='; the value starts after the first '=' outside
+  // quotes. main split at the first '=' and read the key 't."a' (no closing quote).
+  const TomlDocument d = parse_toml_text("[t]\nx = 2.0\n", "hostile.toml", {"t.\"a=b\"=3"});
+  BOOST_TEST(d.top().table("t").number("a=b") == 3.0);
+  BOOST_TEST(canonical_dotted_key(" t . 'x' ") == "t.x");
+  BOOST_TEST(canonical_dotted_key("t.\"é\"") == "t.\"é\"");  // not bare: left as written
+  BOOST_TEST(assignment_equals("t.'a=b'=3") == 7u);
 }
 
 BOOST_AUTO_TEST_CASE(range_messages_print_numbers_as_numbers) {

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "tools/io/atomic_file.hpp"
+#include "tools/io/dotted_key.hpp"
 #include "tools/io/input_error.hpp"
 #include "tools/scene/resource_estimate.hpp"
 
@@ -113,7 +114,7 @@ SweepFile sweep_file_from_text(const std::string& text, const std::string& name)
     tables.emplace_back(&e, name, "vary[" + std::to_string(i + 1) + "]");
     TomlTable& v = tables.back();
     SweepAxis a;
-    a.key = v.string("key");
+    a.key = canonical_dotted_key(v.string("key"));  // "throw . speed_m_s" is throw.speed_m_s (twice is refused)
     s.axis_lines.push_back(line_of(e.as_table().at("key")));
     a.from = v.number("from");
     a.to = v.number("to");

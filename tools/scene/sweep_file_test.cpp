@@ -96,6 +96,17 @@ BOOST_AUTO_TEST_CASE(a_grid_sweep_file_reads_as_written) {
   BOOST_TEST(s.axis_lines == std::vector<long>({6, 11}));
 }
 
+BOOST_AUTO_TEST_CASE(a_key_varied_twice_is_refused_however_it_is_written) {
+  // Oracle: TOML 1.0, "Keys" — 'throw . "speed_m_s"' is the key throw.speed_m_s, which the case
+  // reader sets (--set reads dotted keys); varied twice, the second axis would overwrite the first
+  // at every point. main compared the texts and ran it.
+  const std::string twice = replace(kGrid, "key = \"environment.water_coefficient\"", "key = 'throw . \"speed_m_s\"'");
+  const std::string m = error_of(twice);
+  BOOST_TEST(m.find("vary[2].key: \"throw.speed_m_s\" is varied twice") != std::string::npos, m);
+  const SweepFile s = load_sweep_file(write_sweep(kGrid).string());
+  BOOST_TEST(s.design.axes[0].key == "throw.speed_m_s");
+}
+
 BOOST_AUTO_TEST_CASE(an_override_literal_reads_back_as_the_same_double) {
   // Oracle: the TOML reader on "k = <literal>".
   for (double v : {0.1, 1.0 / 3, 1e-7, 12.0, -0.0, 2.5e20, -7.25, 4.000000000000001}) {
