@@ -53,20 +53,24 @@ bool is_report_folder(const fs::path& dir) {
   }
 }
 
-// The report's folder as named, without "." components or a trailing "/": `--out waves/` is the
-// folder waves, whose work folder is its sibling waves.partial (main put it at waves/.partial,
-// inside the report's own folder, and refused that folder as not empty after all the work). A name
-// ending in "." or ".." names a folder that holds more than the report (the current one, its
-// parent): refused, as is the root.
+// The report's folder as named, without trailing "/" or "/.": `--out waves/` is the folder waves,
+// whose work folder is its sibling waves.partial (main put it at waves/.partial, inside the
+// report's own folder, and refused that folder as not empty after all the work). Only the end is
+// trimmed: a ".." inside the name is left to the file system (after a link it is the link's target's
+// parent, which lexical normalisation would get wrong). A name that ends in ".." or is "." names a
+// folder that holds more than the report (a parent, the current one): refused, as is the root.
 fs::path report_folder_name(const fs::path& given) {
   if (given.empty()) throw_input_error("--out", 0, "", "an output folder is required (got an empty name)");
-  fs::path p = given.lexically_normal();
-  while (p.has_relative_path() && p.filename().empty()) p = p.parent_path();
-  if (!p.has_relative_path() || p.filename() == "." || p.filename() == "..")
+  fs::path p = given;
+  while (p.has_relative_path() && (p.filename().empty() || p.filename() == ".")) p = p.parent_path();
+  const char* what = p.empty() ? "the current folder" : !p.has_relative_path() ? "the root" : p.filename() == ".." ? "a parent folder" : nullptr;
+  if (what)
     throw_input_error(given.string(), 0, "",
-                      "names " + std::string(p.has_relative_path() ? "the current folder or a parent" : "the root") +
-                          ", not a folder of the report's own: give one inside it, such as " +
-                          (p.has_relative_path() ? (p / "report").string() : std::string("/tmp/report")));
+                      std::string("names ") + what + ", not a folder of the report's own: give one inside it, such as " +
+                          (p.empty()                ? fs::path(".") / "report"
+                           : !p.has_relative_path() ? fs::path("/tmp/report")
+                                                    : p / "report")
+                              .string());
   return p;
 }
 

@@ -114,7 +114,7 @@ BOOST_AUTO_TEST_CASE(a_trailing_slash_names_the_folder_and_the_current_folder_is
       BOOST_TEST(!fs::exists(fs::path(out.string() + ".partial")));
     }
   }
-  for (const fs::path& p : {fs::path("."), fs::path("./"), fs::path(".."), fs::path("../"), fs::path("/")}) {
+  for (const fs::path& p : {fs::path("."), fs::path("./"), fs::path(".."), fs::path("../"), fs::path("/"), fs::path("a/.."), fs::path("a/../")}) {
     BOOST_TEST_CONTEXT(p) {
       BOOST_CHECK_THROW(ReportBuild b(options(p)), InputError);
     }

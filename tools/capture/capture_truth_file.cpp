@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "tools/io/input_error.hpp"
+#include "tools/io/shipped_files.hpp"
 #include "tools/io/toml_table.hpp"
 
 namespace stoneskip {
@@ -21,10 +22,13 @@ fs::path capture_truth_file(const fs::path& capture) {
   std::vector<fs::path> names{direct};
   if (capture.has_extension()) names.push_back(capture.parent_path() / (capture.stem().string() + ".truth.toml"));
   for (const fs::path& p : names) {
-    if (fs::is_regular_file(p, ec)) return p;
+    // Beside the capture that is read: a shipped capture named from elsewhere has its truth in the
+    // shipped cases too (shipped_files.hpp). The name as given is returned, and read the same way.
+    const fs::path at = locate_input(p);
+    if (fs::is_regular_file(at, ec)) return p;
     // Something under the truth's name that is no file (a folder, a FIFO, a dangling link) is not
     // passed over in silence: the comparison with the truth would vanish without a word.
-    if (fs::symlink_status(p, ec).type() != fs::file_type::not_found && !ec)
+    if (fs::symlink_status(at, ec).type() != fs::file_type::not_found && !ec)
       throw_input_error(p.string(), 0, "",
                         "is not a regular file (a truth file beside the capture must be one; move it away to read the "
                         "capture without its truth)");

@@ -9,6 +9,8 @@
 #include <sys/stat.h>
 
 #include <cmath>
+#include <filesystem>
+#include <optional>
 #include <string>
 
 #include "tools/io/input_error.hpp"
@@ -66,6 +68,24 @@ BOOST_AUTO_TEST_CASE(a_folder_or_a_fifo_under_the_truths_name_is_said_not_passed
   const auto bare = s.write("c", "10.00 31 00 00 80 80 9a\n");
   s.write("c.truth.toml", kThrow);
   BOOST_TEST(read_capture_truth(bare).has_value());
+}
+
+BOOST_AUTO_TEST_CASE(a_shipped_capture_named_from_elsewhere_keeps_its_truth) {
+  // Oracle: tools/io/shipped_files.hpp — "cases/captures/x.log" missing here is the shipped file,
+  // and so is its truth beside it (cases/captures/hard_sidearm_clipped.log.truth.toml: 9.9 m/s).
+  // main read the capture from the shipped cases but looked for the truth here: the report's
+  // comparison with the truth vanished without a word.
+  ScratchDir s("stoneskip_truth_elsewhere");
+  const std::filesystem::path home = std::filesystem::current_path();
+  std::filesystem::current_path(s.dir);
+  struct Back {
+    std::filesystem::path to;
+    ~Back() { std::filesystem::current_path(to); }
+  } back{home};
+  const std::optional<CaptureTruth> t = read_capture_truth("cases/captures/hard_sidearm_clipped.log");
+  BOOST_REQUIRE(t.has_value());
+  BOOST_TEST(t->speed_m_s == 9.9);
+  BOOST_TEST(t->file == "cases/captures/hard_sidearm_clipped.log.truth.toml");  // the name as given
 }
 
 BOOST_AUTO_TEST_SUITE_END()
