@@ -195,16 +195,22 @@ void release_part(SectionWriter& w, const std::string& key, const Record& c) {
                 fmt(s.number("interval_high_percent"), 3) + " % range**; these intervals are rough (about " +
                 fmt(std::ceil(100 / s.number("interval_low_percent")) + 1) + " re-runs resolve it)."
               : std::string()));
-  if (th.flag("clipped")) {
-    // Raised to the bound: the speed used is then faster than the lever arm's (the same otherwise).
+  if (th.flag("clipped") && !th.has_number("lever_raised_to_bound"))  // written before the speeds were raised
+    w.text("The accelerometer clipped during the swing, so integrating it gives only a lower bound on the speed (" +
+           fmt(th.number("accel_lower_speed_m_s"), 3) + " m/s; " + fmt(th.number("accel_upper_speed_m_s"), 3) +
+           " m/s with every clipped span at " + fmt(s.number("max_accel_g"), 3) +
+           " g). The throw takes the lever-arm velocity (angular rate × lever arm, which the gyro still measures), and "
+           "the speed's interval spans both.");
+  else if (th.flag("clipped")) {
     const Record& ms = th.at("measured");
-    const double used = ms.at("speed_m_s").number("nominal"), lever = ms.at("lever_speed_m_s").number("nominal");
+    const double lever = ms.at("lever_speed_m_s").number("nominal");
+    const bool raised = th.flag("lever_raised_to_bound");
     w.text("The accelerometer clipped during the swing, so integrating it gives only a lower bound on the speed (" +
            fmt(th.number("accel_lower_speed_m_s"), 3) + " m/s; " + fmt(th.number("accel_upper_speed_m_s"), 3) +
            " m/s with every clipped span at " + fmt(s.number("max_accel_g"), 3) +
            " g). The throw takes the lever-arm velocity (angular rate × lever arm, which the gyro still measures)" +
-           (used > lever ? ", here raised to that lower bound, since its speed (" + fmt(lever, 3) + " m/s) falls below it"
-                         : std::string()) +
+           (raised ? ", here raised to that lower bound, since its speed (" + fmt(lever, 3) + " m/s) falls below it"
+                   : std::string()) +
            ". The speed's interval spans the accelerometer's bounds and the re-runs, each re-run's speed raised the "
            "same way to its own bound where slower.");
   }

@@ -126,8 +126,23 @@ BOOST_AUTO_TEST_CASE(a_clipped_throw_is_flagged_and_its_speed_interval_contains_
   BOOST_TEST(a.nominal.measured_speed_m_s == a.accel_lower.accel_speed_m_s, boost::test_tools::tolerance(1e-12));
   const Vec3 used = a.nominal.measured.velocity_m_s.normalized(), lever = a.nominal.lever_velocity_m_s.normalized();
   BOOST_TEST((used - lever).norm() <= 1e-12);
-  BOOST_TEST(a.measured_speed_m_s.low >= 0.95 * a.accel_lower.accel_speed_m_s);
   BOOST_TEST(a.measured_speed_m_s.low > a.lever_speed_m_s.low);
+  // Each member is raised to its own bound (its twin: the same draws, spans as recorded), not the
+  // nominal one: the bounds differ between members (MotionPlus scale ±5 %, noise), and a member
+  // raised is exactly at its own (1e-12: the rescaled vector's norm).
+  double lowest = INFINITY, highest = 0;
+  int raised = 0;
+  for (const ReleaseKinematics& m : a.ensemble) {
+    lowest = std::min(lowest, m.speed_floor_m_s);
+    highest = std::max(highest, m.speed_floor_m_s);
+    if (!m.speed_floored) continue;
+    ++raised;
+    BOOST_TEST(m.measured_speed_m_s == m.speed_floor_m_s, boost::test_tools::tolerance(1e-12));
+    BOOST_TEST(m.lever_speed_m_s < m.speed_floor_m_s);
+  }
+  BOOST_TEST(raised > 0);
+  BOOST_TEST(lowest < a.accel_lower.accel_speed_m_s);
+  BOOST_TEST(highest > a.accel_lower.accel_speed_m_s);
 }
 
 BOOST_AUTO_TEST_CASE(dropped_and_repeated_reports_and_jitter_are_counted_exactly) {

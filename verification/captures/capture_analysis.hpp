@@ -111,6 +111,7 @@ struct ReleaseKinematics {
   double measured_speed_m_s = 0, measured_spin_rev_s = 0;
   double attack_angle_deg = 0, path_angle_deg = 0, roll_angle_deg = 0, spin_rev_s = 0;
   bool speed_floored = false;  // clipped: the lever arm's speed raised to the accelerometer's lower bound
+  double speed_floor_m_s = 0;  // clipped: that bound (the run's own: a member's twin, spans as recorded)
   bool finite() const;
 };
 

@@ -222,7 +222,9 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
       }
       if (!any) at_end[k][nearest] = true;
     }
-    std::mt19937_64 gyro_stream(p.seed ^ 0x9e3779b97f4a7c15ULL);
+    // The member's seed mixed with 2^64/φ (SplitMix64's increment): a stream apart from the member's.
+    constexpr std::uint64_t kMotionPlusStream = 0x9e3779b97f4a7c15ULL;
+    std::mt19937_64 gyro_stream(p.seed ^ kMotionPlusStream);
     fill_spans(p.gyro_fill, [&](std::size_t k, int i) { return at_end[k][i]; }, in.rate_deg_s, o.max_rate_deg_s, w,
                gyro_stream);
   }
@@ -321,10 +323,15 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
   // Clipped: the lever arm's velocity, but not slower than the accelerometer shows even with its
   // clipped spans as recorded (the lever arm misses the pivot's own motion, so it can fall below
   // that bound; the direction stays the lever arm's).
-  const double lever_speed = v_lever.norm();
-  const bool floored = in.use_lever && lever_speed > 0 && lever_speed < in.speed_floor_m_s;
-  const Vec3 v_used = !in.use_lever ? v_accel : floored ? Vec3(v_lever * (in.speed_floor_m_s / lever_speed)) : v_lever;
+  // A lever arm with no speed (a rate along it, or none) has no direction: the accelerometer's.
+  const double lever_speed = v_lever.norm(), accel_speed = v_accel.norm();
+  const bool floored = in.use_lever && lever_speed < in.speed_floor_m_s && (lever_speed > 0 || accel_speed > 0);
+  const Vec3 v_used = !in.use_lever ? v_accel
+                      : !floored    ? v_lever
+                      : lever_speed > 0 ? Vec3(v_lever * (in.speed_floor_m_s / lever_speed))
+                                        : Vec3(v_accel * (in.speed_floor_m_s / accel_speed));
   r.speed_floored = floored;
+  r.speed_floor_m_s = in.use_lever ? in.speed_floor_m_s : 0.0;
   // 6. Turn the heading so the horizontal velocity points along +x.
   const double psi = std::hypot(v_used.x(), v_used.y()) > 1e-9 ? std::atan2(v_used.y(), v_used.x()) : 0.0;
   const Mat3 turn = Eigen::AngleAxisd(-psi, Vec3::UnitZ()).toRotationMatrix();

@@ -170,6 +170,9 @@ Record throw_findings(const CaptureAnalysis& a, const CaptureSimulation& sim) {
   r.set("speed_difference_m_s", a.speed_difference_m_s);
   r.set("accel_lower_speed_m_s", a.accel_lower.accel_speed_m_s);
   r.set("accel_upper_speed_m_s", a.accel_upper.accel_speed_m_s);
+  // Clipped: whether the lever arm's speed was raised to the accelerometer's lower bound (absent in
+  // data written before the speeds were raised: the page then describes the older method).
+  if (a.clipped) r.set("lever_raised_to_bound", a.nominal.speed_floored);
   r.set("roll_angle_deg", n.roll_angle_deg);
   Record& v = r.child("virtual");
   put_interval(v, "speed_m_s", a.speed_m_s);
