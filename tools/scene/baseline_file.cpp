@@ -278,6 +278,12 @@ std::string baseline_text(const BounceBaseline& b, const BounceSweepResult& r, c
   s << "threshold_hi = " << array(hi, num) << "\n";
   s << "threshold_count_below = " << array(below, [](double c) { return std::to_string(static_cast<int>(c)); }) << "\n";
   s << "threshold_count_above = " << array(above, [](double c) { return std::to_string(static_cast<int>(c)); }) << "\n";
+  // A change whose bisection stopped at a failed run is held like the others (its bracket's middle
+  // within compare_tolerance), but it was not located: said here, where a reader of the file looks.
+  for (std::size_t i = 0; i < r.thresholds.size(); ++i)
+    if (const CountThreshold& t = r.thresholds[i]; !t.bisected && !std::isnan(t.failed_at))
+      s << "# threshold " << i + 1 << " (" << t.count_below << " -> " << t.count_above
+        << "): not located, its bisection stopped at a failed run at " << num(t.failed_at) << "\n";
   return s.str();
 }
 

@@ -78,7 +78,7 @@ struct Counter {
 
 }  // namespace
 
-void bisect_threshold(CountThreshold& t, double tolerance, const std::function<int(double)>& count) {
+CountThreshold bisect_threshold(CountThreshold t, double tolerance, const std::function<int(double)>& count) {
   while (t.hi - t.lo > tolerance) {
     const double mid = t.lo + 0.5 * (t.hi - t.lo);
     // No double strictly between the ends (a tolerance below the values' spacing, e.g. 1e-300):
@@ -87,7 +87,7 @@ void bisect_threshold(CountThreshold& t, double tolerance, const std::function<i
     const int n = count(mid);
     if (n < 0) {  // a failed run is no count: it cannot say on which side of it the change lies
       t.failed_at = mid;
-      return;
+      return t;
     }
     if (n == t.count_below) {
       t.lo = mid;
@@ -97,6 +97,7 @@ void bisect_threshold(CountThreshold& t, double tolerance, const std::function<i
     }
   }
   t.bisected = true;
+  return t;
 }
 
 std::vector<BounceSweepResult> run_bounce_sweeps(const std::vector<BounceSweepSpec>& specs,
@@ -135,8 +136,9 @@ std::vector<BounceSweepResult> run_bounce_sweeps(const std::vector<BounceSweepSp
     }
     for (std::size_t j = 0; j < out[k].thresholds.size() && static_cast<int>(j) < specs[k].max_thresholds; ++j)
       bisect_jobs.push_back([&, k, j] {
-        bisect_threshold(out[k].thresholds[j], specs[k].threshold_tolerance,
-                         [&](double x) { return counters[k]->count(specs[k], x, nullptr); });
+        CountThreshold& t = out[k].thresholds[j];
+        t = bisect_threshold(t, specs[k].threshold_tolerance,
+                             [&](double x) { return counters[k]->count(specs[k], x, nullptr); });
       });
   }
   ParallelOptions bis = options;

@@ -55,11 +55,11 @@ struct BounceSweepResult {
   double cpu_s = 0;                 // summed over the runs
 };
 
-// Narrows t's bracket [lo, hi] (count_below at lo, count_above at hi) by halving until it is no
-// wider than `tolerance` or no double lies strictly between its ends; count(x) is the bounce count
-// at x, < 0 where the run fails. A failed run stops it (failed_at; bisected stays false), else
-// bisected is set. count_above becomes the count just above the change.
-void bisect_threshold(CountThreshold& t, double tolerance, const std::function<int(double)>& count);
+// The change bracketed by `grid` ([lo, hi], count_below at lo, count_above at hi) narrowed by
+// halving until no wider than `tolerance` or no double lies strictly between its ends; count(x) is
+// the bounce count at x, < 0 where the run fails. A failed run stops it (failed_at; bisected stays
+// false), else bisected is set. count_above is then the count just above the change.
+CountThreshold bisect_threshold(CountThreshold grid, double tolerance, const std::function<int(double)>& count);
 
 // Runs every sweep's grid, then every bisection, sharing the workers.
 std::vector<BounceSweepResult> run_bounce_sweeps(const std::vector<BounceSweepSpec>& specs,

@@ -79,12 +79,12 @@ BOOST_AUTO_TEST_CASE(a_failed_run_stops_the_bisection_and_leaves_the_change_unlo
   // 7.5 (3), 6.25 (3), 5.625 (1), 5.9375 (fails): the stones report had listed the failure as a
   // change "1→failed", located to the tolerance, where a failed run says nothing of the change.
   auto count = [](double x) { return x >= 5.9 && x < 6.0 ? -1 : x < 5.8 ? 1 : 3; };
-  CountThreshold t;
-  t.lo = 5.0;
-  t.hi = 10.0;
-  t.count_below = 1;
-  t.count_above = t.count_at_cell_end = 3;
-  bisect_threshold(t, 0.25, count);
+  CountThreshold grid;
+  grid.lo = 5.0;
+  grid.hi = 10.0;
+  grid.count_below = 1;
+  grid.count_above = grid.count_at_cell_end = 3;
+  const CountThreshold t = bisect_threshold(grid, 0.25, count);
   BOOST_TEST(!t.bisected);
   BOOST_TEST(t.failed_at == 5.9375);
   BOOST_TEST(t.lo == 5.625);  // the last bracket whose ends both have counts
@@ -92,11 +92,7 @@ BOOST_AUTO_TEST_CASE(a_failed_run_stops_the_bisection_and_leaves_the_change_unlo
   BOOST_TEST(t.count_above == 3);
   BOOST_TEST(!t.more_in_cell());
   // Without the failing region the same bracket is located: [5.78125, 5.9375], 1 → 3.
-  CountThreshold u = t;
-  u.lo = 5.0;
-  u.hi = 10.0;
-  u.failed_at = NAN;
-  bisect_threshold(u, 0.25, [](double x) { return x < 5.8 ? 1 : 3; });
+  const CountThreshold u = bisect_threshold(grid, 0.25, [](double x) { return x < 5.8 ? 1 : 3; });
   BOOST_TEST(u.bisected);
   BOOST_TEST(std::isnan(u.failed_at));
   BOOST_TEST(u.lo == 5.78125);

@@ -104,7 +104,8 @@ void compare_solvers(Record& parent, const std::vector<const BounceSweepResult*>
           " bisected changes of the reference count lie within two bisection tolerances of a grid value" +
           (sensitive ? ": the count changes as soon as the parameter moves off the grid value" : "") +
           (unlocated > 0 ? "; " + std::to_string(unlocated) +
-                               " changes were not located (not bisected, or more in a grid cell than the one bisected)"
+                               " changes were not located (not bisected, bisection stopped at a failed run, or more in a grid "
+                               "cell than the one bisected)"
                          : ""));
 }
 

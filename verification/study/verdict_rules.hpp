@@ -17,8 +17,9 @@
 //   work_gain            gain, material_gain → not established | no other stencil is materially faster |
 //                        another stencil is faster
 //   minimum_ratio        ratio, required → not measured | error control works | error control falls short
-//   thresholds_near_grid near_grid, bisected, unlocated (changes not bisected plus grid cells holding
-//                        more changes than the one bisected; absent in older data: taken as 0) →
+//   thresholds_near_grid near_grid, bisected, unlocated (changes not bisected or whose bisection
+//                        stopped at a failed run, plus grid cells holding more changes than the one
+//                        bisected; absent in older data: taken as 0) →
 //                        too few thresholds to tell (bisected < 3) | sensitive dependence (half or
 //                        more of the bisected within two tolerances of a grid value) | not all
 //                        changes located (unlocated > 0) | clean steps
