@@ -76,12 +76,7 @@ BOOST_AUTO_TEST_CASE(a_shipped_capture_named_from_elsewhere_keeps_its_truth) {
   // main read the capture from the shipped cases but looked for the truth here: the report's
   // comparison with the truth vanished without a word.
   ScratchDir s("stoneskip_truth_elsewhere");
-  const std::filesystem::path home = std::filesystem::current_path();
-  std::filesystem::current_path(s.dir);
-  struct Back {
-    std::filesystem::path to;
-    ~Back() { std::filesystem::current_path(to); }
-  } back{home};
+  WorkingFolder there(s.dir);
   const std::optional<CaptureTruth> t = read_capture_truth("cases/captures/hard_sidearm_clipped.log");
   BOOST_REQUIRE(t.has_value());
   BOOST_TEST(t->speed_m_s == 9.9);

@@ -75,7 +75,7 @@ void finish_report(ReportBuild& build, const Record& root, const std::filesystem
   const std::filesystem::path work = build.assemble(root);
   const auto [drawn, figures] = render_folder(work);
   build.commit();
-  std::printf("report: %s/index.md, %d of %zu figures drawn%s\n", out_dir.c_str(), drawn, figures,
+  std::printf("report: %s, %d of %zu figures drawn%s\n", (out_dir / "index.md").c_str(), drawn, figures,
               build.resumed_sections() > 0
                   ? (" (" + std::to_string(build.resumed_sections()) + " sections resumed from an earlier run)").c_str()
                   : "");

@@ -24,7 +24,7 @@ void render(std::string dir) {
   if (::lstat(dir.c_str(), &st) == 0 && S_ISLNK(st.st_mode))
     throw_input_error(dir, 0, "", "is a link: stoneskip does not write through links (render the folder it points to)");
   const auto [drawn, figures] = render_folder(dir, true);
-  std::printf("rendered %s/index.md, %d of %zu figures drawn\n", dir.c_str(), drawn, figures);
+  std::printf("rendered %s, %d of %zu figures drawn\n", (std::filesystem::path(dir) / "index.md").c_str(), drawn, figures);
 }
 
 void add_report_render(CLI::App& report) {

@@ -78,12 +78,7 @@ BOOST_AUTO_TEST_CASE(a_shipped_case_read_from_elsewhere_is_not_in_the_current_fo
   // read from the shipped cases, so an output folder here does not hold it (main refused `--out .`
   // naming that input as inside "."); where the name exists here it is that file, and is held.
   Scratch s;
-  const fs::path home = fs::current_path();
-  fs::current_path(s.dir);
-  struct Back {
-    fs::path to;
-    ~Back() { fs::current_path(to); }
-  } back{home};
+  WorkingFolder there(s.dir);
   const fs::path shipped = "cases/captures/gentle_sidearm.log";
   BOOST_REQUIRE(!fs::exists(shipped));
   BOOST_REQUIRE(!shipped_cases_dir().empty());  // the test binary knows the source tree

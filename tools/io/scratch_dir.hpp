@@ -32,4 +32,22 @@ class ScratchDir {
   const std::filesystem::path dir;
 };
 
+// Runs a test from another folder (a command started elsewhere): the working folder is `to` while
+// this lives, and what it was before afterwards.
+class WorkingFolder {
+ public:
+  explicit WorkingFolder(const std::filesystem::path& to) : back_(std::filesystem::current_path()) {
+    std::filesystem::current_path(to);
+  }
+  ~WorkingFolder() {
+    std::error_code ec;
+    std::filesystem::current_path(back_, ec);
+  }
+  WorkingFolder(const WorkingFolder&) = delete;
+  WorkingFolder& operator=(const WorkingFolder&) = delete;
+
+ private:
+  std::filesystem::path back_;
+};
+
 }  // namespace stoneskip

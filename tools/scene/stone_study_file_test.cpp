@@ -38,12 +38,7 @@ BOOST_AUTO_TEST_CASE(the_shipped_study_files_load_from_a_folder_outside_the_sour
   // the lookup, so `report stones` and `report scene` failed outside the source folder ("no case
   // file"), while `report waves` ran.
   ScratchDir elsewhere("study_from_anywhere");
-  const std::filesystem::path home = std::filesystem::current_path();
-  std::filesystem::current_path(elsewhere.dir);
-  struct Back {
-    std::filesystem::path to;
-    ~Back() { std::filesystem::current_path(to); }
-  } back{home};
+  WorkingFolder there(elsewhere.dir);
   BOOST_REQUIRE(!std::filesystem::exists("cases"));
   for (const char* f : {"cases/studies/stones.toml", "cases/studies/stones_quick.toml"})
     BOOST_CHECK_NO_THROW(load_stone_study_file(f));
