@@ -29,9 +29,6 @@ std::string who(const Record& s) { return s.text("convention") + ", " + (s.text(
 
 std::string count_text(double c) { return c < 0 ? std::string("failed") : fmt(c); }
 
-// Data written before bisection stopped at a failed run has no failed_at column.
-bool has_failed_at(const Table& th) { return std::find(th.columns.begin(), th.columns.end(), "failed_at") != th.columns.end(); }
-
 // The stored runs of one bounce-count sweep as (parameter, count) points in order: the grid's counts,
 // both ends of every bracket of its thresholds (bisected or not) and the run that stopped a
 // bisection, a failed run as a count < 0.
@@ -46,7 +43,7 @@ std::vector<std::pair<double, double>> count_points(const Record& s) {
     pts.emplace_back(lo[i], below[i]);
     pts.emplace_back(hi[i], above[i]);
   }
-  if (has_failed_at(th))  // the failed run that stopped a bisection, inside its bracket
+  if (th.has_column("failed_at"))  // the run that stopped a bisection (absent in older data)
     for (double x : th.column("failed_at"))
       if (!std::isnan(x)) pts.emplace_back(x, -1.0);
   std::stable_sort(pts.begin(), pts.end(), [](const auto& p, const auto& q) { return p.first < q.first; });
@@ -80,7 +77,7 @@ std::vector<PlotSeries> count_curve(const Record& s, const std::string& title, c
   outline.derived->kind = DerivedSeries::Kind::outline;  // through `dots`, the next series (of_offset 1)
   PlotSeries dots{"", {}, {}, "points pt 7 ps 0.5" + colour, sources(Rows::y_nonnegative, kNaN), {}};
   PlotSeries failed{title + ": solve failed", {}, {}, "points pt 2 ps 1.6 lw 2" + colour, sources(Rows::y_negative, -1), {}};
-  if (has_failed_at(s.table("thresholds"))) {
+  if (s.table("thresholds").has_column("failed_at")) {
     TableSource stopped;  // rows without one have failed_at NaN: not drawn
     stopped.table = th;
     stopped.x_column = "failed_at";
@@ -176,7 +173,7 @@ SectionOutput sweeps_section(const Record& c, const Record& fig9) {
       std::ostringstream txt;
       for (std::size_t i = 0; i < t.rows(); ++i) {
         const double lo = t.column("lo")[i], hi = t.column("hi")[i];
-        const bool stopped = has_failed_at(t) && !std::isnan(t.column("failed_at")[i]);
+        const bool stopped = t.has_column("failed_at") && !std::isnan(t.column("failed_at")[i]);
         const std::string change = count_text(t.column("count_below")[i]) + "→" + count_text(t.column("count_above")[i]);
         txt << (i ? "; " : "") << fmt(0.5 * (lo + hi), 4)
             << (t.column("bisected")[i] != 0 ? " ± " + fmt(0.5 * (hi - lo), 2) + " (" + change + ")"
@@ -184,7 +181,7 @@ SectionOutput sweeps_section(const Record& c, const Record& fig9) {
                                 "failed run, " + fmt(t.column("failed_at")[i], 4) + ")"
                           : " (not bisected) (" + change + ")");
         // Bisection follows one change per grid cell; a cell whose far end has another count holds more.
-        if (std::find(t.columns.begin(), t.columns.end(), "count_at_cell_end") != t.columns.end() &&
+        if (t.has_column("count_at_cell_end") &&
             t.column("bisected")[i] != 0 && t.column("count_at_cell_end")[i] != t.column("count_above")[i]) {
           double end = hi;  // the grid value that closes the cell: the smallest at or above hi
           for (double v : s.table("counts").column("value"))

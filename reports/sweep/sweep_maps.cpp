@@ -424,7 +424,7 @@ std::vector<Figure> sweep_map_figures(const SweepData& d, const SweepMapOptions&
     }
   for (auto c = o.columns.begin(); c != o.columns.end(); ++c) {
     const std::string& column = *c;
-    if (std::find(d.throws.columns.begin(), d.throws.columns.end(), column) == d.throws.columns.end())
+    if (!d.throws.has_column(column))
       throw_input_error(column, 0, "", "no such column in the sweep's table (the columns are listed in its /throws)");
     // A column mapped twice would write its figures twice under the same names.
     if (std::find(o.columns.begin(), c, column) != c)

@@ -15,10 +15,6 @@ namespace stoneskip {
 
 namespace {
 
-bool has_column(const Table& t, const std::string& c) {
-  return std::find(t.columns.begin(), t.columns.end(), c) != t.columns.end();
-}
-
 struct Stats {
   std::size_t n = 0;
   double mean = NAN, min = NAN, max = NAN, median = NAN, sum = 0;
@@ -104,7 +100,7 @@ std::string sweep_markdown(const SweepData& d, const std::vector<Figure>& figure
   for (const auto& s : solver_names(d.solvers)) parts.emplace_back(s + " solve (wall)", "cost_" + s + "_wall_s");
   double solves = 0, setup = 0;
   for (const auto& [label, column] : parts) {
-    if (!has_column(t, column)) continue;
+    if (!t.has_column(column)) continue;
     const Stats c = stats_of(t.column(column));
     (column == "cost_setup_wall_s" ? setup : solves) += c.sum;
     cost.row({label, fmt(1e3 * c.mean, 3), fmt(1e3 * c.median, 3), fmt(1e3 * c.max, 3),

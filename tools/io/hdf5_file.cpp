@@ -1,5 +1,6 @@
 #include "tools/io/hdf5_file.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <stdexcept>
@@ -154,6 +155,10 @@ H5Id& H5Id::operator=(H5Id&& o) noexcept {
 void Table::add_row(const std::vector<double>& row) {
   if (row.size() != columns.size()) throw std::invalid_argument("Table::add_row: wrong column count");
   values.insert(values.end(), row.begin(), row.end());
+}
+
+bool Table::has_column(const std::string& name) const {
+  return std::find(columns.begin(), columns.end(), name) != columns.end();
 }
 
 std::vector<double> Table::column(const std::string& name) const {

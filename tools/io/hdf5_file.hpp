@@ -48,6 +48,7 @@ struct Table {
   std::size_t rows() const { return columns.empty() ? 0 : values.size() / columns.size(); }
   void add_row(const std::vector<double>& row);
   std::vector<double> column(const std::string& name) const;  // throws std::out_of_range
+  bool has_column(const std::string& name) const;  // data written by an older version may lack one
   // The unit of column c: units[c] when given and not empty, else column_unit(columns[c]).
   std::string unit(std::size_t c) const;
 };

@@ -47,7 +47,7 @@ class Checker {
     if (!(std::isfinite(x) && x >= 0)) fail(what + " is " + text_of(x) + ", not a finite value ≥ 0");
   }
   std::vector<double> column(const Table& t, const std::string& table, const std::string& name) const {
-    if (std::find(t.columns.begin(), t.columns.end(), name) == t.columns.end())
+    if (!t.has_column(name))
       fail("table '" + table + "' has no column '" + name + "'");
     return t.column(name);
   }
