@@ -15,6 +15,7 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <system_error>
 
 #include "tools/cli/test_support.hpp"
 
@@ -28,11 +29,20 @@ struct Run {
   std::string err;
 };
 
+fs::path scratch_path() { return fs::temp_directory_path() / ("stoneskip_regress_" + std::to_string(::getpid())); }
+
 fs::path scratch_dir() {
-  const fs::path dir = fs::temp_directory_path() / ("stoneskip_regress_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
+  fs::create_directories(scratch_path());
+  return scratch_path();
 }
+
+// The suite's copies go when it ends (they were left in TMP, one folder per run).
+struct RemoveScratch {
+  ~RemoveScratch() {
+    std::error_code ec;
+    fs::remove_all(scratch_path(), ec);
+  }
+};
 
 std::string slurp(const fs::path& p) {
   std::ifstream f(p);
@@ -60,7 +70,7 @@ constexpr const char* kStored = "cases/baselines/spin_paper_realtime.toml";
 
 }  // namespace
 
-BOOST_AUTO_TEST_SUITE(regress_command)
+BOOST_AUTO_TEST_SUITE(regress_command, *boost::unit_test::fixture<RemoveScratch>())
 
 BOOST_AUTO_TEST_CASE(stored_baselines_pass) {
   // Oracle: the stored curves, made by `stoneskip regress --update` from the same settings.

@@ -19,12 +19,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The folder of the test's sweep files, and the shipped paper throw as their base.
-fs::path dir() {
-  const fs::path d = fs::temp_directory_path() / ("stoneskip_sweepfile_" + std::to_string(::getpid()));
-  fs::create_directories(d / "sweeps");
-  return d;
-}
+// The folder of the test's sweep files, and the shipped paper throw as their base. Only named
+// here: it is made when a file is first written, so that a run of this binary that skips the suite
+// (which then never removes it) leaves nothing behind.
+fs::path dir() { return fs::temp_directory_path() / ("stoneskip_sweepfile_" + std::to_string(::getpid())); }
 
 // The suite's files go when it ends.
 struct RemoveScratch {
@@ -38,6 +36,7 @@ const fs::path kBase = fs::absolute("cases/paper_8ms_spin.toml");
 
 fs::path write_sweep(const std::string& text) {
   const fs::path p = dir() / "sweeps" / "s.toml";
+  fs::create_directories(p.parent_path());
   std::ofstream(p) << text;
   return p;
 }
