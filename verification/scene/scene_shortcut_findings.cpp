@@ -8,6 +8,7 @@
 
 #include "verification/scene/scene_findings_support.hpp"
 #include "verification/scene/scene_probe.hpp"
+#include "verification/scene/scene_shortcut_variants.hpp"
 #include "verification/study/order_record.hpp"
 #include "verification/study/verdict_rules.hpp"
 #include "verification/study/words.hpp"
@@ -26,49 +27,7 @@ Record scene_shortcuts_findings(const SceneStudiesOptions& o, const ProgressFact
   base.water->field.mode = StepMode::full;
   base.water->field.precision = Precision::float64;
   base.water->field.threads = 1;
-  struct Variant {
-    std::string key, what;
-    SceneOptions reference, shortcut;
-  };
-  std::vector<Variant> v;
-  {
-    SceneOptions one = base, none = base;
-    one.coupling = Coupling::one_way;
-    none.coupling = Coupling::none;
-    v.push_back({"no_field", "no field at all (coupling none) against one-way on the still pond", one, none});
-  }
-  {
-    SceneOptions t = base;
-    t.water->field.mode = StepMode::active_tiles;
-    t.water->field.tiles.tile_cells = so.tile_cells;
-    t.water->field.tiles.epsilon_m = 0;
-    v.push_back({"tiles_eps_0", "active tiles, ε = 0", base, t});
-    for (std::size_t k = 0; k < so.epsilons_m.size(); ++k) {
-      t.water->field.tiles.epsilon_m = so.epsilons_m[k];
-      v.push_back({"tiles_eps_" + std::to_string(k + 1), "active tiles, ε = " + num(so.epsilons_m[k], 2) + " m", base, t});
-    }
-  }
-  {
-    SceneOptions f = base;
-    f.water->field.precision = Precision::float32;
-    v.push_back({"float32", "float32 heights", base, f});
-  }
-  {
-    // The draught's samples matter to the displacement forcing only (the pressure forcing gathers
-    // at every stone step): that forcing with one sample against K.
-    SceneOptions kk = base, k1 = base;
-    kk.forcing = k1.forcing = Forcing::displacement;
-    k1.draught_samples = 1;
-    v.push_back({"one_sample", "displacement forcing: one draught sample per water step (the spec's point sample) against " +
-                                   std::to_string(base.draught_samples), kk, k1});
-  }
-  {
-    SceneOptions everywhere = base;
-    everywhere.stone_steps.dt_s = everywhere.stone_steps.contact_dt_s;
-    v.push_back({"contact_step_near_water", "the contact step only near the water (" + num(base.stone_steps.dt_s, 2) + " s in flight) against " +
-                                                num(base.stone_steps.contact_dt_s, 2) + " s everywhere",
-                 everywhere, base});
-  }
+  const std::vector<ShortcutVariant> v = scene_shortcut_variants(base, so);
   Record out;
   out.set("case", c.name);
   out.set("title", c.title);
@@ -82,8 +41,7 @@ Record scene_shortcuts_findings(const SceneStudiesOptions& o, const ProgressFact
   // The base is the reference of most variants: run it once.
   const ProbedScene base_run = run_probed(base, so.checkpoint_every, so.repeats);
   for (const auto& x : v) {
-    const bool same_ref = x.key != "no_field" && x.key != "contact_step_near_water";
-    const ProbedScene ref = same_ref ? base_run : run_probed(x.reference, so.checkpoint_every, so.repeats);
+    const ProbedScene ref = x.reference ? run_probed(*x.reference, so.checkpoint_every, so.repeats) : base_run;
     const ProbedScene cut = run_probed(x.shortcut, so.checkpoint_every, so.repeats);
     const SceneDifference d = compare_scenes(ref, cut);
     Record& r = out.child(x.key);
