@@ -468,8 +468,10 @@ std::optional<Figure> capture_bounce_figure(const std::string& key, const Record
   if (!sim.has_child("ensemble")) return std::nullopt;
   const Record& e = sim.at("ensemble");
   Figure f = make(key, "bounce_distribution",
-                  "Bounce counts of the throws drawn from the capture's intervals (real-time model), with the nominal "
-                  "throw's counts",
+                  std::string("Bounce counts of the capture's ensemble (real-time model), with the nominal throw's counts") +
+                      (e.has_table("bound_corners")
+                           ? " and those of the nominal throw at the corners of the clipped accelerometer's speed and height bounds"
+                           : ""),
                   900, 560);
   const Table& h = e.table("histogram");
   add_copy(f, "histogram", e, "histogram", {});
@@ -488,6 +490,19 @@ std::optional<Figure> capture_bounce_figure(const std::string& key, const Record
     arrows += "set arrow from " + g(b + shift) + ", graph 0 to " + g(b + shift) + ", graph 0.85 nohead lw 3 dt 2 lc rgb '" +
               colour + "' front\n";
     marks += ", keyentry w l lw 3 dt 2 lc rgb '" + std::string(colour) + "' t " + gnuplot_quote(title);
+  }
+  // Clipped: the nominal throw at the corners of the accelerometer's bounds (each distinct count once).
+  if (e.has_table("bound_corners")) {
+    std::vector<double> seen;
+    for (const double b : e.table("bound_corners").column("bounces_realtime")) {
+      if (!std::isfinite(b) || std::find(seen.begin(), seen.end(), b) != seen.end()) continue;
+      seen.push_back(b);
+      lo = std::min(lo, b);
+      hi = std::max(hi, b);
+      arrows += "set arrow from " + g(b) + ", graph 0 to " + g(b) + ", graph 0.6 nohead lw 3 dt 3 lc rgb '" + kAxis[1] + "' front\n";
+    }
+    if (!seen.empty())
+      marks += ", keyentry w l lw 3 dt 3 lc rgb '" + std::string(kAxis[1]) + "' t 'nominal throw at the corners of the speed and height bounds'";
   }
   std::ostringstream s;
   s << "set grid y\nset key below\nset xlabel 'bounces'\nset ylabel 'throws of the ensemble'\nset xtics 1\n"

@@ -312,9 +312,16 @@ void solvers_part(SectionWriter& w, const std::string& key, const Record& c) {
   add_figure(w, capture_trajectory_figure(key, c));
   if (sim.has_child("ensemble")) {
     const Record& e = sim.at("ensemble");
+    // Clipped captures since the bounds' corners were run: the corners too (older data has none).
+    const bool corners = e.has_table("bound_corners");
     w.text("The ensemble: the " + fmt(e.number("members")) +
-           " throws drawn from the capture's intervals, through the real-time model (" + fmt(e.number("cpu_s"), 3) +
-           " s CPU, " + fmt(e.number("wall_s"), 3) + " s wall). Their spread is what the recording cannot decide.");
+           " releases of the capture's ensemble (each re-estimated with random noise, biases, gyro scale, lever arm, height "
+           "and release time, clipped spans filled at random)" +
+           (corners ? std::string(" and the nominal throw at the four corners of the speed and height bounds that the clipped "
+                                  "accelerometer sets (which no member need reach)")
+                    : std::string()) +
+           ", through the real-time model (" + fmt(e.number("cpu_s"), 3) + " s CPU, " + fmt(e.number("wall_s"), 3) +
+           " s wall). Their spread is what the recording cannot decide.");
     w.verdict("Bounce count", e.at("spread"));
     add_figure(w, capture_bounce_figure(key, c));
   }

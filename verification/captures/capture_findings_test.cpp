@@ -258,6 +258,72 @@ BOOST_AUTO_TEST_CASE(simulate_capture_marks_a_failed_member_and_keeps_it_out_of_
   BOOST_TEST(sim.bounces_high == -1);
 }
 
+BOOST_AUTO_TEST_CASE(a_count_that_the_clipped_bounds_allow_undecides_the_capture) {
+  // Oracle: the rule bounce_spread — a clipped accelerometer only bounds the speed and the rise, so
+  // the members (which need not reach the bounds) decide nothing the bounds' corners contradict.
+  // Every member makes 0 bounces: decided when the corners make 0 too, not decided when one corner
+  // makes 1, and not decided when a corner's run failed.
+  CaptureAnalysis a = small_analysis();
+  a.clipped = true;
+  judge_capture(a, a.options.rules);
+  CaptureSimulation sim = one_bounce_each();
+  sim.ensemble_bounces = {0, 0, 0};
+  sim.bounce_histogram = {{0, 3}};
+  sim.bounces_low = sim.bounces_median = sim.bounces_high = 0;
+  sim.corners = {{8.5, 0.21, 0}, {8.5, 0.39, 0}, {9.75, 0.21, 0}, {9.75, 0.39, 0}};
+  auto spread = [&](const CaptureSimulation& s) {
+    const Record r = capture_findings(a, s, {"cases/x.toml", "prism", "physical", "newtonian"});
+    BOOST_TEST(contradicted_verdicts(r).empty());
+    return r.at("simulation").at("ensemble");
+  };
+  const Record decided = spread(sim);
+  BOOST_TEST(decided.at("spread").text("verdict") == "decided by the capture");
+  BOOST_TEST(decided.table("bound_corners").column("speed_m_s") == (std::vector<double>{8.5, 8.5, 9.75, 9.75}),
+             boost::test_tools::per_element());
+  BOOST_TEST(decided.at("spread").text("reason").find("(8.5 to 9.75 m/s)") != std::string::npos, decided.at("spread").text("reason"));
+  sim.corners[3].bounces = 1;
+  const Record undecided = spread(sim);
+  BOOST_TEST(undecided.at("spread").text("verdict") == "not decided by the capture");
+  BOOST_TEST(undecided.at("spread").text("reason").find("makes 0 to 1 bounce") != std::string::npos,
+             undecided.at("spread").text("reason"));
+  sim.corners[3].bounces = -1;
+  BOOST_TEST(spread(sim).at("spread").text("verdict") == "not decided: runs failed");
+}
+
+BOOST_AUTO_TEST_CASE(simulate_capture_runs_a_clipped_captures_nominal_throw_at_its_bounds_corners) {
+  // Oracle: the nominal release scaled to each speed bound (same direction) at each height bound,
+  // run alone by run_realtime with the same options. An unclipped capture has no corners.
+  CaptureAnalysis a = small_analysis();
+  a.nominal.velocity_m_s = Vec3(8, 0, -1.4);
+  a.nominal.height_m = 0.1;
+  a.ensemble.assign(1, a.nominal);
+  a.speed_m_s = {a.nominal.velocity_m_s.norm(), 5.0, 14.0};
+  a.height_m = {0.1, 0.05, 0.3};
+  const Mesh mesh = make_prism(0.03, 0.008, 11);
+  const Stone stone = make_stone(mesh, mass_properties_from_density(mesh, 2500), 0.03, "test prism");
+  const Environment env;
+  CaptureSimulationOptions o;
+  o.reference = false;
+  BOOST_TEST(simulate_capture(stone, env, a, o).corners.empty());
+  a.clipped = true;
+  const CaptureSimulation sim = simulate_capture(stone, env, a, o);
+  BOOST_REQUIRE(sim.corners.size() == 4u);
+  RealtimeOptions alone = o.realtime_options;
+  alone.record_trajectory = false;
+  std::size_t k = 0;
+  for (const double speed : {5.0, 14.0})
+    for (const double height : {0.05, 0.3}) {
+      ReleaseKinematics r = a.nominal;
+      r.velocity_m_s *= speed / r.velocity_m_s.norm();  // as simulate_capture scales it
+      r.height_m = height;
+      const ThrowResult t = run_realtime(stone, env, capture_initial_state(stone, r), alone);
+      BOOST_TEST(sim.corners[k].speed_m_s == speed);
+      BOOST_TEST(sim.corners[k].height_m == height);
+      BOOST_TEST(sim.corners[k].bounces == (t.outcome == Outcome::failed ? -1 : t.bounces), "corner " << k);
+      ++k;
+    }
+}
+
 BOOST_AUTO_TEST_CASE(section_keys_name_figures_and_never_collide) {
   // Oracle: the key rules (capture_findings.hpp) — lowercase letters, digits and '_', unique, never
   // the index section's name, never starting with '_'.

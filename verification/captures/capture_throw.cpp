@@ -36,6 +36,16 @@ CaptureSimulation simulate_capture(const Stone& stone, const Environment& env, c
       else ++sim.bounce_histogram[r.bounces];
       if (o.progress) o.progress(sim.ensemble_bounces.size(), a.ensemble.size());
     }
+    const double nominal_speed = a.nominal.velocity_m_s.norm();
+    if (a.clipped && nominal_speed > 0)
+      for (const double speed : {a.speed_m_s.low, a.speed_m_s.high})
+        for (const double height : {a.height_m.low, a.height_m.high}) {
+          ReleaseKinematics k = a.nominal;
+          k.velocity_m_s *= speed / nominal_speed;  // the release's direction, the bound's speed
+          k.height_m = height;
+          const ThrowResult r = run_realtime(stone, env, capture_initial_state(stone, k), ro);
+          sim.corners.push_back({speed, height, r.outcome == Outcome::failed ? -1 : r.bounces});
+        }
     sim.ensemble_cpu_s = cpu.seconds();
     sim.ensemble_wall_s = wall.seconds();
     std::vector<int> b;

@@ -33,6 +33,15 @@ struct CaptureSimulation {
   std::vector<int> ensemble_bounces;     // one per ensemble member (real-time model); −1: the run failed
   std::map<int, int> bounce_histogram;   // bounces → members, over the members that did not fail
   int ensemble_failed = 0;               // members whose run failed (they have no count)
+  // Clipped captures: the accelerometer only bounds the speed and the rise, and the members (the
+  // lever arm's speed, each raised to its own bound) need not reach those bounds. The nominal throw
+  // at the four corners of the speed and height intervals, through the real-time model, so that a
+  // count the bounds allow is not missed (bounces −1: the run failed). Empty when not clipped.
+  struct Corner {
+    double speed_m_s = 0, height_m = 0;
+    int bounces = 0;
+  };
+  std::vector<Corner> corners;
   // An ensemble ran and every member failed: no count to take quantiles of.
   bool every_member_failed() const {
     return !ensemble_bounces.empty() && ensemble_failed == static_cast<int>(ensemble_bounces.size());
