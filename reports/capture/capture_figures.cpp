@@ -11,6 +11,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "reports/common/markdown.hpp"
 #include "reports/common/plot.hpp"
 
 namespace stoneskip {
@@ -542,19 +543,34 @@ std::optional<Figure> capture_scene_stone_figure(const std::string& key, const R
 std::optional<Figure> capture_scene_wave_figure(const std::string& key, const Record& c) {
   if (!c.has_child("scene") || !c.at("scene").at("waves").flag("compared")) return std::nullopt;
   const Record& w = c.at("scene").at("waves");
+  // Data written before the row of the largest difference was stored has the first contact's row only.
+  const bool worst = w.has_table("worst_profile");
   Figure f = make(key, "scene_waves",
-                  "The waves the stone made, along the grid row through its first contact at the scene's last frame: "
-                  "the scene, the forced leapfrog driven by the reference's draught, and the forced spectral reference "
-                  "(the stencil's exact semi-discrete solution, and the continuum one)",
-                  1100, 520);
-  add_copy(f, "profile", w, "profile", {});
-  const std::string d = dat(f, "profile");
+                  std::string("The waves the stone made at the scene's last frame, along the grid row through its first contact") +
+                      (worst ? " (top) and along the row holding the largest difference between the scene and the continuum "
+                               "reference (bottom)"
+                             : "") +
+                      ": the scene, the forced leapfrog driven by the reference's draught, and the forced spectral reference "
+                      "(the stencil's exact semi-discrete solution, and the continuum one)",
+                  1100, worst ? 860 : 520);
+  auto panel = [&](std::ostringstream& s, const char* table, const std::string& title) {
+    add_copy(f, table, w, table, {});
+    const std::string d = dat(f, table);
+    s << "set title " << gnuplot_quote(title) << "\n"
+      << "plot " << d << " u 1:($2*1e3) w l lw 3 lc rgb '" << kRealtime << "' t 'scene (two-way)', " << d
+      << " u 1:($3*1e3) w l lw 2 lc rgb '" << kAxis[0] << "' t 'leapfrog, reference draught', " << d
+      << " u 1:($4*1e3) w l lw 1.5 dt 2 lc rgb '" << kAxis[2] << "' t 'semi-discrete reference', " << d
+      << " u 1:($5*1e3) w l lw 1.5 dt 3 lc rgb '" << kReference << "' t 'continuum reference'\n";
+  };
   std::ostringstream s;
-  s << "set grid\nset key outside right top\nset xlabel 'x (m)'\nset ylabel 'surface height (mm)'\n"
-    << "plot " << d << " u 1:($2*1e3) w l lw 3 lc rgb '" << kRealtime << "' t 'scene (two-way)', " << d
-    << " u 1:($3*1e3) w l lw 2 lc rgb '" << kAxis[0] << "' t 'leapfrog, reference draught', " << d
-    << " u 1:($4*1e3) w l lw 1.5 dt 2 lc rgb '" << kAxis[2] << "' t 'semi-discrete reference', " << d
-    << " u 1:($5*1e3) w l lw 1.5 dt 3 lc rgb '" << kReference << "' t 'continuum reference'\n";
+  s << "set grid\nset key outside right top\nset xlabel 'x (m)'\nset ylabel 'surface height (mm)'\n";
+  if (worst) s << "set multiplot layout 2,1\n";
+  panel(s, "profile", "row y = " + fmt(w.number("row_y_m"), 3) + " m, through the first contact");
+  if (worst) {
+    panel(s, "worst_profile", "row y = " + fmt(w.number("worst_row_y_m"), 3) + " m, holding the largest |scene − continuum| (at x = " +
+                                  fmt(w.number("worst_x_m"), 3) + " m)");
+    s << "unset multiplot\n";
+  }
   f.script = s.str();
   return f;
 }

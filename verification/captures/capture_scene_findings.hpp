@@ -15,7 +15,9 @@
 //                    each is), verdict `reference` (rule reference_resolves: is the reference's own
 //                    error below the smallest error it is used to measure), table `profile` (x_m,
 //                    scene_m, prescribed_m, semi_discrete_m, continuum_m along the grid row nearest
-//                    the first contact), row_y_m, cost (thread CPU and wall of the references)
+//                    the first contact), row_y_m, the same along the row of the largest
+//                    |scene − continuum| (table `worst_profile`, worst_row_y_m, worst_x_m), cost (thread
+//                    CPU and wall of the references)
 #include <string>
 
 #include "verification/captures/capture_scene.hpp"

@@ -167,6 +167,13 @@ BOOST_AUTO_TEST_CASE(skipping_capture_through_the_scene_against_both_references)
   const Record r = capture_scene_findings(c, o, "test");
   BOOST_TEST(contradicted_verdicts(r).empty());
   BOOST_TEST(r.at("waves").table("profile").rows() == std::size_t(f.nx));
+  // The row of the largest difference holds total_m, the max over the whole grid (oracle: the
+  // definition of total_m, max |scene − continuum|): its own largest difference is that value.
+  const Table& worst = r.at("waves").table("worst_profile");
+  const auto scene = worst.column("scene_m"), continuum = worst.column("continuum_m");
+  double largest = 0;
+  for (std::size_t i = 0; i < scene.size(); ++i) largest = std::max(largest, std::abs(scene[i] - continuum[i]));
+  BOOST_TEST(largest == c.waves.total_m);
 }
 
 BOOST_AUTO_TEST_CASE(waves_too_costly_to_reference_are_not_compared_and_say_why) {
