@@ -6,6 +6,13 @@ namespace stoneskip {
 
 std::string verdict_markdown(const Record& v) { return "**" + v.text("verdict") + "** — " + v.text("reason"); }
 
+std::string order_interval(const Record& fit) {
+  if (!fit.flag("valid")) return "–";
+  if (fit.has("points") && fit.number("points") < 3)
+    return fmt(fit.number("order"), 3) + " (" + fmt(fit.number("points")) + " pts: no interval)";
+  return fmt(fit.number("order"), 3) + " [" + fmt(fit.number("order_low"), 3) + ", " + fmt(fit.number("order_high"), 3) + "]";
+}
+
 std::string code(const std::string& s) {
   // A code span holds any text (CommonMark 0.30 §6.1): delimited by more backticks than the longest
   // run inside, padded with a space where the text starts or ends with one; a line break, which

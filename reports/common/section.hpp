@@ -49,6 +49,10 @@ class SectionWriter {
 
 // "**verdict** — reason" of a stored verdict record.
 std::string verdict_markdown(const Record& verdict);
+// A stored order fit (verification/convergence/order_fit.hpp) as "p [low, high]", "–" when not
+// valid; a fit of fewer than 3 points has a slope and no interval (its stored bounds are the slope
+// itself, which would read as a certain order): "p (2 pts: no interval)".
+std::string order_interval(const Record& fit);
 // "`name`"
 std::string code(const std::string& s);
 // A number or "–" when it is NaN (formatted with `significant` digits).

@@ -16,10 +16,7 @@ namespace {
 // An ensemble member's count, or "failed" (NaN: the run failed and has no count).
 std::string count_or_failed(double c) { return std::isnan(c) ? std::string("failed") : fmt(c); }
 
-std::string interval(const Record& fit) {
-  if (!fit.flag("valid")) return "–";
-  return fmt(fit.number("order"), 3) + " [" + fmt(fit.number("order_low"), 3) + ", " + fmt(fit.number("order_high"), 3) + "]";
-}
+std::string interval(const Record& fit) { return order_interval(fit); }
 
 std::string us(double s) { return fmt(1e6 * s, 3) + " µs"; }
 std::string ms(double s) { return fmt(1e3 * s, 3) + " ms"; }

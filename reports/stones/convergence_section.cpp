@@ -23,13 +23,22 @@ std::string list_text(const std::vector<double>& v) {
 // "p [low, high] (n pts)"; a fit with the correction term (verification/convergence/order_fit.hpp)
 // says so and gives the single power's too.
 std::string observed(const Record& fit) {
-  if (!fit.flag("valid")) return "–";
-  std::string s = fmt(fit.number("order"), 3) + " [" + fmt(fit.number("order_low"), 3) + ", " +
-                  fmt(fit.number("order_high"), 3) + "] (" + fmt(fit.number("points")) + " pts";
+  if (!fit.flag("valid") || fit.number("points") < 3) return order_interval(fit);
+  std::string s = order_interval(fit) + " (" + fmt(fit.number("points")) + " pts";
   if (fit.has("corrected") && fit.flag("corrected"))
     s += ", with h^(p+1); one power: " + fmt(fit.number("single_order"), 3) + " [" + fmt(fit.number("single_low"), 3) +
          ", " + fmt(fit.number("single_high"), 3) + "]";
   return s + ")";
+}
+
+// What the position's own fit says of the formal order (the free-flight state's paragraph), from its
+// stored verdict: a self-convergence test checks the position's order apart from this study.
+std::string position_words(const Record& fp, double formal) {
+  const std::string v = fp.at("verdict").text("verdict");
+  const std::string self = "a self-convergence test of the scheme checks the position's order "
+                           "(verification/stones/realtime_order_test.cpp).";
+  if (v == to_string(OrderVerdict::converges_at_expected_order)) return "The position keeps the formal order " + fmt(formal) + "; " + self;
+  return "The position's own fit here: " + v + "; " + self;
 }
 
 // Whether any series of the record had the correction term tested, and how many used it.
@@ -238,8 +247,8 @@ SectionOutput convergence_section(const Record& c) {
                 ? "The orientation converges faster than the formal order, and it dominates the state error. On a "
                   "steady spin, a three-stage third-order scheme advances the quaternion by 1 + iφ − φ²/2 − iφ³/6 "
                   "(φ = ωh/2). Once the quaternion is renormalised, only its phase error remains: φ⁵/30 per step, "
-                  "so order 4 (verification/stones/state_error.hpp). The position keeps the formal order; a "
-                  "self-convergence test of the scheme confirms it (verification/stones/realtime_order_test.cpp)."
+                  "so order 4 (verification/stones/state_error.hpp). " +
+                      position_words(fp, formal)
                 : "The orientation does not converge faster either: this is not explained here."));
   }
 

@@ -14,10 +14,7 @@ namespace stoneskip {
 
 namespace {
 
-std::string interval(const Record& fit) {
-  if (!fit.flag("valid")) return "–";
-  return fmt(fit.number("order"), 3) + " [" + fmt(fit.number("order_low"), 3) + ", " + fmt(fit.number("order_high"), 3) + "]";
-}
+std::string interval(const Record& fit) { return order_interval(fit); }
 
 std::string list_text(const std::vector<double>& v, int significant = 3, const std::string& sep = ", ") {
   std::string s;
