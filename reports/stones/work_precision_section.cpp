@@ -44,7 +44,16 @@ SectionOutput work_precision_section(const Record& c) {
     w.subheading("Throw: " + t.text("label"));
     const std::string what = t.text("headline") + " error (m)";
     const double unc = t.number("truth_uncertainty_m");
-    w.text("Water law: `" + t.text("law") + "`. Reference (rtol " + fmt(c.number("truth_rtol"), 2) + "): " + fmt(t.number("truth_contacts")) + " contacts, " +
+    // Data written before the kinks were stored says nothing of them.
+    const std::string kinks =
+        t.has("fixed_kinks")
+            ? " The fixed schemes' steps end at kinks `" + t.text("fixed_kinks") + "`" +
+                  (t.text("fixed_kinks") == "none"
+                       ? " (their default: a kink inside a step caps a scheme near order 2 through a contact; §1 "
+                         "says where its own fixed steps end, so the two sections' errors of one scheme can differ)."
+                       : ".")
+            : std::string();
+    w.text("Water law: `" + t.text("law") + "`." + kinks + " Reference (rtol " + fmt(c.number("truth_rtol"), 2) + "): " + fmt(t.number("truth_contacts")) + " contacts, " +
            fmt(t.number("truth_bounces")) + " bounces, " + t.text("truth_outcome") + " at " +
            fmt(t.number("truth_end_time_s"), 4) + " s; " + fmt(t.number("truth_steps"), 8) + " steps, " +
            fmt(t.number("truth_rhs_evaluations"), 8) + " RHS evaluations, " + fmt(t.number("truth_segments"), 8) +

@@ -296,7 +296,10 @@ SectionOutput stability_section(const Record& c) {
          "for μΔt from 0 to " + fmt(c.number("mu_dt_max"), 3) + ". The limit is then *measured*: runs from random noise at " +
          fmt(100 * f, 2) + " % below and above it, and a bisection on σ using runs alone (16² grid, " +
          fmt(c.number("measured_steps"), 6) + " steps, to a relative width of " + fmt(c.number("measured_tolerance"), 2) +
-         "; a run is unstable when its measured growth rate per step exceeds 1).");
+         "; a run is unstable when it blows up, or when the rise of its log RMS over the latter half of the steps (the "
+         "fitted slope times that window) exceeds the scatter of log RMS about the fitted line plus a round-off floor, "
+         "verification/waves/stability.hpp: an undamped run, whose RMS only oscillates, can measure a growth per step a "
+         "little above 1 without being called unstable).");
   w.figure(stability_figure(c));
   MarkdownTable t({"stencil", "μΔt", "computed σ limit", "measured σ limit", "Lengyel's bound",
                    "RMS ratio at " + fmt(1 - f, 3) + " × limit", "RMS ratio at " + fmt(1 + f, 3) + " × limit",

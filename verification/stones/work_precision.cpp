@@ -188,6 +188,8 @@ WorkPrecisionResult run_work_precision(const std::vector<ThrowProblem>& given, c
     res.throws[k].label = throws[k].label;
     res.throws[k].law = throws[k].environment.water_law;
     res.throws[k].convention = throws[k].environment.convention;
+    // The fixed schemes below keep the throw's kinks, else a fixed scheme's default (none).
+    res.throws[k].fixed_kinks = to_string(throws[k].realtime.kinks.value_or(default_kink_steps(Scheme::rk4)));
   }
 
   // 1. The truth for every throw, and a tighter check of it.

@@ -102,6 +102,7 @@ struct WorkPrecisionThrow {
   HeadlineError headline = HeadlineError::bounce_position;
   double truth_uncertainty_m = 0;   // headline difference between truth and truth check (NaN: lists differ)
   std::string truth_check_problem;
+  std::string fixed_kinks;   // where the fixed schemes' steps end (KinkSteps: the throw's own, else none)
   std::vector<WorkPoint> points;
   std::vector<CheapestSetting> cheapest;  // per target and family
 };

@@ -51,6 +51,7 @@ Record work_precision_findings(const WorkPrecisionResult& wp, const WorkPrecisio
     g.set("truth_cpu_s", t.truth.stats.cpu_s);
     g.set("truth_uncertainty_m", t.truth_uncertainty_m);
     g.set("truth_check_problem", t.truth_check_problem);
+    g.set("fixed_kinks", t.fixed_kinks);
     std::vector<std::string> families, failures;
     auto family_index = [&](const std::string& f) {
       for (std::size_t i = 0; i < families.size(); ++i)

@@ -46,6 +46,10 @@ BOOST_AUTO_TEST_CASE(the_headline_error_is_the_bounce_position_or_else_the_sinki
     ro.record_trajectory = false;
     const ThrowResult r = solve(k ? sink : bounce, realtime_choice(ro));
     BOOST_REQUIRE(r.contacts.size() == t.truth.contacts.size());
+    // The run here keeps the throw's kinks (none given, so a fixed scheme's: none) and reproduces
+    // the study's errors below exactly: the stored name is what ran.
+    BOOST_TEST(!ro.kinks.has_value());
+    BOOST_TEST(t.fixed_kinks == "none");
     const double sink_error = (r.contacts.back().exit_position_m - t.truth.contacts.back().exit_position_m).norm();
     BOOST_TEST(std::abs(p.sink_position_error_m - sink_error) <= kSame);
     if (k == 0) {
