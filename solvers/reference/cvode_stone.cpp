@@ -194,6 +194,15 @@ class ReferenceSolve {
   long restarts_ = 0, continued_events_ = 0;
   double t_ = 0;
   bool done_ = false;
+  // The last state CVODE returned (at a root, a t_max stop or a step), and its time: a failed solve
+  // ends there, for CVODE 6.4 leaves its output vector zeroed on some failures (a repeated
+  // right-hand side error: the throw's end read as the origin at rest).
+  RigidState last_good_;
+  double last_good_t_ = 0;
+  void remember_good(double t) {
+    last_good_ = state();
+    last_good_t_ = t;
+  }
 };
 
 bool ReferenceSolve::check_inputs(const RigidState& initial) {
@@ -403,6 +412,8 @@ void ReferenceSolve::run(const RigidState& initial) {
   // 1. The discrete mode at t = 0 (a throw may start in the water).
   RigidState s0 = initial;
   s0.orientation.normalize();
+  last_good_ = s0;
+  last_good_t_ = 0;
   events_.reset(s0);
   const int nv = events_.vertex_count();
   if (events_.submerged_vertices() > 0) {
@@ -496,12 +507,14 @@ void ReferenceSolve::integrate() {
       // The output times before the event, in the mode before it.
       if (sampled) samples_to(std::nextafter(t_ret, -1.0));
       t_ = t_left = t_ret;
+      remember_good(t_ret);
       if (!handle_root(t_)) break;
       continue;
     }
     if (flag == CV_SUCCESS || flag == CV_TSTOP_RETURN) {
       if (sampled) samples_to(t_ret);
       t_ = t_left = t_ret;
+      remember_good(t_ret);
       if (!sampled) sample(t_, state());  // at t_max: unsampled runs return only there and at events
       if (flag == CV_TSTOP_RETURN || t_ >= o_.t_max_s) break;
       continue;
@@ -509,6 +522,7 @@ void ReferenceSolve::integrate() {
     if (flag == CV_TOO_MUCH_WORK) {
       // The window or max_steps is used up: the loop's top says which, or goes on from t_ret.
       t_ = t_ret;
+      remember_good(t_ret);  // CVODE returns the solution at t_ret here
       long used = 0;
       check(CVodeGetNumSteps(cv_.mem, &used), "CVodeGetNumSteps");
       if (r_.stats.steps + used < o_.max_steps) continue;
@@ -543,12 +557,17 @@ void ReferenceSolve::finish(const RigidState& s0) {
     renormalise();
     s_end = state();
   }
+  // A failed solve ends at the last state CVODE returned, whatever its output vector now holds.
+  if (r_.outcome == Outcome::failed) {
+    s_end = last_good_;
+    t_ = last_good_t_;
+  }
   const bool cut = r_.outcome == Outcome::failed && log_.in_contact();
   if (log_.in_contact()) log_.end(t_, s_end, energy(s_end), false);
   if (o_.record_trajectory && (r_.trajectory.empty() || r_.trajectory.back().t_s < t_)) sample(t_, s_end);
   finish_result(r_, log_, s_end, t_);
   std::ostringstream extra;
-  if (cut) extra << "; contact " << r_.contacts.size() << " was still open: its end is the failure time";
+  if (cut) extra << "; contact " << r_.contacts.size() << " was still open: it ends at the last state CVODE returned (t = " << t_ << " s)";
   if (resynced_ > 0) extra << "; " << resynced_ << " vertex crossings missed by root finding (fixed from the state)";
   if (max_q_drift_ > kReportedQuaternionDrift) extra << "; quaternion norm drifted by up to " << max_q_drift_ << " between restarts";
   r_.outcome_detail += extra.str();

@@ -12,6 +12,15 @@ std::string num(double v, const char* f = "%.4g") {
   std::snprintf(b, sizeof b, f, v);
   return b;
 }
+
+// A table cell `width` wide with `decimals` decimals, in scientific notation where that would
+// overflow the width (a run that blew up: speeds of 1e124 m/s, not a 128-digit number).
+std::string cell(double v, int width, int decimals) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%*.*f", width, decimals, v);
+  if (static_cast<int>(std::string(b).size()) > width) std::snprintf(b, sizeof b, "%*.*e", width, 2, v);
+  return b;
+}
 }  // namespace
 
 std::string text_summary(const StoneCase& c, const ThrowResult& r) {
@@ -34,10 +43,10 @@ std::string text_summary(const StoneCase& c, const ThrowResult& r) {
     int i = 0;
     for (const auto& k : r.contacts) {
       char line[256];
-      std::snprintf(line, sizeof line, "%4d %9.5f %9.5f %12.3f %10.3f %9.3f %15.2f %8.2f→%-8.2f %7.2f→%-7.2f  %s\n", ++i,
-                    k.start_s, k.end_s, 1e3 * k.duration_s(), k.entry_speed_m_s, k.exit_speed_m_s,
-                    k.entry_path_angle_deg, k.entry_attack_angle_deg, k.exit_attack_angle_deg, k.entry_roll_deg,
-                    k.exit_roll_deg, k.bounced ? "yes" : "no");
+      std::snprintf(line, sizeof line, "%4d %9.5f %9.5f %s %s %s %15.2f %8.2f→%-8.2f %7.2f→%-7.2f  %s\n", ++i,
+                    k.start_s, k.end_s, cell(1e3 * k.duration_s(), 12, 3).c_str(), cell(k.entry_speed_m_s, 10, 3).c_str(),
+                    cell(k.exit_speed_m_s, 9, 3).c_str(), k.entry_path_angle_deg, k.entry_attack_angle_deg,
+                    k.exit_attack_angle_deg, k.entry_roll_deg, k.exit_roll_deg, k.bounced ? "yes" : "no");
       s << line;
     }
   }

@@ -4,7 +4,8 @@
 // columns are the record's for the file's axes and solvers, in order; row i is throw i; its varied
 // values are the design's point i; each solver's outcome is a code of kOutcomeCodes; bounces and
 // contacts are whole numbers, 0 ≤ bounces ≤ contacts (NaN where the throw did not run); and with
-// both solvers the bounce and contact disagreements are real-time minus reference.
+// both solvers the bounce and contact disagreements are real-time minus reference, NaN where either
+// solve failed (or, in tables written before that rule, the difference).
 #include <string>
 
 #include "tools/io/hdf5_file.hpp"

@@ -116,6 +116,23 @@ BOOST_AUTO_TEST_CASE(each_kind_of_edit_is_refused_naming_the_column_and_the_thro
   }
 }
 
+BOOST_AUTO_TEST_CASE(a_failed_solves_disagreement_is_nan_or_in_older_tables_the_difference) {
+  // Oracle: the rule of throw_record.hpp (NaN where either solve failed); a table written before it
+  // holds the difference, which still passes; any other value is refused.
+  const SweepDesign d = grid_design();
+  Table t = written(d, SweepSolvers::both);
+  set(t, 5, "reference_outcome", kOutcomeFailed);
+  set(t, 5, "disagreement_bounces", std::nan(""));
+  set(t, 5, "disagreement_contacts", std::nan(""));
+  BOOST_TEST(refusal(d, SweepSolvers::both, t) == "");
+  set(t, 5, "disagreement_bounces", 1);  // realtime 2 − reference 1: the older tables' difference
+  set(t, 5, "disagreement_contacts", 1);
+  BOOST_TEST(refusal(d, SweepSolvers::both, t) == "");
+  set(t, 5, "disagreement_bounces", 0);
+  BOOST_TEST(refusal(d, SweepSolvers::both, t) ==
+             "f.h5: throws.disagreement_bounces: throw 5: 0 for a throw whose solve failed (NaN expected)");
+}
+
 BOOST_AUTO_TEST_CASE(columns_other_than_the_records_are_refused) {
   const SweepDesign d = grid_design();
   Table t = written(d, SweepSolvers::both);

@@ -146,8 +146,12 @@ std::vector<double> ThrowRecord::row(std::uint64_t throw_index, const std::vecto
     if (result->outcome == Outcome::failed) notes.push_back({throw_index, name, result->outcome_detail});
   }
   if (rt && ref) {
+    // A failed run's counts and end are those at its failure, not its result: no disagreement
+    // (NaN), as `run` says "not compared" for it.
+    const bool failed = rt->outcome == Outcome::failed || ref->outcome == Outcome::failed;
     const ContactComparison c = compare_contacts(*rt, *ref);
-    for (const auto& f : disagreement_fields()) r.push_back(f.value(*rt, *ref, c));
+    for (const auto& f : disagreement_fields())
+      r.push_back(failed ? std::numeric_limits<double>::quiet_NaN() : f.value(*rt, *ref, c));
   }
   r.push_back(cost.setup_wall_s);
   if (rt) r.insert(r.end(), {rt->stats.cpu_s, cost.realtime_cpu_s});

@@ -18,7 +18,9 @@
 //                                          (bounces, contacts, distance_m, lateral_m,
 //                                          first_contact_start_s) and the contact comparison
 //                                          (missed_contacts, spurious_contacts,
-//                                          max_start_error_s, max_exit_speed_error_m_s)
+//                                          max_start_error_s, max_exit_speed_error_m_s); NaN
+//                                          where either solve failed (its counts are those at
+//                                          the failure, not a result)
 //   cost_setup_wall_s                      building the throw's case from the base + overrides
 //   cost_<solver>_wall_s, cost_<solver>_cpu_s  the solve: wall, and CPU of the thread
 //   cost_rank, cost_thread                 which process (MPI rank) and thread computed it

@@ -87,6 +87,21 @@ BOOST_AUTO_TEST_CASE(no_contact_leaves_the_first_contact_columns_nan_and_a_failu
   BOOST_TEST(notes[0].detail == "too many steps");
 }
 
+BOOST_AUTO_TEST_CASE(a_failed_solve_has_no_disagreement) {
+  // Oracle: a failed run's counts are those at its failure (`run` says "not compared"): with the
+  // reference failed after 2 bounces against the real-time model's 3, every disagreement is NaN,
+  // not the 1 that a row of two finished runs holds (a_row_holds_what_its_columns_name).
+  const ThrowRecord rec({"throw.speed_m_s"}, SweepSolvers::both);
+  const ThrowResult rt = result(3, 12.0, {{0.10, 0.11}, {0.30, 0.32}, {0.5, 0.6}});
+  ThrowResult ref = result(2, 10.5, {{0.1002, 0.1101}, {0.31, 0.33}});
+  ref.outcome = Outcome::failed;
+  std::vector<ThrowNote> notes;
+  const std::vector<double> row = rec.row(3, {8.0}, &rt, &ref, {}, notes);
+  for (std::size_t c = 0; c < rec.width(); ++c)
+    if (rec.columns()[c].rfind("disagreement_", 0) == 0) BOOST_TEST(std::isnan(row[c]), rec.columns()[c]);
+  BOOST_TEST(at(rec, row, "reference_bounces") == 2);  // the run's own columns keep what it reached
+}
+
 BOOST_AUTO_TEST_CASE(only_cost_columns_depend_on_where_a_throw_ran) {
   // Oracle: the same results with two different sites and costs differ only in cost_ columns.
   const ThrowRecord rec({"a"}, SweepSolvers::realtime);
