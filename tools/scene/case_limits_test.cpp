@@ -168,6 +168,13 @@ y_m = 0.5
   BOOST_TEST(ce.memory_bytes >= 1e8 * sizeof(TrajectorySample));
   BOOST_TEST(ce.work.at(0).count == 1e8 * 44);  // steps × 1 right-hand side × 44 triangles
   BOOST_CHECK_THROW(enforce_limits(ce, ResourceLimits{}, "c.toml"), InputError);
+  // bs32 takes no step longer than dt_s, its largest: dt_s = 1e-9 over 10 s is 1e10 steps of 6
+  // right-hand sides, not the 1.7e5 of its assumed 6e-5 s step (a run that went on for hours).
+  const StoneCase b = stone_case_from_document(
+      parse_toml_text(kCase, "b.toml", {"solver.scheme=bs32", "solver.t_max_s=10", "solver.dt_s=1e-9"}));
+  const ResourceEstimate be = estimate_run(b, RunSolvers{});
+  BOOST_TEST(be.work.at(0).count == 1e10 * 6 * 44);
+  BOOST_CHECK_THROW(enforce_limits(be, ResourceLimits{}, "b.toml"), InputError);
 }
 
 BOOST_AUTO_TEST_CASE(every_shipped_case_and_baseline_is_inside_the_bounds_and_limits) {

@@ -34,9 +34,13 @@ double rhs_per_step(Scheme s) {
 // of cases/spin_sweep_base.toml takes 34 537 right-hand sides at rtol 1e-8 where this allows 1e6
 // over its 10 s). The estimate does not scale with rtol: a case with a much tighter tolerance can
 // take more steps than it says.
+// Either way no step is longer than dt_s (bs32's largest step, the fixed schemes' flight step), so a
+// dt_s below the step assumed bounds the estimate instead (bs32 with dt_s = 1e-9 takes 1e10 steps
+// over 10 s, not 1.7e5).
 constexpr double kAdaptiveEstimateStep_s = 6e-5;
 double realtime_steps(const RealtimeOptions& o) {
-  return std::ceil(o.t_max_s / (is_adaptive(o.scheme) ? kAdaptiveEstimateStep_s : o.contact_dt_s));
+  const double assumed = is_adaptive(o.scheme) ? kAdaptiveEstimateStep_s : o.contact_dt_s;
+  return std::ceil(o.t_max_s / std::min(assumed, o.dt_s));
 }
 
 // Trajectory samples held in memory: one per output_dt_s (plus contact transitions), or every step.
@@ -86,7 +90,7 @@ ResourceEstimate estimate_run(const StoneCase& c, const RunSolvers& solvers) {
     const RealtimeOptions& o = c.realtime;
     const double steps = realtime_steps(o), rhs = rhs_per_step(o.scheme);
     e.add_work(steps * rhs * triangles, kMaxTriangleEvaluations,
-               "triangle evaluations of the real-time stepper (t_max_s / contact step = " + sci(steps) + " steps × " +
+               "triangle evaluations of the real-time stepper (t_max_s / the shortest step = " + sci(steps) + " steps × " +
                    sci(rhs) + " right-hand sides × " + sci(triangles) + " triangles)");
     const double n = samples(o.t_max_s, o.output_dt_s, steps);
     e.add_memory(n * sample_bytes(solvers.writes_file), sci(n) + " trajectory samples of the real-time run");
