@@ -140,6 +140,7 @@ void run(const RunArgs& a) {
     // The paper convention is Eq. 2 as printed: its law is newtonian, its pressure uniform.
     j["water_law"] = to_string(c.environment.water_law);
     j["pressure_distribution"] = to_string(c.environment.pressure_distribution);
+    j["attitude"] = to_string(c.environment.attitude);
     // A title from a file name need not be UTF-8: replace what is not, never throw.
     std::cout << json_text(j) << std::endl;
   } else {

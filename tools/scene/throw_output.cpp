@@ -31,12 +31,16 @@ std::string text_summary(const StoneCase& c, const ThrowResult& r) {
     << " water law, C_w = " << c.environment.water_coefficient;
   if (c.environment.convention == Convention::physical)
     s << ", " << to_string(c.environment.pressure_distribution) << " pressure";
+  const bool held = c.environment.attitude == Attitude::held;
+  if (held) s << ", held attitude (torques discarded)";
   s << "\n";
   s << "solver    " << r.solver << "\n";
   s << "bounces   " << r.bounces << "\n";
   s << "outcome   " << to_string(r.outcome) << ": " << r.outcome_detail << "\n";
   s << "distance  " << num(r.distance_m) << " m, lateral deviation " << num(r.lateral_m) << " m (+y = thrower's left)\n";
-  if (r.max_energy_gain_J > 0) s << "energy    a contact gained " << num(r.max_energy_gain_J) << " J (the model created energy)\n";
+  if (r.max_energy_gain_J > 0)
+    s << "energy    a contact gained " << num(r.max_energy_gain_J) << " J (the model created energy"
+      << (held ? ": a held attitude is not passive, the water's torque on the spin is discarded)\n" : ")\n");
   if (!r.contacts.empty()) {
     s << "contacts:\n";
     s << "   #   start_s     end_s  duration_ms  entry_m_s  exit_m_s  entry_path_deg  attack_deg in→out  roll_deg in→out  bounced\n";
