@@ -170,6 +170,24 @@ BOOST_AUTO_TEST_CASE(a_held_attitude_is_named_and_its_energy_gain_explained) {
   BOOST_TEST(run("run cases/paper_8ms_spin.toml").out.find("attitude") == std::string::npos);
 }
 
+BOOST_AUTO_TEST_CASE(a_flight_that_gains_energy_is_reported) {
+  // Oracle: the contact list itself — a flight between two contacts gains the next entry energy
+  // minus the last exit energy, computed here from the JSON; the paper convention's air law (Eq. 6
+  // as printed, along −n whatever the flow) makes such gains on cases/hard/paper_high_spin.toml,
+  // the physical law (passive, −u|u|) none, whose largest flight gain is exactly 0.
+  const auto paper = nlohmann::json::parse(run("run cases/hard/paper_high_spin.toml --json").out);
+  const auto& c = paper["contacts"];
+  double between = 0;
+  for (std::size_t k = 0; k + 1 < c.size(); ++k)
+    between = std::max(between, c[k + 1]["entry_energy_J"].get<double>() - c[k]["exit_energy_J"].get<double>());
+  BOOST_TEST(between > 0.1);  // the premise: the printed air law pushes
+  BOOST_TEST(paper["max_flight_energy_gain_J"].get<double>() >= between);
+  BOOST_TEST(run("run cases/hard/paper_high_spin.toml").out.find("a flight gained") != std::string::npos);
+  const auto physical = nlohmann::json::parse(run("run cases/paper_8ms_spin.toml --json").out);
+  BOOST_TEST(physical["max_flight_energy_gain_J"].get<double>() == 0.0);
+  BOOST_TEST(run("run cases/paper_8ms_spin.toml").out.find("a flight gained") == std::string::npos);
+}
+
 BOOST_AUTO_TEST_CASE(a_mirror_symmetric_stone_throws_mirror_images) {
   // Oracle: symmetry. With rim_split = "centre" the stone is its own mirror image in the plane of
   // the throw (model/stone/mesh.hpp), so spin +40 and −40 rev/s are mirror images: the same count

@@ -1,5 +1,6 @@
 #include "tools/scene/throw_output.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -23,6 +24,15 @@ std::string cell(double v, int width, int decimals) {
 }
 }  // namespace
 
+double max_flight_energy_gain_J(const StoneCase& c, const ThrowResult& r) {
+  double before = mechanical_energy(c.stone, c.environment, c.initial).total_J(), gain = 0;
+  for (const auto& k : r.contacts) {
+    gain = std::max(gain, k.entry_energy_J - before);
+    before = k.exit_energy_J;
+  }
+  return gain;
+}
+
 std::string text_summary(const StoneCase& c, const ThrowResult& r) {
   std::ostringstream s;
   s << "case      " << c.title << " (" << c.file << ")\n";
@@ -38,6 +48,14 @@ std::string text_summary(const StoneCase& c, const ThrowResult& r) {
   s << "bounces   " << r.bounces << "\n";
   s << "outcome   " << to_string(r.outcome) << ": " << r.outcome_detail << "\n";
   s << "distance  " << num(r.distance_m) << " m, lateral deviation " << num(r.lateral_m) << " m (+y = thrower's left)\n";
+  // A flight's rise above round-off (a millionth of the release energy): the paper's air law, or
+  // the integrator.
+  const double release_J = mechanical_energy(c.stone, c.environment, c.initial).total_J();
+  const double flight_gain_J = max_flight_energy_gain_J(c, r);
+  if (flight_gain_J > 1e-6 * std::abs(release_J))
+    s << "energy    a flight gained " << num(flight_gain_J) << " J ("
+      << (c.environment.convention == Convention::paper ? "the paper's air law, Eq. 6 as printed, pushes along −n whatever the flow)\n"
+                                                        : "the integrator's: the physical air law is passive)\n");
   if (r.max_energy_gain_J > 0)
     s << "energy    a contact gained " << num(r.max_energy_gain_J) << " J (the model created energy"
       << (held ? ": a held attitude is not passive, the water's torque on the spin is discarded)\n" : ")\n");
