@@ -34,6 +34,7 @@ const char* rows_name(TableSource::Rows r) {
     case TableSource::Rows::y_nonnegative: return "y_nonnegative";
     case TableSource::Rows::y_negative: return "y_negative";
     case TableSource::Rows::y_positive: return "y_positive";
+    case TableSource::Rows::y_nonpositive: return "y_nonpositive";
     case TableSource::Rows::all: break;
   }
   return "all";

@@ -18,7 +18,7 @@ namespace stoneskip {
 // figure test (tools/cli/report_command_test.cpp) checks every plotted point against them.
 struct TableSource {
   // A count's failed runs are stored as < 0; y_positive: a row with y ≤ 0 is a gap in the line.
-  enum class Rows { all, y_nonnegative, y_negative, y_positive };
+  enum class Rows { all, y_nonnegative, y_negative, y_positive, y_nonpositive };
   std::string table;                    // data.h5 path of the stored table
   std::string x_column, y_column;
   Rows rows = Rows::all;

@@ -27,6 +27,7 @@ bool selected(TableSource::Rows rows, double y) {
     case TableSource::Rows::y_nonnegative: return y >= 0;
     case TableSource::Rows::y_negative: return y < 0;
     case TableSource::Rows::y_positive: return y > 0;
+    case TableSource::Rows::y_nonpositive: return y <= 0;
     case TableSource::Rows::all: break;
   }
   return true;

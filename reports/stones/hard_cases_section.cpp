@@ -1,7 +1,10 @@
 // Section 4 of the stones report: throws chosen to break a solver, and the largest stable step —
 // formatted from the stored record.
+#include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "reports/common/markdown.hpp"
 #include "reports/common/plot.hpp"
@@ -100,12 +103,26 @@ SectionOutput hard_cases_section(const Record& c) {
     const PlotSeries b = table_series("(b) no energy gain", s, "rows", "speed_m_s", "largest_no_energy_gain_s", "linespoints", Rows::y_positive);
     const PlotSeries d =
         table_series("(c) same contacts as the reference", s, "rows", "speed_m_s", "largest_same_contacts_s", "linespoints", Rows::y_positive);
+    std::vector<PlotSeries> series{a, b, d};
+    // A speed at which even the smallest step tried fails a criterion ("< smallest" in the table):
+    // a marker at the smallest step, so that the figure shows it too.
+    if (!hs.empty()) {
+      const std::pair<const char*, const char*> criteria[] = {{"largest_finite_s", "(a)"},
+                                                              {"largest_no_energy_gain_s", "(b)"},
+                                                              {"largest_same_contacts_s", "(c)"}};
+      for (const auto& [column, label] : criteria) {
+        const auto v = rows.column(column);
+        if (std::none_of(v.begin(), v.end(), [](double h) { return h <= 0; })) continue;
+        series.push_back(table_series(std::string(label) + " not met even at the smallest step tried", s, "rows", "speed_m_s",
+                                      column, "points pt 11 ps 2", Rows::y_nonpositive, hs.front()));
+      }
+    }
     PlotAxes ax;
     ax.x_label = "throw speed (m/s)";
     ax.y_label = "largest step h (s)";
     ax.log_x = ax.log_y = true;
     Figure f = line_figure("largest_stable_step", "Largest stable single step of the real-time stepper against throw speed",
-                           ax, {a, b, d}, "speed_m_s", "h_s");
+                           ax, series, "speed_m_s", "h_s");
     f.data_path = s.path();
     w.figure(f);
   }

@@ -83,6 +83,7 @@ Points stored_points(const stoneskip::Hdf5Reader& data, const std::vector<std::s
     if (src[4] == "y_nonnegative" && !(y[k] >= 0)) continue;
     if (src[4] == "y_negative" && !(y[k] < 0)) continue;
     if (src[4] == "y_positive" && !(y[k] > 0)) continue;
+    if (src[4] == "y_nonpositive" && !(y[k] <= 0)) continue;
     if (!where.empty() && where[k] != value) continue;
     const double xx = power == 1 ? x[k] : std::pow(x[k], power), yy = std::isnan(at) ? scale * y[k] : at;
     if (std::isfinite(xx) && std::isfinite(yy)) pts.emplace_back(xx, yy);
