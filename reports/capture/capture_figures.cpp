@@ -471,7 +471,7 @@ std::optional<Figure> capture_bounce_figure(const std::string& key, const Record
   Figure f = make(key, "bounce_distribution",
                   std::string("Bounce counts of the capture's ensemble (real-time model), with the nominal throw's counts") +
                       (e.has_table("bound_corners")
-                           ? " and those of the nominal throw at the corners of the clipped accelerometer's speed and height bounds"
+                           ? " and those of the nominal throw at the corners of the speed and height intervals (clipped: the accelerometer's bounds joined with the members)"
                            : ""),
                   900, 560);
   const Table& h = e.table("histogram");
@@ -503,7 +503,7 @@ std::optional<Figure> capture_bounce_figure(const std::string& key, const Record
       arrows += "set arrow from " + g(b) + ", graph 0 to " + g(b) + ", graph 0.6 nohead lw 3 dt 3 lc rgb '" + kAxis[1] + "' front\n";
     }
     if (!seen.empty())
-      marks += ", keyentry w l lw 3 dt 3 lc rgb '" + std::string(kAxis[1]) + "' t 'nominal throw at the corners of the speed and height bounds'";
+      marks += ", keyentry w l lw 3 dt 3 lc rgb '" + std::string(kAxis[1]) + "' t 'nominal throw at the corners of the speed and height intervals'";
   }
   std::ostringstream s;
   s << "set grid y\nset key below\nset xlabel 'bounces'\nset ylabel 'throws of the ensemble'\nset xtics 1\n"

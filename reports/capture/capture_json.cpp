@@ -63,6 +63,15 @@ nlohmann::json capture_json(const CaptureAnalysis& a, const CaptureSimulation* s
       j["ensemble_bounces_median"] = none ? nlohmann::json(nullptr) : nlohmann::json(sim->bounces_median);
       j["ensemble_failed"] = sim->ensemble_failed;
     }
+    // Clipped: the nominal throw at the corners of the speed and height intervals (null: failed).
+    if (!sim->corners.empty()) {
+      nlohmann::json corners = nlohmann::json::array();
+      for (const auto& c : sim->corners)
+        corners.push_back({{"speed_m_s", c.speed_m_s},
+                           {"height_m", c.height_m},
+                           {"bounces", c.bounces >= 0 ? nlohmann::json(c.bounces) : nlohmann::json(nullptr)}});
+      j["bound_corners"] = corners;
+    }
   }
   return j;
 }

@@ -317,8 +317,8 @@ void solvers_part(SectionWriter& w, const std::string& key, const Record& c) {
     w.text("The ensemble: the " + fmt(e.number("members")) +
            " releases of the capture's ensemble (each re-estimated with random noise, biases, gyro scale, lever arm, height "
            "and release time, clipped spans filled at random)" +
-           (corners ? std::string(" and the nominal throw at the four corners of the speed and height bounds that the clipped "
-                                  "accelerometer sets (which no member need reach)")
+           (corners ? std::string(" and the nominal throw at the four corners of the speed and height intervals (the clipped "
+                                  "accelerometer's bounds joined with the members' range, which the members need not reach)")
                     : std::string()) +
            ", through the real-time model (" + fmt(e.number("cpu_s"), 3) + " s CPU, " + fmt(e.number("wall_s"), 3) +
            " s wall). Their spread is what the recording cannot decide.");

@@ -16,8 +16,6 @@ namespace {
 // An ensemble member's count, or "failed" (NaN: the run failed and has no count).
 std::string count_or_failed(double c) { return std::isnan(c) ? std::string("failed") : fmt(c); }
 
-std::string interval(const Record& fit) { return order_interval(fit); }
-
 std::string us(double s) { return fmt(1e6 * s, 3) + " µs"; }
 std::string ms(double s) { return fmt(1e3 * s, 3) + " ms"; }
 std::string duration(double s) { return std::abs(s) >= 0.1 ? fmt(s, 3) + " s" : std::abs(s) >= 1e-3 ? ms(s) : us(s); }
@@ -54,8 +52,8 @@ std::string findings(const Record& secs) {
   m << "* The forced leapfrog against the forced spectral reference:";
   for (const auto& name : cv.strings("stencils")) {
     const Record& s = cv.at(name);
-    m << " " << code(name) << " space " << interval(s.at("space").at("fit")) << " (" << verdict_of(s.at("space").at("fit")) << "), time "
-      << interval(s.at("time").at("fit")) << ", both " << interval(s.at("both").at("fit")) << " (" << verdict_of(s.at("both").at("fit"))
+    m << " " << code(name) << " space " << order_interval(s.at("space").at("fit")) << " (" << verdict_of(s.at("space").at("fit")) << "), time "
+      << order_interval(s.at("time").at("fit")) << ", both " << order_interval(s.at("both").at("fit")) << " (" << verdict_of(s.at("both").at("fit"))
       << ");";
   }
   m << "\n* The rings: " << verdict_markdown(secs.at("rings").at("verdict")) << ".\n";
@@ -232,7 +230,7 @@ SectionOutput convergence_section(const Record& c) {
   std::vector<PlotSeries> series;
   for (const auto& name : c.strings("stencils")) {
     const Record& s = c.at(name);
-    t.row({code(name), interval(s.at("space").at("fit")), interval(s.at("time").at("fit")), interval(s.at("both").at("fit")),
+    t.row({code(name), order_interval(s.at("space").at("fit")), order_interval(s.at("time").at("fit")), order_interval(s.at("both").at("fit")),
            verdict_of(s.at("both").at("fit")), fmt(s.number("reference_quadrature_m"), 2), fmt(s.number("smallest_error_m"), 2)});
     series.push_back(table_series(name, s.at("both"), "points", "h", "l2_error_m"));
   }

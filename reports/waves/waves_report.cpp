@@ -14,8 +14,6 @@ namespace stoneskip {
 
 namespace {
 
-std::string interval(const Record& fit) { return order_interval(fit); }
-
 std::string list_text(const std::vector<double>& v, int significant = 3, const std::string& sep = ", ") {
   std::string s;
   for (double x : v) s += (s.empty() ? "" : sep) + fmt(x, significant);
@@ -46,8 +44,8 @@ std::string findings_summary(const Record& secs) {
     m << "* " << code(name) << ": **" << c.at("verdict").text("verdict") << "**";
     if (conv.has_child(name)) {
       const Record& s = conv.at(name);
-      m << "; space order " << interval(s.at("space").at("fit")) << " (" << s.at("space").at("fit").at("verdict").text("verdict")
-        << "), time order " << interval(s.at("time").at("fit")) << " (" << s.at("time").at("fit").at("verdict").text("verdict") << ")";
+      m << "; space order " << order_interval(s.at("space").at("fit")) << " (" << s.at("space").at("fit").at("verdict").text("verdict")
+        << "), time order " << order_interval(s.at("time").at("fit")) << " (" << s.at("time").at("fit").at("verdict").text("verdict") << ")";
     }
     if (iso.has_child(name))
       m << "; phase-speed spread over direction at kd = " << pi_fraction(iso.number("table_kd")) << ": "
@@ -184,7 +182,7 @@ SectionOutput convergence_section(const Record& c) {
       const std::size_t last = pts.rows() - 1;
       const bool time = std::string(kind) == "time";
       t.row({code(n), kind, fmt(pts.column("h")[last], 3) + (time ? " s" : " m"), fmt(pts.column("l2_error_m")[last], 3),
-             fmt(pts.column("max_error_m")[last], 3), interval(q.at("fit")),
+             fmt(pts.column("max_error_m")[last], 3), order_interval(q.at("fit")),
              list_text(q.table("pairwise_all").column("order")), q.at("fit").at("verdict").text("verdict"),
              std::string(kind) == "space" ? "– (FFT only)" : fmt(q.number("cpu_s"), 3)});
     }

@@ -194,9 +194,10 @@ class ReferenceSolve {
   long restarts_ = 0, continued_events_ = 0;
   double t_ = 0;
   bool done_ = false;
-  // The last state CVODE returned (at a root, a t_max stop or a step), and its time: a failed solve
-  // ends there, for CVODE 6.4 leaves its output vector zeroed on some failures (a repeated
-  // right-hand side error: the throw's end read as the origin at rest).
+  // The last state CVODE returned (at a root, a t_max stop, a step, or its last accepted step when it
+  // gave up), and its time: a failed solve ends there, for CVODE 6.4 leaves its output vector
+  // zeroed when it fails on the first step after a restart (the throw's end read as the origin at
+  // rest), and a SUNDIALS call that throws leaves no state to trust.
   RigidState last_good_;
   double last_good_t_ = 0;
   double rcheck_restart_t_ = -1;  // the event a refused continuation was restarted at (once each)
@@ -556,6 +557,14 @@ void ReferenceSolve::integrate() {
       if (!last_error_.empty()) m << " (" << last_error_ << ")";
     }
     t_ = t_ret;
+    // CVODE returns its last accepted step's solution at t_ret: the throw's end, where finite and
+    // past the last state remembered. Failing at once after a restart at an event (t_ret is that
+    // event's time), CVODE 6.4 leaves the vector zeroed: the event's state, remembered, stands.
+    if (t_ret > last_good_t_) {
+      const RigidState s = state();
+      const StateVector y = to_vector(s);
+      if (std::all_of(y.begin(), y.end(), [](double v) { return std::isfinite(v); })) remember_good(t_ret);
+    }
     fail(m.str());
   }
 }

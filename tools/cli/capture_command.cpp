@@ -302,6 +302,20 @@ void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
       std::printf(", ensemble median %d [%d, %d] of %zu%s", sim->bounces_median, sim->bounces_low, sim->bounces_high,
                   sim->ensemble_bounces.size(),
                   sim->ensemble_failed > 0 ? (" (" + std::to_string(sim->ensemble_failed) + " failed)").c_str() : "");
+    if (!sim->corners.empty()) {
+      // Clipped: the nominal throw at the corners of the speed and height intervals.
+      int least = -1, most = -1, failed = 0;
+      for (const auto& c : sim->corners) {
+        if (c.bounces < 0) {
+          ++failed;
+          continue;
+        }
+        least = least < 0 ? c.bounces : std::min(least, c.bounces);
+        most = std::max(most, c.bounces);
+      }
+      if (most >= 0) std::printf("; at the intervals' corners %d to %d", least, most);
+      if (failed > 0) std::printf("%s%d of %zu corner runs failed", most >= 0 ? ", " : "; ", failed, sim->corners.size());
+    }
     std::printf("\n");
   }
 }
@@ -584,7 +598,7 @@ void throw_capture(const CaptureArgs& a) {
   if (a.json) {
     nlohmann::json j = capture_json(an, nullptr);
     add_details(j, an);
-    for (const auto& [name, r] : results) j[name] = json_summary(r);
+    for (const auto& [name, r] : results) j[name] = json_summary(c, r);
     std::cout << json_text(j) << std::endl;
   } else {
     print_verdict(an, nullptr);

@@ -129,15 +129,11 @@ void run(const RunArgs& a) {
   if (a.json) {
     nlohmann::json j;
     if (results.size() == 1) {
-      j = json_summary(results[0].second);
-      j["max_flight_energy_gain_J"] = max_flight_energy_gain_J(c, results[0].second);
+      j = json_summary(c, results[0].second);
       j["case"] = c.title;
     } else {
       j["case"] = c.title;
-      for (const auto& [name, r] : results) {
-        j[name] = json_summary(r);
-        j[name]["max_flight_energy_gain_J"] = max_flight_energy_gain_J(c, r);
-      }
+      for (const auto& [name, r] : results) j[name] = json_summary(c, r);
       j["agreement"] = agreement_json(results[0].second, results[1].second);
     }
     j["convention"] = to_string(c.environment.convention);

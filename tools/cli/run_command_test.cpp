@@ -156,8 +156,8 @@ BOOST_AUTO_TEST_CASE(a_failed_run_is_not_compared_by_its_count) {
 
 BOOST_AUTO_TEST_CASE(a_held_attitude_is_named_and_its_energy_gain_explained) {
   // Oracle: model/README.md — a held attitude discards the torques, so the water's τ·ω on the spin
-  // is never debited and F·v alone can be positive: the paper's throw at 500 rev/s, held, gains
-  // energy in a contact (3.5 J here, 2.9 J by CVODE). The output must say the attitude is held and
+  // is never debited and F·v alone can be positive: the paper's throw at 500 rev/s, held, newtonian,
+  // uniform pressure, gains 3.5 J in a contact (either solver). The output must say the attitude is held and
   // why a gain is possible; a free run names no attitude.
   const std::string held = "run cases/paper_8ms_spin.toml --set environment.attitude=held --set throw.spin_rev_s=500 "
                            "--set environment.water_law=newtonian --set environment.pressure_distribution=uniform";

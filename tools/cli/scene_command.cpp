@@ -206,7 +206,7 @@ nlohmann::json json_of(const StoneCase& c, const SceneOptions& o, const SceneSum
     j["threads"] = o.water->field.threads;
     j["mode"] = to_string(o.water->field.mode);
   }
-  j["throw"] = json_summary(s.stone);
+  j["throw"] = json_summary(c, s.stone);
   j["bounces"] = s.stone.bounces;
   j["outcome"] = to_string(s.stone.outcome);
   return j;

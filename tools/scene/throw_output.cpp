@@ -123,6 +123,13 @@ nlohmann::json json_summary(const ThrowResult& r) {
   return j;
 }
 
+nlohmann::json json_summary(const StoneCase& c, const ThrowResult& r) {
+  nlohmann::json j = json_summary(r);
+  j["max_flight_energy_gain_J"] = max_flight_energy_gain_J(c, r);
+  j["attitude"] = to_string(c.environment.attitude);
+  return j;
+}
+
 Table trajectory_table(const Stone& stone, const ThrowResult& r) {
   Table t;
   t.columns = {"t_s", "x_m", "y_m", "z_m", "vx_m_s", "vy_m_s", "vz_m_s", "qw", "qx", "qy", "qz",

@@ -28,11 +28,14 @@ namespace stoneskip {
 
 std::string text_summary(const StoneCase& c, const ThrowResult& r);
 // The largest rise of total energy over a flight: from the release to the first contact's entry,
-// from each contact's exit to the next one's entry (0 when none rose). In the paper convention the
+// from each contact's exit to the next one's entry (0 when none rose; a last flight that the run
+// ends in, with no contact after it, is not counted). In the paper convention the
 // air law (Eq. 6 as printed, (v·n)² along −n) can push the stone forward; in the physical one a
 // rise is the integrator's.
 double max_flight_energy_gain_J(const StoneCase& c, const ThrowResult& r);
 nlohmann::json json_summary(const ThrowResult& r);
+// The same with what needs the case: max_flight_energy_gain_J (above) and the stone's attitude.
+nlohmann::json json_summary(const StoneCase& c, const ThrowResult& r);
 Table trajectory_table(const Stone& stone, const ThrowResult& r);
 Table contacts_table(const ThrowResult& r);
 

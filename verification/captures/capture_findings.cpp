@@ -276,7 +276,8 @@ Record simulation_findings(const CaptureSimulation& sim, const CaptureFindingsCo
     e.set_table("histogram", h);
     Record in;
     in.set("bounces_low", count(sim.bounces_low)).set("bounces_high", count(sim.bounces_high)).set("failed_runs", sim.ensemble_failed);
-    // Clipped: the nominal throw at the corners of the speed and height bounds, which no member need reach.
+    // Clipped: the nominal throw at the corners of the speed and height intervals, which the clipped
+    // accelerometer's bounds widen past the members' range.
     std::string corners_why;
     if (!sim.corners.empty()) {
       Table k{{"speed_m_s", "height_m", "bounces_realtime"}, {}};
@@ -294,9 +295,9 @@ Record simulation_findings(const CaptureSimulation& sim, const CaptureFindingsCo
       in.set("corner_failed", failed);
       if (most >= 0) in.set("corner_bounces_least", least).set("corner_bounces_most", most);
       const auto& cs = sim.corners;
-      corners_why = "; the nominal throw at the corners of the speed bounds (" + num(cs.front().speed_m_s) + " to " +
-                    num(cs.back().speed_m_s) + " m/s) and the height bounds (" + num(cs.front().height_m) + " to " +
-                    num(cs.back().height_m) + " m), which the accelerometer sets and no member need reach, " +
+      corners_why = "; the nominal throw at the corners of the speed interval (" + num(cs.front().speed_m_s) + " to " +
+                    num(cs.back().speed_m_s) + " m/s) and the height interval (" + num(cs.front().height_m) + " to " +
+                    num(cs.back().height_m) + " m), the clipped accelerometer's bounds joined with the members' range, " +
                     (most < 0 ? std::string("failed")
                               : (least == most ? "makes " + bounce_words(least) : "makes " + num(least) + " to " + bounce_words(most))) +
                     (failed > 0 && most >= 0 ? " (" + num(double(failed)) + " of " + num(double(cs.size())) + " failed)" : std::string());
@@ -305,16 +306,16 @@ Record simulation_findings(const CaptureSimulation& sim, const CaptureFindingsCo
                                   ? bounce_words(sim.bounces_low)
                                   : num(sim.bounces_low) + " to " + bounce_words(sim.bounces_high);
     const std::string why =
-        none ? "no member finished: all " + num(double(sim.ensemble_bounces.size())) +
-                   " members of the capture's ensemble failed in the real-time model"
-             : "the central " + num(100 * (kIntervalHighQuantile - kIntervalLowQuantile)) + " % of the " +
+        (none ? "no member finished: all " + num(double(sim.ensemble_bounces.size())) +
+                    " members of the capture's ensemble failed in the real-time model"
+              : "the central " + num(100 * (kIntervalHighQuantile - kIntervalLowQuantile)) + " % of the " +
                    num(double(sim.ensemble_bounces.size())) + " members of the capture's ensemble make " + range +
                    " in the real-time model (median " + num(sim.bounces_median) + ")" +
                    (sim.ensemble_failed > 0 ? "; " + num(double(sim.ensemble_failed)) + " of the " +
                                                   num(double(sim.ensemble_bounces.size())) +
                                                   " runs failed and have no count, so the spread is that of the rest"
-                                            : std::string()) +
-                   corners_why;
+                                            : std::string())) +
+        corners_why;
     decide_verdict(e, "spread", "bounce_spread", in, why);
   }
   return r;

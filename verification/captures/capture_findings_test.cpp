@@ -322,6 +322,12 @@ BOOST_AUTO_TEST_CASE(simulate_capture_runs_a_clipped_captures_nominal_throw_at_i
       BOOST_TEST(sim.corners[k].bounces == (t.outcome == Outcome::failed ? -1 : t.bounces), "corner " << k);
       ++k;
     }
+  // A nominal throw of zero speed has no direction to scale: its corners count as failed, so the
+  // rule decides nothing from the members alone.
+  a.nominal.velocity_m_s = Vec3::Zero();
+  const CaptureSimulation still = simulate_capture(stone, env, a, o);
+  BOOST_REQUIRE(still.corners.size() == 4u);
+  for (const auto& c : still.corners) BOOST_TEST(c.bounces == -1);
 }
 
 BOOST_AUTO_TEST_CASE(section_keys_name_figures_and_never_collide) {

@@ -37,9 +37,13 @@ CaptureSimulation simulate_capture(const Stone& stone, const Environment& env, c
       if (o.progress) o.progress(sim.ensemble_bounces.size(), a.ensemble.size());
     }
     const double nominal_speed = a.nominal.velocity_m_s.norm();
-    if (a.clipped && nominal_speed > 0)
+    if (a.clipped)
       for (const double speed : {a.speed_m_s.low, a.speed_m_s.high})
         for (const double height : {a.height_m.low, a.height_m.high}) {
+          if (!(nominal_speed > 0)) {  // no direction to scale: counted as failed, so nothing is decided
+            sim.corners.push_back({speed, height, -1});
+            continue;
+          }
           ReleaseKinematics k = a.nominal;
           k.velocity_m_s *= speed / nominal_speed;  // the release's direction, the bound's speed
           k.height_m = height;

@@ -36,7 +36,8 @@ struct CaptureSimulation {
   // Clipped captures: the accelerometer only bounds the speed and the rise, and the members (the
   // lever arm's speed, each raised to its own bound) need not reach those bounds. The nominal throw
   // at the four corners of the speed and height intervals, through the real-time model, so that a
-  // count the bounds allow is not missed (bounces −1: the run failed). Empty when not clipped.
+  // count the bounds allow is not missed (bounces −1: the run failed, or the nominal throw has no
+  // speed to scale). Empty when not clipped.
   struct Corner {
     double speed_m_s = 0, height_m = 0;
     int bounces = 0;

@@ -287,7 +287,7 @@ const std::map<std::string, Rule>& rules() {
       {"bounce_spread",
        [](const Record& in) {
          if (in.has_number("failed_runs") && in.number("failed_runs") > 0) return std::string("not decided: runs failed");
-         // Clipped captures: the nominal throw at the corners of the accelerometer's bounds must make
+         // Clipped captures: the nominal throw at the corners of the speed and height intervals must make
          // a count inside the members' range too (records written before the corners have none).
          if (in.has_number("corner_failed") && in.number("corner_failed") > 0) return std::string("not decided: runs failed");
          if (in.has_number("corner_bounces_least") &&
