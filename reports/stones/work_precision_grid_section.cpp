@@ -145,7 +145,13 @@ SectionOutput work_precision_grid_section(const Record& c) {
     how.where_value = static_cast<double>(f);
     how.x_column = "mean_rhs_evaluations";
     how.y_column = "agreement";
-    agreement.push_back(table_series(families[f], c, "summary", how));
+    const std::string colour = " lt " + std::to_string(f + 1);
+    agreement.push_back(table_series(families[f], c, "summary", how, "linespoints" + colour));
+    // The Wilson 95 % lower bound in the family's colour, dashed (the table's interval; the rule
+    // may judge on it): one legend entry says what the dashed lines are.
+    how.y_column = "wilson_lo";
+    agreement.push_back(table_series(f == 0 ? "dashed: each family's Wilson 95 % lower bound" : "", c, "summary", how,
+                                     "lines dt 2" + colour));
     how.y_column = "median_contact_time_error_s";
     how.rows = TableSource::Rows::y_positive;  // no contact list matched: a gap
     times.push_back(table_series(families[f], c, "summary", how));
@@ -154,7 +160,11 @@ SectionOutput work_precision_grid_section(const Record& c) {
   ax.x_label = "right-hand sides per throw (mean over the grid)";
   ax.y_label = "fraction of throws with the truth's bounce count";
   ax.log_x = true;
-  ax.extra = "set yrange [0:1.05]";
+  // The rule's target, as a line (verification/stones/work_precision_grid.hpp).
+  ax.extra = "set yrange [0:1.05]\nset arrow from graph 0, first " + fmt(ch.number("agreement_target"), 6) +
+             " to graph 1, first " + fmt(ch.number("agreement_target"), 6) + " nohead dt 3 lw 2 lc rgb '#555555' front\n" +
+             "set label 'target " + fmt(ch.number("agreement_target"), 3) + "' at graph 0.01, first " +
+             fmt(ch.number("agreement_target"), 6) + " offset 0, 0.6 front";
   w.figure(line_figure("wpgrid_agreement", "Bounce-count agreement over the grid against work", ax, agreement,
                        "rhs_evaluations", "agreement"));
   ax.y_label = "median contact start or end time error (s)";
