@@ -506,7 +506,10 @@ std::optional<Figure> capture_bounce_figure(const std::string& key, const Record
       marks += ", keyentry w l lw 3 dt 3 lc rgb '" + std::string(kAxis[1]) + "' t 'nominal throw at the corners of the speed and height intervals'";
   }
   std::ostringstream s;
-  s << "set grid y\nset key below\nset xlabel 'bounces'\nset ylabel 'throws of the ensemble'\nset xtics 1\n"
+  // A tic per count where they fit; gnuplot's own spacing for a wide spread (a paper-convention
+  // member can make 100 bounces, whose 100 labels would overprint).
+  s << "set grid y\nset key below\nset xlabel 'bounces'\nset ylabel 'throws of the ensemble'\nset xtics "
+    << (hi - lo > 20 ? "autofreq" : "1") << "\n"
     << "set xrange [" << g(lo - 0.6) << ":" << g(hi + 0.6) << "]\nset yrange [0:*]\nset offsets 0, 0, graph 0.3, 0\n"
     << "set style fill solid 0.6\n"
     << "set boxwidth 0.8\n" << arrows << "plot " << dat(f, "histogram") << " u 1:2 w boxes lc rgb '" << kAxis[0]
