@@ -55,7 +55,9 @@ std::vector<std::pair<double, double>> count_points(const Record& s) {
 // holds to halfway to its neighbours, so a change is drawn at the middle of its bracket and the last
 // value shows over the last half spacing. A failed run ends the outline — never bridged — and is a
 // cross on a row of its own at -1.
-std::vector<PlotSeries> count_curve(const Record& s, const std::string& title, const std::string& colour) {
+// wide: the reference's curve, drawn wider and beneath the real-time one (where the two agree, a
+// border of the reference's colour shows around the real-time line, and its crosses are larger).
+std::vector<PlotSeries> count_curve(const Record& s, const std::string& title, const std::string& colour, bool wide) {
   const std::string counts = s.path() + "/counts", th = s.path() + "/thresholds";
   using Rows = TableSource::Rows;
   auto sources = [&](Rows rows, double at) {
@@ -72,11 +74,12 @@ std::vector<PlotSeries> count_curve(const Record& s, const std::string& title, c
     }
     return out;
   };
-  PlotSeries outline{title, {}, {}, "lines lw 1.5" + colour, {}, {}};
+  PlotSeries outline{title, {}, {}, std::string(wide ? "lines lw 5" : "lines lw 1.5") + colour, {}, {}};
   outline.derived = DerivedSeries{};
   outline.derived->kind = DerivedSeries::Kind::outline;  // through `dots`, the next series (of_offset 1)
   PlotSeries dots{"", {}, {}, "points pt 7 ps 0.5" + colour, sources(Rows::y_nonnegative, kNaN), {}};
-  PlotSeries failed{title + ": solve failed", {}, {}, "points pt 2 ps 1.6 lw 2" + colour, sources(Rows::y_negative, -1), {}};
+  PlotSeries failed{title + ": solve failed", {}, {}, std::string(wide ? "points pt 2 ps 2.6 lw 3" : "points pt 2 ps 1.4 lw 2") + colour,
+                    sources(Rows::y_negative, -1), {}};
   if (s.table("thresholds").has_column("failed_at")) {
     TableSource stopped;  // rows without one have failed_at NaN: not drawn
     stopped.table = th;
@@ -140,7 +143,7 @@ SectionOutput sweeps_section(const Record& c, const Record& fig9) {
     for (std::size_t i = 0; i < names.size(); ++i) {
       const Record& s = pr.at(names[i]);
       const std::string colour = " lc " + std::to_string(i + 1);
-      for (PlotSeries& p : count_curve(s, who(s), colour)) {
+      for (PlotSeries& p : count_curve(s, who(s), colour, s.text("solver") != "realtime")) {
         any_failed |= p.style.rfind("points pt 2", 0) == 0 && !p.x.empty();
         ps.push_back(std::move(p));
       }
@@ -154,7 +157,8 @@ SectionOutput sweeps_section(const Record& c, const Record& fig9) {
     w.text("Dots: every stored run (the grid values and both ends of each bracket). Each count holds to halfway to its "
            "neighbours, so a change is drawn at the middle of its final bracket — the value in the thresholds table below — "
            "and the last grid value holds over the last half spacing. × on the row *failed*: a run whose solve failed; the "
-           "line stops at the run before it and starts again at the run after it, never bridged.");
+           "line stops at the run before it and starts again at the run after it, never bridged. The reference's lines "
+           "and crosses are drawn wider, beneath the real-time ones: where the two agree, the reference shows as a border.");
     std::vector<std::string> headers{axis_of(param)};
     for (const auto& n : names) headers.push_back(who(pr.at(n)));
     MarkdownTable counts(headers);
