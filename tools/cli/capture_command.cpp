@@ -304,15 +304,7 @@ void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
                   sim->ensemble_failed > 0 ? (" (" + std::to_string(sim->ensemble_failed) + " failed)").c_str() : "");
     if (!sim->corners.empty()) {
       // Clipped: the nominal throw at the corners of the speed and height intervals.
-      int least = -1, most = -1, failed = 0;
-      for (const auto& c : sim->corners) {
-        if (c.bounces < 0) {
-          ++failed;
-          continue;
-        }
-        least = least < 0 ? c.bounces : std::min(least, c.bounces);
-        most = std::max(most, c.bounces);
-      }
+      const auto [least, most, failed] = sim->corner_range();
       if (most >= 0) std::printf("; at the intervals' corners %d to %d", least, most);
       if (failed > 0) std::printf("%s%d of %zu corner runs failed", most >= 0 ? ", " : "; ", failed, sim->corners.size());
     }

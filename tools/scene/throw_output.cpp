@@ -24,13 +24,19 @@ std::string cell(double v, int width, int decimals) {
 }
 }  // namespace
 
-double max_flight_energy_gain_J(const StoneCase& c, const ThrowResult& r) {
-  double before = mechanical_energy(c.stone, c.environment, c.initial).total_J(), gain = 0;
+namespace {
+double flight_gain_from(double release_J, const ThrowResult& r) {
+  double before = release_J, gain = 0;
   for (const auto& k : r.contacts) {
     gain = std::max(gain, k.entry_energy_J - before);
     before = k.exit_energy_J;
   }
   return gain;
+}
+}  // namespace
+
+double max_flight_energy_gain_J(const StoneCase& c, const ThrowResult& r) {
+  return flight_gain_from(mechanical_energy(c.stone, c.environment, c.initial).total_J(), r);
 }
 
 std::string text_summary(const StoneCase& c, const ThrowResult& r) {
@@ -51,7 +57,7 @@ std::string text_summary(const StoneCase& c, const ThrowResult& r) {
   // A flight's rise above round-off (a millionth of the release energy): the paper's air law, or
   // the integrator.
   const double release_J = mechanical_energy(c.stone, c.environment, c.initial).total_J();
-  const double flight_gain_J = max_flight_energy_gain_J(c, r);
+  const double flight_gain_J = flight_gain_from(release_J, r);
   if (flight_gain_J > 1e-6 * std::abs(release_J))
     s << "energy    a flight gained " << num(flight_gain_J) << " J ("
       << (c.environment.convention == Convention::paper ? "the paper's air law, Eq. 6 as printed, pushes along −n whatever the flow)\n"

@@ -281,16 +281,8 @@ Record simulation_findings(const CaptureSimulation& sim, const CaptureFindingsCo
     std::string corners_why;
     if (!sim.corners.empty()) {
       Table k{{"speed_m_s", "height_m", "bounces_realtime"}, {}};
-      int least = std::numeric_limits<int>::max(), most = -1, failed = 0;
-      for (const auto& x : sim.corners) {
-        k.add_row({x.speed_m_s, x.height_m, x.bounces >= 0 ? double(x.bounces) : kNaN});
-        if (x.bounces < 0) {
-          ++failed;
-          continue;
-        }
-        least = std::min(least, x.bounces);
-        most = std::max(most, x.bounces);
-      }
+      for (const auto& x : sim.corners) k.add_row({x.speed_m_s, x.height_m, x.bounces >= 0 ? double(x.bounces) : kNaN});
+      const auto [least, most, failed] = sim.corner_range();
       e.set_table("bound_corners", k);
       in.set("corner_failed", failed);
       if (most >= 0) in.set("corner_bounces_least", least).set("corner_bounces_most", most);

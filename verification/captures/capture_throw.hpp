@@ -3,6 +3,7 @@
 // release state through the real-time model and/or the CVODE reference, and the ensemble of
 // perturbed release states (capture_analysis.hpp) through the real-time model only (cheap), which
 // turns the capture's uncertainty into a distribution of bounce counts.
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <optional>
@@ -43,6 +44,23 @@ struct CaptureSimulation {
     int bounces = 0;
   };
   std::vector<Corner> corners;
+  // The corners' counts: least and most over the runs that finished (−1, −1 when none did), and
+  // how many failed.
+  struct CornerRange {
+    int least = -1, most = -1, failed = 0;
+  };
+  CornerRange corner_range() const {
+    CornerRange r;
+    for (const auto& c : corners) {
+      if (c.bounces < 0) {
+        ++r.failed;
+        continue;
+      }
+      r.least = r.least < 0 ? c.bounces : std::min(r.least, c.bounces);
+      r.most = std::max(r.most, c.bounces);
+    }
+    return r;
+  }
   // An ensemble ran and every member failed: no count to take quantiles of.
   bool every_member_failed() const {
     return !ensemble_bounces.empty() && ensemble_failed == static_cast<int>(ensemble_bounces.size());
