@@ -235,8 +235,9 @@ SectionOutput validation_section(const Record& v) {
     for (const auto& ck : curves.strings("keys")) {
       const Record& c = curves.at(ck);
       if (c.text("quantity") != "clanet_min_speed") continue;
-      ps.push_back(table_series("measured, low end", c, "points", "x", "low", "points pt 7 ps 1.5"));
-      ps.push_back(table_series("measured, high end", c, "points", "x", "high", "points pt 5 ps 1.5"));
+      // Open black marks drawn last: the two ends sit 0.1 m/s apart, and filled marks hid one another.
+      ps.push_back(table_series("measured, low end", c, "points", "x", "low", "points pt 6 ps 2.5 lw 2 lc rgb 'black'"));
+      ps.push_back(table_series("measured, high end", c, "points", "x", "high", "points pt 4 ps 2.5 lw 2 lc rgb 'black'"));
     }
     PlotAxes ax;
     ax.x_label = "attack angle α (deg)";

@@ -136,7 +136,7 @@ Figure isotropy_polar_figure(const Record& iso) {
   std::ostringstream p;
   p << "set multiplot layout 1," << kds.size()
     << "\nset polar\nset angles degrees\nset size ratio -1\nunset border\nunset xtics\nunset ytics\n"
-       "set grid polar 45\nset key bottom center horizontal\nset rtics format '%.3f' scale 0.3\n";
+       "set grid polar 45\nset key outside bottom center horizontal\nset rtics format '%g' scale 0.3 offset 0,0.8\n";
   const auto names = iso.strings("stencils");
   for (std::size_t k = 0; k < kds.size(); ++k) {
     double lo = 1e300, hi = -1e300;
@@ -145,8 +145,13 @@ Figure isotropy_polar_figure(const Record& iso) {
         if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
     hi = std::max(hi, 1.0);
     const double span = std::max(hi - lo, 1e-12);
-    p << "set title 'kd = " << pi_fraction(kds[k]) << "'\nset rrange [" << lo - 0.6 * span << ":" << hi + 0.05 * span
-      << "]\nset rtics " << span / 2 << "\nset trange [0:360]\nplot ";
+    // Tics at round values (1, 2 or 5 × 10^n apart, about half the curves' spread), not at the range's
+    // odd start: labels such as 0.995 and 1, which a reader can place.
+    const double raw = span / 2, decade = std::pow(10.0, std::floor(std::log10(raw)));
+    const double step = decade * (raw / decade < 1.5 ? 1 : raw / decade < 3.5 ? 2 : raw / decade < 7.5 ? 5 : 10);
+    const double r0 = lo - 0.6 * span;
+    p << "set title 'kd = " << pi_fraction(kds[k]) << "'\nset rrange [" << r0 << ":" << hi + 0.05 * span
+      << "]\nset rtics " << std::ceil(r0 / step) * step << ", " << step << "\nset trange [0:360]\nplot ";
     bool first = true;
     for (const auto& name : names)
       add_stencil_curve(f, p, first, f.name + "_" + name + "_" + std::to_string(k), iso.at(name), "polar_" + std::to_string(k),

@@ -89,7 +89,7 @@ Record hard_cases_findings(const std::vector<HardCaseResult>& hard, const std::v
     if (h.convention == Convention::physical)
       for (const auto& run : h.runs)
         if (run.energy_created) {
-          energy.push_back(h.file + " (from h = " + num(run.dt_s, 2) + " s)");
+          energy.push_back(h.file + " (from h = " + num(run.dt_s, 4) + " s)");  // the steps are 1e-5 × 2^k: 4 digits
           break;
         }
   }
