@@ -78,6 +78,55 @@ void smooth_conservatively(DraughtPatch& p, int passes, std::vector<double>& scr
   }
 }
 
+namespace {
+
+// The mirror image of index i in walls at −½ and n − ½ (the reflecting wall's ghost: −1 ↔ 0, n ↔ n − 1).
+int mirror_into(int i, int n) {
+  while (i < 0 || i >= n) i = i < 0 ? -1 - i : 2 * n - 1 - i;
+  return i;
+}
+
+// Rebuilds p as a box on the grid holding each point's value at map(i), map(j) (skipped where
+// keep is false), summed where two points land on one.
+template <class Map>
+void remap_onto_grid(DraughtPatch& p, int nx, int ny, std::vector<double>& scratch, Map map) {
+  if (p.empty()) return;
+  if (p.i0 >= 0 && p.j0 >= 0 && p.i0 + p.ni <= nx && p.j0 + p.nj <= ny) return;  // already on the grid
+  int ilo = nx, ihi = -1, jlo = ny, jhi = -1;
+  for (int c = 0; c < p.nj; ++c)
+    for (int a = 0; a < p.ni; ++a) {
+      int i = p.i0 + a, j = p.j0 + c;
+      if (!map(i, j)) continue;
+      ilo = std::min(ilo, i), ihi = std::max(ihi, i), jlo = std::min(jlo, j), jhi = std::max(jhi, j);
+    }
+  scratch = p.b_m;
+  const int i0 = p.i0, j0 = p.j0, ni = p.ni, nj = p.nj;
+  if (ihi < ilo || jhi < jlo) {
+    p.clear();
+    return;
+  }
+  p.reset(ilo, jlo, ihi - ilo + 1, jhi - jlo + 1);
+  for (int c = 0; c < nj; ++c)
+    for (int a = 0; a < ni; ++a) {
+      int i = i0 + a, j = j0 + c;
+      if (map(i, j)) p.at(i - ilo, j - jlo) += scratch[static_cast<std::size_t>(c) * ni + a];
+    }
+}
+
+}  // namespace
+
+void drop_beyond_rim(DraughtPatch& p, int nx, int ny, std::vector<double>& scratch) {
+  remap_onto_grid(p, nx, ny, scratch, [&](int& i, int& j) { return i >= 0 && i < nx && j >= 0 && j < ny; });
+}
+
+void fold_onto_walled_grid(DraughtPatch& p, int nx, int ny, std::vector<double>& scratch) {
+  remap_onto_grid(p, nx, ny, scratch, [&](int& i, int& j) {
+    i = mirror_into(i, nx);
+    j = mirror_into(j, ny);
+    return true;
+  });
+}
+
 PressureHeadSummary rasterise_pressure_head(const std::vector<FacePush>& pushes, double cell_m,
                                             const FieldPlacement& placement, double rho_g, DraughtPatch& out) {
   PressureHeadSummary summary;

@@ -41,6 +41,16 @@ PressureHeadSummary rasterise_pressure_head(const std::vector<FacePush>& pushes,
 // grid resolves. scratch: reused storage.
 void smooth_conservatively(DraughtPatch& patch, int passes, std::vector<double>& scratch);
 
+// A walled (non-periodic) pond of nx × ny points: the head's points beyond the rim are dropped (a
+// stone beyond the rim presses on no water; the box shrinks to its part on the grid).
+void drop_beyond_rim(DraughtPatch& patch, int nx, int ny, std::vector<double>& scratch);
+
+// A walled pond: the head's points beyond the rim moved onto the grid, each onto its mirror image
+// in the wall (i → −1 − i below, i → 2 nx − 1 − i above: the reflecting wall's ghost, model/README.md
+// §2.1; repeated for a spill wider than the grid), so that smoothing next to a wall keeps Σ h
+// (smooth_conservatively spills past the rim). The box becomes one on the grid.
+void fold_onto_walled_grid(DraughtPatch& patch, int nx, int ny, std::vector<double>& scratch);
+
 // The area of the part of a convex polygon (xy, cell units, at most 8 vertices, either winding)
 // inside the square [i − ½, i + ½] × [j − ½, j + ½].
 double overlap_with_cell(const double* x, const double* y, int count, int i, int j);

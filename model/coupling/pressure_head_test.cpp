@@ -3,6 +3,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <numeric>
 #include <random>
 
 #include "model/coupling/pressure_head.hpp"
@@ -94,6 +95,47 @@ BOOST_AUTO_TEST_CASE(a_stone_lying_on_the_grid_spreads_over_the_cells_it_covers)
   }
   BOOST_TEST(largest <= full * (1 + 1e-12));
   BOOST_TEST(full_cells >= 80);  // the ≈ 110 cells of 5 mm inside a 3 cm disk, less its rim
+}
+
+BOOST_AUTO_TEST_CASE(a_head_spilt_past_a_wall_is_reflected_onto_the_grid_and_dropped_when_asked) {
+  // Oracle: the reflecting wall's ghost rule worked by hand on a 3 × 2 grid. A 5 × 4 box from
+  // (−1, −1) with value 1 + a + 10 c at box point (a, c): column −1 lands on column 0, column 3 on
+  // column 2 (2·3 − 1 − 3), row −1 on row 0 and row 2 on row 1 (2·2 − 1 − 2); the sum is kept
+  // exactly (small integers). Dropping keeps the 3 × 2 inside only.
+  auto box = [] {
+    DraughtPatch p;
+    p.reset(-1, -1, 5, 4);
+    for (int c = 0; c < 4; ++c)
+      for (int a = 0; a < 5; ++a) p.at(a, c) = 1 + a + 10 * c;
+    return p;
+  };
+  std::vector<double> scratch;
+  DraughtPatch folded = box();
+  const double total = std::accumulate(folded.b_m.begin(), folded.b_m.end(), 0.0);
+  fold_onto_walled_grid(folded, 3, 2, scratch);
+  BOOST_TEST((folded.i0 == 0 && folded.j0 == 0 && folded.ni == 3 && folded.nj == 2));
+  BOOST_TEST(std::accumulate(folded.b_m.begin(), folded.b_m.end(), 0.0) == total);
+  // Grid point (0, 0) receives box points with i ∈ {−1, 0} (a = 0, 1) and j ∈ {−1, 0} (c = 0, 1).
+  double expect00 = 0;
+  for (int a : {0, 1})
+    for (int c : {0, 1}) expect00 += 1 + a + 10 * c;
+  BOOST_TEST(folded.at(0, 0) == expect00);
+  // Grid point (2, 1) receives i ∈ {2, 3} (a = 3, 4) and j ∈ {1, 2} (c = 2, 3).
+  double expect21 = 0;
+  for (int a : {3, 4})
+    for (int c : {2, 3}) expect21 += 1 + a + 10 * c;
+  BOOST_TEST(folded.at(2, 1) == expect21);
+
+  DraughtPatch dropped = box();
+  drop_beyond_rim(dropped, 3, 2, scratch);
+  BOOST_TEST((dropped.i0 == 0 && dropped.j0 == 0 && dropped.ni == 3 && dropped.nj == 2));
+  BOOST_TEST(dropped.at(0, 0) == 1 + 1 + 10 * 1);  // box point (1, 1)
+  BOOST_TEST(dropped.at(2, 1) == 1 + 3 + 10 * 2);  // box point (3, 2)
+  DraughtPatch outside;
+  outside.reset(5, 0, 2, 2);
+  outside.at(0, 0) = 1;
+  drop_beyond_rim(outside, 3, 2, scratch);
+  BOOST_TEST(outside.empty());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

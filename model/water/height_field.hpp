@@ -169,6 +169,17 @@ class HeightField {
     const std::size_t k = index(i, j);
     return f64_ ? cur64_[k] : static_cast<double>(cur32_[k]);
   }
+  // Where a draught patch's point (i, j) acts (model/water/draught_patch.hpp): wrapped onto the grid
+  // on a periodic field (true); on any other, true only inside the grid (beyond the rim it is ignored).
+  bool patch_point_on_grid(int& i, int& j) const {
+    const int nx = options_.nx, ny = options_.ny;
+    if (options_.boundary == Boundary::periodic) {
+      i = ((i % nx) + nx) % nx;
+      j = ((j % ny) + ny) % ny;
+      return true;
+    }
+    return i >= 0 && i < nx && j >= 0 && j < ny;
+  }
   // z at the previous time level.
   double previous_height(int i, int j) const {
     const std::size_t k = index(i, j);

@@ -152,7 +152,9 @@ SectionOutput coupling_section(const Record& c) {
       // The two forcings of two-way coupling (model/README.md §2.4): what the water received against what the stone received.
       const Record& fr = r.at("forcing");
       w.text("What the water receives, by forcing (the scene's own: " + code(fr.text("scene_forcing")) +
-             "). The stone's hydrodynamic vertical impulse is Σ F_z h over its steps; the water's is Σ Δt Σ h̄ ρ g d² over its steps. "
+             "). The stone's hydrodynamic vertical impulse is its momentum change less gravity's and the air's, step by step "
+             "(what its stepper applied); the water's is Σ Δt Σ h̄ ρ g d² over its steps. Pressure forcing scales each stone "
+             "step's head to carry that step's impulse. "
              "The energy budget: the waves' energy E (the leapfrog's own, solvers/scene/wave_energy.hpp) gains the pressure's work W "
              "and loses what damping takes, D.");
       MarkdownTable ft({"forcing", "stone impulse (N s)", "water impulse (N s)", "water / stone", "W (J)", "D (J)", "E start … end (J)",

@@ -183,22 +183,23 @@ class SceneLoop {
 
   // The faces' pushes at the start of each stone step, filled by the stepper's own first
   // right-hand side (run_realtime's step_start_pushes): read at the next step's start.
-  std::vector<FacePush>* step_start_pushes() { return two_way_ ? &pushes_ : nullptr; }
+  std::vector<FacePush>* step_start_pushes() { return pressure_ ? &pushes_ : nullptr; }
 
   // Called at the start of every stone step: the step that just ended hands over the head it
   // pressed with, the water catches up with the stone's clock, the draught samples due are taken
   // from the stone's state, and the frames that ended are closed.
   void at_stone_step(double t_s, const RigidState& s) {
     ++cost_.stone_steps;
+    const double impulse_N_s = two_way_ ? stone_step_impulse(t_s, s) : 0.0;
     if (pressure_) {
       press();
-      finish_piece(t_s);
+      finish_piece(t_s, impulse_N_s);
       advance_to(t_s);
       out_.draught_samples += 1;  // the head of the step starting here, read at its end
       ++cost_.draught_samples;
     } else {
       catch_up(t_s, &s);
-      if (two_way_) track_stone_force(t_s);
+      if (two_way_) track_stone_force(impulse_N_s);
     }
     take_deferred();  // the stone's next step reads the surface
     while (closed_ < frames_ && frame_time(closed_ + 1) <= t_s) close_frame(StoneStatus::in_play, s);
@@ -207,14 +208,15 @@ class SceneLoop {
   // After the throw: the stone's last state (it is sampled up to end_s), then the water alone.
   void after_throw(const ThrowResult& r) {
     const StoneStatus status = r.outcome == Outcome::sank ? StoneStatus::sank : StoneStatus::ended;
+    const double impulse_N_s = two_way_ ? stone_step_impulse(r.end_time_s, r.final_state) : 0.0;
     if (pressure_) {
-      press();                     // the last step's head, up to where the throw ended
-      finish_piece(r.end_time_s);  // the stone leaves the scene: no head from here on
+      press();                                  // the last step's head, up to where the throw ended
+      finish_piece(r.end_time_s, impulse_N_s);  // the stone leaves the scene: no head from here on
       pending_wet_ = false;
       in_contact_ = false;
     } else {
       catch_up(r.end_time_s, &r.final_state);
-      if (two_way_) track_stone_force(r.end_time_s);
+      if (two_way_) track_stone_force(impulse_N_s);
     }
     if (o_.end == SceneEnd::with_the_throw) {
       while (closed_ < frames_ && frame_time(closed_ + 1) <= r.end_time_s) close_frame(status, r.final_state);
@@ -349,19 +351,51 @@ class SceneLoop {
     owing_.clear();
   }
 
+  // The water's vertical impulse on the stone over its step that ends at (t_s, s), from the stone's
+  // own momentum: J = m Δv_z + m g Δt − J_air, J_air by the trapezoidal rule on the air force at the
+  // step's two ends (the air's force is smooth and small: its quadrature error is far below the
+  // water's). This is the impulse the stepper actually applied, whatever its scheme; Σ F_z(t₀) h,
+  // the force at each step's start held over it, is only the semi-implicit Euler stepper's (with
+  // bs32 at 1e-8 it was 0.4 % off on the seed's scene). 0 for the first call (no step has ended).
+  double stone_step_impulse(double t_s, const RigidState& s) {
+    const double m = o_.stone.mass.mass_kg, air_z = air_loads(o_.stone, o_.environment, s).force_N.z();
+    double j = 0;
+    if (have_step_start_ && t_s > step_start_t_) {
+      const double h = t_s - step_start_t_;
+      j = m * (s.velocity_m_s.z() - step_start_vz_) + m * o_.environment.gravity_m_s2 * h - 0.5 * (air_z + step_start_air_z_) * h;
+    }
+    have_step_start_ = true;
+    step_start_t_ = t_s;
+    step_start_vz_ = s.velocity_m_s.z();
+    step_start_air_z_ = air_z;
+    return j;
+  }
+
   // Pressure forcing: the head held over the stone step [pending_t_, t_end] is spread over the
   // water steps with the hat weights: a piece [a, b] ⊂ [t_n, t_n+1] gives step n the weight
   // ∫ hatₙ/Δt = (b − a)/Δt · (1 − r) and step n+1 (b − a)/Δt · r, r = ((a + b)/2 − t_n)/Δt.
-  void finish_piece(double t_end) {
+  // The head has the shape of the faces' pushes at the step's start and carries the impulse the
+  // stone received over the step (impulse_N_s, stone_step_impulse): it is scaled by that over
+  // F_z(t₀) h, so the water receives what the stone gives up, to round-off, under every scheme.
+  // A step that began dry carries its impulse (the touch within it; in flight only the air's
+  // quadrature error) to the next step if that one begins pressing; else it is dropped, from the
+  // stone's sum as from the water's (a touch wholly inside one step, which bs32's located
+  // crossings do not allow, is then missed by both).
+  void finish_piece(double t_end, double impulse_N_s) {
     take_deferred();  // the pieces go to the windows of the field's current level
     if (!(t_end > pending_t_)) return;
-    if (pending_wet_) {
-      const double len = t_end - pending_t_;
-      out_.stone_vertical_impulse_N_s += pending_force_N_ * len;
+    if (!pending_wet_) {
+      carried_N_s_ = impulse_N_s;
+    } else {
+      impulse_N_s += carried_N_s_;
+      carried_N_s_ = 0;
+      out_.stone_vertical_impulse_N_s += impulse_N_s;
+      const double len = t_end - pending_t_, held_N_s = pending_force_N_ * len;
+      const double scale = held_N_s != 0 && std::isfinite(impulse_N_s) ? impulse_N_s / held_N_s : 1.0;
       ContactImpulse& c = out_.contact_impulses.back();
       c.end_s = t_end;
-      c.stone_N_s += pending_force_N_ * len;
-      c.water_N_s += pending_rastered_N_ * len;
+      c.stone_N_s += impulse_N_s;
+      c.water_N_s += scale * pending_rastered_N_ * len;
       const double slack = 1e-9 * dt_s_;
       for (double a = pending_t_; a < t_end;) {
         const double tn = field_->time_s(), tn1 = tn + dt_s_;
@@ -372,8 +406,8 @@ class SceneLoop {
         const double b = std::min(t_end, tn1);
         const double r = std::clamp((0.5 * (a + b) - tn) / dt_s_, 0.0, 1.0);
         const double w0 = steady_now();
-        window_->add(head_, (b - a) / dt_s_ * (1 - r));
-        next_window_->add(head_, (b - a) / dt_s_ * r);
+        window_->add(head_, scale * (b - a) / dt_s_ * (1 - r));
+        next_window_->add(head_, scale * (b - a) / dt_s_ * r);
         cost_.draught_wall_s += steady_now() - w0;
         a = b;
       }
@@ -403,16 +437,9 @@ class SceneLoop {
     cost_.draught_wall_s += steady_now() - w0;
   }
 
-  // Displacement forcing: the stone's vertical water force at the start of each of its steps
-  // (the sum of the step's pushes), held over the step (the semi-implicit stepper's own
-  // quadrature of its impulse).
-  void track_stone_force(double t_s) {
-    double force_N = 0;
-    for (const FacePush& p : pushes_) force_N += p.force_N.z();
-    pushes_.clear();
-    if (t_s > force_t_) out_.stone_vertical_impulse_N_s += force_N * (t_s - force_t_);
-    force_t_ = t_s;
-  }
+  // Displacement forcing: the stone's vertical impulse over the step that just ended
+  // (stone_step_impulse); the faces' pushes are not asked for.
+  void track_stone_force(double impulse_N_s) { out_.stone_vertical_impulse_N_s += impulse_N_s; }
 
   void sample(const RigidState& s, int due) {
     const double w0 = steady_now();
@@ -449,10 +476,15 @@ class SceneLoop {
         // The binomial passes are linear: smoothing the step's sum once is smoothing every stone
         // step's head (to round-off), at the cost of one patch per water step.
         smooth_conservatively(step_patch_, kPressureSmoothingPasses, smooth_scratch_);
+        // The window kept only the grid's points; what the smoothing spilt past a wall goes back
+        // onto the grid by reflection, so the water still receives the whole head.
+        if (o_.water->field.boundary != Boundary::periodic)
+          fold_onto_walled_grid(step_patch_, o_.water->field.nx, o_.water->field.ny, smooth_scratch_);
       }
-      const double cell = o_.water->field.cell_m;
-      out_.draught_impulse_m3_s += dt_s_ * step_patch_.volume_m3(cell);
-      out_.water_vertical_impulse_N_s += dt_s_ * rho_g_ * step_patch_.volume_m3(cell);
+      // What the water receives: the patch's points on the grid (beyond a pond's rim they are ignored).
+      const double kept_m3 = kept_volume_m3(step_patch_);
+      out_.draught_impulse_m3_s += dt_s_ * kept_m3;
+      out_.water_vertical_impulse_N_s += dt_s_ * rho_g_ * kept_m3;
       forced_step();
       node_ = 0;
     } else {
@@ -464,20 +496,43 @@ class SceneLoop {
 
   // HeightField::step(patch) with the budget's terms: Wₙ = ρ g d² ⟨hⁿ, (zⁿ⁻¹ − zⁿ⁺¹)/2⟩ on the
   // patch, and Dₙ from the whole grid (solvers/scene/wave_energy.hpp).
+  // Σ b d² over the patch's points that act on the grid (HeightField::patch_point_on_grid).
+  double kept_volume_m3(const DraughtPatch& p) const {
+    double s = 0;
+    for (int c = 0; c < p.nj; ++c)
+      for (int a = 0; a < p.ni; ++a) {
+        int i = p.i0 + a, j = p.j0 + c;
+        if (field_->patch_point_on_grid(i, j)) s += p.at(a, c);
+      }
+    const double cell = o_.water->field.cell_m;
+    return s * cell * cell;
+  }
+
+  // Σ b z over the patch's points where they act on the grid (a periodic patch's images wrapped, a
+  // point beyond another pond's rim left out): reading z at the unwrapped index would read outside
+  // the field's storage.
+  double patch_dot(const DraughtPatch& p, bool previous) const {
+    const HeightField& f = *field_;
+    double s = 0;
+    for (int c = 0; c < p.nj; ++c)
+      for (int a = 0; a < p.ni; ++a) {
+        int i = p.i0 + a, j = p.j0 + c;
+        if (f.patch_point_on_grid(i, j)) s += p.at(a, c) * (previous ? f.previous_height(i, j) : f.height(i, j));
+      }
+    return s;
+  }
+
   void forced_step() {
     const HeightField& f = *field_;
     const DraughtPatch& p = step_patch_;
-    double work = 0;
-    for (int c = 0; c < p.nj; ++c)
-      for (int a = 0; a < p.ni; ++a) work += p.at(a, c) * f.previous_height(p.i0 + a, p.j0 + c);
+    double work = patch_dot(p, true);
     if (energy_ && out_.energy.measured && o_.water->field.damping_per_s > 0) {
       before_.resize(static_cast<std::size_t>(f.nx()) * f.ny());
       for (int j = 0; j < f.ny(); ++j)
         for (int i = 0; i < f.nx(); ++i) before_[static_cast<std::size_t>(j) * f.nx() + i] = f.previous_height(i, j);
     }
     field_->step(p);
-    for (int c = 0; c < p.nj; ++c)
-      for (int a = 0; a < p.ni; ++a) work -= p.at(a, c) * f.height(p.i0 + a, p.j0 + c);
+    work -= patch_dot(p, false);
     const double cell = o_.water->field.cell_m;
     out_.energy.pressure_work_J += 0.5 * rho_g_ * cell * cell * work;
     if (energy_ && out_.energy.measured && o_.water->field.damping_per_s > 0) {
@@ -551,7 +606,10 @@ class SceneLoop {
   std::vector<double> smooth_scratch_;
   double pending_t_ = 0, pending_force_N_ = 0, pending_rastered_N_ = 0;
   bool pending_wet_ = false, in_contact_ = false;
-  double force_t_ = 0;  // displacement: the start of the stone step whose pushes are pending
+  // The stone step that ends at the next call of stone_step_impulse: its start, v_z and air force.
+  double carried_N_s_ = 0;  // pressure: the impulse of a step that began dry (finish_piece)
+  bool have_step_start_ = false;
+  double step_start_t_ = 0, step_start_vz_ = 0, step_start_air_z_ = 0;
   int node_ = 0;  // draught samples taken in the current window
   bool in_episode_ = false;
   double last_sample_s_ = 0;

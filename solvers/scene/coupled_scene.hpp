@@ -32,8 +32,9 @@
 //                 (solvers/scene/draught_window.hpp: K samples per step, K = 1 the spec's point
 //                 sample at t_n), each sample taken at the start of the first stone step at or
 //                 after its time.
-// Both record the stone's hydrodynamic vertical impulse Σ F_z h over the stone's steps and the
-// vertical impulse the water received, Σ Δt Σ h̄ ρ_w g d² over the water's steps, and (with
+// Both record the water's vertical impulse on the stone (its momentum change less gravity's and the
+// air's, step by step) and the vertical impulse the water received, Σ Δt Σ h̄ ρ_w g d² over the
+// water's steps, and (with
 // energy_budget) the waves' energy budget of solvers/scene/wave_energy.hpp.
 // Stability (model/README.md §2.4): under a floating stone b follows z with unit gain, so the two-way step
 // is stable only for σ = cΔt/d ≤ coupled_courant_limit(stencil) = the free limit / √2. A scene
@@ -166,7 +167,8 @@ struct DraughtEpisode {
 };
 
 // The vertical impulse over one run of consecutive stone steps with the stone pressing on the
-// water (pressure forcing): what the stone received, Σ F_z h, and what the grid received from
+// water (pressure forcing): what the stone received (its momentum change less gravity's and the
+// air's, step by step: SceneSummary::stone_vertical_impulse_N_s), and what the grid received from
 // the rasterised head, Σ (Σ h ρ_w g d²) h (model/coupling/pressure_head.hpp) over the points the
 // grid keeps (none beyond a pond's rim: there the water receives nothing).
 struct ContactImpulse {
@@ -196,10 +198,13 @@ struct SceneSummary {
   double max_draught_volume_m3 = 0;    // largest Σ b d² of one sample
   double draught_impulse_m3_s = 0;     // ∫ Σ b d² dt as applied to the water (Σ over steps of Δt Σ b̄ d²)
   std::vector<DraughtEpisode> episodes;  // two_way, displacement
-  // two_way: the stone's hydrodynamic vertical impulse Σ F_z h over its steps (up to the scene's
-  // end or the throw's), and the vertical impulse the field's steps received, Σ Δt Σ h̄ ρ_w g d²
-  // (pressure: equal up to what lies beyond a non-periodic pond's rim or in the last
-  // unfinished step; displacement: ρ_w g times the draught's impulse).
+  // two_way: the water's vertical impulse on the stone over its steps (up to the scene's end or
+  // the throw's), from the stone's own momentum, step by step: m Δv_z + m g Δt less the air's
+  // impulse (trapezoidal on the step's ends); it is what the stepper applied, under every scheme.
+  // And the vertical impulse the field's steps received, Σ Δt Σ h̄ ρ_w g d² over the grid's points
+  // (pressure: each step's head is scaled to carry the stone's impulse of that step, so the two
+  // are equal up to what lies beyond a non-periodic pond's rim, a step that began dry, or the last
+  // unfinished water step; displacement: ρ_w g times the draught's impulse, a different quantity).
   double stone_vertical_impulse_N_s = 0;
   double water_vertical_impulse_N_s = 0;
   std::vector<ContactImpulse> contact_impulses;  // pressure

@@ -127,7 +127,11 @@ DraughtField trajectory_pressure_head(const Stone& stone, const Environment& env
     if (!s) return;
     water_loads(stone, env, *s, nullptr, &st->pushes);  // the flat surface: still water
     rasterise_pressure_head(st->pushes, cell, placement, rho_g, st->patch);
+    // As the scene does (solvers/scene/coupled_scene.cpp): a walled pond keeps the grid's points of
+    // the head, and what the smoothing spills past a wall is reflected back onto the grid.
+    if (!periodic) drop_beyond_rim(st->patch, nx, ny, st->scratch);
     smooth_conservatively(st->patch, smoothing_passes, st->scratch);
+    if (!periodic) fold_onto_walled_grid(st->patch, nx, ny, st->scratch);
     add_wrapped(st->patch, nx, ny, periodic, h);
   };
 }
