@@ -46,9 +46,12 @@ void store_forcing(Record& k, const SceneSummary& s) {
   k.set("bounces", s.stone.bounces);
 }
 
-// The bounce counts of an ensemble of throws of one setting, each run only as long as its throw;
-// a throw whose solve failed has no count: NaN (its bounces until the failure are not its count).
+// The bounce counts of an ensemble of throws of one setting, each run only as long as its throw
+// and no longer than the scene (the contacts table beside it stops there: a quick report's 0.6 s
+// scene once had members counted over the throw's own 3 s); a throw whose solve failed has no
+// count: NaN (its bounces until the failure are not its count).
 std::vector<double> ensemble_bounces(SceneOptions s, const std::vector<double>& factors) {
+  s.stone_steps.t_max_s = std::min(s.stone_steps.t_max_s, s.end_s());
   s.end = SceneEnd::with_the_throw;
   std::vector<double> out;
   for (double f : factors) {
@@ -184,6 +187,7 @@ Record scene_coupling_findings(const SceneStudiesOptions& o, const ProgressFacto
     Record& er = r.child("ensemble");
     er.set_table("members", ens);
     er.set("members_per_setting", static_cast<long>(factors.size()));
+    er.set("horizon_s", std::min(two.stone_steps.t_max_s, two.end_s()));
     er.set("perturbation_smallest", o.coupling.perturbation_smallest);
     er.set("perturbation_largest", o.coupling.perturbation_largest);
     er.set("mean_two_way", md.mean_a);
@@ -202,7 +206,8 @@ Record scene_coupling_findings(const SceneStudiesOptions& o, const ProgressFacto
     else if (ca.empty() != cb.empty())
       first_change = std::numeric_limits<double>::infinity();
     std::ostringstream reason;
-    reason << "bounces over " << factors.size() << " throws each (speed × 1 ± 1e" << num(std::log10(o.coupling.perturbation_smallest), 2)
+    reason << "bounces over " << factors.size() << " throws each, each counted up to the scene's end at "
+           << duration(std::min(two.stone_steps.t_max_s, two.end_s())) << " (speed × 1 ± 1e" << num(std::log10(o.coupling.perturbation_smallest), 2)
            << " … 1e" << num(std::log10(o.coupling.perturbation_largest), 2) << "): two-way " << num(md.mean_a, 3) << " ± " << num(md.sd_a, 2)
            << ", one-way " << num(md.mean_b, 3) << " ± " << num(md.sd_b, 2) << " (mean ± sd); difference " << num(md.difference, 3)
            << ", 95 % interval [" << num(md.low, 3) << ", " << num(md.high, 3) << "] (Welch; " << failed_two << " and "
