@@ -312,9 +312,23 @@ void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
   }
 }
 
+// The throw is the capture's: a --set (or --scene-set) of the case's [throw] (however its key is written: "throw",
+// '"throw"', " throw ") would be ignored without a word. A malformed key is left to the case loader.
+void refuse_throw_sets(const std::string& command, const std::vector<std::string>& sets, const std::string& flag = "--set") {
+  for (const std::string& set : sets) {
+    const auto eq = assignment_equals(set);
+    std::vector<std::string> parts;
+    if (eq == std::string::npos || !parse_dotted_key(set.substr(0, eq), parts, nullptr) || parts.front() != "throw")
+      continue;
+    throw_input_error(flag + " " + join_dotted_key(parts), 0, "",
+                      command + " takes the throw from the capture; [throw] keys of the case are not used");
+  }
+}
+
 // The scene case of --scene, checked before any work: it must have a water field.
 std::optional<StoneCase> load_scene_case(const CaptureArgs& a) {
   if (a.scene.empty()) return std::nullopt;
+  refuse_throw_sets("capture --scene", a.scene_sets, "--scene-set");
   StoneCase c;
   try {
     c = load_stone_case(a.scene, a.scene_sets);
@@ -401,19 +415,6 @@ std::vector<fs::path> inputs_of(const CaptureArgs& a, const StoneCase* c, const 
       in.push_back(k->spec.mesh_file);
     }
   return in;
-}
-
-// The throw is the capture's: a --set of the case's [throw] (however its key is written: "throw",
-// '"throw"', " throw ") would be ignored without a word. A malformed key is left to the case loader.
-void refuse_throw_sets(const std::string& command, const std::vector<std::string>& sets) {
-  for (const std::string& set : sets) {
-    const auto eq = assignment_equals(set);
-    std::vector<std::string> parts;
-    if (eq == std::string::npos || !parse_dotted_key(set.substr(0, eq), parts, nullptr) || parts.front() != "throw")
-      continue;
-    throw_input_error("--set " + join_dotted_key(parts), 0, "",
-                      command + " takes the throw from the capture; [throw] keys of the case are not used");
-  }
 }
 
 void validate(const CaptureArgs& a) {

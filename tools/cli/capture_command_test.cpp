@@ -160,6 +160,14 @@ BOOST_AUTO_TEST_CASE(capture_throw_refuses_a_throw_override_and_a_throw_past_the
       BOOST_TEST(r.status == 2, command << " " << set << ": " << r.out);
       BOOST_TEST(r.out.find("--set throw.speed_m_s: ") != std::string::npos, r.out);
     }
+  // The scene's [throw] too: --scene-set throw.speed_m_s=3 ran, ignored, with exit 0.
+  for (const std::string command : {"capture throw --solver realtime", "capture validate --members 0"}) {
+    const auto r = stoneskip::test::run_stoneskip(command + " " + file +
+                                                  " --scene cases/captures/pond_two_way.toml --scene-set throw.speed_m_s=3");
+    BOOST_TEST(r.status == 2, command << ": " << r.out);
+    BOOST_TEST(r.out.find("--scene-set throw.speed_m_s: ") != std::string::npos, r.out);
+    BOOST_TEST(std::count(r.out.begin(), r.out.end(), '\n') == 1, r.out);
+  }
   const auto heavy = stoneskip::test::run_stoneskip("capture throw " + file + " --solver realtime --set solver.t_max_s=100 --set stone.segments=1000");
   BOOST_TEST(heavy.status == 2, heavy.out);
   BOOST_TEST(heavy.out.find("above the limit") != std::string::npos, heavy.out);
