@@ -9,7 +9,20 @@ namespace stoneskip {
 
 class InputError : public std::runtime_error {
  public:
-  explicit InputError(const std::string& one_line_message) : std::runtime_error(one_line_message) {}
+  explicit InputError(const std::string& one_line_message) : std::runtime_error(without_nul(one_line_message)) {}
+
+ private:
+  // what() is a C string: a NUL quoted from the input (a TOML key "a\u0000b") would end the message
+  // there, so it is written \x00, as printable_text writes the other control characters.
+  static std::string without_nul(const std::string& s) {
+    std::string out;
+    out.reserve(s.size());
+    for (char c : s) {
+      if (c == '\0') out += "\\x00";
+      else out += c;
+    }
+    return out;
+  }
 };
 
 // "FILE:LINE: KEY: WHAT" with the empty parts left out.

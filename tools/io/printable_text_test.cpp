@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "tools/io/input_error.hpp"
 #include "tools/io/printable_text.hpp"
 
 using stoneskip::printable_text;
@@ -37,6 +38,14 @@ BOOST_AUTO_TEST_CASE(bytes_outside_utf8_are_escaped_one_by_one) {
   // A lead byte followed by a valid sequence: only the lead is escaped, the rest is kept.
   BOOST_TEST(printable_text("\xE2\xC3\xA9") == "\\xE2\xC3\xA9");
   BOOST_TEST(printable_text("\xFF\xFE") == "\\xFF\\xFE");
+}
+
+BOOST_AUTO_TEST_CASE(an_input_error_keeps_what_follows_a_nul) {
+  // Oracle: the message as written, with the NUL spelt \x00. what() is a C string, so a key
+  // "spin_rev_s\0x" from a TOML file once printed "throw.spin_rev_s" and nothing after it: a
+  // valid key's name, and not what was wrong.
+  const stoneskip::InputError e(std::string("f.toml:20: throw.spin_rev_s\0x: unknown key", 42));
+  BOOST_TEST(std::string(e.what()) == "f.toml:20: throw.spin_rev_s\\x00x: unknown key");
 }
 
 BOOST_AUTO_TEST_SUITE_END()
