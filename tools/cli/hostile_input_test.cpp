@@ -6,6 +6,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
 #include <sys/wait.h>
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -681,6 +683,29 @@ BOOST_AUTO_TEST_CASE(output_that_cannot_reach_stdout_is_an_error) {
   BOOST_TEST(WEXITSTATUS(status) == 2);
   // The same command to a pipe succeeds: the failure is the device's, not the command's.
   BOOST_TEST(stoneskip::test::run_stoneskip("mesh --json cases/paper_8ms_spin.toml").status == 0);
+}
+
+BOOST_AUTO_TEST_CASE(an_hdf5_output_that_does_not_fit_leaves_nothing_and_says_why) {
+  // main: on a full disk every HDF5 writer reported "wrote FILE", renamed a corrupt file into place
+  // and then died of a segfault in HDF5's clean-up at exit. A file-size limit (RLIMIT_FSIZE, with
+  // SIGXFSZ ignored, both inherited by the child) stands in for the full disk: a write past it
+  // fails with EFBIG, as one past a full disk fails with ENOSPC. Oracle: the bad-output rule, exit
+  // 2 and one line naming the file, and no file left (neither the output nor its temporary).
+  Scratch s;
+  const fs::path good = s.write("good.toml", kGood);
+  rlimit old{};
+  BOOST_REQUIRE(::getrlimit(RLIMIT_FSIZE, &old) == 0);
+  const rlimit small{20000, old.rlim_max};  // the run's file is about 70 kB
+  void (*previous)(int) = std::signal(SIGXFSZ, SIG_IGN);
+  BOOST_REQUIRE(::setrlimit(RLIMIT_FSIZE, &small) == 0);
+  const RanApart r = run_apart("run " + good.string() + " --out " + (s.dir / "r.h5").string());
+  ::setrlimit(RLIMIT_FSIZE, &old);
+  std::signal(SIGXFSZ, previous);
+  BOOST_TEST(r.status == 2, "exit " << r.status << "; stderr: " << r.err);
+  BOOST_TEST(r.err.find("r.h5: cannot write the HDF5 file") != std::string::npos, r.err);
+  BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, r.err);
+  BOOST_TEST(r.out.find("wrote") == std::string::npos, r.out);
+  BOOST_TEST(s.holds_only({"good.toml"}));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

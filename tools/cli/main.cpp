@@ -9,14 +9,18 @@
 // naming the file and the line or key; an output place that cannot be written is bad input too),
 // 3 an internal error, 128 + N stopped by signal N (SIGINT 130, SIGTERM 143: temporaries removed,
 // tools/io/signal_cleanup.hpp).
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "model/water/leapfrog_kernel.hpp"
+#include "tools/io/hdf5_file.hpp"
 #include "tools/cli/command_registry.hpp"
 #include "stoneskip_version.hpp"
 #include "tools/io/input_error.hpp"
@@ -66,7 +70,9 @@ void print_input_error(const std::string& message) {
 
 }  // namespace stoneskip::cli
 
-int main(int argc, char** argv) {
+namespace {
+
+int run_main(int argc, char** argv) {
   // First, before any thread exists: SIGINT, SIGTERM and SIGHUP remove the temporaries.
   stoneskip::install_signal_cleanup();
   // STONESKIP_ISA forces the stencil kernel's instruction-set path: a value that names none, or one
@@ -117,6 +123,14 @@ int main(int argc, char** argv) {
     // know; this catches the rest): bad input, not a bug.
     std::fprintf(stderr, "stoneskip: %s\n", one_line(e.what()).c_str());
     return 2;
+  } catch (const std::system_error& e) {
+    // An output that could not be written for want of room or a working disk (a sweep's journal
+    // on a full disk): the place's fault, not a bug; what was finished stays (sweep --resume).
+    const int c = e.code().value();
+    const bool place = (e.code().category() == std::generic_category() || e.code().category() == std::system_category()) &&
+                       (c == ENOSPC || c == EDQUOT || c == EIO || c == EROFS || c == EFBIG);
+    std::fprintf(stderr, "stoneskip: %s%s\n", place ? "" : "internal error: ", one_line(e.what()).c_str());
+    return place ? 2 : 3;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "stoneskip: internal error: %s\n", one_line(e.what()).c_str());
     return 3;
@@ -128,6 +142,21 @@ int main(int argc, char** argv) {
   if (!std::cout.good() || std::fflush(stdout) != 0 || std::ferror(stdout)) {
     std::fprintf(stderr, "stoneskip: could not write the output to standard output (a full disk?)\n");
     return 2;
+  }
+  return code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int code = run_main(argc, argv);
+  // After an HDF5 write that failed (a full disk) the library holds a file it could not close,
+  // and its own clean-up at exit crashed on it (a segfault after the one-line error): the streams
+  // are flushed and the process ends without the library's clean-up. Every file that was written
+  // has been closed and checked by its writer (tools/io/hdf5_file.hpp).
+  if (stoneskip::hdf5_write_failed()) {
+    std::fflush(nullptr);
+    std::_Exit(code);
   }
   return code;
 }

@@ -1,7 +1,10 @@
 #include "tools/io/hdf5_file.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <ctime>
 #include <stdexcept>
 
@@ -358,16 +361,35 @@ Hdf5Writer::Hdf5Writer(const std::filesystem::path& path) : out_(path) {
   // The temporary exists (AtomicOutput made it, empty): H5F_ACC_TRUNC takes it over.
   hid_t f = H5Fcreate(out_.temporary_path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (f < 0) throw_input_error(path.string(), 0, "", "cannot create HDF5 file");
-  H5Id file(f, H5Fclose);
-  hid_t g = H5Gopen2(file.get(), "/", H5P_DEFAULT);
-  // The root group keeps the file open until it is closed (HDF5 closes files when the last
-  // object handle goes); file's handle is released here.
-  root_ = std::make_unique<H5Group>(H5Id(g, H5Gclose), "");
+  file_ = f;
+  root_ = std::make_unique<H5Group>(H5Id(H5Gopen2(file_, "/", H5P_DEFAULT), H5Gclose), "");
+}
+
+namespace {
+std::atomic<bool> g_write_failed{false};
+}  // namespace
+
+bool hdf5_write_failed() { return g_write_failed.load(); }
+
+Hdf5Writer::~Hdf5Writer() {
+  root_.reset();
+  if (file_ >= 0) H5Fclose(file_);  // not committed: the temporary is removed by out_
 }
 
 void Hdf5Writer::commit() {
-  H5Fflush(root_->id(), H5F_SCOPE_GLOBAL);
+  const int saved = errno;
+  errno = 0;
+  const bool flushed = H5Fflush(file_, H5F_SCOPE_GLOBAL) >= 0;
   root_.reset();
+  const hid_t f = file_;
+  file_ = -1;
+  const bool closed = H5Fclose(f) >= 0;
+  if (!flushed || !closed) {
+    g_write_failed = true;
+    const std::string why = errno != 0 ? std::strerror(errno) : "the HDF5 library reported an error";
+    throw_input_error(out_.final_path().string(), 0, "", "cannot write the HDF5 file (" + why + "); nothing written there");
+  }
+  errno = saved;
   out_.commit();
 }
 

@@ -97,15 +97,24 @@ class H5Group {
   std::string path_;
 };
 
+// Whether an Hdf5Writer's flush or close has failed in this process (HDF5 then still holds the
+// file, and its clean-up at exit can crash on it: the CLI's main ends without that clean-up).
+bool hdf5_write_failed();
+
 // A new HDF5 file, written atomically.
 class Hdf5Writer {
  public:
   explicit Hdf5Writer(const std::filesystem::path& path);
+  ~Hdf5Writer();
   H5Group& root() { return *root_; }
-  void commit();  // closes the file and renames it into place
+  // Flushes and closes the file, then renames it into place. A flush or close that fails (a full
+  // disk: HDF5 caches what it writes, so the failure shows here) is an InputError naming the file,
+  // and the temporary is removed: nothing is renamed into place.
+  void commit();
 
  private:
   AtomicOutput out_;
+  hid_t file_ = -1;  // closed (its result checked) by commit(); by the destructor otherwise
   std::unique_ptr<H5Group> root_;
 };
 

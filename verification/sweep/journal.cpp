@@ -315,7 +315,9 @@ void SweepJournal::write_record(std::uint32_t type, const std::vector<unsigned c
   while (done < rec.size()) {
     const ssize_t w = ::write(fd_, rec.data() + done, rec.size() - done);
     if (w < 0 && errno == EINTR) continue;
-    if (w <= 0) throw std::runtime_error("cannot append to the sweep journal " + path_.string() + ": " + std::strerror(errno));
+    // A system_error with the cause's errno: a full disk is the output place's fault, and the CLI
+    // says so with exit 2 (tools/cli/main.cpp); the records already written stay for --resume.
+    if (w <= 0) throw std::system_error(w < 0 ? errno : EIO, std::generic_category(), "cannot append to the sweep journal " + path_.string());
     done += static_cast<std::size_t>(w);
   }
   write_wall_s_ += now_s() - start;
