@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -76,6 +77,36 @@ BOOST_AUTO_TEST_CASE(finished_sections_survive_an_error_and_are_resumed) {
   BOOST_TEST(fs::is_regular_file(out / "data.h5"));
   BOOST_TEST(!fs::exists(s.dir / "out.partial"));
   BOOST_TEST(!fs::exists(out / "sections"));
+  BOOST_TEST(is_report_folder(out));
+}
+
+BOOST_AUTO_TEST_CASE(a_resumed_build_ships_no_temporary_the_killed_run_left) {
+  // A run killed while writing leaves "data.h5.tmp-PID" (or a figure's) in the work folder; the
+  // resumed build once moved it into the report and listed it in the manifest (1.2 MB of truncated
+  // HDF5). Oracle: the finished folder holds no temporary name and its manifest lists none.
+  Scratch s;
+  const fs::path out = s.dir / "out";
+  try {
+    ReportBuild b(options(out));
+    b.store("first", section(1.5));
+    throw std::runtime_error("killed");
+  } catch (const std::runtime_error&) {
+  }
+  const fs::path work = s.dir / "out.partial";
+  std::ofstream(work / "data.h5.tmp-24940") << "truncated";
+  fs::create_directories(work / "figures");
+  std::ofstream(work / "figures" / "a.png.tmp-24761-2") << "truncated";
+  {
+    ReportBuild b(options(out));
+    BOOST_REQUIRE(b.resume("first").has_value());
+    b.assemble(Record{});
+    b.commit();
+  }
+  BOOST_TEST(!fs::exists(out / "data.h5.tmp-24940"));
+  BOOST_TEST(!fs::exists(out / "figures" / "a.png.tmp-24761-2"));
+  std::ifstream m(out / kFolderManifest);
+  const std::string manifest((std::istreambuf_iterator<char>(m)), std::istreambuf_iterator<char>());
+  BOOST_TEST(manifest.find(".tmp-") == std::string::npos, manifest);
   BOOST_TEST(is_report_folder(out));
 }
 

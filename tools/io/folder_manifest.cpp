@@ -141,7 +141,14 @@ void write_folder_manifest(const fs::path& dir, const std::vector<std::string>& 
   auto entries = scan(dir, true, &other);
   for (auto it = entries.begin(); it != entries.end();) {
     const std::string top = it->first.substr(0, it->first.find('/'));
-    it = std::find(leave_out.begin(), leave_out.end(), top) != leave_out.end() ? entries.erase(it) : std::next(it);
+    // A temporary a killed writer left in the folder (a resumed build's work folder holds the
+    // earlier run's "data.h5.tmp-PID") is removed, not listed and shipped.
+    const bool stale = !it->second.folder && is_temporary_name(fs::path(it->first).filename().string());
+    if (stale) {
+      std::error_code ec;
+      fs::remove(dir / it->first, ec);
+    }
+    it = stale || std::find(leave_out.begin(), leave_out.end(), top) != leave_out.end() ? entries.erase(it) : std::next(it);
   }
   if (!other.empty())
     throw_input_error(dir.string(), 0, "", "holds '" + other + "', which is not a plain file or folder: no manifest written");

@@ -18,7 +18,9 @@ namespace stoneskip {
 inline constexpr const char* kFolderManifest = "stoneskip-manifest.txt";
 
 // Lists everything under `dir` (the manifest itself excepted, and the top-level entries named in
-// `leave_out`, which the caller removes next) and writes the manifest atomically. A link or a
+// `leave_out`, which the caller removes next) and writes the manifest atomically. A temporary a
+// killed writer left ("<name>.tmp-<digits>", as a resumed build's work folder can hold) is
+// removed, not listed. A link or a
 // special file under `dir` is an InputError: stoneskip writes neither.
 void write_folder_manifest(const std::filesystem::path& dir, const std::vector<std::string>& leave_out = {});
 
