@@ -641,7 +641,7 @@ BOOST_AUTO_TEST_CASE(out_replaces_only_a_file_stoneskip_wrote) {
   fs::copy_file("cases/captures/gentle_sidearm.log", s.dir / "capture.log");
   for (const fs::path& p : {mine, s.dir / "capture.log"}) {
     expect_refused(run_apart({"run", "cases/spin_sweep_base.toml", "--out", p.string()}),
-                   {"--out", p.filename().string() + "' exists and is not an HDF5 file stoneskip wrote"});
+                   {"--out", p.filename().string() + "' exists and is not a throw's HDF5 file stoneskip wrote"});
     expect_refused(run_apart({"capture", "convert", "cases/captures/gentle_sidearm.log", "--out", p.string()}),
                    {"--out", p.filename().string() + "' exists and is not a trace stoneskip wrote"});
   }
@@ -654,9 +654,27 @@ BOOST_AUTO_TEST_CASE(out_replaces_only_a_file_stoneskip_wrote) {
                "run " << run);
   }
   // Each kind only over its own: a trace is not replaced by an HDF5 file, nor the other way round.
-  expect_refused(run_apart({"run", "cases/spin_sweep_base.toml", "--out", csv.string()}), {"is not an HDF5 file stoneskip wrote"});
+  expect_refused(run_apart({"run", "cases/spin_sweep_base.toml", "--out", csv.string()}), {"is not a throw's HDF5 file stoneskip wrote"});
   expect_refused(run_apart({"capture", "convert", "cases/captures/gentle_sidearm.log", "--out", h5.string()}),
                  {"is not a trace stoneskip wrote"});
+  // Nor an HDF5 file of another command: a sweep's result (run --out replaced a 400-throw sweep
+  // without a word) or a report's data.h5, which only their own commands replace; a sweep does
+  // not replace a throw's file either. The bytes must survive.
+  const fs::path sweep_toml = s.write("sw.toml", "title = \"t\"\nbase = \"" + (fs::current_path() / "cases/spin_sweep_base.toml").string() +
+                                                    "\"\nset = [\"solver.t_max_s=0.05\"]\nsolvers = [\"realtime\"]\n[design]\nkind = \"grid\"\n"
+                                                    "[[vary]]\nkey = \"throw.speed_m_s\"\nfrom = 7.0\nto = 8.0\ncount = 2\n");
+  const fs::path sweep_h5 = s.dir / "sweep.h5";
+  BOOST_REQUIRE(run_apart({"sweep", sweep_toml.string(), "--out", sweep_h5.string(), "--quiet"}).status == 0);
+  const auto bytes = [](const fs::path& p) {
+    std::ifstream f(p, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  };
+  const std::string sweep_bytes = bytes(sweep_h5), throw_bytes = bytes(h5);
+  expect_refused(run_apart({"run", "cases/spin_sweep_base.toml", "--out", sweep_h5.string()}), {"is not a throw's HDF5 file stoneskip wrote"});
+  expect_refused(run_apart({"sweep", sweep_toml.string(), "--out", h5.string(), "--quiet"}), {"is not a sweep's HDF5 file stoneskip wrote"});
+  BOOST_TEST(bytes(sweep_h5) == sweep_bytes);
+  BOOST_TEST(bytes(h5) == throw_bytes);
+  BOOST_TEST(run_apart({"sweep", sweep_toml.string(), "--out", sweep_h5.string(), "--quiet"}).status == 0);  // its own kind
 }
 
 BOOST_AUTO_TEST_CASE(output_that_cannot_reach_stdout_is_an_error) {

@@ -169,7 +169,7 @@ void run(const SweepArgs& a) {
     if (a.max_chunk < 1) throw_input_error("--max-chunk", 0, "", "must be >= 1");
     if (a.out && a.out->empty()) throw_input_error("--out", 0, "", "needs a file name (got an empty one)");
     refuse_output_over_inputs(out_file(a), OutputKind::file, {sweep->file, sweep->base_file, cases->base().spec.mesh_file});
-    refuse_foreign_output(out_file(a), OutputFormat::hdf5);
+    refuse_foreign_output(out_file(a), OutputFormat::hdf5_sweep);
     // Limits decided before any throw (cases/README.md, Limits): the table, the heaviest throw, all.
     const double width = static_cast<double>(sweep_record(sweep->design, sweep->solvers).width());
     const double threads = a.threads.value_or(0) > 0 ? *a.threads : usable_cores();

@@ -36,7 +36,8 @@ bool holds_marker(std::ifstream& f) {
 
 const char* to_string(OutputFormat f) {
   switch (f) {
-    case OutputFormat::hdf5: return "an HDF5 file";
+    case OutputFormat::hdf5: return "a throw's HDF5 file";
+    case OutputFormat::hdf5_sweep: return "a sweep's HDF5 file";
     case OutputFormat::trace_csv: return "a trace";
     case OutputFormat::movie: return "a movie";
   }
@@ -52,10 +53,14 @@ bool stoneskip_wrote(const fs::path& path, OutputFormat format) {
   const auto got = static_cast<std::size_t>(f.gcount());
   switch (format) {
     case OutputFormat::hdf5:
+    case OutputFormat::hdf5_sweep:
       if (got < sizeof kHdf5Signature || std::memcmp(head, kHdf5Signature, sizeof kHdf5Signature) != 0) return false;
       try {
         const Hdf5Reader r(path);
-        return r.root().has_attr("code_version") && r.root().attr_string("code_version").rfind("stoneskip ", 0) == 0;
+        const H5Group& root = r.root();
+        if (!root.has_attr("code_version") || root.attr_string("code_version").rfind("stoneskip ", 0) != 0) return false;
+        if (root.has_attr("report")) return false;  // a report's data.h5: only its report replaces it
+        return root.has_attr("sweep_file") == (format == OutputFormat::hdf5_sweep);
       } catch (const std::exception&) {
         return false;
       }
