@@ -28,6 +28,28 @@ bool starts_with(const std::string& s, const std::string& p) { return s.compare(
 
 // A relative link to a Markdown page goes to the HTML page beside it ("waves/index.md#x" ->
 // "waves/index.html#x"); links with a scheme and in-page fragments are left as they are.
+// Whether a page may link to (or show) url: a relative path or a fragment, or an http, https or
+// mailto address. Titles and notes come from the user's data (a case's title, a sweep's notes) and
+// reach the page as Markdown: "[x](javascript:…)" there became a live script link. Any other
+// scheme (javascript:, data:, vbscript:, file:) is shown as text. Browsers drop tabs and line
+// breaks inside a URL and controls and spaces before it ("java\tscript:" is javascript:), so the
+// scheme is read as they read it; a colon before any '/', '?' or '#' marks one (RFC 3986 §3.1).
+bool safe_target(const std::string& url) {
+  std::string u;
+  for (char c : url)
+    if (c != '\t' && c != '\n' && c != '\r') u += c;
+  std::size_t a = 0;
+  while (a < u.size() && static_cast<unsigned char>(u[a]) <= 0x20) ++a;
+  u.erase(0, a);
+  const std::size_t colon = u.find(':');
+  if (colon == std::string::npos) return true;
+  const std::size_t sep = u.find_first_of("/?#");
+  if (sep != std::string::npos && sep < colon) return true;
+  std::string scheme = u.substr(0, colon);
+  for (char& c : scheme) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return scheme == "http" || scheme == "https" || scheme == "mailto";
+}
+
 std::string html_target(const std::string& url) {
   if (url.find("://") != std::string::npos || starts_with(url, "mailto:") || starts_with(url, "#")) return url;
   const std::size_t hash = url.find('#');
@@ -120,7 +142,7 @@ std::string inline_html(const std::string& s) {
       std::string text, url;
       std::size_t next = 0;
       if (parse_link(s, i + 1, text, url, next)) {
-        out += "<img src=\"" + escape(url) + "\" alt=\"" + escape(text) + "\">";
+        out += safe_target(url) ? "<img src=\"" + escape(url) + "\" alt=\"" + escape(text) + "\">" : escape(text);
         i = next;
         continue;
       }
@@ -128,7 +150,7 @@ std::string inline_html(const std::string& s) {
       std::string text, url;
       std::size_t next = 0;
       if (parse_link(s, i, text, url, next)) {
-        out += "<a href=\"" + escape(html_target(url)) + "\">" + inline_html(text) + "</a>";
+        out += safe_target(url) ? "<a href=\"" + escape(html_target(url)) + "\">" + inline_html(text) + "</a>" : inline_html(text);
         i = next;
         continue;
       }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "reports/common/html_page.hpp"
+#include "reports/common/markdown.hpp"
 #include "reports/common/section.hpp"
 
 using namespace stoneskip;
@@ -53,6 +54,27 @@ BOOST_AUTO_TEST_CASE(inline_marks_links_and_images) {
   BOOST_TEST(markdown_to_html("[`x`](#x_log) [w](waves/index.md#2-a) [o](https://e.org/a.md)\n") ==
              "<p><a href=\"#x_log\"><code>x</code></a> <a href=\"waves/index.html#2-a\">w</a> "
              "<a href=\"https://e.org/a.md\">o</a></p>\n");
+}
+
+BOOST_AUTO_TEST_CASE(a_link_from_the_data_runs_no_script_and_a_pipe_in_a_cell_keeps_the_columns) {
+  // Titles and notes come from the user's files: "[link](javascript:alert(2))" in a case's title
+  // became a live link on the front page. Oracle: a browser's reading of the scheme (tabs and line
+  // breaks dropped, leading controls and spaces too, case folded): every such target is shown as
+  // text; http, https, mailto, fragments and relative paths stay links.
+  BOOST_TEST(markdown_to_html("[a](javascript:alert(2))\n") == "<p>a</p>\n");
+  BOOST_TEST(markdown_to_html("[a](JavaScript:alert(2))\n") == "<p>a</p>\n");
+  BOOST_TEST(markdown_to_html("[a](java\tscript:alert(2))\n") == "<p>a</p>\n");
+  BOOST_TEST(markdown_to_html("[a](data:text/html,x)\n") == "<p>a</p>\n");
+  BOOST_TEST(markdown_to_html("![pic](data:image/svg+xml,x)\n").find("<img") == std::string::npos);
+  BOOST_TEST(markdown_to_html("[a](http://e.org/x) [b](mailto:a@b.c) [c](dir/x:y.html)\n") ==
+             "<p><a href=\"http://e.org/x\">a</a> <a href=\"mailto:a@b.c\">b</a> <a href=\"dir/x:y.html\">c</a></p>\n");
+  // A cell holding '|' (a title "a | b") keeps its row's columns; in a code span it stays as is.
+  MarkdownTable t({"title", "n"});
+  t.row({"a | b", "1"}).row({"`x|y`", "2"});
+  const std::string html = markdown_to_html(t.str());
+  BOOST_TEST(html.find("<td>a | b</td>") != std::string::npos, html);
+  BOOST_TEST(html.find("<td><code>x|y</code></td>") != std::string::npos, html);
+  BOOST_TEST(html.find("<td>1</td>") != std::string::npos, html);
 }
 
 BOOST_AUTO_TEST_CASE(code_spans_of_several_backticks_hold_backticks_and_pipes) {
