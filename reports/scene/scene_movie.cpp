@@ -368,8 +368,12 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
   std::ostringstream rate;
   rate.precision(12);
   rate << s.rate_hz;
+  // The frames' pattern: image2 reads '%' as a conversion, so one in the folder's name (a TMPDIR
+  // with '%' in it) is written "%%"; the folder is absolute, so no "proto:" prefix is read either.
+  std::string folder;
+  for (char c : fs::absolute(dir_).string()) folder += c == '%' ? std::string("%%") : std::string(1, c);
   std::vector<std::string> ffmpeg = {"ffmpeg", "-nostdin", "-y", "-loglevel", "error", "-framerate", rate.str(),
-                                     "-i", fs::absolute(dir_ / "seq_%05d.png").string()};
+                                     "-f", "image2", "-i", folder + "/seq_%05d.png"};
   // The MP4 carries kMovieMarker in its metadata (the GIF in a comment, below): a later --movie to
   // this name knows the file is stoneskip's to replace (tools/io/foreign_output.hpp).
   if (format_ == MovieFormat::mp4)

@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -92,6 +93,24 @@ BOOST_AUTO_TEST_CASE(json_reports_frames_speed_and_parts) {
     if (k + 1 < scene_contacts.size())
       BOOST_TEST(t["contacts"][k]["end_s"].get<double>() == scene_contacts[k]["end_s"].get<double>());
   }
+}
+
+BOOST_AUTO_TEST_CASE(a_movie_is_made_under_a_temporary_folder_with_a_percent_in_its_name) {
+  // The frames' folder sits under TMPDIR, and ffmpeg's image2 reads '%' in a path as a conversion:
+  // TMPDIR=/x/tmp%05d drew every frame and then failed (exit 3, "seq_%05d.png: No such file").
+  // Oracle: the movie is made, with its 18 frames (0.2 s at 90 frames/s, as above).
+  TempDir tmp("stoneskip-movie-percent");
+  const fs::path odd = tmp.path() / "tmp%05d";
+  fs::create_directories(odd);
+  const char* old = std::getenv("TMPDIR");
+  const std::string saved = old ? old : "";
+  ::setenv("TMPDIR", odd.c_str(), 1);
+  const fs::path movie = tmp.path() / "m.mp4";
+  const auto r = run_stoneskip("scene " + small_seed(0.2) + " --movie-slow 1 --movie " + movie.string() + " --movie-size 320x160");
+  if (old) ::setenv("TMPDIR", saved.c_str(), 1);
+  else ::unsetenv("TMPDIR");
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.out);
+  BOOST_TEST(probed_frames(movie) == 18);
 }
 
 BOOST_AUTO_TEST_CASE(a_movie_has_duration_times_rate_frames) {
