@@ -54,8 +54,26 @@ std::string join3(const std::array<int, 3>& v) {
 }
 }  // namespace
 
+namespace {
+
+bool apply_header_value(Trace& t, const std::string& key, const std::string& value, const std::string& file, long line);
+
+}  // namespace
+
 bool apply_header_key(Trace& t, const std::string& key, const std::string& value, const std::string& file,
                       long line) {
+  if (!apply_header_value(t, key, value, file, line)) return false;
+  // A key given twice: the last one silently won, and a second calibration line turned a capture's
+  // verdict from usable to unusable. Which one holds is not for the reader to guess.
+  const auto [at, fresh] = t.header_key_lines.emplace(key, line);
+  if (!fresh)
+    throw_input_error(file, line, key, "given twice (first on line " + std::to_string(at->second) + "): keep one");
+  return true;
+}
+
+namespace {
+
+bool apply_header_value(Trace& t, const std::string& key, const std::string& value, const std::string& file, long line) {
   CaptureCalibration& c = t.calibration;
   if (key == "nominal_rate_hz") {
     t.nominal_rate_hz = positive(value, file, line, key);
@@ -117,6 +135,8 @@ bool apply_header_key(Trace& t, const std::string& key, const std::string& value
       throw_input_error(file, line, key, "one-g and zero-g counts must differ");
   return true;
 }
+
+}  // namespace
 
 std::string header_lines(const Trace& t) {
   const CaptureCalibration& c = t.calibration;

@@ -253,6 +253,20 @@ BOOST_AUTO_TEST_CASE(a_header_calibration_wins_over_the_recorded_block_and_a_dis
   BOOST_TEST(disagreement(same) == 0);
 }
 
+BOOST_AUTO_TEST_CASE(a_header_key_given_twice_is_refused_naming_both_lines) {
+  // A second "# calibration.accel_one_g_counts" silently won (the last one), and turned a
+  // capture's verdict from usable to unusable; which was meant cannot be known. Oracle: the input
+  // rules, an error naming the file, the second line, the key, and the first line.
+  const std::string twice = "# calibration.accel_one_g_counts: 610,617,621\n# calibration.accel_one_g_counts: 1000,1000,1000\n" + gentle_log();
+  try {
+    parse_capture(twice, "twice.log");
+    BOOST_ERROR("a key given twice was taken");
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    BOOST_TEST(contains(m, "twice.log:2: calibration.accel_one_g_counts: given twice (first on line 1)"), m);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(a_trace_without_a_has_gyro_line_keeps_its_rates) {
   // Oracle: the rows themselves. Rates in the wx..wz columns are a MotionPlus's, stated or not;
   // an explicit `has_gyro: false` still wins.

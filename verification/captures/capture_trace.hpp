@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,7 @@ struct Trace {
   CaptureCalibration calibration;
   std::vector<std::string> mounting;  // "key=value" settings found in the file's header
   std::vector<std::string> thrower;   // "key=value" virtual thrower settings found in the header
+  std::map<std::string, long> header_key_lines;  // each header key read, with its line (a key given twice is refused)
   std::vector<std::string> warnings;  // "FILE:LINE: what" for input that was used with a caveat
   std::vector<std::string> notes;     // what the reader chose or skipped (does not change a verdict)
   std::vector<TraceSample> samples;
