@@ -16,6 +16,17 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// A fixed scheme's flight steps, and the contact steps they imply (× contact_ratio; 1 where there is
+// none), held to the range a case's steps keep (`run`: [1e-9, 1] s, cases/README.md): a study step
+// of 1e-9 s (a contact step of 1e-10 s) sat for minutes with its progress line the only sign.
+void require_case_steps(TomlTable& t, const std::string& key, const std::vector<double>& dt_s, double contact_ratio) {
+  for (double dt : dt_s) {
+    if (dt < 1e-9 || dt > 1) t.fail(key, "every step must be in [1e-09, 1] s, as a case's (got " + std::to_string(dt) + ")");
+    if (dt * contact_ratio < 1e-9)
+      t.fail(key, "the contact step dt_s × contact_ratio must be at least 1e-09 s, as a case's contact_dt_s");
+  }
+}
+
 int count(TomlTable& t, const std::string& key, long long fallback, long long lo, long long hi) {
   return static_cast<int>(count_in(t, key, fallback, lo, hi));
 }
@@ -140,6 +151,7 @@ void read_convergence(TomlTable t, StoneStudiesOptions& o) {
   c.adaptive_tolerances = tolerance_list(t, "adaptive_tolerances", c.adaptive_tolerances);
   c.contact_ratio = t.number_or("contact_ratio", c.contact_ratio);
   t.require_in("contact_ratio", c.contact_ratio, 1e-4, 1.0);
+  require_case_steps(t, "dt_s", c.dt_s, c.contact_ratio);
   if (t.has("kinks")) {
     const std::string k = t.string("kinks");
     if (!parse_kink_steps(k, c.fixed_kinks)) t.fail("kinks", "must be \"none\", \"crossings\" or \"all\" (got \"" + k + "\")");
@@ -195,6 +207,12 @@ void read_work_precision(TomlTable t, StoneStudiesOptions& o) {
     t.maybe_table("realtime");  // mark as read
   }
   w.dt_s = positive_list(t, "dt_s", w.dt_s);
+  {
+    double least_ratio = 1;
+    for (const auto& fam : w.realtime)
+      if (fam.contact_ratio > 0) least_ratio = std::min(least_ratio, fam.contact_ratio);
+    require_case_steps(t, "dt_s", w.dt_s, least_ratio);
+  }
   w.adaptive_rtol = tolerance_list(t, "adaptive_rtol", w.adaptive_rtol);
   w.methods = methods_of(t, "methods", w.methods);
   w.rtol = positive_list(t, "rtol", w.rtol);
@@ -249,6 +267,7 @@ void read_work_precision_grid(const fs::path& dir, TomlTable t, StoneStudiesOpti
   g.dt_s = positive_list(t, "dt_s", g.dt_s);
   g.contact_ratio = t.number_or("contact_ratio", g.contact_ratio);
   t.require_in("contact_ratio", g.contact_ratio, 1e-4, 1.0);
+  require_case_steps(t, "dt_s", g.dt_s, g.contact_ratio);
   const std::string m = t.string_or("method", to_string(g.method));
   if (!parse_reference_method(m, g.method)) t.fail("method", "'" + m + "' is not one of bdf, adams");
   g.cvode_rtol = positive_list(t, "cvode_rtol", g.cvode_rtol);

@@ -1,8 +1,10 @@
 #include "tools/scene/wave_study_file.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "tools/io/input_error.hpp"
+#include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/study_keys.hpp"
 #include "tools/scene/wave_case.hpp"
 
@@ -106,6 +108,25 @@ WaveStudyFile load_wave_study_file(const std::string& path, const std::vector<st
     v.both_grids = grid_list(*c, "both_grids", v.both_grids);
     v.both_sigma = c->number_or("both_sigma", v.both_sigma);
     c->require_in("both_sigma", v.both_sigma, 1e-3, 1.0);
+    // The sequences' work, against the limit `stoneskip wave` keeps (kMaxCellUpdates): a study file
+    // asking for 6.7e14 cell updates (about two years) started at once, its progress line the
+    // only warning. The time sequence: time_grid² cells × Σ time_steps; the space–time one: N²
+    // cells × t_end c N / (σ L) steps on each grid N; both for every stencil.
+    const double stencils = static_cast<double>(o.stencils.size());
+    double time_updates = 0, both_updates = 0;
+    for (long n : v.time_steps) time_updates += static_cast<double>(v.time_grid) * v.time_grid * static_cast<double>(n);
+    for (int n : v.both_grids)
+      both_updates += static_cast<double>(n) * n *
+                      std::ceil(o.problem.t_end_s * o.problem.wave_speed_m_s * n / (v.both_sigma * o.problem.length_m));
+    auto refuse_above = [&](const char* key, double updates, const char* what) {
+      if (stencils * updates <= kMaxCellUpdates) return;
+      char b[240];
+      std::snprintf(b, sizeof b, "the %s needs %.3g cell updates over %d stencils, above the limit of %.3g that `stoneskip wave` keeps",
+                    what, stencils * updates, static_cast<int>(stencils), kMaxCellUpdates);
+      c->fail(key, b);
+    };
+    refuse_above("time_steps", time_updates, "time sequence (time_grid² × Σ time_steps)");
+    refuse_above("both_grids", both_updates, "space–time sequence (N² × t_end c N / (σ L) on each grid)");
     v.fit_points = static_cast<int>(count_in(*c, "fit_points", v.fit_points, 0, 100));
     if (v.fit_points == 1) c->fail("fit_points", "a fit needs at least 2 points (0: all)");
     v.judgement.expected_order = c->number_or("expected_order", v.judgement.expected_order);

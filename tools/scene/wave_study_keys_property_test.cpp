@@ -43,4 +43,18 @@ BOOST_AUTO_TEST_CASE(a_refinement_study_of_an_impulse_is_refused) {
   BOOST_CHECK_NO_THROW(stoneskip::load_wave_study_file(file, {"problem.initial.kind=\"gaussian\""}));
 }
 
+BOOST_AUTO_TEST_CASE(a_study_past_the_cell_update_limit_is_refused_before_it_starts) {
+  // Oracle: the limit `stoneskip wave` keeps (kMaxCellUpdates = 5e10). 4096² cells × 1e7 steps ×
+  // 4 stencils is 6.7e14 updates (about two years here); the study once started at once.
+  try {
+    stoneskip::load_wave_study_file("cases/studies/waves_quick.toml",
+                                    {"convergence.time_grid=4096", "convergence.time_steps=[64, 128, 10000000]"});
+    BOOST_ERROR("the study was taken");
+  } catch (const stoneskip::InputError& e) {
+    const std::string m = e.what();
+    BOOST_TEST(m.find("convergence.time_steps") != std::string::npos, m);
+    BOOST_TEST(m.find("6.71e+14 cell updates") != std::string::npos, m);
+  }
+}
+
 BOOST_AUTO_TEST_SUITE_END()
