@@ -485,11 +485,14 @@ class SceneLoop {
       const double kept_m3 = kept_volume_m3(step_patch_);
       out_.draught_impulse_m3_s += dt_s_ * kept_m3;
       out_.water_vertical_impulse_N_s += dt_s_ * rho_g_ * kept_m3;
+      const double budget0 = cost_.energy_budget_wall_s;
       forced_step();
       node_ = 0;
-    } else {
-      field_->step();
+      ++cost_.water_steps;
+      cost_.water_wall_s += steady_now() - w0 - (cost_.energy_budget_wall_s - budget0);  // the budget's share apart
+      return;
     }
+    field_->step();
     ++cost_.water_steps;
     cost_.water_wall_s += steady_now() - w0;
   }
@@ -527,17 +530,21 @@ class SceneLoop {
     const DraughtPatch& p = step_patch_;
     double work = patch_dot(p, true);
     if (energy_ && out_.energy.measured && o_.water->field.damping_per_s > 0) {
+      const double b0 = steady_now();
       before_.resize(static_cast<std::size_t>(f.nx()) * f.ny());
       for (int j = 0; j < f.ny(); ++j)
         for (int i = 0; i < f.nx(); ++i) before_[static_cast<std::size_t>(j) * f.nx() + i] = f.previous_height(i, j);
+      cost_.energy_budget_wall_s += steady_now() - b0;
     }
     field_->step(p);
     work -= patch_dot(p, false);
     const double cell = o_.water->field.cell_m;
     out_.energy.pressure_work_J += 0.5 * rho_g_ * cell * cell * work;
     if (energy_ && out_.energy.measured && o_.water->field.damping_per_s > 0) {
+      const double b0 = steady_now();
       f.heights(after_);
       out_.energy.damping_loss_J += energy_->damping_loss_J(before_, after_);
+      cost_.energy_budget_wall_s += steady_now() - b0;
     }
   }
 
@@ -562,7 +569,8 @@ class SceneLoop {
     cost_.t_s = frame_time(closed_);
     cost_.cpu_s = cpu - frame_cpu0_;
     cost_.wall_s = wall - frame_wall0_;
-    cost_.stone_wall_s = std::max(0.0, cost_.wall_s - cost_.draught_wall_s - cost_.water_wall_s - cost_.recording_wall_s);
+    cost_.stone_wall_s = std::max(0.0, cost_.wall_s - cost_.draught_wall_s - cost_.water_wall_s - cost_.recording_wall_s -
+                                           cost_.energy_budget_wall_s);
     out_.frame_costs.push_back(cost_);
     out_.cpu_s += cost_.cpu_s;
     out_.wall_s += cost_.wall_s;
@@ -570,6 +578,7 @@ class SceneLoop {
     out_.draught_wall_s += cost_.draught_wall_s;
     out_.water_wall_s += cost_.water_wall_s;
     out_.recording_wall_s += cost_.recording_wall_s;
+    out_.energy_budget_wall_s += cost_.energy_budget_wall_s;
     note_slowest(closed_, cost_);
     if (deferred_ > owed_by_closed_) {  // the frame closes owing steps of its own
       owing_.emplace_back(out_.frame_costs.size() - 1, deferred_ - owed_by_closed_);

@@ -152,6 +152,7 @@ struct FrameCost {
   double t_s = 0;
   double cpu_s = 0, wall_s = 0;    // thread CPU, wall
   double stone_wall_s = 0, draught_wall_s = 0, water_wall_s = 0, recording_wall_s = 0;
+  double energy_budget_wall_s = 0;  // measuring the waves' energy budget (SceneOptions::energy_budget), not in water_wall_s
   int stone_steps = 0, water_steps = 0, draught_samples = 0;
 };
 
@@ -215,6 +216,7 @@ struct SceneSummary {
   // Totals over the frames.
   double cpu_s = 0, wall_s = 0;
   double stone_wall_s = 0, draught_wall_s = 0, water_wall_s = 0, recording_wall_s = 0;
+  double energy_budget_wall_s = 0;  // the budget's measurement: a diagnostic, not what the scene needs
   long slowest_frame = 0;          // by wall time
   double slowest_frame_wall_s = 0, slowest_frame_cpu_s = 0;
   double frames_per_s_cpu() const { return cpu_s > 0 ? frames / cpu_s : 0; }
