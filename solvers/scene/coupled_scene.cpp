@@ -434,6 +434,7 @@ class SceneLoop {
     }
     in_contact_ = pending_wet_;
     last_volume_m3_ = head_.empty() ? 0.0 : head_.volume_m3(o_.water->field.cell_m);
+    out_.max_draught_volume_m3 = std::max(out_.max_draught_volume_m3, last_volume_m3_);  // of the head (h = p/(ρ_w g))
     cost_.draught_wall_s += steady_now() - w0;
   }
 

@@ -195,9 +195,11 @@ struct SceneSummary {
   long frames = 0;
   double simulated_s = 0;          // frames / rate
   long water_steps = 0;
+  // two_way. Displacement: the draught b's samples; pressure: the heads h = p/(ρ_w g), one per stone
+  // step (the same fields: what forces the water, whichever it is).
   long draught_samples = 0;
-  double max_draught_volume_m3 = 0;    // largest Σ b d² of one sample
-  double draught_impulse_m3_s = 0;     // ∫ Σ b d² dt as applied to the water (Σ over steps of Δt Σ b̄ d²)
+  double max_draught_volume_m3 = 0;    // largest Σ b d² of one sample (pressure: Σ h d² of one head)
+  double draught_impulse_m3_s = 0;     // ∫ Σ b d² dt as applied to the water (Σ over steps of Δt Σ b̄ d²; pressure: of h)
   std::vector<DraughtEpisode> episodes;  // two_way, displacement
   // two_way: the water's vertical impulse on the stone over its steps (up to the scene's end or
   // the throw's), from the stone's own momentum, step by step: m Δv_z + m g Δt less the air's
@@ -208,7 +210,9 @@ struct SceneSummary {
   // unfinished water step; displacement: ρ_w g times the draught's impulse, a different quantity).
   double stone_vertical_impulse_N_s = 0;
   double water_vertical_impulse_N_s = 0;
-  std::vector<ContactImpulse> contact_impulses;  // pressure
+  // Pressure only: the runs of stone steps that began pressing. One ends with the last such step,
+  // which can be before the contact's own end (a receding face under water presses with p = 0).
+  std::vector<ContactImpulse> contact_impulses;
   EnergyBudget energy;
   double volume_start_m3 = 0, volume_end_m3 = 0;  // Σ z d² of the field at the start and the end
   ActiveTileSummary tiles;         // the field's (all tiles every step in full mode)

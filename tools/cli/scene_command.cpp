@@ -246,7 +246,8 @@ std::string text_of(const StoneCase& c, const SceneOptions& o, const SceneSummar
   if (o.water) {
     m << "water     " << s.water_steps << " steps";
     if (o.coupling == Coupling::two_way)
-      m << ", " << s.draught_samples << " draught samples (largest " << general(1e6 * s.max_draught_volume_m3, 3) << " cm³), volume change "
+      m << ", " << s.draught_samples << (o.forcing == Forcing::pressure ? " pressure heads (largest " : " draught samples (largest ")
+        << general(1e6 * s.max_draught_volume_m3, 3) << " cm³), volume change "
         << general(s.volume_end_m3 - s.volume_start_m3, 2) << " m³";
     if (o.water->field.mode == StepMode::active_tiles) m << "; active tiles: " << s.tiles.brief();
     m << "\n";
