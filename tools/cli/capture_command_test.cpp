@@ -352,6 +352,15 @@ BOOST_AUTO_TEST_CASE(synthesize_writes_the_shipped_set_and_replaces_nothing_it_d
   BOOST_TEST(run("capture synthesize --out " + link.string()).status == 2);
   fs::remove(link);
   fs::remove_all(dir);
+  // A user's file under the last name of the set, in a new folder: refused before any file is
+  // written (17 had been), so the folder holds the user's file alone.
+  fs::create_directories(dir);
+  { std::ofstream(dir / "skip_two_remotes_wiiyourself.csv.truth.toml") << "mine\n"; }
+  const auto refused = run("capture synthesize --out " + dir.string());
+  BOOST_TEST(refused.status == 2);
+  BOOST_TEST(refused.out.find("wrote") == std::string::npos, refused.out);
+  BOOST_TEST(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}) == 1);
+  fs::remove_all(dir);
 }
 
 BOOST_AUTO_TEST_CASE(a_long_capture_is_drawn_thinned_with_every_extreme_and_its_swing_alone) {
