@@ -38,6 +38,18 @@ double leapfrog_courant_limit(const Stencil& stencil) {
   return 2 / std::sqrt(-smin);  // Schur–Cohn/Jury on the amplification quadratic (stencil.hpp)
 }
 
+double leapfrog_courant_limit(const Stencil& stencil, double cx_min, double cx_max, double cy_min, double cy_max) {
+  // symbol(a, b) = centre + 2 orth (cos a + cos b) + 4 diag cos a cos b, at the ends of the cosines' ranges.
+  auto s = [&](double ca, double cb) { return stencil.centre + 2 * stencil.orth * (ca + cb) + 4 * stencil.diag * ca * cb; };
+  double smin = s(cx_max, cy_max), smax = smin;
+  for (double ca : {cx_min, cx_max})
+    for (double cb : {cy_min, cy_max}) smin = std::min(smin, s(ca, cb)), smax = std::max(smax, s(ca, cb));
+  const double tiny = stencil.symbol_roundoff();
+  if (smax > tiny) return 0;
+  if (smin >= -tiny) return std::numeric_limits<double>::infinity();
+  return 2 / std::sqrt(-smin);
+}
+
 Stencil stencil_family(double gamma, std::string name) {
   // model/README.md §2.2: weights centre −4(1 − γ) − 2γ, orth 1 − γ, diag γ/2.
   return Stencil{std::move(name), -4 * (1 - gamma) - 2 * gamma, 1 - gamma, gamma / 2};

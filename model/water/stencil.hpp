@@ -40,6 +40,14 @@ struct Stencil {
 // limits by bisection on the amplification factors.
 double leapfrog_courant_limit(const Stencil& stencil);
 
+// The same over a finite set of modes: the wavenumbers a grid holds, given as the range of their
+// cosines along each axis, [cx_min, cx_max] × [cy_min, cy_max] (the symbol is bilinear in the
+// cosines, so its extremes over the set lie at those ends). A periodic grid of N points holds
+// k = 2πm/N (no k = π when N is odd), a reflecting one k = πm/N, m < N, a fixed one k = πm/(N + 1),
+// 1 ≤ m ≤ N: on a grid without the zone's corner the limit is above the plane's (a 5 × 5 periodic
+// five-point grid: 0.7435, not 1/√2).
+double leapfrog_courant_limit(const Stencil& stencil, double cx_min, double cx_max, double cy_min, double cy_max);
+
 // The family of model/README.md §2.2: (1 − γ)(Σ_orth − 4z) + (γ/2)(Σ_diag − 4z).
 Stencil stencil_family(double gamma, std::string name);
 

@@ -52,7 +52,7 @@ void run_wave(const WaveArgs& a) {
   const HeightFieldOptions& w = c.water;
   const long steps = c.steps();
   const double sigma = w.courant(), mu_dt = w.damping_per_s * w.dt_s;
-  const WaterStability stability = water_stability(w);  // the exact von Neumann limit
+  const WaterStability stability = water_stability(w);  // the exact limit, on the plane and over this grid's modes
 
   // 1. Initial surface and the run, in up to 100 chunks: progress, and a surface that overflows
   //    is caught by the end of the chunk where it did (then nothing is compared: its error is not 0).
@@ -122,6 +122,9 @@ void run_wave(const WaveArgs& a) {
     // null with kind "unbounded" (no spatial coupling); 0 with kind "none" (no stable step).
     j["stability_limit"] = stability.unbounded() ? nlohmann::json(nullptr) : nlohmann::json(stability.limit);
     j["stability_limit_kind"] = stability.limit_kind();
+    // What decides: the limit over the modes this grid holds (≥ the plane's; above it on a grid
+    // without the zone's corner, e.g. an odd periodic one).
+    j["grid_stability_limit"] = stability.unbounded() ? nlohmann::json(nullptr) : nlohmann::json(stability.grid_limit);
     j["stable"] = stable;  // false: the errors (null if it blew up) are not discretisation errors
     j["stability"] = why;
     j["boundary"] = to_string(w.boundary);

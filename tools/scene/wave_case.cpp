@@ -22,6 +22,28 @@ WaterStability water_stability(const HeightFieldOptions& water) {
   s.sigma = water.courant();
   s.mu_dt = water.damping_per_s * water.dt_s;
   s.limit = leapfrog_courant_limit(water.stencil);
+  // The cosines of the wavenumbers each axis holds (stencil.hpp): their range.
+  auto range = [&](int n, double& lo, double& hi) {
+    switch (water.boundary) {
+      case Boundary::periodic:  // k = 2πm/N
+        hi = 1;
+        lo = n % 2 == 0 ? -1 : -std::cos(M_PI / n);
+        break;
+      case Boundary::reflecting:  // k = πm/N, m < N
+        hi = 1;
+        lo = -std::cos(M_PI / n);
+        break;
+      default:  // fixed: k = πm/(N + 1), 1 ≤ m ≤ N
+        hi = std::cos(M_PI / (n + 1));
+        lo = -hi;
+    }
+  };
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  range(water.nx, x0, x1);
+  range(water.ny, y0, y1);
+  s.grid_limit = std::max(s.limit, leapfrog_courant_limit(water.stencil, x0, x1, y0, y1));
+  if (s.limit == 0) s.grid_limit = 0;  // a growing mode: none of the grid's is spared in general (kept as the plane's)
+  s.grid = std::to_string(water.nx) + " × " + std::to_string(water.ny) + " " + to_string(water.boundary);
   return s;
 }
 
@@ -30,18 +52,32 @@ std::string WaterStability::limit_kind() const { return unbounded() ? "unbounded
 std::string WaterStability::limit_text() const {
   if (unbounded()) return "stable at every sigma: the stencil couples no cells";
   if (no_stable_step()) return "no stable step: a mode of the stencil grows at every sigma > 0";
-  char b[64];
-  std::snprintf(b, sizeof b, "stable up to %.4f", limit);
+  char b[128];
+  // The grid's own limit is named where it shows in 4 digits (or where it is what keeps sigma stable).
+  if (grid_limit > limit * (1 + 1e-4) || (sigma > limit && stable()))
+    std::snprintf(b, sizeof b, "stable up to %.6g on this grid's modes, %.6g on the plane", grid_limit, limit);
+  else
+    std::snprintf(b, sizeof b, "stable up to %.4f", limit);
   return b;
 }
 
 std::string WaterStability::reason() const {
-  char b[256];
+  char b[512];
   if (unbounded())
     std::snprintf(b, sizeof b, "the %s stencil couples no cells: stable at every sigma", stencil.c_str());
   else if (no_stable_step())
     std::snprintf(b, sizeof b, "the %s stencil has no stable step: a mode grows at every sigma > 0 (sigma = %.4f)",
                   stencil.c_str(), sigma);
+  else if (sigma > limit && stable())
+    std::snprintf(b, sizeof b,
+                  "sigma = %.6g exceeds the von Neumann limit %.6g of %s on the plane, but is within %.6g, the limit over "
+                  "the modes this %s grid holds (it holds none at the zone's corner; at every mu dt)",
+                  sigma, limit, stencil.c_str(), grid_limit, grid.c_str());
+  else if (!stable() && grid_limit > limit * (1 + 1e-4))
+    std::snprintf(b, sizeof b,
+                  "sigma = %.6g exceeds %.6g, the limit over the modes this %s grid holds (%.6g on the plane, for %s; at "
+                  "every mu dt)",
+                  sigma, grid_limit, grid.c_str(), limit, stencil.c_str());
   else
     std::snprintf(b, sizeof b, "sigma = %.4f %s the von Neumann limit %.4f of %s (at every mu dt)", sigma,
                   stable() ? "is within" : "exceeds", limit, stencil.c_str());

@@ -54,8 +54,13 @@ Disturbance read_disturbance(TomlTable t);
 struct WaterStability {
   std::string stencil;
   double sigma = 0, mu_dt = 0;
-  double limit = 0;  // +∞: unbounded (the stencil couples no cells); 0: no stable step
-  bool stable() const { return sigma <= limit; }
+  double limit = 0;  // the plane's von Neumann limit; +∞: unbounded (the stencil couples no cells); 0: no stable step
+  // The same over the grid's own modes (leapfrog_courant_limit with its wavenumbers), which decides:
+  // ≥ limit, above it on a grid that holds no mode at the zone's corner (odd periodic, reflecting,
+  // fixed). A 5 × 5 periodic grid at σ = 0.74 is stable (its limit 0.7435), though above 1/√2.
+  double grid_limit = 0;
+  std::string grid;  // "5 × 5 periodic"
+  bool stable() const { return sigma <= grid_limit; }
   bool unbounded() const { return std::isinf(limit); }
   bool no_stable_step() const { return limit == 0; }
   std::string limit_kind() const;  // "bounded", "unbounded" or "none"

@@ -2,6 +2,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <Eigen/Dense>
 #include <cmath>
 
 #include "tools/io/input_error.hpp"
@@ -72,6 +73,53 @@ BOOST_AUTO_TEST_CASE(keys_the_kind_does_not_use_and_bad_values_are_rejected_by_n
   BOOST_TEST(error_of(kBase, {"initial.kind=square"}).find("initial.kind") != std::string::npos);
   BOOST_TEST(error_of(kBase, {"water.dt_s=-1"}).find("water.dt_s") != std::string::npos);
   BOOST_TEST(error_of(kBase, {"reference.symbol=exact"}).find("reference.symbol") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(the_stability_limit_is_taken_over_the_modes_the_grid_holds) {
+  // Oracle: the operator itself. The stencil's matrix on an N × M grid with the boundary's ghost
+  // rule (periodic: wrapped; reflecting: the edge cell mirrored, ghost(−1) = cell 0; fixed: 0),
+  // its most negative eigenvalue λ (Eigen, symmetric), and the leapfrog's limit 2/√(−λ) (stencil.hpp).
+  // A 5 × 5 periodic five-point grid holds no checkerboard: 0.7435 there, not 1/√2 (σ = 0.74 was
+  // called unstable while its RMS stayed bounded); a 6 × 6 one holds it: 1/√2.
+  struct Grid {
+    int nx, ny;
+    Boundary b;
+    const char* stencil;
+  };
+  for (const Grid g : {Grid{5, 5, Boundary::periodic, "five_point"}, Grid{6, 6, Boundary::periodic, "five_point"},
+                       Grid{7, 7, Boundary::periodic, "nine_point_isotropic"}, Grid{5, 6, Boundary::periodic, "paper_eq11"},
+                       Grid{6, 5, Boundary::reflecting, "five_point"}, Grid{5, 5, Boundary::fixed, "nine_point_isotropic"},
+                       Grid{4, 7, Boundary::fixed, "nine_point_half"}}) {
+    const Stencil st = named_stencil(g.stencil);
+    const int n = g.nx * g.ny;
+    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
+    auto add = [&](int i, int j, int di, int dj, double w) {
+      int p = i + di, q = j + dj;
+      auto fold = [&](int& k, int size) {
+        if (k >= 0 && k < size) return true;
+        if (g.b == Boundary::periodic) k = (k + size) % size;
+        else if (g.b == Boundary::reflecting) k = k < 0 ? -1 - k : 2 * size - 1 - k;
+        else return false;
+        return true;
+      };
+      if (!fold(p, g.nx) || !fold(q, g.ny)) return;
+      a(j * g.nx + i, q * g.nx + p) += w;
+    };
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i)
+        for (int dj = -1; dj <= 1; ++dj)
+          for (int di = -1; di <= 1; ++di)
+            add(i, j, di, dj, di == 0 && dj == 0 ? st.centre : (di == 0 || dj == 0 ? st.orth : st.diag));
+    const double lambda = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(a).eigenvalues().minCoeff();
+    HeightFieldOptions w;
+    w.nx = g.nx;
+    w.ny = g.ny;
+    w.boundary = g.b;
+    w.stencil = st;
+    const WaterStability s = water_stability(w);
+    BOOST_TEST(std::abs(s.grid_limit - 2 / std::sqrt(-lambda)) <= 1e-12, g.nx << "×" << g.ny << " " << to_string(g.b) << " " << g.stencil);
+    BOOST_TEST(s.grid_limit >= s.limit);
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
