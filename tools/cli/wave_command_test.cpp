@@ -170,6 +170,18 @@ BOOST_AUTO_TEST_CASE(an_unknown_instruction_set_is_bad_input) {
   BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1);
 }
 
+BOOST_AUTO_TEST_CASE(a_plane_wave_that_does_not_fit_the_periodic_grid_says_so) {
+  // Oracle: the geometry. The shipped 30° case fits the grid (whole wavelengths along x and y); at
+  // 31° cos and sin times L/λ are not whole, the periodic copy has a seam, and the run said nothing
+  // while its error doubled. JSON initial_fits_grid false with a note; true, no note, at 30°.
+  const nlohmann::json fits = run_json("wave cases/wave_plane_wave_30deg.toml");
+  BOOST_TEST(fits["initial_fits_grid"].get<bool>());
+  BOOST_TEST(!fits.contains("note"));
+  const nlohmann::json seam = run_json("wave cases/wave_plane_wave_30deg.toml --set initial.angle_deg=31");
+  BOOST_TEST(!seam["initial_fits_grid"].get<bool>());
+  BOOST_TEST(seam["note"].get<std::string>().find("does not fit the periodic grid") != std::string::npos);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace
