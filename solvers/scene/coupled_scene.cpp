@@ -384,6 +384,7 @@ class SceneLoop {
   void finish_piece(double t_end, double impulse_N_s) {
     take_deferred();  // the pieces go to the windows of the field's current level
     if (!(t_end > pending_t_)) return;
+    if (!std::isfinite(impulse_N_s)) impulse_N_s = 0;  // a failed solve's last step: booked nowhere
     if (!pending_wet_) {
       carried_N_s_ = impulse_N_s;
     } else {
@@ -391,11 +392,26 @@ class SceneLoop {
       carried_N_s_ = 0;
       out_.stone_vertical_impulse_N_s += impulse_N_s;
       const double len = t_end - pending_t_, held_N_s = pending_force_N_ * len;
-      const double scale = held_N_s != 0 && std::isfinite(impulse_N_s) ? impulse_N_s / held_N_s : 1.0;
+      double scale = held_N_s != 0 ? impulse_N_s / held_N_s : 0.0;
+      const DraughtPatch* shape = &head_;
+      double rastered_N = pending_rastered_N_;
+      if (!(scale >= kLeastHeadScale && scale <= kMostHeadScale)) {
+        // The start's head does not carry this step's impulse (its faces' pushes nearly cancel, or
+        // the force changes sign over the step): scaled, it would be a huge or inverted head. The
+        // impulse goes instead on |h|, the footprint's shape at the start, with the same total.
+        reshaped_head_ = head_;
+        for (double& v : reshaped_head_.b_m) v = std::abs(v);
+        const double cell = o_.water->field.cell_m;
+        const double total_N = reshaped_head_.volume_m3(cell) * rho_g_;
+        scale = total_N > 0 ? impulse_N_s / (total_N * len) : 0.0;
+        shape = &reshaped_head_;
+        rastered_N = window_->kept_sum(reshaped_head_) * rho_g_ * cell * cell;
+        ++out_.heads_on_footprint;
+      }
       ContactImpulse& c = out_.contact_impulses.back();
       c.end_s = t_end;
       c.stone_N_s += impulse_N_s;
-      c.water_N_s += scale * pending_rastered_N_ * len;
+      c.water_N_s += scale * rastered_N * len;
       const double slack = 1e-9 * dt_s_;
       for (double a = pending_t_; a < t_end;) {
         const double tn = field_->time_s(), tn1 = tn + dt_s_;
@@ -406,8 +422,8 @@ class SceneLoop {
         const double b = std::min(t_end, tn1);
         const double r = std::clamp((0.5 * (a + b) - tn) / dt_s_, 0.0, 1.0);
         const double w0 = steady_now();
-        window_->add(head_, scale * (b - a) / dt_s_ * (1 - r));
-        next_window_->add(head_, scale * (b - a) / dt_s_ * r);
+        window_->add(*shape, scale * (b - a) / dt_s_ * (1 - r));
+        next_window_->add(*shape, scale * (b - a) / dt_s_ * r);
         cost_.draught_wall_s += steady_now() - w0;
         a = b;
       }
@@ -618,6 +634,10 @@ class SceneLoop {
   bool pending_wet_ = false, in_contact_ = false;
   // The stone step that ends at the next call of stone_step_impulse: its start, v_z and air force.
   double carried_N_s_ = 0;  // pressure: the impulse of a step that began dry (finish_piece)
+  DraughtPatch reshaped_head_;  // pressure: |h| of a head whose scale would be out of range (finish_piece)
+  // The range of a step's impulse over its start's held force within which the head is scaled
+  // (finish_piece): a step's force changes by a few times at most where the head is a fair shape.
+  static constexpr double kLeastHeadScale = 0.1, kMostHeadScale = 10;
   bool have_step_start_ = false;
   double step_start_t_ = 0, step_start_vz_ = 0, step_start_air_z_ = 0;
   int node_ = 0;  // draught samples taken in the current window

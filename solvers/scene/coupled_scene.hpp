@@ -198,7 +198,7 @@ struct SceneSummary {
   // two_way. Displacement: the draught b's samples; pressure: the heads h = p/(ρ_w g), one per stone
   // step (the same fields: what forces the water, whichever it is).
   long draught_samples = 0;
-  double max_draught_volume_m3 = 0;    // largest Σ b d² of one sample (pressure: Σ h d² of one head)
+  double max_draught_volume_m3 = 0;    // largest Σ b d² of one sample (pressure: Σ h d² of one head as rastered at its step's start, before scaling)
   double draught_impulse_m3_s = 0;     // ∫ Σ b d² dt as applied to the water (Σ over steps of Δt Σ b̄ d²; pressure: of h)
   std::vector<DraughtEpisode> episodes;  // two_way, displacement
   // two_way: the water's vertical impulse on the stone over its steps (up to the scene's end or
@@ -210,6 +210,9 @@ struct SceneSummary {
   // unfinished water step; displacement: ρ_w g times the draught's impulse, a different quantity).
   double stone_vertical_impulse_N_s = 0;
   double water_vertical_impulse_N_s = 0;
+  // Pressure: the stone steps whose head at the start could not carry the step's impulse within a
+  // factor 0.1–10 (pushes that nearly cancel, a force changing sign): that impulse went on |h|.
+  long heads_on_footprint = 0;
   // Pressure only: the runs of stone steps that began pressing. One ends with the last such step,
   // which can be before the contact's own end (a receding face under water presses with p = 0).
   std::vector<ContactImpulse> contact_impulses;

@@ -172,8 +172,9 @@ nlohmann::json json_of(const StoneCase& c, const SceneOptions& o, const SceneSum
                        {"recording", s.recording_wall_s}, {"energy_budget", s.energy_budget_wall_s}};
   j["clocks"] = "cpu_s: the scene thread's CPU time; wall_s and parts_wall_s: wall clock (steady). cpu_s, wall_s and "
                 "frames_per_s include parts_wall_s.energy_budget, the waves' energy budget that --json measures (two "
-                "transforms of the grid per water step, and each water step taken alone) and the plain summary, whose speed is "
-                "the scene's own, does not";
+                "transforms of the grid per water step) and the plain summary, whose speed is the scene's own, does not; "
+                "the budget also has every water step taken alone, a cost left in parts_wall_s.water, so "
+                "frames_per_s_wall_without_energy_budget is still below the plain summary's speed";
   j["frames_per_s_wall_without_energy_budget"] =
       s.wall_s > s.energy_budget_wall_s ? s.frames / (s.wall_s - s.energy_budget_wall_s) : 0.0;
   j["water_steps"] = s.water_steps;
@@ -187,6 +188,7 @@ nlohmann::json json_of(const StoneCase& c, const SceneOptions& o, const SceneSum
     j["forcing"] = to_string(o.forcing);
     j["stone_vertical_impulse_N_s"] = s.stone_vertical_impulse_N_s;
     j["water_vertical_impulse_N_s"] = s.water_vertical_impulse_N_s;
+    if (o.forcing == Forcing::pressure) j["heads_on_footprint"] = s.heads_on_footprint;
     nlohmann::json contacts = nlohmann::json::array();
     for (const ContactImpulse& ci : s.contact_impulses)
       contacts.push_back({{"start_s", ci.start_s}, {"end_s", ci.end_s}, {"stone_N_s", ci.stone_N_s}, {"water_N_s", ci.water_N_s}});

@@ -59,7 +59,9 @@ bool stoneskip_wrote(const fs::path& path, OutputFormat format) {
         const Hdf5Reader r(path);
         const H5Group& root = r.root();
         if (!root.has_attr("code_version") || root.attr_string("code_version").rfind("stoneskip ", 0) != 0) return false;
-        if (root.has_attr("report")) return false;  // a report's data.h5: only its report replaces it
+        // A report's data.h5 (`report`) or a sweep page's (`source`, reports/sweep/sweep_page.cpp):
+        // only their own commands replace them.
+        if (root.has_attr("report") || root.has_attr("source")) return false;
         return root.has_attr("sweep_file") == (format == OutputFormat::hdf5_sweep);
       } catch (const std::exception&) {
         return false;

@@ -37,6 +37,8 @@ BOOST_AUTO_TEST_CASE(an_hdf5_file_is_replaced_only_by_a_command_of_its_kind) {
   const fs::path throw_file = stamped(s.dir / "t.h5", "");
   const fs::path sweep_file = stamped(s.dir / "s.h5", "sweep_file");
   const fs::path report_data = stamped(s.dir / "data.h5", "report");
+  const fs::path sweep_page = stamped(s.dir / "page.h5", "source");  // a sweep page's data.h5
+  BOOST_TEST(!stoneskip_wrote(sweep_page, OutputFormat::hdf5));
   BOOST_TEST(stoneskip_wrote(throw_file, OutputFormat::hdf5));
   BOOST_TEST(!stoneskip_wrote(throw_file, OutputFormat::hdf5_sweep));
   BOOST_TEST(stoneskip_wrote(sweep_file, OutputFormat::hdf5_sweep));

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <ctime>
 #include <stdexcept>
+#include <system_error>
 
 #include "stoneskip_version.hpp"
 #include "tools/io/column_units.hpp"
@@ -23,7 +24,12 @@ struct SilenceHdf5 {
 const SilenceHdf5 kSilence;
 
 void check(herr_t status, const std::string& what) {
-  if (status < 0) throw std::runtime_error("HDF5: " + what);
+  if (status >= 0) return;
+  // A write that failed for want of room (a large dataset goes to the disk at once, past HDF5's
+  // cache): the output place's fault, exit 2 (tools/cli/main.cpp), not an internal error.
+  const int e = errno;
+  if (e == ENOSPC || e == EDQUOT || e == EFBIG || e == EIO) throw std::system_error(e, std::generic_category(), "HDF5: " + what);
+  throw std::runtime_error("HDF5: " + what);
 }
 
 hid_t check_id(hid_t id, const std::string& what) {
@@ -373,7 +379,12 @@ bool hdf5_write_failed() { return g_write_failed.load(); }
 
 Hdf5Writer::~Hdf5Writer() {
   root_.reset();
-  if (file_ >= 0) H5Fclose(file_);  // not committed: the temporary is removed by out_
+  if (file_ >= 0) {
+    // Not committed (an error on the way): the temporary is removed by out_. The library may still
+    // hold the file after a failed write; its clean-up at exit could crash on it (main ends without).
+    g_write_failed = true;
+    H5Fclose(file_);
+  }
 }
 
 void Hdf5Writer::commit() {

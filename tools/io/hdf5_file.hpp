@@ -97,8 +97,9 @@ class H5Group {
   std::string path_;
 };
 
-// Whether an Hdf5Writer's flush or close has failed in this process (HDF5 then still holds the
-// file, and its clean-up at exit can crash on it: the CLI's main ends without that clean-up).
+// Whether an Hdf5Writer's flush or close has failed in this process, or a writer was given up
+// before its commit (HDF5 may then still hold the file, and its clean-up at exit can crash on it:
+// the CLI's main ends without that clean-up).
 bool hdf5_write_failed();
 
 // A new HDF5 file, written atomically.

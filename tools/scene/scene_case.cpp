@@ -43,7 +43,7 @@ WaterScene read_water(TomlTable w, TomlTable& top) {
   scene.field.tiles.tile_cells = static_cast<int>(tile);
   scene.field.tiles.epsilon_m = how.tiles.epsilon_m;
   // A scene's water must be stable (a wave case may be unstable on purpose; a scene's water that
-  // blows up would be blamed on the stone): the exact free von Neumann limit (wave_case.hpp).
+  // blows up would be blamed on the stone): the exact free limit over the grid's modes (wave_case.hpp).
   {
     const WaterStability st = water_stability(scene.field);
     if (!st.stable()) {
@@ -56,9 +56,9 @@ WaterScene read_water(TomlTable w, TomlTable& top) {
         // The step it advises must pass the two-way check below too: under the stone the limit is lower.
         const double coupled = coupled_courant_limit(scene.field.stencil);
         const bool lowered = scene.coupling == Coupling::two_way && coupled < st.limit;
-        m << " exceeds the " << st.stencil << " stencil's limit " << st.limit << " (at every mu dt)";
+        m << " exceeds the " << st.stencil << " stencil's limit " << st.grid_limit << " over this grid's modes (at every mu dt)";
         if (lowered) m << ", and a two-way stone lowers it to " << coupled << " under the stone (model/README.md §2.4)";
-        m << "; take dt_s <= " << (lowered ? coupled : st.limit) * scene.field.cell_m / scene.field.wave_speed_m_s;
+        m << "; take dt_s <= " << (lowered ? coupled : st.grid_limit) * scene.field.cell_m / scene.field.wave_speed_m_s;
       }
       checked.fail("dt_s", m.str());
     }
