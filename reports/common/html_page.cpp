@@ -1,5 +1,7 @@
 #include "reports/common/html_page.hpp"
 
+#include "reports/common/code_span.hpp"
+
 #include <cctype>
 #include <map>
 #include <sstream>
@@ -57,34 +59,6 @@ std::string html_target(const std::string& url) {
   if (path.size() > 3 && path.compare(path.size() - 3, 3, ".md") == 0)
     return path.substr(0, path.size() - 3) + ".html" + (hash == std::string::npos ? "" : url.substr(hash));
   return url;
-}
-
-// A code span opening at s[open] (a run of n backticks, CommonMark 0.30 §6.1): it ends at the next
-// run of exactly n backticks. Returns the index after that run (npos when there is none) and the
-// content, with one space stripped from each end when both ends have one (reports/common/section.cpp
-// pads a content that starts or ends with a backtick).
-std::size_t code_span(const std::string& s, std::size_t open, std::string* content = nullptr) {
-  std::size_t n = 0;
-  while (open + n < s.size() && s[open + n] == '`') ++n;
-  for (std::size_t i = open + n; i < s.size();) {
-    if (s[i] != '`') {
-      ++i;
-      continue;
-    }
-    std::size_t m = 0;
-    while (i + m < s.size() && s[i + m] == '`') ++m;
-    if (m == n) {
-      if (content) {
-        std::string c = s.substr(open + n, i - open - n);
-        if (c.size() >= 2 && c.front() == ' ' && c.back() == ' ' && c.find_first_not_of(' ') != std::string::npos)
-          c = c.substr(1, c.size() - 2);
-        *content = c;
-      }
-      return i + m;
-    }
-    i += m;
-  }
-  return std::string::npos;
 }
 
 // Index of the ']' closing the '[' at `open`, skipping code spans; npos when there is none.

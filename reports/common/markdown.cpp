@@ -1,5 +1,8 @@
 #include "reports/common/markdown.hpp"
 
+#include "reports/common/code_span.hpp"
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -33,26 +36,11 @@ std::string table_cell(const std::string& c) {
   std::string out;
   for (std::size_t i = 0; i < c.size();) {
     if (c[i] == '`') {
-      std::size_t n = 0;
-      while (i + n < c.size() && c[i + n] == '`') ++n;
-      // The span's end: the next run of exactly n backticks.
-      std::size_t end = std::string::npos;
-      for (std::size_t k = i + n; k < c.size();) {
-        if (c[k] != '`') {
-          ++k;
-          continue;
-        }
-        std::size_t m = 0;
-        while (k + m < c.size() && c[k + m] == '`') ++m;
-        if (m == n) {
-          end = k + m;
-          break;
-        }
-        k += m;
-      }
+      const std::size_t end = code_span(c, i);
       if (end == std::string::npos) {  // an unclosed run is text
-        out.append(c, i, n);
-        i += n;
+        const std::size_t run_end = std::min(c.find_first_not_of('`', i), c.size());
+        out.append(c, i, run_end - i);
+        i = run_end;
       } else {
         out.append(c, i, end - i);
         i = end;
