@@ -25,6 +25,21 @@ std::array<double, 3> three(const std::string& value, const std::string& file, l
   return out;
 }
 
+// Counts a device can report (spec "Facts for the ingestion path"): the accelerometer's reading is
+// 10 bits (0..1023), MotionPlus's 14 bits (0..16383). A calibration outside them came from no remote
+// (a zero of 5e6 scaled every acceleration to nothing, and the capture was still called usable).
+std::array<double, 3> counts(const std::string& value, const std::string& file, long line, const std::string& key,
+                             int bits) {
+  const auto v = three(value, file, line, key);
+  const double top = double((1 << bits) - 1);
+  for (double x : v)
+    if (!(x >= 0 && x <= top))
+      throw_input_error(file, line, key,
+                        "each count must lie in 0.." + std::to_string(int(top)) + " (the device's " +
+                            std::to_string(bits) + "-bit reading), got '" + value + "'");
+  return v;
+}
+
 std::array<int, 3> signs(const std::string& value, const std::string& file, long line, const std::string& key) {
   const auto v = three(value, file, line, key);
   std::array<int, 3> s{};
@@ -95,6 +110,18 @@ bool apply_header_value(Trace& t, const std::string& key, const std::string& val
   }
   if (key.rfind("calibration.", 0) != 0) return false;
   const std::string k = key.substr(12);
+  // The block and the two count lines say the same thing twice: the later silently overrode the
+  // earlier. Which one holds is not for the reader to guess.
+  const bool block_key = k == "block", count_key = k == "accel_zero_counts" || k == "accel_one_g_counts";
+  for (const char* other : {"calibration.block", "calibration.accel_zero_counts", "calibration.accel_one_g_counts"}) {
+    const std::string o = other;
+    const bool other_is_block = o == "calibration.block";
+    const auto at = t.header_key_lines.find(o);
+    if (at != t.header_key_lines.end() && ((block_key && !other_is_block) || (count_key && other_is_block)))
+      throw_input_error(file, line, key,
+                        "conflicts with " + o + " on line " + std::to_string(at->second) +
+                            ": give the calibration block or the two count lines, not both");
+  }
   if (k == "block") {
     std::vector<std::uint8_t> bytes;
     for (auto f : split_fields(value, false)) {
@@ -112,15 +139,15 @@ bool apply_header_value(Trace& t, const std::string& key, const std::string& val
     }
     c.accel_from_device = c.accel_from_header = true;
   } else if (k == "accel_zero_counts") {
-    c.accel_zero_counts = three(value, file, line, key);
+    c.accel_zero_counts = counts(value, file, line, key, 10);
     c.accel_from_device = c.accel_from_header = true;
   } else if (k == "accel_one_g_counts") {
-    c.accel_one_g_counts = three(value, file, line, key);
+    c.accel_one_g_counts = counts(value, file, line, key, 10);
     c.accel_from_device = c.accel_from_header = true;
   } else if (k == "accel_sign") {
     c.accel_sign = signs(value, file, line, key);
   } else if (k == "gyro_zero_counts") {
-    c.gyro_zero_counts = three(value, file, line, key);
+    c.gyro_zero_counts = counts(value, file, line, key, 14);
   } else if (k == "gyro_slow_counts_per_deg_s") {
     c.gyro_slow_counts_per_deg_s = positive(value, file, line, key);
   } else if (k == "gyro_fast_factor") {

@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <string>
 
 #include "verification/captures/capture_analysis.hpp"
 #include "tools/capture/capture_format.hpp"
 #include "tools/capture/synthetic_capture.hpp"
 #include "tools/capture/trace_csv.hpp"
+#include "tools/capture/wiimote_report.hpp"
 #include "tools/io/input_error.hpp"
 
 using namespace stoneskip;
@@ -265,6 +267,32 @@ BOOST_AUTO_TEST_CASE(a_header_key_given_twice_is_refused_naming_both_lines) {
     const std::string m = e.what();
     BOOST_TEST(contains(m, "twice.log:2: calibration.accel_one_g_counts: given twice (first on line 1)"), m);
   }
+}
+
+BOOST_AUTO_TEST_CASE(a_calibration_block_beside_count_lines_or_counts_no_remote_reports_are_refused) {
+  // The block (EEPROM 0x16-0x1f) and the two count lines say the same thing: the later one silently
+  // won. A count outside the device's reading (10 bits for the accelerometer, 14 for MotionPlus,
+  // spec "Facts for the ingestion path") came from no remote. Oracle: the input rules, an error
+  // naming the file, the line and the key.
+  std::string block;
+  for (auto b : encode_calibration_block({506, 513, 518}, {610, 617, 621})) {
+    char h[4];
+    std::snprintf(h, sizeof h, "%02x", unsigned(b));
+    block += (block.empty() ? "" : " ") + std::string(h);
+  }
+  BOOST_TEST(parse_capture("# calibration.block: " + block + "\n" + gentle_log(), "b.log").calibration.accel_one_g_counts ==
+             (std::array<double, 3>{610, 617, 621}));  // the block alone reads
+  const std::string both = "# calibration.block: " + block + "\n# calibration.accel_zero_counts: 500,500,500\n";
+  BOOST_TEST(contains(error_of(both + gentle_log()), ":2: calibration.accel_zero_counts: conflicts with calibration.block on line 1"),
+             error_of(both + gentle_log()));
+  const std::string reversed = "# calibration.accel_one_g_counts: 600,600,600\n# calibration.block: " + block + "\n";
+  BOOST_TEST(contains(error_of(reversed + gentle_log()), ":2: calibration.block: conflicts with calibration.accel_one_g_counts on line 1"),
+             error_of(reversed + gentle_log()));
+  BOOST_TEST(contains(error_of("# calibration.accel_zero_counts: 5e6,512,512\n" + gentle_log()), "0..1023"));
+  BOOST_TEST(contains(error_of("# calibration.accel_one_g_counts: 610,-3,621\n" + gentle_log()), "0..1023"));
+  BOOST_TEST(contains(error_of("# calibration.gyro_zero_counts: 8192,8192,16384\n" + gentle_log()), "0..16383"));
+  BOOST_TEST(parse_capture("# calibration.gyro_zero_counts: 0,8100,16383\n" + gentle_log(), "g.log").calibration.gyro_zero_counts ==
+             (std::array<double, 3>{0, 8100, 16383}));  // the ends of the range read
 }
 
 BOOST_AUTO_TEST_CASE(a_trace_without_a_has_gyro_line_keeps_its_rates) {
