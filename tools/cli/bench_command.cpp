@@ -171,6 +171,12 @@ void bench(const BenchArgs& a) {
   const StoneCase sweep_case = load_stone_case(a.sweep_case);
   if (!sweep_case.throw_from_parameters)
     throw_input_error(sweep_case.file, 0, "throw", "the sweep varies spin and attack angle: give the throw as [throw] parameters");
+  // The sweep's throws and CVODE's know no live surface: a case with [water] would be timed on still
+  // water without a word (as a baseline would, tools/scene/baseline_file.cpp).
+  if (sweep_case.water)
+    throw_input_error(sweep_case.file, 0, "water",
+                      "the sweep's throws run on still water (the CVODE reference supports no live surface): "
+                      "give a case without [water]; a live-water scene is timed by --scene");
   HeadlineSpeedOptions o;
   o.scene = scene_options(scene_case, SceneEnd::at_duration);
   o.scene_repeats = a.repeats;

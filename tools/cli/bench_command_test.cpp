@@ -294,4 +294,15 @@ BOOST_AUTO_TEST_CASE(bench_refuses_a_sweep_tolerance_of_zero_or_below_rather_tha
   }
 }
 
+BOOST_AUTO_TEST_CASE(bench_refuses_a_live_water_sweep_case_rather_than_timing_it_on_still_water) {
+  // Oracle: the input rules. The sweep's throws and CVODE's run on still water, so a sweep case
+  // with [water] (the shipped swell, thrown from [throw] parameters) was timed as if its surface
+  // were still: one line naming the case and the key, exit 2.
+  const auto r = stoneskip::test::run_stoneskip("bench --quick --sweep-only --sweep-case cases/scenes/swell_8ms.toml");
+  BOOST_TEST(r.status == 2, r.out);
+  BOOST_TEST(r.out.find("cases/scenes/swell_8ms.toml") != std::string::npos, r.out);
+  BOOST_TEST(r.out.find("water") != std::string::npos, r.out);
+  BOOST_TEST(std::count(r.out.begin(), r.out.end(), '\n') == 1, r.out);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
