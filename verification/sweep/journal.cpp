@@ -159,14 +159,14 @@ void SweepJournal::request_sync() {
         if (stopping_) return;
         sync_pending_ = false;
         lock.unlock();
-        ::fdatasync(fd_);
+        if (::fdatasync(fd_) != 0) sync_errno_.store(errno);
         lock.lock();
       }
     };
     try {
       syncer_ = std::thread(syncer);
     } catch (const std::system_error&) {
-      ::fdatasync(fd_);  // no thread to spare (the system would not start one): the sync is done here
+      sync();  // no thread to spare (the system would not start one): the sync is done here
       return;
     }
   }
@@ -302,7 +302,16 @@ SweepJournal SweepJournal::resume(const fs::path& path, const JournalIdentity& i
   return j;
 }
 
+void SweepJournal::throw_if_sync_failed() const {
+  // An fdatasync that failed (EIO: the device lost written pages; ENOSPC, EDQUOT: a delayed
+  // allocation found no room) means records already appended may not be on the disk: the run stops
+  // as for a failed append, exit 2, with the journal kept for --resume (which checks every record).
+  if (const int e = sync_errno_.load(); e != 0)
+    throw std::system_error(e, std::generic_category(), "cannot make the sweep journal " + path_.string() + " durable");
+}
+
 void SweepJournal::write_record(std::uint32_t type, const std::vector<unsigned char>& payload) {
+  throw_if_sync_failed();
   const double start = now_s();
   std::vector<unsigned char> rec(kFrame + payload.size());
   const std::uint64_t len = payload.size(), sum = fnv1a64(payload.data(), payload.size());
@@ -330,8 +339,9 @@ void SweepJournal::write_record(std::uint32_t type, const std::vector<unsigned c
 void SweepJournal::append(const RowBatch& b) { write_record(kRows, encode(b)); }
 
 void SweepJournal::sync() {
-  ::fdatasync(fd_);
+  if (::fdatasync(fd_) != 0) sync_errno_.store(errno);
   last_sync_s_ = now_s();
+  throw_if_sync_failed();
 }
 
 void SweepJournal::close_and_remove() {

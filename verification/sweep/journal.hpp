@@ -18,6 +18,7 @@
 // power cut loses at most that interval), on a thread of its own so that a slow disk never stalls
 // the scheduler that appends. The file is locked (flock) while a sweep writes it, so two runs
 // cannot interleave records.
+#include <atomic>
 #include <condition_variable>
 #include <filesystem>
 #include <mutex>
@@ -83,6 +84,7 @@ class SweepJournal {
   void write_record(std::uint32_t type, const std::vector<unsigned char>& payload);
   void request_sync();  // wakes the sync thread (started on first use, once the journal is in place)
   void stop_syncing();
+  void throw_if_sync_failed() const;
   std::filesystem::path path_;
   int fd_ = -1;
   double sync_interval_s_ = 1;
@@ -92,6 +94,9 @@ class SweepJournal {
   std::mutex sync_mutex_;
   std::condition_variable sync_wanted_;
   bool sync_pending_ = false, stopping_ = false;
+  // The errno of a failed fdatasync on the sync thread (0 while none failed): the next append or
+  // sync throws it, so that an I/O error is not lost with the thread that met it.
+  std::atomic<int> sync_errno_{0};
 };
 
 }  // namespace stoneskip
