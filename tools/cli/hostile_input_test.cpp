@@ -29,6 +29,9 @@ namespace fs = std::filesystem;
 using stoneskip::test::RanApart;
 using stoneskip::test::run_apart;
 using stoneskip::test::words;
+using stoneskip::run_program;
+using stoneskip::SubprocessOptions;
+using stoneskip::SubprocessResult;
 
 namespace {
 
@@ -724,6 +727,24 @@ BOOST_AUTO_TEST_CASE(an_hdf5_output_that_does_not_fit_leaves_nothing_and_says_wh
   BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, r.err);
   BOOST_TEST(r.out.find("wrote") == std::string::npos, r.out);
   BOOST_TEST(s.holds_only({"good.toml"}));
+}
+
+BOOST_AUTO_TEST_CASE(a_run_past_the_machines_memory_says_so_in_one_line) {
+  // main: a run whose limits were lifted (--allow-large, --max-memory-gb) and that then found too
+  // little memory said "internal error: std::bad_alloc", exit 3. An address-space limit of 1.5 GB
+  // (prlimit, util-linux: an argument vector, no shell) stands in for a small machine under a
+  // 16384² wave (about 22.5 GB). Oracle: the bad-input rule, exit 2 and one line saying why.
+  SubprocessOptions o;
+  o.timeout_s = 60;
+  const SubprocessResult p =
+      run_program({"prlimit", "--as=1500000000", STONESKIP_EXE, "wave", "cases/wave_gaussian_five_point.toml", "--set",
+                   "water.nx=16384", "--set", "water.ny=16384", "--set", "water.t_end_s=0.0078125", "--allow-large",
+                   "--max-memory-gb", "30"},
+                  o);
+  BOOST_TEST(p.exit_status == 2, "exit " << p.exit_status << "; stderr: " << p.err);
+  BOOST_TEST(p.err.find("stoneskip: out of memory") == 0u, p.err);
+  BOOST_TEST(std::count(p.err.begin(), p.err.end(), '\n') == 1, p.err);
+  BOOST_TEST(p.out.empty(), p.out);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -15,6 +15,7 @@
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <new>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -131,6 +132,13 @@ int run_main(int argc, char** argv) {
                        (c == ENOSPC || c == EDQUOT || c == EIO || c == EROFS || c == EFBIG);
     std::fprintf(stderr, "stoneskip: %s%s\n", place ? "" : "internal error: ", one_line(e.what()).c_str());
     return place ? 2 : 3;
+  } catch (const std::bad_alloc&) {
+    // A run larger than the machine's memory (past the documented limits, lifted) said
+    // "internal error: std::bad_alloc", exit 3. It is the run's size, not a bug: exit 2, saying so.
+    std::fprintf(stderr,
+                 "stoneskip: out of memory: the run needs more memory than this machine gave it (the limits of "
+                 "cases/README.md, which --allow-large and --max-memory-gb lift, refuse such runs before they start)\n");
+    return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "stoneskip: internal error: %s\n", one_line(e.what()).c_str());
     return 3;

@@ -17,8 +17,11 @@
 //   stoneskip scene cases/scenes/seed_8ms.toml --set water.coupling=one_way --set scene.duration_s=1
 //   stoneskip scene cases/scenes/seed_8ms.toml --out seed.h5 --water-frames 0.1,0.5,1
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -70,8 +73,17 @@ class WorkFolder {
  public:
   WorkFolder() {
     with_registry_lock([&] {
-      std::string tmpl = (fs::temp_directory_path() / "stoneskip-movie-XXXXXX").string();
-      if (!mkdtemp(tmpl.data())) throw std::runtime_error("cannot make a temporary folder for the movie's frames");
+      // TMPDIR naming no folder, or one that cannot be written, is the environment's fault: one line
+      // naming it, exit 2 (it was "internal error", exit 3, with no word of TMPDIR).
+      std::error_code ec;
+      const fs::path dir = fs::temp_directory_path(ec);
+      const char* tmpdir = std::getenv("TMPDIR");
+      const std::string named = tmpdir ? std::string("TMPDIR=") + tmpdir : dir.string();
+      if (ec) throw InputError(named + ": no folder for the movie's frames (" + ec.message() + "): set TMPDIR to a writable folder");
+      std::string tmpl = (dir / "stoneskip-movie-XXXXXX").string();
+      if (!mkdtemp(tmpl.data()))
+        throw InputError(named + ": cannot make a folder for the movie's frames there (" + std::strerror(errno) +
+                         "): set TMPDIR to a writable folder");
       path_ = tmpl;
       registered_ = RegisteredTemporary(path_, TemporaryKind::folder);
     });

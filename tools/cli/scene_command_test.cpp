@@ -118,6 +118,27 @@ BOOST_AUTO_TEST_CASE(a_movie_is_made_under_a_temporary_folder_with_a_percent_in_
   BOOST_TEST(probed_frames(movie) == 18);
 }
 
+BOOST_AUTO_TEST_CASE(a_tmpdir_that_is_no_folder_is_named_before_the_scene_runs) {
+  // TMPDIR naming a missing folder, or a file, ended a movie with "internal error", exit 3, and no
+  // word of TMPDIR. Oracle: the input rules, one line naming TMPDIR, exit 2, no movie.
+  TempDir tmp("stoneskip-movie-tmpdir");
+  const fs::path file = tmp.path() / "a-file";
+  std::ofstream(file) << "x";
+  const char* old = std::getenv("TMPDIR");
+  const std::string saved = old ? old : "";
+  for (const fs::path& bad : {tmp.path() / "missing", file}) {
+    ::setenv("TMPDIR", bad.c_str(), 1);
+    const fs::path movie = tmp.path() / "m.mp4";
+    const auto r = run_stoneskip("scene " + small_seed(0.2) + " --movie " + movie.string() + " --movie-size 320x160");
+    if (old) ::setenv("TMPDIR", saved.c_str(), 1);
+    else ::unsetenv("TMPDIR");
+    BOOST_TEST(r.status == 2, bad << ": exit " << r.status << ": " << r.out);
+    BOOST_TEST(r.out.find("TMPDIR=" + bad.string()) != std::string::npos, r.out);
+    BOOST_TEST(std::count(r.out.begin(), r.out.end(), '\n') == 1, r.out);
+    BOOST_TEST(!fs::exists(movie));
+  }
+}
+
 BOOST_AUTO_TEST_CASE(a_movie_has_duration_times_rate_frames) {
   // Oracle: without slow motion the movie plays in real time — ffprobe counts duration × rate
   // frames: 0.2 s at 90 frames/s (MP4, every frame) = 18; as a GIF (≤ 30 frames/s: every third) = 6.
