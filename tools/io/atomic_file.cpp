@@ -28,11 +28,25 @@ std::string errno_words(int e) { return std::strerror(e); }
 
 // A unique temporary name beside the destination: "<name>.tmp-PID", then "<name>.tmp-PID-N" if
 // another writer of this process (or a file left by an earlier process with the same id) has it.
+// `final_path` with `suffix` added to its name. A destination whose name is near the file system's
+// limit (NAME_MAX, 255 bytes on Linux's file systems) has its name shortened first, cut at a
+// character's start, so that a name the system accepts is not refused for the suffix ("File name
+// too long" for a 250-byte name).
+fs::path beside(const fs::path& final_path, const std::string& suffix) {
+  std::string name = final_path.filename().string();
+  const std::size_t name_max = 255;
+  if (name.size() + suffix.size() > name_max) {
+    std::size_t keep = name_max - suffix.size();
+    while (keep > 0 && (static_cast<unsigned char>(name[keep]) & 0xC0) == 0x80) --keep;  // not inside a UTF-8 character
+    name.resize(keep);
+  }
+  return final_path.parent_path() / (name + suffix);
+}
+
 fs::path temporary_name(const fs::path& final_path, int attempt) {
-  fs::path t = final_path;
-  t += ".tmp-" + std::to_string(::getpid());
-  if (attempt > 0) t += "-" + std::to_string(attempt);
-  return t;
+  std::string suffix = ".tmp-" + std::to_string(::getpid());
+  if (attempt > 0) suffix += "-" + std::to_string(attempt);
+  return beside(final_path, suffix);
 }
 
 }  // namespace
@@ -156,8 +170,7 @@ AtomicFolder::AtomicFolder(fs::path final_dir, const std::function<bool(const fs
   if (final_.empty()) throw_input_error("--out", 0, "", "an output folder is required (got an empty name)");
   while (final_.has_parent_path() && !final_.has_filename()) final_ = final_.parent_path();  // "dir/" → "dir"
   check_destination();
-  work_ = final_;
-  work_ += ".partial-" + std::to_string(::getpid());
+  work_ = beside(final_, ".partial-" + std::to_string(::getpid()));
   with_registry_lock([&] {
     RegisteredTemporary reg(work_, TemporaryKind::folder);
     if (::mkdir(work_.c_str(), 0755) != 0) {

@@ -296,6 +296,40 @@ BOOST_AUTO_TEST_CASE(an_atomic_folder_appears_whole_and_replaces_only_what_it_ma
   BOOST_TEST(registered_temporary_count() == registered);
 }
 
+BOOST_AUTO_TEST_CASE(a_name_near_the_file_systems_limit_is_written_through_a_shortened_temporary) {
+  // A 250-byte name is a name the file system accepts (NAME_MAX 255), but "<name>.tmp-PID" is not:
+  // such a file or folder was refused, "File name too long". Oracle: the folder listing, the file's
+  // own text read back, and a multi-byte name (3-byte characters) cut at a character's start.
+  Scratch s;
+  const std::string ascii(250, 'a');
+  std::string wide;
+  while (wide.size() + 3 <= 252) wide += "\xe2\x82\xac";  // 84 euro signs, 252 bytes
+  for (const std::string& name : {ascii, wide}) {
+    write_text_file(s.dir / name, "text of " + std::to_string(name.size()));
+    std::ifstream in(s.dir / name);
+    std::string line;
+    std::getline(in, line);
+    BOOST_TEST(line == "text of " + std::to_string(name.size()));
+    AtomicOutput o(s.dir / (name + "x").substr(0, 255));
+    const std::string t = o.temporary_path().filename().string();
+    BOOST_TEST(t.size() <= 255u, t.size());
+    BOOST_TEST(t.find(".tmp-") != std::string::npos);
+    // The cut leaves no partial character: every byte before ".tmp-" that starts a character does.
+    const std::string kept = t.substr(0, t.find(".tmp-"));
+    BOOST_TEST(name.compare(0, kept.size(), kept) == 0);
+    BOOST_TEST((kept.size() == name.size() || (static_cast<unsigned char>(name[kept.size()]) & 0xC0) != 0x80));
+  }
+  const auto ours = [](const fs::path& d) { return fs::is_regular_file(d / "index.md"); };
+  {
+    AtomicFolder f(s.dir / ("d" + ascii.substr(1)), ours);
+    std::ofstream(f.work_dir() / "index.md") << "page";
+    f.commit();
+  }
+  BOOST_TEST(fs::is_regular_file(s.dir / ("d" + ascii.substr(1)) / "index.md"));
+  BOOST_TEST(no_temporaries(s.dir));
+  BOOST_TEST(std::distance(fs::directory_iterator(s.dir), fs::directory_iterator()) == 3);  // two files, one folder
+}
+
 BOOST_AUTO_TEST_CASE(an_atomic_folder_moves_into_place_atomically_against_a_destination_changed_after_its_check) {
   // Oracle: what is at the name afterwards (lstat, the link's target, the files' texts). The check
   // (AtomicFolder's, at construction and at commit) and the move are apart in time; the name is

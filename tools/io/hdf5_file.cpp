@@ -391,13 +391,17 @@ void Hdf5Writer::commit() {
   const int saved = errno;
   errno = 0;
   const bool flushed = H5Fflush(file_, H5F_SCOPE_GLOBAL) >= 0;
+  const int flush_errno = flushed ? 0 : errno;  // the cause, before the close can overwrite it
   root_.reset();
   const hid_t f = file_;
   file_ = -1;
+  errno = 0;
   const bool closed = H5Fclose(f) >= 0;
+  const int close_errno = closed ? 0 : errno;
   if (!flushed || !closed) {
     g_write_failed = true;
-    const std::string why = errno != 0 ? std::strerror(errno) : "the HDF5 library reported an error";
+    const int e = flush_errno != 0 ? flush_errno : close_errno;
+    const std::string why = e != 0 ? std::strerror(e) : "the HDF5 library reported an error";
     throw_input_error(out_.final_path().string(), 0, "", "cannot write the HDF5 file (" + why + "); nothing written there");
   }
   errno = saved;
