@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "model/coupling/draught.hpp"
+#include "tools/io/number_text.hpp"
 #include "tools/scene/stone_case.hpp"
 #include "tools/scene/wave_case.hpp"
 
@@ -49,16 +50,18 @@ WaterScene read_water(TomlTable w, TomlTable& top) {
     if (!st.stable()) {
       std::ostringstream m;
       m.precision(6);
-      m << "the water would be unstable: sigma = c dt_s / cell_m = " << st.sigma;
+      m << "the water would be unstable: sigma = c dt_s / cell_m = " << numbers_apart(st.sigma, st.grid_limit, 6).first;
       if (st.no_stable_step())
         m << ", but the " << st.stencil << " stencil has no stable step (a mode grows at every sigma > 0): change its weights";
       else {
         // The step it advises must pass the two-way check below too: under the stone the limit is lower.
         const double coupled = coupled_courant_limit(scene.field.stencil);
         const bool lowered = scene.coupling == Coupling::two_way && coupled < st.limit;
-        m << " exceeds the " << st.stencil << " stencil's limit " << st.grid_limit << " over this grid's modes (at every mu dt)";
+        m << " exceeds the " << st.stencil << " stencil's limit " << numbers_apart(st.sigma, st.grid_limit, 6).second
+          << " over this grid's modes (at every mu dt)";
         if (lowered) m << ", and a two-way stone lowers it to " << coupled << " under the stone (model/README.md §2.4)";
-        m << "; take dt_s <= " << (lowered ? coupled : st.grid_limit) * scene.field.cell_m / scene.field.wave_speed_m_s;
+        // Rounded down: the step advised must pass when taken as printed.
+        m << "; take dt_s <= " << at_most((lowered ? coupled : st.grid_limit) * scene.field.cell_m / scene.field.wave_speed_m_s, 6);
       }
       checked.fail("dt_s", m.str());
     }
@@ -69,9 +72,10 @@ WaterScene read_water(TomlTable w, TomlTable& top) {
     if (sigma > limit) {
       std::ostringstream m;
       m.precision(4);
-      m << "σ = cΔt/d = " << sigma << " is above the coupled stability limit " << limit << " of " << scene.field.stencil.name
-        << " under the stone (model/README.md §2.4: free limit/√2): take dt_s ≤ " << limit * scene.field.cell_m / scene.field.wave_speed_m_s
-        << " s, or coupling = \"one_way\"";
+      const auto [shown_sigma, shown_limit] = numbers_apart(sigma, limit, 4);
+      m << "σ = cΔt/d = " << shown_sigma << " is above the coupled stability limit " << shown_limit << " of "
+        << scene.field.stencil.name << " under the stone (model/README.md §2.4: free limit/√2): take dt_s ≤ "
+        << at_most(limit * scene.field.cell_m / scene.field.wave_speed_m_s, 4) << " s, or coupling = \"one_way\"";
       checked.fail("dt_s", m.str());
     }
   }

@@ -5,6 +5,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
+#include <string>
+#include <utility>
+
+#include "tools/io/number_text.hpp"
 
 namespace stoneskip {
 
@@ -68,19 +72,31 @@ std::string WaterStability::reason() const {
   else if (no_stable_step())
     std::snprintf(b, sizeof b, "the %s stencil has no stable step: a mode grows at every sigma > 0 (sigma = %.4f)",
                   stencil.c_str(), sigma);
-  else if (sigma > limit && stable())
+  else if (sigma > limit && stable()) {
+    const auto [s_plane, plane] = numbers_apart(sigma, limit, 6);
+    const auto [s_grid, on_grid] = numbers_apart(sigma, grid_limit, 6);
     std::snprintf(b, sizeof b,
-                  "sigma = %.6g exceeds the von Neumann limit %.6g of %s on the plane, but is within %.6g, the limit over "
+                  "sigma = %s exceeds the von Neumann limit %s of %s on the plane, but is within %s, the limit over "
                   "the modes this %s grid holds (it holds none at the zone's corner; at every mu dt)",
-                  sigma, limit, stencil.c_str(), grid_limit, grid.c_str());
-  else if (!stable() && grid_limit > limit * (1 + 1e-4))
+                  (s_plane.size() > s_grid.size() ? s_plane : s_grid).c_str(), plane.c_str(), stencil.c_str(),
+                  on_grid.c_str(), grid.c_str());
+  } else if (!stable() && grid_limit > limit * (1 + 1e-4)) {
+    const auto [s_grid, on_grid] = numbers_apart(sigma, grid_limit, 6);
     std::snprintf(b, sizeof b,
-                  "sigma = %.6g exceeds %.6g, the limit over the modes this %s grid holds (%.6g on the plane, for %s; at "
+                  "sigma = %s exceeds %s, the limit over the modes this %s grid holds (%.6g on the plane, for %s; at "
                   "every mu dt)",
-                  sigma, grid_limit, grid.c_str(), limit, stencil.c_str());
-  else
-    std::snprintf(b, sizeof b, "sigma = %.4f %s the von Neumann limit %.4f of %s (at every mu dt)", sigma,
-                  stable() ? "is within" : "exceeds", limit, stencil.c_str());
+                  s_grid.c_str(), on_grid.c_str(), grid.c_str(), limit, stencil.c_str());
+  }
+  else {
+    // Four decimals, or as many digits as tell the two apart ("0.7071 exceeds 0.7071" was true).
+    char s4[32], l4[32];
+    std::snprintf(s4, sizeof s4, "%.4f", sigma);
+    std::snprintf(l4, sizeof l4, "%.4f", limit);
+    std::pair<std::string, std::string> shown{s4, l4};
+    if (shown.first == shown.second && sigma != limit) shown = numbers_apart(sigma, limit, 5);
+    std::snprintf(b, sizeof b, "sigma = %s %s the von Neumann limit %s of %s (at every mu dt)", shown.first.c_str(),
+                  stable() ? "is within" : "exceeds", shown.second.c_str(), stencil.c_str());
+  }
   return b;
 }
 
