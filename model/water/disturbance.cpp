@@ -1,6 +1,8 @@
 #include "model/water/disturbance.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace stoneskip {
 
@@ -23,6 +25,57 @@ bool parse_disturbance_kind(const std::string& s, DisturbanceKind& out) {
   return false;
 }
 
+namespace {
+
+// Every image beyond this many widths from a cell adds less than e^-42 (6e-19) of the peak.
+constexpr double kReachWidths = 6.5;
+
+// Images needed on each side: with the centre and the cells in [0, L), image p lies at least
+// (|p| − 1) L from every cell, so |p| ≤ ⌈reach / L⌉ + 1 holds every image within `reach`.
+int images_each_side(double reach_m, double period_m) { return static_cast<int>(std::ceil(reach_m / period_m)) + 1; }
+
+// x wrapped into [0, L).
+double wrapped(double x, double period) {
+  const double w = x - period * std::floor(x / period);
+  return w >= period ? 0.0 : w;
+}
+
+// Σ_p exp(−((u + pL)/w)²), the periodic sum of a 1-D Gaussian (u = x − centre, both in [0, L)).
+// Narrow (w ≤ L): directly, at most 9 images each side. Wide: by Poisson summation,
+// (√π w / L) [1 + 2 Σ_k exp(−(π k w / L)²) cos(2π k u / L)], whose terms fall below e^-43 by k = 3.
+double periodic_gaussian(double u, double width, double period) {
+  if (width <= period) {
+    const int n = images_each_side(kReachWidths * width, period);
+    double s = 0;
+    for (int p = -n; p <= n; ++p) {
+      const double v = (u + p * period) / width;
+      s += std::exp(-v * v);
+    }
+    return s;
+  }
+  double s = 1;
+  for (int k = 1;; ++k) {
+    const double a = M_PI * k * width / period;
+    if (a * a > 43) break;
+    s += 2 * std::exp(-a * a) * std::cos(2 * M_PI * k * u / period);
+  }
+  return std::sqrt(M_PI) * width / period * s;
+}
+
+}  // namespace
+
+std::string disturbance_image_problem(const Disturbance& d, double lx_m, double ly_m) {
+  if (d.kind != DisturbanceKind::ring) return "";
+  const double reach = d.radius_m + kReachWidths * d.width_m;
+  if (images_each_side(reach, lx_m) <= kMostRingImages && images_each_side(reach, ly_m) <= kMostRingImages) return "";
+  char b[320];
+  std::snprintf(b, sizeof b,
+                "a ring of radius_m + 6.5 width_m = %.6g m reaches past %d periods of the %.6g m x %.6g m grid: its "
+                "periodic images cannot be summed (keep radius_m + 6.5 width_m within %.6g m)",
+                reach, kMostRingImages - 1, lx_m, ly_m, (kMostRingImages - 1) * std::min(lx_m, ly_m));
+  return b;
+}
+
 void sample_disturbance(const Disturbance& d, int nx, int ny, double cell_m, std::vector<double>& z) {
   z.assign(static_cast<std::size_t>(nx) * ny, 0.0);
   const double lx = nx * cell_m, ly = ny * cell_m;
@@ -42,16 +95,29 @@ void sample_disturbance(const Disturbance& d, int nx, int ny, double cell_m, std
         for (int i = 0; i < nx; ++i) at(i, j) = d.amplitude_m * std::cos(kx * i * cell_m + ky * j * cell_m);
       return;
     }
-    case DisturbanceKind::gaussian:
+    case DisturbanceKind::gaussian: {
+      // exp(−(dx² + dy²)/w²) = exp(−dx²/w²) exp(−dy²/w²): the image sum is a product of two
+      // periodic 1-D sums. The centre is wrapped into the grid, so that the images are counted from it.
+      const double xc = wrapped(d.x_m, lx), yc = wrapped(d.y_m, ly);
+      std::vector<double> gx(static_cast<std::size_t>(nx)), gy(static_cast<std::size_t>(ny));
+      for (int i = 0; i < nx; ++i) gx[static_cast<std::size_t>(i)] = periodic_gaussian(i * cell_m - xc, d.width_m, lx);
+      for (int j = 0; j < ny; ++j) gy[static_cast<std::size_t>(j)] = periodic_gaussian(j * cell_m - yc, d.width_m, ly);
+      for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) at(i, j) = d.amplitude_m * gx[static_cast<std::size_t>(i)] * gy[static_cast<std::size_t>(j)];
+      return;
+    }
     case DisturbanceKind::ring: {
+      const double xc = wrapped(d.x_m, lx), yc = wrapped(d.y_m, ly);
+      const double reach = d.radius_m + kReachWidths * d.width_m;
+      const int nx_images = std::min(images_each_side(reach, lx), kMostRingImages);
+      const int ny_images = std::min(images_each_side(reach, ly), kMostRingImages);
       for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) {
           double sum = 0;
-          for (int py = -1; py <= 1; ++py)
-            for (int px = -1; px <= 1; ++px) {
-              double dx = i * cell_m - d.x_m + px * lx, dy = j * cell_m - d.y_m + py * ly;
-              double r = std::sqrt(dx * dx + dy * dy);
-              double u = d.kind == DisturbanceKind::gaussian ? r / d.width_m : (r - d.radius_m) / d.width_m;
+          for (int py = -ny_images; py <= ny_images; ++py)
+            for (int px = -nx_images; px <= nx_images; ++px) {
+              const double dx = i * cell_m - xc + px * lx, dy = j * cell_m - yc + py * ly;
+              const double u = (std::sqrt(dx * dx + dy * dy) - d.radius_m) / d.width_m;
               sum += std::exp(-u * u);
             }
           at(i, j) = d.amplitude_m * sum;

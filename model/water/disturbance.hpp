@@ -1,9 +1,12 @@
 #pragma once
 // Initial disturbances of a water surface, sampled at the cell points x_i = i d, y_j = j d
 // (i < nx, j < ny) of a grid whose periodic copies tile the plane with period nx d × ny d.
-// A Gaussian and a ring are summed over the neighbouring periodic images, so on a periodic grid
-// they are smooth and periodic; on other boundaries the images are negligible when the bump is
-// well inside the domain.
+// A Gaussian and a ring are summed over every periodic image that reaches the grid (each image
+// left out is below e^-42 of the peak at every cell), so on a periodic grid they are smooth and
+// periodic whatever their width and wherever their centre; on other boundaries the images are
+// negligible when the bump is well inside the domain. A Gaussian's sum separates in x and y and
+// is exact at any width (a wide one by Poisson summation); a ring's does not, and a ring reaching
+// past kMostRingImages periods is refused (disturbance_image_problem).
 #include <string>
 #include <vector>
 
@@ -26,5 +29,12 @@ struct Disturbance {
 // Fills z (size nx·ny, row-major with x fastest) with the disturbance. The initial velocity of
 // every kind is zero (a plane wave therefore starts as a standing wave).
 void sample_disturbance(const Disturbance& d, int nx, int ny, double cell_m, std::vector<double>& z);
+
+// A ring is summed over images up to this many periods from the grid on each side.
+constexpr int kMostRingImages = 4;
+
+// "" or why `d` cannot be summed over its images on a grid of lx × ly metres (a ring whose radius
+// + 6.5 widths reaches past kMostRingImages − 1 periods: its images would be (2·4 + 1)² and more per cell).
+std::string disturbance_image_problem(const Disturbance& d, double lx_m, double ly_m);
 
 }  // namespace stoneskip

@@ -182,6 +182,18 @@ BOOST_AUTO_TEST_CASE(a_plane_wave_that_does_not_fit_the_periodic_grid_says_so) {
   BOOST_TEST(seam["note"].get<std::string>().find("does not fit the periodic grid") != std::string::npos);
 }
 
+BOOST_AUTO_TEST_CASE(a_ring_too_large_for_its_periodic_images_is_refused_naming_its_key) {
+  // A ring of radius 5 m on the 1 m ring case reaches past the images the sum holds
+  // (model/water/disturbance.hpp; the sum itself is tested there against a direct one).
+  // Oracle: the input rules, one line naming the key and the reach, exit 2.
+  const Ran ring = run_stoneskip("wave cases/wave_ring_paper_eq11.toml --set initial.radius_m=5");
+  BOOST_TEST(ring.status == 2, ring.out);
+  BOOST_TEST(ring.out.find("initial.radius_m: a ring of radius_m + 6.5 width_m = 5.195 m reaches past 3 periods") !=
+                 std::string::npos,
+             ring.out);
+  BOOST_TEST(std::count(ring.out.begin(), ring.out.end(), '\n') == 1, ring.out);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "tools/scene/scene_case.hpp"
 
+#include <optional>
 #include <sstream>
 
 #include "model/coupling/draught.hpp"
@@ -15,7 +16,8 @@ WaterScene read_water(TomlTable w, TomlTable& top) {
   WaterScene scene;
   scene.origin_x_m = w.bounded_or("origin_x_m", 0.0, -kMaxWaterOrigin_m, kMaxWaterOrigin_m);
   scene.origin_y_m = w.bounded_or("origin_y_m", 0.0, -kMaxWaterOrigin_m, kMaxWaterOrigin_m);
-  if (auto i = w.maybe_table("initial")) scene.initial = read_disturbance(*i);
+  std::optional<TomlTable> initial_table = w.maybe_table("initial");
+  if (initial_table) scene.initial = read_disturbance(*initial_table);
   const std::string coupling = w.string_or("coupling", to_string(scene.coupling));
   if (!parse_coupling(coupling, scene.coupling)) w.fail("coupling", "'" + coupling + "' is not one of none, one_way, two_way");
   const std::string forcing = w.string_or("forcing", to_string(scene.forcing));
@@ -38,6 +40,11 @@ WaterScene read_water(TomlTable w, TomlTable& top) {
   w.require_non_negative("epsilon_m", how.tiles.epsilon_m);
   TomlTable checked = w;  // for errors naming keys after read_height_field has finished w
   scene.field = read_height_field(w, top, nullptr);
+  if (scene.initial) {
+    const std::string why = disturbance_image_problem(*scene.initial, scene.field.nx * scene.field.cell_m,
+                                                      scene.field.ny * scene.field.cell_m);
+    if (!why.empty()) initial_table->fail("radius_m", why);
+  }
   scene.field.precision = how.precision;
   scene.field.threads = static_cast<int>(threads);
   scene.field.mode = how.mode;

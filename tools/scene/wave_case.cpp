@@ -187,7 +187,11 @@ WaveCase wave_case_from_document(const TomlDocument& doc) {
   TomlTable top = doc.top();
   c.title = read_case_title(top);
   c.water = read_height_field(top.table("water"), top, &c.t_end_s);
-  c.initial = read_disturbance(top.table("initial"));
+  TomlTable initial = top.table("initial");
+  c.initial = read_disturbance(initial);
+  if (const std::string why = disturbance_image_problem(c.initial, c.water.nx * c.water.cell_m, c.water.ny * c.water.cell_m);
+      !why.empty())
+    initial.fail("radius_m", why);
   if (auto ref = top.maybe_table("reference")) {
     const std::string sym = ref->string_or("symbol", "continuum");
     if (sym != "continuum" && sym != "stencil") ref->fail("symbol", "'" + sym + "' is not one of continuum, stencil");

@@ -1,0 +1,91 @@
+// Oracle: an independent computation, the image sums taken directly over 61 × 61 images (every
+// image left out is then more than 29 periods away, e^-(29/0.6)² ≈ 0 even for the widest bump
+// here), against the sampled field, which sums only the images that reach the grid (a Gaussian
+// as a product of two 1-D sums, a wide one by Poisson summation). Tolerance 1e-13 of the peak
+// sum: round-off of a few dozen terms.
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "model/water/disturbance.hpp"
+
+using namespace stoneskip;
+
+namespace {
+
+double brute(const Disturbance& d, double x, double y, double lx, double ly) {
+  double s = 0;
+  for (int q = -30; q <= 30; ++q)
+    for (int p = -30; p <= 30; ++p) {
+      const double dx = x - d.x_m + p * lx, dy = y - d.y_m + q * ly;
+      const double r = std::sqrt(dx * dx + dy * dy);
+      const double u = d.kind == DisturbanceKind::gaussian ? r / d.width_m : (r - d.radius_m) / d.width_m;
+      s += std::exp(-u * u);
+    }
+  return d.amplitude_m * s;
+}
+
+double worst_gap(const Disturbance& d, int nx, int ny, double cell) {
+  std::vector<double> z;
+  sample_disturbance(d, nx, ny, cell, z);
+  double gap = 0, peak = 0;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const double b = brute(d, i * cell, j * cell, nx * cell, ny * cell);
+      gap = std::max(gap, std::abs(z[static_cast<std::size_t>(j) * nx + i] - b));
+      peak = std::max(peak, std::abs(b));
+    }
+  return gap / peak;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(disturbance)
+
+BOOST_AUTO_TEST_CASE(a_gaussian_is_its_whole_periodic_image_sum_at_any_width_and_centre) {
+  // 3 × 3 images only: a Gaussian half as wide as its 1 m × 0.75 m grid missed images of 2 % of
+  // its peak (a seam), and one centred off the grid (x_m = −0.9 m) missed the image nearest to
+  // the grid's far edge.
+  Disturbance d;
+  d.kind = DisturbanceKind::gaussian;
+  d.amplitude_m = 0.01;
+  for (double width : {0.05, 0.5, 0.6, 3.0})
+    for (double x0 : {0.3, -0.9, 2.7}) {
+      d.width_m = width;
+      d.x_m = x0;
+      d.y_m = 0.2;
+      BOOST_TEST(worst_gap(d, 20, 15, 0.05) < 1e-13, "width " << width << ", x " << x0);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(a_ring_is_its_whole_periodic_image_sum_within_its_reach) {
+  Disturbance d;
+  d.kind = DisturbanceKind::ring;
+  d.amplitude_m = 0.01;
+  d.width_m = 0.08;
+  for (double radius : {0.2, 0.9, 1.7})
+    for (double x0 : {0.4, -0.6}) {
+      d.radius_m = radius;
+      d.x_m = x0;
+      d.y_m = 0.35;
+      BOOST_TEST(disturbance_image_problem(d, 1.0, 0.75) == "");
+      BOOST_TEST(worst_gap(d, 20, 15, 0.05) < 1e-13, "radius " << radius << ", x " << x0);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(a_ring_reaching_past_its_image_limit_is_named) {
+  // radius + 6.5 width = 2.52 m on a 0.75 m side: ⌈2.52/0.75⌉ + 1 = 5 images each side, past 4.
+  Disturbance d;
+  d.kind = DisturbanceKind::ring;
+  d.radius_m = 2.0;
+  d.width_m = 0.08;
+  BOOST_TEST(disturbance_image_problem(d, 1.0, 0.75).find("reaches past 3 periods") != std::string::npos);
+  BOOST_TEST(disturbance_image_problem(d, 1.0, 1.0) == "");  // ⌈2.52⌉ + 1 = 4: within
+  d.kind = DisturbanceKind::gaussian;
+  d.width_m = 1e3;
+  BOOST_TEST(disturbance_image_problem(d, 1.0, 0.75) == "");  // a Gaussian's sum is exact at any width
+}
+
+BOOST_AUTO_TEST_SUITE_END()
