@@ -64,7 +64,20 @@ double periodic_gaussian(double u, double width, double period) {
 
 }  // namespace
 
-std::string disturbance_image_problem(const Disturbance& d, double lx_m, double ly_m) {
+std::string disturbance_image_problem(const Disturbance& d, double lx_m, double ly_m, double max_height_m) {
+  if (d.kind == DisturbanceKind::gaussian) {
+    // The sum peaks at the centre: A Sx(0) Sy(0), about A π w² / (Lx Ly) once w is past the grid.
+    const double peak = std::abs(d.amplitude_m) * periodic_gaussian(0, d.width_m, lx_m) * periodic_gaussian(0, d.width_m, ly_m);
+    if (!(peak <= max_height_m)) {
+      char b[320];
+      std::snprintf(b, sizeof b,
+                    "a Gaussian of width_m %.6g on the %.6g m x %.6g m grid sums with its periodic images to a surface "
+                    "%.3g m high, above the %.6g m that amplitude_m may reach: narrow it",
+                    d.width_m, lx_m, ly_m, peak, max_height_m);
+      return b;
+    }
+    return "";
+  }
   if (d.kind != DisturbanceKind::ring) return "";
   const double reach = d.radius_m + kReachWidths * d.width_m;
   if (images_each_side(reach, lx_m) <= kMostRingImages && images_each_side(reach, ly_m) <= kMostRingImages) return "";

@@ -33,8 +33,9 @@ void sample_disturbance(const Disturbance& d, int nx, int ny, double cell_m, std
 // A ring is summed over images up to this many periods from the grid on each side.
 constexpr int kMostRingImages = 4;
 
-// "" or why `d` cannot be summed over its images on a grid of lx × ly metres (a ring whose radius
-// + 6.5 widths reaches past kMostRingImages − 1 periods: its images would be (2·4 + 1)² and more per cell).
-std::string disturbance_image_problem(const Disturbance& d, double lx_m, double ly_m);
+// "" or why `d` cannot be summed over its images on a grid of lx × ly metres: a ring whose radius
+// + 6.5 widths reaches past kMostRingImages − 1 periods (its images would be (2·4 + 1)² and more per
+// cell), or a Gaussian whose sum peaks above max_height_m (a width of 1e6 m on a 1 m grid: 3e10 m).
+std::string disturbance_image_problem(const Disturbance& d, double lx_m, double ly_m, double max_height_m);
 
 }  // namespace stoneskip

@@ -70,7 +70,7 @@ BOOST_AUTO_TEST_CASE(a_ring_is_its_whole_periodic_image_sum_within_its_reach) {
       d.radius_m = radius;
       d.x_m = x0;
       d.y_m = 0.35;
-      BOOST_TEST(disturbance_image_problem(d, 1.0, 0.75) == "");
+      BOOST_TEST(disturbance_image_problem(d, 1.0, 0.75, 1e3) == "");
       BOOST_TEST(worst_gap(d, 20, 15, 0.05) < 1e-13, "radius " << radius << ", x " << x0);
     }
 }
@@ -81,11 +81,17 @@ BOOST_AUTO_TEST_CASE(a_ring_reaching_past_its_image_limit_is_named) {
   d.kind = DisturbanceKind::ring;
   d.radius_m = 2.0;
   d.width_m = 0.08;
-  BOOST_TEST(disturbance_image_problem(d, 1.0, 0.75).find("reaches past 3 periods") != std::string::npos);
-  BOOST_TEST(disturbance_image_problem(d, 1.0, 1.0) == "");  // ⌈2.52⌉ + 1 = 4: within
+  BOOST_TEST(disturbance_image_problem(d, 1.0, 0.75, 1e3).find("reaches past 3 periods") != std::string::npos);
+  BOOST_TEST(disturbance_image_problem(d, 1.0, 1.0, 1e3) == "");  // ⌈2.52⌉ + 1 = 4: within
+  // A Gaussian's sum is exact at any width, but it peaks near A π w² / (Lx Ly): 0.01 π 1e6 / 0.75
+  // = 4.19e4 m for w = 1e3 m, above a 1e3 m bound; w = 100 m gives 419 m, below it.
   d.kind = DisturbanceKind::gaussian;
+  d.amplitude_m = 0.01;
   d.width_m = 1e3;
-  BOOST_TEST(disturbance_image_problem(d, 1.0, 0.75) == "");  // a Gaussian's sum is exact at any width
+  BOOST_TEST(disturbance_image_problem(d, 1.0, 0.75, 1e3).find("4.19e+04 m high") != std::string::npos,
+             disturbance_image_problem(d, 1.0, 0.75, 1e3));
+  d.width_m = 100;
+  BOOST_TEST(disturbance_image_problem(d, 1.0, 0.75, 1e3) == "");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -42,8 +42,8 @@ WaterScene read_water(TomlTable w, TomlTable& top) {
   scene.field = read_height_field(w, top, nullptr);
   if (scene.initial) {
     const std::string why = disturbance_image_problem(*scene.initial, scene.field.nx * scene.field.cell_m,
-                                                      scene.field.ny * scene.field.cell_m);
-    if (!why.empty()) initial_table->fail("radius_m", why);
+                                                      scene.field.ny * scene.field.cell_m, kMaxAmplitude_m);
+    if (!why.empty()) initial_table->fail(scene.initial->kind == DisturbanceKind::ring ? "radius_m" : "width_m", why);
   }
   scene.field.precision = how.precision;
   scene.field.threads = static_cast<int>(threads);

@@ -189,9 +189,9 @@ WaveCase wave_case_from_document(const TomlDocument& doc) {
   c.water = read_height_field(top.table("water"), top, &c.t_end_s);
   TomlTable initial = top.table("initial");
   c.initial = read_disturbance(initial);
-  if (const std::string why = disturbance_image_problem(c.initial, c.water.nx * c.water.cell_m, c.water.ny * c.water.cell_m);
+  if (const std::string why = disturbance_image_problem(c.initial, c.water.nx * c.water.cell_m, c.water.ny * c.water.cell_m, kMaxAmplitude_m);
       !why.empty())
-    initial.fail("radius_m", why);
+    initial.fail(c.initial.kind == DisturbanceKind::ring ? "radius_m" : "width_m", why);
   if (auto ref = top.maybe_table("reference")) {
     const std::string sym = ref->string_or("symbol", "continuum");
     if (sym != "continuum" && sym != "stencil") ref->fail("symbol", "'" + sym + "' is not one of continuum, stencil");

@@ -50,8 +50,8 @@ void read_problem(TomlTable t, WaveProblem& p) {
   if (auto i = t.maybe_table("initial")) {
     p.initial = read_disturbance(*i);
     // Every grid of the study spans length_m: one check holds for all of them.
-    if (const std::string why = disturbance_image_problem(p.initial, p.length_m, p.length_m); !why.empty())
-      i->fail("radius_m", why);
+    if (const std::string why = disturbance_image_problem(p.initial, p.length_m, p.length_m, kMaxAmplitude_m); !why.empty())
+      i->fail(p.initial.kind == DisturbanceKind::ring ? "radius_m" : "width_m", why);
     // The problem is refined (convergence, work–precision): an impulse has one cell's height at
     // every spacing, so its volume shrinks as d² and it has no continuum limit. Its absolute error
     // then falls with the solution itself (order ≈ 1 for every stencil, the relative error ≈ 97 %),
