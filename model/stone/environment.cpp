@@ -1,5 +1,7 @@
 #include "model/stone/environment.hpp"
 
+#include <cstdio>
+
 namespace stoneskip {
 
 const char* to_string(Convention c) { return c == Convention::paper ? "paper" : "physical"; }
@@ -99,6 +101,14 @@ std::string environment_problem(const Environment& env) {
     return std::string("water law \"") + to_string(env.water_law) +
            "\" with the paper convention: the paper convention is Lee & Baek's Eq. 1-3 as printed, whose law is "
            "newtonian; the other laws exist in the physical convention only";
+  if (env.convention == Convention::paper && env.water_coefficient != 1)
+    return "water coefficient " + [&] {
+      char b[32];
+      std::snprintf(b, sizeof b, "%.6g", env.water_coefficient);
+      return std::string(b);
+    }() +
+           " with the paper convention: Lee & Baek's Eq. 2 as printed has no coefficient (C_w = 1, spec §1.4); "
+           "another C_w exists in the physical convention only";
   if (env.convention == Convention::paper && env.pressure_distribution != PressureDistribution::uniform)
     return std::string("pressure distribution \"") + to_string(env.pressure_distribution) +
            "\" with the paper convention: Lee & Baek's Eq. 2-3 act at each wetted face's centroid; the "

@@ -168,6 +168,14 @@ BOOST_AUTO_TEST_CASE(the_paper_convention_keeps_the_printed_law_and_refuses_the_
     BOOST_TEST(environment_problem(e).find("paper convention") != std::string::npos, environment_problem(e));
     BOOST_TEST(environment_problem(environment_of(WaterLaw::planing, d)).empty());
   }
+  // Eq. 2 as printed has no coefficient (C_w = 1): a paper run with C_w = 0.7 ran as "paper" with
+  // a law the paper does not print. The physical convention takes any C_w >= 0.
+  Environment weaker = paper;
+  weaker.water_coefficient = 0.7;
+  BOOST_TEST(environment_problem(weaker).find("water coefficient 0.7 with the paper convention") != std::string::npos,
+             environment_problem(weaker));
+  weaker.convention = Convention::physical;
+  BOOST_TEST(environment_problem(weaker).empty());
   Environment negative;
   negative.water_coefficient = -1;
   BOOST_TEST(!environment_problem(negative).empty());

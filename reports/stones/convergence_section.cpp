@@ -214,8 +214,14 @@ SectionOutput convergence_section(const Record& c) {
     const Record& s = series.at(key);
     const Record& fit = s.at("fit");
     std::string gci = "–";
-    if (s.has_child("gci"))
-      gci = fmt(100 * s.at("gci").number("gci_fine"), 2) + " % (" + s.at("gci").text("kind") + ")";
+    if (s.has_child("gci")) {
+      // Divergent or at round-off: Celik's GCI is not defined (gci_fine is stored as 0), and "0 %"
+      // read as "no error left" (GciResult::brief).
+      const std::string kind = s.at("gci").text("kind");
+      gci = kind == "divergent" || kind == "converged to round-off"
+                ? "none (" + kind + ")"
+                : fmt(100 * s.at("gci").number("gci_fine"), 2) + " % (" + kind + ")";
+    }
     table.row({s.text("description"), s.text("scheme"),
                fmt(s.number("formal_order")) + (s.flag("against_tolerance") ? " (in tol)" : ""), observed(fit),
                list_text(fit.table("pairwise").column("order")), gci, verdict_markdown(fit.at("verdict"))});

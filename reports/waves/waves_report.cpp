@@ -203,8 +203,12 @@ SectionOutput convergence_section(const Record& c) {
     const Record& b = c.at(n).at("both");
     if (!b.has_child("gci")) continue;
     const Record& gc = b.at("gci");
-    g.row({code(n), gc.text("kind"), fmt(gc.number("order"), 3), fmt(gc.number("point_fine_m"), 5),
-           fmt(gc.number("extrapolated_m"), 5), fmt(gc.number("point_exact_m"), 5), fmt(100 * gc.number("gci_fine"), 3) + " %",
+    // Divergent or at round-off: no order or GCI is defined (stored as 0; "0 %" read as "no error
+    // left"), and a divergent sequence has no extrapolated value.
+    const bool defined = gc.text("kind") != "divergent" && gc.text("kind") != "converged to round-off";
+    g.row({code(n), gc.text("kind"), defined ? fmt(gc.number("order"), 3) : "–", fmt(gc.number("point_fine_m"), 5),
+           gc.text("kind") != "divergent" ? fmt(gc.number("extrapolated_m"), 5) : "–", fmt(gc.number("point_exact_m"), 5),
+           defined ? fmt(100 * gc.number("gci_fine"), 3) + " %" : "none",
            fmt(100 * gc.number("actual_relative_error"), 3) + " %", gc.at("verdict").text("verdict")});
   }
   w.table(g);

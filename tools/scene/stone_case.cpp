@@ -101,6 +101,7 @@ Environment read_environment(TomlTable t) {
     if (e.convention == Convention::paper && water_law != WaterLaw::newtonian) t.fail("water_law", environment_problem(e));
   }
   e.water_coefficient = t.bounded_or("water_coefficient", e.water_coefficient, 0, 100);
+  if (e.convention == Convention::paper && e.water_coefficient != 1) t.fail("water_coefficient", environment_problem(e));
   if (t.has("pressure_distribution")) {
     const std::string dist = t.string("pressure_distribution");
     if (!parse_pressure_distribution(dist, e.pressure_distribution))

@@ -8,6 +8,7 @@
 #include "tools/io/input_error.hpp"
 #include "tools/io/shipped_files.hpp"
 #include "tools/scene/case_problem.hpp"
+#include "tools/io/number_text.hpp"
 #include "tools/scene/study_keys.hpp"
 
 namespace stoneskip {
@@ -167,6 +168,14 @@ void read_convergence(TomlTable t, StoneStudiesOptions& o) {
   c.reference_rtol = positive(t, "reference_rtol", c.reference_rtol);
   c.reference_atol = positive(t, "reference_atol", c.reference_atol);
   c.check_factor = positive(t, "check_factor", c.check_factor);
+  // The check run at rtol × f bounds the reference's error e by |reference − check| ≈ |f − 1| e
+  // (errors proportional to the tolerance, the worst case of equal signs): a bound for f ≥ 2. At
+  // f = 1 the two runs are one run, and the bound was 0, so the reference's own error was blamed
+  // on the stepper ("does not converge").
+  if (c.check_factor < 2)
+    t.fail("check_factor", "must be at least 2 (got " + numbers_apart(c.check_factor, c.check_factor, 6).first +
+                               "): the check run at reference_rtol × check_factor bounds the reference's error only when "
+                               "its own is at least twice as large");
   c.floor_factor = t.number_or("floor_factor", c.floor_factor);
   t.require_non_negative("floor_factor", c.floor_factor);
   c.correction_term = t.boolean_or("correction_term", c.correction_term);

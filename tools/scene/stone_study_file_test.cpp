@@ -112,6 +112,11 @@ BOOST_AUTO_TEST_CASE(bad_laws_ranges_and_strategies_are_one_line_errors_naming_t
   names(error_of({"restarts.throws=[\"flat_drop@planing\"]"}), "paper convention");  // the case is the paper's
   names(error_of({"restarts.strategies=[\"every_event\", \"sometimes\"]"}), "restarts.strategies");
   names(error_of({"convergence.correction_term=\"yes\""}), "convergence.correction_term");
+  // A check run at the reference's own tolerance is the reference: its error bound was 0 and the
+  // reference's error was called the stepper's divergence (f = 1; f ≥ 2 bounds it, |f − 1| e ≥ e).
+  names(error_of({"convergence.check_factor=1.0"}), "convergence.check_factor: must be at least 2 (got 1)");
+  names(error_of({"convergence.check_factor=1.5"}), "convergence.check_factor");
+  BOOST_TEST(error_of({"convergence.check_factor=2.0"}).empty());
   // A measured row: a range on a row the ranking cannot score, half a range, a range across zero.
   const std::string row = R"(validation.measured=[{key = "seed_spin", quantity = "q", measured = "m", source = "s", )";
   names(error_of({row + R"(score_low = 1.0, score_high = 2.0, score_unit = ""}])"}), "score_low");

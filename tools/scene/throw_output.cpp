@@ -62,9 +62,16 @@ std::string text_summary(const StoneCase& c, const ThrowResult& r) {
     s << "energy    a flight gained " << num(flight_gain_J) << " J ("
       << (c.environment.convention == Convention::paper ? "the paper's air law, Eq. 6 as printed, pushes along −n whatever the flow)\n"
                                                         : "the integrator's: the physical air law is passive)\n");
-  if (r.max_energy_gain_J > 0)
-    s << "energy    a contact gained " << num(r.max_energy_gain_J) << " J (the model created energy"
-      << (held ? ": a held attitude is not passive, the water's torque on the spin is discarded)\n" : ")\n");
+  // Whose gain it is (spec §1.6): the paper convention's printed laws can do positive work; a held
+  // attitude discards the water's torque on the spin; otherwise the physical laws are passive
+  // (P = F·v + τ·ω ≤ 0, model/README.md, tested over random states), and the gain is the integrator's.
+  if (r.max_energy_gain_J > 0) {
+    s << "energy    a contact gained " << num(r.max_energy_gain_J) << " J (";
+    if (held) s << "the model created energy: a held attitude is not passive, the water's torque on the spin is discarded)\n";
+    else if (c.environment.convention == Convention::paper)
+      s << "the model created energy: the paper's laws as printed can do positive work, spec §1.6)\n";
+    else s << "the integrator's: the physical water and air laws are passive, F.v + tau.omega <= 0)\n";
+  }
   if (!r.contacts.empty()) {
     s << "contacts:\n";
     s << "   #   start_s     end_s  duration_ms  entry_m_s  exit_m_s  entry_path_deg  attack_deg in→out  roll_deg in→out  bounced\n";
