@@ -139,7 +139,16 @@ double StoneEvents::value(const double* y, int k) const {
 
 void StoneEvents::reset(const RigidState& s) {
   const Mat3 R = s.orientation.normalized().toRotationMatrix();
-  for (int j = 0; j < nv_; ++j) under_[j] = world_vertex(stone_, s, R, j).z() < 0;
+  // A vertex exactly at the surface counts as under water when it is going under: moving down,
+  // or at rest under gravity (no load acts on a zero wetted area to hold it). Counted as above
+  // water, its crossing at t = 0 was not a root CVODE reports (a root at the initial point is not
+  // one), and a stone released resting on the water began its contact where it sank.
+  const Vec3 omega = angular_velocity(stone_, s);
+  for (int j = 0; j < nv_; ++j) {
+    const Vec3 p = world_vertex(stone_, s, R, j);
+    const double vz = (s.velocity_m_s + omega.cross(p - s.position_m)).z();
+    under_[j] = p.z() < 0 || (p.z() == 0 && (vz < 0 || (vz == 0 && env_.gravity_m_s2 > 0)));
+  }
   std::fill(sign_.begin(), sign_.end(), 0);
   refresh_directions(s, std::vector<int>(sign_.size(), 0));
 }

@@ -224,6 +224,38 @@ BOOST_AUTO_TEST_CASE(a_flat_plate_dropped_flat_follows_the_quadratic_drag_closed
   }
 }
 
+BOOST_AUTO_TEST_CASE(a_plate_released_at_rest_on_the_surface_is_in_contact_from_the_start) {
+  // Oracle: FlatPlateDrop with H = 0 (entry at t = 0, then the tanh branch to the closed-form
+  // sinking time), and the realtime stepper's own contact list. The bottom face starts exactly at
+  // z = 0: its vertices' crossing at t = 0 is no root CVODE reports, and the contact was logged
+  // from the sinking on (0 ms long, "33 vertex crossings missed by root finding"), with the
+  // agreement line 41.7 ms apart on the audit's 32-gon.
+  const double R = 0.03, h = 0.006;
+  const int N = 32;
+  const Stone stone = prism_stone(R, h, N, 2500);
+  Environment env;
+  env.air_density_kg_m3 = 0;
+  RigidState s0;
+  s0.position_m = Vec3(0, 0, h / 2);  // the bottom vertices at z = h/2 − h/2 = 0 exactly
+  for (RestartStrategy restart : {RestartStrategy::every_event, RestartStrategy::at_jumps, RestartStrategy::never}) {
+    BOOST_TEST_CONTEXT(to_string(restart)) {
+      ReferenceOptions o;
+      o.rtol = 1e-12;
+      o.atol = 1e-15;
+      o.t_max_s = 1;
+      o.restart = restart;
+      const ThrowResult r = run_reference(stone, env, s0, o);
+      const FlatPlateDrop exact(R, N, h, stone.mass.mass_kg, 0, env);
+      BOOST_TEST_REQUIRE(name(r.outcome) == name(Outcome::sank));
+      BOOST_TEST_REQUIRE(r.contacts.size() == 1u);
+      BOOST_TEST(r.contacts[0].start_s == 0.0);
+      BOOST_TEST(std::abs(r.contacts[0].end_s - exact.sink_time()) <= 1e-9);
+      BOOST_TEST(r.outcome_detail.find("missed") == std::string::npos, r.outcome_detail);
+      BOOST_TEST(r.stats.contact_steps == r.stats.steps);  // every step in contact
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(never_restarting_can_step_over_a_flat_landing_that_at_jumps_catches) {
   // Oracle: FlatPlateDrop's sink time (H = 5 cm, paper convention). Without restarts, the step
   // that finds the landing came from free fall and is long enough to end with the plate wholly
