@@ -39,6 +39,17 @@ double max_flight_energy_gain_J(const StoneCase& c, const ThrowResult& r) {
   return flight_gain_from(mechanical_energy(c.stone, c.environment, c.initial).total_J(), r);
 }
 
+UnresolvedFlights unresolved_flights(const StoneCase& c, const ThrowResult& r) {
+  UnresolvedFlights u;
+  if (c.spec.shape == StoneShape::mesh_file || c.spec.segments < 3 || !(c.environment.gravity_m_s2 > 0)) return u;
+  u.rim_sagitta_m = c.spec.radius_m * (1 - std::cos(M_PI / c.spec.segments));
+  u.shortest_resolved_s = 2 * std::sqrt(2 * u.rim_sagitta_m / c.environment.gravity_m_s2);
+  for (std::size_t k = 0; k + 1 < r.contacts.size(); ++k)
+    if (r.contacts[k].bounced && r.contacts[k + 1].start_s - r.contacts[k].end_s < u.shortest_resolved_s)
+      ++u.bounces_before_short_flight;
+  return u;
+}
+
 std::string text_summary(const StoneCase& c, const ThrowResult& r) {
   std::ostringstream s;
   s << "case      " << c.title << " (" << c.file << ")\n";
@@ -51,7 +62,13 @@ std::string text_summary(const StoneCase& c, const ThrowResult& r) {
   if (held) s << ", held attitude (torques discarded)";
   s << "\n";
   s << "solver    " << r.solver << "\n";
-  s << "bounces   " << r.bounces << "\n";
+  s << "bounces   " << r.bounces;
+  if (const UnresolvedFlights u = unresolved_flights(c, r); u.assessed() && u.bounces_before_short_flight > 0)
+    s << " (" << u.bounces_before_short_flight << " of them followed by a flight shorter than "
+      << num(1e3 * u.shortest_resolved_s, "%.3g") << " ms, the time a ballistic stone takes to rise and fall by the "
+      << num(1e3 * u.rim_sagitta_m, "%.3g") << " mm its " << c.spec.segments
+      << "-gon's rim lies inside its circle: the mesh may not resolve those flights; model/README.md §1.8)";
+  s << "\n";
   s << "outcome   " << to_string(r.outcome) << ": " << r.outcome_detail << "\n";
   s << "distance  " << num(r.distance_m) << " m, lateral deviation " << num(r.lateral_m) << " m (+y = thrower's left)\n";
   // A flight's rise above round-off (a millionth of the release energy): the paper's air law, or
@@ -140,6 +157,10 @@ nlohmann::json json_summary(const StoneCase& c, const ThrowResult& r) {
   nlohmann::json j = json_summary(r);
   j["max_flight_energy_gain_J"] = max_flight_energy_gain_J(c, r);
   j["attitude"] = to_string(c.environment.attitude);
+  const UnresolvedFlights u = unresolved_flights(c, r);
+  j["rim_sagitta_m"] = u.assessed() ? nlohmann::json(u.rim_sagitta_m) : nlohmann::json(nullptr);
+  j["shortest_resolved_flight_s"] = u.assessed() ? nlohmann::json(u.shortest_resolved_s) : nlohmann::json(nullptr);
+  j["bounces_before_short_flight"] = u.assessed() ? nlohmann::json(u.bounces_before_short_flight) : nlohmann::json(nullptr);
   return j;
 }
 

@@ -33,8 +33,24 @@ std::string text_summary(const StoneCase& c, const ThrowResult& r);
 // air law (Eq. 6 as printed, (v·n)² along −n) can push the stone forward; in the physical one a
 // rise is the integrator's.
 double max_flight_energy_gain_J(const StoneCase& c, const ThrowResult& r);
+// Flights the stone's mesh may not resolve (model/README.md §1.8). A prism's or lens's N-gon rim lies
+// inside its circle by the sagitta δ = R (1 − cos(π/N)) at each edge's middle, so a corner turning
+// out of the water can end a contact that the round stone would not have ended. A flight shorter
+// than τ_δ = 2 √(2 δ / g), the time a ballistic stone takes to rise and fall by δ, may be such a
+// corner's; spec §1.8 still counts the bounce before it. Not assessed (sagitta 0) for an OBJ mesh,
+// whose outline is not a polygon of a circle, or without gravity.
+struct UnresolvedFlights {
+  double rim_sagitta_m = 0;         // δ
+  double shortest_resolved_s = 0;   // τ_δ
+  int bounces_before_short_flight = 0;  // bounces followed by a flight shorter than τ_δ
+  bool assessed() const { return rim_sagitta_m > 0 && shortest_resolved_s > 0; }
+};
+UnresolvedFlights unresolved_flights(const StoneCase& c, const ThrowResult& r);
+
 nlohmann::json json_summary(const ThrowResult& r);
-// The same with what needs the case: max_flight_energy_gain_J (above) and the stone's attitude.
+// The same with what needs the case: max_flight_energy_gain_J (above), the stone's attitude, and
+// the flights its mesh may not resolve (rim_sagitta_m, shortest_resolved_flight_s,
+// bounces_before_short_flight; null where not assessed).
 nlohmann::json json_summary(const StoneCase& c, const ThrowResult& r);
 Table trajectory_table(const Stone& stone, const ThrowResult& r);
 Table contacts_table(const ThrowResult& r);
