@@ -225,6 +225,34 @@ BOOST_AUTO_TEST_CASE(bounces_before_flights_the_mesh_may_not_resolve_are_counted
   BOOST_TEST(obj["bounces_before_short_flight"].is_null());
 }
 
+BOOST_AUTO_TEST_CASE(a_run_whose_frame_budget_forced_steps_says_so_in_its_text) {
+  // Oracle: the run's own JSON. With 4 right-hand sides a frame, bs32 takes steps its error test
+  // refuses (the premise: budget_forced_steps > 0 and an error ratio far above 1); the text said
+  // nothing. Without a budget the line is absent.
+  const std::string budget = "run cases/clanet_disk.toml --set solver.rhs_per_frame=4";
+  const auto j = nlohmann::json::parse(run(budget + " --json").out);
+  const long forced = j["stats"]["budget_forced_steps"].get<long>();
+  BOOST_TEST_REQUIRE(forced > 0);
+  BOOST_TEST(j["stats"]["max_error_ratio"].get<double>() > 1.0);
+  const std::string text = run(budget).out;
+  BOOST_TEST(text.find("budget    " + std::to_string(forced) + " step") != std::string::npos, text);
+  BOOST_TEST(text.find("this run is not at its tolerance") != std::string::npos, text);
+  BOOST_TEST(run("run cases/clanet_disk.toml").out.find("budget    ") == std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(a_stone_lighter_than_water_is_said_to_sink_only_for_want_of_buoyancy) {
+  // Oracle: the prism's volume by hand. cases/hard/very_light_stone.toml: 2 g, an 11-gon prism of
+  // R = 0.03 m, h = 0.008 m: V = ½ N R² sin(2π/N) h = 2.1409e-5 m³, mean density 93.42 kg/m³,
+  // below the water's 1000: the model has no buoyancy (spec §1.4), and its "sank" needs saying.
+  const double volume = 0.5 * 11 * 0.03 * 0.03 * std::sin(2 * M_PI / 11) * 0.008;
+  char expected[96];
+  std::snprintf(expected, sizeof expected, "the stone's mean density %.4g kg/m^3 is below the water's 1000", 0.002 / volume);
+  BOOST_TEST(std::string(expected).find("93.42") != std::string::npos);
+  const std::string text = run("run cases/hard/very_light_stone.toml").out;
+  BOOST_TEST(text.find(expected) != std::string::npos, text);
+  BOOST_TEST(run("run cases/clanet_disk.toml").out.find("mean density") == std::string::npos);  // aluminium
+}
+
 BOOST_AUTO_TEST_CASE(a_mirror_symmetric_stone_throws_mirror_images) {
   // Oracle: symmetry. With rim_split = "centre" the stone is its own mirror image in the plane of
   // the throw (model/stone/mesh.hpp), so spin +40 and −40 rev/s are mirror images: the same count

@@ -89,6 +89,20 @@ std::string text_summary(const StoneCase& c, const ThrowResult& r) {
       s << "the model created energy: the paper's laws as printed can do positive work, spec §1.6)\n";
     else s << "the integrator's: the physical water and air laws are passive, F.v + tau.omega <= 0)\n";
   }
+  // The water laws push only faces advancing into the water (spec §1.4): no buoyancy. A stone
+  // lighter than water then "sinks" where a real one would float.
+  if (const double rho = c.stone.mass.mass_kg / c.stone.mass.volume_m3; rho < c.environment.water_density_kg_m3)
+    s << "note      the stone's mean density " << num(rho, "%.4g") << " kg/m^3 is below the water's "
+      << num(c.environment.water_density_kg_m3, "%.4g")
+      << ": the model has no buoyancy (only faces advancing into the water push, spec §1.4), so it sinks where a real "
+         "stone would float\n";
+  // A frame's budget (solver.rhs_per_frame) takes a step whatever its error test says: the run is
+  // then not at its tolerance, and the text said nothing (a ratio of 7e6 flipped Clanet's disk).
+  if (r.stats.budget_forced_steps > 0)
+    s << "budget    " << r.stats.budget_forced_steps << " step" << (r.stats.budget_forced_steps == 1 ? "" : "s")
+      << " forced past the error test by the frame budget (largest error ratio " << num(r.stats.max_error_ratio, "%.3g")
+      << ", summed position error estimate " << num(r.stats.position_error_estimate_m, "%.3g")
+      << " m): this run is not at its tolerance\n";
   if (!r.contacts.empty()) {
     s << "contacts:\n";
     s << "   #   start_s     end_s  duration_ms  entry_m_s  exit_m_s  entry_path_deg  attack_deg in→out  roll_deg in→out  bounced\n";
