@@ -75,7 +75,12 @@ std::string model_cell(const Record& g, const std::string& key, const Record& v)
   if (key.rfind("seed_", 0) == 0 && !g.has_child("seed")) return "–";
   if (key == "clanet_min_speed")
     return g.has_child("min_speed_at_compared_attack") ? bisected(g.at("min_speed_at_compared_attack"), "m/s") : "–";
-  if (key == "clanet_best_attack") return fmt(g.number("best_attack_deg"), 3) + "°";
+  if (key == "clanet_best_attack") {
+    // NaN: one angle on the grid, whose argmin is the angle given (validation_findings.cpp).
+    const double a = g.number("best_attack_deg");
+    if (std::isfinite(a)) return fmt(a, 3) + "°";
+    return g.table("min_speed").rows() < 2 ? "not measured (one attack angle on the grid)" : "no bounce at any angle";
+  }
   if (key == "clanet_max_path_angle") return bisected(g.at("largest_path_angle"), "°");
   if (key == "clanet_contact_time") return contact_time_text(g.table("contact_time"), v.number("contact_time_speed_m_s"));
   if (key == "clanet_contact_exponent") return exponent_text(g.at("contact_exponent"));

@@ -11,6 +11,7 @@
 
 #include "verification/stones/stone_studies.hpp"
 #include "verification/stones/validation_score.hpp"
+#include "verification/stones/validation_scored_value.hpp"
 #include "verification/study/order_record.hpp"
 #include "verification/study/verdict_rules.hpp"
 #include "verification/study/words.hpp"
@@ -310,6 +311,9 @@ Record variant_record(const VariantResult& R, const ValidationOptions& o) {
         best = o.clanet_attack_deg[i];
         best_i = i;
       }
+    // One angle on the grid: the argmin is that angle, given, not found (stored as NaN; the
+    // ranking leaves the row out and the skip rule cannot meet it).
+    if (o.clanet_attack_deg.size() < 2) best = kNaN;
     g.set("best_attack_deg", best);
     // The grid's argmin is not one angle where another angle's minimum-speed bracket overlaps the
     // lowest one's (equal to the bisection's resolution): the span of such angles is stored, and
@@ -371,7 +375,8 @@ Record variant_record(const VariantResult& R, const ValidationOptions& o) {
   return g;
 }
 
-// The model value of a scorable quantity (validation.hpp: scorable_quantities) from a variant's record.
+}  // namespace
+
 ScoredValue scored_value(const Record& g, const std::string& key, const ValidationOptions& o) {
   ScoredValue s;
   s.key = key;
@@ -404,7 +409,15 @@ ScoredValue scored_value(const Record& g, const std::string& key, const Validati
   } else if (key == "clanet_best_attack") {
     s.model = g.number("best_attack_deg");
     s.has_value = std::isfinite(s.model);
-    if (!s.has_value) s.note = "no bounce at any attack angle tried";
+    // One angle on the grid: its argmin is the angle given, not a result, and was scored as a match.
+    const std::size_t angles = g.table("min_speed").rows();
+    if (angles < 2) {
+      s.has_value = false;
+      s.model = kNaN;
+      s.note = angles == 0 ? "not measured: the grid holds no attack angle"
+                           : "not measured: the grid holds one attack angle (" +
+                                 num(g.table("min_speed").column("attack_deg").at(0)) + "°), whose argmin is the angle given";
+    } else if (!s.has_value) s.note = "no bounce at any attack angle tried";
     else if (g.has_number("best_attack_tied_low_deg") &&
              g.number("best_attack_tied_low_deg") < g.number("best_attack_tied_high_deg"))
       s.note = "tied: the minimum speeds at " + num(g.number("best_attack_tied_low_deg")) + "–" +
@@ -429,6 +442,8 @@ ScoredValue scored_value(const Record& g, const std::string& key, const Validati
   return s;
 }
 
+namespace {
+
 // The measured range of a scored row, NaN when the study file does not score it.
 MeasuredRange range_of(const ValidationOptions& o, const std::string& key) {
   for (const auto& m : o.measured)
@@ -445,7 +460,9 @@ void skip_inputs(Record& in, const std::string& prefix, const Record& g, const s
   };
   in.set(prefix + "min_speed", value("clanet_min_speed"));
   in.set(prefix + "best_attack", value("clanet_best_attack"));
-  if (g.has_number("best_attack_tied_low_deg")) {
+  // A one-angle grid measures no argmin (scored_value): its tied span, the angle itself, would meet
+  // the row; without it the NaN misses, as an unmeasured row must not be met.
+  if (g.has_number("best_attack_tied_low_deg") && std::isfinite(value("clanet_best_attack"))) {
     in.set(prefix + "best_attack_tied_low", g.number("best_attack_tied_low_deg"));
     in.set(prefix + "best_attack_tied_high", g.number("best_attack_tied_high_deg"));
   }
@@ -498,7 +515,9 @@ Record ranking_record(const Record& variants, const ValidationResult& v, const V
   std::vector<std::string> scored;
   std::vector<MeasuredRange> ranges;
   for (const auto& m : o.measured)
-    if (m.score) {
+    // A one-angle grid measures no argmin: the row is left out of the distance (a miss for every
+    // variant would only shift them all).
+    if (m.score && !(m.key == "clanet_best_attack" && o.clanet_attack_deg.size() < 2)) {
       scored.push_back(m.key);
       ranges.push_back(*m.score);
     }
@@ -549,7 +568,9 @@ Record ranking_record(const Record& variants, const ValidationResult& v, const V
     bound_inputs(in, o);
     skip_inputs(in, "", g, held_key, o);
     decide_verdict(L, "skips", "skips_like_a_stone", in,
-                   "U_min " + num(in.number("min_speed")) + " m/s, argmin α " + num(in.number("best_attack")) + "°, β_max " +
+                   "U_min " + num(in.number("min_speed")) + " m/s, argmin α " +
+                       (std::isfinite(in.number("best_attack")) ? num(in.number("best_attack")) + "°" : std::string("not measured")) +
+                       ", β_max " +
                        num(in.number("max_path_angle")) + "°, contact " + num(1000 * in.number("contact_time")) +
                        " ms, exponent [" + num(in.number("contact_exponent_low")) + ", " +
                        num(in.number("contact_exponent_high")) + "], pitch " + num(in.number("pitch_change_deg")) +
