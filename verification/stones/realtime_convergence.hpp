@@ -89,6 +89,12 @@ struct ConvergenceSeries {
   GciResult gci;
 };
 
+// Fills in_fit and notes from the errors and the reference's own error, then fits the order, judges
+// it and (for scalar quantities) computes the GCI of the three finest runs. A series that does not
+// converge with its smallest error within a decade of the reference's estimated error says, beside
+// its verdict, that the reference may not resolve it.
+void finish_series(ConvergenceSeries& s, const RealtimeConvergenceOptions& o);
+
 // Steps of a uniform grid t0 + k h (k = 0 … steps − 1) that overlap [window_start, window_end],
 // and how many of them hold two or more of the events (times; an event on a step boundary
 // belongs to the step it ends; a step overlaps the window when they share a positive length).
