@@ -1,6 +1,7 @@
 #pragma once
-// The Levenshtein distance of two keys, compared without case: a key written "Solver" or
-// "radiuss_m", or a header line "has_gyroo", for the one meant. Used to name a misspelt key
+// The edit distance of two keys, compared without case (Levenshtein's, with a swap of two
+// neighbouring letters as one edit): a key written "Solver", "radiuss_m" or "cuont", or a header
+// line "has_gyroo", for the one meant. Used to name a misspelt key
 // instead of ignoring it or only calling it unknown.
 #include <cstddef>
 #include <string>

@@ -127,28 +127,49 @@ void check_numbers(const toml::value& v, const std::string& key, const std::stri
 
 // toml11's syntax error text holds " --> NAME" and then a line " LINE | text"; the first line is
 // the reason. Returns the reason and the line (0 if not found).
-std::pair<std::string, long> syntax_error_of(const std::string& what, const std::string& name) {
-  long line = 0;
-  std::string detail = what.substr(0, what.find('\n'));
+struct SyntaxError {
+  std::string detail;
+  long line = 0;        // the line the error is at (toml11's numbering of the text it read)
+  long first_line = 0;  // a key defined twice: the line of its first definition, else 0
+};
+
+SyntaxError syntax_error_of(const std::string& what, const std::string& name) {
+  SyntaxError r;
+  r.detail = what.substr(0, what.find('\n'));
   const auto pos = what.find(" --> " + name);
   if (pos != std::string::npos) {
     const auto line_pos = what.find('\n', pos);
     if (line_pos != std::string::npos) {
+      // toml11 quotes each line it points at ("  5 | radius_m = 0.04") with a note under it
+      // ("    |   ~~~~ value defined twice"). The error's line is the first quoted one, except for a
+      // key defined twice, whose first quoted line is the first definition: then the line noted
+      // "defined twice" is the error's, and the first is named beside it.
       std::istringstream rest(what.substr(line_pos + 1));
       std::string l;
+      long first_quoted = 0, last_quoted = 0, twice = 0;
       while (std::getline(rest, l)) {
         const auto bar = l.find('|');
         if (bar == std::string::npos) continue;
+        const std::string head = l.substr(0, bar);
+        if (head.find_first_not_of(' ') == std::string::npos) {
+          if (l.find("defined twice") != std::string::npos && last_quoted > 0) twice = last_quoted;
+          continue;
+        }
         try {
-          line = std::stol(l.substr(0, bar));
-          break;
+          last_quoted = std::stol(head);
+          if (first_quoted == 0) first_quoted = last_quoted;
         } catch (...) {
         }
       }
+      r.line = first_quoted;
+      if (twice > 0 && twice != first_quoted) {
+        r.line = twice;
+        r.first_line = first_quoted;
+      }
     }
   }
-  if (detail.rfind("[error] ", 0) == 0) detail = detail.substr(8);
-  return {detail, line};
+  if (r.detail.rfind("[error] ", 0) == 0) r.detail = r.detail.substr(8);
+  return r;
 }
 
 // Parses "v = TEXT" as an override's value, its location named "--set".
@@ -462,8 +483,16 @@ TomlDocument parse_toml_text(const std::string& text, const std::string& name,
     doc.root = toml::parse(in, name);
   } catch (const toml::syntax_error& e) {
     // toml11's message is multi-line with the location inside; keep its first line.
-    const auto [detail, line] = syntax_error_of(e.what(), name);
-    throw_input_error(name, pre->line_of(static_cast<std::uint32_t>(line)), "", "TOML syntax error: " + detail);
+    const SyntaxError x = syntax_error_of(e.what(), name);
+    std::string detail = x.detail;
+    if (x.first_line > 0) {
+      // "toml::insert_value: value ("radius_m") already exists." named the first definition's line.
+      const auto q1 = detail.find("(\""), q2 = detail.find("\")", q1 == std::string::npos ? 0 : q1);
+      const std::string key = q1 != std::string::npos && q2 != std::string::npos ? detail.substr(q1 + 2, q2 - q1 - 2) : "a key";
+      detail = "\"" + key + "\" is defined twice (first on line " +
+               std::to_string(pre->line_of(static_cast<std::uint32_t>(x.first_line))) + "): keep one";
+    }
+    throw_input_error(name, pre->line_of(static_cast<std::uint32_t>(x.line)), "", "TOML syntax error: " + detail);
   } catch (const std::exception& e) {
     throw_input_error(name, 0, "", std::string("TOML error: ") + e.what());
   }

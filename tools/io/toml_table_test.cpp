@@ -87,6 +87,29 @@ BOOST_AUTO_TEST_CASE(a_long_array_is_broken_over_lines_and_errors_keep_the_writt
   }
 }
 
+BOOST_AUTO_TEST_CASE(a_key_or_table_defined_twice_names_the_second_line_and_the_first) {
+  // Oracle: the text. toml11 quotes the first definition first, so the error named its line (5)
+  // and not the duplicate's; a long array before them (broken over lines by the prescan) must not
+  // move either number.
+  auto error_of = [](const std::string& text) {
+    try {
+      parse_toml_text(text, "dup.toml");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  std::string arr = "[";
+  for (int i = 0; i < 1000; ++i) arr += (i ? ", " : "") + std::to_string(i);
+  arr += "]";
+  const std::string key = error_of("[t]\nv = " + arr + "\nr = 1\nw = 2\nr = 3\n");
+  BOOST_TEST(key.find("dup.toml:5: TOML syntax error: \"r\" is defined twice (first on line 3): keep one") == 0u, key);
+  const std::string table = error_of("[a]\nx = 1\n[b]\n[a]\ny = 2\n");
+  BOOST_TEST(table.find("dup.toml:4: TOML syntax error: \"a\" is defined twice (first on line 1)") == 0u, table);
+  // Other syntax errors keep their first quoted line.
+  BOOST_TEST(error_of("[t]\nv = = 1\n").find("dup.toml:2: TOML syntax error") == 0u, error_of("[t]\nv = = 1\n"));
+}
+
 BOOST_AUTO_TEST_CASE(a_long_array_parses_in_linear_time) {
   // Oracle: toml11 spends the length of the current line on each element it reads (it builds an
   // error string holding the line for each type it tries first), so 100 000 numbers on one line
