@@ -180,12 +180,18 @@ fs::path resolve_case_file(const BounceBaseline& b) {
   if (c.is_absolute() || fs::exists(c)) return c;
   // Beside the baseline's cases/ folder (the baseline as found: a shipped "cases/baselines/X.toml"
   // named from another folder is read from the source tree), then among the shipped files.
-  fs::path root = fs::absolute(locate_input(b.file)).parent_path().parent_path().parent_path();
+  const fs::path here = fs::absolute(locate_input(b.file)).parent_path();
+  fs::path root = here.parent_path().parent_path();
   fs::path alt = root / c;
   if (fs::exists(alt)) return alt;
+  // A baseline kept in a folder of its own names its case beside it ("mycase.toml"): there was no
+  // such place, and the message named "/" for a baseline in /tmp.
+  if (const fs::path beside = here / c; fs::exists(beside)) return beside;
   if (const fs::path shipped = locate_input(c); fs::exists(shipped)) return shipped;
-  throw_input_error(b.file, 0, "baseline.case", "case file '" + b.case_file + "' not found (relative to the working directory or to " +
-                                                     (root.empty() ? std::string(".") : root.string()) + ")");
+  throw_input_error(b.file, 0, "baseline.case",
+                    "case file '" + b.case_file + "' not found in the working directory, beside the baseline (" +
+                        here.string() + "), under " + (root.empty() ? std::string(".") : root.string()) +
+                        " (the folder holding the baseline's cases/), or among the shipped files");
 }
 
 BounceSweepSpec sweep_of(const BounceBaseline& b) {
