@@ -139,6 +139,9 @@ bool read_manifest_entries(const fs::path& dir, std::map<std::string, Entry>& ou
 void write_folder_manifest(const fs::path& dir, const std::vector<std::string>& leave_out) {
   std::string other;
   auto entries = scan(dir, true, &other);
+  // Refused before anything is removed: a folder that is not all stoneskip's is left as it is.
+  if (!other.empty())
+    throw_input_error(dir.string(), 0, "", "holds '" + other + "', which is not a plain file or folder: no manifest written");
   for (auto it = entries.begin(); it != entries.end();) {
     const std::string top = it->first.substr(0, it->first.find('/'));
     // A temporary a killed writer left in the folder (a resumed build's work folder holds the
@@ -150,8 +153,6 @@ void write_folder_manifest(const fs::path& dir, const std::vector<std::string>& 
     }
     it = stale || std::find(leave_out.begin(), leave_out.end(), top) != leave_out.end() ? entries.erase(it) : std::next(it);
   }
-  if (!other.empty())
-    throw_input_error(dir.string(), 0, "", "holds '" + other + "', which is not a plain file or folder: no manifest written");
   write_text_file(dir / kFolderManifest, text_of(entries));
 }
 
