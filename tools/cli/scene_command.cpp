@@ -77,8 +77,13 @@ class WorkFolder {
       // naming it, exit 2 (it was "internal error", exit 3, with no word of TMPDIR).
       std::error_code ec;
       const fs::path dir = fs::temp_directory_path(ec);
-      const char* tmpdir = std::getenv("TMPDIR");
-      const std::string named = tmpdir ? std::string("TMPDIR=") + tmpdir : dir.string();
+      // The variable the library read: the first set of TMPDIR, TMP, TEMP, TEMPDIR (libstdc++), else /tmp.
+      std::string named = "/tmp";
+      for (const char* v : {"TMPDIR", "TMP", "TEMP", "TEMPDIR"})
+        if (const char* value = std::getenv(v)) {
+          named = std::string(v) + "=" + value;
+          break;
+        }
       if (ec) throw InputError(named + ": no folder for the movie's frames (" + ec.message() + "): set TMPDIR to a writable folder");
       std::string tmpl = (dir / "stoneskip-movie-XXXXXX").string();
       if (!mkdtemp(tmpl.data()))

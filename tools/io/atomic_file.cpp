@@ -26,8 +26,6 @@ namespace {
 
 std::string errno_words(int e) { return std::strerror(e); }
 
-// A unique temporary name beside the destination: "<name>.tmp-PID", then "<name>.tmp-PID-N" if
-// another writer of this process (or a file left by an earlier process with the same id) has it.
 // `final_path` with `suffix` added to its name. A destination whose name is near the file system's
 // limit (NAME_MAX, 255 bytes on Linux's file systems) has its name shortened first, cut at a
 // character's start, so that a name the system accepts is not refused for the suffix ("File name
@@ -43,6 +41,22 @@ fs::path beside(const fs::path& final_path, const std::string& suffix) {
   return final_path.parent_path() / (name + suffix);
 }
 
+// A name longer than the file system takes is refused before any work: shortened, its temporary
+// would be made, the work done, and only the final rename fail ("File name too long").
+void refuse_a_name_too_long(const fs::path& final_path) {
+  fs::path dir = final_path.parent_path();
+  if (dir.empty()) dir = ".";
+  long name_max = ::pathconf(dir.c_str(), _PC_NAME_MAX);
+  if (name_max <= 0) name_max = 255;
+  const std::size_t length = final_path.filename().string().size();
+  if (length > static_cast<std::size_t>(name_max))
+    throw_input_error(final_path.string(), 0, "",
+                      "cannot write: the name is " + std::to_string(length) + " bytes long, and this file system takes at most " +
+                          std::to_string(name_max));
+}
+
+// A unique temporary name beside the destination: "<name>.tmp-PID", then "<name>.tmp-PID-N" if
+// another writer of this process (or a file left by an earlier process with the same id) has it.
 fs::path temporary_name(const fs::path& final_path, int attempt) {
   std::string suffix = ".tmp-" + std::to_string(::getpid());
   if (attempt > 0) suffix += "-" + std::to_string(attempt);
@@ -50,6 +64,8 @@ fs::path temporary_name(const fs::path& final_path, int attempt) {
 }
 
 }  // namespace
+
+fs::path name_beside(const fs::path& final_path, const std::string& suffix) { return beside(final_path, suffix); }
 
 std::string file_type_words(unsigned mode) {
   switch (mode & S_IFMT) {
@@ -83,6 +99,7 @@ void check_output_destination(const fs::path& path) {
 
 AtomicOutput::AtomicOutput(fs::path final_path) : final_(std::move(final_path)) {
   check_output_destination(final_);
+  refuse_a_name_too_long(final_);
   // Create the temporary now (registered first, so a signal between the two finds it), so that a
   // place we cannot write is reported before any work.
   with_registry_lock([&] {
@@ -170,6 +187,7 @@ AtomicFolder::AtomicFolder(fs::path final_dir, const std::function<bool(const fs
   if (final_.empty()) throw_input_error("--out", 0, "", "an output folder is required (got an empty name)");
   while (final_.has_parent_path() && !final_.has_filename()) final_ = final_.parent_path();  // "dir/" → "dir"
   check_destination();
+  refuse_a_name_too_long(final_);
   work_ = beside(final_, ".partial-" + std::to_string(::getpid()));
   with_registry_lock([&] {
     RegisteredTemporary reg(work_, TemporaryKind::folder);

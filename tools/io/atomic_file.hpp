@@ -17,6 +17,11 @@
 
 namespace stoneskip {
 
+// `final_path` with `suffix` added to its name, the name shortened first (cut at a character's
+// start) where the two together would pass the file system's 255 bytes: the temporaries and
+// companions of an output whose name is near that limit ("<name>.tmp-PID", "<name>.journal").
+std::filesystem::path name_beside(const std::filesystem::path& final_path, const std::string& suffix);
+
 class AtomicOutput {
  public:
   // Checks the destination (see above) and creates the empty temporary file, so an unwritable

@@ -328,6 +328,17 @@ BOOST_AUTO_TEST_CASE(a_name_near_the_file_systems_limit_is_written_through_a_sho
   BOOST_TEST(fs::is_regular_file(s.dir / ("d" + ascii.substr(1)) / "index.md"));
   BOOST_TEST(no_temporaries(s.dir));
   BOOST_TEST(std::distance(fs::directory_iterator(s.dir), fs::directory_iterator()) == 3);  // two files, one folder
+  // A name past the limit is refused before any work, file or folder (a folder's shortened work
+  // folder was filled, and only the final rename failed), and nothing is left behind.
+  const std::string too_long(256, 'b');
+  BOOST_CHECK_THROW(AtomicOutput(s.dir / too_long), InputError);
+  BOOST_CHECK_THROW(AtomicFolder(s.dir / too_long, ours), InputError);
+  BOOST_TEST(std::distance(fs::directory_iterator(s.dir), fs::directory_iterator()) == 3);
+  // A companion's name (a sweep's journal) is shortened the same way, and the same every time.
+  const fs::path journal = name_beside(s.dir / ascii, ".journal");
+  BOOST_TEST(journal.filename().string().size() <= 255u);
+  BOOST_TEST(journal == name_beside(s.dir / ascii, ".journal"));
+  BOOST_TEST(name_beside(s.dir / "r.h5", ".journal") == s.dir / "r.h5.journal");  // short names unchanged
 }
 
 BOOST_AUTO_TEST_CASE(an_atomic_folder_moves_into_place_atomically_against_a_destination_changed_after_its_check) {

@@ -199,7 +199,17 @@ BounceSweepSpec sweep_of(const BounceBaseline& b) {
   if (b.water_law) overrides.push_back(std::string("environment.water_law=") + to_string(*b.water_law));
   if (b.pressure_distribution)
     overrides.push_back(std::string("environment.pressure_distribution=") + to_string(*b.pressure_distribution));
-  const StoneCase c = load_stone_case(resolve_case_file(b).string(), overrides);
+  // A paper baseline runs the case under the printed law: a case that names another law,
+  // distribution or C_w would have had it silently replaced (with_convention). Read in the paper
+  // convention, the case is refused where it does, naming its key and this baseline.
+  if (b.convention == Convention::paper) overrides.push_back("environment.convention=paper");
+  StoneCase c;
+  try {
+    c = load_stone_case(resolve_case_file(b).string(), overrides);
+  } catch (const InputError& e) {
+    if (b.convention != Convention::paper) throw;
+    throw_input_error(b.file, 0, "baseline.convention", std::string("the case does not run in the paper convention: ") + e.what());
+  }
   // A baseline is a bounce-count sweep on still water (the CVODE reference and the sweep's
   // ThrowProblem know no live surface): a case with [water] would be run on still water without a word.
   if (c.water)

@@ -228,6 +228,14 @@ void read_work_precision(TomlTable t, StoneStudiesOptions& o) {
   w.atol_ratio = positive(t, "atol_ratio", w.atol_ratio);
   w.truth_rtol = positive(t, "truth_rtol", w.truth_rtol);
   w.truth_check_factor = positive(t, "truth_check_factor", w.truth_check_factor);
+  // The truth's check at rtol × f: |truth − check| ≈ |1 − f| e measures the truth's error e within
+  // a factor 2 for f ≤ 1/2 (a tighter check) or f ≥ 2 (a looser one). At f = 1 the two are one
+  // run: an uncertainty of 0, and a chaotic throw (truth and check disagreeing on its count) could
+  // never be set aside.
+  if (w.truth_check_factor > 0.5 && w.truth_check_factor < 2)
+    t.fail("truth_check_factor",
+           "must be at most 0.5 or at least 2 (got " + numbers_apart(w.truth_check_factor, w.truth_check_factor, 6).first +
+               "): the check run at truth_rtol × truth_check_factor must differ from the truth by 2× or more");
   w.repeats = count(t, "repeats", w.repeats, 1, 100);
   w.target_errors_m = positive_list(t, "target_errors_m", w.target_errors_m);
   t.finish();

@@ -117,6 +117,9 @@ BOOST_AUTO_TEST_CASE(bad_laws_ranges_and_strategies_are_one_line_errors_naming_t
   names(error_of({"convergence.check_factor=1.0"}), "convergence.check_factor: must be at least 2 (got 1)");
   names(error_of({"convergence.check_factor=1.5"}), "convergence.check_factor");
   BOOST_TEST(error_of({"convergence.check_factor=2.0"}).empty());
+  // The work–precision truth's check likewise (f = 1: its uncertainty 0, no chaotic throw set aside).
+  names(error_of({"work_precision.truth_check_factor=1.0"}), "work_precision.truth_check_factor: must be at most 0.5 or at least 2");
+  BOOST_TEST(error_of({"work_precision.truth_check_factor=0.5"}).empty());
   // A measured row: a range on a row the ranking cannot score, half a range, a range across zero.
   const std::string row = R"(validation.measured=[{key = "seed_spin", quantity = "q", measured = "m", source = "s", )";
   names(error_of({row + R"(score_low = 1.0, score_high = 2.0, score_unit = ""}])"}), "score_low");

@@ -37,7 +37,8 @@ double max_flight_energy_gain_J(const StoneCase& c, const ThrowResult& r);
 // inside its circle by the sagitta δ = R (1 − cos(π/N)) at each edge's middle, so a corner turning
 // out of the water can end a contact that the round stone would not have ended. A flight shorter
 // than τ_δ = 2 √(2 δ / g), the time a ballistic stone takes to rise and fall by δ, may be such a
-// corner's; spec §1.8 still counts the bounce before it. Not assessed (sagitta 0) for an OBJ mesh,
+// corner's; spec §1.8 still counts the bounce before it. δ bounds the corner's vertical reach from
+// above (δ sin α at a tilt α), so the count may name more bounces than the mesh explains. Not assessed (sagitta 0) for an OBJ mesh,
 // whose outline is not a polygon of a circle, or without gravity.
 struct UnresolvedFlights {
   double rim_sagitta_m = 0;         // δ

@@ -84,7 +84,8 @@ struct ConvergenceSeries {
   double reference_error = 0;      // the reference's own error on this quantity
   OrderFit fit;
   OrderDecision decision;          // against formal_order ± order_tolerance, with its reason
-  std::string left_out;            // "" or " (of 8 runs, left out: ...)": the points the fit lacks, why
+  std::string left_out;            // "" or " (of 8 runs, left out: ...)": the points the fit lacks, why;
+                                   // and "; its smallest error is …" where the reference may not resolve them
   bool has_gci = false;
   GciResult gci;
 };

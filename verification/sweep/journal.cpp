@@ -127,9 +127,8 @@ bool remove_journal_with_torn_header(const fs::path& path) {
 }
 
 fs::path journal_path_for(const fs::path& result_file) {
-  fs::path p = result_file;
-  p += ".journal";
-  return p;
+  // Shortened where "<name>.journal" would pass 255 bytes (the same name every time: --resume finds it).
+  return name_beside(result_file, ".journal");
 }
 
 SweepJournal::SweepJournal(fs::path path, int fd, double sync_interval_s)
@@ -159,7 +158,7 @@ void SweepJournal::request_sync() {
         if (stopping_) return;
         sync_pending_ = false;
         lock.unlock();
-        if (::fdatasync(fd_) != 0) sync_errno_.store(errno);
+        sync_or_record();
         lock.lock();
       }
     };
@@ -202,7 +201,7 @@ SweepJournal SweepJournal::create(const fs::path& path, const JournalIdentity& i
   auto cannot = [&](int e) {
     throw_input_error(path.string(), 0, "", std::string("cannot create the sweep journal: ") + std::strerror(e));
   };
-  const fs::path tmp = path.string() + ".tmp-" + std::to_string(::getpid());
+  const fs::path tmp = name_beside(path, ".tmp-" + std::to_string(::getpid()));
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_APPEND | O_CLOEXEC, 0644);
   if (fd < 0) cannot(errno);
   // Ours from here: removed on every way out of this function, and by a signal meanwhile.
@@ -338,8 +337,22 @@ void SweepJournal::write_record(std::uint32_t type, const std::vector<unsigned c
 
 void SweepJournal::append(const RowBatch& b) { write_record(kRows, encode(b)); }
 
+void SweepJournal::sync_or_record() {
+  // EINVAL, ENOSYS: the file system offers no sync (some FUSE and network ones), as before the
+  // sync's result was checked; EINTR: tried again. Anything else (EIO, ENOSPC, EDQUOT) is kept.
+  for (int tries = 0; tries < 3; ++tries) {
+    if (::fdatasync(fd_) == 0) return;
+    const int e = errno;
+    if (e == EINVAL || e == ENOSYS) return;
+    if (e != EINTR) {
+      sync_errno_.store(e);
+      return;
+    }
+  }
+}
+
 void SweepJournal::sync() {
-  if (::fdatasync(fd_) != 0) sync_errno_.store(errno);
+  sync_or_record();
   last_sync_s_ = now_s();
   throw_if_sync_failed();
 }

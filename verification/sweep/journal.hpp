@@ -85,6 +85,7 @@ class SweepJournal {
   void request_sync();  // wakes the sync thread (started on first use, once the journal is in place)
   void stop_syncing();
   void throw_if_sync_failed() const;
+  void sync_or_record();  // fdatasync; a failure that matters is kept in sync_errno_
   std::filesystem::path path_;
   int fd_ = -1;
   double sync_interval_s_ = 1;
