@@ -57,4 +57,18 @@ BOOST_AUTO_TEST_CASE(a_study_past_the_cell_update_limit_is_refused_before_it_sta
   }
 }
 
+BOOST_AUTO_TEST_CASE(a_study_problem_whose_periodic_sum_stands_too_high_is_refused_naming_the_width) {
+  // Oracle: model/water/disturbance.hpp, A π w² / L² for a wide Gaussian: 0.01 m × π × (1e6 m)² on
+  // the study's domain is far above the 1000 m amplitude_m may reach (its 3 × 3 images made 9A).
+  const std::string file = "cases/studies/waves_quick.toml";
+  try {
+    stoneskip::load_wave_study_file(file, {"problem.initial.width_m=1.0e6"});
+    BOOST_ERROR("a surface of 1e10 m was taken");
+  } catch (const stoneskip::InputError& e) {
+    const std::string m = e.what();
+    BOOST_TEST(m.find("problem.initial.width_m") != std::string::npos, m);
+    BOOST_TEST(m.find("sums with its periodic images") != std::string::npos, m);
+  }
+}
+
 BOOST_AUTO_TEST_SUITE_END()
