@@ -148,6 +148,25 @@ BOOST_AUTO_TEST_CASE(the_limit_wave_and_scene_share_is_exact_at_every_damping) {
     }
 }
 
+BOOST_AUTO_TEST_CASE(a_scene_initial_surface_too_wide_or_too_large_for_its_periodic_images_is_refused) {
+  // Oracle: model/water/disturbance.hpp on the plain 50 × 50 pond of 2 cm cells (1 m × 1 m): a
+  // ring of radius 5 m reaches past 3 periods; a Gaussian of width 1e6 m sums to about
+  // A π w² / L² = 0.02 π 1e12 m, far above the 1000 m bound; a Gaussian of 0.1 m is taken.
+  const std::string plain = std::string(kCase) + stoneskip::test::kPlainWater;
+  const std::string wave = "[water.initial]\nkind = \"plane_wave\"\namplitude_m = 0.02\nwavelength_m = 1.0\n";
+  const auto at = plain.find(wave);
+  BOOST_REQUIRE(at != std::string::npos);
+  auto with_initial = [&](const std::string& initial) { return std::string(plain).replace(at, wave.size(), initial); };
+  const std::string ring = error_of(with_initial("[water.initial]\nkind = \"ring\"\namplitude_m = 0.02\nwidth_m = 0.05\n"
+                                                 "radius_m = 5.0\nx_m = 0.5\ny_m = 0.5\n"), {});
+  BOOST_TEST(ring.find("water.initial.radius_m: a ring of radius_m + 6.5 width_m") != std::string::npos, ring);
+  const std::string wide = error_of(with_initial("[water.initial]\nkind = \"gaussian\"\namplitude_m = 0.02\nwidth_m = 1.0e6\n"
+                                                 "x_m = 0.5\ny_m = 0.5\n"), {});
+  BOOST_TEST(wide.find("water.initial.width_m: a Gaussian of width_m 1e+06") != std::string::npos, wide);
+  BOOST_TEST(error_of(with_initial("[water.initial]\nkind = \"gaussian\"\namplitude_m = 0.02\nwidth_m = 0.1\n"
+                                   "x_m = 0.5\ny_m = 0.5\n"), {}) == "");
+}
+
 BOOST_AUTO_TEST_CASE(estimates_count_what_the_run_will_hold) {
   // Oracle: arithmetic. A periodic wave case holds 10.5 arrays of nx·ny doubles: 16384² cells are
   // 22.5 GB, above the 8 GB default; its work is cells × ⌈t_end/Δt⌉. A throw of t_max / contact_dt
