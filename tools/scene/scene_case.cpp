@@ -57,14 +57,15 @@ WaterScene read_water(TomlTable w, TomlTable& top) {
     if (!st.stable()) {
       std::ostringstream m;
       m.precision(6);
-      m << "the water would be unstable: sigma = c dt_s / cell_m = " << numbers_apart(st.sigma, st.grid_limit, 6).first;
+      const auto [shown_sigma, shown_limit] = numbers_apart(st.sigma, st.grid_limit, 6);
+      m << "the water would be unstable: sigma = c dt_s / cell_m = " << shown_sigma;
       if (st.no_stable_step())
         m << ", but the " << st.stencil << " stencil has no stable step (a mode grows at every sigma > 0): change its weights";
       else {
         // The step it advises must pass the two-way check below too: under the stone the limit is lower.
         const double coupled = coupled_courant_limit(scene.field.stencil);
         const bool lowered = scene.coupling == Coupling::two_way && coupled < st.limit;
-        m << " exceeds the " << st.stencil << " stencil's limit " << numbers_apart(st.sigma, st.grid_limit, 6).second
+        m << " exceeds the " << st.stencil << " stencil's limit " << shown_limit
           << " over this grid's modes (at every mu dt)";
         if (lowered) m << ", and a two-way stone lowers it to " << coupled << " under the stone (model/README.md §2.4)";
         // Rounded down: the step advised must pass when taken as printed.

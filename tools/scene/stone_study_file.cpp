@@ -8,8 +8,8 @@
 #include "tools/io/input_error.hpp"
 #include "tools/io/shipped_files.hpp"
 #include "tools/scene/case_problem.hpp"
-#include "tools/io/number_text.hpp"
 #include "tools/scene/study_keys.hpp"
+#include "verification/study/words.hpp"
 
 namespace stoneskip {
 
@@ -173,7 +173,7 @@ void read_convergence(TomlTable t, StoneStudiesOptions& o) {
   // f = 1 the two runs are one run, and the bound was 0, so the reference's own error was blamed
   // on the stepper ("does not converge").
   if (c.check_factor < 2)
-    t.fail("check_factor", "must be at least 2 (got " + numbers_apart(c.check_factor, c.check_factor, 6).first +
+    t.fail("check_factor", "must be at least 2 (got " + num(c.check_factor, 6) +
                                "): the check run at reference_rtol × check_factor bounds the reference's error only when "
                                "its own is at least twice as large");
   c.floor_factor = t.number_or("floor_factor", c.floor_factor);
@@ -234,7 +234,7 @@ void read_work_precision(TomlTable t, StoneStudiesOptions& o) {
   // never be set aside.
   if (w.truth_check_factor > 0.5 && w.truth_check_factor < 2)
     t.fail("truth_check_factor",
-           "must be at most 0.5 or at least 2 (got " + numbers_apart(w.truth_check_factor, w.truth_check_factor, 6).first +
+           "must be at most 0.5 or at least 2 (got " + num(w.truth_check_factor, 6) +
                "): the check run at truth_rtol × truth_check_factor must differ from the truth by 2× or more");
   w.repeats = count(t, "repeats", w.repeats, 1, 100);
   w.target_errors_m = positive_list(t, "target_errors_m", w.target_errors_m);
