@@ -35,7 +35,12 @@ BOOST_AUTO_TEST_CASE(a_bound_is_printed_rounded_down) {
   BOOST_TEST(stoneskip::at_most(0.5, 4) == "0.5");  // exact: unchanged
   BOOST_TEST(stoneskip::at_most(2.0 / 3.0, 3) == "0.666");
   BOOST_TEST(stoneskip::at_most(123456.0, 2) == "1.2e+05");
-  for (double x : {1e-9, 0.0138598, 0.7071067811865476, 3.999999999, 12345.678})
+  // Just below a power of ten: printed to the nearest it reads as the power; the bound keeps all
+  // its digits (0.099 and 9.99 would be true but a digit short).
+  BOOST_TEST(stoneskip::at_most(0.09999, 3) == "0.0999");
+  BOOST_TEST(stoneskip::at_most(9.9996, 4) == "9.999");
+  BOOST_TEST(stoneskip::at_most(99.99, 2) == "99");
+  for (double x : {1e-9, 0.09999, 9.9996, 0.0138598, 0.7071067811865476, 3.999999999, 12345.678})
     for (int d = 1; d <= 8; ++d) BOOST_TEST(std::strtod(stoneskip::at_most(x, d).c_str(), nullptr) <= x, x << " at " << d);
 }
 
