@@ -23,7 +23,12 @@ struct SilenceHdf5 {
 };
 const SilenceHdf5 kSilence;
 
-void check(herr_t status, const std::string& what) {
+// Runs one HDF5 call and throws where it failed. errno is cleared before the call, so that the
+// cause read after it is the call's own, not one left by an earlier, unrelated failure.
+template <class Call>
+void check(Call&& call, const std::string& what) {
+  errno = 0;
+  const herr_t status = call();
   if (status >= 0) return;
   // A write that failed for want of room (a large dataset goes to the disk at once, past HDF5's
   // cache): the output place's fault, exit 2 (tools/cli/main.cpp), not an internal error.
@@ -62,7 +67,7 @@ void set_string_attr(hid_t obj, const std::string& name, const std::string& valu
   H5Id s = scalar_space();
   H5Id a = replace_attr(obj, name, t.get(), s.get());
   const char* p = value.c_str();
-  check(H5Awrite(a.get(), t.get(), &p), "write attribute " + name);
+  check([&] { return H5Awrite(a.get(), t.get(), &p); }, "write attribute " + name);
 }
 
 // A 1-D array of strings as an attribute (h5py reads it as a list of str).
@@ -73,7 +78,7 @@ void set_strings_attr(hid_t obj, const std::string& name, const std::vector<std:
   H5Id a = replace_attr(obj, name, t.get(), s.get());
   std::vector<const char*> ptrs;
   for (const auto& v : values) ptrs.push_back(v.c_str());
-  if (n > 0) check(H5Awrite(a.get(), t.get(), ptrs.data()), "write attribute " + name);
+  if (n > 0) check([&] { return H5Awrite(a.get(), t.get(), ptrs.data()); }, "write attribute " + name);
 }
 
 std::vector<std::string> get_strings_attr(hid_t obj, const std::string& name) {
@@ -82,7 +87,7 @@ std::vector<std::string> get_strings_attr(hid_t obj, const std::string& name) {
   const hssize_t n = H5Sget_simple_extent_npoints(space.get());
   std::vector<char*> ptrs(static_cast<std::size_t>(std::max<hssize_t>(n, 0)), nullptr);
   H5Id t = string_type();
-  if (!ptrs.empty()) check(H5Aread(a.get(), t.get(), ptrs.data()), "read attribute " + name);
+  if (!ptrs.empty()) check([&] { return H5Aread(a.get(), t.get(), ptrs.data()); }, "read attribute " + name);
   std::vector<std::string> out;
   for (char* p : ptrs) {
     out.emplace_back(p ? p : "");
@@ -100,7 +105,7 @@ std::vector<std::string> get_column_names(hid_t ds) {
   std::vector<std::string> names;
   H5Id t = string_type();
   char* p = nullptr;
-  check(H5Aread(a.get(), t.get(), &p), "read attribute columns");
+  check([&] { return H5Aread(a.get(), t.get(), &p); }, "read attribute columns");
   const std::string cols = p ? p : "";
   H5free_memory(p);
   std::size_t start = 0;
@@ -117,7 +122,7 @@ std::string get_string_attr(hid_t obj, const std::string& name) {
   H5Id a = open_attr(obj, name);
   H5Id t = string_type();
   char* p = nullptr;
-  check(H5Aread(a.get(), t.get(), &p), "read attribute " + name);
+  check([&] { return H5Aread(a.get(), t.get(), &p); }, "read attribute " + name);
   std::string s = p ? p : "";
   H5free_memory(p);
   return s;
@@ -229,20 +234,20 @@ H5Group::ChildKind H5Group::child_kind(const std::string& name) const {
 
 void H5Group::write_vector(const std::string& name, const std::vector<double>& v, const std::string& units) const {
   H5Id ds = create_dataset(id(), name, H5T_NATIVE_DOUBLE, {static_cast<hsize_t>(v.size())});
-  if (!v.empty()) check(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), "write " + name);
+  if (!v.empty()) check([&] { return H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()); }, "write " + name);
   if (!units.empty()) set_string_attr(ds.get(), "units", units);
 }
 
 void H5Group::write_ints(const std::string& name, const std::vector<long long>& v) const {
   H5Id ds = create_dataset(id(), name, H5T_NATIVE_LLONG, {static_cast<hsize_t>(v.size())});
-  if (!v.empty()) check(H5Dwrite(ds.get(), H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), "write " + name);
+  if (!v.empty()) check([&] { return H5Dwrite(ds.get(), H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()); }, "write " + name);
 }
 
 void H5Group::write_table(const std::string& name, const Table& t) const {
   H5Id ds = create_dataset(id(), name, H5T_NATIVE_DOUBLE,
                            {static_cast<hsize_t>(t.rows()), static_cast<hsize_t>(t.columns.size())});
   if (!t.values.empty())
-    check(H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, t.values.data()), "write " + name);
+    check([&] { return H5Dwrite(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, t.values.data()); }, "write " + name);
   if (!t.units.empty() && t.units.size() != t.columns.size())
     throw std::invalid_argument("write_table " + name + ": " + std::to_string(t.units.size()) + " units for " +
                                 std::to_string(t.columns.size()) + " columns");
@@ -257,7 +262,7 @@ void H5Group::write_floats_3d(const std::string& name, const std::vector<float>&
   if (v.size() != dims[0] * dims[1] * dims[2]) throw std::invalid_argument("write_floats_3d " + name + ": size does not match dims");
   H5Id ds = create_dataset(id(), name, H5T_NATIVE_FLOAT,
                            {static_cast<hsize_t>(dims[0]), static_cast<hsize_t>(dims[1]), static_cast<hsize_t>(dims[2])});
-  if (!v.empty()) check(H5Dwrite(ds.get(), H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), "write " + name);
+  if (!v.empty()) check([&] { return H5Dwrite(ds.get(), H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()); }, "write " + name);
   set_string_attr(ds.get(), "units", units);
 }
 
@@ -266,20 +271,20 @@ void H5Group::write_strings(const std::string& name, const std::vector<std::stri
   H5Id ds = create_dataset(id(), name, t.get(), {static_cast<hsize_t>(v.size())});
   std::vector<const char*> ptrs;
   for (const auto& s : v) ptrs.push_back(s.c_str());
-  if (!v.empty()) check(H5Dwrite(ds.get(), t.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()), "write " + name);
+  if (!v.empty()) check([&] { return H5Dwrite(ds.get(), t.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()); }, "write " + name);
 }
 
 std::vector<double> H5Group::read_vector(const std::string& name) const {
   H5Id ds(check_id(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), "no dataset " + path_ + "/" + name), H5Dclose);
   std::vector<double> v(element_count(dataset_dims(ds.get())));
-  if (!v.empty()) check(H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), "read " + name);
+  if (!v.empty()) check([&] { return H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()); }, "read " + name);
   return v;
 }
 
 std::vector<long long> H5Group::read_ints(const std::string& name) const {
   H5Id ds(check_id(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), "no dataset " + path_ + "/" + name), H5Dclose);
   std::vector<long long> v(element_count(dataset_dims(ds.get())));
-  if (!v.empty()) check(H5Dread(ds.get(), H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), "read " + name);
+  if (!v.empty()) check([&] { return H5Dread(ds.get(), H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()); }, "read " + name);
   return v;
 }
 
@@ -296,7 +301,7 @@ Table H5Group::read_table(const std::string& name) const {
   t.values.resize(element_count(dims));
   if (dims.size() != 2 || dims[1] != t.columns.size()) throw std::runtime_error("HDF5: " + name + " is not a table");
   if (!t.values.empty())
-    check(H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, t.values.data()), "read " + name);
+    check([&] { return H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, t.values.data()); }, "read " + name);
   return t;
 }
 
@@ -304,7 +309,7 @@ std::vector<std::string> H5Group::read_strings(const std::string& name) const {
   H5Id ds(check_id(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), "no dataset " + path_ + "/" + name), H5Dclose);
   std::vector<char*> ptrs(element_count(dataset_dims(ds.get())), nullptr);
   H5Id t = string_type();
-  if (!ptrs.empty()) check(H5Dread(ds.get(), t.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()), "read " + name);
+  if (!ptrs.empty()) check([&] { return H5Dread(ds.get(), t.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()); }, "read " + name);
   std::vector<std::string> out;
   for (char* p : ptrs) {
     out.emplace_back(p ? p : "");
@@ -318,13 +323,13 @@ void H5Group::set_attr(const std::string& name, const std::string& value) const 
 void H5Group::set_attr(const std::string& name, double value) const {
   H5Id s = scalar_space();
   H5Id a = replace_attr(id(), name, H5T_NATIVE_DOUBLE, s.get());
-  check(H5Awrite(a.get(), H5T_NATIVE_DOUBLE, &value), "write attribute " + name);
+  check([&] { return H5Awrite(a.get(), H5T_NATIVE_DOUBLE, &value); }, "write attribute " + name);
 }
 
 void H5Group::set_attr(const std::string& name, long long value) const {
   H5Id s = scalar_space();
   H5Id a = replace_attr(id(), name, H5T_NATIVE_LLONG, s.get());
-  check(H5Awrite(a.get(), H5T_NATIVE_LLONG, &value), "write attribute " + name);
+  check([&] { return H5Awrite(a.get(), H5T_NATIVE_LLONG, &value); }, "write attribute " + name);
 }
 
 bool H5Group::has_attr(const std::string& name) const { return H5Aexists(id(), name.c_str()) > 0; }
@@ -352,14 +357,14 @@ std::string H5Group::attr_string(const std::string& name) const { return get_str
 double H5Group::attr_double(const std::string& name) const {
   H5Id a = open_attr(id(), name);
   double v = 0;
-  check(H5Aread(a.get(), H5T_NATIVE_DOUBLE, &v), "read attribute " + name);
+  check([&] { return H5Aread(a.get(), H5T_NATIVE_DOUBLE, &v); }, "read attribute " + name);
   return v;
 }
 
 long long H5Group::attr_int(const std::string& name) const {
   H5Id a = open_attr(id(), name);
   long long v = 0;
-  check(H5Aread(a.get(), H5T_NATIVE_LLONG, &v), "read attribute " + name);
+  check([&] { return H5Aread(a.get(), H5T_NATIVE_LLONG, &v); }, "read attribute " + name);
   return v;
 }
 
