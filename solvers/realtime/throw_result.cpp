@@ -76,6 +76,13 @@ double shortest_flight_s(const std::vector<ContactRecord>& contacts) {
   return shortest;
 }
 
+int bounces_before_flight_shorter_than(const std::vector<ContactRecord>& contacts, double tau_s) {
+  int n = 0;
+  for (std::size_t k = 0; k + 1 < contacts.size(); ++k)
+    if (contacts[k].bounced && contacts[k + 1].start_s - contacts[k].end_s < tau_s) ++n;
+  return n;
+}
+
 void finish_result(ThrowResult& r, const ContactLog& log, const RigidState& final_state, double end_time_s) {
   r.contacts = log.contacts();
   r.bounces = log.bounces();

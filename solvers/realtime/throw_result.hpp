@@ -98,6 +98,9 @@ const char* to_string(ContactLog::Status s);
 // (model/README.md §1.8), and whether it happens turns on how far the vertex clears the water:
 // bench says how many of a sweep's bounce-count disagreements lie on such throws.
 double shortest_flight_s(const std::vector<ContactRecord>& contacts);
+// Bounces followed by a flight shorter than tau_s (to the next contact's start): those a stone's
+// mesh may not resolve (tools/scene/throw_output.hpp, UnresolvedFlights). 0 for tau_s NaN or ≤ 0.
+int bounces_before_flight_shorter_than(const std::vector<ContactRecord>& contacts, double tau_s);
 
 // Fills distance, lateral deviation, bounces, energy gain from the contacts and final state.
 void finish_result(ThrowResult& r, const ContactLog& log, const RigidState& final_state, double end_time_s);

@@ -33,6 +33,7 @@
 #include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/scene_throw.hpp"
 #include "tools/scene/sweep_file.hpp"
+#include "tools/scene/throw_output.hpp"
 #include "verification/sweep/row_batch.hpp"
 #include "verification/sweep/sweep_run.hpp"
 #include "solvers/realtime/clocks.hpp"
@@ -132,7 +133,7 @@ ThrowEvaluator make_evaluator(const SweepFile& sweep, const SweepCases& cases, c
     } catch (const std::exception& e) {
       return not_run(rt ? "reference" : "realtime", std::string("the solver threw: ") + e.what());
     }
-    out.add_row(record.row(i, point, rt ? &*rt : nullptr, ref ? &*ref : nullptr, cost, out.notes));
+    out.add_row(record.row(i, point, rt ? &*rt : nullptr, ref ? &*ref : nullptr, cost, shortest_resolved_flight_s(c), out.notes));
   };
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 
 namespace stoneskip {
@@ -44,10 +45,14 @@ UnresolvedFlights unresolved_flights(const StoneCase& c, const ThrowResult& r) {
   if (c.spec.shape == StoneShape::mesh_file || c.spec.segments < 3 || !(c.environment.gravity_m_s2 > 0)) return u;
   u.rim_sagitta_m = c.spec.radius_m * (1 - std::cos(M_PI / c.spec.segments));
   u.shortest_resolved_s = 2 * std::sqrt(2 * u.rim_sagitta_m / c.environment.gravity_m_s2);
-  for (std::size_t k = 0; k + 1 < r.contacts.size(); ++k)
-    if (r.contacts[k].bounced && r.contacts[k + 1].start_s - r.contacts[k].end_s < u.shortest_resolved_s)
-      ++u.bounces_before_short_flight;
+  u.bounces_before_short_flight = bounces_before_flight_shorter_than(r.contacts, u.shortest_resolved_s);
   return u;
+}
+
+double shortest_resolved_flight_s(const StoneCase& c) {
+  const ThrowResult none;
+  const UnresolvedFlights u = unresolved_flights(c, none);
+  return u.assessed() ? u.shortest_resolved_s : std::numeric_limits<double>::quiet_NaN();
 }
 
 std::string text_summary(const StoneCase& c, const ThrowResult& r) {

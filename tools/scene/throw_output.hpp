@@ -47,6 +47,8 @@ struct UnresolvedFlights {
   bool assessed() const { return rim_sagitta_m > 0 && shortest_resolved_s > 0; }
 };
 UnresolvedFlights unresolved_flights(const StoneCase& c, const ThrowResult& r);
+// τ_δ of the case's stone; NaN where not assessed (an OBJ mesh, no gravity).
+double shortest_resolved_flight_s(const StoneCase& c);
 
 nlohmann::json json_summary(const ThrowResult& r);
 // The same with what needs the case: max_flight_energy_gain_J (above), the stone's attitude, and

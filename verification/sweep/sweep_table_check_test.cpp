@@ -52,7 +52,7 @@ Table written(const SweepDesign& d, SweepSolvers solvers) {
     const ThrowResult rt = result(static_cast<int>(i % 3), static_cast<int>(i % 3) + 1), ref = result(1, 2);
     const bool realtime = solvers != SweepSolvers::reference, reference = solvers != SweepSolvers::realtime;
     t.add_row(i == 4 ? rec.not_run_row(i, d.point(i), {})
-                     : rec.row(i, d.point(i), realtime ? &rt : nullptr, reference ? &ref : nullptr, {}, notes));
+                     : rec.row(i, d.point(i), realtime ? &rt : nullptr, reference ? &ref : nullptr, {}, NAN, notes));
   }
   return t;
 }

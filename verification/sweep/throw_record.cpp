@@ -1,5 +1,6 @@
 #include "verification/sweep/throw_record.hpp"
 
+#include <cmath>
 #include <functional>
 #include <limits>
 
@@ -117,8 +118,11 @@ ThrowRecord::ThrowRecord(std::vector<std::string> varied_keys, SweepSolvers solv
     : varied_(std::move(varied_keys)), solvers_(solvers) {
   columns_.push_back("throw");
   for (const auto& k : varied_) columns_.push_back(k);
-  for (const auto& s : solver_names(solvers_))
+  for (const auto& s : solver_names(solvers_)) {
     for (const auto& f : solver_fields()) columns_.push_back(s + "_" + f.name);
+    columns_.push_back(s + "_bounces_before_short_flight");
+  }
+  columns_.push_back("shortest_resolved_flight_s");
   if (solvers_ == SweepSolvers::both)
     for (const auto& f : disagreement_fields()) columns_.push_back(std::string("disagreement_") + f.name);
   columns_.push_back("cost_setup_wall_s");
@@ -134,7 +138,8 @@ ThrowRecord::ThrowRecord(std::vector<std::string> varied_keys, SweepSolvers solv
 bool ThrowRecord::is_cost_column(std::size_t c) const { return columns_.at(c).rfind(kCostPrefix, 0) == 0; }
 
 std::vector<double> ThrowRecord::row(std::uint64_t throw_index, const std::vector<double>& point, const ThrowResult* rt,
-                                     const ThrowResult* ref, const SweepThrowCost& cost, std::vector<ThrowNote>& notes) const {
+                                     const ThrowResult* ref, const SweepThrowCost& cost, double shortest_resolved_flight_s,
+                                     std::vector<ThrowNote>& notes) const {
   std::vector<double> r;
   r.reserve(columns_.size());
   r.push_back(static_cast<double>(throw_index));
@@ -143,8 +148,12 @@ std::vector<double> ThrowRecord::row(std::uint64_t throw_index, const std::vecto
   for (const auto& [name, result] : runs) {
     if (!result) continue;
     for (const auto& f : solver_fields()) r.push_back(f.value(*result));
+    r.push_back(std::isnan(shortest_resolved_flight_s)
+                    ? kNaN
+                    : double(bounces_before_flight_shorter_than(result->contacts, shortest_resolved_flight_s)));
     if (result->outcome == Outcome::failed) notes.push_back({throw_index, name, result->outcome_detail});
   }
+  r.push_back(shortest_resolved_flight_s);
   if (rt && ref) {
     // A failed run's counts and end are those at its failure, not its result: no disagreement
     // (NaN), as `run` says "not compared" for it.

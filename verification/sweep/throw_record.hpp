@@ -14,6 +14,13 @@
 //            _entry_path_angle_deg, _entry_attack_angle_deg        NaN when there was no contact
 //   <solver>_steps, _contact_steps, _rhs_evaluations, _root_evaluations, _error_test_failures,
 //            _nonlinear_iterations, _segments                       solver statistics
+//   <solver>_bounces_before_short_flight   bounces followed by a flight shorter than
+//                                          shortest_resolved_flight_s: those the stone's N-gon
+//                                          rim may not resolve (model/README.md §1.8; counted
+//                                          in _bounces all the same); NaN where not assessed
+//   shortest_resolved_flight_s             τ_δ = 2 √(2δ/g), δ = R (1 − cos(π/N)) the rim's
+//                                          sagitta (tools/scene/throw_output.hpp); NaN for an
+//                                          OBJ mesh or without gravity
 //   disagreement_*                         both solvers only: real-time minus reference
 //                                          (bounces, contacts, distance_m, lateral_m,
 //                                          first_contact_start_s) and the contact comparison
@@ -70,9 +77,10 @@ class ThrowRecord {
   bool is_cost_column(std::size_t c) const;
 
   // The row of a solved throw (rt / ref null when that solver did not run); appends notes for
-  // failed solves.
+  // failed solves. shortest_resolved_flight_s: the throw's stone's τ_δ (NaN: not assessed).
   std::vector<double> row(std::uint64_t throw_index, const std::vector<double>& point, const ThrowResult* rt,
-                          const ThrowResult* ref, const SweepThrowCost& cost, std::vector<ThrowNote>& notes) const;
+                          const ThrowResult* ref, const SweepThrowCost& cost, double shortest_resolved_flight_s,
+                          std::vector<ThrowNote>& notes) const;
   // The row of a throw whose case could not be built: outcome kOutcomeNotRun, NaN elsewhere.
   std::vector<double> not_run_row(std::uint64_t throw_index, const std::vector<double>& point, const SweepThrowCost& cost) const;
 

@@ -53,7 +53,7 @@ BOOST_AUTO_TEST_CASE(a_row_holds_what_its_columns_name) {
   cost.thread = 1;
   cost.setup_wall_s = 3e-5;
   std::vector<ThrowNote> notes;
-  const std::vector<double> row = rec.row(17, {8.0, 12.5}, &rt, &ref, cost, notes);
+  const std::vector<double> row = rec.row(17, {8.0, 12.5}, &rt, &ref, cost, NAN, notes);
   BOOST_REQUIRE_EQUAL(row.size(), rec.width());
   BOOST_TEST(at(rec, row, "throw") == 17);
   BOOST_TEST(at(rec, row, "throw.spin_rev_s") == 12.5);
@@ -70,6 +70,26 @@ BOOST_AUTO_TEST_CASE(a_row_holds_what_its_columns_name) {
   BOOST_TEST(at(rec, row, "cost_realtime_wall_s") == 0.004);
   BOOST_TEST(at(rec, row, "cost_rank") == 2);
   BOOST_TEST(notes.empty());
+  BOOST_TEST(std::isnan(at(rec, row, "shortest_resolved_flight_s")));  // not assessed: no count either
+  BOOST_TEST(std::isnan(at(rec, row, "realtime_bounces_before_short_flight")));
+}
+
+BOOST_AUTO_TEST_CASE(bounces_before_a_flight_shorter_than_the_mesh_resolves_are_counted_per_solver) {
+  // Oracle: the hand-built contacts. Real time: bounces end at 0.11 (next start 0.1105: a 0.5 ms
+  // flight), 0.12 (next 0.30) and 0.32 (the last: no flight after it); reference: 0.11 → 0.1115
+  // (1.5 ms). With τ = 1 ms only real time's first bounce precedes a shorter flight; a contact
+  // that did not bounce (the reference's second) is not counted whatever follows it.
+  const ThrowRecord rec({"throw.spin_rev_s"}, SweepSolvers::both);
+  ThrowResult rt = result(3, 12.0, {{0.10, 0.11}, {0.1105, 0.12}, {0.30, 0.32}});
+  ThrowResult ref = result(1, 10.5, {{0.10, 0.11}, {0.1115, 0.12}, {0.1201, 0.2}});
+  for (auto& c : rt.contacts) c.bounced = true;
+  ref.contacts[0].bounced = true;
+  std::vector<ThrowNote> notes;
+  const std::vector<double> row = rec.row(0, {40.0}, &rt, &ref, {}, 1e-3, notes);
+  BOOST_TEST(at(rec, row, "shortest_resolved_flight_s") == 1e-3);
+  BOOST_TEST(at(rec, row, "realtime_bounces_before_short_flight") == 1);
+  BOOST_TEST(at(rec, row, "reference_bounces_before_short_flight") == 0);
+  BOOST_TEST(at(rec, row, "realtime_bounces") == 3);  // still counted (spec §1.8)
 }
 
 BOOST_AUTO_TEST_CASE(no_contact_leaves_the_first_contact_columns_nan_and_a_failure_leaves_a_note) {
@@ -79,7 +99,7 @@ BOOST_AUTO_TEST_CASE(no_contact_leaves_the_first_contact_columns_nan_and_a_failu
   r.outcome = Outcome::failed;
   r.outcome_detail = "too many steps";
   std::vector<ThrowNote> notes;
-  const std::vector<double> row = rec.row(4, {0.03}, nullptr, &r, {}, notes);
+  const std::vector<double> row = rec.row(4, {0.03}, nullptr, &r, {}, NAN, notes);
   BOOST_TEST(std::isnan(at(rec, row, "reference_first_contact_start_s")));
   BOOST_TEST(at(rec, row, "reference_outcome") == kOutcomeFailed);
   BOOST_REQUIRE_EQUAL(notes.size(), 1u);
@@ -96,7 +116,7 @@ BOOST_AUTO_TEST_CASE(a_failed_solve_has_no_disagreement) {
   ThrowResult ref = result(2, 10.5, {{0.1002, 0.1101}, {0.31, 0.33}});
   ref.outcome = Outcome::failed;
   std::vector<ThrowNote> notes;
-  const std::vector<double> row = rec.row(3, {8.0}, &rt, &ref, {}, notes);
+  const std::vector<double> row = rec.row(3, {8.0}, &rt, &ref, {}, NAN, notes);
   for (std::size_t c = 0; c < rec.width(); ++c)
     if (rec.columns()[c].rfind("disagreement_", 0) == 0) BOOST_TEST(std::isnan(row[c]), rec.columns()[c]);
   BOOST_TEST(at(rec, row, "reference_bounces") == 2);  // the run's own columns keep what it reached
@@ -114,7 +134,7 @@ BOOST_AUTO_TEST_CASE(only_cost_columns_depend_on_where_a_throw_ran) {
   c2.setup_wall_s = 1;
   c2.realtime_cpu_s = 2;
   std::vector<ThrowNote> notes;
-  const auto a = rec.row(0, {1.0}, &r1, nullptr, c1, notes), b = rec.row(0, {1.0}, &r2, nullptr, c2, notes);
+  const auto a = rec.row(0, {1.0}, &r1, nullptr, c1, 1e-3, notes), b = rec.row(0, {1.0}, &r2, nullptr, c2, 1e-3, notes);
   for (std::size_t c = 0; c < rec.width(); ++c)
     BOOST_TEST((a[c] != b[c]) == rec.is_cost_column(c), rec.columns()[c]);
   const auto n = rec.not_run_row(9, {1.0}, c2);
