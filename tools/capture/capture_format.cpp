@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "tools/capture/capture_header.hpp"
 #include "tools/capture/capture_text.hpp"
 #include "tools/capture/evemu_reader.hpp"
 #include "tools/capture/gesture_reader.hpp"
@@ -123,6 +124,7 @@ Trace parse_capture(const std::string& file_text, const std::string& file, const
   else if (format == "gesture") t = read_gesture(text, file);
   else if (format == "csv") t = read_header_csv(text, file, o.csv);
   else throw_input_error(file, 0, "--format", "unknown format '" + format + "' (trace_csv, report_log, evemu, gesture, csv)");
+  refuse_half_calibration(t, file);
   check_sane(t);
   return t;
 }

@@ -157,13 +157,30 @@ bool apply_header_value(Trace& t, const std::string& key, const std::string& val
   } else {
     throw_input_error(file, line, key, "unknown calibration key");
   }
-  for (int i = 0; i < 3; ++i)
-    if (std::abs(c.accel_one_g_counts[i] - c.accel_zero_counts[i]) < 1)
-      throw_input_error(file, line, key, "one-g and zero-g counts must differ");
+  // The two count lines are one calibration: checked when the second arrives, whichever comes
+  // first (against the nominal half they would pass or fail by the order of the lines).
+  const bool both_counts =
+      block_key || (count_key && t.header_key_lines.count(k == "accel_zero_counts" ? "calibration.accel_one_g_counts"
+                                                                                   : "calibration.accel_zero_counts"));
+  if (both_counts)
+    for (int i = 0; i < 3; ++i)
+      if (std::abs(c.accel_one_g_counts[i] - c.accel_zero_counts[i]) < 1)
+        throw_input_error(file, line, key, "one-g and zero-g counts must differ");
   return true;
 }
 
 }  // namespace
+
+void refuse_half_calibration(const Trace& t, const std::string& file) {
+  const auto zero = t.header_key_lines.find("calibration.accel_zero_counts");
+  const auto one = t.header_key_lines.find("calibration.accel_one_g_counts");
+  if ((zero == t.header_key_lines.end()) == (one == t.header_key_lines.end())) return;
+  const auto& given = zero != t.header_key_lines.end() ? *zero : *one;
+  const char* missing = zero != t.header_key_lines.end() ? "calibration.accel_one_g_counts" : "calibration.accel_zero_counts";
+  throw_input_error(file, given.second, given.first,
+                    std::string("is given without ") + missing +
+                        ": the accelerometer's calibration is both lines (or calibration.block), not half of one");
+}
 
 std::string header_lines(const Trace& t) {
   const CaptureCalibration& c = t.calibration;

@@ -36,6 +36,10 @@ void refuse_misspelt_header_key(const std::string& key, const std::vector<std::s
 // refused, above).
 bool skip_blank_or_header(Trace& trace, std::string_view trimmed_line, const std::string& file, long line);
 
+// After the whole file: one accelerometer count line without the other (the missing half would
+// be the nominal calibration's, silently) is refused, naming the line given.
+void refuse_half_calibration(const Trace& trace, const std::string& file);
+
 // The header lines (with "# ") describing a trace's calibration, rate and mounting.
 std::string header_lines(const Trace& trace);
 

@@ -295,6 +295,60 @@ BOOST_AUTO_TEST_CASE(a_calibration_block_beside_count_lines_or_counts_no_remote_
              (std::array<double, 3>{0, 8100, 16383}));  // the ends of the range read
 }
 
+BOOST_AUTO_TEST_CASE(half_a_calibration_is_refused_and_the_two_count_lines_are_checked_in_either_order) {
+  // One count line without the other took the nominal calibration's other half in silence (a
+  // capture's path angle 12.75° against 10°, verdict "usable"). Oracle: the input rules, an error
+  // naming the line given and the line missing; and the pair zero 616 / one-g 720, valid, must
+  // read whichever line comes first (616 is the nominal one-g, which the first line alone met).
+  BOOST_TEST(contains(error_of("# calibration.accel_zero_counts: 500,500,500\n" + gentle_log()),
+                      "bad.cap:1: calibration.accel_zero_counts: is given without calibration.accel_one_g_counts"),
+             error_of("# calibration.accel_zero_counts: 500,500,500\n" + gentle_log()));
+  BOOST_TEST(contains(error_of("# note\n# calibration.accel_one_g_counts: 600,600,600\n" + gentle_log()),
+                      "bad.cap:2: calibration.accel_one_g_counts: is given without calibration.accel_zero_counts"));
+  for (const bool zero_first : {true, false}) {
+    const std::string zero = "# calibration.accel_zero_counts: 616,616,616\n", one = "# calibration.accel_one_g_counts: 720,720,720\n";
+    const Trace t = parse_capture((zero_first ? zero + one : one + zero) + gentle_log(), "pair.log");
+    BOOST_TEST(t.calibration.accel_zero_counts == (std::array<double, 3>{616, 616, 616}));
+    BOOST_TEST(t.calibration.accel_one_g_counts == (std::array<double, 3>{720, 720, 720}));
+  }
+  BOOST_TEST(contains(error_of("# calibration.accel_zero_counts: 600,600,600\n# calibration.accel_one_g_counts: 600,700,700\n" +
+                               gentle_log()),
+                      ":2: calibration.accel_one_g_counts: one-g and zero-g counts must differ"));
+}
+
+BOOST_AUTO_TEST_CASE(a_second_calibration_block_that_differs_is_refused_and_a_late_header_still_wins_with_a_warning) {
+  // A second 0x21 calibration reply replaced the first for every sample, the ones before it too,
+  // and header count lines at the end of a log won over the block without the warning they get
+  // at its top. Oracle: the input rules; the synthetic log's block is on line 2 (zero-g
+  // 506,513,518, one-g 610,617,621).
+  const std::string log = gentle_log();
+  const auto block_at = log.find(" 21 00 00 f0 00 16 ");
+  BOOST_REQUIRE(block_at != std::string::npos);
+  const std::string block_line = log.substr(log.rfind('\n', block_at) + 1, log.find('\n', block_at) - log.rfind('\n', block_at));
+  const std::string payload = block_line.substr(block_line.find(" 21 "));  // " 21 ... 00\n"
+  std::string other_hex;
+  for (auto b : encode_calibration_block({496, 496, 496}, {608, 608, 608})) {
+    char h[4];
+    std::snprintf(h, sizeof h, " %02x", unsigned(b));
+    other_hex += h;
+  }
+  // The same reply with the other block's ten bytes (after " 21 bb bb se aa aa": 18 characters).
+  const std::string other_payload = payload.substr(0, 18) + other_hex + payload.substr(18 + other_hex.size());
+  const long lines = std::count(log.begin(), log.end(), '\n');
+  const std::string second = log + "99.0" + other_payload;
+  BOOST_TEST(contains(error_of(second), "bad.cap:" + std::to_string(lines + 1) +
+                                            ": a second calibration block differs from the one on line 2"),
+             error_of(second));
+  BOOST_TEST(parse_capture(log + "99.0" + payload, "again.log").calibration.accel_one_g_counts ==
+             (std::array<double, 3>{610, 617, 621}));  // the same block read again
+  const Trace late = parse_capture(log + "# calibration.accel_zero_counts: 500,500,500\n# calibration.accel_one_g_counts: 600,600,600\n",
+                                   "late.log");
+  BOOST_TEST(late.calibration.accel_one_g_counts == (std::array<double, 3>{600, 600, 600}));
+  BOOST_TEST(std::count_if(late.warnings.begin(), late.warnings.end(), [](const std::string& w) {
+               return contains(w, "late.log:2: the remote's calibration block") && contains(w, "differs from the header's");
+             }) == 1);
+}
+
 BOOST_AUTO_TEST_CASE(a_trace_without_a_has_gyro_line_keeps_its_rates) {
   // Oracle: the rows themselves. Rates in the wx..wz columns are a MotionPlus's, stated or not;
   // an explicit `has_gyro: false` still wins.

@@ -1,6 +1,8 @@
 #include "tools/capture/report_log.hpp"
 
 #include <cstdio>
+#include <optional>
+#include <string>
 
 #include "tools/capture/capture_header.hpp"
 #include "tools/capture/capture_text.hpp"
@@ -36,6 +38,23 @@ char hex_id(std::uint8_t id, char* buf) {
   std::snprintf(buf, 8, "0x%02x", id);
   return 0;
 }
+
+// Whether a block's accelerometer counts are those a calibration holds.
+bool same_counts(const CalibrationBlock& b, const CaptureCalibration& c) {
+  for (int i = 0; i < 3; ++i)
+    if (b.zero_counts[i] != c.accel_zero_counts[i] || b.one_g_counts[i] != c.accel_one_g_counts[i]) return false;
+  return true;
+}
+bool same_counts(const CalibrationBlock& a, const CalibrationBlock& b) {
+  return a.zero_counts == b.zero_counts && a.one_g_counts == b.one_g_counts;
+}
+
+std::string block_counts(const CalibrationBlock& b) {
+  char s[96];
+  std::snprintf(s, sizeof s, "zero-g %d,%d,%d, one-g %d,%d,%d", b.zero_counts[0], b.zero_counts[1], b.zero_counts[2],
+                b.one_g_counts[0], b.one_g_counts[1], b.one_g_counts[2]);
+  return s;
+}
 }  // namespace
 
 Trace read_report_log(const std::string& text, const std::string& file) {
@@ -52,6 +71,8 @@ Trace read_report_log(const std::string& text, const std::string& file) {
   long overlong = 0;
   std::size_t first_overlong_line = 0;
   std::vector<char> sample_has_gyro;
+  std::optional<CalibrationBlock> device_block;  // the first 0x21 calibration reply, applied after the scan
+  long device_block_line = 0;
   for (const TextLine& line : split_capture_lines(text, file)) {
     const std::string_view s = trim(line.text);
     if (skip_blank_or_header(t, s, file, line.number)) continue;
@@ -92,33 +113,21 @@ Trace read_report_log(const std::string& text, const std::string& file) {
     if (r.kind == ReportKind::memory_read) {
       if (r.read_error == 0 && (r.read_address == 0x0016 || r.read_address == 0x0020) && r.read_data.size() >= 10) {
         const auto block = decode_calibration_block(r.read_data.data(), r.read_data.size());
-        CaptureCalibration& c = t.calibration;
-        if (c.accel_from_header) {
-          // The header states the calibration: it wins, and a block that disagrees is said to.
-          bool same = true;
-          for (int i = 0; i < 3; ++i)
-            same = same && block->zero_counts[i] == c.accel_zero_counts[i] && block->one_g_counts[i] == c.accel_one_g_counts[i];
-          if (!same) {
-            char what[200];
-            std::snprintf(what, sizeof what,
-                          ": the remote's calibration block (zero-g %d,%d,%d, one-g %d,%d,%d) differs from the "
-                          "header's calibration; the header's is used",
-                          int(block->zero_counts[0]), int(block->zero_counts[1]), int(block->zero_counts[2]),
-                          int(block->one_g_counts[0]), int(block->one_g_counts[1]), int(block->one_g_counts[2]));
-            t.warnings.push_back(input_location(file, line.number, "") + what);
-          }
-          continue;
-        }
-        if (!block->checksum_ok)
-          t.warnings.push_back(input_location(file, line.number, "") + ": calibration block checksum does not match; used anyway");
-        for (int i = 0; i < 3; ++i) {
-          t.calibration.accel_zero_counts[i] = block->zero_counts[i];
-          t.calibration.accel_one_g_counts[i] = block->one_g_counts[i];
-          if (block->one_g_counts[i] == block->zero_counts[i]) {
+        for (int i = 0; i < 3; ++i)
+          if (block->one_g_counts[i] == block->zero_counts[i])
             throw_input_error(file, line.number, "", "calibration block has one-g equal to zero-g");
-          }
+        // One remote has one calibration: the same block read again is fine, a different one
+        // (two remotes in one log, or a corrupt read) cannot be applied to every sample.
+        if (device_block && !same_counts(*device_block, *block))
+          throw_input_error(file, line.number, "",
+                            "a second calibration block differs from the one on line " +
+                                std::to_string(device_block_line) +
+                                " (" + block_counts(*device_block) + " against " + block_counts(*block) +
+                                "): one remote has one calibration; keep the right one");
+        if (!device_block) {
+          device_block = *block;
+          device_block_line = line.number;
         }
-        t.calibration.accel_from_device = true;
       }
       continue;
     }
@@ -149,6 +158,25 @@ Trace read_report_log(const std::string& text, const std::string& file) {
     sample_has_gyro.push_back(r.has_motionplus);
   }
   if (t.samples.empty()) throw_input_error(file, 0, "", "no accelerometer reports (0x31, 0x33, 0x35, 0x37) found");
+  if (device_block) {
+    CaptureCalibration& c = t.calibration;
+    if (c.accel_from_header) {
+      // The header states the calibration (wherever its lines are in the file): it wins, and a
+      // block that disagrees is said to.
+      if (!same_counts(*device_block, c))
+        t.warnings.push_back(input_location(file, device_block_line, "") + ": the remote's calibration block (" +
+                             block_counts(*device_block) + ") differs from the header's calibration; the header's is used");
+    } else {
+      if (!device_block->checksum_ok)
+        t.warnings.push_back(input_location(file, device_block_line, "") +
+                             ": calibration block checksum does not match; used anyway");
+      for (int i = 0; i < 3; ++i) {
+        c.accel_zero_counts[i] = device_block->zero_counts[i];
+        c.accel_one_g_counts[i] = device_block->one_g_counts[i];
+      }
+      c.accel_from_device = true;
+    }
+  }
   // Calibrate: counts → g and deg/s. Samples without MotionPlus data hold the previous rate.
   const CaptureCalibration& c = t.calibration;
   Eigen::Vector3d last_rate = Eigen::Vector3d::Zero();
