@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 
 #include "tools/capture/capture_header.hpp"
 #include "tools/capture/capture_text.hpp"
@@ -158,10 +159,32 @@ Trace read_evemu(const std::string& text, const std::string& file) {
       f = e;
     }
   }
+  constexpr double kSameReport_s = 2e-3;  // accelerometer and MotionPlus events of one HID report
+  // evdev passes on only what changed (input core drops an ABS value equal to the last one, and a
+  // SYN_REPORT with nothing before it): a report whose three accelerometer values repeat leaves
+  // no accelerometer frame, though its MotionPlus frame is there. Such a report is not lost: its
+  // accelerometer reading is the last one, held. (Without a MotionPlus such reports cannot be told
+  // from lost ones.)
+  {
+    std::vector<Frame> held;
+    std::size_t a = 0;
+    for (const Frame& gf : gyro_frames) {
+      while (a < accel_frames.size() && accel_frames[a].t_s < gf.t_s - kSameReport_s) ++a;
+      const bool has_accel = a < accel_frames.size() && accel_frames[a].t_s <= gf.t_s + kSameReport_s;
+      if (has_accel || a == 0) continue;  // its own accelerometer frame, or none yet to hold
+      held.push_back({gf.t_s, accel_frames[a - 1].v, gf.line});
+    }
+    if (!held.empty()) {
+      std::vector<Frame> merged;
+      merged.reserve(accel_frames.size() + held.size());
+      std::merge(accel_frames.begin(), accel_frames.end(), held.begin(), held.end(), std::back_inserter(merged),
+                 [](const Frame& x, const Frame& y) { return x.t_s < y.t_s; });
+      accel_frames = std::move(merged);
+    }
+  }
   const double t0 = accel_frames.front().t_s;
   std::size_t g = 0, k = 0;
   unsigned buttons = 0;
-  constexpr double kSameReport_s = 2e-3;  // accelerometer and MotionPlus events of one HID report
   for (const Frame& a : accel_frames) {
     TraceSample x;
     x.line = a.line;
