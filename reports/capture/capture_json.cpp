@@ -27,6 +27,7 @@ nlohmann::json capture_json(const CaptureAnalysis& a, const CaptureSimulation* s
   j["samples"] = t.samples;
   j["repeated_reports"] = t.repeated;
   j["rate_hz"] = number(t.rate_hz);
+  j["clock_rate_hz"] = t.clock == ClockModel::regular_reports ? number(t.clock_rate_hz) : nlohmann::json(nullptr);
   j["jitter_ms"] = number(1e3 * t.jitter_s);
   j["gaps"] = t.gaps;
   j["dropped_reports"] = t.dropped_reports;
@@ -39,7 +40,12 @@ nlohmann::json capture_json(const CaptureAnalysis& a, const CaptureSimulation* s
   j["release_found"] = a.release_found;
   j["release_t_s"] = a.release_found ? number(a.release_t_s) : nlohmann::json(nullptr);
   put(j, "release_speed_m_s", a.speed_m_s, ok, !a.ensemble.empty());
-  j["release_speed_is_lower_bound_only"] = a.clipped;
+  // Clipped during the swing: the accelerometer's speed is a lower bound, and the release speed
+  // is the lever arm's, raised to that bound where slower (verification/captures/capture_analysis.hpp).
+  j["accelerometer_speed_is_lower_bound_only"] = a.clipped;
+  j["release_speed_source"] = !a.clipped                   ? "accelerometer"
+                              : a.nominal.speed_floored ? "lever_arm_raised_to_accelerometer_bound"
+                                                        : "lever_arm";
   put(j, "accelerometer_speed_m_s", a.accel_speed_m_s, ok, !a.ensemble.empty());
   put(j, "lever_arm_speed_m_s", a.lever_speed_m_s, ok, !a.ensemble.empty());
   put(j, "attack_angle_deg", a.attack_angle_deg, ok, !a.ensemble.empty());

@@ -264,10 +264,12 @@ void print_verdict(const CaptureAnalysis& an, const CaptureSimulation* sim) {
     else std::printf("    %-24s %8.3f  %s\n", name, v.nominal, unit.c_str());
   };
   const TimingStats& t = an.timing.stats;
-  std::printf("  timing: rate %.1f Hz (mean %.1f Hz), jitter %.2f ms, intervals %.1f-%.1f ms, %d gaps (about %ld reports "
-              "lost), %zu repeats; clock %s\n",
+  std::printf("  timing: rate %.1f Hz (median interval; mean %.1f Hz), jitter %.2f ms, intervals %.1f-%.1f ms, %d gaps "
+              "(about %ld reports lost), %zu repeats; clock %s",
               t.rate_hz, t.mean_rate_hz, 1e3 * t.jitter_s, 1e3 * t.min_interval_s, 1e3 * t.max_interval_s, t.gaps,
               t.dropped_reports, t.repeated, to_string(t.clock));
+  if (t.clock == ClockModel::regular_reports) std::printf(" at %.4g Hz", t.clock_rate_hz);
+  std::printf("\n");
   std::printf("  saturated fraction %.3f\n", an.saturated_fraction);
   const bool rough = intervals && static_cast<int>(an.ensemble.size()) < kMembersResolvingInterval;
   std::printf("  as measured (the stone at the remote's mounting, in the room)%s:\n",

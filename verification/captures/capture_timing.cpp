@@ -307,7 +307,10 @@ TimedSamples analyse_timing(const Trace& trace, const TimingOptions& o) {
     if (n1 > 1) s.jitter_s = std::sqrt(std::max(0.0, (sum2 - sum1 * sum1 / double(n1)) / double(n1 - 1)));
   }
   s.clock = regular ? ClockModel::regular_reports : ClockModel::stamps_as_given;
-  if (regular) out.t_s = clock;
+  if (regular) {
+    out.t_s = clock;
+    s.clock_rate_hz = 1.0 / b;
+  }
   return out;
 }
 

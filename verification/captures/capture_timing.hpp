@@ -65,6 +65,8 @@ struct TimingStats {
   double clock_residual_rms_s = 0;  // RMS of stamp − fitted regular clock
   double clock_residual_max_s = 0;  // largest |stamp − fitted regular clock|
   ClockModel clock = ClockModel::stamps_as_given;  // the model used (never automatic)
+  double clock_rate_hz = 0;     // regular_reports: 1 / the fitted clock's period (the rate the
+                                // times use, which the median interval can miss); 0 otherwise
   int gaps = 0;
   long dropped_reports = 0;     // estimated from the gaps' lengths
   double longest_gap_s = 0;

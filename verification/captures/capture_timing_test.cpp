@@ -56,6 +56,10 @@ BOOST_AUTO_TEST_CASE(a_regular_clock_under_host_jitter_is_recovered_and_its_loss
       double worst = 0;
       for (std::size_t k = 0; k < truth.size(); ++k) worst = std::max(worst, std::abs(t.t_s[k] - truth[k]));
       BOOST_TEST(worst < 2 * tolerance);
+      // The rate the times use is the fitted clock's: within 5 σ of its slope (σ_b = σ / √Σ(n − n̄)²,
+      // Σ ≈ N³/12 over 200 slots) of 100 Hz, whatever the median interval says.
+      const double sigma_b = (j / std::sqrt(3.0)) / std::sqrt(200.0 * 200.0 * 200.0 / 12.0);
+      BOOST_TEST(std::abs(t.stats.clock_rate_hz - 100.0) < 5 * sigma_b * 100.0 * 100.0, t.stats.clock_rate_hz);
     }
   }
 }

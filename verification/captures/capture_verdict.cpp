@@ -213,7 +213,7 @@ void judge_capture(CaptureAnalysis& a, const CaptureVerdictRules& r) {
       a.notes.push_back(format("about %.0f reports lost in %.0f gaps", double(ts.dropped_reports), ts.gaps));
     if (ts.clock == ClockModel::regular_reports)
       a.notes.push_back(format("clock: every stamp within %.2g ms of a regular %.5g Hz clock; the stamps were replaced by it",
-                               1e3 * ts.clock_residual_max_s, ts.rate_hz));
+                               1e3 * ts.clock_residual_max_s, ts.clock_rate_hz));
     else
       a.notes.push_back(format("clock: stamps used as given (up to %.3g ms from the best regular clock; typical "
                                "interval %.3g ms)",
