@@ -57,6 +57,13 @@ Geometry geometry(const SyntheticThrow& th) {
   return g;
 }
 
+// The pivot's path: d raised by pivot_elevation_deg in the vertical plane of d (d itself at 0).
+Vec3 pivot_direction(const SyntheticThrow& th, const Geometry& g) {
+  if (th.pivot_elevation_deg == 0) return g.d;
+  const double b = (th.path_angle_deg - th.pivot_elevation_deg) * kDeg;
+  return Vec3(std::cos(b), 0, -std::sin(b));
+}
+
 std::string hex(const std::vector<std::uint8_t>& b) {
   std::string s;
   char x[4];
@@ -147,7 +154,7 @@ std::vector<Reading> record(const SyntheticThrow& th, const SyntheticSensor& s, 
   truth.release_t_s = t_r;
   const Profile turn = profile(th, th.swing_rate_rad_s, t_r), pivot = profile(th, th.pivot_speed_m_s, t_r);
   RigidState st;
-  st.velocity_m_s = pivot.rate * g.d + turn.rate * g.k.cross(g.lever_world_r);
+  st.velocity_m_s = pivot.rate * pivot_direction(th, g) + turn.rate * g.k.cross(g.lever_world_r);
   st.orientation = Quat(g.R_stone_r);
   const AttitudeAngles ang = attitude_angles(st);
   truth.speed_m_s = st.velocity_m_s.norm();
@@ -173,7 +180,7 @@ double synthetic_duration_s(const SyntheticThrow& th) {
 Vec3 synthetic_stone_position(const SyntheticThrow& th, double t) {
   const Geometry g = geometry(th);
   const Profile turn = profile(th, th.swing_rate_rad_s, t), pivot = profile(th, th.pivot_speed_m_s, t);
-  return pivot.pos * g.d + Eigen::AngleAxisd(turn.pos, g.k) * g.lever_world_r - g.lever_world_r;
+  return pivot.pos * pivot_direction(th, g) + Eigen::AngleAxisd(turn.pos, g.k) * g.lever_world_r - g.lever_world_r;
 }
 
 SyntheticThrow skipping_throw(const SkippingThrowSpec& spec) {
@@ -199,7 +206,7 @@ SyntheticSample synthetic_sample(const SyntheticThrow& th, double t) {
   const Mat3 rot = Eigen::AngleAxisd(turn.pos, g.k).toRotationMatrix();
   const Mat3 R_remote = rot * g.R_remote_r;
   const Vec3 rho = R_remote * (th.mounting.lever_arm_m - th.mounting.stone_offset_m);  // pivot → remote
-  const Vec3 a = pivot.accel * g.d + turn.accel * g.k.cross(rho) + turn.rate * turn.rate * g.k.cross(g.k.cross(rho));
+  const Vec3 a = pivot.accel * pivot_direction(th, g) + turn.accel * g.k.cross(rho) + turn.rate * turn.rate * g.k.cross(g.k.cross(rho));
   SyntheticSample s;
   s.accel_g = R_remote.transpose() * (a + kG * Vec3::UnitZ()) / kG;  // specific force, in g
   s.rate_deg_s = R_remote.transpose() * (turn.rate * g.k) / kDeg;

@@ -26,6 +26,8 @@ struct SyntheticThrow {
   double swing_rate_rad_s = 14.0;   // Ω at release
   double swing_duration_s = 0.25;   // T
   double pivot_speed_m_s = 1.5;     // V at release
+  double pivot_elevation_deg = 0.0; // the pivot's path raised above d by this angle (the trunk
+                                    // rising or dropping): the lever arm then misses the direction too
   double path_angle_deg = 10.0;     // β
   double attack_angle_deg = 15.0;   // α
   double release_height_m = 0.9;    // the stone's centre at release

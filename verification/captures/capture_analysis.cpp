@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
+#include "model/stone/throw.hpp"
 #include "verification/captures/capture_chain.hpp"
 
 namespace stoneskip {
@@ -190,6 +192,24 @@ void estimate_throw(CaptureAnalysis& a, const ChainInput& in, const CaptureOptio
       v.high = std::max({v.high, x, y});
     };
     widen(a.accel_speed_m_s, a.accel_lower.accel_speed_m_s, a.accel_upper.accel_speed_m_s);
+    // The direction as well: the lever arm's velocity misses the pivot's own motion, which the
+    // accelerometer sees (its clipped spans as recorded, at max_accel_g, or as each member fills
+    // them), so the path and attack angles span the accelerometer's directions too (a pivot rising
+    // at 4 m/s² put the true path angle, −5.2°, twelve interval widths outside the lever arm's).
+    auto accel_attitude = [](const ReleaseKinematics& r) {
+      RigidState st;
+      st.orientation = r.stone_orientation;
+      st.velocity_m_s = r.accel_velocity_m_s;
+      return attitude_angles(st);
+    };
+    std::vector<const ReleaseKinematics*> directions{&a.accel_lower, &a.accel_upper};
+    for (const auto& m : e) directions.push_back(&m);
+    for (const ReleaseKinematics* r : directions) {
+      if (!(r->accel_speed_m_s > 0)) continue;  // no direction
+      const AttitudeAngles g = accel_attitude(*r);
+      widen(a.path_angle_deg, g.path_angle_deg, g.path_angle_deg);
+      widen(a.attack_angle_deg, g.attack_angle_deg, g.attack_angle_deg);
+    }
     widen(a.rise_m, a.accel_lower.measured.rise_m, a.accel_upper.measured.rise_m);
     widen(a.measured_speed_m_s, a.accel_speed_m_s.low, a.accel_speed_m_s.high);
     const double scale = o.thrower.speed_scale;
