@@ -1,5 +1,6 @@
 #include "tools/capture/report_log.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -71,6 +72,8 @@ Trace read_report_log(const std::string& text, const std::string& file) {
   long overlong = 0;
   std::size_t first_overlong_line = 0;
   std::vector<char> sample_has_gyro;
+  std::vector<char> same_as_previous;     // per sample: its bytes are the previous data report's
+  std::vector<double> since_previous_s;   // per sample: host time since the previous data report
   std::optional<CalibrationBlock> device_block;  // the first 0x21 calibration reply, applied after the scan
   long device_block_line = 0;
   for (const TextLine& line : split_capture_lines(text, file)) {
@@ -150,7 +153,11 @@ Trace read_report_log(const std::string& text, const std::string& file) {
         if (r.gyro_raw[i] == 0 || r.gyro_raw[i] == 0x3fff) x.flags |= kGyroSaturated;
       }
     }
-    if (have_time && bytes == previous && *time - previous_time < 0.5 / t.nominal_rate_hz) x.flags |= kRepeated;
+    // A repeat (the same report logged twice) is decided after the scan, against the file's own
+    // report interval: against the nominal 100 Hz, identical reports of a remote still at 200 Hz
+    // were taken for repeats.
+    same_as_previous.push_back(have_time && bytes == previous);
+    since_previous_s.push_back(have_time ? *time - previous_time : 0.0);
     previous = bytes;
     previous_time = *time;
     have_time = true;
@@ -158,6 +165,21 @@ Trace read_report_log(const std::string& text, const std::string& file) {
     sample_has_gyro.push_back(r.has_motionplus);
   }
   if (t.samples.empty()) throw_input_error(file, 0, "", "no accelerometer reports (0x31, 0x33, 0x35, 0x37) found");
+  {
+    // Repeats: the same bytes as the previous report less than half the file's typical interval
+    // later (the median over reports that differ from their predecessor, which no repeat is);
+    // half the nominal period where there is no such interval.
+    std::vector<double> intervals;
+    for (std::size_t k = 0; k < t.samples.size(); ++k)
+      if (!same_as_previous[k] && since_previous_s[k] > 0) intervals.push_back(since_previous_s[k]);
+    double typical_s = 1.0 / t.nominal_rate_hz;
+    if (!intervals.empty()) {
+      std::nth_element(intervals.begin(), intervals.begin() + intervals.size() / 2, intervals.end());
+      typical_s = intervals[intervals.size() / 2];
+    }
+    for (std::size_t k = 0; k < t.samples.size(); ++k)
+      if (same_as_previous[k] && since_previous_s[k] < 0.5 * typical_s) t.samples[k].flags |= kRepeated;
+  }
   if (device_block) {
     CaptureCalibration& c = t.calibration;
     if (c.accel_from_header) {
