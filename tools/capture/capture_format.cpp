@@ -1,8 +1,10 @@
 #include "tools/capture/capture_format.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "tools/capture/capture_header.hpp"
 #include "tools/capture/capture_text.hpp"
@@ -69,16 +71,26 @@ std::string detect(const std::vector<TextLine>& lines) {
   return "";
 }
 
-// Times within kMaxDuration_s of the first sample (a file may stamp them in Unix time), readings
-// within bounds no sensor reaches: the first sample outside is named by its line and quantity.
+// Times within kMaxDuration_s of the samples' median time (a file may stamp them in Unix time; the
+// median, not the first, so that an absurd first time is the one named), readings within bounds
+// no sensor reaches: the first sample outside is named by its line and quantity.
 void check_sane(const Trace& t) {
-  constexpr double kMaxDuration_s = 1e6, kMaxAccel_g = 1e3, kMaxRate_deg_s = 1e6;
-  const double t0 = t.samples.empty() ? 0.0 : t.samples.front().t_s;
+  constexpr double kMaxDuration_s = kMaxCaptureTimeSpread_s, kMaxAccel_g = 1e3, kMaxRate_deg_s = 1e6;
+  double t0 = 0;
+  {
+    std::vector<double> times;
+    for (const TraceSample& x : t.samples)
+      if (std::isfinite(x.t_s)) times.push_back(x.t_s);
+    if (!times.empty()) {
+      std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
+      t0 = times[times.size() / 2];
+    }
+  }
   for (std::size_t k = 0; k < t.samples.size(); ++k) {
     const TraceSample& x = t.samples[k];
     char what[200] = "";
     if (!std::isfinite(x.t_s) || !(std::abs(x.t_s - t0) <= kMaxDuration_s))
-      std::snprintf(what, sizeof what, "time %.15g s is not within %g s of the first sample's (%.15g s)", x.t_s,
+      std::snprintf(what, sizeof what, "time %.15g s is not within %g s of the samples' median time (%.15g s)", x.t_s,
                     kMaxDuration_s, t0);
     else if (!x.accel_g.allFinite() || !(x.accel_g.cwiseAbs().maxCoeff() <= kMaxAccel_g))
       std::snprintf(what, sizeof what, "acceleration (%.6g, %.6g, %.6g) g exceeds %g g on an axis", x.accel_g.x(),

@@ -93,7 +93,15 @@ BOOST_AUTO_TEST_CASE(a_cut_short_last_line_is_a_warning_not_an_error) {
 }
 
 BOOST_AUTO_TEST_CASE(time_going_backwards_names_the_line) {
-  BOOST_TEST(contains(error_of("10.0 31 00 00 80 80 9a\n9.9 31 00 00 80 80 9a\n"), "bad.cap:2"));
+  // Both lines are named: an absurd time on the earlier line shows as the later one's fault.
+  BOOST_TEST(contains(error_of("10.0 31 00 00 80 80 9a\n9.9 31 00 00 80 80 9a\n"),
+                      "bad.cap:2: time goes backwards (9.9 s after 10 s on line 1)"));
+  BOOST_TEST(contains(error_of(kCsvHead + "1,0,0,1,0,0,0,0,0,0,0,-\n0.5,0,0,1,0,0,0,0,0,0,0,-\n"), "(0.5 s after 1 s on line 3)"));
+  // An absurd first time is the one named, with its value as written (the check is against the
+  // samples' median, not the first sample).
+  BOOST_TEST(contains(error_of("-1e300 31 00 00 80 80 9a\n10.0 31 00 00 80 80 9a\n10.01 31 00 00 80 80 9b\n"),
+                      "bad.cap:1: time -1e+300 s is not within"),
+             error_of("-1e300 31 00 00 80 80 9a\n10.0 31 00 00 80 80 9a\n10.01 31 00 00 80 80 9b\n"));
   BOOST_TEST(contains(error_of(kCsvHead + "1,0,0,1,0,0,0,0,0,0,0,-\n0.5,0,0,1,0,0,0,0,0,0,0,-\n"), "backwards"));
   BOOST_TEST(contains(error_of("N: Nintendo Wii Remote Accelerometer\nE: 1.0 0003 0003 1\nE: 0.5 0003 0003 2\n"), "bad.cap:3"));
   // A device's second block goes on from its first (main: each block started a clock of its own,
@@ -102,7 +110,7 @@ BOOST_AUTO_TEST_CASE(time_going_backwards_names_the_line) {
   const std::string accel_at = "N: Nintendo Wii Remote Accelerometer\nE: 1.0 0003 0003 1\nE: 1.0 0000 0000 0\n";
   BOOST_TEST(contains(error_of(accel_at + "N: Nintendo Wii Remote Motion Plus\nE: 0.5 0003 0003 9\n" + accel_at.substr(0, 37) +
                                "E: 0.9 0003 0003 2\n"),
-                      "bad.cap:7: time goes backwards (0.9 s after 1 s, the last event of this device's earlier block)"));
+                      "bad.cap:7: time goes backwards (0.9 s after 1 s on line 3, the last event of this device's earlier block)"));
   const Trace split = parse_capture(accel_at + "N: Nintendo Wii Remote Motion Plus\nE: 0.5 0003 0003 9\nE: 0.5 0000 0000 0\n" +
                                         accel_at.substr(0, 37) + "E: 1.5 0003 0003 2\nE: 1.5 0000 0000 0\n",
                                     "split.evemu");

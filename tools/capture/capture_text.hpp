@@ -13,6 +13,10 @@
 
 namespace stoneskip {
 
+// A capture's times lie within this of their median (a file may stamp them in Unix time; a time
+// beyond is refused, naming its line: tools/capture/capture_format.cpp).
+constexpr double kMaxCaptureTimeSpread_s = 1e6;
+
 struct TextLine {
   long number = 0;         // 1-based
   std::string_view text;   // without the newline and a trailing '\r'

@@ -51,7 +51,9 @@ Trace read_evemu(const std::string& text, const std::string& file) {
   // Each device's last event time: its events go forward in time, also across a second block of
   // the same device (a recording split in two); the other devices' blocks have their own clocks' order.
   std::array<double, 5> last_time_of{-1e300, -1e300, -1e300, -1e300, -1e300};
+  std::array<long, 5> last_line_of{0, 0, 0, 0, 0};
   double last_time = -1e300;
+  long last_time_line = 0;
   bool block_started = false;  // an event seen since the last 'N:' line
   std::vector<Frame> accel_frames, gyro_frames;
   std::vector<KeyEvent> keys;
@@ -70,6 +72,7 @@ Trace read_evemu(const std::string& text, const std::string& file) {
       if (device == Device::other)
         t.warnings.push_back(input_location(file, line.number, "") + ": device '" + std::string(rest) + "' ignored");
       last_time = device == Device::other ? -1e300 : last_time_of[static_cast<std::size_t>(device)];
+      last_time_line = device == Device::other ? 0 : last_line_of[static_cast<std::size_t>(device)];
       accel_changed = gyro_changed = false;
       block_started = false;
       continue;
@@ -93,16 +96,22 @@ Trace read_evemu(const std::string& text, const std::string& file) {
     if (*time < last_time) {
       char what[200];
       if (block_started)
-        std::snprintf(what, sizeof what, "time goes backwards (%.15g s after %.15g s)", *time, last_time);
+        std::snprintf(what, sizeof what, "time goes backwards (%.15g s after %.15g s on line %ld)", *time, last_time,
+                      last_time_line);
       else  // a second block of a device already recorded (the same recording twice?)
         std::snprintf(what, sizeof what,
-                      "time goes backwards (%.15g s after %.15g s, the last event of this device's earlier block)", *time,
-                      last_time);
+                      "time goes backwards (%.15g s after %.15g s on line %ld, the last event of this device's earlier "
+                      "block)",
+                      *time, last_time, last_time_line);
       throw_input_error(file, line.number, "", what);
     }
     block_started = true;
     last_time = *time;
-    if (device != Device::other) last_time_of[static_cast<std::size_t>(device)] = *time;
+    last_time_line = line.number;
+    if (device != Device::other) {
+      last_time_of[static_cast<std::size_t>(device)] = *time;
+      last_line_of[static_cast<std::size_t>(device)] = line.number;
+    }
     if (device == Device::other) continue;
     if (*type == kEvAbs && (device == Device::accel || device == Device::gyro)) {
       const int axis = *code == kAbsRx ? 0 : *code == kAbsRy ? 1 : *code == kAbsRz ? 2 : -1;

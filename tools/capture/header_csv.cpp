@@ -447,8 +447,9 @@ Trace read_header_csv(const std::string& text, const std::string& file, const He
                             ": the 32-bit tick counter wrapped; later times unwrapped (+2^32)");
           continue;
         }
-        char what[160];
-        std::snprintf(what, sizeof what, "time goes backwards (%.15g after %.15g)", stamp, previous_stamp);
+        char what[200];  // both lines: an absurd stamp on the earlier one shows here as the later's fault
+        std::snprintf(what, sizeof what, "time goes backwards (%.15g after %.15g on line %ld)", stamp, previous_stamp,
+                      long(kept[i - 1]->line));
         throw_input_error(file, kept[i]->line, tc.header, what);
       }
     }

@@ -1,6 +1,7 @@
 #include "tools/capture/report_log.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -63,7 +64,8 @@ Trace read_report_log(const std::string& text, const std::string& file) {
   t.source = file;
   t.format = "report_log";
   std::vector<std::uint8_t> bytes, previous;
-  double previous_time = 0, first_time = 0;
+  double previous_time = 0;
+  long previous_time_line = 0;
   bool have_time = false;
   long without_accel = 0, without_gyro = 0;
   // Reports longer than any the remote sends (22 bytes with the id; a logger may pad shorter ones
@@ -95,8 +97,9 @@ Trace read_report_log(const std::string& text, const std::string& file) {
       continue;
     }
     if (have_time && *time < previous_time) {
-      char what[128];
-      std::snprintf(what, sizeof what, "time goes backwards (%.15g s after %.15g s)", *time, previous_time);
+      char what[200];  // both lines: an absurd time on the earlier one shows here as the later's fault
+      std::snprintf(what, sizeof what, "time goes backwards (%.15g s after %.15g s on line %ld)", *time, previous_time,
+                    previous_time_line);
       throw_input_error(file, line.number, "", what);
     }
     const DecodedReport r = decode_report(bytes.data(), bytes.size());
@@ -139,10 +142,9 @@ Trace read_report_log(const std::string& text, const std::string& file) {
       ++without_accel;
       continue;
     }
-    if (!have_time) first_time = *time;
     TraceSample x;
     x.line = line.number;
-    x.t_s = *time - first_time;
+    x.t_s = *time;  // from the first sample's once all are read (below)
     x.buttons = r.buttons;
     for (int i = 0; i < 3; ++i) x.accel_g[i] = r.accel_raw[i];  // calibrated below (the block may come later)
     if (r.has_motionplus) {
@@ -160,11 +162,25 @@ Trace read_report_log(const std::string& text, const std::string& file) {
     since_previous_s.push_back(have_time ? *time - previous_time : 0.0);
     previous = bytes;
     previous_time = *time;
+    previous_time_line = line.number;
     have_time = true;
     t.samples.push_back(x);
     sample_has_gyro.push_back(r.has_motionplus);
   }
   if (t.samples.empty()) throw_input_error(file, 0, "", "no accelerometer reports (0x31, 0x33, 0x35, 0x37) found");
+  {
+    // Times from the first sample's (host clocks stamp in Unix time). Not where a time is absurd
+    // (beyond what the reader's sanity check allows around the median): the raw times then go to
+    // that check, which names the line with the value as written.
+    std::vector<double> raw;
+    for (const TraceSample& x : t.samples) raw.push_back(x.t_s);
+    std::nth_element(raw.begin(), raw.begin() + raw.size() / 2, raw.end());
+    const double median = raw[raw.size() / 2], first = t.samples.front().t_s;
+    bool sane = std::isfinite(median);
+    for (const TraceSample& x : t.samples) sane = sane && std::abs(x.t_s - median) <= kMaxCaptureTimeSpread_s;
+    if (sane)
+      for (TraceSample& x : t.samples) x.t_s -= first;
+  }
   {
     // Repeats: the same bytes as the previous report less than half the file's typical interval
     // later (the median over reports that differ from their predecessor, which no repeat is);

@@ -105,8 +105,9 @@ Trace read_trace_csv(const std::string& text, const std::string& file) {
       continue;
     }
     if (!t.samples.empty() && x.t_s < t.samples.back().t_s) {
-      char what[128];
-      std::snprintf(what, sizeof what, "time goes backwards (%.15g s after %.15g s)", x.t_s, t.samples.back().t_s);
+      char what[200];  // both lines: an absurd time on the earlier one shows here as the later's fault
+      std::snprintf(what, sizeof what, "time goes backwards (%.15g s after %.15g s on line %ld)", x.t_s,
+                    t.samples.back().t_s, long(t.samples.back().line));
       throw_input_error(file, line.number, "t_s", what);
     }
     t.samples.push_back(x);
