@@ -111,11 +111,19 @@ void add_read(CLI::App* cmd, CaptureArgs& a) {
 // reading one takes about 7 times its size in memory (1.44 GB for a 218 MB, 3-million-row trace):
 // a larger file is refused before it is read (cases/README.md, Limits).
 constexpr double kMaxCaptureBytes = 64e6;
+constexpr double kCaptureReadMemoryPerByte = 7;  // the "about 7 times" above
 
 void check_capture_size(const std::string& file, const ResourceLimits& limits) {
   std::error_code ec;
   const auto bytes = fs::file_size(file, ec);
-  if (ec || limits.allow_large) return;  // not a regular file: the reader says what it is
+  if (ec) return;  // not a regular file: the reader says what it is
+  // The memory the reading takes (--max-memory-gb), whether or not --allow-large lifts the size.
+  ResourceEstimate e;
+  e.add_memory(kCaptureReadMemoryPerByte * static_cast<double>(bytes),
+               "reading the capture: about 7 times its " +
+                   human_bytes(static_cast<double>(bytes)));
+  enforce_limits(e, limits, file);
+  if (limits.allow_large) return;
   if (static_cast<double>(bytes) > kMaxCaptureBytes)
     throw_input_error(file, 0, "", "is " + human_bytes(static_cast<double>(bytes)) + ", above the " + human_bytes(kMaxCaptureBytes) +
                                        " a capture may be (hours of reports; cases/README.md, Limits); --allow-large lifts it");
@@ -806,6 +814,8 @@ void add_capture(CLI::App& app) {
   c->add_option("--out", a->out, "Trace CSV to write")->required();
   add_read(c, *a);
   add_limit_options(c, a->limits);
+  // Here the only work is reading: --allow-large lifts the size a capture may be.
+  c->get_option("--allow-large")->description("Read a capture larger than the 64 MB limit (cases/README.md, Limits)");
   c->callback([a] { convert(*a); });
 
   auto* cols = cmd->add_subcommand("columns", "List the column names the csv reader recognises, with their units");

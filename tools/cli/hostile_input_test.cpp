@@ -392,6 +392,12 @@ BOOST_AUTO_TEST_CASE(items_14_15_16_a_capture_with_an_impossible_mounting_or_ens
     fs::resize_file(s.dir / "long.csv", 65'000'000);
     expect_refused(run_apart("capture convert " + (s.dir / "long.csv").string() + " --out " + (s.dir / "c.csv").string()),
                    {"long.csv: is 65 MB, above the 64 MB a capture may be", "--allow-large"});
+    // --allow-large lifts the size, not --max-memory-gb: reading takes about 7 times the file
+    // (455 MB here), above 0.1 GB. convert and validate --no-simulate ignored the memory limit.
+    for (const std::string& cmd : {"capture convert " + (s.dir / "long.csv").string() + " --out " + (s.dir / "c.csv").string(),
+                                  "capture validate " + (s.dir / "long.csv").string() + " --no-simulate"})
+      expect_refused(run_apart(cmd + " --allow-large --max-memory-gb 0.1"),
+                     {"long.csv: needs about 455 MB of memory (reading the capture", "--max-memory-gb raises it"});
     fs::remove(s.dir / "long.csv");
   }
   // A failed solve writes no .h5 (reports/README.md: a failed run leaves none).
