@@ -50,10 +50,16 @@ std::array<int, 3> signs(const std::string& value, const std::string& file, long
   return s;
 }
 
-double positive(const std::string& value, const std::string& file, long line, const std::string& key) {
+// A number in [low, high]; `why` says where the bounds come from.
+double bounded(const std::string& value, double low, double high, const char* why, const std::string& file, long line,
+               const std::string& key) {
   const auto x = parse_real(value);
   if (!x) throw_input_error(file, line, key, "expected a positive number, got '" + value + "'");
-  if (*x <= 0 || *x > 1e6) throw_input_error(file, line, key, "must be in (0, 1e6] (got " + value + ")");
+  if (!(*x >= low && *x <= high)) {
+    char b[96];
+    std::snprintf(b, sizeof b, "must be in [%g, %g] (got ", low, high);
+    throw_input_error(file, line, key, b + value + "): " + why);
+  }
   return *x;
 }
 
@@ -91,7 +97,7 @@ namespace {
 bool apply_header_value(Trace& t, const std::string& key, const std::string& value, const std::string& file, long line) {
   CaptureCalibration& c = t.calibration;
   if (key == "nominal_rate_hz") {
-    t.nominal_rate_hz = positive(value, file, line, key);
+    t.nominal_rate_hz = bounded(value, 1, 1000, "a Wii Remote reports at about 100 Hz (200 at most)", file, line, key);
     return true;
   }
   if (key.rfind("mounting.", 0) == 0) {
@@ -149,9 +155,13 @@ bool apply_header_value(Trace& t, const std::string& key, const std::string& val
   } else if (k == "gyro_zero_counts") {
     c.gyro_zero_counts = counts(value, file, line, key, 14);
   } else if (k == "gyro_slow_counts_per_deg_s") {
-    c.gyro_slow_counts_per_deg_s = positive(value, file, line, key);
+    c.gyro_slow_counts_per_deg_s =
+        bounded(value, 2, 200, "10 times either way of the MotionPlus's 20 (a slow range of 41 to 4096 deg/s)", file, line, key);
   } else if (k == "gyro_fast_factor") {
-    c.gyro_fast_factor = positive(value, file, line, key);
+    c.gyro_fast_factor = bounded(value, 1, 50,
+                                 "fast mode is coarser than slow (2000/440 on the MotionPlus, Linux hid-wiimote), "
+                                 "at most 10 times that",
+                                 file, line, key);
   } else if (k == "gyro_sign") {
     c.gyro_sign = signs(value, file, line, key);
   } else {

@@ -132,7 +132,18 @@ BOOST_AUTO_TEST_CASE(a_misspelt_header_key_or_another_trace_version_is_refused_a
   BOOST_TEST(contains(error_of("# calibraton.block: 80 80 80 00 9a 9a 9a 00 00 c5\n" + log),
                       "a misspelling of 'calibration.block'?"));
   // A rate out of range is said to be so (main: "expected a positive number, got '1e7'").
-  BOOST_TEST(contains(error_of("# nominal_rate_hz: 1e7\n" + log), "bad.cap:1: nominal_rate_hz: must be in (0, 1e6] (got 1e7)"));
+  BOOST_TEST(contains(error_of("# nominal_rate_hz: 1e7\n" + log), "bad.cap:1: nominal_rate_hz: must be in [1, 1000] (got 1e7)"));
+  // Device settings no remote has: each bound with its reason (capture_header.cpp). Oracle: the
+  // input rules; 1e6 counts per deg/s made every rate about 0 and the capture merely "usable with
+  // caveats", a fast factor of 1e-9 made fast mode finer than slow.
+  BOOST_TEST(contains(error_of("# nominal_rate_hz: 1e-300\n" + log), "nominal_rate_hz: must be in [1, 1000]"));
+  BOOST_TEST(contains(error_of("# calibration.gyro_slow_counts_per_deg_s: 1e6\n" + log),
+                      "bad.cap:1: calibration.gyro_slow_counts_per_deg_s: must be in [2, 200] (got 1e6)"));
+  BOOST_TEST(contains(error_of("# calibration.gyro_fast_factor: 1e-9\n" + log),
+                      "calibration.gyro_fast_factor: must be in [1, 50] (got 1e-9): fast mode is coarser than slow"));
+  BOOST_TEST(parse_capture("# calibration.gyro_slow_counts_per_deg_s: 13.7\n# calibration.gyro_fast_factor: 4\n# nominal_rate_hz: 200\n" + log,
+                           "ok.log")
+                 .calibration.gyro_slow_counts_per_deg_s == 13.7);
   const Trace noted = parse_capture("# note: thrown at the lake\n# rate: fast\n" + log, "noted.log");
   BOOST_TEST(noted.samples.size() == 2u);
 }
