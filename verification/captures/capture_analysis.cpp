@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "model/stone/throw.hpp"
@@ -22,6 +23,16 @@ bool CaptureOptions::is_valid(std::string* why) const {
     return false;
   };
   if (!(saturation_g > 0 && saturation_g < 1000)) return fail("saturation_g must be in (0, 1000) g");
+  // A still remote reads up to 1 + still_accel_tol_g on its vertical axis: a clip level at or below
+  // that marks the still part itself clipped, and the capture then "has no still part".
+  if (still_accel_tol_g > 0 && still_accel_tol_g < 1 && !(saturation_g > 1 + still_accel_tol_g)) {
+    char b[200];
+    std::snprintf(b, sizeof b,
+                  "saturation_g must be above %g g, what a still remote may read (1 g + the still part's tolerance "
+                  "%g g): every still sample would be clipped",
+                  1 + still_accel_tol_g, still_accel_tol_g);
+    return fail(b);
+  }
   if (!(max_accel_g >= saturation_g && max_accel_g < 1000)) return fail("max_accel_g must be at least saturation_g and below 1000 g");
   if (!(max_rate_deg_s >= 100 && max_rate_deg_s < 1e5)) return fail("max_rate_deg_s must be in [100, 1e5) deg/s");
   if (!(gravity_m_s2 > 0 && gravity_m_s2 < 100)) return fail("gravity_m_s2 must be in (0, 100)");

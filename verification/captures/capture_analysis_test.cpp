@@ -266,3 +266,21 @@ BOOST_AUTO_TEST_CASE(a_throw_no_human_could_make_is_unusable_naming_the_quantity
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_SUITE(capture_options)
+
+BOOST_AUTO_TEST_CASE(a_clip_level_a_still_remote_reaches_is_refused) {
+  // --saturation-g 0.5 marked every sample clipped and the capture "had no still part", a note
+  // calling the clipped samples "outside the swing". Oracle: the still part's own rule, |a| within
+  // still_accel_tol_g of 1 g, so a clip level must lie above 1 + still_accel_tol_g.
+  CaptureOptions o;
+  std::string why;
+  BOOST_TEST(o.is_valid(&why), why);  // the defaults
+  o.saturation_g = 1 + o.still_accel_tol_g;
+  BOOST_TEST(!o.is_valid(&why));
+  BOOST_TEST(why.find("saturation_g must be above") != std::string::npos, why);
+  o.saturation_g = 1 + 2 * o.still_accel_tol_g;
+  BOOST_TEST(o.is_valid(&why), why);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
