@@ -173,9 +173,8 @@ bool apply_header_value(Trace& t, const std::string& key, const std::string& val
       block_key || (count_key && t.header_key_lines.count(k == "accel_zero_counts" ? "calibration.accel_one_g_counts"
                                                                                    : "calibration.accel_zero_counts"));
   if (both_counts)
-    for (int i = 0; i < 3; ++i)
-      if (std::abs(c.accel_one_g_counts[i] - c.accel_zero_counts[i]) < 1)
-        throw_input_error(file, line, key, "one-g and zero-g counts must differ");
+    if (const std::string problem = one_g_spacing_problem(c.accel_zero_counts, c.accel_one_g_counts); !problem.empty())
+      throw_input_error(file, line, key, problem);
   return true;
 }
 

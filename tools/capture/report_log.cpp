@@ -119,9 +119,10 @@ Trace read_report_log(const std::string& text, const std::string& file) {
     if (r.kind == ReportKind::memory_read) {
       if (r.read_error == 0 && (r.read_address == 0x0016 || r.read_address == 0x0020) && r.read_data.size() >= 10) {
         const auto block = decode_calibration_block(r.read_data.data(), r.read_data.size());
-        for (int i = 0; i < 3; ++i)
-          if (block->one_g_counts[i] == block->zero_counts[i])
-            throw_input_error(file, line.number, "", "calibration block has one-g equal to zero-g");
+        const std::array<double, 3> zero{double(block->zero_counts[0]), double(block->zero_counts[1]), double(block->zero_counts[2])},
+            one{double(block->one_g_counts[0]), double(block->one_g_counts[1]), double(block->one_g_counts[2])};
+        if (const std::string problem = one_g_spacing_problem(zero, one); !problem.empty())
+          throw_input_error(file, line.number, "", "calibration block: " + problem);
         // One remote has one calibration: the same block read again is fine, a different one
         // (two remotes in one log, or a corrupt read) cannot be applied to every sample.
         if (device_block && !same_counts(*device_block, *block))

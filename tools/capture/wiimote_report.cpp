@@ -101,6 +101,20 @@ DecodedReport decode_report(const std::uint8_t* bytes, std::size_t size) {
   return r;
 }
 
+std::string one_g_spacing_problem(const std::array<double, 3>& zero, const std::array<double, 3>& one) {
+  for (int i = 0; i < 3; ++i) {
+    const double s = std::abs(one[i] - zero[i]);
+    if (s >= kMinOneGCounts && s <= kMaxOneGCounts) continue;
+    char b[240];
+    std::snprintf(b, sizeof b,
+                  "one-g and zero-g counts are %g apart on %c (zero-g %g, one-g %g): a remote's 1 g is %g to %g "
+                  "counts (its 10 bits span about ±3.5-4.6 g)",
+                  s, "XYZ"[i], zero[i], one[i], kMinOneGCounts, kMaxOneGCounts);
+    return b;
+  }
+  return "";
+}
+
 std::optional<CalibrationBlock> decode_calibration_block(const std::uint8_t* b, std::size_t size) {
   if (size < 10) return std::nullopt;
   CalibrationBlock c;
