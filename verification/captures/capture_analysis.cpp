@@ -93,6 +93,11 @@ Interval interval_of(const ReleaseKinematics& nominal, const std::vector<Release
   return r;
 }
 
+// An angle (degrees, in (−180, 180]) taken to the turn nearest `near`: an attack angle near ±180°
+// (a remote face down) spreads across the cut, and its interval is then read around the nominal
+// value ([−180.4, −179.5], not [−179.98, 179.94], which holds nearly every angle).
+double near_angle_deg(double angle, double near) { return near + std::remainder(angle - near, 360.0); }
+
 // Step 3: the release from the action button (or the file's end).
 void locate_release(CaptureAnalysis& a, const ChainInput& in, const Trace& trace, unsigned button) {
   const std::size_t n = in.t_s.size();
@@ -184,7 +189,7 @@ void estimate_throw(CaptureAnalysis& a, const ChainInput& in, const CaptureOptio
   const ReleaseKinematics& nom = a.nominal;
   using R = const ReleaseKinematics&;
   a.speed_m_s = interval_of(nom, e, [](R r) { return r.speed_m_s; });
-  a.attack_angle_deg = interval_of(nom, e, [](R r) { return r.attack_angle_deg; });
+  a.attack_angle_deg = interval_of(nom, e, [&nom](R r) { return near_angle_deg(r.attack_angle_deg, nom.attack_angle_deg); });
   a.path_angle_deg = interval_of(nom, e, [](R r) { return r.path_angle_deg; });
   a.spin_rev_s = interval_of(nom, e, [](R r) { return r.spin_rev_s; });
   a.height_m = interval_of(nom, e, [](R r) { return r.height_m; });
@@ -219,7 +224,8 @@ void estimate_throw(CaptureAnalysis& a, const ChainInput& in, const CaptureOptio
       if (!(r->accel_speed_m_s > 0)) continue;  // no direction
       const AttitudeAngles g = accel_attitude(*r);
       widen(a.path_angle_deg, g.path_angle_deg, g.path_angle_deg);
-      widen(a.attack_angle_deg, g.attack_angle_deg, g.attack_angle_deg);
+      const double attack = near_angle_deg(g.attack_angle_deg, nom.attack_angle_deg);
+      widen(a.attack_angle_deg, attack, attack);
     }
     widen(a.rise_m, a.accel_lower.measured.rise_m, a.accel_upper.measured.rise_m);
     widen(a.measured_speed_m_s, a.accel_speed_m_s.low, a.accel_speed_m_s.high);
