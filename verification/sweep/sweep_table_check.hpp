@@ -5,7 +5,9 @@
 // values are the design's point i; each solver's outcome is a code of kOutcomeCodes; bounces and
 // contacts are whole numbers, 0 ≤ bounces ≤ contacts (NaN where the throw did not run); and with
 // both solvers the bounce and contact disagreements are real-time minus reference, NaN where either
-// solve failed (or, in tables written before that rule, the difference).
+// solve failed (or, in tables written before that rule, the difference); each solver's
+// bounces_before_short_flight a count of at most its bounces, NaN exactly where
+// shortest_resolved_flight_s is (tables written before those columns are read without them).
 #include <string>
 
 #include "tools/io/hdf5_file.hpp"

@@ -52,7 +52,8 @@ Table written(const SweepDesign& d, SweepSolvers solvers) {
     const ThrowResult rt = result(static_cast<int>(i % 3), static_cast<int>(i % 3) + 1), ref = result(1, 2);
     const bool realtime = solvers != SweepSolvers::reference, reference = solvers != SweepSolvers::realtime;
     t.add_row(i == 4 ? rec.not_run_row(i, d.point(i), {})
-                     : rec.row(i, d.point(i), realtime ? &rt : nullptr, reference ? &ref : nullptr, {}, NAN, notes));
+                     : rec.row(i, d.point(i), realtime ? &rt : nullptr, reference ? &ref : nullptr, {},
+                               i % 2 == 0 ? 0.03 : NAN, notes));  // τ_δ assessed on even throws
   }
   return t;
 }
@@ -141,6 +142,41 @@ BOOST_AUTO_TEST_CASE(columns_other_than_the_records_are_refused) {
              "f.h5: throws: column 3 is 'realtime_bounce' where a sweep writes 'realtime_bounces'");
   // A table of one solver read as both.
   BOOST_TEST(refusal(d, SweepSolvers::both, written(d, SweepSolvers::realtime)).find("f.h5: throws: has ") == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(the_short_flight_counts_are_checked_and_an_older_table_without_them_is_read) {
+  // Oracle: the record's rules (throw_record.hpp): a subset of the bounces, NaN exactly where
+  // shortest_resolved_flight_s is NaN; a table written before those columns existed is read as it
+  // is (sweep-plot and --resume refused every such file).
+  const SweepDesign d = grid_design();
+  for (const SweepSolvers s : {SweepSolvers::realtime, SweepSolvers::both}) {
+    Table t = written(d, s);
+    BOOST_TEST(refusal(d, s, t).empty(), refusal(d, s, t));
+    Table more = t;
+    set(more, 2, "realtime_bounces_before_short_flight", 3);  // throw 2 has 2 bounces
+    BOOST_TEST(refusal(d, s, more).find("throws.realtime_bounces_before_short_flight: throw 2: 3 is not a count of at most the 2 bounces") !=
+                   std::string::npos,
+               refusal(d, s, more));
+    Table unassessed = t;
+    set(unassessed, 0, "shortest_resolved_flight_s", NAN);
+    BOOST_TEST(refusal(d, s, unassessed).find("throw 0: 0 where shortest_resolved_flight_s is") != std::string::npos,
+               refusal(d, s, unassessed));
+    // The older layout: the same table without the three columns.
+    std::vector<std::string> keys;
+    for (const auto& a : d.axes) keys.push_back(a.key);
+    const std::vector<std::string> older = ThrowRecord(keys, s).columns_without_short_flights();
+    Table old;
+    old.columns = older;
+    for (std::size_t i = 0; i < t.rows(); ++i) {
+      std::vector<double> row;
+      for (const auto& c : older)
+        for (std::size_t k = 0; k < t.columns.size(); ++k)
+          if (t.columns[k] == c) row.push_back(t.values[i * t.columns.size() + k]);
+      old.add_row(row);
+    }
+    BOOST_TEST(old.columns.size() + (s == SweepSolvers::both ? 3u : 2u) == t.columns.size());
+    BOOST_TEST(refusal(d, s, old).empty(), refusal(d, s, old));
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

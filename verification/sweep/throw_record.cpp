@@ -135,6 +135,13 @@ ThrowRecord::ThrowRecord(std::vector<std::string> varied_keys, SweepSolvers solv
   columns_.push_back("cost_start_unix_s");
 }
 
+std::vector<std::string> ThrowRecord::columns_without_short_flights() const {
+  std::vector<std::string> c;
+  for (const auto& name : columns_)
+    if (name != "shortest_resolved_flight_s" && name.find("_bounces_before_short_flight") == std::string::npos) c.push_back(name);
+  return c;
+}
+
 bool ThrowRecord::is_cost_column(std::size_t c) const { return columns_.at(c).rfind(kCostPrefix, 0) == 0; }
 
 std::vector<double> ThrowRecord::row(std::uint64_t throw_index, const std::vector<double>& point, const ThrowResult* rt,

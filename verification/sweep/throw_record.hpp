@@ -73,6 +73,9 @@ class ThrowRecord {
  public:
   ThrowRecord(std::vector<std::string> varied_keys, SweepSolvers solvers);
   const std::vector<std::string>& columns() const { return columns_; }
+  // The columns of a table written before the short-flight columns were added (5 December 2026):
+  // columns() without <solver>_bounces_before_short_flight and shortest_resolved_flight_s.
+  std::vector<std::string> columns_without_short_flights() const;
   std::size_t width() const { return columns_.size(); }
   bool is_cost_column(std::size_t c) const;
 
