@@ -219,6 +219,53 @@ BOOST_AUTO_TEST_CASE(an_evemu_report_whose_accelerometer_values_repeat_is_held_n
   BOOST_TEST(from_evemu.stats.gaps == from_log.stats.gaps);
 }
 
+BOOST_AUTO_TEST_CASE(an_evemu_accelerometer_that_stops_or_pauses_in_a_swing_is_not_held) {
+  // A report without an accelerometer frame is held only where the reading can have repeated:
+  // inside the accelerometer's recording, with the remote turned under 1° since (gravity moves
+  // under 2 counts). Oracle: the synthetic throw's own motion (a 7 rad/s swing turns about 4° a
+  // report near the release); the accelerometer device's events are cut from the text, so no
+  // sample may stand where it has none: after its recording stops, or inside a pause in the swing.
+  SyntheticThrow th;
+  th.swing_rate_rad_s = 7.0;
+  SyntheticTruth truth;
+  const std::string text = synthetic_evemu(th, {}, truth);
+  // The text with the accelerometer device's events at host times in [from, to) removed, and the
+  // host time of its first event (a trace's times count from it).
+  double first_accel_s = -1;
+  auto without_accel = [&](double from, double to) {
+    std::string out;
+    bool accel = false;
+    for (std::size_t at = 0; at < text.size();) {
+      const std::size_t end = text.find('\n', at);
+      const std::string line = text.substr(at, end - at + 1);
+      at = end + 1;
+      if (line.rfind("N: ", 0) == 0) accel = line.find("Accelerometer") != std::string::npos;
+      if (accel && line.rfind("E: ", 0) == 0) {
+        const double t = std::stod(line.substr(3));
+        if (first_accel_s < 0) first_accel_s = t;
+        if (t >= from && t < to) continue;
+      }
+      out += line;
+    }
+    return out;
+  };
+  const Trace full = parse_capture(without_accel(0, 0), "full.evemu");
+  // The generator's host clock: 12.5 s + the remote's time + latency (SyntheticSensor).
+  const double release_s = 12.5 + synthetic_release_time_s(th) + SyntheticSensor{}.latency_s;
+  const Trace stopped = parse_capture(without_accel(release_s - 0.1, 1e9), "stopped.evemu");
+  BOOST_TEST(first_accel_s + stopped.samples.back().t_s < release_s - 0.1 + 0.003,
+             "a sample at " << first_accel_s + stopped.samples.back().t_s << " s, the recording stopped at "
+                            << release_s - 0.1 << " s");
+  BOOST_TEST(full.samples.back().t_s > stopped.samples.back().t_s + 0.3);
+  const double from = release_s - 0.09, to = release_s - 0.03;
+  const Trace paused = parse_capture(without_accel(from, to), "paused.evemu");
+  int inside = 0;
+  for (const TraceSample& x : paused.samples)
+    if (first_accel_s + x.t_s > from + 0.003 && first_accel_s + x.t_s < to - 0.003) ++inside;
+  BOOST_TEST(inside == 0);
+  BOOST_TEST(analyse_timing(paused).stats.dropped_reports >= 4);  // the 60 ms pause: about 6 reports
+}
+
 BOOST_AUTO_TEST_CASE(identical_reports_of_a_still_remote_at_200_hz_are_not_repeats_but_repeats_are) {
   // A report log's repeat (the same report logged twice, flag R, dropped) was the same bytes less
   // than half the nominal 100 Hz period later: a noiseless still remote at 200 Hz lost 149 of its
