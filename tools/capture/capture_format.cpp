@@ -8,6 +8,7 @@
 
 #include "tools/capture/capture_header.hpp"
 #include "tools/capture/capture_text.hpp"
+#include "tools/capture/capture_times.hpp"
 #include "tools/capture/evemu_reader.hpp"
 #include "tools/capture/gesture_reader.hpp"
 #include "tools/capture/report_log.hpp"
@@ -76,16 +77,7 @@ std::string detect(const std::vector<TextLine>& lines) {
 // no sensor reaches: the first sample outside is named by its line and quantity.
 void check_sane(const Trace& t) {
   constexpr double kMaxDuration_s = kMaxCaptureTimeSpread_s, kMaxAccel_g = 1e3, kMaxRate_deg_s = 1e6;
-  double t0 = 0;
-  {
-    std::vector<double> times;
-    for (const TraceSample& x : t.samples)
-      if (std::isfinite(x.t_s)) times.push_back(x.t_s);
-    if (!times.empty()) {
-      std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
-      t0 = times[times.size() / 2];
-    }
-  }
+  const double t0 = median_time_s(t);
   for (std::size_t k = 0; k < t.samples.size(); ++k) {
     const TraceSample& x = t.samples[k];
     char what[200] = "";

@@ -102,6 +102,10 @@ BOOST_AUTO_TEST_CASE(time_going_backwards_names_the_line) {
   BOOST_TEST(contains(error_of("-1e300 31 00 00 80 80 9a\n10.0 31 00 00 80 80 9a\n10.01 31 00 00 80 80 9b\n"),
                       "bad.cap:1: time -1e+300 s is not within"),
              error_of("-1e300 31 00 00 80 80 9a\n10.0 31 00 00 80 80 9a\n10.01 31 00 00 80 80 9b\n"));
+  BOOST_TEST(contains(error_of("N: Nintendo Wii Remote Accelerometer\nE: -5e7 0003 0003 1\nE: -5e7 0000 0000 0\n"
+                               "E: 13.0 0003 0003 2\nE: 13.0 0000 0000 0\nE: 13.01 0003 0003 3\nE: 13.01 0000 0000 0\n"),
+                      "bad.cap:3: time -50000000 s is not within"),
+             "evemu, as written");
   BOOST_TEST(contains(error_of(kCsvHead + "1,0,0,1,0,0,0,0,0,0,0,-\n0.5,0,0,1,0,0,0,0,0,0,0,-\n"), "backwards"));
   BOOST_TEST(contains(error_of("N: Nintendo Wii Remote Accelerometer\nE: 1.0 0003 0003 1\nE: 0.5 0003 0003 2\n"), "bad.cap:3"));
   // A device's second block goes on from its first (main: each block started a clock of its own,

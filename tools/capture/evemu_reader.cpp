@@ -8,6 +8,7 @@
 
 #include "tools/capture/capture_header.hpp"
 #include "tools/capture/capture_text.hpp"
+#include "tools/capture/capture_times.hpp"
 #include "tools/io/input_error.hpp"
 
 namespace stoneskip {
@@ -213,13 +214,12 @@ Trace read_evemu(const std::string& text, const std::string& file) {
       accel_frames = std::move(merged);
     }
   }
-  const double t0 = accel_frames.front().t_s;
   std::size_t g = 0, k = 0;
   unsigned buttons = 0;
   for (const Frame& a : accel_frames) {
     TraceSample x;
     x.line = a.line;
-    x.t_s = a.t_s - t0;
+    x.t_s = a.t_s;  // counted from the first sample's below
     for (int i = 0; i < 3; ++i) x.accel_g[i] = c.accel_g_from_report(i, a.v[i] + 0x200);
     while (g + 1 < gyro_frames.size() && gyro_frames[g + 1].t_s <= a.t_s + kSameReport_s) ++g;
     if (t.has_gyro && gyro_frames[g].t_s <= a.t_s + kSameReport_s) {
@@ -237,6 +237,7 @@ Trace read_evemu(const std::string& text, const std::string& file) {
     x.buttons = buttons;
     t.samples.push_back(x);
   }
+  count_times_from_first(t);  // capture_times.hpp
   if (held_reports > 0)
     t.notes.push_back(std::to_string(held_reports) + " report" + (held_reports == 1 ? "" : "s") +
                       " with MotionPlus data but no accelerometer frame (evdev passes on only changed values): the "

@@ -8,6 +8,7 @@
 
 #include "tools/capture/capture_header.hpp"
 #include "tools/capture/capture_text.hpp"
+#include "tools/capture/capture_times.hpp"
 #include "tools/capture/wiimote_report.hpp"
 #include "tools/io/input_error.hpp"
 
@@ -169,19 +170,7 @@ Trace read_report_log(const std::string& text, const std::string& file) {
     sample_has_gyro.push_back(r.has_motionplus);
   }
   if (t.samples.empty()) throw_input_error(file, 0, "", "no accelerometer reports (0x31, 0x33, 0x35, 0x37) found");
-  {
-    // Times from the first sample's (host clocks stamp in Unix time). Not where a time is absurd
-    // (beyond what the reader's sanity check allows around the median): the raw times then go to
-    // that check, which names the line with the value as written.
-    std::vector<double> raw;
-    for (const TraceSample& x : t.samples) raw.push_back(x.t_s);
-    std::nth_element(raw.begin(), raw.begin() + raw.size() / 2, raw.end());
-    const double median = raw[raw.size() / 2], first = t.samples.front().t_s;
-    bool sane = std::isfinite(median);
-    for (const TraceSample& x : t.samples) sane = sane && std::abs(x.t_s - median) <= kMaxCaptureTimeSpread_s;
-    if (sane)
-      for (TraceSample& x : t.samples) x.t_s -= first;
-  }
+  count_times_from_first(t);  // capture_times.hpp
   {
     // Repeats: the same bytes as the previous report less than half the file's typical interval
     // later (the median over reports that differ from their predecessor, which no repeat is);
