@@ -113,20 +113,33 @@ void add_read(CLI::App* cmd, CaptureArgs& a) {
 constexpr double kMaxCaptureBytes = 64e6;
 constexpr double kCaptureReadMemoryPerByte = 7;  // the "about 7 times" above
 
+// The size first (--allow-large lifts it), then the memory the reading takes (--max-memory-gb,
+// whether or not the size was lifted): a file over both limits is told of the one to lift first.
 void check_capture_size(const std::string& file, const ResourceLimits& limits) {
   std::error_code ec;
   const auto bytes = fs::file_size(file, ec);
   if (ec) return;  // not a regular file: the reader says what it is
-  // The memory the reading takes (--max-memory-gb), whether or not --allow-large lifts the size.
-  ResourceEstimate e;
-  e.add_memory(kCaptureReadMemoryPerByte * static_cast<double>(bytes),
-               "reading the capture: about 7 times its " +
-                   human_bytes(static_cast<double>(bytes)));
-  enforce_limits(e, limits, file);
-  if (limits.allow_large) return;
-  if (static_cast<double>(bytes) > kMaxCaptureBytes)
+  if (!limits.allow_large && static_cast<double>(bytes) > kMaxCaptureBytes)
     throw_input_error(file, 0, "", "is " + human_bytes(static_cast<double>(bytes)) + ", above the " + human_bytes(kMaxCaptureBytes) +
                                        " a capture may be (hours of reports; cases/README.md, Limits); --allow-large lifts it");
+  ResourceEstimate e;
+  e.add_memory(kCaptureReadMemoryPerByte * static_cast<double>(bytes),
+               "reading the capture: about 7 times its " + human_bytes(static_cast<double>(bytes)));
+  enforce_limits(e, limits, file);
+}
+
+// validate holds every capture it reads at once: their reading together is held to --max-memory-gb.
+void check_captures_memory(const std::vector<std::string>& files, const ResourceLimits& limits) {
+  double bytes = 0;
+  for (const auto& f : files) {
+    std::error_code ec;
+    const auto b = fs::file_size(f, ec);
+    if (!ec) bytes += static_cast<double>(b);
+  }
+  ResourceEstimate e;
+  e.add_memory(kCaptureReadMemoryPerByte * bytes, "reading the " + std::to_string(files.size()) +
+                                                      " captures, held together: about 7 times their " + human_bytes(bytes));
+  enforce_limits(e, limits, "capture validate");
 }
 
 CaptureReadOptions read_options(const CaptureArgs& a) {
@@ -451,6 +464,7 @@ void validate(const CaptureArgs& a) {
                    std::to_string(a.members) + " members, each a throw of the case)");
     enforce_limits(e, a.limits, "--members");
   }
+  if (a.files.size() > 1) check_captures_memory(a.files, a.limits);
   // 1. Every file read first: a report holds every capture asked for, or there is none. Without
   //    --out one bad file does not stop the others; it is reported and the exit status says so.
   std::vector<std::optional<Trace>> traces;
@@ -794,6 +808,8 @@ void add_capture(CLI::App& app) {
   add_common(v, *a, true);
   add_case(v, *a, &a->validate_case);
   add_limit_options(v, a->limits);
+  v->get_option("--allow-large")->description("Run even when the estimated work (the ensembles' throws) exceeds the documented "
+                                               "limits, and read captures larger than 64 MB (cases/README.md, Limits)");
   v->callback([a] { validate(*a); });
 
   auto* t = cmd->add_subcommand("throw", "Run the throw a capture records through the solvers");
@@ -807,6 +823,8 @@ void add_capture(CLI::App& app) {
   add_common(t, *a, false);
   add_case(t, *a);
   add_limit_options(t, a->limits);
+  t->get_option("--allow-large")->description("Run even when the estimated work (steps, triangle evaluations) exceeds the "
+                                               "documented limits, and read a capture larger than 64 MB (cases/README.md, Limits)");
   t->callback([a] { throw_capture(*a); });
 
   auto* c = cmd->add_subcommand("convert", "Write any capture as a stoneskip trace CSV");

@@ -398,7 +398,22 @@ BOOST_AUTO_TEST_CASE(items_14_15_16_a_capture_with_an_impossible_mounting_or_ens
                                   "capture validate " + (s.dir / "long.csv").string() + " --no-simulate"})
       expect_refused(run_apart(cmd + " --allow-large --max-memory-gb 0.1"),
                      {"long.csv: needs about 455 MB of memory (reading the capture", "--max-memory-gb raises it"});
+    // Over both limits: the size is named first (lifting the memory limit would only meet it).
+    expect_refused(run_apart("capture convert " + (s.dir / "long.csv").string() + " --out " + (s.dir / "c.csv").string() +
+                             " --max-memory-gb 0.1"),
+                   {"long.csv: is 65 MB, above the 64 MB"});
     fs::remove(s.dir / "long.csv");
+    // validate holds every capture at once: three of 5 MB (35 MB each to read) pass one by one
+    // under 0.1 GB but not together (105 MB).
+    std::string three;
+    for (const char* name : {"a.log", "b.log", "c.log"}) {
+      std::ofstream(s.dir / name);
+      fs::resize_file(s.dir / name, 5'000'000);
+      three += " " + (s.dir / name).string();
+    }
+    expect_refused(run_apart("capture validate" + three + " --no-simulate --max-memory-gb 0.1"),
+                   {"capture validate: needs about 105 MB of memory (reading the 3 captures, held together"});
+    for (const char* name : {"a.log", "b.log", "c.log"}) fs::remove(s.dir / name);
   }
   // A failed solve writes no .h5 (reports/README.md: a failed run leaves none).
   const RanApart failed = run_apart("capture throw " + cap + " --set reference.max_steps=1 --out " + (s.dir / "f.h5").string());
