@@ -3,7 +3,8 @@
 // to the largest, which spans nearly every angle. Oracle: the synthetic generator's closed-form
 // throw at attack 179.8° (tools/capture/synthetic_capture.hpp); the interval of a throw whose
 // members lie within a degree or two of the truth is a few degrees wide and holds the truth (taken
-// to the turn of the interval's middle).
+// to the turn of the interval's middle). (A test of verification/captures that lives here because
+// the synthetic generator is in tools/capture, above it.)
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>

@@ -160,7 +160,7 @@ bool apply_header_value(Trace& t, const std::string& key, const std::string& val
   } else if (k == "gyro_fast_factor") {
     c.gyro_fast_factor = bounded(value, 1, 50,
                                  "fast mode is coarser than slow (2000/440 on the MotionPlus, Linux hid-wiimote), "
-                                 "at most 10 times that",
+                                 "up to about 11 times that",
                                  file, line, key);
   } else if (k == "gyro_sign") {
     c.gyro_sign = signs(value, file, line, key);

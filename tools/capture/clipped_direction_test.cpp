@@ -4,7 +4,8 @@
 // not move along the arm's velocity, its direction. Oracle: the synthetic generator's closed-form
 // motion (tools/capture/synthetic_capture.hpp), whose truth file gives the release's path and
 // attack angles; the pivot's path raised 30° above the release direction (the trunk rising into
-// the throw) tilts the true velocity away from the lever arm's.
+// the throw) tilts the true velocity away from the lever arm's. (A test of verification/captures
+// that lives here because the synthetic generator is in tools/capture, above it.)
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>

@@ -210,8 +210,9 @@ void estimate_throw(CaptureAnalysis& a, const ChainInput& in, const CaptureOptio
     widen(a.accel_speed_m_s, a.accel_lower.accel_speed_m_s, a.accel_upper.accel_speed_m_s);
     // The direction as well: the lever arm's velocity misses the pivot's own motion, which the
     // accelerometer sees (its clipped spans as recorded, at max_accel_g, or as each member fills
-    // them), so the path and attack angles span the accelerometer's directions too (a pivot rising
-    // at 4 m/s² put the true path angle, −5.2°, twelve interval widths outside the lever arm's).
+    // them), so the path and attack angles span the accelerometer's directions too (a synthetic
+    // swing whose pivot rises 30° above the release direction put the true path angle, 0.43°,
+    // outside the lever arm's [9.14, 10.50]°: tools/capture/clipped_direction_test.cpp).
     auto accel_attitude = [](const ReleaseKinematics& r) {
       RigidState st;
       st.orientation = r.stone_orientation;
