@@ -464,6 +464,14 @@ BOOST_AUTO_TEST_CASE(a_second_calibration_block_that_differs_is_refused_and_a_la
              error_of(second));
   BOOST_TEST(parse_capture(log + "99.0" + payload, "again.log").calibration.accel_one_g_counts ==
              (std::array<double, 3>{610, 617, 621}));  // the same block read again
+  // Where the header states the calibration, neither block is used: each that differs is a warning.
+  const Trace stated = parse_capture("# calibration.accel_zero_counts: 500,500,500\n# calibration.accel_one_g_counts: 600,600,600\n" +
+                                         second,
+                                     "stated.log");
+  BOOST_TEST(stated.calibration.accel_one_g_counts == (std::array<double, 3>{600, 600, 600}));
+  BOOST_TEST(std::count_if(stated.warnings.begin(), stated.warnings.end(), [&](const std::string& w) {
+               return contains(w, "stated.log:" + std::to_string(lines + 3) + ": the remote's calibration block");
+             }) == 1);
   const Trace late = parse_capture(log + "# calibration.accel_zero_counts: 500,500,500\n# calibration.accel_one_g_counts: 600,600,600\n",
                                    "late.log");
   BOOST_TEST(late.calibration.accel_one_g_counts == (std::array<double, 3>{600, 600, 600}));

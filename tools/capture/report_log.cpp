@@ -58,6 +58,80 @@ std::string block_counts(const CalibrationBlock& b) {
                 b.one_g_counts[0], b.one_g_counts[1], b.one_g_counts[2]);
   return s;
 }
+
+// A 0x21 calibration reply seen in the log, and its line.
+struct SeenBlock {
+  std::optional<CalibrationBlock> block;
+  long line = 0;
+};
+
+// Repeats: the same bytes as the previous report less than half the file's typical interval later
+// (the median over reports that differ from their predecessor, which no repeat is); half the
+// nominal period where there is no such interval. Against the nominal 100 Hz, identical reports of
+// a remote still at 200 Hz were taken for repeats.
+void flag_repeats(Trace& t, const std::vector<char>& same_as_previous, const std::vector<double>& since_previous_s) {
+  std::vector<double> intervals;
+  for (std::size_t k = 0; k < t.samples.size(); ++k)
+    if (!same_as_previous[k] && since_previous_s[k] > 0) intervals.push_back(since_previous_s[k]);
+  double typical_s = 1.0 / t.nominal_rate_hz;
+  if (!intervals.empty()) {
+    std::nth_element(intervals.begin(), intervals.begin() + intervals.size() / 2, intervals.end());
+    typical_s = intervals[intervals.size() / 2];
+  }
+  for (std::size_t k = 0; k < t.samples.size(); ++k)
+    if (same_as_previous[k] && since_previous_s[k] < 0.5 * typical_s) t.samples[k].flags |= kRepeated;
+}
+
+// The remote's calibration block, once the whole file is read. The header's calibration (wherever
+// its lines stand) wins, and a block that disagrees is said to. Otherwise the block is the
+// calibration: one remote has one, so the same block read again is fine, and a different one (two
+// remotes in one log, or a corrupt read) cannot be applied to every sample: refused, naming both.
+void apply_device_block(Trace& t, const SeenBlock& first, const SeenBlock& differing, const std::string& file) {
+  if (!first.block) return;
+  CaptureCalibration& c = t.calibration;
+  if (c.accel_from_header) {
+    for (const SeenBlock* b : {&first, &differing})
+      if (b->block && !same_counts(*b->block, c))
+        t.warnings.push_back(input_location(file, b->line, "") + ": the remote's calibration block (" +
+                             block_counts(*b->block) + ") differs from the header's calibration; the header's is used");
+    return;
+  }
+  if (differing.block)
+    throw_input_error(file, differing.line, "",
+                      "a second calibration block differs from the one on line " + std::to_string(first.line) + " (" +
+                          block_counts(*first.block) + " against " + block_counts(*differing.block) +
+                          "): one remote has one calibration; keep the right one");
+  if (!first.block->checksum_ok)
+    t.warnings.push_back(input_location(file, first.line, "") + ": calibration block checksum does not match; used anyway");
+  for (int i = 0; i < 3; ++i) {
+    c.accel_zero_counts[i] = first.block->zero_counts[i];
+    c.accel_one_g_counts[i] = first.block->one_g_counts[i];
+  }
+  c.accel_from_device = true;
+}
+
+// Counts → g and deg/s. Samples without MotionPlus data hold the previous rate; returns how many.
+long calibrate_samples(Trace& t, const std::vector<char>& sample_has_gyro) {
+  const CaptureCalibration& c = t.calibration;
+  Eigen::Vector3d last_rate = Eigen::Vector3d::Zero();
+  std::array<bool, 3> last_fast{};
+  long without_gyro = 0;
+  for (std::size_t k = 0; k < t.samples.size(); ++k) {
+    TraceSample& x = t.samples[k];
+    for (int i = 0; i < 3; ++i) x.accel_g[i] = c.accel_g_from_report(i, x.accel_g[i]);
+    if (!t.has_gyro) continue;
+    if (sample_has_gyro[k]) {
+      for (int i = 0; i < 3; ++i) x.rate_deg_s[i] = c.gyro_deg_s(i, x.rate_deg_s[i], x.gyro_fast[i]);
+      last_rate = x.rate_deg_s;
+      last_fast = x.gyro_fast;
+    } else {
+      ++without_gyro;
+      x.rate_deg_s = last_rate;
+      x.gyro_fast = last_fast;
+    }
+  }
+  return without_gyro;
+}
 }  // namespace
 
 Trace read_report_log(const std::string& text, const std::string& file) {
@@ -68,7 +142,7 @@ Trace read_report_log(const std::string& text, const std::string& file) {
   double previous_time = 0;
   long previous_time_line = 0;
   bool have_time = false;
-  long without_accel = 0, without_gyro = 0;
+  long without_accel = 0;
   // Reports longer than any the remote sends (22 bytes with the id; a logger may pad shorter ones
   // up to that, and may prefix the HID header 0xa1): the bytes past 22 are not the remote's.
   constexpr std::size_t kLongestReport = 22;
@@ -77,8 +151,8 @@ Trace read_report_log(const std::string& text, const std::string& file) {
   std::vector<char> sample_has_gyro;
   std::vector<char> same_as_previous;     // per sample: its bytes are the previous data report's
   std::vector<double> since_previous_s;   // per sample: host time since the previous data report
-  std::optional<CalibrationBlock> device_block;  // the first 0x21 calibration reply, applied after the scan
-  long device_block_line = 0;
+  SeenBlock device_block;     // the first 0x21 calibration reply, applied after the scan
+  SeenBlock differing_block;  // the first later one that differs from it
   for (const TextLine& line : split_capture_lines(text, file)) {
     const std::string_view s = trim(line.text);
     if (skip_blank_or_header(t, s, file, line.number)) continue;
@@ -124,18 +198,8 @@ Trace read_report_log(const std::string& text, const std::string& file) {
             one{double(block->one_g_counts[0]), double(block->one_g_counts[1]), double(block->one_g_counts[2])};
         if (const std::string problem = one_g_spacing_problem(zero, one); !problem.empty())
           throw_input_error(file, line.number, "", "calibration block: " + problem);
-        // One remote has one calibration: the same block read again is fine, a different one
-        // (two remotes in one log, or a corrupt read) cannot be applied to every sample.
-        if (device_block && !same_counts(*device_block, *block))
-          throw_input_error(file, line.number, "",
-                            "a second calibration block differs from the one on line " +
-                                std::to_string(device_block_line) +
-                                " (" + block_counts(*device_block) + " against " + block_counts(*block) +
-                                "): one remote has one calibration; keep the right one");
-        if (!device_block) {
-          device_block = *block;
-          device_block_line = line.number;
-        }
+        if (!device_block.block) device_block = {*block, line.number};
+        else if (!differing_block.block && !same_counts(*device_block.block, *block)) differing_block = {*block, line.number};
       }
       continue;
     }
@@ -157,9 +221,7 @@ Trace read_report_log(const std::string& text, const std::string& file) {
         if (r.gyro_raw[i] == 0 || r.gyro_raw[i] == 0x3fff) x.flags |= kGyroSaturated;
       }
     }
-    // A repeat (the same report logged twice) is decided after the scan, against the file's own
-    // report interval: against the nominal 100 Hz, identical reports of a remote still at 200 Hz
-    // were taken for repeats.
+    // A repeat (the same report logged twice) is decided after the scan (flag_repeats).
     same_as_previous.push_back(have_time && bytes == previous);
     since_previous_s.push_back(have_time ? *time - previous_time : 0.0);
     previous = bytes;
@@ -171,58 +233,9 @@ Trace read_report_log(const std::string& text, const std::string& file) {
   }
   if (t.samples.empty()) throw_input_error(file, 0, "", "no accelerometer reports (0x31, 0x33, 0x35, 0x37) found");
   count_times_from_first(t);  // capture_times.hpp
-  {
-    // Repeats: the same bytes as the previous report less than half the file's typical interval
-    // later (the median over reports that differ from their predecessor, which no repeat is);
-    // half the nominal period where there is no such interval.
-    std::vector<double> intervals;
-    for (std::size_t k = 0; k < t.samples.size(); ++k)
-      if (!same_as_previous[k] && since_previous_s[k] > 0) intervals.push_back(since_previous_s[k]);
-    double typical_s = 1.0 / t.nominal_rate_hz;
-    if (!intervals.empty()) {
-      std::nth_element(intervals.begin(), intervals.begin() + intervals.size() / 2, intervals.end());
-      typical_s = intervals[intervals.size() / 2];
-    }
-    for (std::size_t k = 0; k < t.samples.size(); ++k)
-      if (same_as_previous[k] && since_previous_s[k] < 0.5 * typical_s) t.samples[k].flags |= kRepeated;
-  }
-  if (device_block) {
-    CaptureCalibration& c = t.calibration;
-    if (c.accel_from_header) {
-      // The header states the calibration (wherever its lines are in the file): it wins, and a
-      // block that disagrees is said to.
-      if (!same_counts(*device_block, c))
-        t.warnings.push_back(input_location(file, device_block_line, "") + ": the remote's calibration block (" +
-                             block_counts(*device_block) + ") differs from the header's calibration; the header's is used");
-    } else {
-      if (!device_block->checksum_ok)
-        t.warnings.push_back(input_location(file, device_block_line, "") +
-                             ": calibration block checksum does not match; used anyway");
-      for (int i = 0; i < 3; ++i) {
-        c.accel_zero_counts[i] = device_block->zero_counts[i];
-        c.accel_one_g_counts[i] = device_block->one_g_counts[i];
-      }
-      c.accel_from_device = true;
-    }
-  }
-  // Calibrate: counts → g and deg/s. Samples without MotionPlus data hold the previous rate.
-  const CaptureCalibration& c = t.calibration;
-  Eigen::Vector3d last_rate = Eigen::Vector3d::Zero();
-  std::array<bool, 3> last_fast{};
-  for (std::size_t k = 0; k < t.samples.size(); ++k) {
-    TraceSample& x = t.samples[k];
-    for (int i = 0; i < 3; ++i) x.accel_g[i] = c.accel_g_from_report(i, x.accel_g[i]);
-    if (!t.has_gyro) continue;
-    if (sample_has_gyro[k]) {
-      for (int i = 0; i < 3; ++i) x.rate_deg_s[i] = c.gyro_deg_s(i, x.rate_deg_s[i], x.gyro_fast[i]);
-      last_rate = x.rate_deg_s;
-      last_fast = x.gyro_fast;
-    } else {
-      ++without_gyro;
-      x.rate_deg_s = last_rate;
-      x.gyro_fast = last_fast;
-    }
-  }
+  flag_repeats(t, same_as_previous, since_previous_s);
+  apply_device_block(t, device_block, differing_block, file);
+  const long without_gyro = calibrate_samples(t, sample_has_gyro);
   if (overlong > 0)
     t.warnings.push_back(input_location(file, first_overlong_line, "") + ": " + std::to_string(overlong) +
                          (overlong == 1 ? " report is" : " reports are") + " longer than " +
