@@ -39,6 +39,54 @@ Device classify(std::string_view name) {
   if (name == "Nintendo Wii Remote") return Device::keys;
   return Device::other;
 }
+// evdev passes on only what changed (input core drops an ABS value equal to the last one, and a
+// SYN_REPORT with nothing before it): a report whose three accelerometer values repeat leaves
+// no accelerometer frame, though its MotionPlus frame is there. Such a report is not lost: its
+// accelerometer reading is the last one, held. Only where it can have repeated: inside the
+// accelerometer's recording (not before its first frame or after its last: a recording that
+// stops is not a still remote), and where the remote has turned less than kMaxHeldTurn_deg since
+// that reading (gravity alone then moves by under 2 counts, g·1° ≈ 0.017 g at about 104 counts
+// per g; a swing turns several degrees a report). Otherwise the report counts as lost. Without a
+// MotionPlus such reports cannot be told from lost ones.
+//
+// Adds the held frames to accel_frames (in time order) and returns how many.
+long hold_unchanged_readings(std::vector<Frame>& accel_frames, const std::vector<Frame>& gyro_frames,
+                             double counts_per_deg_s, double same_report_s) {
+  constexpr double kMaxHeldTurn_deg = 1.0;
+  // The rate's zero: the driver subtracts 8192, not the device's own rest value (seen 7997-8084,
+  // 5-10 deg/s off), so the turn is measured from the median of each axis, a capture being
+  // mostly still.
+  std::array<double, 3> zero{};
+  for (int i = 0; i < 3 && !gyro_frames.empty(); ++i) {
+    std::vector<double> v;
+    for (const Frame& f : gyro_frames) v.push_back(f.v[i]);
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    zero[i] = v[v.size() / 2];
+  }
+  std::vector<Frame> held;
+  std::size_t a = 0;
+  for (const Frame& gf : gyro_frames) {
+    while (a < accel_frames.size() && accel_frames[a].t_s < gf.t_s - same_report_s) ++a;
+    const bool has_accel = a < accel_frames.size() && accel_frames[a].t_s <= gf.t_s + same_report_s;
+    if (has_accel || a == 0 || a == accel_frames.size()) continue;  // its own frame, or outside the recording
+    const Frame& last = accel_frames[a - 1];  // the reading held, and when it was made
+    // The driver's MotionPlus values are 9 × slow-mode counts (fast mode rescaled to them).
+    const double dx = gf.v[0] - zero[0], dy = gf.v[1] - zero[1], dz = gf.v[2] - zero[2];
+    const double rate_deg_s = std::sqrt(dx * dx + dy * dy + dz * dz) / 9.0 / counts_per_deg_s;
+    if (rate_deg_s * (gf.t_s - last.t_s) >= kMaxHeldTurn_deg) continue;
+    held.push_back({gf.t_s, last.v, gf.line});
+  }
+  const long held_reports = static_cast<long>(held.size());
+  if (!held.empty()) {
+    std::vector<Frame> merged;
+    merged.reserve(accel_frames.size() + held.size());
+    std::merge(accel_frames.begin(), accel_frames.end(), held.begin(), held.end(), std::back_inserter(merged),
+               [](const Frame& x, const Frame& y) { return x.t_s < y.t_s; });
+    accel_frames = std::move(merged);
+  }
+  return held_reports;
+}
+
 }  // namespace
 
 Trace read_evemu(const std::string& text, const std::string& file) {
@@ -170,50 +218,8 @@ Trace read_evemu(const std::string& text, const std::string& file) {
     }
   }
   constexpr double kSameReport_s = 2e-3;  // accelerometer and MotionPlus events of one HID report
-  // evdev passes on only what changed (input core drops an ABS value equal to the last one, and a
-  // SYN_REPORT with nothing before it): a report whose three accelerometer values repeat leaves
-  // no accelerometer frame, though its MotionPlus frame is there. Such a report is not lost: its
-  // accelerometer reading is the last one, held. Only where it can have repeated: inside the
-  // accelerometer's recording (not before its first frame or after its last: a recording that
-  // stops is not a still remote), and where the remote has turned less than kMaxHeldTurn_deg since
-  // that reading (gravity alone then moves by under 2 counts, g·1° ≈ 0.017 g at about 104 counts
-  // per g; a swing turns several degrees a report). Otherwise the report counts as lost. Without a
-  // MotionPlus such reports cannot be told from lost ones.
-  long held_reports = 0;
-  {
-    constexpr double kMaxHeldTurn_deg = 1.0;
-    // The rate's zero: the driver subtracts 8192, not the device's own rest value (seen 7997-8084,
-    // 5-10 deg/s off), so the turn is measured from the median of each axis, a capture being
-    // mostly still.
-    std::array<double, 3> zero{};
-    for (int i = 0; i < 3 && !gyro_frames.empty(); ++i) {
-      std::vector<double> v;
-      for (const Frame& f : gyro_frames) v.push_back(f.v[i]);
-      std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-      zero[i] = v[v.size() / 2];
-    }
-    std::vector<Frame> held;
-    std::size_t a = 0;
-    for (const Frame& gf : gyro_frames) {
-      while (a < accel_frames.size() && accel_frames[a].t_s < gf.t_s - kSameReport_s) ++a;
-      const bool has_accel = a < accel_frames.size() && accel_frames[a].t_s <= gf.t_s + kSameReport_s;
-      if (has_accel || a == 0 || a == accel_frames.size()) continue;  // its own frame, or outside the recording
-      const Frame& last = accel_frames[a - 1];  // the reading held, and when it was made
-      // The driver's MotionPlus values are 9 × slow-mode counts (fast mode rescaled to them).
-      const double dx = gf.v[0] - zero[0], dy = gf.v[1] - zero[1], dz = gf.v[2] - zero[2];
-      const double rate_deg_s = std::sqrt(dx * dx + dy * dy + dz * dz) / 9.0 / t.calibration.gyro_slow_counts_per_deg_s;
-      if (rate_deg_s * (gf.t_s - last.t_s) >= kMaxHeldTurn_deg) continue;
-      held.push_back({gf.t_s, last.v, gf.line});
-    }
-    held_reports = static_cast<long>(held.size());
-    if (!held.empty()) {
-      std::vector<Frame> merged;
-      merged.reserve(accel_frames.size() + held.size());
-      std::merge(accel_frames.begin(), accel_frames.end(), held.begin(), held.end(), std::back_inserter(merged),
-                 [](const Frame& x, const Frame& y) { return x.t_s < y.t_s; });
-      accel_frames = std::move(merged);
-    }
-  }
+  const long held_reports = hold_unchanged_readings(accel_frames, gyro_frames, t.calibration.gyro_slow_counts_per_deg_s,
+                                                     kSameReport_s);
   std::size_t g = 0, k = 0;
   unsigned buttons = 0;
   for (const Frame& a : accel_frames) {
