@@ -472,6 +472,20 @@ BOOST_AUTO_TEST_CASE(a_second_calibration_block_that_differs_is_refused_and_a_la
   BOOST_TEST(std::count_if(stated.warnings.begin(), stated.warnings.end(), [&](const std::string& w) {
                return contains(w, "stated.log:" + std::to_string(lines + 3) + ": the remote's calibration block");
              }) == 1);
+  // A block whose one-g lies 2 counts from its zero-g (no remote's): refused where it is the
+  // calibration, not used (a warning) where the header states one.
+  std::string odd_hex;
+  for (auto b : encode_calibration_block({512, 512, 512}, {616, 514, 616})) {
+    char h[4];
+    std::snprintf(h, sizeof h, " %02x", unsigned(b));
+    odd_hex += h;
+  }
+  std::string odd = log;
+  odd.replace(block_at + 18, odd_hex.size(), odd_hex);
+  BOOST_TEST(contains(error_of(odd), "bad.cap:2: calibration block: one-g and zero-g counts are 2 apart on Y"), error_of(odd));
+  BOOST_TEST(parse_capture("# calibration.accel_zero_counts: 506,513,518\n# calibration.accel_one_g_counts: 610,617,621\n" + odd,
+                           "odd.log")
+                 .calibration.accel_one_g_counts == (std::array<double, 3>{610, 617, 621}));
   const Trace late = parse_capture(log + "# calibration.accel_zero_counts: 500,500,500\n# calibration.accel_one_g_counts: 600,600,600\n",
                                    "late.log");
   BOOST_TEST(late.calibration.accel_one_g_counts == (std::array<double, 3>{600, 600, 600}));

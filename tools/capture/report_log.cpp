@@ -85,7 +85,9 @@ void flag_repeats(Trace& t, const std::vector<char>& same_as_previous, const std
 // The remote's calibration block, once the whole file is read. The header's calibration (wherever
 // its lines stand) wins, and a block that disagrees is said to. Otherwise the block is the
 // calibration: one remote has one, so the same block read again is fine, and a different one (two
-// remotes in one log, or a corrupt read) cannot be applied to every sample: refused, naming both.
+// remotes in one log, or a corrupt read) cannot be applied to every sample: refused, naming both;
+// and a block whose one-g lies no remote's distance from its zero-g is refused (where the header
+// states the calibration, such a block is only not used).
 void apply_device_block(Trace& t, const SeenBlock& first, const SeenBlock& differing, const std::string& file) {
   if (!first.block) return;
   CaptureCalibration& c = t.calibration;
@@ -101,7 +103,12 @@ void apply_device_block(Trace& t, const SeenBlock& first, const SeenBlock& diffe
                       "a second calibration block differs from the one on line " + std::to_string(first.line) + " (" +
                           block_counts(*first.block) + " against " + block_counts(*differing.block) +
                           "): one remote has one calibration; keep the right one");
-  if (!first.block->checksum_ok)
+  const CalibrationBlock& b = *first.block;
+  const std::array<double, 3> zero{double(b.zero_counts[0]), double(b.zero_counts[1]), double(b.zero_counts[2])},
+      one{double(b.one_g_counts[0]), double(b.one_g_counts[1]), double(b.one_g_counts[2])};
+  if (const std::string problem = one_g_spacing_problem(zero, one); !problem.empty())
+    throw_input_error(file, first.line, "", "calibration block: " + problem);  // the block is all there is
+  if (!b.checksum_ok)
     t.warnings.push_back(input_location(file, first.line, "") + ": calibration block checksum does not match; used anyway");
   for (int i = 0; i < 3; ++i) {
     c.accel_zero_counts[i] = first.block->zero_counts[i];
@@ -194,10 +201,6 @@ Trace read_report_log(const std::string& text, const std::string& file) {
     if (r.kind == ReportKind::memory_read) {
       if (r.read_error == 0 && (r.read_address == 0x0016 || r.read_address == 0x0020) && r.read_data.size() >= 10) {
         const auto block = decode_calibration_block(r.read_data.data(), r.read_data.size());
-        const std::array<double, 3> zero{double(block->zero_counts[0]), double(block->zero_counts[1]), double(block->zero_counts[2])},
-            one{double(block->one_g_counts[0]), double(block->one_g_counts[1]), double(block->one_g_counts[2])};
-        if (const std::string problem = one_g_spacing_problem(zero, one); !problem.empty())
-          throw_input_error(file, line.number, "", "calibration block: " + problem);
         if (!device_block.block) device_block = {*block, line.number};
         else if (!differing_block.block && !same_counts(*device_block.block, *block)) differing_block = {*block, line.number};
       }
