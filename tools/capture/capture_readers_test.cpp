@@ -37,6 +37,17 @@ std::string gentle_log() {
   return synthetic_report_log(th, SyntheticSensor{}, truth);
 }
 
+// A calibration block's ten bytes as a log or header writes them: "7e 80 81 ...".
+std::string block_hex(const std::array<int, 3>& zero_counts, const std::array<int, 3>& one_g_counts) {
+  std::string hex;
+  for (auto b : encode_calibration_block(zero_counts, one_g_counts)) {
+    char h[4];
+    std::snprintf(h, sizeof h, "%02x", unsigned(b));
+    hex += (hex.empty() ? "" : " ") + std::string(h);
+  }
+  return hex;
+}
+
 const std::string kCsvHead = std::string(kTraceCsvMagic) + "\n" + kTraceCsvColumns + "\n";
 }  // namespace
 
@@ -384,12 +395,7 @@ BOOST_AUTO_TEST_CASE(a_calibration_block_beside_count_lines_or_counts_no_remote_
   // won. A count outside the device's reading (10 bits for the accelerometer, 14 for MotionPlus,
   // spec "Facts for the ingestion path") came from no remote. Oracle: the input rules, an error
   // naming the file, the line and the key.
-  std::string block;
-  for (auto b : encode_calibration_block({506, 513, 518}, {610, 617, 621})) {
-    char h[4];
-    std::snprintf(h, sizeof h, "%02x", unsigned(b));
-    block += (block.empty() ? "" : " ") + std::string(h);
-  }
+  const std::string block = block_hex({506, 513, 518}, {610, 617, 621});
   BOOST_TEST(parse_capture("# calibration.block: " + block + "\n" + gentle_log(), "b.log").calibration.accel_one_g_counts ==
              (std::array<double, 3>{610, 617, 621}));  // the block alone reads
   const std::string both = "# calibration.block: " + block + "\n# calibration.accel_zero_counts: 500,500,500\n";
@@ -430,12 +436,7 @@ BOOST_AUTO_TEST_CASE(half_a_calibration_is_refused_and_the_two_count_lines_are_c
   BOOST_TEST(contains(error_of("# calibration.accel_zero_counts: 512,512,512\n# calibration.accel_one_g_counts: 616,514,616\n" +
                                gentle_log()),
                       ":2: calibration.accel_one_g_counts: one-g and zero-g counts are 2 apart on Y"));
-  std::string tiny;
-  for (auto b : encode_calibration_block({512, 512, 512}, {616, 616, 1000})) {
-    char h[4];
-    std::snprintf(h, sizeof h, "%02x", unsigned(b));
-    tiny += (tiny.empty() ? "" : " ") + std::string(h);
-  }
+  const std::string tiny = block_hex({512, 512, 512}, {616, 616, 1000});
   BOOST_TEST(contains(error_of("# calibration.block: " + tiny + "\n" + gentle_log()), "are 488 apart on Z"));
 }
 
@@ -449,12 +450,7 @@ BOOST_AUTO_TEST_CASE(a_second_calibration_block_that_differs_is_refused_and_a_la
   BOOST_REQUIRE(block_at != std::string::npos);
   const std::string block_line = log.substr(log.rfind('\n', block_at) + 1, log.find('\n', block_at) - log.rfind('\n', block_at));
   const std::string payload = block_line.substr(block_line.find(" 21 "));  // " 21 ... 00\n"
-  std::string other_hex;
-  for (auto b : encode_calibration_block({496, 496, 496}, {608, 608, 608})) {
-    char h[4];
-    std::snprintf(h, sizeof h, " %02x", unsigned(b));
-    other_hex += h;
-  }
+  const std::string other_hex = " " + block_hex({496, 496, 496}, {608, 608, 608});
   // The same reply with the other block's ten bytes (after " 21 bb bb se aa aa": 18 characters).
   const std::string other_payload = payload.substr(0, 18) + other_hex + payload.substr(18 + other_hex.size());
   const long lines = std::count(log.begin(), log.end(), '\n');
@@ -474,12 +470,7 @@ BOOST_AUTO_TEST_CASE(a_second_calibration_block_that_differs_is_refused_and_a_la
              }) == 1);
   // A block whose one-g lies 2 counts from its zero-g (no remote's): refused where it is the
   // calibration, not used (a warning) where the header states one.
-  std::string odd_hex;
-  for (auto b : encode_calibration_block({512, 512, 512}, {616, 514, 616})) {
-    char h[4];
-    std::snprintf(h, sizeof h, " %02x", unsigned(b));
-    odd_hex += h;
-  }
+  const std::string odd_hex = " " + block_hex({512, 512, 512}, {616, 514, 616});
   std::string odd = log;
   odd.replace(block_at + 18, odd_hex.size(), odd_hex);
   BOOST_TEST(contains(error_of(odd), "bad.cap:2: calibration block: one-g and zero-g counts are 2 apart on Y"), error_of(odd));
