@@ -83,7 +83,12 @@ SectionOutput coupling_section(const Record& c) {
            fmt(s.number("nx")) + " × " + fmt(s.number("ny")) + " cells of " + fmt(100 * s.number("cell_m"), 3) + " cm, c = " +
            fmt(s.number("wave_speed_m_s"), 3) + " m/s, μ = " + fmt(s.number("damping_per_s"), 3) + " /s, " + s.text("stencil") +
            ", water step " + ms(s.number("water_dt_s")) + " (σ = " + fmt(s.number("courant"), 3) + ", coupled limit " +
-           fmt(s.number("coupled_limit"), 4) + "), " + fmt(s.number("draught_samples")) + " draught samples per step; " +
+           fmt(s.number("coupled_limit"), 4) + "), " +
+           // Reports before the forcing was stored here said "8 draught samples per step" whatever it was.
+           (!s.has_text("scene_forcing") ? fmt(s.number("draught_samples")) + " draught samples per step; "
+            : s.text("scene_forcing") == "displacement"
+                ? "displacement forcing, " + fmt(s.number("draught_samples")) + " draught samples per water step; "
+                : s.text("scene_forcing") + " forcing (a head per stone step); ") +
            fmt(s.number("duration_s"), 3) + " s simulated.");
     w.verdict("Two-way against one-way", r.at("verdict"));
     w.bullet("Why: " + r.text("why") + ".");

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "reports/common/plot.hpp"
+#include "reports/waves/kd_label.hpp"
 
 namespace stoneskip {
 
@@ -38,12 +39,6 @@ void add_stencil_curve(Figure& f, std::ostringstream& p, bool& first, const std:
                        const std::string& table, const std::string& stencil, const char* with, const char* columns = "1:2") {
   add_stored_table(f, name, r, table);
   add_stencil_clause(p, first, name, stencil, with, columns);
-}
-
-// "π/8" for kd = π/8.
-std::string pi_fraction(double kd) {
-  const long denom = std::lround(M_PI / kd);
-  return denom == 1 ? "π" : "π/" + std::to_string(denom);
 }
 
 const char* kLogLog = "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset grid\nset key outside right\n";

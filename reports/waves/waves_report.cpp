@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "reports/common/markdown.hpp"
+#include "reports/waves/kd_label.hpp"
 #include "reports/waves/waves_figures.hpp"
 #include "verification/convergence/order_fit.hpp"
 
@@ -23,11 +24,6 @@ std::string list_text(const std::vector<double>& v, int significant = 3, const s
 std::string grids_text(const Table& t) {
   const auto v = t.column("value");
   return v.empty() ? "–" : fmt(v.front()) + "² … " + fmt(v.back()) + "²";
-}
-
-std::string pi_fraction(double kd) {
-  const long denom = std::lround(M_PI / kd);
-  return denom == 1 ? "π" : "π/" + std::to_string(denom);
 }
 
 // ---- findings at the top ----------------------------------------------------------------------
@@ -143,12 +139,35 @@ void require_one_story(const Record& c, const std::string& name, const Record& q
     if (!same(v.number(key), c.number(key))) fail(name + " verdict's " + key, v.number(key), c.number(key));
 }
 
+std::string lower_first(std::string s) {
+  if (!s.empty() && s[0] == 'A') s[0] = 'a';
+  return s;
+}
+
+// The initial surface as stored (verification/waves/wave_studies.cpp store_problem). Reports
+// written before its centre, radius, direction and wavelength were stored said "a <kind> bump
+// (amplitude, width) in the middle" whatever the kind: they keep that wording.
+std::string initial_text(const Record& p) {
+  const std::string kind = p.text("initial"), amp = fmt(p.number("amplitude_m") * 100, 3) + " cm";
+  if (!p.has_number("x_m"))
+    return "A " + kind + " bump (amplitude " + amp + ", width " + fmt(p.number("width_m"), 3) + " m) in the middle";
+  const std::string at = " centred at (" + fmt(p.number("x_m"), 4) + ", " + fmt(p.number("y_m"), 4) + ") m";
+  if (kind == "plane_wave")
+    return "A standing plane wave (amplitude " + amp + ", wavelength " + fmt(p.number("wavelength_m"), 4) + " m, k at " +
+           fmt(p.number("angle_deg"), 4) + "° from x)";
+  if (kind == "ring")
+    return "A ring (amplitude " + amp + ", radius " + fmt(p.number("radius_m"), 4) + " m, half-width " +
+           fmt(p.number("width_m"), 3) + " m)" + at;
+  if (kind == "gaussian")
+    return "A Gaussian bump (amplitude " + amp + ", e-folding radius " + fmt(p.number("width_m"), 3) + " m)" + at;
+  return "A " + kind + " disturbance (amplitude " + amp + ")" + at;
+}
+
 SectionOutput convergence_section(const Record& c) {
   const Record& p = c.at("problem");
   SectionWriter w(c, "2. Convergence against the exact solution");
   std::ostringstream m;
-  m << "A " << p.text("initial") << " bump (amplitude " << fmt(p.number("amplitude_m") * 100, 3) << " cm, width "
-    << fmt(p.number("width_m"), 3) << " m) at rest in the middle of a periodic " << fmt(p.number("length_m")) << " m × "
+  m << initial_text(p) << " at rest on a periodic " << fmt(p.number("length_m")) << " m × "
     << fmt(p.number("length_m")) << " m square, wave speed c = " << fmt(p.number("wave_speed_m_s")) << " m/s, damping μ = "
     << fmt(p.number("damping_per_s")) << " /s; the surface is compared at t = " << fmt(p.number("t_end_s")) << " s. "
     << "The exact solution comes from the spectral reference: every Fourier mode of the initial surface is advanced "
@@ -322,11 +341,15 @@ SectionOutput stability_section(const Record& c) {
   w.lead("Lengyel's bound",
          "c < (d/2Δt)√(μΔt + 2), i.e. σ < ½√(μΔt + 2), grows with the damping. Its test: " +
              verdict_markdown(l.at("verdict")) + " (RMS up " + fmt(l.number("norm_ratio"), 3) + "× in " +
-             fmt(l.number("steps"), 6) + " steps). Try it: `stoneskip wave cases/wave_lengyel_counterexample.toml`.");
+             // The steps taken: the run stops once its RMS passes 1e100 (reports before steps_run
+             // was stored ran every step asked for or said the asked-for count).
+             fmt(l.number(l.has_number("steps_run") ? "steps_run" : "steps"), 6) +
+             " steps). Try it: `stoneskip wave cases/wave_lengyel_counterexample.toml`.");
   w.lead("How to read it.",
-         "Damping shrinks the stable modes (|g| = √((2 − μΔt)/(2 + μΔt)) for them) but cannot rescue the checkerboard, "
-         "whose root becomes real and leaves the unit circle; the verdicts above say whether the computed limits move "
-         "with μΔt.");
+         "Damping shrinks the oscillating stable modes (complex roots, |g| = √((2 − μΔt)/(2 + μΔt)) for them; the "
+         "slowest modes are overdamped, their roots real, and decay more slowly than that) but cannot rescue the "
+         "checkerboard, whose root becomes real and leaves the unit circle; the verdicts above say whether the "
+         "computed limits move with μΔt.");
   return w.finish();
 }
 
@@ -335,8 +358,8 @@ SectionOutput stability_section(const Record& c) {
 SectionOutput speed_section(const Record& c) {
   const Record& p = c.at("problem");
   SectionWriter w(c, "5. Speed against error: does the 8-neighbour stencil reach a given error for less work?");
-  w.text("The paper argues that its 8-neighbour stencil lets a sparser grid do the same job. Here one physical problem — "
-         "a " + p.text("initial") + " bump of width " + fmt(p.number("width_m"), 3) + " m followed to t = " +
+  w.text(std::string("The paper argues that its 8-neighbour stencil lets a sparser grid do the same job. Here one physical problem — ") +
+         lower_first(initial_text(p)) + " followed to t = " +
          fmt(p.number("t_end_s"), 3) + " s on the periodic " + fmt(p.number("length_m")) +
          " m square — is solved by each stencil on grids of " + grids_text(c.table("grids")) + " cells at σ = " +
          list_text(c.table("sigma_fractions").column("value"), 2) +

@@ -34,8 +34,10 @@ DampedModeFactors damped_mode(double lambda, double mu, double t) {
     S = std::sin(w * t) / w;
   } else {
     // e^{−μt/2} cosh(at) = ½(e^{(a−μ/2)t} + e^{−(a+μ/2)t}); likewise sinh. a < μ/2 when λ > 0.
+    // a − μ/2 = (a² − μ²/4)/(a + μ/2) = −λ/(a + μ/2): the difference lost every digit of a slow
+    // overdamped mode's decay (λ = 1e-6, μ = 1e6: e^{−λt/μ} read as 1 where it is 1 − 1.5e-7).
     const double a = std::sqrt(-D);
-    const double ep = std::exp((a - 0.5 * mu) * t), em = std::exp(-(a + 0.5 * mu) * t);
+    const double ep = std::exp(-lambda / (a + 0.5 * mu) * t), em = std::exp(-(a + 0.5 * mu) * t);
     const double Cd = 0.5 * (ep + em), Sd = 0.5 * (ep - em) / a;
     f.gz = Cd + 0.5 * mu * Sd;
     f.gv = Sd;

@@ -129,6 +129,44 @@ BOOST_AUTO_TEST_CASE(stencil_symbol_gives_the_semi_discrete_mode_frequency) {
   BOOST_TEST(worst <= kNearRoundoff);
 }
 
+BOOST_AUTO_TEST_CASE(a_uniform_field_stays_uniform_under_every_named_stencils_symbol) {
+  // Oracle: a uniform field at rest is a stationary solution of the damped wave equation and of
+  // every consistent stencil (the coefficients sum to 0; paper_eq11's sum to −1/3, so it is not
+  // one of them): its mean mode has λ = 0 exactly.
+  // nine_point_isotropic's symbol(0, 0) evaluates to +1.1e-16; read as λ < 0 it grew as
+  // cosh(√1.1e-16 · ct/d): 28 m on a 314 m field at ct/d = 4e7 (the time checked here).
+  for (const char* name : {"five_point", "nine_point_half", "nine_point_isotropic"}) {
+    const int N = 8;
+    SpectralWaveOptions o;
+    o.nx = o.ny = N;
+    o.cell_m = 0.025;
+    o.symbol = SpectralSymbol::stencil;
+    o.stencil = named_stencil(name);
+    SpectralWave w(o);
+    BOOST_TEST(w.lambda(0, 0) == 0.0, name);
+    std::vector<double> z0(N * N, 314.159), z;
+    w.set_initial(z0);
+    w.evaluate(1e6, z);
+    double worst = 0;
+    for (double v : z) worst = std::max(worst, std::abs(v - 314.159));
+    BOOST_TEST(worst <= kNearRoundoff * 314.159, name << ": " << worst);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_slow_overdamped_mode_keeps_its_decay) {
+  // Oracle: the slow root r = −μ/2 + √(μ²/4 − λ) by its series in ε = λ/μ² (independent of the
+  // code's closed form): r = −μ(ε + ε² + 2ε³ + 5ε⁴ + …) (Catalan numbers); from z0 = 1 at rest the
+  // fast mode is gone by t = 1e-3 (e^{−1e3}), leaving z = (μ + r)/(μ + 2r) e^{rt}. With λ = 1.5e-7,
+  // μ = 1e6, t = 1e6 the decay is 1 − 1.5e-7: computing a − μ/2 as a difference lost all of it.
+  const double lambda = 1.5e-7, mu = 1e6, t = 1e6;
+  const double e = lambda / (mu * mu);
+  const double r = -mu * (e + e * e + 2 * e * e * e);
+  const double exact = (mu + r) / (mu + 2 * r) * std::exp(r * t);
+  const DampedModeFactors f = damped_mode(lambda, mu, t);
+  BOOST_TEST(std::abs(f.gz - exact) <= 1e-15, f.gz << " against " << exact);
+  BOOST_TEST(1 - f.gz > 1e-7);  // the decay is there at all
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace

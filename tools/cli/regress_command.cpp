@@ -69,6 +69,9 @@ void add_regress(CLI::App& app) {
     std::vector<BounceSweepSpec> specs;
     for (const auto& p : paths) {
       stored.push_back(read_baseline(p));
+      // Nothing to compare with is bad input (exit 2, before any sweep), not a regression.
+      if (!*update && !stored.back().has_result)
+        throw_input_error(p, 0, "result", "the baseline has no [result]: write one with `stoneskip regress --update --baseline " + p + "`");
       // --update rewrites the file: one that may not be written (a link, say) is refused now, not
       // after the sweep.
       if (*update) check_output_destination(p);
@@ -90,6 +93,7 @@ void add_regress(CLI::App& app) {
       const BaselineComparison c = compare_with_baseline(b, results[i]);
       std::printf("  %-34s %s  %d grid values, %d thresholds; %s, %s  (%s)\n", b.name.c_str(), c.passed ? "PASS" : "FAIL",
                   c.grid_points, c.thresholds, to_string(b.parameter), specs[i].solver.label().c_str(), b.file.c_str());
+      std::printf("      case: %s\n", resolve_case_file(b).string().c_str());  // the one that ran
       for (const auto& r : c.regressions) std::printf("      REGRESSION: %s\n", r.c_str());
       for (const auto& r : c.tolerated) std::printf("      tolerated:  %s\n", r.c_str());
       if (!c.passed) ++failed;

@@ -301,4 +301,31 @@ BOOST_AUTO_TEST_CASE(water_frames_out_of_the_scene_or_without_a_file_are_refused
   BOOST_TEST(f.root().open_group("scene").attr_double("duration_asked_s") == 0.105);
 }
 
+BOOST_AUTO_TEST_CASE(contacts_off_the_pond_are_named_and_the_movie_and_result_are_not_one_file) {
+  // Oracle: the geometry. The small seed's pond covers x in [-0.1, 1.08] m around the first touch
+  // (x ≈ 0.4 m); moved to x = 100 m, every contact lies off it (the surface there is the edge's and
+  // the water takes no push), and the text says so. The pond in place keeps its first contact on.
+  const auto on = run_stoneskip("scene " + small_seed(0.2) + " --json", false);
+  BOOST_REQUIRE_MESSAGE(on.status == 0, on.out);
+  const auto j = nlohmann::json::parse(on.out);
+  BOOST_REQUIRE(!j["throw"]["contacts"].empty());
+  const auto off_in_place = j["contacts_off_pond"].get<std::vector<int>>();
+  BOOST_TEST((std::find(off_in_place.begin(), off_in_place.end(), 1) == off_in_place.end()));
+  BOOST_TEST(std::abs(j["pond_extent_m"]["x"][1].get<double>() - (-0.1 + 59 * 0.02)) <= 1e-12);
+  const auto moved = run_stoneskip("scene " + small_seed(0.2) + " --set water.origin_x_m=100 --json", false);
+  BOOST_REQUIRE_MESSAGE(moved.status == 0, moved.out);
+  const auto m = nlohmann::json::parse(moved.out);
+  BOOST_TEST(m["contacts_off_pond"].size() == m["throw"]["contacts"].size());
+  BOOST_TEST(std::abs(m["water_vertical_impulse_N_s"].get<double>()) <= 1e-12);  // the water took nothing
+  const auto text = run_stoneskip("scene " + small_seed(0.2) + " --set water.origin_x_m=100", false);
+  BOOST_TEST(text.out.find("off pond  contact 1 (x = ") != std::string::npos, text.out);
+  // --movie and --out naming one file: refused before any work (the result overwrote the movie).
+  TempDir d("stoneskip_scene_same_out");
+  const std::string f = (d.path() / "m.mp4").string();
+  const auto same = run_stoneskip("scene " + small_seed(0.05) + " --movie " + f + " --out " + f, true);
+  BOOST_TEST(same.status == 2);
+  BOOST_TEST(same.out.find("also the --movie file") != std::string::npos, same.out);
+  BOOST_TEST(!fs::exists(f));
+}
+
 BOOST_AUTO_TEST_SUITE_END()

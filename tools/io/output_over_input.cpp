@@ -51,4 +51,12 @@ void refuse_output_over_inputs(const fs::path& output, OutputKind kind, const st
   }
 }
 
+void refuse_same_output(const fs::path& output, const std::string& option, const fs::path& other,
+                        const std::string& other_option) {
+  if (output.empty() || other.empty()) return;
+  if (resolved(output) == resolved(other) || same_file(output, other))
+    throw_input_error(option, 0, "",
+                      "'" + output.string() + "' is also the " + other_option + " file: give the two outputs different names");
+}
+
 }  // namespace stoneskip

@@ -17,4 +17,10 @@ enum class OutputKind { file, folder };
 void refuse_output_over_inputs(const std::filesystem::path& output, OutputKind kind,
                                const std::vector<std::filesystem::path>& inputs, const std::string& option = "--out");
 
+// Throws InputError (naming `option`) if the two outputs of one command are the same file however
+// spelt (`scene --movie m.mp4 --out m.mp4` wrote the HDF5 result over the movie and exited 0).
+// Either empty: nothing to compare.
+void refuse_same_output(const std::filesystem::path& output, const std::string& option,
+                        const std::filesystem::path& other, const std::string& other_option);
+
 }  // namespace stoneskip

@@ -89,4 +89,27 @@ BOOST_AUTO_TEST_CASE(a_shipped_case_read_from_elsewhere_is_not_in_the_current_fo
   BOOST_TEST(!refusal(".", OutputKind::folder, shipped).empty());
 }
 
+BOOST_AUTO_TEST_CASE(two_outputs_of_one_command_under_any_spelling_are_refused) {
+  // Oracle: names made here, the same file by construction ("./", "..", a symbolic link) or not.
+  Scratch s;
+  auto why = [](const fs::path& a, const fs::path& b) {
+    try {
+      refuse_same_output(a, "--out", b, "--movie");
+      return std::string();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+  };
+  const fs::path movie = s.dir / "m.mp4";
+  const std::string same = why(movie, movie);  // neither exists yet: still the same name
+  BOOST_TEST(same.find("--out") == 0u, same);
+  BOOST_TEST(same.find("also the --movie file") != std::string::npos, same);
+  BOOST_TEST(!why(s.dir / "sp1" / ".." / "m.mp4", movie).empty());
+  std::ofstream(movie) << "x\n";
+  fs::create_symlink(movie, s.dir / "link.mp4");
+  BOOST_TEST(!why(s.dir / "link.mp4", movie).empty());
+  BOOST_TEST(why(s.dir / "m.h5", movie).empty());
+  BOOST_TEST(why(s.dir / "m.h5", "").empty());  // no second output
+}
+
 BOOST_AUTO_TEST_SUITE_END()

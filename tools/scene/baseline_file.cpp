@@ -167,6 +167,20 @@ BounceBaseline read_baseline(const std::string& path) {
       th.count_above = whole("threshold_count_above", above[i]);
       th.bisected = true;
       if (!(th.hi >= th.lo)) r->fail("threshold_hi", "each threshold_hi must be >= its threshold_lo");
+      // A damaged [result] is bad input, not a regression of the code (a threshold at 1400 rev/s
+      // on a 0–60 grid was reported as "moved 1386 rev/s", exit 1, after the whole sweep): each
+      // lies inside the grid, changes the count, and they come in the order the sweep finds them
+      // (one per grid cell, ascending). Its width may pass threshold_tolerance: a bisection that
+      // stopped at a failed run keeps its bracket (cases/baselines/spin_paper_realtime.toml).
+      if (th.lo < b.values.front() || th.hi > b.values.back())
+        r->fail("threshold_lo", "threshold " + std::to_string(i + 1) + " [" + text(th.lo) + ", " + text(th.hi) +
+                                    "] lies outside the grid [" + text(b.values.front()) + ", " + text(b.values.back()) + "]");
+      if (th.count_below == th.count_above)
+        r->fail("threshold_count_above", "threshold " + std::to_string(i + 1) + " changes nothing (" +
+                                             std::to_string(th.count_below) + " on both sides)");
+      if (!b.thresholds.empty() && th.lo < b.thresholds.back().hi)
+        r->fail("threshold_lo", "thresholds must be in ascending order without overlap (threshold " + std::to_string(i + 1) +
+                                    " starts before threshold " + std::to_string(i) + " ends)");
       b.thresholds.push_back(th);
     }
     r->finish();
@@ -177,21 +191,23 @@ BounceBaseline read_baseline(const std::string& path) {
 
 fs::path resolve_case_file(const BounceBaseline& b) {
   fs::path c(b.case_file);
-  if (c.is_absolute() || fs::exists(c)) return c;
-  // Beside the baseline's cases/ folder (the baseline as found: a shipped "cases/baselines/X.toml"
-  // named from another folder is read from the source tree), then among the shipped files.
+  if (c.is_absolute()) return c;
+  // The baseline's own tree first: the folder holding the baseline's cases/ (the baseline as
+  // found: a shipped "cases/baselines/X.toml" named from another folder is read from the source
+  // tree), then beside the baseline. The working directory came first, so a copied tree's changed
+  // case was passed over for the shipped one whenever regress ran from the repository (PASS there,
+  // FAIL from the copy, with no word of which case ran).
   const fs::path here = fs::absolute(locate_input(b.file)).parent_path();
-  fs::path root = here.parent_path().parent_path();
-  fs::path alt = root / c;
-  if (fs::exists(alt)) return alt;
-  // A baseline kept in a folder of its own names its case beside it ("mycase.toml"): there was no
-  // such place, and the message named "/" for a baseline in /tmp.
+  const fs::path root = here.parent_path().parent_path();
+  if (const fs::path alt = root / c; fs::exists(alt)) return alt;
+  // A baseline kept in a folder of its own names its case beside it ("mycase.toml").
   if (const fs::path beside = here / c; fs::exists(beside)) return beside;
+  if (fs::exists(c)) return fs::absolute(c);
   if (const fs::path shipped = locate_input(c); fs::exists(shipped)) return shipped;
   throw_input_error(b.file, 0, "baseline.case",
-                    "case file '" + b.case_file + "' not found in the working directory, beside the baseline (" +
-                        here.string() + "), under " + (root.empty() ? std::string(".") : root.string()) +
-                        " (the folder holding the baseline's cases/), or among the shipped files");
+                    "case file '" + b.case_file + "' not found under " + (root.empty() ? std::string(".") : root.string()) +
+                        " (the folder holding the baseline's cases/), beside the baseline (" + here.string() +
+                        "), in the working directory, or among the shipped files");
 }
 
 BounceSweepSpec sweep_of(const BounceBaseline& b) {

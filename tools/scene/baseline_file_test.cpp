@@ -39,8 +39,8 @@ BOOST_AUTO_TEST_CASE(a_baseline_finds_its_case_beside_it_and_names_every_place_w
     BOOST_ERROR("a missing case was found");
   } catch (const InputError& e) {
     const std::string m = e.what();
-    BOOST_TEST(m.find("case file 'nowhere.toml' not found in the working directory, beside the baseline (" +
-                      fs::absolute(s.dir).string() + ")") != std::string::npos, m);
+    BOOST_TEST(m.find("beside the baseline (" + fs::absolute(s.dir).string() + "), in the working directory") != std::string::npos, m);
+    BOOST_TEST(m.find("case file 'nowhere.toml' not found under ") != std::string::npos, m);
     BOOST_TEST(m.find("among the shipped files") != std::string::npos, m);
   }
 }
@@ -65,6 +65,52 @@ BOOST_AUTO_TEST_CASE(a_paper_baseline_refuses_a_case_whose_water_law_the_paper_w
     BOOST_TEST(m.find("baseline.convention: the case does not run in the paper convention") != std::string::npos, m);
     BOOST_TEST(m.find("water_coefficient") != std::string::npos, m);
   }
+}
+
+BOOST_AUTO_TEST_CASE(a_copied_tree_runs_its_own_case_not_the_working_directorys) {
+  // Oracle: the folder listing. A tree T/cases/baselines/B.toml naming "cases/spin_sweep_base.toml"
+  // runs T/cases/spin_sweep_base.toml even where the working directory (here, the repository) has
+  // a file of that name: it ran the repository's, so a changed case passed from there.
+  ScratchDir s("stoneskip_baseline_tree");
+  fs::create_directories(s.dir / "cases" / "baselines");
+  s.write("cases/spin_sweep_base.toml", read_text_file("cases/spin_sweep_base.toml"));
+  const fs::path b = baseline_naming(s, "cases/baselines/b.toml", "cases/baselines/spin_physical_realtime.toml",
+                                     "cases/spin_sweep_base.toml");
+  BOOST_REQUIRE(fs::exists("cases/spin_sweep_base.toml"));  // the working directory holds one too
+  BOOST_TEST(fs::equivalent(resolve_case_file(read_baseline(b.string())), s.dir / "cases" / "spin_sweep_base.toml"));
+}
+
+BOOST_AUTO_TEST_CASE(a_damaged_result_is_bad_input_naming_its_key) {
+  // Oracle: the shipped baseline (grid 0–60 rev/s, threshold_tolerance 0.5) with one [result]
+  // line damaged. These were reported as regressions of the code (exit 1) after the whole sweep.
+  ScratchDir s("stoneskip_baseline_damaged");
+  const std::string text = read_text_file("cases/baselines/spin_physical_realtime.toml");
+  auto refusal = [&](const std::string& from, const std::string& to) {
+    std::string t = text;
+    const auto at = t.find(from);
+    BOOST_REQUIRE(at != std::string::npos);
+    const fs::path f = s.write("damaged.toml", t.replace(at, from.size(), to));
+    try {
+      read_baseline(f.string());
+      return std::string();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+  };
+  std::string m = refusal("threshold_lo = [14.375", "threshold_lo = [1400.375");  // and hi below lo
+  BOOST_TEST(m.find("result.threshold_hi") != std::string::npos, m);
+  m = refusal("threshold_lo = [14.375", "threshold_lo = [-1.375");
+  BOOST_TEST(m.find("result.threshold_lo") != std::string::npos, m);
+  BOOST_TEST(m.find("outside the grid [0, 60]") != std::string::npos, m);
+  m = refusal("threshold_count_above = [3", "threshold_count_above = [1");
+  BOOST_TEST(m.find("changes nothing") != std::string::npos, m);
+  m = refusal("threshold_lo = [14.375, 22.5", "threshold_lo = [22.5, 14.375");
+  BOOST_TEST(m.find("result.threshold_") != std::string::npos, m);
+  m = refusal("threshold_hi = [14.6875, 22.8125", "threshold_hi = [22.8125, 14.6875");
+  BOOST_TEST(m.find("result.threshold_") != std::string::npos, m);
+  m = refusal("threshold_lo = [14.375, 22.5", "threshold_lo = [14.375, 14.5");  // starts inside the first
+  BOOST_TEST(m.find("ascending order without overlap") != std::string::npos, m);
+  BOOST_TEST(refusal("generated = ", "generated = ") == "");  // the shipped file itself is taken
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -24,6 +24,11 @@ WaterScene read_water(TomlTable w, TomlTable& top) {
   if (!parse_forcing(forcing, scene.forcing)) w.fail("forcing", "'" + forcing + "' is not one of pressure, displacement");
   const long long samples = w.integer_or("draught_samples", scene.draught_samples);
   if (samples < 1 || samples > 4096) w.fail("draught_samples", "must be in [1, 4096]");
+  // The draught is sampled only under the displacement forcing: under pressure the head of each
+  // stone step is applied, and draught_samples = 1, 8 and 4096 gave bit-identical scenes.
+  if (w.has("draught_samples") && scene.forcing == Forcing::pressure)
+    w.fail("draught_samples", "is used only with forcing = \"displacement\" (the pressure forcing applies the head of every "
+                              "stone step, no draught samples)");
   scene.draught_samples = static_cast<int>(samples);
   // How the field is computed (model/water/height_field.hpp); read before read_height_field,
   // which finishes the table (the keys read here count as known there).

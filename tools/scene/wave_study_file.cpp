@@ -7,6 +7,7 @@
 #include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/study_keys.hpp"
 #include "tools/scene/wave_case.hpp"
+#include "verification/waves/stability.hpp"
 
 namespace stoneskip {
 
@@ -22,7 +23,32 @@ std::vector<int> grid_list(TomlTable& t, const std::string& key, const std::vect
     out.push_back(static_cast<int>(x));
   }
   if (out.empty()) t.fail(key, "must not be empty");
+  // A refinement sequence coarse to fine: the fits and the GCI take the last entries as the finest,
+  // so [128, 64, 32] fitted the coarsest and named 0.0156 m "finest h"; a repeat has no ratio.
+  for (std::size_t i = 1; i < out.size(); ++i)
+    if (out[i] <= out[i - 1]) t.fail(key, "grid sizes must increase strictly (coarse to fine), no repeats");
   return out;
+}
+
+// Refuses a convergence run whose σ = cΔt/d is above the stencil's stability limit (|g| > 1 on a
+// mode of the periodic grid): the leapfrog grows there, and the sequence's "order" (a 2.8e6 m
+// error read as "order not established") measured nothing. The 3×3 stencils' symbols are extreme
+// at k ∈ {0, π}², modes of every even grid, so verification/waves/stability.hpp's 64-wavenumber
+// grid decides for each run's own grid.
+void refuse_unstable_run(TomlTable& t, const std::string& key, const std::vector<std::string>& stencils,
+                         const WaveProblem& p, int n, long steps) {
+  const double dt = p.t_end_s / static_cast<double>(steps);
+  const double sigma = p.wave_speed_m_s * dt * n / p.length_m, mu_dt = p.damping_per_s * dt;
+  for (const auto& name : stencils) {
+    const Stencil st = named_stencil(name);
+    if (max_amplification(st, sigma, mu_dt) <= 1 + StabilityLimitOptions{}.growth_tolerance) continue;
+    char b[320];
+    std::snprintf(b, sizeof b,
+                  "sigma = %.4g on the %d² grid (%ld steps) is above %s's stability limit %.4g at mu dt = %.3g: the "
+                  "leapfrog is unstable there, so its error measures no order",
+                  sigma, n, steps, name.c_str(), stability_limit(st, mu_dt), mu_dt);
+    t.fail(key, b);
+  }
 }
 
 // kd values are given in units of π (kd_over_pi = 0.125 is π/8).
@@ -88,11 +114,17 @@ WaveStudyFile load_wave_study_file(const std::string& path, const std::vector<st
   if (auto p = top.maybe_table("problem")) read_problem(*p, o.problem);
   if (auto c = top.maybe_table("consistency")) {
     o.consistency.max_kd = c->number_or("max_kd", o.consistency.max_kd);
-    c->require_in("max_kd", o.consistency.max_kd, 1e-4, 1.0);
+    // The cubic fit in (kd)² is trusted where its own error stays below the tolerance's lower
+    // bound: its Laplacian coefficient errs by round-off ∝ 1/max_kd² below (5e-11 at 0.01 for
+    // the shipped stencils, 4e-9 at 1e-3, where s₂ was 0.0775–0.090 for 1/12) and by truncation
+    // ∝ max_kd⁶ above (4e-10 at 0.15, 1.9e-7 at 0.5, where five_point was called inconsistent).
+    c->require_in("max_kd", o.consistency.max_kd, 0.01, 0.15);
     o.consistency.samples = static_cast<int>(count_in(*c, "samples", o.consistency.samples, 4, 1000));
     o.consistency.angles = static_cast<int>(count_in(*c, "angles", o.consistency.angles, 2, 10000));
     o.consistency.tolerance = c->number_or("tolerance", o.consistency.tolerance);
-    c->require_positive("tolerance", o.consistency.tolerance);
+    // Above the fit's own error (≤ 4e-10 over the max_kd range) and far below paper_eq11's
+    // constant term 1/3, the inconsistency it must see.
+    c->require_in("tolerance", o.consistency.tolerance, 1e-9, 1e-3);
     c->finish();
   }
   if (auto c = top.maybe_table("convergence")) {
@@ -107,6 +139,8 @@ WaveStudyFile load_wave_study_file(const std::string& path, const std::vector<st
         v.time_steps.push_back(static_cast<long>(x));
       }
       if (v.time_steps.empty()) c->fail("time_steps", "must not be empty");
+      for (std::size_t i = 1; i < v.time_steps.size(); ++i)
+        if (v.time_steps[i] <= v.time_steps[i - 1]) c->fail("time_steps", "step counts must increase strictly (coarse to fine), no repeats");
     }
     v.both_grids = grid_list(*c, "both_grids", v.both_grids);
     v.both_sigma = c->number_or("both_sigma", v.both_sigma);
@@ -130,6 +164,11 @@ WaveStudyFile load_wave_study_file(const std::string& path, const std::vector<st
     };
     refuse_above("time_steps", time_updates, "time sequence (time_grid² × Σ time_steps)");
     refuse_above("both_grids", both_updates, "space–time sequence (N² × t_end c N / (σ L) on each grid)");
+    // Every run stable (the steps as run_convergence_study takes them).
+    for (long n : v.time_steps) refuse_unstable_run(*c, "time_steps", o.stencils, o.problem, v.time_grid, n);
+    for (int n : v.both_grids)
+      refuse_unstable_run(*c, "both_sigma", o.stencils, o.problem, n,
+                          std::lround(o.problem.t_end_s * o.problem.wave_speed_m_s / (v.both_sigma * o.problem.length_m / n)));
     v.fit_points = static_cast<int>(count_in(*c, "fit_points", v.fit_points, 0, 100));
     if (v.fit_points == 1) c->fail("fit_points", "a fit needs at least 2 points (0: all)");
     v.judgement.expected_order = c->number_or("expected_order", v.judgement.expected_order);

@@ -71,4 +71,56 @@ BOOST_AUTO_TEST_CASE(a_study_problem_whose_periodic_sum_stands_too_high_is_refus
   }
 }
 
+// The refusal's message, or "" if the study file (with these overrides) is taken.
+static std::string refusal(const std::vector<std::string>& overrides) {
+  try {
+    stoneskip::load_wave_study_file("cases/studies/waves_quick.toml", overrides);
+    return "";
+  } catch (const stoneskip::InputError& e) {
+    return e.what();
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_convergence_run_above_the_stability_limit_is_refused) {
+  // Oracle: five_point's limit 1/√2 (model/README.md §2.2). both_sigma = 0.75 ran the space–time
+  // sequence at σ ≈ 0.75 and reported a 2.8e6 m error as "order not established"; the time
+  // sequence's 16 steps on the 64² grid of the quick study's 0.5 s problem are σ = 2.
+  std::string m = refusal({"convergence.both_sigma=0.75"});
+  BOOST_TEST(m.find("convergence.both_sigma") != std::string::npos, m);
+  BOOST_TEST(m.find("five_point's stability limit 0.7071") != std::string::npos, m);
+  m = refusal({"convergence.time_steps=[16, 32, 64, 128]"});
+  BOOST_TEST(m.find("convergence.time_steps") != std::string::npos, m);
+  BOOST_TEST(m.find("unstable") != std::string::npos, m);
+  // Just inside every shipped stencil's limit (nine_point_isotropic's √3/2 is not the lowest):
+  BOOST_TEST(refusal({"convergence.both_sigma=0.7"}) == "");
+}
+
+BOOST_AUTO_TEST_CASE(a_refinement_sequence_out_of_order_or_repeated_is_refused) {
+  // The fits and the GCI take the last entries as the finest: [128, 64, 32] fitted the coarsest.
+  for (const char* o : {"convergence.both_grids=[128, 64, 32]", "convergence.both_grids=[32, 64, 64]",
+                        "convergence.space_grids=[64, 32, 128]", "convergence.time_steps=[512, 256, 128, 64]"}) {
+    const std::string m = refusal({o});
+    BOOST_TEST(m.find("increase strictly") != std::string::npos, o << ": " << m);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(an_inconsistent_baseline_stencil_is_refused) {
+  // Oracle: paper_eq11's weights sum to −1/3 (Lee & Baek 2013 Eq. 11 as printed), so the isotropy
+  // and speed studies leave it out; as the baseline every ratio was "–".
+  for (const char* key : {"isotropy", "speed"}) {
+    const std::string m = refusal({std::string(key) + ".baseline_stencil=\"paper_eq11\""});
+    BOOST_TEST(m.find(std::string(key) + ".baseline_stencil 'paper_eq11' is inconsistent") != std::string::npos, m);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_consistency_fit_outside_its_trusted_range_is_refused) {
+  // Oracle: the fit's error bounds (verification/waves/stencil_consistency_test.cpp checks the
+  // verdicts at both ends): max_kd 0.5 and 1e-3, and a tolerance below the fit's own error, are refused.
+  for (const char* o : {"consistency.max_kd=0.5", "consistency.max_kd=0.001", "consistency.tolerance=1e-12"}) {
+    const std::string m = refusal({o});
+    BOOST_TEST(m.find(std::string(o).substr(0, std::string(o).find('='))) != std::string::npos, o << ": " << m);
+  }
+  BOOST_TEST(refusal({"consistency.max_kd=0.15", "consistency.tolerance=1e-9"}) == "");
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -42,6 +42,7 @@ void store_scene_settings(Record& r, const SceneStudyCase& c, const SceneOptions
   r.set("speed_m_s", s.initial.velocity_m_s.norm());
   r.set("contact_dt_s", s.stone_steps.contact_dt_s);
   r.set("draught_samples", s.draught_samples);
+  r.set("scene_forcing", std::string(to_string(s.forcing)));  // draught samples count under displacement only
   if (s.water) {
     const HeightFieldOptions& f = s.water->field;
     r.set("nx", f.nx);
