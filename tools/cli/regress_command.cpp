@@ -72,6 +72,11 @@ void add_regress(CLI::App& app) {
       // Nothing to compare with is bad input (exit 2, before any sweep), not a regression.
       if (!*update && !stored.back().has_result)
         throw_input_error(p, 0, "result", "the baseline has no [result]: write one with `stoneskip regress --update --baseline " + p + "`");
+      if (!*update && stored.back().ensemble_members > 0 && stored.back().ensembles.empty())
+        throw_input_error(p, 0, "result.ensemble_counts",
+                          "missing: the baseline compares ensembles of " + std::to_string(stored.back().ensemble_members) +
+                              " nudged throws (baseline.ensemble_members); write them with `stoneskip regress --update --baseline " +
+                              p + "`, or set ensemble_members = 0 for single runs");
       // --update rewrites the file: one that may not be written (a link, say) is refused now, not
       // after the sweep.
       if (*update) check_output_destination(p);
@@ -94,6 +99,11 @@ void add_regress(CLI::App& app) {
       std::printf("  %-34s %s  %d grid values, %d thresholds; %s, %s  (%s)\n", b.name.c_str(), c.passed ? "PASS" : "FAIL",
                   c.grid_points, c.thresholds, to_string(b.parameter), specs[i].solver.label().c_str(), b.file.c_str());
       std::printf("      case: %s\n", resolve_case_file(b).string().c_str());  // the one that ran
+      if (b.ensemble_members > 0)
+        std::printf("      ensembles of %d nudged throws per value; %d of %d values sensitive (the ensembles decide there)\n",
+                    b.ensemble_members, c.sensitive_points, c.grid_points);
+      else
+        std::printf("      single runs only (ensemble_members = 0): a count a nudge changes is not told from a regression\n");
       for (const auto& r : c.regressions) std::printf("      REGRESSION: %s\n", r.c_str());
       for (const auto& r : c.tolerated) std::printf("      tolerated:  %s\n", r.c_str());
       if (!c.passed) ++failed;

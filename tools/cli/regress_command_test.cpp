@@ -5,6 +5,8 @@
 // perturbation that no correct run can reproduce (every count shifted by 7).
 #include <boost/test/unit_test.hpp>
 
+#include <cctype>
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -82,8 +84,9 @@ BOOST_AUTO_TEST_CASE(stored_baselines_pass) {
 }
 
 BOOST_AUTO_TEST_CASE(a_baseline_with_changed_counts_fails_and_names_the_difference) {
-  // Oracle: every stored count shifted by 7 — no run of the stored settings can give all of them,
-  // and a grid spacing (5 rev/s) far wider than compare_tolerance leaves values away from thresholds.
+  // Oracle: every stored count, single and ensemble, shifted by 7 — no run of the stored settings
+  // can give all of them (the robust values' ensembles, without spread, are compared exactly), and a
+  // grid spacing (5 rev/s) far wider than compare_tolerance leaves values away from thresholds.
   BOOST_REQUIRE(fs::exists(kStored));
   const fs::path perturbed = copy_baseline(kStored, "perturbed.toml", [](const std::string& text) {
     const std::regex counts_line("counts = \\[([^\\]]*)\\]");
@@ -99,7 +102,22 @@ BOOST_AUTO_TEST_CASE(a_baseline_with_changed_counts_fails_and_names_the_differen
       }
       out = m.prefix().str() + "counts = [" + shifted.str() + "]" + m.suffix().str();
     }
-    return out;
+    // The ensemble rows ("  1, 1, ..., 1,"), each count + 7.
+    const std::size_t at = out.find("ensemble_counts = [");
+    BOOST_REQUIRE(at != std::string::npos);
+    const std::size_t from = out.find('\n', at) + 1, to = out.find(']', from);
+    std::string rows = out.substr(from, to - from), shifted_rows;
+    std::size_t k = 0;
+    while (k < rows.size()) {
+      if (std::isdigit(static_cast<unsigned char>(rows[k])) || rows[k] == '-') {
+        std::size_t used = 0;
+        shifted_rows += std::to_string(std::stoi(rows.substr(k), &used) + 7);
+        k += used;
+      } else {
+        shifted_rows += rows[k++];
+      }
+    }
+    return out.substr(0, from) + shifted_rows + out.substr(to);
   });
   const Run r = run("regress --baseline " + perturbed.string());
   BOOST_TEST_INFO("stdout:\n" << r.out << "\nstderr:\n" << r.err);
@@ -120,7 +138,9 @@ BOOST_AUTO_TEST_CASE(a_moved_threshold_fails) {
       const std::size_t at = out.find(key);
       const std::size_t start = at + std::string(key).size();
       const std::size_t end = out.find_first_of(",]", start);
-      const double v = std::stod(out.substr(start, end - start)) + 5.0;  // 10 × compare_tolerance 0.5
+      // 10 × compare_tolerance 0.5, down: into the cell [0, 5], whose counts are robust (up, it
+      // would overlap the second threshold, which is bad input now).
+      const double v = std::stod(out.substr(start, end - start)) - 5.0;
       out = out.substr(0, start) + std::to_string(v) + out.substr(end);
     }
     return out;
@@ -129,6 +149,22 @@ BOOST_AUTO_TEST_CASE(a_moved_threshold_fails) {
   BOOST_TEST_INFO("stdout:\n" << r.out << "\nstderr:\n" << r.err);
   BOOST_TEST(r.status == 1);
   BOOST_TEST(r.out.find("REGRESSION: threshold") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(a_result_without_the_ensembles_it_asks_for_is_bad_input_before_any_work) {
+  // Oracle: the command-line contract. ensemble_members = 8 and no ensemble_counts: exit 2 naming
+  // the key (a comparison on single runs would call a chaotic count's nudge a regression).
+  BOOST_REQUIRE(fs::exists(kStored));
+  const fs::path bare = copy_baseline(kStored, "bare.toml", [](const std::string& t) {
+    const std::size_t at = t.find("ensemble_counts = [");
+    BOOST_REQUIRE(at != std::string::npos);
+    return t.substr(0, at) + t.substr(t.find("]\n", at) + 2);
+  });
+  const Run r = run("regress --baseline " + bare.string());
+  BOOST_TEST_INFO("stdout:\n" << r.out << "\nstderr:\n" << r.err);
+  BOOST_TEST(r.status == 2);
+  BOOST_TEST(r.err.find("result.ensemble_counts: missing") != std::string::npos);
+  BOOST_TEST(r.out.find("PASS") == std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(a_missing_baseline_file_is_bad_input) {

@@ -143,6 +143,12 @@ BounceBaseline read_baseline(const std::string& path) {
   t.require_in("threshold_tolerance", b.threshold_tolerance, kMinRelativeThresholdTolerance * span, span);
   b.compare_tolerance = t.number_or("compare_tolerance", 2 * b.threshold_tolerance);
   t.require_in("compare_tolerance", b.compare_tolerance, kMinRelativeThresholdTolerance * span, span);
+  // The nudged throws per grid value (verification/stones/bounce_baseline.hpp): a chaotic count is
+  // compared on ensembles. 0 compares single runs only.
+  const long long members = t.integer_or("ensemble_members", kDefaultEnsembleMembers);
+  if (members != 0 && (members < 2 || members > 64 || members % 2 != 0))
+    t.fail("ensemble_members", "must be 0 (single runs only) or even, in [2, 64]");
+  b.ensemble_members = static_cast<int>(members);
   t.finish();
 
   if (auto r = top.maybe_table("result")) {
@@ -182,6 +188,15 @@ BounceBaseline read_baseline(const std::string& path) {
         r->fail("threshold_lo", "thresholds must be in ascending order without overlap (threshold " + std::to_string(i + 1) +
                                     " starts before threshold " + std::to_string(i) + " ends)");
       b.thresholds.push_back(th);
+    }
+    if (r->has("ensemble_counts")) {
+      const auto e = r->numbers("ensemble_counts");
+      const std::size_t m = static_cast<std::size_t>(b.ensemble_members);
+      if (m == 0 || e.size() != b.values.size() * m)
+        r->fail("ensemble_counts", "needs baseline.ensemble_members (" + std::to_string(m) + ") counts per grid value, " +
+                                       std::to_string(b.values.size() * m) + " in all (got " + std::to_string(e.size()) + ")");
+      b.ensembles.assign(b.values.size(), {});
+      for (std::size_t k = 0; k < e.size(); ++k) b.ensembles[k / m].push_back(whole("ensemble_counts", e[k]));
     }
     r->finish();
   }
@@ -262,6 +277,7 @@ BounceSweepSpec sweep_of(const BounceBaseline& b) {
   }
   s.threshold_tolerance = b.threshold_tolerance;
   s.max_thresholds = 1000;  // a baseline bisects every change
+  s.ensemble_members = b.ensemble_members;
   return s;
 }
 
@@ -271,7 +287,8 @@ std::string baseline_text(const BounceBaseline& b, const BounceSweepResult& r, c
     << "# Checked by `stoneskip regress`; rewritten (the [result] part) by `stoneskip regress --update --baseline "
        "THIS_FILE`.\n"
     << "# Counts must match exactly except within compare_tolerance of a threshold; thresholds must match\n"
-    << "# (same counts on both sides) within compare_tolerance.\n\n";
+    << "# (same counts on both sides) within compare_tolerance. Where a grid value's ensemble of nudged throws\n"
+    << "# (speed x (1 +- eps), eps 1e-9 ... 1e-6) has spread, the count is chaotic there: the ensembles decide.\n\n";
   s << "[baseline]\n";
   s << "name = " << quoted(b.name) << "\n";
   if (!b.description.empty()) s << "description = " << quoted(b.description) << "\n";
@@ -295,7 +312,8 @@ std::string baseline_text(const BounceBaseline& b, const BounceSweepResult& r, c
   }
   if (b.t_max_s > 0) s << "t_max_s = " << num(b.t_max_s) << "\n";
   s << "threshold_tolerance = " << num(b.threshold_tolerance) << "\n";
-  s << "compare_tolerance = " << num(b.compare_tolerance) << "\n\n";
+  s << "compare_tolerance = " << num(b.compare_tolerance) << "\n";
+  s << "ensemble_members = " << b.ensemble_members << "\n\n";
   s << "[result]\n";
   s << "generated = " << quoted(generated) << "\n";
   s << "counts = " << array(r.counts, [](int c) { return std::to_string(c); }) << "\n";
@@ -310,6 +328,16 @@ std::string baseline_text(const BounceBaseline& b, const BounceSweepResult& r, c
   s << "threshold_hi = " << array(hi, num) << "\n";
   s << "threshold_count_below = " << array(below, [](double c) { return std::to_string(static_cast<int>(c)); }) << "\n";
   s << "threshold_count_above = " << array(above, [](double c) { return std::to_string(static_cast<int>(c)); }) << "\n";
+  if (!r.ensembles.empty()) {
+    // One row of ensemble_members counts per grid value (−1: the solver failed).
+    s << "ensemble_counts = [\n";
+    for (const auto& row : r.ensembles) {
+      s << " ";
+      for (int c : row) s << " " << c << ",";
+      s << "\n";
+    }
+    s << "]\n";
+  }
   // A change whose bisection stopped at a failed run is held like the others (its bracket's middle
   // within compare_tolerance), but it was not located: said here, where a reader of the file looks.
   for (std::size_t i = 0; i < r.thresholds.size(); ++i)

@@ -14,6 +14,7 @@ namespace stoneskip {
 // (values.back() − values.front()): the bisection then halves a bracket at most ~30 times.
 constexpr double kMinRelativeThresholdTolerance = 1e-9;
 constexpr double kMaxBounceCount = 1e6;  // a stored count beyond this is not a count
+constexpr int kDefaultEnsembleMembers = 8;  // nudged throws per grid value where the file names none
 
 // Reads a baseline file; InputError ("FILE:LINE: key: what") on anything malformed. A file
 // without [result] is accepted (has_result = false) so that `regress --update` can fill it.

@@ -113,4 +113,34 @@ BOOST_AUTO_TEST_CASE(a_damaged_result_is_bad_input_naming_its_key) {
   BOOST_TEST(refusal("generated = ", "generated = ") == "");  // the shipped file itself is taken
 }
 
+BOOST_AUTO_TEST_CASE(ensembles_are_read_written_and_read_back_and_a_wrong_count_is_refused) {
+  // Oracle: the shipped file's text (its first row, the 8 members at 0 rev/s, is all 1) and the
+  // identity of a write and a read.
+  ScratchDir s("stoneskip_baseline_ensembles");
+  const BounceBaseline b = read_baseline("cases/baselines/spin_paper_realtime.toml");
+  BOOST_TEST(b.ensemble_members == 8);
+  BOOST_REQUIRE(b.ensembles.size() == b.values.size());
+  BOOST_TEST((b.ensembles[0] == std::vector<int>(8, 1)));
+  BounceSweepResult r;
+  r.counts = b.counts;
+  r.thresholds = b.thresholds;
+  r.ensembles = b.ensembles;
+  const fs::path again = s.write("again.toml", baseline_text(b, r, "test"));
+  const BounceBaseline c = read_baseline(again.string());
+  BOOST_TEST((c.ensembles == b.ensembles));
+  BOOST_TEST(c.ensemble_members == 8);
+  std::string text = read_text_file(again.string());
+  const auto at = text.find("ensemble_members = 8");
+  BOOST_REQUIRE(at != std::string::npos);
+  const fs::path six = s.write("six.toml", text.replace(at, 20, "ensemble_members = 6"));
+  try {
+    read_baseline(six.string());
+    BOOST_ERROR("72 counts were taken for 9 values of 6");
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    BOOST_TEST(m.find("result.ensemble_counts") != std::string::npos, m);
+    BOOST_TEST(m.find("54 in all (got 72)") != std::string::npos, m);
+  }
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -157,13 +157,13 @@ ResourceEstimate estimate_regress(const std::vector<BounceSweepSpec>& sweeps) {
     for (std::size_t i = 1; i < s.values.size(); ++i) widest = std::max(widest, s.values[i] - s.values[i - 1]);
     const double halvings = widest > s.threshold_tolerance ? std::ceil(std::log2(widest / s.threshold_tolerance)) : 0;
     const double thresholds = std::min<double>(s.values.size() - 1, s.max_thresholds);
-    const double n = static_cast<double>(s.values.size()) + thresholds * halvings;
+    const double n = static_cast<double>(s.values.size()) * (1 + std::max(0, s.ensemble_members)) + thresholds * halvings;
     e.add_work(per_throw, kMaxTriangleEvaluations, "triangle evaluations in one throw of baseline " + s.name);
     throws += n;
     total += n * per_throw;
   }
   e.add_work(total, kMaxRegressTriangleEvaluations,
-             "triangle evaluations in all (" + sci(throws) + " throws at most, grids and bisections)");
+             "triangle evaluations in all (" + sci(throws) + " throws at most, grids, ensembles and bisections)");
   return e;
 }
 

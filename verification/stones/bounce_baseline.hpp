@@ -13,6 +13,16 @@
 // Bisection brackets a threshold to threshold_tolerance, so two runs of correct code agree to
 // within that; compare_tolerance (default 2 × threshold_tolerance) leaves room for round-off
 // moving a threshold across a bisection point.
+//
+// A count is chaotic where a 1e-9 nudge of the speed changes it (the paper convention's curve:
+// speed × (1 + 1e-9) gave 12 "regressions"), and a verdict on a chaotic count is decided on
+// ensembles, never run against run (model/README.md §2.4). With ensemble_members > 0 every grid
+// value also keeps an ensemble of nudged throws (speed × (1 ± ε), ε log-spaced over [1e-9, 1e-6]):
+//  * a grid value's count is a regression only where the two ensembles' mean counts differ by
+//    Welch's interval (verification/study/ensemble_difference.hpp) held to 95 % over all the values
+//    compared together (Bonferroni); ensembles without spread are compared exactly;
+//  * where an ensemble has spread (the count is sensitive there), a changed single count, and a
+//    threshold gone, moved or new in a cell with such an end, are tolerated and said.
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,6 +59,9 @@ struct BounceBaseline {
   std::string generated;         // code version and date of the run that made it
   std::vector<int> counts;
   std::vector<CountThreshold> thresholds;
+  // The ensembles ([baseline] ensemble_members; [result] ensemble_counts, values × members).
+  int ensemble_members = 0;      // 0: single runs only
+  std::vector<std::vector<int>> ensembles;
 };
 
 struct BaselineComparison {
@@ -58,6 +71,7 @@ struct BaselineComparison {
   std::vector<std::string> tolerated;    // differences within the rules (near a threshold)
   int grid_points = 0;
   int thresholds = 0;
+  int sensitive_points = 0;  // grid values whose stored or new ensemble has spread
 };
 
 BaselineComparison compare_with_baseline(const BounceBaseline& stored, const BounceSweepResult& now);

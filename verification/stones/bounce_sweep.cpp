@@ -5,6 +5,8 @@
 #include <memory>
 #include <mutex>
 
+#include "verification/study/ensemble_difference.hpp"
+
 namespace stoneskip {
 
 const char* to_string(SweepParameter p) {
@@ -55,9 +57,10 @@ struct Counter {
   double cpu_s = 0;
   std::mutex mutex;
   // The bounce count of one throw (−1 with the reason when the solver fails).
-  int count(const BounceSweepSpec& spec, double value, std::string* failure) {
+  int count(const BounceSweepSpec& spec, double value, std::string* failure, double speed_factor = 1) {
     ThrowParameters tp = base.parameters;
     parameter_of(tp, spec.parameter) = value;
+    tp.speed_m_s *= speed_factor;  // an ensemble member: the speed nudged, all else kept
     ThrowProblem p = with_convention(with_parameters(base, tp), spec.convention);
     SolverChoice s = spec.solver;
     s.realtime.record_trajectory = false;
@@ -114,6 +117,16 @@ std::vector<BounceSweepResult> run_bounce_sweeps(const std::vector<BounceSweepSp
       grid_jobs.push_back([&, k, i] {
         out[k].counts[i] = counters[k]->count(specs[k], specs[k].values[i], &out[k].failures[i]);
       });
+    if (specs[k].ensemble_members > 0) {
+      const std::vector<double> factors =
+          perturbation_factors(specs[k].ensemble_members, specs[k].ensemble_smallest, specs[k].ensemble_largest);
+      out[k].ensembles.assign(specs[k].values.size(), std::vector<int>(factors.size(), -1));
+      for (std::size_t i = 0; i < specs[k].values.size(); ++i)
+        for (std::size_t m = 0; m < factors.size(); ++m)
+          grid_jobs.push_back([&, k, i, m, f = factors[m]] {
+            out[k].ensembles[i][m] = counters[k]->count(specs[k], specs[k].values[i], nullptr, f);
+          });
+    }
   }
   ParallelOptions grid = options;
   if (!grid.label.empty()) grid.label += " (grid)";

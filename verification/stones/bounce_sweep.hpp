@@ -29,6 +29,11 @@ struct BounceSweepSpec {
   double threshold_tolerance = 0.1; // bisection stops when the bracket is narrower (parameter units),
                                     // or when no double lies strictly between its ends
   int max_thresholds = 12;          // changes beyond this many are listed but not bisected
+  // Per grid value, an ensemble of this many throws with the speed × (1 ± ε), ε log-spaced over
+  // [ensemble_smallest, ensemble_largest] (verification/study/ensemble_difference.hpp): a count
+  // that a 1e-9 nudge changes is compared on ensembles, never run against run (regress). 0: none.
+  int ensemble_members = 0;
+  double ensemble_smallest = 1e-9, ensemble_largest = 1e-6;
 };
 
 struct CountThreshold {
@@ -51,7 +56,8 @@ struct BounceSweepResult {
   std::vector<int> counts;          // per grid value; −1: the solver failed
   std::vector<std::string> failures;  // per grid value: empty, or the reason
   std::vector<CountThreshold> thresholds;
-  long runs = 0;                    // throws solved (grid + bisection)
+  std::vector<std::vector<int>> ensembles;  // per grid value, the members' counts (−1: failed); empty without
+  long runs = 0;                    // throws solved (grid + bisection + ensembles)
   double cpu_s = 0;                 // summed over the runs
 };
 

@@ -31,7 +31,7 @@ std::vector<double> perturbation_factors(int members, double smallest, double la
   return out;
 }
 
-MeanDifference welch_difference(const std::vector<double>& a, const std::vector<double>& b) {
+MeanDifference welch_difference(const std::vector<double>& a, const std::vector<double>& b, double confidence) {
   MeanDifference d;
   d.n_a = static_cast<int>(a.size());
   d.n_b = static_cast<int>(b.size());
@@ -49,7 +49,7 @@ MeanDifference welch_difference(const std::vector<double>& a, const std::vector<
   // Welch–Satterthwaite: ν = (va + vb)² / (va²/(n_a − 1) + vb²/(n_b − 1)).
   d.dof = (va + vb) * (va + vb) / (va * va / (d.n_a - 1) + vb * vb / (d.n_b - 1));
   const boost::math::students_t dist(d.dof);
-  const double t = boost::math::quantile(boost::math::complement(dist, 0.025));
+  const double t = boost::math::quantile(boost::math::complement(dist, 0.5 * (1 - confidence)));
   d.low = d.difference - t * d.standard_error;
   d.high = d.difference + t * d.standard_error;
   return d;

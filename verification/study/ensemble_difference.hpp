@@ -23,11 +23,13 @@ struct MeanDifference {
   double difference = 0;        // mean_a − mean_b
   double standard_error = 0;
   double dof = 0;               // Welch–Satterthwaite ν (infinite without spread: 0 stored)
-  double low = 0, high = 0;     // 95 % interval of the difference
+  double low = 0, high = 0;     // 95 % (or the asked-for level's) interval of the difference
   bool established() const { return valid && (low > 0 || high < 0); }
 };
 
-MeanDifference welch_difference(const std::vector<double>& a, const std::vector<double>& b);
+// `confidence`: the interval's two-sided level (0.95 for 95 %); a family of m comparisons held to
+// 95 % together takes 1 − 0.05/m each (Bonferroni).
+MeanDifference welch_difference(const std::vector<double>& a, const std::vector<double>& b, double confidence = 0.95);
 
 // The same for two ensembles whose members are paired (a_k and b_k thrown with the same
 // perturbation: two meshes, or a throw and its mirror image): the t interval of the mean of the

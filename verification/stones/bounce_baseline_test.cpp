@@ -1,0 +1,124 @@
+// The regression rules of verification/stones/bounce_baseline.hpp on baselines built here, whose
+// verdicts are known by construction: ensembles without spread compared exactly, ensembles with
+// spread by Welch's interval held to 95 % over the sensitive values (Bonferroni), thresholds in a
+// cell with a sensitive end tolerated, and the count just past a change not held run against run.
+#include <boost/test/unit_test.hpp>
+
+#include <string>
+#include <vector>
+
+#include "verification/stones/bounce_baseline.hpp"
+#include "verification/study/ensemble_difference.hpp"
+
+namespace stoneskip {
+namespace {
+
+// A grid 0, 10, 20, 30 (spin) with counts and ensembles of 8, no thresholds.
+struct Pair {
+  BounceBaseline stored;
+  BounceSweepResult now;
+  Pair(std::vector<int> counts, std::vector<std::vector<int>> stored_ens, std::vector<int> now_counts,
+       std::vector<std::vector<int>> now_ens) {
+    stored.name = "test";
+    stored.values = {0, 10, 20, 30};
+    stored.has_result = true;
+    stored.counts = std::move(counts);
+    stored.ensemble_members = 8;
+    stored.ensembles = std::move(stored_ens);
+    stored.threshold_tolerance = 0.25;
+    stored.compare_tolerance = 0.5;
+    now.counts = std::move(now_counts);
+    now.failures.assign(4, "");
+    now.ensembles = std::move(now_ens);
+  }
+};
+
+const std::vector<int> kOne(8, 1), kTwo(8, 2), kThree(8, 3);
+const std::vector<int> kMixed{1, 2, 1, 2, 1, 2, 1, 2};   // mean 1.5, sd 0.535
+const std::vector<int> kMixed2{2, 1, 2, 1, 2, 1, 2, 1};  // the same values, another order
+const std::vector<int> kHigh{5, 6, 5, 6, 5, 6, 5, 6};    // mean 5.5, sd 0.535
+
+bool mentions(const std::vector<std::string>& lines, const std::string& what) {
+  for (const auto& l : lines)
+    if (l.find(what) != std::string::npos) return true;
+  return false;
+}
+
+BOOST_AUTO_TEST_SUITE(bounce_baseline_)
+
+BOOST_AUTO_TEST_CASE(a_robust_count_that_changes_is_a_regression) {
+  // Oracle: ensembles without spread on both sides; their difference is exact (1 → 2).
+  Pair p({1, 1, 2, 3}, {kOne, kOne, kTwo, kThree}, {1, 2, 2, 3}, {kOne, kTwo, kTwo, kThree});
+  const BaselineComparison c = compare_with_baseline(p.stored, p.now);
+  BOOST_TEST(!c.passed);
+  BOOST_TEST(c.sensitive_points == 0);
+  BOOST_TEST(mentions(c.regressions, "count at spin_rev_s = 10 rev/s: stored 1, now 2"));
+}
+
+BOOST_AUTO_TEST_CASE(a_sensitive_count_is_judged_on_its_ensembles) {
+  // Same distribution, other single count: tolerated (the interval contains 0).
+  Pair same({1, 1, 2, 3}, {kOne, kMixed, kTwo, kThree}, {1, 2, 2, 3}, {kOne, kMixed2, kTwo, kThree});
+  BaselineComparison c = compare_with_baseline(same.stored, same.now);
+  BOOST_TEST(c.passed);
+  BOOST_TEST(c.sensitive_points == 1);
+  BOOST_TEST(mentions(c.tolerated, "the count is sensitive here"));
+  // Shifted by 4 with the same spread: Welch's interval 4 ± t·0.267 (ν = 14) excludes 0 at any
+  // Bonferroni level here (one sensitive value: 95 %).
+  Pair shifted({1, 1, 2, 3}, {kOne, kMixed, kTwo, kThree}, {1, 5, 2, 3}, {kOne, kHigh, kTwo, kThree});
+  c = compare_with_baseline(shifted.stored, shifted.now);
+  BOOST_TEST(!c.passed);
+  BOOST_TEST(mentions(c.regressions, "stored 1, now 5"));
+  const MeanDifference d = welch_difference({5, 6, 5, 6, 5, 6, 5, 6}, {1, 2, 1, 2, 1, 2, 1, 2});
+  BOOST_TEST(d.low > 3.0);
+}
+
+BOOST_AUTO_TEST_CASE(the_family_of_sensitive_values_widens_each_interval) {
+  // Oracle: Bonferroni. Two ensembles whose 95 % interval just excludes 0 but whose 1 − 0.05/m
+  // interval does not: m = 1 establishes a difference, m = 3 (three sensitive values) does not.
+  // a: mean 1.5, sd 0.535; b: 2 throughout. Difference 0.5, se 0.189, ν = 7: t = 2.36 at 95 %
+  // (half-width 0.447), about 3.1 at 98.3 % (0.59).
+  const std::vector<double> a{1, 2, 1, 2, 1, 2, 1, 2}, b{2, 2, 2, 2, 2, 2, 2, 2};
+  const MeanDifference at95 = welch_difference(b, a), wide = welch_difference(b, a, 1 - 0.05 / 3);
+  BOOST_REQUIRE(at95.established());
+  BOOST_REQUIRE(!wide.established());
+  auto ints = [](const std::vector<double>& v) { return std::vector<int>(v.begin(), v.end()); };
+  Pair one({1, 1, 2, 3}, {kOne, ints(a), kTwo, kThree}, {1, 2, 2, 3}, {kOne, ints(b), kTwo, kThree});
+  BOOST_TEST(!compare_with_baseline(one.stored, one.now).passed);
+  Pair three({1, 1, 1, 1}, {kOne, ints(a), kMixed, kMixed}, {1, 2, 1, 1}, {kOne, ints(b), kMixed2, kMixed2});
+  const BaselineComparison c = compare_with_baseline(three.stored, three.now);
+  BOOST_TEST(c.sensitive_points == 3);
+  BOOST_TEST(c.passed);
+}
+
+BOOST_AUTO_TEST_CASE(thresholds_in_a_sensitive_cell_are_tolerated_elsewhere_held) {
+  // Stored: changes 1 → 2 in [10, 20] (robust ends) and 2 → 3 in [20, 30] (a sensitive end at 30).
+  Pair p({1, 1, 2, 3}, {kOne, kOne, kTwo, kMixed}, {1, 1, 2, 3}, {kOne, kOne, kTwo, kMixed2});
+  p.stored.thresholds = {{14.0, 14.25, 1, 2}, {25.0, 25.25, 2, 3}};
+  p.now.thresholds = {{17.0, 17.25, 1, 2}, {28.0, 28.25, 2, 3}};  // both moved by 3 (tolerance 0.5)
+  const BaselineComparison c = compare_with_baseline(p.stored, p.now);
+  BOOST_TEST(!c.passed);
+  BOOST_TEST(mentions(c.regressions, "threshold 1 -> 2 bounces stored at spin_rev_s = 14.125"));
+  BOOST_TEST(!mentions(c.regressions, "threshold 2 -> 3"));
+  BOOST_TEST(mentions(c.tolerated, "threshold 2 -> 3 bounces stored at spin_rev_s = 25.125"));
+}
+
+BOOST_AUTO_TEST_CASE(the_count_past_a_change_is_not_held_run_against_run_with_ensembles) {
+  // The same change (1 → ...) at the same place, another count past it: tolerated with ensembles,
+  // a regression without (single runs, the rule before ensembles).
+  Pair p({1, 1, 2, 3}, {kOne, kOne, kTwo, kThree}, {1, 1, 2, 3}, {kOne, kOne, kTwo, kThree});
+  p.stored.thresholds = {{14.0, 14.25, 1, 6}};
+  p.now.thresholds = {{14.25, 14.5, 1, 4}};
+  BaselineComparison c = compare_with_baseline(p.stored, p.now);
+  BOOST_TEST(c.passed);
+  BOOST_TEST(mentions(c.tolerated, "the count just past a change is one run"));
+  p.stored.ensemble_members = 0;
+  p.stored.ensembles.clear();
+  p.now.ensembles.clear();
+  c = compare_with_baseline(p.stored, p.now);
+  BOOST_TEST(!c.passed);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
+}  // namespace
+}  // namespace stoneskip
