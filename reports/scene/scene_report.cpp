@@ -57,6 +57,8 @@ std::string findings(const Record& secs) {
       << ");";
   }
   m << "\n* The rings: " << verdict_markdown(secs.at("rings").at("verdict")) << ".\n";
+  if (secs.has_child("grid"))
+    m << "* The coupled scene as the grid is refined: " << verdict_markdown(secs.at("grid").at("verdict")) << ".\n";
   const Record& sp = secs.at("speed");
   for (const char* k : {"scene_target", "bandwidth_target", "per_cell_target", "sweep_target"})
     m << "* Speed: " << verdict_markdown(sp.at(k)) << ".\n";
@@ -324,7 +326,37 @@ SectionOutput shortcuts_section(const Record& s) {
   return w.finish();
 }
 
-// ---- 6. speed ---------------------------------------------------------------------------------
+// ---- 6. grid ----------------------------------------------------------------------------------
+
+SectionOutput grid_section(const Record& g) {
+  SectionWriter w(g, "6. Does the coupled scene converge as the grid is refined?");
+  const Table t = g.table("grids");
+  w.text("Scene " + code(g.text("case")) + " (" + g.text("forcing") + " forcing) on its own cell of " + fmt(100 * g.number("base_cell_m"), 3) +
+         " cm and on finer ones, the water step scaled with the cell (σ fixed), on a " + fmt(g.number("pond_m"), 3) + " m × " +
+         fmt(g.number("pond_m"), 3) + " m pond around the first touch, until " +
+         (g.has_number("end_s") ? fmt(g.number("end_s"), 3) + " s" : std::string("the scene's end")) +
+         ". There is no exact solution of the coupled scene: what can be asked is whether its answers settle as the cells "
+         "shrink — whether each change is smaller than the one before. The stone is " + fmt(100 * g.number("stone_diameter_m"), 3) +
+         " cm across. The head h the stone presses with is its wetted faces' pressure rastered on the cells (model/README.md §2.4), "
+         "smoothed over a fixed number of cells, so a finer grid resolves a narrower, stronger patch: where the changes do not "
+         "shrink, the scene's water response (and through it the stone's contacts) is a property of the grid, not of the stone.");
+  MarkdownTable m({"cell (cm)", "grid", "water step (ms)", "cells across the stone", "pressure work W (J)", "first contact (ms)",
+                   "its exit speed (m/s)", "contacts", "wall (s)"});
+  for (std::size_t i = 0; i < t.rows(); ++i) {
+    auto v = [&](const char* k) { return t.column(k)[i]; };
+    m.row({fmt(100 * v("cell_m"), 3), fmt(v("n")) + "²", fmt(1e3 * v("water_dt_s"), 3), fmt(v("cells_across_stone"), 3),
+           fmt(v("pressure_work_J"), 3), fmt(1e3 * v("first_duration_s"), 3), fmt(v("first_exit_m_s"), 3), fmt(v("contacts")),
+           fmt(v("wall_s"), 2)});
+  }
+  w.table(m);
+  if (g.number("left_out") > 0)
+    w.text(fmt(g.number("left_out")) + " finer grid(s) left out: more than 2048² cells.");
+  w.verdict("The coupled scene under refinement", g.at("verdict"));
+  w.end_list();
+  return w.finish();
+}
+
+// ---- 7. speed ---------------------------------------------------------------------------------
 
 SectionOutput speed_section(const Record& s) {
   // The sweep's stepper: the adaptive scheme by its tolerance, a fixed one by its contact step
@@ -334,7 +366,7 @@ SectionOutput speed_section(const Record& s) {
     return (r.has_text("sweep_scheme") ? r.text("sweep_scheme") + ", " : std::string()) + "contact step " +
            fmt(r.number("sweep_contact_dt_s"), 2) + " s";
   };
-  SectionWriter w(s, "6. Speed");
+  SectionWriter w(s, "7. Speed");
   w.text("Measured in one run of this binary, on a machine with " + fmt(s.number("cores")) + " cores and a 1-minute load average of " +
          fmt(s.number("load_before"), 3) + " before and " + fmt(s.number("load_after"), 3) + " after (other jobs share the cores: "
          "wall times include their share). The scene " + code(s.text("case")) + " (" + fmt(s.number("scene_frames")) +
@@ -382,7 +414,7 @@ SectionOutput speed_section(const Record& s) {
   return w.finish();
 }
 
-// ---- 7. frames --------------------------------------------------------------------------------
+// ---- 8. frames --------------------------------------------------------------------------------
 
 Figure still_figure(const std::string& name, const Record& r) {
   Figure fig;
@@ -432,7 +464,7 @@ Figure still_figure(const std::string& name, const Record& r) {
 }
 
 SectionOutput frames_section(const Record& f) {
-  SectionWriter w(f, "7. Still frames");
+  SectionWriter w(f, "8. Still frames");
   w.text("For each scene the most telling frame: the one with the most disturbed water (cells with |z| above " +
          pct(f.number("threshold_fraction")) + " of the scene's largest |z|) among the frames before a cell above that height reaches the pond's edge (smaller waves may reach it first). "
          "Left, the water from above (the dashed square is the right panel's window), the stone's track (line), its first "
@@ -487,6 +519,7 @@ RenderedReport render_scene_report(const StoredReport& stored) {
   append(out, convergence_section(secs.at("convergence")));
   append(out, rings_section(secs.at("rings")));
   append(out, shortcuts_section(secs.at("shortcuts")));
+  if (secs.has_child("grid")) append(out, grid_section(secs.at("grid")));  // reports before it have none
   append(out, speed_section(secs.at("speed")));
   append(out, frames_section(secs.at("frames")));
   out.markdown += provenance_markdown(stored);

@@ -43,6 +43,12 @@ bool SceneStudiesOptions::valid(std::string* why) const {
   for (double e : shortcuts.epsilons_m)
     if (!(e > 0)) return fail("shortcuts: epsilons must be > 0 (ε = 0 is always run)");
   if (!(duration_cap_s >= 0)) return fail("duration_cap_s must be >= 0");
+  if (!known(grid.case_name)) return fail("grid: no case named '" + grid.case_name + "'");
+  if (grid.cell_fractions.size() < 3) return fail("grid: at least three cell fractions (the differences of three grids)");
+  for (std::size_t i = 0; i < grid.cell_fractions.size(); ++i)
+    if (!(grid.cell_fractions[i] > 0 && grid.cell_fractions[i] <= 1) || (i > 0 && !(grid.cell_fractions[i] < grid.cell_fractions[i - 1])))
+      return fail("grid: cell fractions must lie in (0, 1] and decrease strictly (coarse to fine)");
+  if (!(grid.pond_m > 0) || !(grid.after_s >= 0)) return fail("grid: pond_m > 0 and after_s >= 0");
   return true;
 }
 
@@ -202,6 +208,7 @@ Record run_scene_studies(const SceneStudiesOptions& o, StudySink& sink) {
   run_section(sink, "convergence", [&] { return scene_convergence_findings(o, p); });
   run_section(sink, "rings", [&] { return scene_rings_findings(o); });
   run_section(sink, "shortcuts", [&] { return scene_shortcuts_findings(o, p); });
+  run_section(sink, "grid", [&] { return scene_grid_findings(o, p); });
   run_section(sink, "speed", [&] { return scene_speed_findings(o, p); });
   run_section(sink, "frames", [&] { return scene_frames_findings(o, p); });
   Record root;

@@ -11,6 +11,7 @@
 //   rings        a bounce's ring speed against c less the scheme's dispersion;
 //   shortcuts    each way of computing less (no field, active tiles, float32, one draught sample,
 //                the contact step only near the water): its error and the time it saves;
+//   grid         the coupled scene on finer grids: does its water response converge?
 //   speed        the headline speed figures against their targets;
 //   frames       the most telling still of each scene.
 // Each section's record holds the numbers, tables, verdicts and computed reasons the report
@@ -61,6 +62,18 @@ struct SceneShortcutOptions {
   double time_tolerance_s = 1e-4;                 // largest contact-time change called "within tolerance"
 };
 
+// Does the coupled scene converge? The scene on its own grid and on grids of half, a quarter and
+// an eighth of its cell (the water step scaled alike, σ fixed), on a pond of pond_m × pond_m around
+// the first touch (found on still water), until the first contact has ended and `after_s` more: the
+// pressure work put into the waves and the first contact's duration and exit speed, whose
+// successive differences must shrink as the cells halve.
+struct SceneGridOptions {
+  std::string case_name;                           // which scene (default: the first)
+  std::vector<double> cell_fractions{1, 0.5, 0.25, 0.125};  // of the case's cell, coarse to fine (≥ 3)
+  double pond_m = 2;
+  double after_s = 0.05;
+};
+
 struct SceneSpeedOptions {
   HeadlineSpeedOptions headline;                  // its scene is the first case's unless set
   double scene_fps_target = 3000, bandwidth_fraction_target = 0.9, per_cell_ratio_target = 2, throws_per_s_target = 1000;
@@ -76,6 +89,7 @@ struct SceneStudiesOptions {
   std::string rings_case;                         // default: the first case
   RingSpeedOptions rings;
   SceneShortcutOptions shortcuts;
+  SceneGridOptions grid;
   SceneSpeedOptions speed;
   StillFrameOptions frames;
   double stability_growth_tolerance = 1e-3;
@@ -83,7 +97,7 @@ struct SceneStudiesOptions {
 };
 
 // The sections in order, each stored in the sink as it finishes (names: "settings", "coupling",
-// "stability", "convergence", "rings", "shortcuts", "speed", "frames"), and the report's summary
+// "stability", "convergence", "rings", "shortcuts", "grid", "speed", "frames"), and the report's summary
 // record.
 Record run_scene_studies(const SceneStudiesOptions& options, StudySink& sink);
 
@@ -93,6 +107,7 @@ Record scene_stability_findings(const SceneStudiesOptions& o);
 Record scene_convergence_findings(const SceneStudiesOptions& o, const ProgressFactory& progress);
 Record scene_rings_findings(const SceneStudiesOptions& o);
 Record scene_shortcuts_findings(const SceneStudiesOptions& o, const ProgressFactory& progress);
+Record scene_grid_findings(const SceneStudiesOptions& o, const ProgressFactory& progress);
 Record scene_speed_findings(const SceneStudiesOptions& o, const ProgressFactory& progress);
 Record scene_frames_findings(const SceneStudiesOptions& o, const ProgressFactory& progress);
 
