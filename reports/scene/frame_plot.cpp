@@ -24,6 +24,7 @@ std::string frame_plot_commands(const FramePlot& p) {
     g << (k > -2 ? ", " : "") << "'" << label << "' " << 0.5 * k * s;
   }
   g << ")\n";
+  if (!p.footnote.empty()) g << "set label 4 " << gnuplot_quote(p.footnote) << " at screen 0.01, screen 0.02 left front\n";
   // Left: the pond from above.
   g << "set size ratio -1\nset xrange [" << p.pond_x0_m << ":" << p.pond_x1_m << "]\nset yrange [" << p.pond_y0_m << ":"
     << p.pond_y1_m << "]\nset xlabel 'x (m, along the throw)'\nset ylabel 'y (m)'\nset cblabel 'z (mm)'\n"
@@ -37,7 +38,7 @@ std::string frame_plot_commands(const FramePlot& p) {
   g << "\n";
   // Right: the water around the stone, oblique, its heights on the window's own scale.
   const double zs = p.near_z_m > 0 ? p.near_z_m : 2 * s;
-  g << "unset object 1\nunset label 1\nunset colorbox\nset size noratio\nset view 52, 28, 1, 1\nset xyplane at " << -zs
+  g << "unset object 1\nunset label 1\nunset label 4\nunset colorbox\nset size noratio\nset view 52, 28, 1, 1\nset xyplane at " << -zs
     << "\nset border 4095 lc rgb '#888888'\nset xrange [" << p.near_x0_m << ":" << p.near_x1_m << "]\nset yrange [" << p.near_y0_m
     << ":" << p.near_y1_m << "]\nset zrange [" << -zs << ":" << zs << "]\nset xlabel 'x (m)'\nset ylabel 'y (m)'\n"
     << "set zlabel 'z (mm)' rotate\n";
@@ -52,7 +53,7 @@ std::string frame_plot_commands(const FramePlot& p) {
   if (p.stone_shown && (!in_window || stone_z != p.stone_z_m)) {  // say where the box cannot show it
     char note[160];
     const double h = p.stone_z_m;
-    std::snprintf(note, sizeof note, "stone: %.3g cm %s the still level%s", 100 * std::abs(h), h >= 0 ? "above" : "below",
+    std::snprintf(note, sizeof note, "stone's centre: %.3g cm %s the still level%s", 100 * std::abs(h), h >= 0 ? "above" : "below",
                   in_window ? (h >= 0 ? " (drawn on the box's lid)" : " (drawn on the box's floor)") : ", outside this window");
     g << "set label 3 " << gnuplot_quote(note) << " at screen 0.56, screen 0.06 left front\n";
   }

@@ -28,6 +28,8 @@ struct FramePlot {
   double near_z_m = 0;      // the 3-D view's z range ±near_z_m (0: 2 scale_m); the stone is drawn in
                             // the box only when it is there, else a note says where it is
   std::string title;        // "t = 0.500 s"
+  std::string footnote;     // a second line at the frame's foot (the scales), "" for none: one long
+                            // title was cut at both ends at 640 px
   int width_px = 1280, height_px = 540;
 };
 

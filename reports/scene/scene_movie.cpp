@@ -325,10 +325,18 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
     if (left_t_s_ >= 0 && f.t_s >= left_t_s_)
       std::snprintf(left, sizeof left, " — LEFT THE POND at %.3f s; the movie ends at %.3f s, %ld later contacts not shown", left_t_s_,
                     s.end_t_s, s.contacts_beyond);
-    char title[480];
-    std::snprintf(title, sizeof title, "t = %.3f s   %s%s%s   (colour ±%.2g mm, 3-D box ±%.2g mm; means of %d×%d cells)", f.t_s, speed,
-                  f.sunk ? ", the stone has sunk" : "", left, 1e3 * s.scale_m, 1e3 * s.near_z_m, top_block_, top_block_);
+    // Whether the stone is in a contact now: its centre can be a centimetre above the still level
+    // while a rim is wet (on its edge), and the dot alone read as a stone in flight.
+    char touching[48] = "";
+    for (std::size_t c = 0; c < contacts.size(); ++c)
+      if (f.t_s >= contacts[c].start_s && f.t_s <= contacts[c].end_s)
+        std::snprintf(touching, sizeof touching, ", IN CONTACT %zu", c + 1);
+    char title[520], foot[160];
+    std::snprintf(title, sizeof title, "t = %.3f s   %s%s%s%s", f.t_s, speed, touching, f.sunk ? ", the stone has sunk" : "", left);
+    std::snprintf(foot, sizeof foot, "colour ±%.2g mm, 3-D box ±%.2g mm; means of %d×%d cells", 1e3 * s.scale_m, 1e3 * s.near_z_m,
+                  top_block_, top_block_);
     p.title = title;
+    p.footnote = foot;
     gp << "set output '" << frame_name("frame", static_cast<long>(q) + 1, "png") << "'\n"
        << frame_plot_commands(p) << "set output\nprint 'frame " << q + 1 << "'\n";
   }

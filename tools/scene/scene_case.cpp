@@ -64,7 +64,7 @@ WaterScene read_water(TomlTable w, TomlTable& top) {
       m.precision(6);
       const auto [shown_sigma, shown_limit] = numbers_apart(st.sigma, st.grid_limit, 6);
       m << "the water would be unstable: sigma = c dt_s / cell_m = " << shown_sigma;
-      if (st.no_stable_step())
+      if (st.no_stable_step() && st.grid_limit == 0)
         m << ", but the " << st.stencil << " stencil has no stable step (a mode grows at every sigma > 0): change its weights";
       else {
         // The step it advises must pass the two-way check below too: under the stone the limit is lower.

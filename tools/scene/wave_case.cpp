@@ -45,8 +45,10 @@ WaterStability water_stability(const HeightFieldOptions& water) {
   double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
   range(water.nx, x0, x1);
   range(water.ny, y0, y1);
+  // A growing mode of the plane (limit 0) decides only where the grid holds it: the ranges' ends
+  // are modes of the grid (the symbol is bilinear in the cosines), so a 5 × 5 periodic grid, which
+  // holds no checkerboard, is stable with a stencil whose only growing mode is the checkerboard.
   s.grid_limit = std::max(s.limit, leapfrog_courant_limit(water.stencil, x0, x1, y0, y1));
-  if (s.limit == 0) s.grid_limit = 0;  // a growing mode: none of the grid's is spared in general (kept as the plane's)
   s.grid = std::to_string(water.nx) + " × " + std::to_string(water.ny) + " " + to_string(water.boundary);
   return s;
 }
@@ -55,8 +57,13 @@ std::string WaterStability::limit_kind() const { return unbounded() ? "unbounded
 
 std::string WaterStability::limit_text() const {
   if (unbounded()) return "stable at every sigma: the stencil couples no cells";
-  if (no_stable_step()) return "no stable step: a mode of the stencil grows at every sigma > 0";
-  char b[128];
+  char b[160];
+  if (no_stable_step()) {
+    if (grid_limit == 0) return "no stable step: a mode of the stencil grows at every sigma > 0";
+    std::snprintf(b, sizeof b, "stable up to %.6g on this grid's modes (the plane has a mode that grows at every sigma > 0)",
+                  grid_limit);
+    return b;
+  }
   // The grid's own limit is named where it shows in 4 digits (or where it is what keeps sigma stable).
   if (grid_limit > limit * (1 + 1e-4) || (sigma > limit && stable()))
     std::snprintf(b, sizeof b, "stable up to %.6g on this grid's modes, %.6g on the plane", grid_limit, limit);
@@ -69,9 +76,16 @@ std::string WaterStability::reason() const {
   char b[512];
   if (unbounded())
     std::snprintf(b, sizeof b, "the %s stencil couples no cells: stable at every sigma", stencil.c_str());
-  else if (no_stable_step())
+  else if (no_stable_step() && grid_limit == 0)
     std::snprintf(b, sizeof b, "the %s stencil has no stable step: a mode grows at every sigma > 0 (sigma = %.4f)",
                   stencil.c_str(), sigma);
+  else if (no_stable_step()) {
+    const auto [s_grid, on_grid] = numbers_apart(sigma, grid_limit, 6);
+    std::snprintf(b, sizeof b,
+                  "the %s stencil has a mode that grows at every sigma > 0 on the plane, but this %s grid holds none: "
+                  "sigma = %s %s %s, the limit over its modes (at every mu dt)",
+                  stencil.c_str(), grid.c_str(), s_grid.c_str(), stable() ? "is within" : "exceeds", on_grid.c_str());
+  }
   else if (sigma > limit && stable()) {
     const auto [s_plane, plane] = numbers_apart(sigma, limit, 6);
     const auto [s_grid, on_grid] = numbers_apart(sigma, grid_limit, 6);

@@ -122,6 +122,42 @@ BOOST_AUTO_TEST_CASE(the_stability_limit_is_taken_over_the_modes_the_grid_holds)
   }
 }
 
+BOOST_AUTO_TEST_CASE(a_growing_mode_the_grid_does_not_hold_does_not_make_it_unstable) {
+  // Oracle: the periodic operator's eigenvalues (Eigen). The stencil centre −0.9, orth −0.25 grows
+  // only at the checkerboard (symbol +0.1 at (π, π)): a 5 × 5 periodic grid holds no checkerboard,
+  // its eigenvalues all lie below 0 and its limit is 2/√(−λ_min); a 6 × 6 one holds it (λ_max > 0):
+  // no stable step. The 5 × 5 run was called UNSTABLE (exit 1) while its RMS did not grow.
+  const Stencil st{"anti", -0.9, -0.25, 0};
+  for (int n : {5, 6}) {
+    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n * n, n * n);
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        a(j * n + i, j * n + i) += st.centre;
+        for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}})
+          a(j * n + i, ((j + dj + n) % n) * n + (i + di + n) % n) += st.orth;
+      }
+    const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(a).eigenvalues();
+    HeightFieldOptions w;
+    w.nx = w.ny = n;
+    w.boundary = Boundary::periodic;
+    w.stencil = st;
+    w.wave_speed_m_s = 1;
+    w.cell_m = 0.1;
+    w.dt_s = 0.05;  // σ = 0.5
+    const WaterStability s = water_stability(w);
+    BOOST_TEST(s.no_stable_step());  // on the plane
+    if (ev.maxCoeff() < 0) {
+      BOOST_TEST(std::abs(s.grid_limit - 2 / std::sqrt(-ev.minCoeff())) <= 1e-12, n);
+      BOOST_TEST(s.stable(), n);
+      BOOST_TEST(s.reason().find("this " + s.grid + " grid holds none") != std::string::npos, s.reason());
+    } else {
+      BOOST_TEST(s.grid_limit == 0.0, n);
+      BOOST_TEST(!s.stable(), n);
+    }
+    BOOST_TEST((n == 5) == (ev.maxCoeff() < 0));
+  }
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace
