@@ -80,17 +80,22 @@ SectionOutput coupling_section(const Record& c) {
   for (const auto& name : c.strings("cases")) {
     const Record& r = c.at(name);
     const Record& s = r.at("settings");
+    const std::string forcing = s.has_text("scene_forcing") ? s.text("scene_forcing")
+                                : r.has_child("forcing") && r.at("forcing").has_text("scene_forcing")
+                                    ? r.at("forcing").text("scene_forcing")
+                                    : std::string();
     w.subheading(code(name) + ": " + s.text("title"));
     w.text(s.text("convention") + " convention, " + fmt(s.number("speed_m_s"), 3) + " m/s, " + s.text("stone") + "; pond " +
            fmt(s.number("nx")) + " × " + fmt(s.number("ny")) + " cells of " + fmt(100 * s.number("cell_m"), 3) + " cm, c = " +
            fmt(s.number("wave_speed_m_s"), 3) + " m/s, μ = " + fmt(s.number("damping_per_s"), 3) + " /s, " + s.text("stencil") +
            ", water step " + ms(s.number("water_dt_s")) + " (σ = " + fmt(s.number("courant"), 3) + ", coupled limit " +
            fmt(s.number("coupled_limit"), 4) + "), " +
-           // Reports before the forcing was stored here said "8 draught samples per step" whatever it was.
-           (!s.has_text("scene_forcing") ? fmt(s.number("draught_samples")) + " draught samples per step; "
-            : s.text("scene_forcing") == "displacement"
+           // The forcing as stored with the settings, or (reports before that) with the two-way
+           // run's forcing record; neither: the old wording.
+           (forcing.empty() ? fmt(s.number("draught_samples")) + " draught samples per step; "
+            : forcing == "displacement"
                 ? "displacement forcing, " + fmt(s.number("draught_samples")) + " draught samples per water step; "
-                : s.text("scene_forcing") + " forcing (a head per stone step); ") +
+                : forcing + " forcing (a head per stone step); ") +
            fmt(s.number("duration_s"), 3) + " s simulated.");
     w.verdict("Two-way against one-way", r.at("verdict"));
     w.bullet("Why: " + r.text("why") + ".");
@@ -334,9 +339,9 @@ SectionOutput grid_section(const Record& g) {
   w.text("Scene " + code(g.text("case")) + " (" + g.text("forcing") + " forcing) on its own cell of " + fmt(100 * g.number("base_cell_m"), 3) +
          " cm and on finer ones, the water step scaled with the cell (σ fixed), on a " + fmt(g.number("pond_m"), 3) + " m × " +
          fmt(g.number("pond_m"), 3) + " m pond around the first touch, until " +
-         (g.has_number("end_s") ? fmt(g.number("end_s"), 3) + " s" : std::string("the scene's end")) +
+         (g.has_number("end_s") ? fmt(g.number("end_s"), 3) + " s" : std::string("the scene's end (the stone never touched: nothing was run)")) +
          ". There is no exact solution of the coupled scene: what can be asked is whether its answers settle as the cells "
-         "shrink — whether each change is smaller than the one before. The stone is " + fmt(100 * g.number("stone_diameter_m"), 3) +
+         "shrink — whether every change is smaller than the one before. The stone is " + fmt(100 * g.number("stone_diameter_m"), 3) +
          " cm across. The head h the stone presses with is its wetted faces' pressure rastered on the cells (model/README.md §2.4), "
          "smoothed over a fixed number of cells, so a finer grid resolves a narrower, stronger patch: where the changes do not "
          "shrink, the scene's water response (and through it the stone's contacts) is a property of the grid, not of the stone.");
@@ -358,7 +363,7 @@ SectionOutput grid_section(const Record& g) {
 
 // ---- 7. speed ---------------------------------------------------------------------------------
 
-SectionOutput speed_section(const Record& s) {
+SectionOutput speed_section(const Record& s, int number) {
   // The sweep's stepper: the adaptive scheme by its tolerance, a fixed one by its contact step
   // (records written before the sweep named its scheme: the contact step).
   auto sweep_stepper_words = [](const Record& r) {
@@ -366,7 +371,7 @@ SectionOutput speed_section(const Record& s) {
     return (r.has_text("sweep_scheme") ? r.text("sweep_scheme") + ", " : std::string()) + "contact step " +
            fmt(r.number("sweep_contact_dt_s"), 2) + " s";
   };
-  SectionWriter w(s, "7. Speed");
+  SectionWriter w(s, std::to_string(number) + ". Speed");
   w.text("Measured in one run of this binary, on a machine with " + fmt(s.number("cores")) + " cores and a 1-minute load average of " +
          fmt(s.number("load_before"), 3) + " before and " + fmt(s.number("load_after"), 3) + " after (other jobs share the cores: "
          "wall times include their share). The scene " + code(s.text("case")) + " (" + fmt(s.number("scene_frames")) +
@@ -463,8 +468,8 @@ Figure still_figure(const std::string& name, const Record& r) {
   return fig;
 }
 
-SectionOutput frames_section(const Record& f) {
-  SectionWriter w(f, "8. Still frames");
+SectionOutput frames_section(const Record& f, int number) {
+  SectionWriter w(f, std::to_string(number) + ". Still frames");
   w.text("For each scene the most telling frame: the one with the most disturbed water (cells with |z| above " +
          pct(f.number("threshold_fraction")) + " of the scene's largest |z|) among the frames before a cell above that height reaches the pond's edge (smaller waves may reach it first). "
          "Left, the water from above (the dashed square is the right panel's window), the stone's track (line), its first "
@@ -519,9 +524,11 @@ RenderedReport render_scene_report(const StoredReport& stored) {
   append(out, convergence_section(secs.at("convergence")));
   append(out, rings_section(secs.at("rings")));
   append(out, shortcuts_section(secs.at("shortcuts")));
-  if (secs.has_child("grid")) append(out, grid_section(secs.at("grid")));  // reports before it have none
-  append(out, speed_section(secs.at("speed")));
-  append(out, frames_section(secs.at("frames")));
+  // Reports before the grid section have none: their speed and frames keep their numbers 6 and 7.
+  const int after = secs.has_child("grid") ? 7 : 6;
+  if (secs.has_child("grid")) append(out, grid_section(secs.at("grid")));
+  append(out, speed_section(secs.at("speed"), after));
+  append(out, frames_section(secs.at("frames"), after + 1));
   out.markdown += provenance_markdown(stored);
   for (const auto& f : out.figures)
     if (f.name.rfind("still_", 0) == 0) out.headline_figure = f.name;  // the last still: the front page's picture

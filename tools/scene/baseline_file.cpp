@@ -149,6 +149,7 @@ BounceBaseline read_baseline(const std::string& path) {
   if (members != 0 && (members < 2 || members > 64 || members % 2 != 0))
     t.fail("ensemble_members", "must be 0 (single runs only) or even, in [2, 64]");
   b.ensemble_members = static_cast<int>(members);
+  const bool members_given = t.has("ensemble_members");
   t.finish();
 
   if (auto r = top.maybe_table("result")) {
@@ -200,6 +201,10 @@ BounceBaseline read_baseline(const std::string& path) {
     }
     r->finish();
   }
+  // A baseline written before ensembles (no ensemble_members, a [result] without ensemble_counts)
+  // is compared on single runs as it was made: refusing it sent users to `--update`, which would
+  // have replaced its golden counts with whatever the code gives now. regress says so.
+  if (!members_given && b.has_result && b.ensembles.empty()) b.ensemble_members = 0;
   top.finish();
   return b;
 }
@@ -214,15 +219,18 @@ fs::path resolve_case_file(const BounceBaseline& b) {
   // FAIL from the copy, with no word of which case ran).
   const fs::path here = fs::absolute(locate_input(b.file)).parent_path();
   const fs::path root = here.parent_path().parent_path();
-  if (const fs::path alt = root / c; fs::exists(alt)) return alt;
+  // The tree's root only where the baseline lies in <root>/cases/baselines/ (a baseline in a folder
+  // of its own names its case beside it, even where two folders up holds a file of that name).
+  const bool in_tree = here.filename() == "baselines" && here.parent_path().filename() == "cases";
+  if (const fs::path alt = root / c; in_tree && fs::exists(alt)) return alt;
   // A baseline kept in a folder of its own names its case beside it ("mycase.toml").
   if (const fs::path beside = here / c; fs::exists(beside)) return beside;
   if (fs::exists(c)) return fs::absolute(c);
   if (const fs::path shipped = locate_input(c); fs::exists(shipped)) return shipped;
   throw_input_error(b.file, 0, "baseline.case",
-                    "case file '" + b.case_file + "' not found under " + (root.empty() ? std::string(".") : root.string()) +
-                        " (the folder holding the baseline's cases/), beside the baseline (" + here.string() +
-                        "), in the working directory, or among the shipped files");
+                    "case file '" + b.case_file + "' not found " +
+                        (in_tree ? "under " + root.string() + " (the folder holding the baseline's cases/), " : std::string()) +
+                        "beside the baseline (" + here.string() + "), in the working directory, or among the shipped files");
 }
 
 BounceSweepSpec sweep_of(const BounceBaseline& b) {

@@ -40,7 +40,7 @@ BOOST_AUTO_TEST_CASE(a_baseline_finds_its_case_beside_it_and_names_every_place_w
   } catch (const InputError& e) {
     const std::string m = e.what();
     BOOST_TEST(m.find("beside the baseline (" + fs::absolute(s.dir).string() + "), in the working directory") != std::string::npos, m);
-    BOOST_TEST(m.find("case file 'nowhere.toml' not found under ") != std::string::npos, m);
+    BOOST_TEST(m.find("case file 'nowhere.toml' not found beside the baseline") != std::string::npos, m);
     BOOST_TEST(m.find("among the shipped files") != std::string::npos, m);
   }
 }
@@ -114,13 +114,13 @@ BOOST_AUTO_TEST_CASE(a_damaged_result_is_bad_input_naming_its_key) {
 }
 
 BOOST_AUTO_TEST_CASE(ensembles_are_read_written_and_read_back_and_a_wrong_count_is_refused) {
-  // Oracle: the shipped file's text (its first row, the 8 members at 0 rev/s, is all 1) and the
+  // Oracle: the shipped file's text (its first row, the 16 members at 0 rev/s, is all 1) and the
   // identity of a write and a read.
   ScratchDir s("stoneskip_baseline_ensembles");
   const BounceBaseline b = read_baseline("cases/baselines/spin_paper_realtime.toml");
-  BOOST_TEST(b.ensemble_members == 8);
+  BOOST_TEST(b.ensemble_members == 16);
   BOOST_REQUIRE(b.ensembles.size() == b.values.size());
-  BOOST_TEST((b.ensembles[0] == std::vector<int>(8, 1)));
+  BOOST_TEST((b.ensembles[0] == std::vector<int>(16, 1)));
   BounceSweepResult r;
   r.counts = b.counts;
   r.thresholds = b.thresholds;
@@ -128,19 +128,47 @@ BOOST_AUTO_TEST_CASE(ensembles_are_read_written_and_read_back_and_a_wrong_count_
   const fs::path again = s.write("again.toml", baseline_text(b, r, "test"));
   const BounceBaseline c = read_baseline(again.string());
   BOOST_TEST((c.ensembles == b.ensembles));
-  BOOST_TEST(c.ensemble_members == 8);
+  BOOST_TEST(c.ensemble_members == 16);
   std::string text = read_text_file(again.string());
-  const auto at = text.find("ensemble_members = 8");
+  const auto at = text.find("ensemble_members = 16");
   BOOST_REQUIRE(at != std::string::npos);
-  const fs::path six = s.write("six.toml", text.replace(at, 20, "ensemble_members = 6"));
+  const fs::path six = s.write("six.toml", text.replace(at, 21, "ensemble_members = 6"));
   try {
     read_baseline(six.string());
-    BOOST_ERROR("72 counts were taken for 9 values of 6");
+    BOOST_ERROR("144 counts were taken for 9 values of 6");
   } catch (const InputError& e) {
     const std::string m = e.what();
     BOOST_TEST(m.find("result.ensemble_counts") != std::string::npos, m);
-    BOOST_TEST(m.find("54 in all (got 72)") != std::string::npos, m);
+    BOOST_TEST(m.find("54 in all (got 144)") != std::string::npos, m);
   }
+}
+
+BOOST_AUTO_TEST_CASE(a_baseline_written_before_ensembles_is_compared_on_single_runs) {
+  // Oracle: the file's own keys. No ensemble_members and a [result] without ensemble_counts: 0
+  // (it was refused, and `--update` would have replaced its golden counts); without [result], the
+  // default (a new baseline gets ensembles when first written).
+  ScratchDir s("stoneskip_baseline_old");
+  std::string text = read_text_file("cases/baselines/spin_physical_realtime.toml");
+  const auto m = text.find("ensemble_members = 16\n");
+  BOOST_REQUIRE(m != std::string::npos);
+  text.erase(m, 22);
+  const auto e = text.find("ensemble_counts = [");
+  BOOST_REQUIRE(e != std::string::npos);
+  const fs::path old = s.write("old.toml", text.substr(0, e) + text.substr(text.find("]\n", e) + 2));
+  BOOST_TEST(read_baseline(old.string()).ensemble_members == 0);
+  const fs::path fresh = s.write("fresh.toml", text.substr(0, text.find("\n[result]") + 1));
+  BOOST_TEST(read_baseline(fresh.string()).ensemble_members == kDefaultEnsembleMembers);
+}
+
+BOOST_AUTO_TEST_CASE(a_baseline_in_a_folder_of_its_own_finds_its_case_beside_it_first) {
+  // Oracle: the folder listing. T/a/b/base.toml naming "mycase.toml", which exists beside it and
+  // at T/mycase.toml (two folders up): the one beside it, as the baseline is not in <T>/cases/baselines/.
+  ScratchDir s("stoneskip_baseline_own_folder");
+  fs::create_directories(s.dir / "a" / "b");
+  s.write("mycase.toml", read_text_file("cases/studies/convergence_bounce.toml"));
+  s.write("a/b/mycase.toml", read_text_file("cases/studies/convergence_bounce.toml"));
+  const fs::path b = baseline_naming(s, "a/b/base.toml", "cases/baselines/spin_physical_realtime.toml", "mycase.toml");
+  BOOST_TEST(fs::equivalent(resolve_case_file(read_baseline(b.string())), s.dir / "a" / "b" / "mycase.toml"));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

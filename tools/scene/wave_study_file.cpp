@@ -35,7 +35,7 @@ std::vector<int> grid_list(TomlTable& t, const std::string& key, const std::vect
 // error read as "order not established") measured nothing. The 3×3 stencils' symbols are extreme
 // at k ∈ {0, π}², modes of every even grid, so verification/waves/stability.hpp's 64-wavenumber
 // grid decides for each run's own grid.
-void refuse_unstable_run(TomlTable& t, const std::string& key, const std::vector<std::string>& stencils,
+void refuse_unstable_run(const std::string& file, const std::string& key, const std::vector<std::string>& stencils,
                          const WaveProblem& p, int n, long steps) {
   const double dt = p.t_end_s / static_cast<double>(steps);
   const double sigma = p.wave_speed_m_s * dt * n / p.length_m, mu_dt = p.damping_per_s * dt;
@@ -47,7 +47,7 @@ void refuse_unstable_run(TomlTable& t, const std::string& key, const std::vector
                   "sigma = %.4g on the %d² grid (%ld steps) is above %s's stability limit %.4g at mu dt = %.3g: the "
                   "leapfrog is unstable there, so its error measures no order",
                   sigma, n, steps, name.c_str(), stability_limit(st, mu_dt), mu_dt);
-    t.fail(key, b);
+    throw_input_error(file, 0, key, b);
   }
 }
 
@@ -164,11 +164,6 @@ WaveStudyFile load_wave_study_file(const std::string& path, const std::vector<st
     };
     refuse_above("time_steps", time_updates, "time sequence (time_grid² × Σ time_steps)");
     refuse_above("both_grids", both_updates, "space–time sequence (N² × t_end c N / (σ L) on each grid)");
-    // Every run stable (the steps as run_convergence_study takes them).
-    for (long n : v.time_steps) refuse_unstable_run(*c, "time_steps", o.stencils, o.problem, v.time_grid, n);
-    for (int n : v.both_grids)
-      refuse_unstable_run(*c, "both_sigma", o.stencils, o.problem, n,
-                          std::lround(o.problem.t_end_s * o.problem.wave_speed_m_s / (v.both_sigma * o.problem.length_m / n)));
     v.fit_points = static_cast<int>(count_in(*c, "fit_points", v.fit_points, 0, 100));
     if (v.fit_points == 1) c->fail("fit_points", "a fit needs at least 2 points (0: all)");
     v.judgement.expected_order = c->number_or("expected_order", v.judgement.expected_order);
@@ -253,6 +248,13 @@ WaveStudyFile load_wave_study_file(const std::string& path, const std::vector<st
     o.speed.work.problem = o.problem;
   }
   top.finish();
+  // Every convergence run stable (the steps as run_convergence_study takes them), once all tables
+  // are read: a [problem] alone (t_end_s = 1.5) put the default time sequence at σ = 1.5.
+  const ConvergenceStudyOptions& v = o.convergence;
+  for (long n : v.time_steps) refuse_unstable_run(f.file, "convergence.time_steps", o.stencils, o.problem, v.time_grid, n);
+  for (int n : v.both_grids)
+    refuse_unstable_run(f.file, "convergence.both_sigma", o.stencils, o.problem, n,
+                        std::lround(o.problem.t_end_s * o.problem.wave_speed_m_s / (v.both_sigma * o.problem.length_m / n)));
   std::string why;
   if (!o.valid(&why)) throw_input_error(f.file, 0, "", why);
   return f;

@@ -93,6 +93,22 @@ BOOST_AUTO_TEST_CASE(a_convergence_run_above_the_stability_limit_is_refused) {
   BOOST_TEST(m.find("unstable") != std::string::npos, m);
   // Just inside every shipped stencil's limit (nine_point_isotropic's √3/2 is not the lowest):
   BOOST_TEST(refusal({"convergence.both_sigma=0.7"}) == "");
+  // The problem alone can make the default sequence unstable: checked once every table is read
+  // (t_end_s = 1.5 put the quick study's 64 steps on 64² at σ = 1.5, with no [convergence] change).
+  std::ifstream in("cases/studies/waves_quick.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto from = text.find("[convergence]"), to = text.find("\n[", from + 1);
+  BOOST_REQUIRE(from != std::string::npos && to != std::string::npos);
+  text.erase(from, to + 1 - from);  // no [convergence]: its defaults
+  stoneskip::ScratchDir dir("stoneskip_study_no_convergence");
+  const auto file = dir.write("s.toml", text);
+  try {
+    stoneskip::load_wave_study_file(file.string(), {"problem.t_end_s=1.5"});
+    BOOST_ERROR("an unstable default sequence was taken");
+  } catch (const stoneskip::InputError& e) {
+    m = e.what();
+    BOOST_TEST(m.find("convergence.time_steps") != std::string::npos, m);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(a_refinement_sequence_out_of_order_or_repeated_is_refused) {

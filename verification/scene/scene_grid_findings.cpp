@@ -67,8 +67,14 @@ Record scene_grid_findings(const SceneStudiesOptions& o, const ProgressFactory& 
     out.set("end_s", end_s);
     out.set("still_first_start_s", k.start_s);
     out.set("still_first_duration_s", k.duration_s());
-    auto ticker = start_progress(progress, "scene: grids", g.cell_fractions.size());
-    for (double f : g.cell_fractions) {
+    // The grids that fit, known before any run: fewer than three decide nothing, so none is run.
+    std::vector<double> fractions;
+    for (double f : g.cell_fractions)
+      if (static_cast<int>(std::ceil(g.pond_m / (base.water->field.cell_m * f))) + 1 <= kMaxGridSide) fractions.push_back(f);
+    left_out = static_cast<int>(g.cell_fractions.size() - fractions.size());
+    if (fractions.size() < 3) fractions.clear();
+    auto ticker = start_progress(progress, "scene: grids", fractions.size());
+    for (double f : fractions) {
       SceneOptions s = base;
       s.duration_s = end_s;
       s.energy_budget = true;  // the pressure work W (solvers/scene/wave_energy.hpp)
@@ -76,11 +82,6 @@ Record scene_grid_findings(const SceneStudiesOptions& o, const ProgressFactory& 
       w.cell_m = base.water->field.cell_m * f;
       w.dt_s = base.water->field.dt_s * f;  // σ fixed
       w.nx = w.ny = static_cast<int>(std::ceil(g.pond_m / w.cell_m)) + 1;
-      if (w.nx > kMaxGridSide) {
-        ++left_out;
-        ticker->tick();
-        continue;
-      }
       s.water->placement.origin_x_m = k.first_touch_m.x() - 0.25 * g.pond_m;
       s.water->placement.origin_y_m = k.first_touch_m.y() - 0.5 * g.pond_m;
       const SceneSummary r = run_scene(s);
@@ -94,16 +95,22 @@ Record scene_grid_findings(const SceneStudiesOptions& o, const ProgressFactory& 
     const std::size_t n = t.rows();
     in.set("grids", double(n));
     if (n < 3) {
-      reason = "only " + std::to_string(n) + " grids could be run (finer ones exceed " + std::to_string(kMaxGridSide) + "² cells)";
+      reason = std::to_string(g.cell_fractions.size() - left_out) + " grids fit under " + std::to_string(kMaxGridSide) +
+               "² cells, fewer than the three a change against the one before needs: none was run";
     } else {
-      // The last two differences of each quantity as the cells halve: ratio < 1 is shrinking.
+      // Each change of each quantity against the one before as the cells get finer: the largest
+      // such ratio must be < 1 (every change shrinking). A change after none is NaN (not < 1).
       std::vector<std::string> growing, shrinking;
       for (const GridQuantity& q : kQuantities) {
         const auto v = t.column(q.key);
-        const double d_prev = std::abs(v[n - 2] - v[n - 3]), d_last = std::abs(v[n - 1] - v[n - 2]);
-        const double ratio = d_prev > 0 ? d_last / d_prev : (d_last > 0 ? kNaN : 0.0);
+        double ratio = 0;
+        for (std::size_t j = 2; j < n; ++j) {
+          const double d_prev = std::abs(v[j - 1] - v[j - 2]), d = std::abs(v[j] - v[j - 1]);
+          const double r = d_prev > 0 ? d / d_prev : (d > 0 ? kNaN : 0.0);
+          ratio = std::isnan(ratio) || std::isnan(r) ? kNaN : std::max(ratio, r);
+        }
         in.set(std::string("ratio_") + q.key, ratio);
-        (ratio < 1 ? shrinking : growing).push_back(std::string(q.words) + " (last change " + num(ratio, 3) + "× the one before)");
+        (ratio < 1 ? shrinking : growing).push_back(std::string(q.words) + " (a change " + num(ratio, 3) + "× the one before)");
       }
       reason = growing.empty() ? "each quantity's change shrinks with the finer grid: " + joined(shrinking)
                                : "changes that do not shrink as the cells get finer: " + joined(growing);

@@ -18,11 +18,17 @@
 // speed × (1 + 1e-9) gave 12 "regressions"), and a verdict on a chaotic count is decided on
 // ensembles, never run against run (model/README.md §2.4). With ensemble_members > 0 every grid
 // value also keeps an ensemble of nudged throws (speed × (1 ± ε), ε log-spaced over [1e-9, 1e-6]):
-//  * a grid value's count is a regression only where the two ensembles' mean counts differ by
-//    Welch's interval (verification/study/ensemble_difference.hpp) held to 95 % over all the values
-//    compared together (Bonferroni); ensembles without spread are compared exactly;
-//  * where an ensemble has spread (the count is sensitive there), a changed single count, and a
-//    threshold gone, moved or new in a cell with such an end, are tolerated and said.
+//  * a value is sensitive where its *stored* ensemble has spread (noise that appears only in the new
+//    run loosens nothing);
+//  * on a robust value the single count, the ensemble (Welch) and the number of failed members are
+//    all held;
+//  * on a sensitive value the count is a regression only where the two ensembles' mean counts
+//    differ by Welch's interval (verification/study/ensemble_difference.hpp) held to 95 % over the
+//    sensitive values together (Bonferroni), with at least half the members run on each side; a
+//    changed single count, and failures moving among the members, are tolerated and said;
+//  * a threshold gone, moved or new in a cell with a sensitive end is tolerated and said, and in
+//    such a cell or one holding more changes (its count past the change is not the grid's at the
+//    cell's end) the count just past a change is not held run against run.
 #include <optional>
 #include <string>
 #include <vector>

@@ -118,6 +118,40 @@ BOOST_AUTO_TEST_CASE(the_count_past_a_change_is_not_held_run_against_run_with_en
   BOOST_TEST(!c.passed);
 }
 
+BOOST_AUTO_TEST_CASE(on_a_robust_value_the_single_count_and_the_failures_are_held_too) {
+  // The stored ensemble at 10 had no spread: a changed single count alone, or a new solver failure
+  // of the grid throw, is a regression though the ensembles agree (it was tolerated as "sensitive").
+  Pair single({1, 1, 2, 3}, {kOne, kOne, kTwo, kThree}, {1, 2, 2, 3}, {kOne, kOne, kTwo, kThree});
+  BaselineComparison c = compare_with_baseline(single.stored, single.now);
+  BOOST_TEST(!c.passed);
+  BOOST_TEST(mentions(c.regressions, "count at spin_rev_s = 10 rev/s: stored 1, now 2"));
+  Pair failed({1, 1, 2, 3}, {kOne, kOne, kTwo, kThree}, {1, -1, 2, 3}, {kOne, kOne, kTwo, kThree});
+  failed.now.failures[1] = "step size collapsed";
+  c = compare_with_baseline(failed.stored, failed.now);
+  BOOST_TEST(mentions(c.regressions, "now -1 (solver failed: step size collapsed)"));
+  // Nudged throws that fail where none did: 2 of 8 now.
+  std::vector<int> two_failed = kThree;
+  two_failed[0] = two_failed[5] = -1;
+  Pair members({1, 1, 2, 3}, {kOne, kOne, kTwo, kThree}, {1, 1, 2, 3}, {kOne, kOne, kTwo, two_failed});
+  c = compare_with_baseline(members.stored, members.now);
+  BOOST_TEST(mentions(c.regressions, "2 of its 8 nudged throws failed now, 0 stored"));
+  // Sensitivity is the stored run's: noise that appears only now does not loosen the value.
+  Pair noisy({1, 1, 2, 3}, {kOne, kOne, kTwo, kThree}, {1, 2, 2, 3}, {kOne, kMixed, kTwo, kThree});
+  c = compare_with_baseline(noisy.stored, noisy.now);
+  BOOST_TEST(c.sensitive_points == 0);
+  BOOST_TEST(mentions(c.regressions, "stored 1, now 2"));
+}
+
+BOOST_AUTO_TEST_CASE(a_lone_changes_count_past_it_is_held) {
+  // In [10, 20] the grid goes 1 → 2 and the stored change is 1 → 2: a lone change, so 1 → 3 now
+  // is a regression (the loosening is for cells holding more changes, or with a sensitive end).
+  Pair p({1, 1, 2, 3}, {kOne, kOne, kTwo, kThree}, {1, 1, 2, 3}, {kOne, kOne, kTwo, kThree});
+  p.stored.thresholds = {{14.0, 14.25, 1, 2}};
+  p.now.thresholds = {{14.25, 14.5, 1, 3}};
+  const BaselineComparison c = compare_with_baseline(p.stored, p.now);
+  BOOST_TEST(!c.passed);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace

@@ -81,15 +81,15 @@ BOOST_AUTO_TEST_CASE(a_speed_target_is_met_at_or_above_it) {
 }
 
 BOOST_AUTO_TEST_CASE(the_scene_converges_under_refinement_only_where_every_change_shrinks) {
-  // Oracle: the rule's definition (verification/scene/scene_grid_findings.cpp): the last change of
-  // each quantity over the one before must be below 1; a NaN ratio (a change after none) is not;
+  // Oracle: the rule's definition (verification/scene/scene_grid_findings.cpp): the largest change
+  // of each quantity over the one before must be below 1; a NaN ratio (a change after none) is not;
   // fewer than three grids decide nothing.
   Record in;
   in.set("grids", 4.0).set("ratio_pressure_work_J", 0.5).set("ratio_first_duration_s", 0.99).set("ratio_first_exit_m_s", 0.0);
   BOOST_TEST(decide("grid_differences", in) == "the changes shrink as the cells halve");
   in.set("ratio_first_duration_s", 1.0);
   BOOST_TEST(decide("grid_differences", in) ==
-             "does not converge: first_duration_s change no less with each halving of the cells");
+             "does not converge: first_duration_s change no less as the cells get finer");
   in.set("ratio_first_duration_s", 0.5).set("ratio_pressure_work_J", kNaN);
   BOOST_TEST(decide("grid_differences", in).find("does not converge: pressure_work_J") == 0u);
   in.set("grids", 2.0);

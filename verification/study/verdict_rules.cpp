@@ -264,14 +264,15 @@ const std::map<std::string, Rule>& rules() {
        }},
       {"grid_differences",
        [](const Record& in) {
-         // verification/scene/scene_grid_findings.cpp: each quantity's last change over the one
-         // before as the cells halve (ratio < 1: shrinking); fewer than 3 grids decide nothing.
+         // verification/scene/scene_grid_findings.cpp: each quantity's largest change over the one
+         // before as the cells get finer (ratio < 1: every change shrinking); fewer than 3 grids
+         // decide nothing.
          if (in.number("grids") < 3) return std::string("not decided: fewer than three grids");
          std::vector<std::string> growing;
          for (const char* q : {"pressure_work_J", "first_duration_s", "first_exit_m_s"})
            if (!(in.number(std::string("ratio_") + q) < 1)) growing.emplace_back(q);
          return growing.empty() ? std::string("the changes shrink as the cells halve")
-                                : "does not converge: " + joined(growing) + " change no less with each halving of the cells";
+                                : "does not converge: " + joined(growing) + " change no less as the cells get finer";
        }},
       {"error_split",
        [](const Record& in) {
