@@ -157,6 +157,20 @@ SceneStudyFile load_scene_study_file(const std::string& path, const std::vector<
     s.time_tolerance_s = positive(*t, "time_tolerance_s", s.time_tolerance_s);
     t->finish();
   }
+  if (auto t = top.maybe_table("grid")) {
+    SceneGridOptions& g = o.grid;
+    known_case(*t, "case", g.case_name);
+    g.cell_fractions = positive_list(*t, "cell_fractions", g.cell_fractions);
+    if (g.cell_fractions.size() < 3) t->fail("cell_fractions", "needs at least three (a change against the one before)");
+    for (std::size_t i = 0; i < g.cell_fractions.size(); ++i)
+      if (g.cell_fractions[i] > 1 || (i > 0 && !(g.cell_fractions[i] < g.cell_fractions[i - 1])))
+        t->fail("cell_fractions", "fractions of the case's cell in (0, 1], decreasing strictly (coarse to fine)");
+    g.pond_m = positive(*t, "pond_m", g.pond_m);
+    t->require_in("pond_m", g.pond_m, 0.01, 1000.0);
+    g.after_s = t->number_or("after_s", g.after_s);
+    t->require_in("after_s", g.after_s, 0.0, 100.0);
+    t->finish();
+  }
   {
     HeadlineSpeedOptions& h = o.speed.headline;
     h.scene = o.cases.front().scene;
