@@ -36,6 +36,8 @@ BOOST_AUTO_TEST_CASE(the_quick_preset_resolves_as_written) {
   BOOST_TEST((o.speed.headline.sweep.spins_rev_s == std::vector<double>{0.0, 20.0, 40.0}));       // [0, 40, 20]
   BOOST_TEST((o.speed.headline.sweep.attack_angles_deg == std::vector<double>{10.0, 20.0}));       // [10, 20, 10]
   BOOST_TEST(o.shortcuts.epsilons_m.size() == 1u);
+  BOOST_TEST((o.grid.cell_fractions == std::vector<double>{1.0, 0.5, 0.25}));  // [grid]
+  BOOST_TEST(o.grid.pond_m == 2.0);
 }
 
 BOOST_AUTO_TEST_CASE(bad_values_are_one_line_errors_naming_the_key) {
@@ -50,6 +52,9 @@ BOOST_AUTO_TEST_CASE(bad_values_are_one_line_errors_naming_the_key) {
   names(error_of({"stability.stencil=\"six_point\""}), "stability.stencil");
   names(error_of({"convergence.stencils=[]"}), "convergence.stencils");
   names(error_of({"frames.treshold_fraction=0.1"}), "frames.treshold_fraction");
+  names(error_of({"grid.cell_fractions=[1.0, 1.0, 0.5]"}), "grid.cell_fractions");  // not decreasing
+  names(error_of({"grid.cell_fractions=[1.0, 0.5]"}), "grid.cell_fractions");       // fewer than three
+  names(error_of({"grid.case=\"nowhere\""}), "grid.case");
 }
 
 BOOST_AUTO_TEST_SUITE_END()
