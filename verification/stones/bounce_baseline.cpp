@@ -109,16 +109,20 @@ BaselineComparison compare_with_baseline(const BounceBaseline& stored, const Bou
   }
   // A threshold in a grid cell with a sensitive end is the bisection's pick among changes a nudge
   // moves: its difference is tolerated and said.
-  auto in_sensitive_cell = [&](const CountThreshold& t) {
+  // The grid cell [values[i], values[i + 1]] holding a threshold: i, or nv where none does.
+  auto cell_of = [&](const CountThreshold& t) {
     for (std::size_t i = 0; i + 1 < nv; ++i)
-      if (t.lo >= stored.values[i] && t.hi <= stored.values[i + 1]) return sensitive[i] || sensitive[i + 1];
-    return false;
+      if (t.lo >= stored.values[i] && t.hi <= stored.values[i + 1]) return i;
+    return nv;
+  };
+  auto in_sensitive_cell = [&](const CountThreshold& t) {
+    const std::size_t i = cell_of(t);
+    return i < nv && (sensitive[i] || sensitive[i + 1]);
   };
   // The cell holds more changes than this one: the count past it is not the grid's at the cell's end.
   auto more_in_cell = [&](const CountThreshold& t) {
-    for (std::size_t i = 0; i + 1 < nv; ++i)
-      if (t.lo >= stored.values[i] && t.hi <= stored.values[i + 1]) return t.count_above != stored.counts[i + 1];
-    return false;
+    const std::size_t i = cell_of(t);
+    return i < nv && t.count_above != stored.counts[i + 1];
   };
   auto report = [&](const CountThreshold& t, const std::string& line) {
     if (in_sensitive_cell(t))
