@@ -9,13 +9,30 @@
 
 namespace stoneskip {
 
+namespace {
+
+// The least of 1, 2, 5 × 10^k at or above x > 0: a tick step that leaves at most about four labels
+// on a narrow axis.
+double nice_step(double x) {
+  if (!(x > 0)) return 1;
+  const double p = std::pow(10.0, std::floor(std::log10(x)));
+  for (const double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * p >= x * (1 - 1e-12)) return m * p;
+  return 10 * p;
+}
+
+}  // namespace
+
 std::string frame_plot_commands(const FramePlot& p) {
   std::ostringstream g;
   g.precision(9);
   const double s = p.scale_m > 0 ? p.scale_m : 1e-3;
   const std::string stone_pt = p.stone_sunk ? "pt 6 ps 1.6 lw 2" : "pt 7 ps 1.4";
+  // With the side view the panels are placed by hand (screen fractions, below the title's line):
+  // the pond 44 %, the 3-D view 34 %, the side view the rest.
+  const bool side = !p.side_faces.empty();
   g << "reset\n"
-    << "set multiplot layout 1,2 title " << gnuplot_quote(p.title) << "\n"
+    << "set multiplot" << (side ? "" : " layout 1,2") << " title " << gnuplot_quote(p.title) << "\n"
     << "set palette defined (-1 '#08306b', -0.4 '#4292c6', 0 '#f7fbff', 0.4 '#ef6548', 1 '#7f0000')\n"
     << "set cbrange [" << -s << ":" << s << "]\nset cbtics (";
   for (int k = -2; k <= 2; ++k) {  // ticks labelled in mm
@@ -26,7 +43,9 @@ std::string frame_plot_commands(const FramePlot& p) {
   g << ")\n";
   if (!p.footnote.empty()) g << "set label 4 " << gnuplot_quote(p.footnote) << " at screen 0.01, screen 0.02 left front\n";
   // Left: the pond from above.
-  g << "set size ratio -1\nset xrange [" << p.pond_x0_m << ":" << p.pond_x1_m << "]\nset yrange [" << p.pond_y0_m << ":"
+  if (side) g << "set origin 0,0\nset size ratio -1 0.44,0.94\n";
+  else g << "set size ratio -1\n";
+  g << "set xrange [" << p.pond_x0_m << ":" << p.pond_x1_m << "]\nset yrange [" << p.pond_y0_m << ":"
     << p.pond_y1_m << "]\nset xlabel 'x (m, along the throw)'\nset ylabel 'y (m)'\nset cblabel 'z (mm)'\n"
     << "set object 1 rectangle from " << p.near_x0_m << "," << p.near_y0_m << " to " << p.near_x1_m << "," << p.near_y1_m
     << " front fillstyle empty border lc rgb '#555555' dt 2\n";
@@ -38,7 +57,10 @@ std::string frame_plot_commands(const FramePlot& p) {
   g << "\n";
   // Right: the water around the stone, oblique, its heights on the window's own scale.
   const double zs = p.near_z_m > 0 ? p.near_z_m : 2 * s;
-  g << "unset object 1\nunset label 1\nunset label 4\nunset colorbox\nset size noratio\nset view 52, 28, 1, 1\nset xyplane at " << -zs
+  g << "unset object 1\nunset label 1\nunset label 4\nunset colorbox\n";
+  if (side) g << "set origin 0.42,0\nset size noratio 0.36,0.94\n";
+  else g << "set size noratio\n";
+  g << "set view 52, 28, 1, 1\nset xyplane at " << -zs
     << "\nset border 4095 lc rgb '#888888'\nset xrange [" << p.near_x0_m << ":" << p.near_x1_m << "]\nset yrange [" << p.near_y0_m
     << ":" << p.near_y1_m << "]\nset zrange [" << -zs << ":" << zs << "]\nset xlabel 'x (m)'\nset ylabel 'y (m)'\n"
     << "set zlabel 'z (mm)' rotate\n";
@@ -55,10 +77,27 @@ std::string frame_plot_commands(const FramePlot& p) {
     const double h = p.stone_z_m;
     std::snprintf(note, sizeof note, "stone's centre: %.3g cm %s the still level%s", 100 * std::abs(h), h >= 0 ? "above" : "below",
                   in_window ? (h >= 0 ? " (drawn on the box's lid)" : " (drawn on the box's floor)") : ", outside this window");
-    g << "set label 3 " << gnuplot_quote(note) << " at screen 0.56, screen 0.06 left front\n";
+    g << "set label 3 " << gnuplot_quote(note) << " at screen " << (side ? 0.44 : 0.56) << ", screen 0.06 left front\n";
   }
-  g << "splot " << p.near << " with pm3d notitle\n"
-    << "unset multiplot\n";
+  g << "splot " << p.near << " with pm3d notitle\n";
+  if (side) {
+    // Third: the stone from the side, true scale; the water drawn over it, translucent, so that
+    // the part under the surface shows as under it.
+    g << "unset label 2\nunset label 3\nunset pm3d\nset surface\nset origin 0.76,0.03\nset size ratio -1 0.24,0.88\n"
+      << "set border 3 lc rgb '#444444'\nset tics nomirror\nset xtics " << nice_step((p.side_s1_cm - p.side_s0_cm) / 4)
+      << "\nset ytics auto\nset xrange [" << p.side_s0_cm << ":"
+      << p.side_s1_cm << "]\nset yrange [" << p.side_z0_cm << ":" << p.side_z1_cm << "]\n"
+      << "set xlabel 'along the throw (cm)'\nset ylabel 'z (cm)'\n"
+      << "set label 5 'side, true scale' at graph 0.03, graph 0.96 left front\n";
+    if (!p.side_note.empty()) g << "set label 6 " << gnuplot_quote(p.side_note) << " at graph 0.03, graph 0.06 left front\n";
+    g << "plot " << p.side_faces << " with filledcurves closed fc rgb '#8c8c8c' fs solid 1 border lc rgb '#303030' notitle";
+    if (!p.side_water.empty())
+      g << ", " << p.side_water << " with filledcurves y=" << p.side_z0_cm
+        << " fc rgb '#3182bd' fs transparent solid 0.35 noborder notitle, " << p.side_water
+        << " with lines lc rgb '#08519c' lw 1.5 notitle";
+    g << "\n";
+  }
+  g << "unset multiplot\n";
   return g.str();
 }
 

@@ -5,7 +5,9 @@
 //          the water, and the stone (a disk, black; hollow once it has sunk);
 //   right: an oblique 3-D view of the water in a window around the stone (or where it sank), the
 //          heights exaggerated to the window's own scale; the stone inside the box when it is
-//          within it, else a line of text saying how high above the water it is.
+//          within it, else a line of text saying how high above the water it is;
+//   third, when given (the movie's frames): the stone from the side at true scale, with the water's
+//          surface along the throw (reports/scene/side_view.hpp).
 // The same commands draw the movie's frames (reports/scene/scene_movie.hpp, binary data files)
 // and the report's still frames (reports/scene/scene_report.cpp, the stored tables), so the two
 // look alike. Only the data clauses differ.
@@ -31,6 +33,12 @@ struct FramePlot {
   std::string footnote;     // a second line at the frame's foot (the scales), "" for none: one long
                             // title was cut at both ends at 640 px
   int width_px = 1280, height_px = 540;
+  // The side view (a third panel): its data specifications, each giving s_cm z_cm, "" for none (the
+  // report's still frames keep two panels).
+  std::string side_faces;   // the stone's faces, closed outlines separated by blank lines
+  std::string side_water;   // the surface along the view, left to right
+  double side_s0_cm = -1, side_s1_cm = 1, side_z0_cm = -1, side_z1_cm = 1;
+  std::string side_note;    // where the still level is when it is outside the window ("" inside)
 };
 
 // The gnuplot commands that draw one frame onto the current output (a multiplot of two panels).

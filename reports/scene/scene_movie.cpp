@@ -137,7 +137,8 @@ long MovieOptions::frames(const SceneOptions& scene) const {
 
 MovieRecorder::MovieRecorder(const MovieOptions& options, const SceneOptions& scene, fs::path work_dir)
     : o_(options), dir_(std::move(work_dir)), scene_rate_hz_(scene.frame_rate_hz),
-      has_field_(scene.coupling != Coupling::none && scene.water.has_value()), stone_radius_m_(scene.stone.disk_radius_m) {
+      has_field_(scene.coupling != Coupling::none && scene.water.has_value()), stone_radius_m_(scene.stone.disk_radius_m),
+      stone_(scene.stone), side_direction_(side_view_direction(scene.initial.velocity_m_s)) {
   const std::string why = o_.problem(scene.frame_rate_hz);
   if (!why.empty()) throw std::invalid_argument("movie: " + why);
   movie_format_of(o_.output, format_);
@@ -211,7 +212,15 @@ void MovieRecorder::record(const SceneFrame& f) {
   d.near_nx = d.near_ny = n;
   d.top_scale_m = top_scale;
   d.near_scale_m = robust_scale(std::vector<double>(buffer_.begin(), buffer_.end())).scale;
-  frames_.push_back(d);
+  // The side view: the surface along the throw's direction through the stone's centre.
+  d.stone = f.stone;
+  d.side = side_window(z, stone_.bounding_radius_m);
+  for (const double s_cm : side_samples_cm(d.side, kSideSamples)) {
+    const Vec3 at = f.stone.position_m + 0.01 * s_cm * side_direction_;
+    const double eta = field ? field->interpolate(at.x() - x0_m_, at.y() - y0_m_) : 0.0;
+    d.side_water_cm.push_back(static_cast<float>(100 * eta));
+  }
+  frames_.push_back(std::move(d));
 }
 
 namespace {
@@ -282,7 +291,10 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
   // 4. The gnuplot script: one block per drawn frame.
   std::ostringstream gp;
   gp.precision(9);
-  gp << "set terminal pngcairo size " << o_.width_px << "," << o_.height_px << " font 'Sans,10'\n";
+  // 10 points at 1280 px wide, in proportion at other widths (7 at least): the three panels'
+  // labels keep their room on a 640 px movie.
+  const int font_pt = std::clamp(static_cast<int>(std::lround(10.0 * o_.width_px / 1280)), 7, 30);
+  gp << "set terminal pngcairo size " << o_.width_px << "," << o_.height_px << " font 'Sans," << font_pt << "'\n";
   const double dx = cell_m_ * top_block_;
   for (std::size_t q = 0; q < drawn.size(); ++q) {
     const std::size_t j = drawn[q].frame;
@@ -337,6 +349,24 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
                   top_block_, top_block_);
     p.title = title;
     p.footnote = foot;
+    {  // the side view's data, for the frames drawn only
+      const std::string faces = frame_name("side", static_cast<long>(j) + 1, "dat"), water = frame_name("water", static_cast<long>(j) + 1, "dat");
+      std::ofstream sf(dir_ / faces), wf(dir_ / water);
+      write_side_faces(sf, stone_, f.stone, side_direction_);
+      const std::vector<double> at = side_samples_cm(f.side, kSideSamples);
+      wf.precision(6);
+      for (std::size_t k = 0; k < at.size(); ++k) wf << at[k] << " " << f.side_water_cm[k] << "\n";
+      sf.close();
+      wf.close();
+      if (!sf || !wf) throw std::runtime_error("movie: cannot write the side view's data into " + dir_.string());
+      p.side_faces = "'" + faces + "'";
+      p.side_water = "'" + water + "'";
+      p.side_s0_cm = f.side.s0_cm;
+      p.side_s1_cm = f.side.s1_cm;
+      p.side_z0_cm = f.side.z0_cm;
+      p.side_z1_cm = f.side.z1_cm;
+      p.side_note = f.side.level_note;
+    }
     gp << "set output '" << frame_name("frame", static_cast<long>(q) + 1, "png") << "'\n"
        << frame_plot_commands(p) << "set output\nprint 'frame " << q + 1 << "'\n";
   }

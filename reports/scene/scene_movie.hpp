@@ -1,8 +1,8 @@
 #pragma once
-// A movie of a scene: every frame drawn with gnuplot (reports/scene/
-// frame_plot.hpp: the pond from above with the stone and its track, and an oblique 3-D view around
-// the stone) and the frames assembled by ffmpeg into an MP4 (H.264) or a GIF. A recorder is handed
-// every frame of the scene (solvers/scene/coupled_scene.hpp: FrameRecorder) and writes the data
+// A movie of a scene: every frame drawn with gnuplot (reports/scene/frame_plot.hpp: the pond from
+// above with the stone and its track, an oblique 3-D view around the stone, and the stone from the
+// side at true scale) and the frames assembled by ffmpeg into an MP4 (H.264) or a GIF. A recorder
+// is handed every frame of the scene (solvers/scene/coupled_scene.hpp: FrameRecorder) and writes the data
 // the frame will be drawn from into a work folder; finish() draws and assembles, ticking a
 // progress bar per frame drawn, and writes the movie atomically (a temporary name, then renamed).
 //
@@ -19,12 +19,14 @@
 // was last low (its centre within its radius of the still level): where its newest ring is.
 // Scales are fixed for the whole movie, from the drawn data (reports/common/colour_scale.hpp): the
 // colour ± the median over the frames of each top view's robust largest |z|; the 3-D box ± 1.2
-// times the same median for the 3-D windows.
+// times the same median for the 3-D windows. The side view is at true scale: the stone's faces seen
+// along the throw, and the surface along the same plane (reports/scene/side_view.hpp).
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "reports/scene/side_view.hpp"
 #include "solvers/scene/coupled_scene.hpp"
 #include "verification/study/progress.hpp"
 
@@ -88,7 +90,11 @@ class MovieRecorder {
     double near_x0_m, near_y0_m, near_dx_m;
     int near_nx, near_ny;
     double top_scale_m, near_scale_m;  // robust largest |z| of each view
+    RigidState stone;                   // for the side view (reports/scene/side_view.hpp)
+    SideWindow side;
+    std::vector<float> side_water_cm;  // the surface at side_samples_cm(side, kSideSamples)
   };
+  static constexpr int kSideSamples = 121;
   MovieOptions o_;
   MovieFormat format_ = MovieFormat::mp4;
   std::filesystem::path dir_;
@@ -96,6 +102,8 @@ class MovieRecorder {
   int stride_ = 1;
   bool has_field_;
   double stone_radius_m_;
+  Stone stone_;                           // its faces, for the side view
+  Vec3 side_direction_;                   // the side view's horizontal direction (the throw's)
   // The pond (or, without a field, a box around the throw's start).
   double x0_m_ = 0, y0_m_ = 0, cell_m_ = 0;
   int nx_ = 0, ny_ = 0;
