@@ -130,6 +130,28 @@ int MovieOptions::stride(double scene_rate_hz) const {
   return movie_format_of(output, f) ? movie_stride(f, scene_rate_hz, rate_hz) : 1;
 }
 
+namespace {
+
+// The surface along the side view is recorded every R / 5 over ±(4 R + |v| / rate): the view of the
+// stone (at most 3.4 R from it while the level shows) anywhere up to the next frame. At most 4001
+// points (a stone the paper's air law runs away with).
+int side_water_points(double radius_m, double speed_m_s, double rate_hz) {
+  const double reach = 4 * radius_m + speed_m_s / rate_hz, ds = radius_m / 5;
+  if (!(reach / ds < 2000)) return 4001;
+  return 2 * static_cast<int>(std::ceil(reach / ds)) + 1;
+}
+
+}  // namespace
+
+double MovieOptions::record_bytes(const SceneOptions& scene) {
+  const double speed = scene.initial.velocity_m_s.norm();
+  return 320.0 + 4.0 * side_water_points(scene.stone.bounding_radius_m, speed, scene.frame_rate_hz);
+}
+
+int MovieOptions::slow_pictures(double scene_rate_hz) const {
+  return std::max(1, static_cast<int>(std::lround(slow_motion / stride(scene_rate_hz))));
+}
+
 long MovieOptions::frames(const SceneOptions& scene) const {
   MovieFormat f;
   return movie_format_of(output, f) ? scene.frames() / stride(scene.frame_rate_hz) : 0;
@@ -212,15 +234,25 @@ void MovieRecorder::record(const SceneFrame& f) {
   d.near_nx = d.near_ny = n;
   d.top_scale_m = top_scale;
   d.near_scale_m = robust_scale(std::vector<double>(buffer_.begin(), buffer_.end())).scale;
-  // The side view: the surface along the throw's direction through the stone's centre.
+  // The side view: the surface along the throw's direction through the stone's centre, across
+  // any window of the view of the stone up to the next frame (side_water_points).
   d.stone = f.stone;
-  d.side = side_window(z, stone_.bounding_radius_m);
-  for (const double s_cm : side_samples_cm(d.side, kSideSamples)) {
-    const Vec3 at = f.stone.position_m + 0.01 * s_cm * side_direction_;
-    const double eta = field ? field->interpolate(at.x() - x0_m_, at.y() - y0_m_) : 0.0;
-    d.side_water_cm.push_back(static_cast<float>(100 * eta));
+  {
+    d.water_ds_cm = 100 * stone_.bounding_radius_m / 5;
+    const int points = side_water_points(stone_.bounding_radius_m, f.stone.velocity_m_s.norm(), scene_rate_hz_);
+    d.water_s0_cm = -0.5 * (points - 1) * d.water_ds_cm;
+    d.water_cm.resize(static_cast<std::size_t>(points));
+    for (int q = 0; q < points; ++q) {
+      const Vec3 at = f.stone.position_m + 0.01 * (d.water_s0_cm + q * d.water_ds_cm) * side_direction_;
+      d.water_cm[static_cast<std::size_t>(q)] = field ? static_cast<float>(100 * field->interpolate(at.x() - x0_m_, at.y() - y0_m_)) : 0.0f;
+    }
   }
   frames_.push_back(std::move(d));
+}
+
+void MovieRecorder::record_stone_step(double t_s, const RigidState& stone) {
+  if (!poses_.empty() && !(t_s > poses_.back().t_s)) return;  // a repeated time (the throw's end)
+  poses_.push_back({t_s, stone.position_m, stone.orientation});
 }
 
 namespace {
@@ -234,6 +266,90 @@ double median_positive(std::vector<double> v) {
 }
 
 }  // namespace
+
+FramePlot MovieRecorder::picture(long m, const FrameData& f, std::size_t j, const RigidState& stone, double t_s, long slow_contact,
+                                 const std::vector<ContactRecord>& contacts, const MovieSummary& s) const {
+  const double dx = cell_m_ * top_block_;
+  FramePlot p;
+  std::ostringstream top, near;
+  top.precision(9);
+  near.precision(9);
+  top << "'" << frame_name("top", static_cast<long>(j) + 1, "bin") << "' binary array=(" << top_nx_ << "," << top_ny_
+      << ") format='%float32' origin=(" << f.top_x0_m << "," << f.top_y0_m << ") dx=" << dx << " dy=" << dx;
+  near << "'" << frame_name("near", static_cast<long>(j) + 1, "bin") << "' binary array=(" << f.near_nx << "," << f.near_ny
+       << ") format='%float32' origin=(" << f.near_x0_m << "," << f.near_y0_m << ",0) dx=" << f.near_dx_m << " dy=" << f.near_dx_m;
+  p.top = top.str();
+  p.near = near.str();
+  if (j > 0) p.track = "'track.dat' every ::0::" + std::to_string(j);
+  long touched = 0;
+  for (const auto& c : contacts) touched += c.start_s <= t_s;
+  if (touched > 0) p.touches = "'touches.dat' every ::0::" + std::to_string(touched - 1);
+  p.stone_x_m = stone.position_m.x();
+  p.stone_y_m = stone.position_m.y();
+  p.stone_z_m = stone.position_m.z();
+  p.stone_radius_m = stone_radius_m_;
+  p.stone_sunk = f.sunk;
+  p.pond_x0_m = f.top_x0_m - 0.5 * dx;
+  p.pond_x1_m = f.top_x0_m + (top_nx_ - 0.5) * dx;
+  p.pond_y0_m = f.top_y0_m - 0.5 * dx;
+  p.pond_y1_m = f.top_y0_m + (top_ny_ - 0.5) * dx;
+  p.near_x0_m = f.near_x0_m;
+  p.near_x1_m = f.near_x0_m + (f.near_nx - 1) * f.near_dx_m;
+  p.near_y0_m = f.near_y0_m;
+  p.near_y1_m = f.near_y0_m + (f.near_ny - 1) * f.near_dx_m;
+  p.scale_m = s.scale_m;
+  p.near_z_m = s.near_z_m;
+  char speed[96], left[200];
+  if (slow_contact > 0)
+    std::snprintf(speed, sizeof speed, "SLOW MOTION %g× (contact %ld)", s.time_warp, slow_contact);
+  else
+    std::snprintf(speed, sizeof speed, "real time");
+  left[0] = 0;
+  if (left_t_s_ >= 0 && f.t_s >= left_t_s_)
+    std::snprintf(left, sizeof left, " — LEFT THE POND at %.3f s; the movie ends at %.3f s, %ld later contacts not shown", left_t_s_,
+                  s.end_t_s, s.contacts_beyond);
+  // Whether the stone is in a contact now: its centre can be a centimetre above the still level
+  // while a rim is wet (on its edge), and the dot alone read as a stone in flight.
+  char touching[48] = "";
+  for (std::size_t c = 0; c < contacts.size(); ++c)
+    if (t_s >= contacts[c].start_s && t_s <= contacts[c].end_s) std::snprintf(touching, sizeof touching, ", IN CONTACT %zu", c + 1);
+  char title[520], foot[240];
+  // In slow motion the time to 0.1 ms: the pictures between two frames are 1/(rate × repeats) apart.
+  std::snprintf(title, sizeof title, slow_contact > 0 ? "t = %.4f s   %s%s%s%s" : "t = %.3f s   %s%s%s%s", t_s, speed, touching,
+                f.sunk ? ", the stone has sunk" : "", left);
+  const int n = std::snprintf(foot, sizeof foot, "colour ±%.2g mm, 3-D box ±%.2g mm; means of %d×%d cells", 1e3 * s.scale_m,
+                              1e3 * s.near_z_m, top_block_, top_block_);
+  if (slow_contact > 0 && n > 0 && n < static_cast<int>(sizeof foot))
+    std::snprintf(foot + n, sizeof foot - static_cast<std::size_t>(n), "; the water as at its frame, t = %.3f s", f.t_s);
+  p.title = title;
+  p.footnote = foot;
+  // The side view: the stone as drawn, the surface recorded along the view's line at the frame,
+  // shifted by how far the stone has moved along it since.
+  const SideWindow w = side_window(stone.position_m.z(), stone_.bounding_radius_m);
+  const double shift_cm = 100 * (stone.position_m - f.stone.position_m).dot(side_direction_);
+  const std::string faces = frame_name("side", m, "dat"), water = frame_name("water", m, "dat");
+  std::ofstream sf(dir_ / faces), wf(dir_ / water);
+  write_side_faces(sf, stone_, stone, side_direction_);
+  wf.precision(6);
+  const int nw = static_cast<int>(f.water_cm.size());
+  for (const double at : side_samples_cm(w, kSideSamples)) {
+    const double u = std::clamp((at + shift_cm - f.water_s0_cm) / f.water_ds_cm, 0.0, double(nw - 1));
+    const int k = std::min(static_cast<int>(u), nw - 2);
+    const double eta = nw < 2 ? 0.0 : f.water_cm[k] + (u - k) * (f.water_cm[k + 1] - f.water_cm[k]);
+    wf << at << " " << eta << "\n";
+  }
+  sf.close();
+  wf.close();
+  if (!sf || !wf) throw std::runtime_error("movie: cannot write the side view's data into " + dir_.string());
+  p.side_faces = "'" + faces + "'";
+  p.side_water = "'" + water + "'";
+  p.side_s0_cm = w.s0_cm;
+  p.side_s1_cm = w.s1_cm;
+  p.side_z0_cm = w.z0_cm;
+  p.side_z1_cm = w.z1_cm;
+  p.side_note = w.level_note;
+  return p;
+}
 
 MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, const ProgressFactory& progress) {
   MovieSummary s;
@@ -254,9 +370,10 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
   }
   if (!(s.scale_m > 0)) s.scale_m = 1e-4;
   if (!(s.near_z_m > 0)) s.near_z_m = 2 * s.scale_m;
-  // 2. Which frames are drawn, and for how many movie frames each: every stride-th in real time,
-  //    every one near a contact, held repeats movie frames (the time warp repeats × stride).
-  const int repeats = std::max(1, static_cast<int>(std::lround(o_.slow_motion / stride_)));
+  // 2. Which frames are drawn, and as how many movie frames each: every stride-th in real time,
+  //    every one near a contact as `repeats` pictures, the stone at even times from the frame to
+  //    the next (the time warp repeats × stride).
+  const int repeats = o_.slow_pictures(scene_rate_hz_);
   s.time_warp = o_.slow_motion > 1 ? double(repeats * stride_) : 1.0;
   auto slow_at = [&](double t) {
     if (!(o_.slow_motion > 1)) return 0L;
@@ -295,89 +412,37 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
   // labels keep their room on a 640 px movie.
   const int font_pt = std::clamp(static_cast<int>(std::lround(10.0 * o_.width_px / 1280)), 7, 30);
   gp << "set terminal pngcairo size " << o_.width_px << "," << o_.height_px << " font 'Sans," << font_pt << "'\n";
-  const double dx = cell_m_ * top_block_;
+  long m = 0;  // pictures, in the movie's order
   for (std::size_t q = 0; q < drawn.size(); ++q) {
     const std::size_t j = drawn[q].frame;
     const FrameData& f = frames_[j];
-    FramePlot p;
-    std::ostringstream top, near;
-    top.precision(9);
-    near.precision(9);
-    top << "'" << frame_name("top", static_cast<long>(j) + 1, "bin") << "' binary array=(" << top_nx_ << "," << top_ny_
-        << ") format='%float32' origin=(" << f.top_x0_m << "," << f.top_y0_m << ") dx=" << dx << " dy=" << dx;
-    near << "'" << frame_name("near", static_cast<long>(j) + 1, "bin") << "' binary array=(" << f.near_nx << "," << f.near_ny
-         << ") format='%float32' origin=(" << f.near_x0_m << "," << f.near_y0_m << ",0) dx=" << f.near_dx_m << " dy=" << f.near_dx_m;
-    p.top = top.str();
-    p.near = near.str();
-    if (j > 0) p.track = "'track.dat' every ::0::" + std::to_string(j);
-    long touched = 0;
-    for (const auto& c : contacts) touched += c.start_s <= f.t_s;
-    if (touched > 0) p.touches = "'touches.dat' every ::0::" + std::to_string(touched - 1);
-    p.stone_x_m = f.x_m;
-    p.stone_y_m = f.y_m;
-    p.stone_z_m = f.z_m;
-    p.stone_radius_m = stone_radius_m_;
-    p.stone_sunk = f.sunk;
-    p.pond_x0_m = f.top_x0_m - 0.5 * dx;
-    p.pond_x1_m = f.top_x0_m + (top_nx_ - 0.5) * dx;
-    p.pond_y0_m = f.top_y0_m - 0.5 * dx;
-    p.pond_y1_m = f.top_y0_m + (top_ny_ - 0.5) * dx;
-    p.near_x0_m = f.near_x0_m;
-    p.near_x1_m = f.near_x0_m + (f.near_nx - 1) * f.near_dx_m;
-    p.near_y0_m = f.near_y0_m;
-    p.near_y1_m = f.near_y0_m + (f.near_ny - 1) * f.near_dx_m;
-    p.scale_m = s.scale_m;
-    p.near_z_m = s.near_z_m;
-    char speed[96], left[200];
-    if (drawn[q].contact > 0)
-      std::snprintf(speed, sizeof speed, "SLOW MOTION %g× (contact %ld)", s.time_warp, drawn[q].contact);
-    else
-      std::snprintf(speed, sizeof speed, "real time");
-    left[0] = 0;
-    if (left_t_s_ >= 0 && f.t_s >= left_t_s_)
-      std::snprintf(left, sizeof left, " — LEFT THE POND at %.3f s; the movie ends at %.3f s, %ld later contacts not shown", left_t_s_,
-                    s.end_t_s, s.contacts_beyond);
-    // Whether the stone is in a contact now: its centre can be a centimetre above the still level
-    // while a rim is wet (on its edge), and the dot alone read as a stone in flight.
-    char touching[48] = "";
-    for (std::size_t c = 0; c < contacts.size(); ++c)
-      if (f.t_s >= contacts[c].start_s && f.t_s <= contacts[c].end_s)
-        std::snprintf(touching, sizeof touching, ", IN CONTACT %zu", c + 1);
-    char title[520], foot[160];
-    std::snprintf(title, sizeof title, "t = %.3f s   %s%s%s%s", f.t_s, speed, touching, f.sunk ? ", the stone has sunk" : "", left);
-    std::snprintf(foot, sizeof foot, "colour ±%.2g mm, 3-D box ±%.2g mm; means of %d×%d cells", 1e3 * s.scale_m, 1e3 * s.near_z_m,
-                  top_block_, top_block_);
-    p.title = title;
-    p.footnote = foot;
-    {  // the side view's data, for the frames drawn only
-      const std::string faces = frame_name("side", static_cast<long>(j) + 1, "dat"), water = frame_name("water", static_cast<long>(j) + 1, "dat");
-      std::ofstream sf(dir_ / faces), wf(dir_ / water);
-      write_side_faces(sf, stone_, f.stone, side_direction_);
-      const std::vector<double> at = side_samples_cm(f.side, kSideSamples);
-      wf.precision(6);
-      for (std::size_t k = 0; k < at.size(); ++k) wf << at[k] << " " << f.side_water_cm[k] << "\n";
-      sf.close();
-      wf.close();
-      if (!sf || !wf) throw std::runtime_error("movie: cannot write the side view's data into " + dir_.string());
-      p.side_faces = "'" + faces + "'";
-      p.side_water = "'" + water + "'";
-      p.side_s0_cm = f.side.s0_cm;
-      p.side_s1_cm = f.side.s1_cm;
-      p.side_z0_cm = f.side.z0_cm;
-      p.side_z1_cm = f.side.z1_cm;
-      p.side_note = f.side.level_note;
+    const bool slow = drawn[q].contact > 0;
+    s.slow_drawn += slow;
+    for (int r = 0; r < (slow ? repeats : 1); ++r) {
+      // The stone: at the frame, or in slow motion between the stepper's states at an even time
+      // from the frame to the next (the water stays as at the frame).
+      const double t = f.t_s + double(r) / (repeats * scene_rate_hz_);
+      RigidState stone = f.stone;
+      if (slow && !poses_.empty()) {
+        const StonePose pose = pose_at(poses_, t);
+        stone.position_m = pose.position_m;
+        stone.orientation = pose.orientation;
+      }
+      ++m;
+      gp << "set output '" << frame_name("seq", m, "png") << "'\n"
+         << frame_plot_commands(picture(m, f, j, stone, t, slow ? drawn[q].contact : 0, contacts, s)) << "set output\nprint 'frame "
+         << m << "'\n";
     }
-    gp << "set output '" << frame_name("frame", static_cast<long>(q) + 1, "png") << "'\n"
-       << frame_plot_commands(p) << "set output\nprint 'frame " << q + 1 << "'\n";
   }
+  s.frames = m;
   {
     std::ofstream f(dir_ / "movie.gp");
     f << gp.str();
   }
-  // 4. Draw, one tick per frame.
+  // 5. Draw, one tick per picture.
   const WallTimer draw;
   {
-    auto ticker = start_progress(progress, "movie: drawing frames", drawn.size());
+    auto ticker = start_progress(progress, "movie: drawing frames", static_cast<std::size_t>(m));
     std::string errors;
     const int rc = run_lines({"gnuplot", "movie.gp"}, dir_, [&](const std::string& line) {
       if (line.rfind("frame ", 0) == 0) ticker->tick();
@@ -386,20 +451,6 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
     if (rc != 0) throw std::runtime_error("movie: gnuplot failed (status " + std::to_string(rc) + "): " + errors);
   }
   s.draw_wall_s = draw.seconds();
-  // 5. The movie's sequence: each drawn frame once in real time, `repeats` times in slow motion
-  //    (links to the drawn file, no copies).
-  long m = 0;
-  for (std::size_t q = 0; q < drawn.size(); ++q) {
-    const int times = drawn[q].contact > 0 ? repeats : 1;
-    s.slow_drawn += drawn[q].contact > 0;
-    for (int r = 0; r < times; ++r) {
-      const fs::path from = dir_ / frame_name("frame", static_cast<long>(q) + 1, "png"), to = dir_ / frame_name("seq", ++m, "png");
-      std::error_code ec;
-      fs::create_hard_link(from, to, ec);
-      if (ec) fs::copy_file(from, to);
-    }
-  }
-  s.frames = m;
   // 6. Assemble.
   const WallTimer encode;
   AtomicOutput out(o_.output);

@@ -9,8 +9,11 @@
 // Time: away from contacts the movie plays in real time: its rate is the scene's frame rate divided
 // by a whole stride (every frame for MP4; for a GIF, whose delays are whole hundredths of a second,
 // the smallest stride giving ≤ 30 frames/s), one movie frame per stride scene frames. Within
-// slow_margin_s of a contact (before its start, after its end) every scene frame is drawn and shown
-// for round(slow_motion / stride) movie frames: slow motion, its factor written on the frame. The
+// slow_margin_s of a contact (before its start, after its end) every scene frame is drawn as
+// round(slow_motion / stride) movie frames: slow motion, its factor written on the frame. Those
+// pictures show the stone at even times from the frame to the next, between the stepper's states
+// (reports/scene/stone_poses.hpp), and the water as at the frame: the field is recorded once a
+// frame, and the seed's water steps once a frame. The
 // movie ends after_leaving_s after the stone leaves the pond (said on the frames from then on).
 // Space: the top view is a window view_width_m wide (half as high) that follows the stone, the
 // stone two thirds of the way across, so that its latest rings stay in view; its heights are means
@@ -26,7 +29,9 @@
 #include <string>
 #include <vector>
 
+#include "reports/scene/frame_plot.hpp"
 #include "reports/scene/side_view.hpp"
+#include "reports/scene/stone_poses.hpp"
 #include "solvers/scene/coupled_scene.hpp"
 #include "verification/study/progress.hpp"
 
@@ -54,6 +59,12 @@ struct MovieOptions {
   // ⌊N / stride⌋ (0 for an unknown format).
   int stride(double scene_rate_hz) const;
   long frames(const SceneOptions& scene) const;
+  // Pictures drawn per scene frame in slow motion, each shown once: round(slow_motion / stride),
+  // at least 1. They show the stone between the frame and the next (the water as at the frame).
+  int slow_pictures(double scene_rate_hz) const;
+  // The bytes a recorder holds per scene frame for this scene at the throw's speed (its windows,
+  // the stone, the surface along the side view: more where the stone moves further in a frame).
+  static double record_bytes(const SceneOptions& scene);
 };
 
 struct MovieSummary {
@@ -64,7 +75,7 @@ struct MovieSummary {
   std::uintmax_t bytes = 0;
   double scale_m = 0, near_z_m = 0;
   double time_warp = 1;            // the slow motion's factor (1: none)
-  long drawn = 0, slow_drawn = 0;  // scene frames drawn; of them, in slow motion
+  long drawn = 0, slow_drawn = 0;  // scene frames drawn; of them, in slow motion (slow_pictures each)
   double left_pond_t_s = -1;       // when the stone left the pond (-1: it did not)
   long contacts_beyond = 0;        // contacts that began after the movie's end
   double end_t_s = 0;              // the last frame drawn
@@ -76,6 +87,11 @@ class MovieRecorder {
   // work_dir: an empty folder of the caller's (removed by the caller).
   MovieRecorder(const MovieOptions& options, const SceneOptions& scene, std::filesystem::path work_dir);
   void record(const SceneFrame& frame);
+  // The stone between frames (solvers/scene/coupled_scene.hpp, StoneStepRecorder): slow motion
+  // draws it at the times between two frames (reports/scene/stone_poses.hpp). Wanted only with
+  // slow motion.
+  bool wants_stone_steps() const { return o_.slow_motion > 1; }
+  void record_stone_step(double t_s, const RigidState& stone);
   // Draws the recorded frames and assembles the movie. `contacts` gives the first-touch points
   // (the throw's contacts, from the scene's summary). Throws std::runtime_error with gnuplot's or
   // ffmpeg's message on failure; no movie file is left then.
@@ -91,10 +107,16 @@ class MovieRecorder {
     int near_nx, near_ny;
     double top_scale_m, near_scale_m;  // robust largest |z| of each view
     RigidState stone;                   // for the side view (reports/scene/side_view.hpp)
-    SideWindow side;
-    std::vector<float> side_water_cm;  // the surface at side_samples_cm(side, kSideSamples)
+    // The surface along the side view's direction through the stone's centre, at s = s0 + k ds
+    // (cm): wide enough for the view of the stone anywhere up to the next frame.
+    double water_s0_cm = 0, water_ds_cm = 1;
+    std::vector<float> water_cm;
   };
-  static constexpr int kSideSamples = 121;
+  static constexpr int kSideSamples = 121;  // points of the surface drawn across the side view
+  // Picture m: frame f (frames_[j]) with the stone drawn as `stone` at time t (slow_contact: the
+  // contact whose slow motion it is in, 0 in real time); writes its side view's data files.
+  FramePlot picture(long m, const FrameData& f, std::size_t j, const RigidState& stone, double t_s, long slow_contact,
+                    const std::vector<ContactRecord>& contacts, const MovieSummary& s) const;
   MovieOptions o_;
   MovieFormat format_ = MovieFormat::mp4;
   std::filesystem::path dir_;
@@ -113,6 +135,7 @@ class MovieRecorder {
   double low_x_m_ = 0, low_y_m_ = 0;      // where the stone was last low
   double left_t_s_ = -1;
   std::vector<FrameData> frames_;
+  std::vector<StonePose> poses_;          // the stone at its steps' starts (slow motion)
   std::vector<float> buffer_;
 };
 

@@ -656,7 +656,7 @@ class SceneLoop {
 
 }  // namespace
 
-SceneSummary run_scene(const SceneOptions& o, const FrameRecorder& recorder) {
+SceneSummary run_scene(const SceneOptions& o, const FrameRecorder& recorder, const StoneStepRecorder& stone_steps) {
   std::string why;
   if (!o.valid(&why)) throw std::invalid_argument("scene: " + why);
   SceneSummary out;
@@ -666,8 +666,12 @@ SceneSummary run_scene(const SceneOptions& o, const FrameRecorder& recorder) {
   if (o.end == SceneEnd::at_duration) steps.t_max_s = std::min(steps.t_max_s, o.end_s());
   SceneLoop loop(o, recorder, out);
   out.stone = run_realtime(o.stone, o.environment, o.initial, steps, loop.surface(),
-                           [&](double t_s, const RigidState& s) { loop.at_stone_step(t_s, s); },
+                           [&](double t_s, const RigidState& s) {
+                             if (stone_steps) stone_steps(t_s, s);
+                             loop.at_stone_step(t_s, s);
+                           },
                            loop.step_start_pushes());
+  if (stone_steps) stone_steps(out.stone.end_time_s, out.stone.final_state);
   loop.after_throw(out.stone);
   loop.finish();
   if (o.coupling != Coupling::none) {

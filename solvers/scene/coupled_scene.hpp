@@ -231,7 +231,12 @@ struct SceneSummary {
   std::string brief() const;  // "270 frames (3 s) at 4100 frames/s CPU, 3900 wall; slowest frame 2.1 ms wall (#7)"
 };
 
+// What a stone-step recorder sees: the stone's state at the start of each of its steps, and its
+// last state when the throw ends — the stone between frames (the movie's slow motion).
+using StoneStepRecorder = std::function<void(double t_s, const RigidState& stone)>;
+
 // Runs the scene; throws std::invalid_argument when the options are not valid.
-SceneSummary run_scene(const SceneOptions& options, const FrameRecorder& recorder = {});
+SceneSummary run_scene(const SceneOptions& options, const FrameRecorder& recorder = {},
+                       const StoneStepRecorder& stone_steps = {});
 
 }  // namespace stoneskip

@@ -350,8 +350,11 @@ void run(const SceneArgs& a) {
       throw_input_error("--movie", 0, "", "the scene's " + std::to_string(o.frames()) + " frames make no movie frame (one is drawn every " +
                                               std::to_string(mo.stride(o.frame_rate_hz)) + " scene frames)");
     // The movie's drawing and its temporary frames are held to limits too (1e8 frames were accepted).
-    // At most: every scene frame drawn (slow motion draws every one near a contact).
-    enforce_limits(estimate_movie(static_cast<double>(o.frames()), mo.width_px, mo.height_px, mo.top_cells_max, mo.near_cells_max),
+    // At most: every scene frame drawn, each as slow_pictures() pictures (slow motion draws every
+    // frame near a contact, with the stone between it and the next).
+    const double frames = static_cast<double>(o.frames());
+    enforce_limits(estimate_movie(frames, frames * mo.slow_pictures(o.frame_rate_hz), mo.width_px, mo.height_px, mo.top_cells_max,
+                                  mo.near_cells_max, MovieOptions::record_bytes(o)),
                    a.limits, "--movie");
     { AtomicOutput check(mo.output); }  // the folder exists and is writable
     if (!program_runs({"gnuplot", "--version"})) throw_input_error("--movie", 0, "", "gnuplot not found (apt-get install gnuplot-nox)");
@@ -394,7 +397,9 @@ void run(const SceneArgs& a) {
       if (!water.wanted.empty()) water.record(f);
       progress.tick();
     };
-    s = run_scene(o, recorder);
+    StoneStepRecorder stone_steps;  // the stone between frames, for a movie's slow motion only
+    if (movie && movie->wants_stone_steps()) stone_steps = [&](double t_s, const RigidState& st) { movie->record_stone_step(t_s, st); };
+    s = run_scene(o, recorder, stone_steps);
   }
   if (a.json) {
     nlohmann::json j = json_of(c, o, s);

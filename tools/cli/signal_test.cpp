@@ -296,7 +296,7 @@ BOOST_AUTO_TEST_CASE(a_movie_interrupted_while_gnuplot_draws_leaves_no_frames_an
   // Wait until gnuplot has drawn its first frame in the frames' folder (or the command ended).
   auto drawing = [&] {
     for (const auto& d : fs::directory_iterator(tmp))
-      if (fs::exists(d.path() / "frame_00001.png")) return true;
+      if (fs::exists(d.path() / "seq_00001.png")) return true;  // the first picture drawn
     return false;
   };
   int raw = 0;

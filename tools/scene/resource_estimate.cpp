@@ -66,7 +66,8 @@ ResourceEstimate estimate_scene(const StoneCase& c, double duration_s, double fr
   return e;
 }
 
-ResourceEstimate estimate_movie(double frames, double width_px, double height_px, double top_cells, double near_cells) {
+ResourceEstimate estimate_movie(double frames, double images, double width_px, double height_px, double top_cells, double near_cells,
+                                double record_bytes) {
   ResourceEstimate e;
   auto g = [](double v) {
     char b[32];
@@ -74,11 +75,12 @@ ResourceEstimate estimate_movie(double frames, double width_px, double height_px
     return std::string(b);
   };
   const double pixels = width_px * height_px;
-  e.add_work(frames * pixels, kMaxMoviePixels, "movie pixels drawn (" + g(frames) + " frames × " + g(width_px) + "×" + g(height_px) + ")");
-  const double per_frame_bytes = 4 * (top_cells * top_cells + near_cells * near_cells) + 3 * pixels;
-  e.add_work(frames * per_frame_bytes, kMaxMovieTemporaryBytes,
-             "bytes of temporary disk (" + g(frames) + " frames × " + human_bytes(per_frame_bytes) + " of data and image)");
-  e.add_memory(frames * 96.0, g(frames) + " movie frames' records");
+  e.add_work(images * pixels, kMaxMoviePixels, "movie pixels drawn (" + g(images) + " pictures × " + g(width_px) + "×" + g(height_px) + ")");
+  const double per_frame_bytes = 4 * (top_cells * top_cells + near_cells * near_cells), per_image_bytes = 3 * pixels;
+  e.add_work(frames * per_frame_bytes + images * per_image_bytes, kMaxMovieTemporaryBytes,
+             "bytes of temporary disk (" + g(frames) + " frames × " + human_bytes(per_frame_bytes) + " of data, " + g(images) +
+                 " pictures × " + human_bytes(per_image_bytes) + ")");
+  e.add_memory(frames * record_bytes, g(frames) + " movie frames' records of " + human_bytes(record_bytes));
   return e;
 }
 

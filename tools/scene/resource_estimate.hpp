@@ -37,15 +37,18 @@ ResourceEstimate estimate_wave(const WaveCase& c);
 // A coupled scene of duration_s at frame_rate_hz: the stone and its water over the whole duration
 // (the stone stops at its t_max_s, the water runs on), and a cost record per frame.
 ResourceEstimate estimate_scene(const StoneCase& c, double duration_s, double frame_rate_hz);
-// A scene's movie of `frames` frames of width × height pixels: the frames drawn (pixels, against
-// kMaxMoviePixels) and the temporary disk they fill before ffmpeg assembles them — per frame its
-// data (top view ≤ top_cells² and 3-D view ≤ near_cells² floats) and a PNG (≤ 3 bytes a pixel) —
-// against kMaxMovieTemporaryBytes; the per-frame records held in memory.
+// A scene's movie recording `frames` scene frames and drawing at most `images` pictures of
+// width × height pixels (slow motion draws the stone between frames: up to its factor per frame):
+// the pictures drawn (pixels, against kMaxMoviePixels) and the temporary disk filled before ffmpeg
+// assembles them — per frame its data (top view ≤ top_cells² and 3-D view ≤ near_cells² floats),
+// per picture a PNG (≤ 3 bytes a pixel) — against kMaxMovieTemporaryBytes; the per-frame records
+// of record_bytes each held in memory (reports/scene/scene_movie.hpp, MovieOptions::record_bytes).
 // 5e10 pixels: 72 000 frames of 1280×540 (13 minutes of a 90 frames/s movie; gnuplot draws about
 // 10–20 such frames a second on one core, so about an hour), 1500 frames at 7680×4320.
 constexpr double kMaxMoviePixels = 5e10;
 constexpr double kMaxMovieTemporaryBytes = 2e10;  // 20 GB of the temporary folder's disk
-ResourceEstimate estimate_movie(double frames, double width_px, double height_px, double top_cells, double near_cells);
+ResourceEstimate estimate_movie(double frames, double images, double width_px, double height_px, double top_cells, double near_cells,
+                                double record_bytes);
 // A sweep: every throw held to the one-throw limits at the heaviest case the design's corners give
 // (SweepCases::heaviest_throw), all throws together to kSweepWorkFactor times them; its table in
 // memory (throws × row_bytes) beside one throw's memory per compute thread.
