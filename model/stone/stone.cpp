@@ -5,11 +5,11 @@
 
 namespace stoneskip {
 
-Stone make_stone(const Mesh& mesh, const MassProperties& mp, double disk_radius_m, std::string description) {
+Stone make_stone(const Mesh& mesh, const MassProperties& mp, double disk_radius_m, std::string description, BodyAxes axes) {
   Stone s;
   s.body_mesh = mesh;
   s.mesh_center_of_mass_m = mp.center_of_mass_m;
-  s.body_axes_in_mesh = principal_frame(mesh, mp);
+  s.body_axes_in_mesh = axes == BodyAxes::principal ? principal_frame(mesh, mp) : Mat3::Identity();
   const Mat3& P = s.body_axes_in_mesh;
   const bool rotated = P != Mat3::Identity();
   for (auto& v : s.body_mesh.vertices) {

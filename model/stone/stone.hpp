@@ -27,11 +27,20 @@ struct Stone {
   std::string description;        // "prism R=... h=... N=..."
 };
 
-// Moves the mesh to its centre of mass, rotates it onto its principal axes (principal_frame in
-// model/stone/mass_properties.hpp: body z the largest moment, pointing to the mesh's up; body x the
-// smallest; right-handed) and precomputes the rest. A mesh rotated in its file, up kept up, gives
-// the same stone.
+// How the body axes are chosen (model/README.md §1.2):
+//   principal: the mesh's principal axes (principal_frame in model/stone/mass_properties.hpp: body z
+//              the largest moment, pointing to the mesh's up; body x the smallest; right-handed), so
+//              that a mesh rotated in its file, up kept up, gives the same stone (a mesh read from
+//              a file);
+//   mesh:      the mesh's own axes, moved to the centre of mass: a parametric stone built about its
+//              symmetry axis z (make_prism, make_lens), whose body z is that axis (spec: the normal
+//              of its flat faces) whatever its thickness. Past h ≈ 1.69 R a prism's largest moment
+//              lies across it, and the principal rule would turn it on its side.
+enum class BodyAxes { principal, mesh };
+
+// Moves the mesh to its centre of mass, onto the body axes chosen, and precomputes the rest.
 // disk_radius_m <= 0 takes the largest distance of a vertex from the body z axis.
-Stone make_stone(const Mesh& mesh, const MassProperties& mp, double disk_radius_m, std::string description);
+Stone make_stone(const Mesh& mesh, const MassProperties& mp, double disk_radius_m, std::string description,
+                 BodyAxes axes = BodyAxes::principal);
 
 }  // namespace stoneskip

@@ -12,6 +12,22 @@ namespace stoneskip {
 
 namespace {
 
+// The exponent row as the stored bounds decide it (records before the tolerance: containment).
+std::string exponent_words(const Record& b) {
+  if (!b.has_number("contact_exponent_tolerance")) return "containing " + fmt(b.number("contact_exponent_measured"), 3);
+  return "within " + fmt(b.number("contact_exponent_measured"), 3) + " ± " + fmt(b.number("contact_exponent_tolerance"), 3) +
+         " (the tolerance of §5's fitted exponents)";
+}
+
+// How an interval decides a row (records since the intervals were used).
+std::string bracket_words(const Record& b) {
+  if (!b.has_number("contact_exponent_tolerance")) return "";
+  return "A bisected value (U_min, β_max: the bracket's middle ± half its width) meets its row when its whole bracket "
+         "lies within the bound and misses it when none of it does; a bracket across the bound, like an exponent's "
+         "interval across its band, leaves the row **not decided**, and a variant with a row not decided does not pass. ";
+}
+
+
 std::string range_text(const Record& measured_row) {
   const double lo = measured_row.number("score_low"), hi = measured_row.number("score_high");
   const std::string unit = measured_row.text("score_unit").empty() ? "" : " " + measured_row.text("score_unit");
@@ -40,12 +56,11 @@ SectionOutput ranking_section(const Record& v) {
              "]°; contact time within " + fmt(100 * b.number("contact_time_fraction"), 3) + " % of [" +
              fmt(1000 * b.number("contact_time_low"), 3) + ", " + fmt(1000 * b.number("contact_time_high"), 3) +
              "] ms and, the contact times being one power law of U (not bending: rule `power_law_exponent`), its "
-             "exponent's 95 % interval containing " + fmt(b.number("contact_exponent_measured"), 3) +
-             "; pitch and roll each changing by at most " + fmt(b.number("attitude_bound_deg"), 3) +
+             "exponent's 95 % interval " + exponent_words(b) + "; pitch and roll each changing by at most " + fmt(b.number("attitude_bound_deg"), 3) +
              "° through the first contact at " + fmt(r.number("held_spin_rev_s"), 3) + " rev/s (α = " +
              fmt(r.number("regime_attack_deg"), 3) +
              "°); the three regimes reproduced (surfing, diving, trout); and passive by its contacts' energy balance "
-             "(rule `skips_like_a_stone`). The answer is the cheapest passing variant with the attitude free (held is a "
+             "(rule `skips_like_a_stone`). " + bracket_words(b) + "The answer is the cheapest passing variant with the attitude free (held is a "
              "model reduction, not a stone), by real-time CPU per throw; when none passes, the rows no free variant "
              "meets and the closest one (most rows met, then the smaller distance) — rule `cheapest_skipping_variant`. "
              "The bounds are the study file's ([validation.ranking]); nothing is tuned.");

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <utility>
 
 #include "reports/common/html_page.hpp"
 #include "reports/common/markdown.hpp"
@@ -64,9 +65,16 @@ std::string findings_markdown(const Record& secs, const std::string& md) {
   if (c.has_child("series"))
     f << "* The real-time stepper against the reference, `" << c.text("law") << "` law: " << verdict_counts(c.at("series"))
       << section_link(md, "1") << ".\n";
-  if (c.has_child("reference_tolerance") && c.at("reference_tolerance").has_child("drop"))
-    f << "* The reference's own error against its tolerance: " << verdict_markdown(c.at("reference_tolerance").at("drop"))
-      << section_link(md, "1") << ".\n";
+  if (c.has_child("reference_tolerance") && c.at("reference_tolerance").has_child("drop")) {
+    const Record& t = c.at("reference_tolerance");
+    f << "* The reference's own error against its tolerance: " << verdict_markdown(t.at("drop"));
+    // The drop asks only that the error fall; whether it falls in proportion to rtol is the slopes'
+    // verdict, said beside it (a drop of 100 over 1e4 in rtol passes an error ∝ √rtol).
+    for (const auto& [fit, words] : {std::pair{"bounce_position_fit", "bounce position"}, std::pair{"contact_time_fit", "contact time"}})
+      if (t.has_child(fit) && t.at(fit).has_child("verdict"))
+        f << "; in proportion to rtol (slope 1), " << words << ": " << verdict_markdown(t.at(fit).at("verdict"));
+    f << section_link(md, "1") << ".\n";
+  }
   const Record& wp = secs.at("work_precision");
   if (wp.has_child("restarts") && wp.at("restarts").has_child("verdict"))
     f << "* CVODE's restarts at a contact: **" << wp.at("restarts").at("verdict").text("verdict") << "**" << section_link(md, "2") << ".\n";

@@ -15,6 +15,15 @@ namespace stoneskip {
 
 namespace {
 
+// Why the run that stopped threshold i's bisection failed, as stored (absent in older data): ": "
+// and the solver's reason, or "".
+std::string stopped_because(const Record& sweep, std::size_t i) {
+  if (!sweep.string_lists().count("threshold_failures")) return "";
+  const auto& why = sweep.strings("threshold_failures");
+  return i < why.size() && !why[i].empty() ? ": " + why[i] : std::string();
+}
+
+
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string axis_of(const std::string& p) {
@@ -182,7 +191,7 @@ SectionOutput sweeps_section(const Record& c, const Record& fig9) {
         txt << (i ? "; " : "") << fmt(0.5 * (lo + hi), 4)
             << (t.column("bisected")[i] != 0 ? " ± " + fmt(0.5 * (hi - lo), 2) + " (" + change + ")"
                 : stopped ? " ± " + fmt(0.5 * (hi - lo), 2) + " (" + change + "; not located: bisection stopped at a " +
-                                "failed run, " + fmt(t.column("failed_at")[i], 4) + ")"
+                                "failed run, " + fmt(t.column("failed_at")[i], 4) + stopped_because(s, i) + ")"
                           : " (not bisected) (" + change + ")");
         // Bisection follows one change per grid cell; a cell whose far end has another count holds more.
         if (t.has_column("count_at_cell_end") &&

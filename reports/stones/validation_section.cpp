@@ -236,6 +236,21 @@ SectionOutput validation_section(const Record& v) {
 
   {
     std::vector<PlotSeries> ps = variant_curves(vars, "min_speed", "attack_deg", "min_speed_m_s", 1, false);
+    // Each bisection's bracket, its two ends as small crosses in the variant's colour (linetype k:
+    // the variants are the figure's first series), so that a point is read with its width.
+    {
+      int k = 0;
+      std::vector<PlotSeries> ends;
+      for (const auto& key : vars.strings("keys")) {
+        const Record& g = vars.at(key);
+        if (!g.has_table("min_speed")) continue;
+        ++k;
+        if (!g.table("min_speed").has_column("low_m_s")) continue;  // older data: no ends stored
+        for (const char* end : {"low_m_s", "high_m_s"})
+          ends.push_back(table_series("", g, "min_speed", "attack_deg", end, "points pt 1 ps 1.3 lc " + std::to_string(k)));
+      }
+      ps.insert(ps.end(), ends.begin(), ends.end());
+    }
     const Record& curves = v.at("curves");
     for (const auto& ck : curves.strings("keys")) {
       const Record& c = curves.at(ck);
@@ -248,7 +263,7 @@ SectionOutput validation_section(const Record& v) {
     ax.x_label = "attack angle α (deg)";
     ax.y_label = "minimum speed for a bounce (m/s)";
     ax.extra = "set yrange [0:*]";
-    w.figure(line_figure("clanet_min_speed", "Clanet's disk: minimum bouncing speed against attack angle at β = 20°, measured and each variant",
+    w.figure(line_figure("clanet_min_speed", "Clanet's disk: minimum bouncing speed against attack angle at β = 20°, measured and each variant (crosses: the ends of each bisection's bracket)",
                          ax, ps, "attack_deg", "speed_m_s"));
     for (const auto& ck : curves.strings("keys")) {
       const Record& c = curves.at(ck);

@@ -181,7 +181,10 @@ Figure heat_map(const std::string& name, const std::string& title, const GridMap
   s << "set xlabel " << quoted(x.key + (x.log ? " (log scale)" : "")) << " noenhanced\nset ylabel "
     << quoted(y.key + (y.log ? " (log scale)" : "")) << " noenhanced\n";
   s << index_tics("x", map.x_values, x.log) << index_tics("y", map.y_values, y.log) << scale;
-  s << "set xrange [-0.5:" << nx - 0.5 << "]\nset yrange [-0.5:" << ny - 0.5 << "]\nset key outside below\nset tics out\n";
+  // The key on grey: the second contour's colour is white (seen on the map's dark end), which a
+  // white key hid.
+  s << "set xrange [-0.5:" << nx - 0.5 << "]\nset yrange [-0.5:" << ny - 0.5
+    << "]\nset key outside below box opaque fc rgb '#9e9e9e'\nset tics out\n";
   s << "plot '" << name << "_cells.dat' using 1:2:6 with image notitle";
   if (empty.rows() > 0) {
     f.tables.emplace_back(name + "_empty", empty);

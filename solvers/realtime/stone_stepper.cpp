@@ -569,6 +569,10 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
           // Say what the stone was doing: a step this short is a state running away (the paper
           // convention's energy gain spins a stone up without bound) or a jump in the force.
           std::ostringstream m;
+          // The paper convention's printed forces create energy (spec §1.6): a thousandfold gain
+          // is the model running away, not the stepper failing, and is named so.
+          if (env.convention == Convention::paper && energy(s) > 1e3 * std::max(std::abs(energy(initial)), 1e-3))
+            m << "the paper convention's printed forces ran the stone away (spec §1.6; a thousandfold energy gain); ";
           m << "the adaptive step fell below round-off (speed " << s.velocity_m_s.norm() << " m/s, spin "
             << angular_velocity(stone, s).norm() << " rad/s, energy " << energy(s) << " J against "
             << energy(initial) << " J at release)";

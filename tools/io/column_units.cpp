@@ -10,8 +10,17 @@ namespace {
 // Suffix → unit, longest suffixes first so "_m_s" wins over "_s" and "_kg_m_s" over "_m_s".
 // "volume_time_m3_s" is a product (m³ · s) and "_N_s" an impulse (N · s): the names where "_s"
 // multiplies.
-constexpr std::array<std::pair<const char*, const char*>, 21> kSuffixes{{
+// "_per_s" is a rate (not "s"), "_m_s2" an acceleration, "_m2_s2" and "_rev2_s2" squares of speeds.
+constexpr std::array<std::pair<const char*, const char*>, 30> kSuffixes{{
+    {"_impulse_m3_s", "m^3 s"},
     {"_time_m3_s", "m^3 s"},
+    {"_rev2_s2", "rev^2/s^2"},
+    {"_m2_s2", "m^2/s^2"},
+    {"_m_s2", "m/s^2"},
+    {"_per_s", "1/s"},
+    {"_percent", "%"},
+    {"_hz", "Hz"},
+    {"_px", "px"},
     {"_N_s", "N s"},
     {"_kg_m_s", "kg m/s"},
     {"_kg_m2", "kg m^2"},
@@ -25,6 +34,7 @@ constexpr std::array<std::pair<const char*, const char*>, 21> kSuffixes{{
     {"_deg", "deg"},
     {"_rad", "rad"},
     {"_ms", "ms"},
+    {"_us", "us"},
     {"_kg", "kg"},
     {"_J", "J"},
     {"_W", "W"},

@@ -41,6 +41,18 @@ BOOST_AUTO_TEST_CASE(a_column_unit_is_the_suffix_its_name_ends_with_the_longest_
   BOOST_TEST(column_unit("interval_ms") == "ms");
   BOOST_TEST(column_unit("ax_g") == "g_n");
   BOOST_TEST(column_unit("throw.speed_m_s") == "m/s");  // a sweep's varied key
+  // Rates, accelerations and squares, which "_s" and "_m_s" had caught ("'1'" for g, "s" for a
+  // damping rate in a sweep's table).
+  BOOST_TEST(column_unit("environment.gravity_m_s2") == "m/s^2");
+  BOOST_TEST(column_unit("water.damping_per_s") == "1/s");
+  BOOST_TEST(column_unit("sweep_throws_per_s") == "1/s");
+  BOOST_TEST(column_unit("scene.frame_rate_hz") == "Hz");
+  BOOST_TEST(column_unit("V2_m2_s2") == "m^2/s^2");
+  BOOST_TEST(column_unit("spin2_rev2_s2") == "rev^2/s^2");
+  BOOST_TEST(column_unit("draught_impulse_m3_s") == "m^3 s");
+  BOOST_TEST(column_unit("interval_low_percent") == "%");
+  BOOST_TEST(column_unit("mean_cpu_per_frame_us") == "us");
+  BOOST_TEST(column_unit("width_px") == "px");
 }
 
 BOOST_AUTO_TEST_CASE(a_name_without_a_suffix_is_dimensionless_unless_its_table_gives_the_meaning) {

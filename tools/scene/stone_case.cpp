@@ -296,7 +296,9 @@ Stone build_stone(const StoneSpec& spec, const std::string& file) {
   if (!(mp.mass_kg >= kStoneMass.lo && mp.mass_kg <= kStoneMass.hi))
     throw_input_error(file, 0, "stone", "the stone's mass " + num(mp.mass_kg) + " kg is outside [" + num(kStoneMass.lo) +
                                             ", " + num(kStoneMass.hi) + "] kg");
-  Stone stone = make_stone(mesh, mp, spec.radius_m, d.str());
+  // A prism or a lens keeps its symmetry axis as body z, however thick (BodyAxes::mesh); a mesh
+  // read from a file is turned onto its principal axes.
+  Stone stone = make_stone(mesh, mp, spec.radius_m, d.str(), spec.shape == StoneShape::mesh_file ? BodyAxes::principal : BodyAxes::mesh);
   if (spec.shape == StoneShape::mesh_file &&
       !(stone.bounding_radius_m >= kStoneRadius.lo && stone.bounding_radius_m <= kStoneRadius.hi))
     throw_input_error(file, 0, "stone.mesh_file",

@@ -181,4 +181,37 @@ BOOST_AUTO_TEST_CASE(a_key_of_another_shape_is_named_as_such_not_as_a_misspellin
   BOOST_TEST(f.find("stone.mesh_file: is a key of shape \"mesh\", not of shape \"prism\"") != std::string::npos, f);
 }
 
+BOOST_AUTO_TEST_CASE(a_thick_prism_or_lens_keeps_its_symmetry_axis_as_body_z) {
+  // Oracle: spec §1 (body z along the symmetry axis, the normal of the flat faces) and the N-gon's
+  // moments (model/README.md §1.2): for the N = 11 prism I_xx = I_zz at h = 1.686 R, for the lens (a
+  // double cone, 3 m R²/10 against m (3 R²/20 + h²/40)) at h = 2.45 R. At h = 3 R the moment about
+  // the axis is the smallest for both, yet body z stays the axis: every
+  // vertex keeps its height ±h/2 and the air disk its radius R. The principal rule had put the
+  // axis on body x (a spin about body z then tumbles the stone end over end).
+  for (const char* shape : {"prism", "lens"}) {
+    BOOST_TEST_CONTEXT(shape) {
+      const StoneCase c = parse({std::string("stone.shape=\"") + shape + "\"", "stone.radius_m=0.01", "stone.thickness_m=0.03"});
+      const Stone& s = c.stone;
+      BOOST_TEST((s.body_axes_in_mesh - Mat3::Identity()).norm() == 0.0);
+      double top = -1, bottom = 1;
+      for (const Vec3& v : s.body_mesh.vertices) {
+        top = std::max(top, v.z());
+        bottom = std::min(bottom, v.z());
+      }
+      BOOST_TEST(top - bottom == 0.03, boost::test_tools::tolerance(1e-12));  // the thickness along body z
+      BOOST_TEST(s.disk_radius_m == 0.01);
+      // The axis's moment the smallest: the case the principal rule turned on its side.
+      BOOST_TEST(s.inertia_body_kg_m2(2, 2) < s.inertia_body_kg_m2(0, 0));
+      BOOST_TEST(s.inertia_body_kg_m2(2, 2) < s.inertia_body_kg_m2(1, 1));
+    }
+  }
+  // The prism's moment about its axis against the closed form (a check that the axis is the z of
+  // the mesh, not a relabelled one): m R² (1 + 2 cos²(π/N)) / 6.
+  const StoneCase c = parse({"stone.radius_m=0.01", "stone.thickness_m=0.03"});
+  const double cos_pi_n = std::cos(3.14159265358979323846 / c.spec.segments);
+  BOOST_TEST(c.stone.inertia_body_kg_m2(2, 2) ==
+                 c.stone.mass.mass_kg * 1e-4 * (1 + 2 * cos_pi_n * cos_pi_n) / 6,
+             boost::test_tools::tolerance(1e-12));
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,6 +1,7 @@
 #include "verification/stones/bounce_sweep.hpp"
 
 #include <atomic>
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -150,8 +151,10 @@ std::vector<BounceSweepResult> run_bounce_sweeps(const std::vector<BounceSweepSp
     for (std::size_t j = 0; j < out[k].thresholds.size() && static_cast<int>(j) < specs[k].max_thresholds; ++j)
       bisect_jobs.push_back([&, k, j] {
         CountThreshold& t = out[k].thresholds[j];
+        std::string why;  // a failed run's reason (the run that stops the bisection is the last one)
         t = bisect_threshold(t, specs[k].threshold_tolerance,
-                             [&](double x) { return counters[k]->count(specs[k], x, nullptr); });
+                             [&](double x) { return counters[k]->count(specs[k], x, &why); });
+        if (!std::isnan(t.failed_at)) t.failure = why;
       });
   }
   ParallelOptions bis = options;

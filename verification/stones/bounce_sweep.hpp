@@ -47,6 +47,7 @@ struct CountThreshold {
   // Bisection stopped where a run failed (no count: the change may lie on either side of it), and
   // [lo, hi] is the bracket before that run; bisected stays false (not located to the tolerance).
   double failed_at = std::numeric_limits<double>::quiet_NaN();
+  std::string failure{};            // that run's reason (the solver's), empty if none failed
   bool more_in_cell() const { return bisected && count_above != count_at_cell_end; }
   double value() const { return 0.5 * (lo + hi); }
 };

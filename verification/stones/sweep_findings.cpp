@@ -168,6 +168,9 @@ Record sweeps_findings(const std::vector<BounceSweepResult>& sweeps) {
         th.add_row({x.lo, x.hi, double(x.count_below), double(x.count_above), x.bisected ? 1.0 : 0.0,
                     double(x.count_at_cell_end), x.failed_at});
       sr.set_table("thresholds", th);
+      std::vector<std::string> why;  // per threshold: why the run that stopped its bisection failed
+      for (const auto& x : s->thresholds) why.push_back(x.failure);
+      sr.set_strings("threshold_failures", why);
     }
     Record& cmp = pr.child("comparison");
     for (Convention c : {Convention::physical, Convention::paper}) compare_solvers(cmp, list, c);

@@ -368,6 +368,8 @@ ValidationResult run_validation(const ThrowProblem& clanet, const ThrowProblem& 
         out = make_history(q, solve(q, solver_of(v, q, rtol, true)), history_label(q, v));
       });
     }
+    if (v.beside_models() && v.solver == SolverKind::reference)
+      jobs.push_back([&] { R.with_spin_energy = contact_energy(as_variant(with_spin, v), rtol); });
     if (v.use != VariantUse::table) continue;
 
     // Clanet: minimum bouncing speed against attack angle (β from the case), largest β.

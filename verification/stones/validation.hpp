@@ -179,6 +179,9 @@ struct VariantResult {
   PowerLawShape speed_shape, spin_shape;
   // The seed's 8 m/s throws (every variant).
   ThrowHistory without_spin, with_spin;
+  // Per contact of the seed's spinning throw (reference variants beside the models): the energy
+  // balance the conventions' comparison judges on that throw, not on Clanet's.
+  std::vector<ContactEnergy> with_spin_energy;
 };
 
 // The cost of a throw with one law (physical convention): thread CPU time, minimum over repeats.

@@ -197,27 +197,29 @@ void store_first_contact(Record& r, const ThrowHistory& h) {
                      "° would count as held)");
 }
 
-// The energy balance of each contact (ContactEnergy) and its verdict.
-void store_energy(Record& g, const VariantResult& R) {
-  Record& e = g.child("energy");
+// The energy balance of each contact (ContactEnergy) of a reference run at tolerance rtol, and its
+// verdict, into g's child `name` (`throw_words`: which throw, for the reason).
+void store_energy(Record& g, const std::string& name, const std::vector<ContactEnergy>& energy, double rtol,
+                  const std::string& throw_words) {
+  Record& e = g.child(name);
   Table t{{"start_s", "end_s", "energy_change_J", "work_J", "quadrature_error_J", "tolerance_J", "samples"}, {}};
   double max_residual = 0, max_gain = -1e300;
-  for (const auto& c : R.energy) {
-    const double tol = c.quadrature_error_J + kIntegratorErrorFactor * R.energy_rtol * c.energy_scale_J;
+  for (const auto& c : energy) {
+    const double tol = c.quadrature_error_J + kIntegratorErrorFactor * rtol * c.energy_scale_J;
     t.add_row({c.start_s, c.end_s, c.energy_change_J, c.work_J, c.quadrature_error_J, tol, double(c.samples)});
     const double r = std::abs(c.energy_change_J - c.work_J) / tol;
     max_residual = std::isnan(r) ? r : (std::isnan(max_residual) ? max_residual : std::max(max_residual, r));
     max_gain = std::max(max_gain, c.energy_change_J / tol);
   }
   e.set_table("contacts", t);
-  e.set("rtol", R.energy_rtol);
+  e.set("rtol", rtol);
   e.set("integrator_error_factor", kIntegratorErrorFactor);
   Record in;
-  in.set("contacts", double(R.energy.size()));
-  in.set("max_residual_ratio", R.energy.empty() ? kNaN : max_residual);
-  in.set("max_gain_ratio", R.energy.empty() ? kNaN : max_gain);
+  in.set("contacts", double(energy.size()));
+  in.set("max_residual_ratio", energy.empty() ? kNaN : max_residual);
+  in.set("max_gain_ratio", energy.empty() ? kNaN : max_gain);
   decide_verdict(e, "verdict", "contact_energy", in,
-                 num(R.energy.size(), 3) + " contacts of the reference throw: the largest |ΔE − ∫P dt| is " + num(max_residual) +
+                 num(energy.size(), 3) + " contacts of " + throw_words + ": the largest |ΔE − ∫P dt| is " + num(max_residual) +
                      " of its tolerance, the largest energy change " + num(max_gain) + " of it (positive: a gain)");
 }
 
@@ -292,11 +294,13 @@ Record variant_record(const VariantResult& R, const ValidationOptions& o) {
   g.set("title", v.title());
   // Clanet's disk.
   {
-    Table t{{"attack_deg", "min_speed_m_s", "half_width_m_s"}, {}};
+    // The bracket's ends too: the figure draws them beside each point.
+    Table t{{"attack_deg", "min_speed_m_s", "half_width_m_s", "low_m_s", "high_m_s"}, {}};
     std::vector<std::string> notes;
     for (std::size_t i = 0; i < o.clanet_attack_deg.size(); ++i) {
       const BisectedValue& b = R.min_speed[i];
-      t.add_row({o.clanet_attack_deg[i], b.found ? b.value() : kNaN, b.found ? 0.5 * (b.hi - b.lo) : kNaN});
+      t.add_row({o.clanet_attack_deg[i], b.found ? b.value() : kNaN, b.found ? 0.5 * (b.hi - b.lo) : kNaN, b.found ? b.lo : kNaN,
+                 b.found ? b.hi : kNaN});
       notes.push_back(b.note);
     }
     g.set_table("min_speed", t);
@@ -344,7 +348,7 @@ Record variant_record(const VariantResult& R, const ValidationOptions& o) {
     g.set_strings("regimes", regimes);
     g.add_child("surfing", stored_history(R.surfing, o.history_dt_s));
     store_regimes(g, o);
-    if (v.solver == SolverKind::reference) store_energy(g, R);
+    if (v.solver == SolverKind::reference) store_energy(g, "energy", R.energy, R.energy_rtol, "the reference throw");
     store_bisected(g, "sphere_path_angle", R.sphere_path_angle);
   }
   if (!v.beside_models()) return g;
@@ -394,6 +398,13 @@ void skip_inputs(Record& in, const std::string& prefix, const Record& g, const s
     return v.has_value ? v.model : kNaN;
   };
   in.set(prefix + "min_speed", value("clanet_min_speed"));
+  // The bisections' half-brackets: a row is decided only where the whole bracket lies on one side
+  // of its bound (skips_like_a_stone).
+  auto half_width = [&](const char* child) {
+    return g.has_child(child) && g.at(child).flag("found") ? g.at(child).number("half_width") : 0.0;
+  };
+  in.set(prefix + "min_speed_half_width", half_width("min_speed_at_compared_attack"));
+  in.set(prefix + "max_path_angle_half_width", half_width("largest_path_angle"));
   in.set(prefix + "best_attack", value("clanet_best_attack"));
   // A one-angle grid measures no argmin (scored_value): its tied span, the angle itself, would meet
   // the row; without it the NaN misses, as an unmeasured row must not be met.
@@ -432,6 +443,7 @@ void bound_inputs(Record& in, const ValidationOptions& o) {
   in.set("max_path_angle_low", p.low).set("max_path_angle_high", p.high).set("max_path_angle_bound", b.max_path_angle_deg);
   in.set("contact_time_low", c.low).set("contact_time_high", c.high).set("contact_time_fraction", b.contact_time_fraction);
   in.set("contact_exponent_measured", 0.5 * (k.low + k.high));
+  in.set("contact_exponent_tolerance", o.exponent_tolerance);  // the power_law_exponent rule's (§5)
   in.set("attitude_bound_deg", b.attitude_deg);
 }
 
@@ -503,10 +515,10 @@ Record ranking_record(const Record& variants, const ValidationResult& v, const V
     bound_inputs(in, o);
     skip_inputs(in, "", g, held_key, o);
     decide_verdict(L, "skips", "skips_like_a_stone", in,
-                   "U_min " + num(in.number("min_speed")) + " m/s, argmin α " +
+                   "U_min " + num(in.number("min_speed")) + " ± " + num(in.number("min_speed_half_width")) + " m/s, argmin α " +
                        (std::isfinite(in.number("best_attack")) ? num(in.number("best_attack")) + "°" : std::string("not measured")) +
-                       ", β_max " +
-                       num(in.number("max_path_angle")) + "°, contact " + num(1000 * in.number("contact_time")) +
+                       ", β_max " + num(in.number("max_path_angle")) + " ± " + num(in.number("max_path_angle_half_width")) +
+                       "°, contact " + num(1000 * in.number("contact_time")) +
                        " ms, exponent [" + num(in.number("contact_exponent_low")) + ", " +
                        num(in.number("contact_exponent_high")) + "], pitch " + num(in.number("pitch_change_deg")) +
                        "° and roll " + num(in.number("roll_change_deg")) + "° through the first contact at " +
@@ -642,9 +654,11 @@ Record validation_findings(const ValidationResult& v, const ValidationOptions& o
     const Record& pap = why.at("paper");
     const double p_pap = pap.number("max_fluid_power_W");
     // Energy, a check that can fail: each contact's energy change against the integrated fluid
-    // power, for the default law's reference run of Clanet's throw (store_energy). P ≤ 0 holds
-    // face by face in the physical convention (an identity of the law): the balance is what is checked.
-    why.add_child("physical_energy", vars.at(phys_run->variant.key()).at("energy").at("verdict"));
+    // power, for the default law's reference run of the same seed throw the paper's verdict is on
+    // (store_energy). P ≤ 0 holds face by face in the physical convention (an identity of the law):
+    // the balance is what is checked.
+    store_energy(why, "physical_seed_energy", phys_run->with_spin_energy, o.reference_rtol, "the seed's spinning throw");
+    why.add_child("physical_energy", why.at("physical_seed_energy").at("verdict"));
     // A positive rate of work in the paper convention counts only above round-off of the stone's
     // own energy scale.
     const double round_off_W = 1e-9 * std::max(1.0, std::abs(pap.number("max_energy_gain_J")));

@@ -1,5 +1,6 @@
 #include "verification/study/verdict_rules.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -28,16 +29,30 @@ std::vector<std::string> prefixes_with(const Record& in, const std::string& fiel
   return out;  // sorted by name (numbers() is ordered)
 }
 
-// skips_like_a_stone: the rows a variant misses (prefix "V." for the variant's own numbers, the
-// measured ranges and bounds unprefixed), by name, in the order of the page. A NaN misses.
+// skips_like_a_stone: the rows a variant misses and the rows its intervals leave undecided (prefix
+// "V." for the variant's own numbers, the measured ranges and bounds unprefixed), by name, in the
+// order of the page. A NaN misses.
 bool within(double x, double lo, double hi) { return x >= lo && x <= hi; }
-std::vector<std::string> missed_rows(const Record& in, const std::string& v) {
-  std::vector<std::string> out;
+struct RowJudgement {
+  std::vector<std::string> missed, undecided;
+};
+RowJudgement judge_rows(const Record& in, const std::string& v) {
+  RowJudgement out;
   auto row = [&](bool met, const char* name) {
-    if (!met) out.emplace_back(name);
+    if (!met) out.missed.emplace_back(name);
+  };
+  // A bisected value x ± h (its bracket; records before the brackets were stored: h = 0) against
+  // [lo, hi]: met when the whole bracket lies within, missed when none of it does, else undecided.
+  auto bracketed = [&](const std::string& key, double lo, double hi, const char* name) {
+    const double x = in.number(v + key);
+    const double h = in.has_number(v + key + "_half_width") && std::isfinite(in.number(v + key + "_half_width"))
+                         ? in.number(v + key + "_half_width")
+                         : 0.0;
+    if (!std::isfinite(x) || x + h < lo || x - h > hi) out.missed.emplace_back(name);
+    else if (!(x - h >= lo && x + h <= hi)) out.undecided.emplace_back(name);
   };
   const double f = in.number("min_speed_fraction"), g = in.number("contact_time_fraction");
-  row(within(in.number(v + "min_speed"), in.number("min_speed_low") * (1 - f), in.number("min_speed_high") * (1 + f)), "U_min");
+  bracketed("min_speed", in.number("min_speed_low") * (1 - f), in.number("min_speed_high") * (1 + f), "U_min");
   // The argmin: where the grid's lowest minimum speeds tie over a span of angles (records since
   // the span was stored), every angle of it must lie within the bound.
   const double a_lo = in.number("best_attack_low") - in.number("best_attack_bound"),
@@ -46,19 +61,42 @@ std::vector<std::string> missed_rows(const Record& in, const std::string& v) {
   row(tied ? within(in.number(v + "best_attack_tied_low"), a_lo, a_hi) && within(in.number(v + "best_attack_tied_high"), a_lo, a_hi)
            : within(in.number(v + "best_attack"), a_lo, a_hi),
       "argmin α");
-  row(within(in.number(v + "max_path_angle"), in.number("max_path_angle_low") - in.number("max_path_angle_bound"),
-             in.number("max_path_angle_high") + in.number("max_path_angle_bound")),
-      "β_max");
+  bracketed("max_path_angle", in.number("max_path_angle_low") - in.number("max_path_angle_bound"),
+            in.number("max_path_angle_high") + in.number("max_path_angle_bound"), "β_max");
   row(within(in.number(v + "contact_time"), in.number("contact_time_low") * (1 - g), in.number("contact_time_high") * (1 + g)),
       "contact time");
-  row(within(in.number("contact_exponent_measured"), in.number(v + "contact_exponent_low"), in.number(v + "contact_exponent_high")),
-      "contact exponent");
+  // The exponent's 95 % interval against the measured exponent ± the tolerance of the report's
+  // power_law_exponent rule: met inside, missed disjoint, else undecided (a wider, noisier fit no
+  // longer passes more easily). Records before the tolerance was stored: the interval containing
+  // the measured exponent, as then.
+  {
+    const double m = in.number("contact_exponent_measured"), lo = in.number(v + "contact_exponent_low"),
+                 hi = in.number(v + "contact_exponent_high");
+    if (!in.has_number("contact_exponent_tolerance")) {
+      row(within(m, lo, hi), "contact exponent");
+    } else {
+      const double tol = in.number("contact_exponent_tolerance");
+      if (!std::isfinite(lo) || !std::isfinite(hi) || hi < m - tol || lo > m + tol) out.missed.emplace_back("contact exponent");
+      else if (!(lo >= m - tol && hi <= m + tol)) out.undecided.emplace_back("contact exponent");
+    }
+  }
   row(std::abs(in.number(v + "pitch_change_deg")) <= in.number("attitude_bound_deg") &&
           std::abs(in.number(v + "roll_change_deg")) <= in.number("attitude_bound_deg"),
       "attitude");
   row(in.number(v + "surfing") == 1, "surfing");
   row(in.number(v + "diving") == 1, "diving");
   row(in.number(v + "trout") == 1, "trout");
+  // In the page's order, whichever list holds them.
+  const std::vector<std::string> order = {"U_min", "argmin α", "β_max", "contact time", "contact exponent",
+                                          "attitude", "surfing", "diving", "trout"};
+  auto in_order = [&](std::vector<std::string>& xs) {
+    std::vector<std::string> sorted;
+    for (const auto& name : order)
+      if (std::find(xs.begin(), xs.end(), name) != xs.end()) sorted.push_back(name);
+    xs = sorted;
+  };
+  in_order(out.missed);
+  in_order(out.undecided);
   return out;
 }
 constexpr int kSkipRows = 9;  // the rows missed_rows judges
@@ -211,9 +249,11 @@ const std::map<std::string, Rule>& rules() {
        }},
       {"skips_like_a_stone",
        [](const Record& in) {
-         const auto missed = missed_rows(in, "");
+         const RowJudgement j = judge_rows(in, "");
          if (!passive(in, "")) return std::string("not passive");
-         return missed.empty() ? std::string("skips like a real stone") : "misses " + joined(missed);
+         if (!j.missed.empty())
+           return "misses " + joined(j.missed) + (j.undecided.empty() ? std::string() : "; not decided: " + joined(j.undecided));
+         return j.undecided.empty() ? std::string("skips like a real stone") : "not decided: " + joined(j.undecided);
        }},
       {"cheapest_skipping_variant",
        [](const Record& in) {
@@ -223,7 +263,8 @@ const std::map<std::string, Rule>& rules() {
          for (const auto& v : prefixes_with(in, "cost_s")) {
            if (in.number(v + ".free") != 1) continue;
            free.push_back(v);
-           if (passive(in, v + ".") && missed_rows(in, v + ".").empty())
+           const RowJudgement j = judge_rows(in, v + ".");
+           if (passive(in, v + ".") && j.missed.empty() && j.undecided.empty())
              passing.push_back({v, in.number(v + ".cost_s"), in.number(v + ".distance")});
          }
          const std::string best = cheapest(passing);
@@ -235,9 +276,9 @@ const std::map<std::string, Rule>& rules() {
          int closest_met = -1;
          double closest_distance = 0;
          for (const auto& v : free) {
-           const auto m = missed_rows(in, v + ".");
-           for (const auto& row : m) ++misses[row];
-           const int met = kSkipRows - static_cast<int>(m.size());
+           const RowJudgement j = judge_rows(in, v + ".");
+           for (const auto& row : j.missed) ++misses[row];
+           const int met = kSkipRows - static_cast<int>(j.missed.size() + j.undecided.size());
            const double d = in.number(v + ".distance");
            if (met > closest_met || (met == closest_met && d < closest_distance)) {
              closest = v;

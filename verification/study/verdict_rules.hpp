@@ -87,19 +87,26 @@
 //                        ranges (min_speed_low/high, best_attack_low/high, max_path_angle_low/high,
 //                        contact_time_low/high, contact_exponent_measured) and the bounds
 //                        (min_speed_fraction, best_attack_bound, max_path_angle_bound,
-//                        contact_time_fraction, attitude_bound_deg) → not passive (as contact_energy:
-//                        unbalanced or creates energy) | skips like a real stone | "misses R, …"
-//                        (the rows: U_min within the range ± fraction, argmin α and β_max within
-//                        the range ± bound, contact time within the range ± fraction, the exponent's
-//                        interval containing the measured exponent, |pitch| and |roll| change ≤
-//                        bound, the three regimes; a NaN misses)
+//                        contact_time_fraction, attitude_bound_deg, contact_exponent_tolerance);
+//                        optional min_speed_half_width, max_path_angle_half_width (the bisections'
+//                        brackets) → not passive (as contact_energy: unbalanced or creates energy) |
+//                        skips like a real stone | "misses R, …[; not decided: R, …]" | "not
+//                        decided: R, …" (the rows: U_min within the range ± fraction, argmin α and
+//                        β_max within the range ± bound, contact time within the range ± fraction,
+//                        the exponent's interval within the measured exponent ± tolerance, |pitch|
+//                        and |roll| change ≤ bound, the three regimes; a bracketed value is met
+//                        when its whole bracket is within, missed when none of it is, else not
+//                        decided, and so is the exponent's interval; without a tolerance (older
+//                        records) the interval need only contain the measured exponent; a NaN
+//                        misses)
 //   cheapest_skipping_variant  per variant V: V.<the variant inputs above>, V.free (1: free attitude),
 //                        V.cost_s, V.distance; the ranges and bounds unprefixed →
 //                        "V is the cheapest passive law and distribution that skips like a real
-//                        stone" (free variants only; the cheapest by cost_s, ties to the smaller
-//                        distance) | "no variant skips like a real stone; no free variant meets
-//                        R, …; closest: V (k of 9 rows)" (the most rows met, then the smaller
-//                        distance, then the name)
+//                        stone" (free variants only, every row met; the cheapest by cost_s, ties
+//                        to the smaller distance) | "no variant skips like a real stone; no free
+//                        variant meets R, …; closest: V (k of 9 rows)" (the rows every free
+//                        variant misses; the most rows met, then the smaller distance, then the
+//                        name)
 //   restart_strategy     per strategy S: S.failed, S.error_ratio, S.rhs_evaluations →
 //                        "S is the cheapest strategy that keeps the contact times" |
 //                        no strategy keeps the contact times (S keeps them with no failed run and

@@ -106,6 +106,41 @@ BOOST_AUTO_TEST_CASE(a_variant_skips_like_a_stone_only_within_every_bound) {
   BOOST_TEST(decide("skips_like_a_stone", in) == "not passive");
 }
 
+BOOST_AUTO_TEST_CASE(a_bisected_value_or_an_exponent_interval_across_a_bound_is_not_decided) {
+  // Oracle: the rule's definition, by hand (audit: β_max 40.2 ± 2.3° had met "45 ± 5°" and U_min
+  // 2.14 ± 0.23 m/s had missed "[2.25, 2.86]", both on their points; an exponent interval of any
+  // width containing −1 met its row). The whole bracket within the bound: met; none of it: missed;
+  // across it: not decided. The exponent's interval against −1 ± 0.25 (the report's
+  // power_law_exponent tolerance) likewise.
+  Record in = bounds();
+  passing(in, "");
+  in.set("contact_exponent_tolerance", 0.25).set("contact_exponent_low", -1.2).set("contact_exponent_high", -0.8);
+  BOOST_TEST(decide("skips_like_a_stone", in) == "skips like a real stone");
+  in.set("max_path_angle", 40.2).set("max_path_angle_half_width", 2.3);
+  BOOST_TEST(decide("skips_like_a_stone", in) == "not decided: β_max");
+  in.set("min_speed", 2.14).set("min_speed_half_width", 0.23);  // [1.91, 2.37] across 2.25
+  BOOST_TEST(decide("skips_like_a_stone", in) == "not decided: U_min, β_max");
+  in.set("min_speed_half_width", 0.1);  // [2.04, 2.24]: wholly below 2.25
+  BOOST_TEST(decide("skips_like_a_stone", in) == "misses U_min; not decided: β_max");
+  in.set("min_speed", 2.6).set("max_path_angle", 43.0);  // [40.7, 45.3] within [40, 50]
+  BOOST_TEST(decide("skips_like_a_stone", in) == "skips like a real stone");
+  in.set("contact_exponent_low", -2.0).set("contact_exponent_high", 0.0);  // contains −1, but wide
+  BOOST_TEST(decide("skips_like_a_stone", in) == "not decided: contact exponent");
+  in.set("contact_exponent_low", -0.7).set("contact_exponent_high", -0.5);  // disjoint from [−1.25, −0.75]
+  BOOST_TEST(decide("skips_like_a_stone", in) == "misses contact exponent");
+  in.set("contact_exponent_low", -1.2).set("contact_exponent_high", -0.8);
+  BOOST_TEST(decide("skips_like_a_stone", in) == "skips like a real stone");
+  // An undecided variant is not the cheapest that skips.
+  Record many = bounds();
+  many.set("contact_exponent_tolerance", 0.25);
+  passing(many, "a.");
+  many.set("a.free", 1.0).set("a.cost_s", 1.0).set("a.distance", 0.0);
+  many.set("a.contact_exponent_low", -1.2).set("a.contact_exponent_high", -0.8);
+  many.set("a.max_path_angle", 40.2).set("a.max_path_angle_half_width", 2.3);
+  BOOST_TEST(decide("cheapest_skipping_variant", many) ==
+             "no variant skips like a real stone; no free variant meets —; closest: a (8 of 9 rows)");
+}
+
 BOOST_AUTO_TEST_CASE(a_tied_argmin_holds_only_if_every_tied_angle_is_within_the_bound) {
   // Oracle: the rule's definition. The argmin window is [15, 25]° (bounds(): measured 20°, bound
   // 5°). A point argmin of 20° whose minimum speed ties with 30° (their bisection brackets overlap)
