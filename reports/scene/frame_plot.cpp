@@ -46,7 +46,10 @@ std::string frame_plot_commands(const FramePlot& p) {
   if (side) g << "set origin 0,0\nset size ratio -1 0.44,0.94\n";
   else g << "set size ratio -1\n";
   g << "set xrange [" << p.pond_x0_m << ":" << p.pond_x1_m << "]\nset yrange [" << p.pond_y0_m << ":"
-    << p.pond_y1_m << "]\nset xlabel 'x (m, along the throw)'\nset ylabel 'y (m)'\nset cblabel 'z (mm)'\n"
+    << p.pond_y1_m << "]\nset xlabel 'x (m, along the throw)'\nset ylabel 'y (m)'\n"
+    // The colour bar's label beside the 3-D panel's own z label would run into it with three panels
+    // (the foot line gives the colour's scale in mm).
+    << (side ? "unset cblabel\n" : "set cblabel 'z (mm)'\n")
     << "set object 1 rectangle from " << p.near_x0_m << "," << p.near_y0_m << " to " << p.near_x1_m << "," << p.near_y1_m
     << " front fillstyle empty border lc rgb '#555555' dt 2\n";
   if (p.stone_shown)
@@ -58,7 +61,7 @@ std::string frame_plot_commands(const FramePlot& p) {
   // Right: the water around the stone, oblique, its heights on the window's own scale.
   const double zs = p.near_z_m > 0 ? p.near_z_m : 2 * s;
   g << "unset object 1\nunset label 1\nunset label 4\nunset colorbox\n";
-  if (side) g << "set origin 0.42,0\nset size noratio 0.36,0.94\n";
+  if (side) g << "set origin 0.45,0\nset size noratio 0.32,0.94\n";  // clear of the colour bar's label
   else g << "set size noratio\n";
   g << "set view 52, 28, 1, 1\nset xyplane at " << -zs
     << "\nset border 4095 lc rgb '#888888'\nset xrange [" << p.near_x0_m << ":" << p.near_x1_m << "]\nset yrange [" << p.near_y0_m
@@ -77,7 +80,7 @@ std::string frame_plot_commands(const FramePlot& p) {
     const double h = p.stone_z_m;
     std::snprintf(note, sizeof note, "stone's centre: %.3g cm %s the still level%s", 100 * std::abs(h), h >= 0 ? "above" : "below",
                   in_window ? (h >= 0 ? " (drawn on the box's lid)" : " (drawn on the box's floor)") : ", outside this window");
-    g << "set label 3 " << gnuplot_quote(note) << " at screen " << (side ? 0.44 : 0.56) << ", screen 0.06 left front\n";
+    g << "set label 3 " << gnuplot_quote(note) << " at screen " << (side ? 0.46 : 0.56) << ", screen 0.06 left front\n";
   }
   g << "splot " << p.near << " with pm3d notitle\n";
   if (side) {

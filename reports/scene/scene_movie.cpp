@@ -373,8 +373,7 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
   // 2. Which frames are drawn, and as how many movie frames each: every stride-th in real time,
   //    every one near a contact as `repeats` pictures, the stone at even times from the frame to
   //    the next (the time warp repeats × stride).
-  const int repeats = o_.slow_pictures(scene_rate_hz_);
-  s.time_warp = o_.slow_motion > 1 ? double(repeats * stride_) : 1.0;
+  int repeats = o_.slow_pictures(scene_rate_hz_);
   auto slow_at = [&](double t) {
     if (!(o_.slow_motion > 1)) return 0L;
     for (std::size_t c = 0; c < contacts.size(); ++c)
@@ -392,6 +391,18 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
     if (c > 0 || frames_[j].index % stride_ == 0) drawn.push_back({j, c});
   }
   if (drawn.empty()) throw std::runtime_error("movie: no frames to draw (the scene is shorter than one movie frame)");
+  // The pictures within the movie limits (MovieOptions::max_pictures): slow motion's extra
+  // pictures, known only now, are cut to fit, and the summary says so.
+  {
+    long slow = 0;
+    for (const auto& d : drawn) slow += d.contact > 0;
+    const double real = static_cast<double>(drawn.size() - static_cast<std::size_t>(slow));
+    if (slow > 0 && real + double(slow) * repeats > o_.max_pictures) {
+      s.slow_pictures_asked = repeats;
+      repeats = std::max(1, static_cast<int>(std::floor((o_.max_pictures - real) / double(slow))));
+    }
+  }
+  s.time_warp = o_.slow_motion > 1 ? double(repeats * stride_) : 1.0;
   s.drawn = static_cast<long>(drawn.size());
   s.left_pond_t_s = left_t_s_;
   s.end_t_s = frames_[drawn.back().frame].t_s;

@@ -26,6 +26,7 @@
 // along the throw, and the surface along the same plane (reports/scene/side_view.hpp).
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,9 @@ struct MovieOptions {
   double slow_motion = 8;           // time-warp factor around contacts (1: real time throughout)
   double slow_margin_s = 0.03;      // slow motion from this long before a contact to this long after
   double after_leaving_s = 0.4;     // the movie ends this long after the stone leaves the pond
+  // At most this many pictures (the movie limits, tools/scene/resource_estimate.hpp): slow motion
+  // draws fewer pictures per frame where the contacts' frames would pass it.
+  double max_pictures = std::numeric_limits<double>::infinity();
   // Empty when usable with a scene of this frame rate; else what is wrong (a rate that does not
   // divide the scene's, a size out of range, an unknown format).
   std::string problem(double scene_rate_hz) const;
@@ -75,6 +79,7 @@ struct MovieSummary {
   std::uintmax_t bytes = 0;
   double scale_m = 0, near_z_m = 0;
   double time_warp = 1;            // the slow motion's factor (1: none)
+  int slow_pictures_asked = 0;     // > 0: the pictures per slow frame asked for, cut to fit max_pictures
   long drawn = 0, slow_drawn = 0;  // scene frames drawn; of them, in slow motion (slow_pictures each)
   double left_pond_t_s = -1;       // when the stone left the pond (-1: it did not)
   long contacts_beyond = 0;        // contacts that began after the movie's end

@@ -22,7 +22,7 @@ SideWindow side_window(double z_m, double radius_m) {
     w.z0_cm = z - 2 * R;
     w.z1_cm = z + 2 * R;
     char note[96];
-    std::snprintf(note, sizeof note, "still level %.3g cm %s", std::abs(z), z > 0 ? "below" : "above");
+    std::snprintf(note, sizeof note, "level %.3g cm %s", std::abs(z), z > 0 ? "below" : "above");  // short: a narrow panel
     w.level_note = note;
   }
   // The panel is taller than wide: the window takes its shape, the height grown about its middle.

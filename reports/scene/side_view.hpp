@@ -22,7 +22,7 @@ Vec3 side_view_direction(const Vec3& velocity_m_s);
 // The window around a stone of radius R (its largest vertex distance) whose centre is at height z:
 // the still level and the stone both in view, with a margin of 0.3 R, while the centre is within
 // kSideViewReach R of the still level; beyond it (high in flight, sunk deep), 4 R around the stone
-// alone, and `level_note` says where the still level is ("still level 12.3 cm below").
+// alone, and `level_note` says where the still level is ("level 12.3 cm below").
 // The window has the panel's shape, kSideViewAspect times as high as wide (the panel is drawn at
 // true scale), at least 5 R wide and centred on the stone; the height that shape adds is shared
 // above and below.

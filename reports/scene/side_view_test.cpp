@@ -112,8 +112,8 @@ BOOST_AUTO_TEST_CASE(the_window_holds_the_stone_and_the_still_level_at_true_scal
   BOOST_TEST(high.z0_cm == 50 - 12, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(high.z1_cm == 50 + 12, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(high.s1_cm == 7.5, boost::test_tools::tolerance(1e-12));
-  BOOST_TEST(high.level_note == "still level 50 cm below");
-  BOOST_TEST(side_window(-0.2, R).level_note == "still level 20 cm above");
+  BOOST_TEST(high.level_note == "level 50 cm below");
+  BOOST_TEST(side_window(-0.2, R).level_note == "level 20 cm above");
   const std::vector<double> s = side_samples_cm(high, 5);
   BOOST_TEST(s.front() == high.s0_cm);
   BOOST_TEST(s.back() == high.s1_cm);

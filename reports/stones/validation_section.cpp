@@ -238,9 +238,9 @@ SectionOutput validation_section(const Record& v) {
     std::vector<PlotSeries> ps = variant_curves(vars, "min_speed", "attack_deg", "min_speed_m_s", 1, false);
     // Each bisection's bracket, its two ends as small crosses in the variant's colour (linetype k:
     // the variants are the figure's first series), so that a point is read with its width.
+    std::vector<PlotSeries> ends;
     {
       int k = 0;
-      std::vector<PlotSeries> ends;
       for (const auto& key : vars.strings("keys")) {
         const Record& g = vars.at(key);
         if (!g.has_table("min_speed")) continue;
@@ -263,7 +263,8 @@ SectionOutput validation_section(const Record& v) {
     ax.x_label = "attack angle α (deg)";
     ax.y_label = "minimum speed for a bounce (m/s)";
     ax.extra = "set yrange [0:*]";
-    w.figure(line_figure("clanet_min_speed", "Clanet's disk: minimum bouncing speed against attack angle at β = 20°, measured and each variant (crosses: the ends of each bisection's bracket)",
+    w.figure(line_figure("clanet_min_speed", std::string("Clanet's disk: minimum bouncing speed against attack angle at β = 20°, measured and each variant") +
+                             (ends.empty() ? "" : " (crosses: the ends of each bisection's bracket)"),
                          ax, ps, "attack_deg", "speed_m_s"));
     for (const auto& ck : curves.strings("keys")) {
       const Record& c = curves.at(ck);

@@ -553,7 +553,8 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
       double h_resume = 0;  // the controller's proposal before an event cut the step back
       bool ok = false;
       Bs32Trial trial;
-      for (int attempt = 0;; ++attempt) {
+      int cuts = 0;  // kink cuts of this step (error-test rejections do not count against the guard)
+      for (;;) {
         double hh = std::min({h, o.dt_s, o.t_max_s - t});
         if (!now.wet()) hh = std::min(hh, flight_step_limit(stone, env, s, -now.deepest_m(), dip_m, surface == nullptr));
         // With a budget: the step ends by the frame's end and is no shorter than the budget left
@@ -590,13 +591,14 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
         const RigidState candidate = from_vector(trial.y1.data());
         measure_waterline(stone, candidate, surface, next);
         dense = HermiteStep{y0, trial.y1, k_start, trial.k4, hh};
-        if (attempt < kMaxKinkCuts) {
+        if (cuts < kMaxKinkCuts) {
           // Located to a tenth of the window: enough to end the cut step past the kink.
           const double f = kinks.first(dense, now, next, 0.1 * event_window_s / hh, 0.0);
           const double cut = f * hh + event_window_s;
           if (f > 0 && (1 - f) * hh > 2 * event_window_s && cut >= floor_h) {
             if (h_resume == 0) h_resume = bs32_next_step(hh, trial.error_norm);
             h = cut;
+            ++cuts;
             ++r.stats.root_evaluations;  // real-time: steps cut back to a kink
             continue;
           }

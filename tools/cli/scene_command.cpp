@@ -350,12 +350,14 @@ void run(const SceneArgs& a) {
       throw_input_error("--movie", 0, "", "the scene's " + std::to_string(o.frames()) + " frames make no movie frame (one is drawn every " +
                                               std::to_string(mo.stride(o.frame_rate_hz)) + " scene frames)");
     // The movie's drawing and its temporary frames are held to limits too (1e8 frames were accepted).
-    // At most: every scene frame drawn, each as slow_pictures() pictures (slow motion draws every
-    // frame near a contact, with the stone between it and the next).
+    // At most every scene frame drawn once; slow motion's extra pictures (the stone between frames
+    // near a contact, known only when the contacts are) are cut to what the limits leave
+    // (MovieOptions::max_pictures), and the summary says so.
     const double frames = static_cast<double>(o.frames());
-    enforce_limits(estimate_movie(frames, frames * mo.slow_pictures(o.frame_rate_hz), mo.width_px, mo.height_px, mo.top_cells_max,
-                                  mo.near_cells_max, MovieOptions::record_bytes(o)),
+    enforce_limits(estimate_movie(frames, frames, mo.width_px, mo.height_px, mo.top_cells_max, mo.near_cells_max,
+                                  MovieOptions::record_bytes(o)),
                    a.limits, "--movie");
+    if (!a.limits.allow_large) mo.max_pictures = movie_picture_limit(frames, mo.width_px, mo.height_px, mo.top_cells_max, mo.near_cells_max);
     { AtomicOutput check(mo.output); }  // the folder exists and is writable
     if (!program_runs({"gnuplot", "--version"})) throw_input_error("--movie", 0, "", "gnuplot not found (apt-get install gnuplot-nox)");
     if (!program_runs({"ffmpeg", "-version"})) throw_input_error("--movie", 0, "", "ffmpeg not found (apt-get install ffmpeg)");
@@ -409,7 +411,8 @@ void run(const SceneArgs& a) {
                     {"bytes", m.bytes},             {"width_px", m.width_px},     {"height_px", m.height_px},
                     {"scale_m", m.scale_m},         {"near_z_m", m.near_z_m},     {"time_warp", m.time_warp},
                     {"drawn", m.drawn},             {"slow_drawn", m.slow_drawn}, {"end_t_s", m.end_t_s},
-                    {"left_pond_t_s", m.left_pond_t_s}, {"contacts_beyond", m.contacts_beyond}};
+                    {"left_pond_t_s", m.left_pond_t_s}, {"contacts_beyond", m.contacts_beyond},
+                    {"slow_pictures_asked", m.slow_pictures_asked}};
     }
     std::cout << json_text(j) << std::endl;
   } else {
@@ -424,6 +427,9 @@ void run(const SceneArgs& a) {
                 << " s, assembled in " << general(m.encode_wall_s, 3) << " s (wall); colour scale ±" << general(1e3 * m.scale_m, 2)
                 << " mm; " << m.drawn << " scene frames drawn, " << m.slow_drawn << " of them in slow motion (" << general(m.time_warp)
                 << "×)";
+      if (m.slow_pictures_asked > 0)
+        std::cout << "; slow motion cut from " << m.slow_pictures_asked << " to " << m.time_warp / mo.stride(o.frame_rate_hz)
+                  << " pictures a frame to stay within the movie limits (--allow-large lifts them)";
       if (m.left_pond_t_s >= 0)
         std::cout << "; the stone left the pond at " << general(m.left_pond_t_s, 4) << " s, the movie ends at " << general(m.end_t_s, 4)
                   << " s, " << m.contacts_beyond << " contacts after that not shown";

@@ -84,6 +84,11 @@ ResourceEstimate estimate_movie(double frames, double images, double width_px, d
   return e;
 }
 
+double movie_picture_limit(double frames, double width_px, double height_px, double top_cells, double near_cells) {
+  const double pixels = width_px * height_px, data = frames * 4 * (top_cells * top_cells + near_cells * near_cells);
+  return std::max(0.0, std::min(kMaxMoviePixels / pixels, (kMaxMovieTemporaryBytes - data) / (3 * pixels)));
+}
+
 ResourceEstimate estimate_run(const StoneCase& c, const RunSolvers& solvers) {
   ResourceEstimate e;
   const double triangles = static_cast<double>(c.stone.body_mesh.triangles.size());

@@ -49,6 +49,9 @@ constexpr double kMaxMoviePixels = 5e10;
 constexpr double kMaxMovieTemporaryBytes = 2e10;  // 20 GB of the temporary folder's disk
 ResourceEstimate estimate_movie(double frames, double images, double width_px, double height_px, double top_cells, double near_cells,
                                 double record_bytes);
+// The most pictures a movie of `frames` scene frames may draw within kMaxMoviePixels and
+// kMaxMovieTemporaryBytes (each frame's data counted once): what slow motion is cut to.
+double movie_picture_limit(double frames, double width_px, double height_px, double top_cells, double near_cells);
 // A sweep: every throw held to the one-throw limits at the heaviest case the design's corners give
 // (SweepCases::heaviest_throw), all throws together to kSweepWorkFactor times them; its table in
 // memory (throws × row_bytes) beside one throw's memory per compute thread.

@@ -277,7 +277,8 @@ const std::map<std::string, Rule>& rules() {
          double closest_distance = 0;
          for (const auto& v : free) {
            const RowJudgement j = judge_rows(in, v + ".");
-           for (const auto& row : j.missed) ++misses[row];
+           for (const auto& row : j.missed) ++misses[row];  // unmet: missed, or not decided
+           for (const auto& row : j.undecided) ++misses[row];
            const int met = kSkipRows - static_cast<int>(j.missed.size() + j.undecided.size());
            const double d = in.number(v + ".distance");
            if (met > closest_met || (met == closest_met && d < closest_distance)) {

@@ -104,9 +104,9 @@
 //                        "V is the cheapest passive law and distribution that skips like a real
 //                        stone" (free variants only, every row met; the cheapest by cost_s, ties
 //                        to the smaller distance) | "no variant skips like a real stone; no free
-//                        variant meets R, …; closest: V (k of 9 rows)" (the rows every free
-//                        variant misses; the most rows met, then the smaller distance, then the
-//                        name)
+//                        variant meets R, …; closest: V (k of 9 rows)" (the rows no free variant
+//                        meets: each misses them or leaves them not decided; the most rows met,
+//                        then the smaller distance, then the name)
 //   restart_strategy     per strategy S: S.failed, S.error_ratio, S.rhs_evaluations →
 //                        "S is the cheapest strategy that keeps the contact times" |
 //                        no strategy keeps the contact times (S keeps them with no failed run and

@@ -138,7 +138,7 @@ BOOST_AUTO_TEST_CASE(a_bisected_value_or_an_exponent_interval_across_a_bound_is_
   many.set("a.contact_exponent_low", -1.2).set("a.contact_exponent_high", -0.8);
   many.set("a.max_path_angle", 40.2).set("a.max_path_angle_half_width", 2.3);
   BOOST_TEST(decide("cheapest_skipping_variant", many) ==
-             "no variant skips like a real stone; no free variant meets —; closest: a (8 of 9 rows)");
+             "no variant skips like a real stone; no free variant meets β_max; closest: a (8 of 9 rows)");
 }
 
 BOOST_AUTO_TEST_CASE(a_tied_argmin_holds_only_if_every_tied_angle_is_within_the_bound) {
