@@ -583,6 +583,13 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
         trial = bs32_step(stone, env, y0, k_start, hh, surface, atol, o.rtol);
         r.stats.rhs_evaluations += 3;
         const bool forced = budgeted && hh <= floor_h * (1 + 1e-12);
+        if (forced && !std::isfinite(trial.error_norm)) {
+          // The budget holds the step at its floor: a shorter retry would be lengthened to the same
+          // step and fail the same way, for ever. A state that is not a number is a failure.
+          failed(t, "the state is not a number after a step the frame's budget forces (step " + std::to_string(hh) +
+                        " s): the right-hand side is not finite there");
+          break;
+        }
         if (!(trial.error_norm <= 1.0) && !(forced && std::isfinite(trial.error_norm))) {  // too large, or NaN
           ++r.stats.error_test_failures;
           h = std::isfinite(trial.error_norm) ? bs32_next_step(hh, trial.error_norm) : 0.25 * hh;
