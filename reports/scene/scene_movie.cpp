@@ -221,9 +221,6 @@ void MovieRecorder::record(const SceneFrame& f) {
   FrameData d;
   d.index = f.index;
   d.t_s = f.t_s;
-  d.x_m = x;
-  d.y_m = y;
-  d.z_m = z;
   d.sunk = f.stone_status == StoneStatus::sank;
   d.in_pond = in_pond;
   d.top_x0_m = x0_m_ + (ti0 + 0.5 * (top_block_ - 1)) * cell_m_;
@@ -411,7 +408,7 @@ MovieSummary MovieRecorder::finish(const std::vector<ContactRecord>& contacts, c
   {
     std::ofstream t(dir_ / "track.dat");
     t.precision(9);
-    for (const auto& f : frames_) t << f.x_m << " " << f.y_m << "\n";
+    for (const auto& f : frames_) t << f.stone.position_m.x() << " " << f.stone.position_m.y() << "\n";
     std::ofstream c(dir_ / "touches.dat");
     c.precision(9);
     for (const auto& k : contacts) c << k.first_touch_m.x() << " " << k.first_touch_m.y() << "\n";

@@ -105,13 +105,13 @@ class MovieRecorder {
  private:
   struct FrameData {
     long index;
-    double t_s, x_m, y_m, z_m;
+    double t_s;
     bool sunk, in_pond;
     double top_x0_m, top_y0_m;   // the top window's first block centre
     double near_x0_m, near_y0_m, near_dx_m;
     int near_nx, near_ny;
     double top_scale_m, near_scale_m;  // robust largest |z| of each view
-    RigidState stone;                   // for the side view (reports/scene/side_view.hpp)
+    RigidState stone;                   // where it is drawn, its track, the side view (side_view.hpp)
     // The surface along the side view's direction through the stone's centre, at s = s0 + k ds
     // (cm): wide enough for the view of the stone anywhere up to the next frame.
     double water_s0_cm = 0, water_ds_cm = 1;
