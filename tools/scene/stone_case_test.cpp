@@ -4,6 +4,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <numbers>
 
 #include "tools/io/input_error.hpp"
 #include "tools/scene/documented_keys.hpp"
@@ -208,7 +209,7 @@ BOOST_AUTO_TEST_CASE(a_thick_prism_or_lens_keeps_its_symmetry_axis_as_body_z) {
   // The prism's moment about its axis against the closed form (a check that the axis is the z of
   // the mesh, not a relabelled one): m R² (1 + 2 cos²(π/N)) / 6.
   const StoneCase c = parse({"stone.radius_m=0.01", "stone.thickness_m=0.03"});
-  const double cos_pi_n = std::cos(3.14159265358979323846 / c.spec.segments);
+  const double cos_pi_n = std::cos(std::numbers::pi / c.spec.segments);
   BOOST_TEST(c.stone.inertia_body_kg_m2(2, 2) ==
                  c.stone.mass.mass_kg * 1e-4 * (1 + 2 * cos_pi_n * cos_pi_n) / 6,
              boost::test_tools::tolerance(1e-12));

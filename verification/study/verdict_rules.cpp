@@ -33,6 +33,13 @@ std::vector<std::string> prefixes_with(const Record& in, const std::string& fiel
 // "V." for the variant's own numbers, the measured ranges and bounds unprefixed), by name, in the
 // order of the page. A NaN misses.
 bool within(double x, double lo, double hi) { return x >= lo && x <= hi; }
+// An interval [lo, hi] against a band: wholly inside, wholly outside, or across it (a NaN end is
+// neither inside nor outside).
+enum class Placement { inside, outside, across };
+Placement placement(double lo, double hi, double band_lo, double band_hi) {
+  if (lo >= band_lo && hi <= band_hi) return Placement::inside;
+  return hi < band_lo || lo > band_hi ? Placement::outside : Placement::across;
+}
 struct RowJudgement {
   std::vector<std::string> missed, undecided;
 };
@@ -41,6 +48,12 @@ RowJudgement judge_rows(const Record& in, const std::string& v) {
   auto row = [&](bool met, const char* name) {
     if (!met) out.missed.emplace_back(name);
   };
+  // An interval against its row's band: a NaN end misses, as a NaN value does.
+  auto placed = [&](double lo, double hi, double band_lo, double band_hi, const char* name) {
+    const Placement p = std::isfinite(lo) && std::isfinite(hi) ? placement(lo, hi, band_lo, band_hi) : Placement::outside;
+    if (p == Placement::outside) out.missed.emplace_back(name);
+    else if (p == Placement::across) out.undecided.emplace_back(name);
+  };
   // A bisected value x ± h (its bracket; records before the brackets were stored: h = 0) against
   // [lo, hi]: met when the whole bracket lies within, missed when none of it does, else undecided.
   auto bracketed = [&](const std::string& key, double lo, double hi, const char* name) {
@@ -48,8 +61,7 @@ RowJudgement judge_rows(const Record& in, const std::string& v) {
     const double h = in.has_number(v + key + "_half_width") && std::isfinite(in.number(v + key + "_half_width"))
                          ? in.number(v + key + "_half_width")
                          : 0.0;
-    if (!std::isfinite(x) || x + h < lo || x - h > hi) out.missed.emplace_back(name);
-    else if (!(x - h >= lo && x + h <= hi)) out.undecided.emplace_back(name);
+    placed(x - h, x + h, lo, hi, name);
   };
   const double f = in.number("min_speed_fraction"), g = in.number("contact_time_fraction");
   bracketed("min_speed", in.number("min_speed_low") * (1 - f), in.number("min_speed_high") * (1 + f), "U_min");
@@ -76,8 +88,7 @@ RowJudgement judge_rows(const Record& in, const std::string& v) {
       row(within(m, lo, hi), "contact exponent");
     } else {
       const double tol = in.number("contact_exponent_tolerance");
-      if (!std::isfinite(lo) || !std::isfinite(hi) || hi < m - tol || lo > m + tol) out.missed.emplace_back("contact exponent");
-      else if (!(lo >= m - tol && hi <= m + tol)) out.undecided.emplace_back("contact exponent");
+      placed(lo, hi, m - tol, m + tol, "contact exponent");
     }
   }
   row(std::abs(in.number(v + "pitch_change_deg")) <= in.number("attitude_bound_deg") &&
@@ -86,18 +97,7 @@ RowJudgement judge_rows(const Record& in, const std::string& v) {
   row(in.number(v + "surfing") == 1, "surfing");
   row(in.number(v + "diving") == 1, "diving");
   row(in.number(v + "trout") == 1, "trout");
-  // In the page's order, whichever list holds them.
-  const std::vector<std::string> order = {"U_min", "argmin α", "β_max", "contact time", "contact exponent",
-                                          "attitude", "surfing", "diving", "trout"};
-  auto in_order = [&](std::vector<std::string>& xs) {
-    std::vector<std::string> sorted;
-    for (const auto& name : order)
-      if (std::find(xs.begin(), xs.end(), name) != xs.end()) sorted.push_back(name);
-    xs = sorted;
-  };
-  in_order(out.missed);
-  in_order(out.undecided);
-  return out;
+  return out;  // each list in the page's order: the rows are judged in it
 }
 constexpr int kSkipRows = 9;  // the rows missed_rows judges
 bool passive(const Record& in, const std::string& v) {
@@ -243,8 +243,11 @@ const std::map<std::string, Rule>& rules() {
          const double lo = in.number("exponent_low"), hi = in.number("exponent_high");
          const double band_lo = in.number("expected") - in.number("tolerance"),
                       band_hi = in.number("expected") + in.number("tolerance");
-         if (lo >= band_lo && hi <= band_hi) return std::string("consistent with the expected exponent");
-         if (hi < band_lo || lo > band_hi) return std::string("excludes the expected exponent");
+         switch (placement(lo, hi, band_lo, band_hi)) {
+           case Placement::inside: return std::string("consistent with the expected exponent");
+           case Placement::outside: return std::string("excludes the expected exponent");
+           case Placement::across: break;
+         }
          return std::string("exponent not established");
        }},
       {"skips_like_a_stone",
