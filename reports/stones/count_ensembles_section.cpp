@@ -17,6 +17,21 @@ std::string axis_name(const std::string& p) {
 
 std::string count_or_failed(double c) { return c < 0 ? std::string("failed") : fmt(c); }
 
+// What the failed members were: runs that ran away (a thousandfold energy gain, which in the paper
+// convention is its printed forces creating energy, spec §1.6: a stone that skips on, gaining speed,
+// has no finished count) and runs that failed otherwise. Empty for data without the kinds stored.
+std::string ran_away_tally(const Record& c) {
+  if (!c.has_number("failed_runs") || !c.has_number("ran_away_runs") || c.number("failed_runs") == 0) return "";
+  const double failed = c.number("failed_runs"), away = c.number("ran_away_runs");
+  std::string s = " Of the " + fmt(failed, 6) + " failed members of all ensembles, " + fmt(away, 6) +
+                  " ran away (their energy over a thousand times its release value";
+  s += c.text("convention") == "paper" ? ": the printed forces create energy, spec §1.6, so such a stone skips on "
+                                         "with growing speed until the solver gives up)"
+                                       : ": forces that only take energy away cannot do that, so the solver's steps did)";
+  s += away == failed ? "." : "; " + fmt(failed - away, 6) + " failed otherwise (each throw's reason below says how many of each).";
+  return s;
+}
+
 }  // namespace
 
 SectionOutput count_ensembles_section(const Record& c) {
@@ -36,17 +51,28 @@ SectionOutput count_ensembles_section(const Record& c) {
   const auto& params = c.strings("parameters");
   const Record& verdicts = c.at("verdicts");
   const auto& keys = verdicts.strings("order");
+  // Data written before the failures' kinds were stored have no ran-away columns: the failures
+  // column then gives the failed members alone.
+  const bool kinds = t.has_column("realtime_ran_away") && t.has_column("reference_ran_away");
   MarkdownTable m({"throw", "single runs (real-time / reference)", "real-time mean ± sd", "reference mean ± sd",
-                   "difference [95 % interval]", "verdict"});
+                   "difference [95 % interval]",
+                   kinds ? "failed members (of them ran away): real-time / reference" : "failed members: real-time / reference",
+                   "verdict"});
   const auto value = t.column("value"), rs = t.column("realtime_single"), fs = t.column("reference_single"),
              rm = t.column("realtime_mean"), rsd = t.column("realtime_sd"), fm = t.column("reference_mean"),
              fsd = t.column("reference_sd"), d = t.column("difference"), lo = t.column("difference_low"),
-             hi = t.column("difference_high");
-  for (std::size_t i = 0; i < t.rows(); ++i)
+             hi = t.column("difference_high"), rf = t.column("realtime_failed"), ff = t.column("reference_failed");
+  const std::vector<double> ra = kinds ? t.column("realtime_ran_away") : std::vector<double>(),
+                            fa = kinds ? t.column("reference_ran_away") : std::vector<double>();
+  for (std::size_t i = 0; i < t.rows(); ++i) {
+    const auto failures = [&](const std::vector<double>& failed, const std::vector<double>& away) {
+      return fmt(failed[i], 4) + (kinds ? " (" + fmt(away[i], 4) + ")" : std::string());
+    };
     m.row({axis_name(params[i]) + " = " + fmt(value[i], 4), count_or_failed(rs[i]) + " / " + count_or_failed(fs[i]),
            fmt_or_dash(rm[i]) + " ± " + fmt_or_dash(rsd[i], 2), fmt_or_dash(fm[i]) + " ± " + fmt_or_dash(fsd[i], 2),
            fmt_or_dash(d[i]) + " [" + fmt_or_dash(lo[i]) + ", " + fmt_or_dash(hi[i]) + "]",
-           "**" + verdicts.at(keys[i]).text("verdict") + "**"});
+           failures(rf, ra) + " / " + failures(ff, fa), "**" + verdicts.at(keys[i]).text("verdict") + "**"});
+  }
   w.table(m);
   w.text("Of " + fmt(c.number("sampled"), 4) + " sampled throws the single runs agree on " + fmt(c.number("single_agree"), 4) +
          "; on the ensembles a difference is established on " + fmt(c.number("different"), 4) + ", none is established on " +
@@ -55,7 +81,8 @@ SectionOutput count_ensembles_section(const Record& c) {
          (c.has_number("undecided_failed") && c.number("undecided_failed") > 0
               ? "; on " + fmt(c.number("undecided_failed"), 4) +
                     " nothing is decided because runs of an ensemble failed (a failed run has no count, and the runs "
-                    "that fail are not a random sample of the ensemble, so the survivors' means are not the ensemble's)."
+                    "that fail are not a random sample of the ensemble, so the survivors' means are not the ensemble's)." +
+                    ran_away_tally(c)
               : "."));
   w.subheading("Reasons");
   for (std::size_t i = 0; i < keys.size(); ++i) w.verdict(axis_name(params[i]) + " = " + fmt(value[i], 4), verdicts.at(keys[i]));

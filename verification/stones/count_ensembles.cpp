@@ -1,5 +1,6 @@
 #include "verification/stones/count_ensembles.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -66,6 +67,8 @@ std::vector<CountEnsembleThrow> run_count_ensembles(const ThrowProblem& base, co
       t.factors = factors;
       t.realtime.assign(factors.size(), -1);
       t.reference.assign(factors.size(), -1);
+      t.realtime_away.assign(factors.size(), 0);
+      t.reference_away.assign(factors.size(), 0);
       out.push_back(t);
       ThrowParameters tp = conv.parameters;
       parameter_of(tp, param) = v;
@@ -82,13 +85,24 @@ std::vector<CountEnsembleThrow> run_count_ensembles(const ThrowProblem& base, co
       ThrowParameters tp = p.parameters;
       tp.speed_m_s *= factors[k];  // the speed, relatively; direction, attitude and spin kept
       const ThrowProblem q = with_parameters(p, tp);
-      jobs.push_back([&t, q, k, &realtime] { t.realtime[k] = sweep_bounce_count(q, realtime); });
-      jobs.push_back([&t, q, k, &reference] { t.reference[k] = sweep_bounce_count(q, reference); });
+      jobs.push_back([&t, q, k, &realtime] {
+        const SweepCount c = sweep_count(q, realtime);
+        t.realtime[k] = c.bounces;
+        t.realtime_away[k] = c.ran_away;
+      });
+      jobs.push_back([&t, q, k, &reference] {
+        const SweepCount c = sweep_count(q, reference);
+        t.reference[k] = c.bounces;
+        t.reference_away[k] = c.ran_away;
+      });
     }
   }
   run_jobs(jobs, parallel);
-  for (CountEnsembleThrow& t : out)
+  for (CountEnsembleThrow& t : out) {
     t.difference = welch_difference(ran(t.realtime, t.realtime_failed), ran(t.reference, t.reference_failed));
+    t.realtime_ran_away = static_cast<int>(std::count(t.realtime_away.begin(), t.realtime_away.end(), 1));
+    t.reference_ran_away = static_cast<int>(std::count(t.reference_away.begin(), t.reference_away.end(), 1));
+  }
   return out;
 }
 
@@ -101,10 +115,11 @@ Record count_ensembles_findings(const std::vector<CountEnsembleThrow>& throws, c
   r.set("throws_per_axis", o.throws_per_axis);
   Table t{{"value", "realtime_single", "reference_single", "realtime_mean", "realtime_sd", "reference_mean", "reference_sd",
            "difference", "difference_low", "difference_high", "realtime_failed", "reference_failed", "single_agree",
-           "established"},
+           "established", "realtime_ran_away", "reference_ran_away"},
           {}};
   std::vector<std::string> params, keys;
   int single_agree = 0, established = 0, none_established = 0, same = 0, undecided = 0;
+  int failed_runs = 0, ran_away_runs = 0;  // over every ensemble's members
   for (std::size_t i = 0; i < throws.size(); ++i) {
     const CountEnsembleThrow& c = throws[i];
     MeanDifference d = c.difference;
@@ -116,7 +131,9 @@ Record count_ensembles_findings(const std::vector<CountEnsembleThrow>& throws, c
     single_agree += agree ? 1 : 0;
     t.add_row({c.value, double(c.realtime_single), double(c.reference_single), d.mean_a, d.sd_a, d.mean_b, d.sd_b,
                d.difference, d.low, d.high, double(c.realtime_failed), double(c.reference_failed), agree ? 1.0 : 0.0,
-               d.established() ? 1.0 : 0.0});
+               d.established() ? 1.0 : 0.0, double(c.realtime_ran_away), double(c.reference_ran_away)});
+    failed_runs += c.realtime_failed + c.reference_failed;
+    ran_away_runs += c.realtime_ran_away + c.reference_ran_away;
     params.push_back(to_string(c.parameter));
     char key[64];
     std::snprintf(key, sizeof key, "throw_%zu", i + 1);
@@ -128,14 +145,20 @@ Record count_ensembles_findings(const std::vector<CountEnsembleThrow>& throws, c
     in.set("count_spread", d.sd_a + d.sd_b);
     in.set("realtime_failed", c.realtime_failed);
     in.set("reference_failed", c.reference_failed);
-    char reason[400];
+    // Of the failed members, how many ran away (their energy over a thousandfold: the paper
+    // convention's printed forces, spec §1.6) and how many failed otherwise.
+    char away[200] = "";
+    if (c.realtime_ran_away + c.reference_ran_away > 0)
+      std::snprintf(away, sizeof away, ", of which %d and %d ran away (energy over a thousand times the release value)",
+                    c.realtime_ran_away, c.reference_ran_away);
+    char reason[600];
     std::snprintf(reason, sizeof reason,
                   "%s = %.4g %s: over %zu throws each (speed × 1 ± 1e%.3g … 1e%.3g) real-time %.3g ± %.2g, reference "
-                  "%.3g ± %.2g bounces (mean ± sd; %d and %d failed); difference %.3g, 95 %% interval [%.3g, %.3g] "
+                  "%.3g ± %.2g bounces (mean ± sd; %d and %d failed%s); difference %.3g, 95 %% interval [%.3g, %.3g] "
                   "(Welch); the single runs gave %d and %d",
                   to_string(c.parameter), c.value, unit_of(c.parameter), c.factors.size(),
                   std::log10(o.perturbation_smallest), std::log10(o.perturbation_largest), d.mean_a, d.sd_a, d.mean_b,
-                  d.sd_b, c.realtime_failed, c.reference_failed, d.difference, d.low, d.high, c.realtime_single,
+                  d.sd_b, c.realtime_failed, c.reference_failed, away, d.difference, d.low, d.high, c.realtime_single,
                   c.reference_single);
     const Record& v = decide_verdict(r.child("verdicts"), key, "ensemble_bounce_agreement", in, reason);
     const std::string& phrase = v.text("verdict");
@@ -153,6 +176,8 @@ Record count_ensembles_findings(const std::vector<CountEnsembleThrow>& throws, c
   r.set("not_established", none_established);
   r.set("same", same);
   r.set("undecided_failed", undecided);
+  r.set("failed_runs", failed_runs);
+  r.set("ran_away_runs", ran_away_runs);
   return r;
 }
 

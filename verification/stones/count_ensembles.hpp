@@ -32,7 +32,9 @@ struct CountEnsembleThrow {
   int realtime_single = -1, reference_single = -1;  // −1: the solver failed
   std::vector<double> factors;                      // the speed factors of the members
   std::vector<double> realtime, reference;          // counts per member (−1: failed)
+  std::vector<char> realtime_away, reference_away;  // per member: failed by running away (ran_away)
   int realtime_failed = 0, reference_failed = 0;
+  int realtime_ran_away = 0, reference_ran_away = 0;  // of the failed members, those that ran away
   MeanDifference difference;                        // realtime − reference, over the members that ran
 };
 
@@ -46,7 +48,8 @@ std::vector<CountEnsembleThrow> run_count_ensembles(const ThrowProblem& base, co
                                                    const std::vector<std::pair<SweepParameter, std::vector<double>>>& axes,
                                                    const CountEnsembleOptions& options, const ParallelOptions& parallel);
 
-// The section's record: a table of the sampled throws, one verdict per throw, and the tally.
+// The section's record: a table of the sampled throws, one verdict per throw, and the tally (with
+// how many failed members of all ensembles ran away, and how many failed otherwise).
 Record count_ensembles_findings(const std::vector<CountEnsembleThrow>& throws, const CountEnsembleOptions& options);
 
 }  // namespace stoneskip

@@ -5,6 +5,9 @@
 // recomputed from the stored members.
 #include <boost/test/unit_test.hpp>
 
+#include <cmath>
+
+#include "model/stone/rigid_body.hpp"
 #include "verification/stones/convergence_throw.hpp"
 #include "verification/stones/count_ensembles.hpp"
 #include "verification/study/verdict_rules.hpp"
@@ -88,6 +91,85 @@ BOOST_AUTO_TEST_CASE(members_are_independent_solves_and_verdicts_follow_welch, *
   BOOST_TEST(contradicted_verdicts(r).empty());
   BOOST_TEST(r.number("sampled") == 2.0);
   BOOST_TEST(r.number("different") + r.number("not_established") + r.number("same") == 2.0);
+}
+
+BOOST_AUTO_TEST_CASE(a_failed_solve_ran_away_only_past_a_thousandfold_energy) {
+  // Closed form: the release state of the convergence throw, and a last state that is the same
+  // stone at rest at a height h, whose energy m g h is set to 999 and 1001 times the release energy.
+  const ThrowProblem p = convergence_throw();
+  const double released = mechanical_energy(p.stone, p.environment, p.initial).total_J();
+  BOOST_REQUIRE(released > 1e-3);
+  const auto at_energy = [&](double factor, Outcome outcome) {
+    ThrowResult r;
+    r.outcome = outcome;
+    r.final_state = p.initial;
+    r.final_state.velocity_m_s.setZero();
+    r.final_state.angular_momentum_kg_m2_s.setZero();
+    r.final_state.position_m.z() = factor * released / (p.stone.mass.mass_kg * p.environment.gravity_m_s2);
+    return r;
+  };
+  BOOST_TEST(ran_away(p, at_energy(1001, Outcome::failed)));
+  BOOST_TEST(!ran_away(p, at_energy(999, Outcome::failed)));
+  BOOST_TEST(!ran_away(p, at_energy(1e6, Outcome::sank)));  // only a failed solve runs away
+  ThrowResult nan = at_energy(1, Outcome::failed);
+  nan.final_state.position_m.z() = std::nan("");
+  BOOST_TEST(!ran_away(p, nan));  // a state that is not a number failed, it did not run away
+}
+
+BOOST_AUTO_TEST_CASE(a_paper_runaway_is_told_from_a_finished_throw, *boost::unit_test::timeout(60)) {
+  // The stones report's paper-convention spin sweep at 80 rev/s, 8 m/s × (1 + 1e-4), α = 10°: with
+  // the printed forces the real-time stepper's stone gains energy without bound (its own message
+  // names the runaway, by the stepper's separate test at the step that failed); the physical
+  // convention's same throw sinks with a count.
+  ThrowProblem p = convergence_throw();
+  ThrowParameters tp = p.parameters;
+  tp.attack_angle_deg = 10;
+  tp.spin_rev_s = 80;
+  tp.speed_m_s = 8 * (1 + 1e-4);
+  p.realtime.t_max_s = 10;
+  const ThrowProblem paper = with_parameters(with_convention(p, Convention::paper), tp);
+  const ThrowResult r = solve(paper, realtime_choice(paper.realtime));
+  BOOST_REQUIRE(r.outcome == Outcome::failed);
+  BOOST_TEST(r.outcome_detail.find("ran the stone away") != std::string::npos);
+  const SweepCount c = sweep_count(paper, realtime_choice(paper.realtime));
+  BOOST_TEST(c.bounces == -1);
+  BOOST_TEST(c.ran_away);
+  const ThrowProblem physical = with_parameters(with_convention(p, Convention::physical), tp);
+  const SweepCount f = sweep_count(physical, realtime_choice(physical.realtime));
+  BOOST_TEST(f.bounces >= 0);
+  BOOST_TEST(!f.ran_away);
+}
+
+BOOST_AUTO_TEST_CASE(the_record_counts_the_failed_members_that_ran_away) {
+  // Two hand-made throws: counts and kinds of failure given, so the tally is known exactly.
+  CountEnsembleThrow a;
+  a.value = 40;
+  a.factors = {1, 1, 1, 1};
+  a.realtime = {3, -1, -1, 5};
+  a.reference = {4, -1, 6, 7};
+  a.realtime_failed = 2;
+  a.realtime_ran_away = 2;
+  a.reference_failed = 1;
+  a.reference_ran_away = 0;
+  a.difference = welch_difference({3, 5}, {4, 6, 7});
+  CountEnsembleThrow b = a;
+  b.value = 80;
+  b.realtime = {2, 2, 3, 3};
+  b.reference = {2, 3, 2, 3};
+  b.realtime_failed = b.realtime_ran_away = b.reference_failed = b.reference_ran_away = 0;
+  b.difference = welch_difference(b.realtime, b.reference);
+  CountEnsembleOptions o;
+  o.members = 4;
+  const Record r = count_ensembles_findings({a, b}, o);
+  BOOST_TEST(r.number("failed_runs") == 3.0);
+  BOOST_TEST(r.number("ran_away_runs") == 2.0);
+  BOOST_TEST(r.number("undecided_failed") == 1.0);
+  const Table& t = r.table("throws");
+  BOOST_TEST(t.column("realtime_ran_away") == (std::vector<double>{2, 0}), boost::test_tools::per_element());
+  BOOST_TEST(t.column("reference_ran_away") == (std::vector<double>{0, 0}), boost::test_tools::per_element());
+  const std::string reason = r.at("verdicts").at("throw_1").text("reason");
+  BOOST_TEST(reason.find("2 and 1 failed, of which 2 and 0 ran away") != std::string::npos, reason);
+  BOOST_TEST(r.at("verdicts").at("throw_2").text("reason").find("ran away") == std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(invalid_options_are_refused) {

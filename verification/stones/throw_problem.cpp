@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "model/stone/rigid_body.hpp"
 #include "solvers/reference/cvode_stone.hpp"
 
 namespace stoneskip {
@@ -86,11 +87,23 @@ StateAt state_at(const ThrowProblem& p, const SolverChoice& s, double t_s) {
   return out;
 }
 
-int sweep_bounce_count(const ThrowProblem& p, SolverChoice s) {
+int sweep_bounce_count(const ThrowProblem& p, SolverChoice s) { return sweep_count(p, s).bounces; }
+
+bool ran_away(const ThrowProblem& p, const ThrowResult& r) {
+  if (r.outcome != Outcome::failed) return false;
+  const double released_J = mechanical_energy(p.stone, p.environment, p.initial).total_J();
+  const double last_J = mechanical_energy(p.stone, p.environment, r.final_state).total_J();
+  return last_J > 1e3 * std::max(std::abs(released_J), 1e-3);  // a NaN state is a failure, not a runaway
+}
+
+SweepCount sweep_count(const ThrowProblem& p, SolverChoice s) {
   s.realtime.record_trajectory = false;
   s.reference.record_trajectory = false;
   const ThrowResult r = solve(p, s);
-  return r.outcome == Outcome::failed ? -1 : r.bounces;
+  SweepCount c;
+  if (r.outcome == Outcome::failed) c.ran_away = ran_away(p, r);
+  else c.bounces = r.bounces;
+  return c;
 }
 
 }  // namespace stoneskip

@@ -44,6 +44,20 @@ ThrowResult solve(const ThrowProblem& p, const SolverChoice& s);
 // solvers/README.md).
 int sweep_bounce_count(const ThrowProblem& p, SolverChoice s);
 
+// Whether a failed solve ran away: its last state holds more than a thousand times the release
+// energy (and over 1 mJ) — the rule the real-time stepper names a paper-convention runaway by
+// (solvers/realtime/stone_stepper.cpp): the printed forces create energy (spec §1.6), so such a
+// stone skips on, gaining speed, until a solver gives up; its count is not a finished throw's.
+// False for a solve that did not fail, or failed with its energy in bounds.
+bool ran_away(const ThrowProblem& p, const ThrowResult& r);
+
+// A sweep's count and, where the solve failed (bounces −1), whether it ran away.
+struct SweepCount {
+  int bounces = -1;
+  bool ran_away = false;
+};
+SweepCount sweep_count(const ThrowProblem& p, SolverChoice s);
+
 // Solves `repeats` times and returns the last result with stats.cpu_s the minimum over the runs
 // (the least disturbed measurement of the cost on a shared machine).
 ThrowResult solve_min_cpu(const ThrowProblem& p, const SolverChoice& s, int repeats);
