@@ -95,9 +95,25 @@ void timing_part(SectionWriter& w, const std::string& key, const Record& c) {
                                   " median intervals of every stamp"
                             : ", as asked") +
             ").";
-  w.text("The rate is the inverse of the median interval between kept reports. An interval of " +
-         fmt(t.number("gap_factor"), 3) + " median intervals or more is a gap, and about round(interval / median) − 1 "
-         "reports were lost in it; the jitter is the standard deviation of the other intervals. " + clock);
+  // How gaps were counted (verification/captures/capture_timing.cpp): by the fitted clock's slots
+  // where that clock replaced the stamps, by bursts where the host polled, else by the intervals.
+  std::string counting;
+  if (t.text("clock") == "regular_reports")
+    counting = "Each stamp takes the slot of that clock nearest to it, and slots skipped between neighbouring reports "
+               "are reports lost (a gap): an interval is judged by where its two stamps fall on the clock, not by its "
+               "length alone (a late stamp then an early one make one long and one short interval over single slots). "
+               "The jitter is the standard deviation of the intervals that skip no slot.";
+  else if (t.has_number("bursts") && t.flag("bursts"))
+    counting = "The reports reached the host in bursts (several stamped together, as a host that polls delivers them): "
+               "the rate is from the median interval per report, each burst's last report is as many slots after the "
+               "previous burst's last as the burst has reports, more where the time between them exceeds that by three "
+               "quarters of a period or more, and those extra slots are reports lost. The jitter is the standard "
+               "deviation of the intervals inside bursts and into bursts that skip no slot.";
+  else
+    counting = "An interval of " + fmt(t.number("gap_factor"), 3) +
+               " median intervals or more is a gap, and about round(interval / median) − 1 reports were lost in it; the "
+               "jitter is the standard deviation of the other intervals.";
+  w.text("The rate is the inverse of the median interval between kept reports. " + clock + " " + counting);
   MarkdownTable m({"quantity", "value"});
   m.row({"samples in the file", fmt(t.number("samples"))})
       .row({"repeated reports dropped", fmt(t.number("repeated"))})

@@ -78,6 +78,25 @@ std::string detect(const std::vector<TextLine>& lines) {
 void check_sane(const Trace& t) {
   constexpr double kMaxDuration_s = kMaxCaptureTimeSpread_s, kMaxAccel_g = 1e3, kMaxRate_deg_s = 1e6;
   const double t0 = median_time_s(t);
+  // A jump between neighbouring samples larger than a capture may span: of the two, the one
+  // further from the median is named, with its neighbour (a file whose later half was shifted put
+  // the median there, and the check below named the first sample, a good one; a single absurd time
+  // was named as "going backwards" on the line after it).
+  const auto where = [&](std::size_t k) { return t.samples[k].line > 0 ? "line " + std::to_string(t.samples[k].line)
+                                                                       : "sample " + std::to_string(k + 1); };
+  for (std::size_t k = 1; k < t.samples.size(); ++k) {
+    const double a = t.samples[k - 1].t_s, b = t.samples[k].t_s;
+    if (!std::isfinite(a) || !std::isfinite(b) || std::abs(b - a) <= kMaxDuration_s) continue;
+    const bool later = std::abs(b - t0) >= std::abs(a - t0);
+    const std::size_t named = later ? k : k - 1, other = later ? k - 1 : k;
+    char what[240];
+    std::snprintf(what, sizeof what,
+                  "time %.15g s is not within %g s of the neighbouring sample's time (%.15g s, %s): a capture spans "
+                  "less, so one of the two is wrong",
+                  t.samples[named].t_s, kMaxDuration_s, t.samples[other].t_s, where(other).c_str());
+    const std::string sample = t.samples[named].line > 0 ? "" : "sample " + std::to_string(named + 1) + ": ";
+    throw_input_error(t.source, t.samples[named].line, "", sample + what);
+  }
   for (std::size_t k = 0; k < t.samples.size(); ++k) {
     const TraceSample& x = t.samples[k];
     char what[200] = "";

@@ -117,6 +117,13 @@ BOOST_AUTO_TEST_CASE(time_going_backwards_names_the_line) {
                                "E: 13.0 0003 0003 2\nE: 13.0 0000 0000 0\nE: 13.01 0003 0003 3\nE: 13.01 0000 0000 0\n"),
                       "bad.cap:3: time -50000000 s is not within"),
              "evemu, as written");
+  // A file whose later part is shifted by 2e6 s: the median lies there, and the first sample, a
+  // good one, was named. The jump between neighbours is named, with both lines.
+  const std::string shifted = "10.00 31 00 00 80 80 9a\n10.01 31 00 00 80 80 9a\n10.02 31 00 00 80 80 9b\n"
+                              "2000010.03 31 00 00 80 80 9a\n2000010.04 31 00 00 80 80 9a\n2000010.05 31 00 00 80 80 9b\n";
+  BOOST_TEST(contains(error_of(shifted), "bad.cap:3: time 10.02 s is not within 1e+06 s of the neighbouring sample's time "
+                                         "(2000010.03 s, line 4)"),
+             error_of(shifted));
   BOOST_TEST(contains(error_of(kCsvHead + "1,0,0,1,0,0,0,0,0,0,0,-\n0.5,0,0,1,0,0,0,0,0,0,0,-\n"), "backwards"));
   BOOST_TEST(contains(error_of("N: Nintendo Wii Remote Accelerometer\nE: 1.0 0003 0003 1\nE: 0.5 0003 0003 2\n"), "bad.cap:3"));
   // A device's second block goes on from its first (main: each block started a clock of its own,
@@ -127,6 +134,7 @@ BOOST_AUTO_TEST_CASE(time_going_backwards_names_the_line) {
                                "E: 0.9 0003 0003 2\n"),
                       "bad.cap:7: time goes backwards (0.9 s after 1 s on line 3, the last event of this device's earlier block)"));
   const Trace split = parse_capture(accel_at + "N: Nintendo Wii Remote Motion Plus\nE: 0.5 0003 0003 9\nE: 0.5 0000 0000 0\n" +
+                                        "E: 1.0 0003 0003 18\nE: 1.0 0000 0000 0\nE: 1.5 0003 0003 9\nE: 1.5 0000 0000 0\n" +
                                         accel_at.substr(0, 37) + "E: 1.5 0003 0003 2\nE: 1.5 0000 0000 0\n",
                                     "split.evemu");
   BOOST_TEST(split.samples.size() == 2u);
@@ -140,6 +148,10 @@ BOOST_AUTO_TEST_CASE(a_misspelt_header_key_or_another_trace_version_is_refused_a
   const std::string row = "0,0,0,1,0,0,0,0,0,0,0,-\n0.01,0,0,1,0,0,0,0,0,0,0,-\n";
   const std::string trace = std::string(kTraceCsvMagic) + "\n# has_gyroo: false\n" + kTraceCsvColumns + "\n" + row;
   BOOST_TEST(contains(error_of(trace), "bad.cap:2: has_gyroo: not a header key: a misspelling of 'has_gyro'?"), error_of(trace));
+  // The trace's own keys given twice are refused as the shared ones are: "has_gyro: true" then
+  // "false" silently made a capture unusable for want of a MotionPlus.
+  const std::string twice = std::string(kTraceCsvMagic) + "\n# has_gyro: true\n# has_gyro: false\n" + kTraceCsvColumns + "\n" + row;
+  BOOST_TEST(contains(error_of(twice), "bad.cap:3: has_gyro: given twice (first on line 2): keep one"), error_of(twice));
   const std::string v2 = "# stoneskip trace v2\n" + std::string(kTraceCsvColumns) + "\n" + row;
   BOOST_TEST(contains(error_of(v2), "bad.cap:1: '# stoneskip trace v2' is not a trace version this build reads"), error_of(v2));
   const std::string log = "10.00 31 00 00 80 80 9a\n10.01 31 00 00 80 80 9a\n";
@@ -279,6 +291,66 @@ BOOST_AUTO_TEST_CASE(an_evemu_accelerometer_that_stops_or_pauses_in_a_swing_is_n
     if (first_accel_s + x.t_s > from + 0.003 && first_accel_s + x.t_s < to - 0.003) ++inside;
   BOOST_TEST(inside == 0);
   BOOST_TEST(analyse_timing(paused).stats.dropped_reports >= 4);  // the 60 ms pause: about 6 reports
+}
+
+BOOST_AUTO_TEST_CASE(an_evemu_motionplus_stream_that_starts_late_or_ends_early_invents_no_rate) {
+  // A MotionPlus changes some count every report (noise), so 0.1 s without one of its frames is a
+  // stream that is not there; the reader gave the accelerometer frames before its first frame a
+  // rate of exactly 0 and those after its last that frame's rate, for the rest of the throw (the
+  // capture then judged "usable with caveats", blaming the lever arm). Oracle: the synthetic
+  // recording's own MotionPlus event times, cut from the text: no sample may lie more than 0.1 s
+  // (plus the 2 ms that pairs the two devices' events of one report) outside them, and a reader
+  // warning names where the stream starts or ends; a silence inside the recording is warned of.
+  SyntheticThrow th;
+  th.swing_rate_rad_s = 7.0;
+  SyntheticTruth truth;
+  const std::string text = synthetic_evemu(th, {}, truth);
+  double first_event_s = -1;  // the first accelerometer event's host time: the trace's zero
+  auto without_gyro = [&](double from, double to) {
+    std::string out;
+    bool gyro = false, accel = false;
+    for (std::size_t at = 0; at < text.size();) {
+      const std::size_t end = text.find('\n', at);
+      const std::string line = text.substr(at, end - at + 1);
+      at = end + 1;
+      if (line.rfind("N: ", 0) == 0) {
+        gyro = line.find("Motion Plus") != std::string::npos;
+        accel = line.find("Accelerometer") != std::string::npos;
+      }
+      if ((gyro || accel) && line.rfind("E: ", 0) == 0) {
+        const double t = std::stod(line.substr(3));
+        if (accel && first_event_s < 0) first_event_s = t;
+        if (gyro && t >= from && t < to) continue;
+      }
+      out += line;
+    }
+    return out;
+  };
+  const Trace full = parse_capture(without_gyro(0, 0), "full.evemu");
+  BOOST_TEST(full.warnings.empty());
+  const double t0 = first_event_s + full.samples.front().t_s, t1 = first_event_s + full.samples.back().t_s;
+  const double mid = 0.5 * (t0 + t1);
+  // A trace's times count from its first kept sample: the full trace's times say where each is.
+  const auto full_samples = [&](double from, double to) {
+    return std::count_if(full.samples.begin(), full.samples.end(), [&](const TraceSample& x) {
+      return first_event_s + x.t_s >= from && first_event_s + x.t_s < to;
+    });
+  };
+  const Trace late = parse_capture(without_gyro(0, mid), "late.evemu");
+  BOOST_TEST(static_cast<long>(late.samples.size()) == full_samples(mid - 0.002, 1e9));
+  BOOST_REQUIRE(!late.warnings.empty());
+  BOOST_TEST(contains(late.warnings.front(), "late.evemu:"), late.warnings.front());
+  BOOST_TEST(contains(late.warnings.front(), "the MotionPlus stream starts here"), late.warnings.front());
+  const Trace early = parse_capture(without_gyro(mid, 1e9), "early.evemu");
+  // The last MotionPlus frame lies within 20 ms before mid (a frame every report, ≈ 10 ms).
+  BOOST_TEST(static_cast<long>(early.samples.size()) <= full_samples(0, mid + 0.1 + 0.002));
+  BOOST_TEST(static_cast<long>(early.samples.size()) >= full_samples(0, mid - 0.02 + 0.1));
+  BOOST_REQUIRE(!early.warnings.empty());
+  BOOST_TEST(contains(early.warnings.front(), "the MotionPlus stream ends here"), early.warnings.front());
+  const Trace gap = parse_capture(without_gyro(mid, mid + 0.3), "gap.evemu");
+  BOOST_TEST(gap.samples.size() == full.samples.size());
+  BOOST_REQUIRE(gap.warnings.size() == 1u);
+  BOOST_TEST(contains(gap.warnings.front(), "no MotionPlus frame for"), gap.warnings.front());
 }
 
 BOOST_AUTO_TEST_CASE(identical_reports_of_a_still_remote_at_200_hz_are_not_repeats_but_repeats_are) {
@@ -438,6 +510,16 @@ BOOST_AUTO_TEST_CASE(half_a_calibration_is_refused_and_the_two_count_lines_are_c
                       ":2: calibration.accel_one_g_counts: one-g and zero-g counts are 2 apart on Y"));
   const std::string tiny = block_hex({512, 512, 512}, {616, 616, 1000});
   BOOST_TEST(contains(error_of("# calibration.block: " + tiny + "\n" + gentle_log()), "are 488 apart on Z"));
+  // A one-g point below zero-g, 104 counts away (the spacing of a real remote): the axis would read
+  // every acceleration with its sign flipped (+0.317 g for −0.317 g on gentle_sidearm's X, judged
+  // "usable" with an attack angle of 27.6° for the truth's 15°). Oracle: the +1 g reading lies
+  // above the zero-g one (wiibrew.org, Wiimote, Accelerometer calibration).
+  const std::string flipped = block_hex({512, 512, 512}, {408, 616, 616});
+  BOOST_TEST(contains(error_of("# calibration.block: " + flipped + "\n" + gentle_log()),
+                      "the one-g count 408 on X is below its zero-g count 512"), error_of("# calibration.block: " + flipped + "\n" + gentle_log()));
+  BOOST_TEST(contains(error_of("# calibration.accel_zero_counts: 512,512,512\n# calibration.accel_one_g_counts: 616,408,616\n" +
+                               gentle_log()),
+                      ":2: calibration.accel_one_g_counts: the one-g count 408 on Y is below its zero-g count 512"));
 }
 
 BOOST_AUTO_TEST_CASE(a_second_calibration_block_that_differs_is_refused_and_a_late_header_still_wins_with_a_warning) {

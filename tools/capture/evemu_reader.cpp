@@ -22,6 +22,12 @@ constexpr int kAbsRx = 0x03, kAbsRy = 0x04, kAbsRz = 0x05;
 constexpr int kBtnA = 0x130, kBtnB = 0x131;
 constexpr long long kMaxMotionPlusValue = 8192LL * 18000 / 440;  // 335 127
 
+std::string seconds(double s) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", s);
+  return b;
+}
+
 struct Frame {
   double t_s;
   std::array<double, 3> v;
@@ -220,6 +226,14 @@ Trace read_evemu(const std::string& text, const std::string& file) {
   constexpr double kSameReport_s = 2e-3;  // accelerometer and MotionPlus events of one HID report
   const long held_reports = hold_unchanged_readings(accel_frames, gyro_frames, t.calibration.gyro_slow_counts_per_deg_s,
                                                      kSameReport_s);
+  // A MotionPlus that turns or merely sits still changes some count every report (its noise is
+  // several counts; the driver writes (raw − 8192)·9), so ten reports without one of its frames are
+  // not held values but a stream that is not there: before its first frame (the driver adds the
+  // MotionPlus device after the remote's) or after its last (unplugged, or the recording cut), the
+  // rate would be invented (zero, or the last frame's held for the rest of the throw). Such
+  // accelerometer frames at either end are left out, and a silence inside the recording is warned of.
+  constexpr double kGyroSilence_s = 0.1;
+  std::vector<char> unseen(accel_frames.size(), 0);  // no MotionPlus frame within kGyroSilence_s before
   std::size_t g = 0, k = 0;
   unsigned buttons = 0;
   for (const Frame& a : accel_frames) {
@@ -228,6 +242,8 @@ Trace read_evemu(const std::string& text, const std::string& file) {
     x.t_s = a.t_s;  // counted from the first sample's below
     for (int i = 0; i < 3; ++i) x.accel_g[i] = c.accel_g_from_report(i, a.v[i] + 0x200);
     while (g + 1 < gyro_frames.size() && gyro_frames[g + 1].t_s <= a.t_s + kSameReport_s) ++g;
+    if (t.has_gyro)
+      unseen[t.samples.size()] = gyro_frames[g].t_s > a.t_s + kSameReport_s || a.t_s - gyro_frames[g].t_s > kGyroSilence_s;
     if (t.has_gyro && gyro_frames[g].t_s <= a.t_s + kSameReport_s) {
       for (int i = 0; i < 3; ++i) {
         const double counts = gyro_frames[g].v[i] / 9.0;  // slow-mode counts from zero
@@ -242,6 +258,34 @@ Trace read_evemu(const std::string& text, const std::string& file) {
     }
     x.buttons = buttons;
     t.samples.push_back(x);
+  }
+  if (t.has_gyro) {
+    std::size_t first = 0, last = t.samples.size();
+    while (first < last && unseen[first]) ++first;
+    while (last > first && unseen[last - 1]) --last;
+    if (first == last)
+      throw_input_error(file, gyro_frames.front().line, "",
+                        "no accelerometer frame lies within " + seconds(kGyroSilence_s) +
+                            " s after a MotionPlus frame: the two streams do not overlap");
+    const auto where = [&](std::size_t i) { return input_location(file, t.samples[i].line, ""); };
+    if (first > 0)
+      t.warnings.push_back(where(first) + ": the MotionPlus stream starts here; the " + std::to_string(first) +
+                           " accelerometer frame(s) before it have no rotation and are left out");
+    if (last < t.samples.size())
+      t.warnings.push_back(where(last - 1) + ": the MotionPlus stream ends here (no frame for " +
+                           seconds(kGyroSilence_s) + " s after); the " + std::to_string(t.samples.size() - last) +
+                           " accelerometer frame(s) after it have no rotation and are left out");
+    for (std::size_t i = first; i < last; ++i)
+      if (unseen[i]) {
+        std::size_t e = i;
+        while (e < last && unseen[e]) ++e;
+        t.warnings.push_back(where(i) + ": no MotionPlus frame for " + seconds(t.samples[e - 1].t_s - t.samples[i].t_s + kGyroSilence_s) +
+                             " s or more from here: its rate is held from the last frame over " + std::to_string(e - i) +
+                             " accelerometer frame(s)");
+        break;  // the first silence is named; the verdict's caveat counts the warnings
+      }
+    t.samples.erase(t.samples.begin() + static_cast<std::ptrdiff_t>(last), t.samples.end());
+    t.samples.erase(t.samples.begin(), t.samples.begin() + static_cast<std::ptrdiff_t>(first));
   }
   count_times_from_first(t);  // capture_times.hpp
   if (held_reports > 0)

@@ -1,6 +1,7 @@
 #include "tools/capture/trace_csv.hpp"
 
 #include <cstdio>
+#include <set>
 
 #include "tools/capture/capture_header.hpp"
 #include "tools/capture/capture_text.hpp"
@@ -33,6 +34,14 @@ Trace read_trace_csv(const std::string& text, const std::string& file) {
       std::string key, value;
       if (columns_seen || !header_comment(s, key, value)) continue;
       bool flag = false;
+      static const std::set<std::string> own{"source", "timestamps", "gyro_mode", "has_gyro", "has_buttons", "has_accel"};
+      if (own.count(key)) {
+        // The trace's own keys, as the shared header keys (capture_header.cpp): a second value would
+        // silently win ("has_gyro: true" then "false" made a capture unusable for want of a gyro).
+        const auto [at, fresh] = t.header_key_lines.emplace(key, line.number);
+        if (!fresh)
+          throw_input_error(file, line.number, key, "given twice (first on line " + std::to_string(at->second) + "): keep one");
+      }
       if (key == "source") {
         // informational
       } else if (key == "timestamps") {

@@ -103,7 +103,19 @@ DecodedReport decode_report(const std::uint8_t* bytes, std::size_t size) {
 
 std::string one_g_spacing_problem(const std::array<double, 3>& zero, const std::array<double, 3>& one) {
   for (int i = 0; i < 3; ++i) {
-    const double s = std::abs(one[i] - zero[i]);
+    // Signed: the one-g point is the axis's reading with +1 g along it, above its zero-g point (the
+    // ADXL330's output rises with acceleration along the axis, and the remote's EEPROM stores the
+    // +1 g reading, wiibrew.org "Wiimote", Accelerometer calibration). One below zero would read
+    // every acceleration on that axis with its sign flipped, and a capture so read still looks sound.
+    const double s = one[i] - zero[i];
+    if (s < 0) {
+      char b[300];
+      std::snprintf(b, sizeof b,
+                    "the one-g count %g on %c is below its zero-g count %g: a remote's one-g point lies %g to %g counts "
+                    "above zero-g (the +1 g reading), so this axis would read every acceleration with its sign flipped",
+                    one[i], "XYZ"[i], zero[i], kMinOneGCounts, kMaxOneGCounts);
+      return b;
+    }
     if (s >= kMinOneGCounts && s <= kMaxOneGCounts) continue;
     char b[240];
     std::snprintf(b, sizeof b,

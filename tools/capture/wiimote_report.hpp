@@ -56,8 +56,8 @@ struct CalibrationBlock {
 };
 std::optional<CalibrationBlock> decode_calibration_block(const std::uint8_t* bytes, std::size_t size);
 
-// What is wrong with an accelerometer calibration whose one-g and zero-g counts lie kMinOneG..
-// kMaxOneG apart on no axis ("" when every axis does). A 10-bit axis spans ±512 counts around its
+// What is wrong with an accelerometer calibration whose one-g count lies below its zero-g count, or
+// not kMinOneG..kMaxOneG above it, on some axis ("" when every axis is right). A 10-bit axis spans ±512 counts around its
 // zero, so a 1 g of s counts reads ±512/s g: the ADXL330 is rated ±3 g and real remotes clip near
 // ±3.5–4.6 g (spec §4), about 110–150 counts per g. Below 26 counts the axis would span ±20 g (the
 // most a throw reaches, model/README.md §4), above 400 less than ±1.3 g (a still remote tilted

@@ -465,6 +465,9 @@ BOOST_AUTO_TEST_CASE(sweeps_too_large_or_written_where_they_must_not_be) {
   // main: no upper bound (100 000 threads asked for; one the system would not start was std::terminate).
   expect_refused(run_apart({"sweep", small.string(), "--quiet", "--threads", "100000", "--out", (s.dir / "t.h5").string()}),
                  {"--threads: must be in [0, 256] (got 100000)"});
+  // 0 threads leaves rank 0 only to schedule: alone, nothing would compute (it ran one thread, silently).
+  expect_refused(run_apart({"sweep", small.string(), "--quiet", "--threads", "0", "--out", (s.dir / "z.h5").string()}),
+                 {"--threads: 0 leaves rank 0 only to schedule", "no MPI workers"});
   const fs::path fifo = s.dir / "fifo";
   BOOST_REQUIRE(::mkfifo(fifo.c_str(), 0644) == 0);
   expect_refused(run_apart("sweep " + small.string() + " --quiet --out " + fifo.string()), {"a FIFO", "refusing to replace it"});

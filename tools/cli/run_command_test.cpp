@@ -4,6 +4,7 @@
 // the library run in-process (an independent path to the same numbers).
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -255,6 +256,59 @@ BOOST_AUTO_TEST_CASE(a_stone_lighter_than_water_is_said_to_sink_only_for_want_of
   const std::string text = run("run cases/hard/very_light_stone.toml").out;
   BOOST_TEST(text.find(expected) != std::string::npos, text);
   BOOST_TEST(run("run cases/clanet_disk.toml").out.find("mean density") == std::string::npos);  // aluminium
+}
+
+BOOST_AUTO_TEST_CASE(the_notes_reach_the_json_and_the_file_and_an_open_contact_is_marked) {
+  // The text's notes were the text's alone: JSON and file readers (sweeps included) saw a plain
+  // "sank" for a stone lighter than water. Oracle: the text summary's own note lines, and the
+  // closed form of an open contact: cases/paper_8ms_spin.toml's first contact starts at 55 ms
+  // (its text), so a run stopped at 70 ms ends inside it: the contact ends at 0.07 s, did not
+  // bounce, and is open; the full run's same contact is not.
+  const Run light = run("run cases/hard/very_light_stone.toml --json");
+  BOOST_REQUIRE(light.status == 0);
+  const auto j = nlohmann::json::parse(light.out);
+  BOOST_REQUIRE(j["notes"].size() == 1u);
+  const std::string note = j["notes"][0].get<std::string>();
+  BOOST_TEST(note.find("no buoyancy") != std::string::npos, note);
+  BOOST_TEST(run("run cases/hard/very_light_stone.toml").out.find("note      " + note) != std::string::npos);
+  const fs::path h5 = scratch("light.h5");
+  fs::remove(h5);
+  BOOST_REQUIRE(run("run cases/hard/very_light_stone.toml --out " + h5.string()).status == 0);
+  const stoneskip::Hdf5Reader f(h5);
+  BOOST_TEST(f.root().open_group("realtime").read_strings("notes") == std::vector<std::string>{note},
+             boost::test_tools::per_element());
+
+  const auto cut = nlohmann::json::parse(run("run cases/paper_8ms_spin.toml --json --set solver.t_max_s=0.07").out);
+  BOOST_REQUIRE(cut["contacts"].size() == 1u);
+  BOOST_TEST(cut["contacts"][0]["end_s"].get<double>() == 0.07);
+  BOOST_TEST(!cut["contacts"][0]["bounced"].get<bool>());
+  BOOST_TEST(cut["contacts"][0]["open_at_end"].get<bool>());
+  BOOST_REQUIRE(cut["notes"].size() == 1u);
+  BOOST_TEST(cut["notes"][0].get<std::string>().find("contact 1 was still open when the run ended (t_max_s)") != std::string::npos);
+  const std::string text = run("run cases/paper_8ms_spin.toml --set solver.t_max_s=0.07").out;
+  BOOST_TEST(text.find("  open\n") != std::string::npos, text);
+  const auto full = nlohmann::json::parse(run("run cases/paper_8ms_spin.toml --json").out);
+  for (const auto& c : full["contacts"]) BOOST_TEST(!c["open_at_end"].get<bool>());
+  BOOST_TEST(full["notes"].empty());
+}
+
+BOOST_AUTO_TEST_CASE(control_characters_of_a_title_are_written_escaped_and_a_key_set_twice_takes_its_last_value) {
+  // Oracle: printable_text's escapes (\n, \x07, \x1B). A title holding a line break, a bell and an
+  // escape split the summary's case line and reached the terminal as they were.
+  const fs::path c = scratch("ctrl.toml");
+  std::string text = kGoodCase;
+  const std::string tag = "[case]\ntitle = \"a\\nb\\u0007c\\u001b[31m\"\n";
+  write(c, tag + text);
+  const Run r = run("run " + c.string());
+  BOOST_REQUIRE_MESSAGE(r.status == 0, r.err);
+  BOOST_TEST(r.out.find("case      a\\nb\\x07c\\x1B[31m (") != std::string::npos, r.out);
+  BOOST_TEST(r.out.find('\a') == std::string::npos);
+  BOOST_TEST(r.out.find('\x1b') == std::string::npos);
+  // --set of one key twice takes the last value (tools/README.md): the same run as the last alone.
+  const Run twice = run("run cases/paper_8ms_spin.toml --json --set throw.speed_m_s=5 --set throw.speed_m_s=6");
+  const Run last = run("run cases/paper_8ms_spin.toml --json --set throw.speed_m_s=6");
+  BOOST_REQUIRE(twice.status == 0);
+  BOOST_TEST(nlohmann::json::parse(twice.out)["contacts"] == nlohmann::json::parse(last.out)["contacts"]);
 }
 
 BOOST_AUTO_TEST_CASE(a_mirror_symmetric_stone_throws_mirror_images) {

@@ -81,8 +81,9 @@ bool all_ranks_ok(const MpiSession& mpi, const std::string& error) {
 }
 
 std::string describe(const SweepFile& s, const SweepCases& cases) {
-  std::string d = "sweep     " + s.title + " (" + s.file + ")\nbase      " + cases.base().title + " (" + s.base_file + ")";
-  for (const auto& o : s.base_sets) d += " --set " + o;
+  std::string d = "sweep     " + printable_text(s.title) + " (" + printable_text(s.file) + ")\nbase      " +
+                  printable_text(cases.base().title) + " (" + printable_text(s.base_file) + ")";
+  for (const auto& o : s.base_sets) d += " --set " + printable_text(o);
   d += "\ndesign    " + std::string(to_string(s.design.kind)) + ", " + std::to_string(s.design.size()) + " throws";
   if (s.design.kind != DesignKind::grid) d += " (seed " + std::to_string(s.design.seed) + ")";
   for (const auto& a : s.design.axes) {
@@ -167,6 +168,10 @@ void run(const SweepArgs& a) {
     if (a.threads && (*a.threads < 0 || *a.threads > kMaxSweepThreads))
       throw_input_error("--threads", 0, "",
                         "must be in [0, " + std::to_string(kMaxSweepThreads) + "] (got " + std::to_string(*a.threads) + ")");
+    if (a.threads && *a.threads == 0 && MpiSession::launched_size() <= 1)
+      throw_input_error("--threads", 0, "",
+                        "0 leaves rank 0 only to schedule, and no MPI workers are running to compute: give 1 or "
+                        "more, or run under mpirun");
     if (a.max_chunk < 1) throw_input_error("--max-chunk", 0, "", "must be >= 1");
     if (a.out && a.out->empty()) throw_input_error("--out", 0, "", "needs a file name (got an empty one)");
     refuse_output_over_inputs(out_file(a), OutputKind::file, {sweep->file, sweep->base_file, cases->base().spec.mesh_file});

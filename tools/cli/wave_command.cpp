@@ -27,6 +27,7 @@
 #include "tools/cli/command_registry.hpp"
 #include "tools/cli/json_output.hpp"
 #include "tools/cli/limit_options.hpp"
+#include "tools/io/printable_text.hpp"
 #include "tools/io/progress.hpp"
 #include "tools/scene/resource_estimate.hpp"
 #include "tools/scene/wave_case.hpp"
@@ -161,7 +162,7 @@ void run_wave(const WaveArgs& a) {
     std::cout << json_text(j) << std::endl;
   } else {
     std::printf("%s: %s stencil (centre %.6g, orth %.6g, diag %.6g)/d², %d x %d cells of %.6g m, %s boundary\n",
-                c.title.c_str(), w.stencil.name.c_str(), w.stencil.centre, w.stencil.orth, w.stencil.diag, w.nx, w.ny,
+                printable_text(c.title).c_str(), printable_text(w.stencil.name).c_str(), w.stencil.centre, w.stencil.orth, w.stencil.diag, w.nx, w.ny,
                 w.cell_m, to_string(w.boundary));
     std::printf("  c = %.6g m/s, mu = %.6g /s, dt = %.6g s, sigma = c dt/d = %.4f (%s; mu dt = %.4g)\n",
                 w.wave_speed_m_s, w.damping_per_s, w.dt_s, sigma, stability.limit_text().c_str(), mu_dt);

@@ -22,22 +22,32 @@ void ResourceEstimate::add_memory(double bytes, const std::string& what) {
 
 void ResourceEstimate::add_work(double count, double limit, const std::string& what) { work.push_back({what, count, limit}); }
 
-std::string human_bytes(double bytes) {
+namespace {
+std::string bytes_to(double bytes, int digits) {
   const char* units[] = {"bytes", "kB", "MB", "GB", "TB", "PB", "EB"};
   int u = 0;
   while (std::isfinite(bytes) && bytes >= 1000 && u < 6) {
     bytes /= 1000;
     ++u;
   }
-  return sci(bytes) + " " + units[u];
+  char b[48];
+  std::snprintf(b, sizeof b, "%.*g %s", digits, bytes, units[u]);
+  return b;
 }
+}  // namespace
+
+std::string human_bytes(double bytes) { return bytes_to(bytes, 3); }
 
 void enforce_limits(const ResourceEstimate& e, const ResourceLimits& limits, const std::string& where) {
-  if (!(e.memory_bytes <= limits.max_memory_bytes))
+  if (!(e.memory_bytes <= limits.max_memory_bytes)) {
+    // As many digits as it takes to tell the need from the limit ("8 GB, above the limit of 8 GB").
+    int digits = 3;
+    while (digits < 12 && bytes_to(e.memory_bytes, digits) == bytes_to(limits.max_memory_bytes, digits)) ++digits;
     throw_input_error(where, 0, "",
-                      "needs about " + human_bytes(e.memory_bytes) + " of memory (" + e.memory_detail +
-                          "), above the limit of " + human_bytes(limits.max_memory_bytes) +
+                      "needs about " + bytes_to(e.memory_bytes, digits) + " of memory (" + e.memory_detail +
+                          "), above the limit of " + bytes_to(limits.max_memory_bytes, digits) +
                           " (cases/README.md, Limits); --max-memory-gb raises it");
+  }
   if (limits.allow_large) {
     // Still refuse what cannot be counted: a NaN or infinite estimate is a broken input.
     for (const auto& w : e.work)

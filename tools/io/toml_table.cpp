@@ -498,6 +498,8 @@ TomlDocument parse_toml_text(const std::string& text, const std::string& name,
   }
   check_numbers(doc.root, "", name, pre.get());
   doc.lines = TomlLineMap(pre, &pre->source_line);
+  // Applied in order: a key set twice takes the last value (a script's base settings, then what one
+  // run changes; tools/README.md). A key repeated inside a file is an error, above.
   for (const auto& o : overrides) apply_override(doc.root, name, o);
   return doc;
 }

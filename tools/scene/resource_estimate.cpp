@@ -119,7 +119,9 @@ ResourceEstimate estimate_run(const StoneCase& c, const RunSolvers& solvers) {
                "triangle evaluations of the reference ([reference] max_steps = " + sci(steps) + " × " + sci(triangles) +
                    " triangles)");
     const double n = samples(o.t_max_s, o.output_dt_s, steps);
-    e.add_memory(n * sample_bytes(solvers.writes_file) + steps * kDouble, sci(n) + " trajectory samples of the reference");
+    e.add_memory(n * sample_bytes(solvers.writes_file), sci(n) + " trajectory samples of the reference");
+    e.add_memory(steps * kDouble, human_bytes(steps * kDouble) + " for the located events' times, at most one a step ([reference] "
+                                      "max_steps = " + sci(steps) + ")");
   }
   return e;
 }

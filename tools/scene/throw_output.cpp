@@ -6,6 +6,8 @@
 #include <limits>
 #include <sstream>
 
+#include "tools/io/printable_text.hpp"
+
 namespace stoneskip {
 
 namespace {
@@ -24,6 +26,28 @@ std::string cell(double v, int width, int decimals) {
   return b;
 }
 }  // namespace
+
+bool contact_open_at_end(const ThrowResult& r, std::size_t i) {
+  if (i + 1 != r.contacts.size() || r.outcome == Outcome::sank) return false;
+  const ContactRecord& k = r.contacts[i];
+  return !k.bounced && k.end_s >= r.end_time_s;
+}
+
+std::vector<std::string> run_notes(const StoneCase& c, const ThrowResult& r) {
+  std::vector<std::string> notes;
+  // The water laws push only faces advancing into the water (spec §1.4): no buoyancy. A stone
+  // lighter than water then "sinks" where a real one would float.
+  if (const double rho = c.stone.mass.mass_kg / c.stone.mass.volume_m3; rho < c.environment.water_density_kg_m3)
+    notes.push_back("the stone's mean density " + num(rho, "%.4g") + " kg/m^3 is below the water's " +
+                    num(c.environment.water_density_kg_m3, "%.4g") +
+                    ": the model has no buoyancy (only faces advancing into the water push, spec §1.4), so it sinks "
+                    "where a real stone would float");
+  if (!r.contacts.empty() && contact_open_at_end(r, r.contacts.size() - 1))
+    notes.push_back("contact " + std::to_string(r.contacts.size()) + " was still open when the run ended (" +
+                    (r.outcome == Outcome::failed ? std::string("the solve failed") : std::string("t_max_s")) +
+                    "): its end and exit values are the state there, not where the stone left the water");
+  return notes;
+}
 
 namespace {
 double flight_gain_from(double release_J, const ThrowResult& r) {
@@ -57,7 +81,9 @@ double shortest_resolved_flight_s(const StoneCase& c) {
 
 std::string text_summary(const StoneCase& c, const ThrowResult& r) {
   std::ostringstream s;
-  s << "case      " << c.title << " (" << c.file << ")\n";
+  // Title and file name as data: a control character in either is written escaped, not sent to
+  // the terminal (a bell, an escape sequence, a line break that splits the summary).
+  s << "case      " << printable_text(c.title) << " (" << printable_text(c.file) << ")\n";
   s << "stone     " << c.stone.description << ", mass " << num(c.stone.mass.mass_kg * 1e3) << " g\n";
   s << "model     " << to_string(c.environment.convention) << " convention, " << to_string(c.environment.water_law)
     << " water law, C_w = " << c.environment.water_coefficient;
@@ -94,13 +120,7 @@ std::string text_summary(const StoneCase& c, const ThrowResult& r) {
       s << "the model created energy: the paper's laws as printed can do positive work, spec §1.6)\n";
     else s << "the integrator's: the physical water and air laws are passive, F.v + tau.omega <= 0)\n";
   }
-  // The water laws push only faces advancing into the water (spec §1.4): no buoyancy. A stone
-  // lighter than water then "sinks" where a real one would float.
-  if (const double rho = c.stone.mass.mass_kg / c.stone.mass.volume_m3; rho < c.environment.water_density_kg_m3)
-    s << "note      the stone's mean density " << num(rho, "%.4g") << " kg/m^3 is below the water's "
-      << num(c.environment.water_density_kg_m3, "%.4g")
-      << ": the model has no buoyancy (only faces advancing into the water push, spec §1.4), so it sinks where a real "
-         "stone would float\n";
+  for (const std::string& n : run_notes(c, r)) s << "note      " << n << "\n";
   // A frame's budget (solver.rhs_per_frame) takes a step whatever its error test says: the run is
   // then not at its tolerance, and the text said nothing (a ratio of 7e6 flipped Clanet's disk).
   if (r.stats.budget_forced_steps > 0)
@@ -111,13 +131,14 @@ std::string text_summary(const StoneCase& c, const ThrowResult& r) {
   if (!r.contacts.empty()) {
     s << "contacts:\n";
     s << "   #   start_s     end_s  duration_ms  entry_m_s  exit_m_s  entry_path_deg  attack_deg in→out  roll_deg in→out  bounced\n";
-    int i = 0;
-    for (const auto& k : r.contacts) {
+    for (std::size_t i = 0; i < r.contacts.size(); ++i) {
+      const ContactRecord& k = r.contacts[i];
       char line[256];
-      std::snprintf(line, sizeof line, "%4d %9.5f %9.5f %s %s %s %15.2f %8.2f→%-8.2f %7.2f→%-7.2f  %s\n", ++i,
+      std::snprintf(line, sizeof line, "%4zu %9.5f %9.5f %s %s %s %15.2f %8.2f→%-8.2f %7.2f→%-7.2f  %s\n", i + 1,
                     k.start_s, k.end_s, cell(1e3 * k.duration_s(), 12, 3).c_str(), cell(k.entry_speed_m_s, 10, 3).c_str(),
                     cell(k.exit_speed_m_s, 9, 3).c_str(), k.entry_path_angle_deg, k.entry_attack_angle_deg,
-                    k.exit_attack_angle_deg, k.entry_roll_deg, k.exit_roll_deg, k.bounced ? "yes" : "no");
+                    k.exit_attack_angle_deg, k.entry_roll_deg, k.exit_roll_deg,
+                    k.bounced ? "yes" : contact_open_at_end(r, i) ? "open" : "no");
       s << line;
     }
   }
@@ -155,7 +176,8 @@ nlohmann::json json_summary(const ThrowResult& r) {
                         {"entry_energy_J", c.entry_energy_J},
                         {"exit_energy_J", c.exit_energy_J},
                         {"first_touch_m", {c.first_touch_m.x(), c.first_touch_m.y(), c.first_touch_m.z()}},
-                        {"bounced", c.bounced}});
+                        {"bounced", c.bounced},
+                        {"open_at_end", contact_open_at_end(r, contacts.size())}});
   }
   j["contacts"] = contacts;
   j["stats"] = {{"steps", r.stats.steps},
@@ -180,6 +202,7 @@ nlohmann::json json_summary(const StoneCase& c, const ThrowResult& r) {
   j["rim_sagitta_m"] = u.assessed() ? nlohmann::json(u.rim_sagitta_m) : nlohmann::json(nullptr);
   j["shortest_resolved_flight_s"] = u.assessed() ? nlohmann::json(u.shortest_resolved_s) : nlohmann::json(nullptr);
   j["bounces_before_short_flight"] = u.assessed() ? nlohmann::json(u.bounces_before_short_flight) : nlohmann::json(nullptr);
+  j["notes"] = run_notes(c, r);  // what the text summary's note lines say
   return j;
 }
 
@@ -203,13 +226,14 @@ Table contacts_table(const ThrowResult& r) {
   t.columns = {"start_s", "end_s", "duration_s", "entry_speed_m_s", "exit_speed_m_s", "entry_path_angle_deg",
                "exit_path_angle_deg", "entry_attack_angle_deg", "exit_attack_angle_deg", "entry_roll_deg",
                "exit_roll_deg", "entry_energy_J", "exit_energy_J", "first_touch_x_m", "first_touch_y_m", "exit_x_m",
-               "exit_y_m", "max_wetted_area_m2", "bounced"};
+               "exit_y_m", "max_wetted_area_m2", "bounced", "open_at_end"};
   for (const auto& c : r.contacts) {
+    const bool open = contact_open_at_end(r, t.rows());
     t.add_row({c.start_s, c.end_s, c.duration_s(), c.entry_speed_m_s, c.exit_speed_m_s, c.entry_path_angle_deg,
                c.exit_path_angle_deg, c.entry_attack_angle_deg, c.exit_attack_angle_deg, c.entry_roll_deg,
                c.exit_roll_deg, c.entry_energy_J,
                c.exit_energy_J, c.first_touch_m.x(), c.first_touch_m.y(), c.exit_position_m.x(), c.exit_position_m.y(),
-               c.max_wetted_area_m2, c.bounced ? 1.0 : 0.0});
+               c.max_wetted_area_m2, c.bounced ? 1.0 : 0.0, open ? 1.0 : 0.0});
   }
   return t;
 }
@@ -268,6 +292,7 @@ void write_throw_file(const std::string& path, const StoneCase& c,
     g.set_attr("stats_cpu_s", r->stats.cpu_s);
     g.write_table("trajectory", trajectory_table(c.stone, *r));
     g.write_table("contacts", contacts_table(*r));
+    g.write_strings("notes", run_notes(c, *r));  // what the text summary's note lines say
   }
   if (more) more(root);
   w.commit();

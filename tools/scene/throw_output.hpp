@@ -55,6 +55,12 @@ nlohmann::json json_summary(const ThrowResult& r);
 // the flights its mesh may not resolve (rim_sagitta_m, shortest_resolved_flight_s,
 // bounces_before_short_flight; null where not assessed).
 nlohmann::json json_summary(const StoneCase& c, const ThrowResult& r);
+// Whether contact i is the last and was still open when the run ended (at t_max_s, or a failed
+// solve): its end and exit values are the state there, not an exit (bounced is false).
+bool contact_open_at_end(const ThrowResult& r, std::size_t i);
+// The notes beside a run's numbers, one sentence each: a stone lighter than water (no buoyancy),
+// a contact still open at the end. Text (note lines), JSON (notes) and the file (each result's notes).
+std::vector<std::string> run_notes(const StoneCase& c, const ThrowResult& r);
 Table trajectory_table(const Stone& stone, const ThrowResult& r);
 Table contacts_table(const ThrowResult& r);
 

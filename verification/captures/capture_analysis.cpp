@@ -139,10 +139,19 @@ void locate_still_part(CaptureAnalysis& a, const ChainInput& in, const CaptureOp
   const std::size_t n = in.t_s.size();
   a.still_t0_s = in.t_s[a.still_begin];
   a.still_t1_s = in.t_s[a.still_end];
+  // The still part's mean rate (slow-mode deg/s, as the chain's bias), and the swing's largest
+  // rate off it, each fast-mode axis scaled back to deg/s.
+  Vec3 bias_slow = Vec3::Zero();
+  for (std::size_t k = a.still_begin; k <= a.still_end; ++k) bias_slow += in.rate_slow_deg_s(k);
+  bias_slow /= static_cast<double>(a.still_end - a.still_begin + 1);
   for (std::size_t k = a.still_end; k <= std::min(a.release_sample + 1, n - 1); ++k) {
     ++a.swing_samples;
     if (in.flags[k] & kAccelSaturated) ++a.saturated_in_swing;
     if (in.flags[k] & kGyroSaturated) a.gyro_saturated_in_swing = true;
+    Vec3 off = in.rate_slow_deg_s(k) - bias_slow;
+    for (int i = 0; i < 3; ++i)
+      if (in.fast[k][i]) off[i] *= in.fast_factor;
+    a.swing_peak_rate_deg_s = std::max(a.swing_peak_rate_deg_s, off.norm());
   }
   a.clipped = a.saturated_in_swing > 0;
   for (int i = 0; i < 3; ++i) {

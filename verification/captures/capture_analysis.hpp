@@ -161,6 +161,9 @@ struct CaptureAnalysis {
   bool clipped = false;              // clipped during the swing
   std::string clipped_axes;          // e.g. "X, Y"
   bool gyro_saturated_in_swing = false;
+  // The swing's largest angular rate off the still part's mean (deg/s, each axis at its recorded
+  // range): a wrist that throws turns at hundreds of deg/s, a gyro that did not record reads ≈ 0.
+  double swing_peak_rate_deg_s = 0;
   std::vector<SaturatedSpan> spans;
   // release
   bool press_found = false, release_found = false, release_at_end = false;

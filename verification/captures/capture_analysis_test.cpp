@@ -86,6 +86,10 @@ Triangle on_samples(const std::vector<double>& t, double a, double m, double b, 
 CaptureOptions quick_options() {
   CaptureOptions o;
   o.members = 8;  // the intervals are not what these tests look at
+  // Most analytic throws here move without turning (closed forms for the integration); a real
+  // throw turns the wrist, and the rule that a swing without rotation is a gyro that did not
+  // record is tested on its own (a_swing_the_gyro_did_not_see_is_unusable).
+  o.rules.min_swing_rate_deg_s = 0;
   return o;
 }
 
@@ -263,6 +267,32 @@ BOOST_AUTO_TEST_CASE(a_throw_no_human_could_make_is_unusable_naming_the_quantity
   a = analyse_capture(trace, o);
   BOOST_TEST(to_string(a.verdict) == std::string("unusable"));
   BOOST_TEST(a.reasons.front().find("hand displacement") != std::string::npos, a.reasons.front());
+}
+
+BOOST_AUTO_TEST_CASE(a_swing_the_gyro_did_not_see_is_unusable) {
+  // Oracle: the swing's largest rate off the still part's mean, in closed form. The analytic throw
+  // (a 20 m/s² triangle over 0.2 s) recorded with a gyro that reads a constant 3 deg/s throughout
+  // (a MotionPlus stream stuck on its first report) shows 0 deg/s of rotation in the swing: below
+  // the rule's 20 deg/s, unusable, and the reason says why. The same throw with the wrist turning
+  // (a triangle of 300 deg/s about z over the swing, on the samples) shows 300 deg/s, and is not.
+  std::vector<double> t;
+  for (int k = 0; k < 150; ++k) t.push_back(0.01 * k);
+  const Triangle push{0.7, 0.8, 0.9, 20.0}, turn{0.7, 0.8, 0.9, 300.0};
+  CaptureOptions o;
+  o.members = 8;
+  const CaptureAnalysis stuck = analyse_capture(make_trace(t, [&](double s) {
+    return Reading{Vec3(push(s) / kG, 0, 1), Vec3(3, 0, 0), s > 0.3 && s < 1.0};
+  }), o);
+  BOOST_TEST(stuck.swing_peak_rate_deg_s == 0.0, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(to_string(stuck.verdict) == std::string("unusable"));
+  BOOST_REQUIRE(!stuck.reasons.empty());
+  BOOST_TEST(stuck.reasons.front().find("the MotionPlus shows no rotation through the swing") != std::string::npos,
+             stuck.reasons.front());
+  const CaptureAnalysis turning = analyse_capture(make_trace(t, [&](double s) {
+    return Reading{Vec3(push(s) / kG, 0, 1), Vec3(0, 0, turn(s)), s > 0.3 && s < 1.0};
+  }), o);
+  BOOST_TEST(turning.swing_peak_rate_deg_s == 300.0, boost::test_tools::tolerance(1e-9));
+  for (const std::string& r : turning.reasons) BOOST_TEST(r.find("no rotation") == std::string::npos, r);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -78,6 +78,7 @@ Record timing_findings(const CaptureAnalysis& a) {
   r.set("longest_gap_s", t.longest_gap_s);
   r.set("nominal", t.nominal);
   r.set("ok", t.ok);
+  r.set("bursts", t.bursts);
   r.set("gap_factor", a.options.timing.gap_factor);
   r.set("regular_max_residual_intervals", a.options.timing.regular_max_residual_intervals);
   // Every interval between kept reports as stamped, the reports lost before each, and how far each

@@ -30,6 +30,7 @@ Record clean_inputs() {
   in.set("nominal_timestamps", 0).set("inferred_range_switches", 0).set("device_calibration", 1);
   in.set("measured_speed_m_s", 10.0).set("lever_speed_m_s", 9.0).set("speed_difference_m_s", 1.0);
   in.set("accel_lever_disagreement", r.accel_lever_disagreement).set("reader_warnings", 0);
+  in.set("swing_peak_rate_deg_s", 800.0).set("min_swing_rate_deg_s", r.min_swing_rate_deg_s);
   return in;
 }
 
@@ -72,6 +73,7 @@ CaptureAnalysis small_analysis() {
   a.still_accel_g = 1.01;
   a.still_accel_error_g = 0.01;
   a.nominal.measured_speed_m_s = a.nominal.lever_speed_m_s = 9.0;
+  a.swing_peak_rate_deg_s = 300;  // the samples' rates, 100 k deg/s
   a.speed_m_s = {9.0, 8.5, 9.75};
   a.attack_angle_deg = {20, 19, 21};
   a.path_angle_deg = {5, 4, 6};
@@ -135,6 +137,14 @@ BOOST_AUTO_TEST_CASE(the_capture_verdict_rule_decides_at_its_thresholds) {
   BOOST_TEST(decide("capture_verdict", in) == "usable with caveats");
   in.set("clipped_in_swing", 1);  // clipped: the accelerometer is a bound, not a check
   BOOST_TEST(capture_conditions(in).caveats == std::vector<std::string>{"clipped_in_swing"});
+
+  in = clean_inputs();  // a gyro that shows no rotation through the swing: unusable at the threshold's edge
+  in.set("swing_peak_rate_deg_s", in.number("min_swing_rate_deg_s"));
+  BOOST_TEST(decide("capture_verdict", in) == "usable");
+  in.set("swing_peak_rate_deg_s", 0.999 * in.number("min_swing_rate_deg_s"));
+  BOOST_TEST(capture_conditions(in).unusable == std::vector<std::string>{"gyro_still"});
+  in.set("has_gyro", 0);  // no MotionPlus at all says so, not that it stood still
+  BOOST_TEST(capture_conditions(in).unusable == std::vector<std::string>{"no_gyro"});
 
   in = clean_inputs();
   in.set("samples", in.number("min_samples") - 1).set("still_found", 0).set("reader_warnings", 2);

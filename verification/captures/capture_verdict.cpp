@@ -36,6 +36,7 @@ bool CaptureVerdictRules::is_valid(std::string* why) const {
     return fail("rules.max_release_speed_m_s must exceed rules.min_release_speed_m_s >= 0");
   if (!(max_hand_displacement_m > 0)) return fail("rules.max_hand_displacement_m must be positive");
   if (!(max_tilt_deg > 0 && max_tilt_deg <= 180)) return fail("rules.max_tilt_deg must be in (0, 180]");
+  if (!(min_swing_rate_deg_s >= 0)) return fail("rules.min_swing_rate_deg_s must not be negative");
   return true;
 }
 
@@ -118,6 +119,8 @@ Record capture_verdict_inputs(const CaptureAnalysis& a, const CaptureVerdictRule
   in.set("max_hand_displacement_m", r.max_hand_displacement_m);
   in.set("release_tilt_deg", finite ? release_tilt_deg(a) : 0.0);
   in.set("max_tilt_deg", r.max_tilt_deg);
+  in.set("swing_peak_rate_deg_s", a.swing_peak_rate_deg_s);
+  in.set("min_swing_rate_deg_s", r.min_swing_rate_deg_s);
   return in;
 }
 
@@ -142,6 +145,12 @@ std::string reason_for(const std::string& c, const CaptureAnalysis& a, const Rec
   if (c == "no_still_part")
     return format("no still part of at least %.3g s before the release: gravity and the gyro bias cannot be found",
                   a.options.min_still_s);
+  if (c == "gyro_still")
+    return format("the MotionPlus shows no rotation through the swing (its largest rate off the still part's is %.3g "
+                  "deg/s, below %.3g deg/s; a throwing wrist turns at hundreds) while the accelerometer measures %.3g "
+                  "m/s: the gyro did not record the throw (stuck, or its stream lost), so the orientation is unknown",
+                  in.number("swing_peak_rate_deg_s"), in.number("min_swing_rate_deg_s"),
+                  a.nominal_computed ? a.nominal.accel_speed_m_s : 0.0);
   if (c == "state_not_finite") return "the release state is not finite (numbers out of range in the capture)";
   if (c == "calibration_wrong")
     return format("the still part reads %.4g g, not 1 g within %.3g g: the calibration is wrong", a.still_accel_g,

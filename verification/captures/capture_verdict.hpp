@@ -38,6 +38,12 @@ struct CaptureVerdictRules {
   // for an adult, shoulder to fingertip about 0.75 m, swung about a turning body) plus a stride:
   // a stone further than this from where it was held still is integration drift, not a throw.
   double max_hand_displacement_m = 3.0;
+  // A swing whose angular rate never departs from the still part's by this much did not reach the
+  // gyro: a throwing wrist turns at hundreds of deg/s (the MotionPlus's fast range, to ≈ 2000 deg/s,
+  // exists for it), its noise is ≈ 1 deg/s. A stuck or missing MotionPlus stream (its first report
+  // repeated, a gesture file's centred counts) reads 0 here, and the orientation and the lever
+  // arm's velocity are then nothing but the accelerometer's guesses.
+  double min_swing_rate_deg_s = 20.0;
   // --- caveats ---
   // Still-part |a| off 1 g by more: check the calibration (a 0.05 g offset tilts gravity by 3°).
   double calibration_caveat_g = 0.05;

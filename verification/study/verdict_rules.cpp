@@ -444,6 +444,10 @@ CaptureConditions capture_conditions(const Record& in) {
   unusable(in.number("samples") >= 2 && !in.flag("press_found"), "no_press");
   unusable(in.flag("release_found") && in.number("release_gap_s") > in.number("max_release_gap_s"), "release_in_gap");
   unusable(in.flag("release_found") && !in.flag("still_found"), "no_still_part");
+  if (in.has_number("min_swing_rate_deg_s"))  // records stored before this input existed lack it
+    unusable(in.flag("has_gyro") && in.flag("still_found") &&
+                 in.number("swing_peak_rate_deg_s") < in.number("min_swing_rate_deg_s"),
+             "gyro_still");
   unusable(computed && !in.flag("throw_finite"), "state_not_finite");
   unusable(computed && calibration > in.number("calibration_unusable_g"), "calibration_wrong");
   // Plausibility against a human throw (records stored before these inputs existed lack them).
