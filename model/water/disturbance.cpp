@@ -66,10 +66,15 @@ double periodic_gaussian(double u, double width, double period) {
 
 }  // namespace
 
+double gaussian_image_peak_m(const Disturbance& d, double lx_m, double ly_m) {
+  if (d.kind != DisturbanceKind::gaussian) return 0;
+  return std::abs(d.amplitude_m) * periodic_gaussian(0, d.width_m, lx_m) * periodic_gaussian(0, d.width_m, ly_m);
+}
+
 std::string disturbance_image_problem(const Disturbance& d, double lx_m, double ly_m, double max_height_m) {
   if (d.kind == DisturbanceKind::gaussian) {
     // The sum peaks at the centre: A Sx(0) Sy(0), about A π w² / (Lx Ly) once w is past the grid.
-    const double peak = std::abs(d.amplitude_m) * periodic_gaussian(0, d.width_m, lx_m) * periodic_gaussian(0, d.width_m, ly_m);
+    const double peak = gaussian_image_peak_m(d, lx_m, ly_m);
     // Refused only where the images add materially: |A| itself may reach the bound, and a bump a
     // fifth of the grid wide adds 3e-11 of it.
     if (!(peak <= max_height_m * (1 + 1e-6))) {

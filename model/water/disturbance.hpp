@@ -38,4 +38,8 @@ constexpr int kMostRingImages = 4;
 // cell), or a Gaussian whose sum peaks above max_height_m (a width of 1e6 m on a 1 m grid: 3e10 m).
 std::string disturbance_image_problem(const Disturbance& d, double lx_m, double ly_m, double max_height_m);
 
+// A Gaussian's height at its centre with its periodic images summed, |A| Sx(0) Sy(0) (0 for other
+// kinds): |A| for a bump narrow against the grid, about |A| π w² / (Lx Ly) once it is wider.
+double gaussian_image_peak_m(const Disturbance& d, double lx_m, double ly_m);
+
 }  // namespace stoneskip

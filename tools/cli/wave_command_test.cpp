@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -180,6 +181,22 @@ BOOST_AUTO_TEST_CASE(a_plane_wave_that_does_not_fit_the_periodic_grid_says_so) {
   const nlohmann::json seam = run_json("wave cases/wave_plane_wave_30deg.toml --set initial.angle_deg=31");
   BOOST_TEST(!seam["initial_fits_grid"].get<bool>());
   BOOST_TEST(seam["note"].get<std::string>().find("does not fit the periodic grid") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(a_gaussian_wide_against_its_periodic_grid_says_its_images_add_up) {
+  // Oracle: Poisson summation. On 4 x 4 cells of 1/128 m (L = 0.03125 m) the shipped Gaussian
+  // (w = 0.1 m, A = 0.01 m) sums with its images to A (√π w / L)² [1 + 2 Σ e^{−(π k w/L)²}]² at its
+  // centre; the terms are below e^{−100}, so A π w² / L² = 0.3217 m, 32 times its amplitude, and the
+  // run said nothing of it. The shipped 128 x 128 grid holds the bump: no note.
+  const nlohmann::json shipped = run_json("wave cases/wave_gaussian_five_point.toml");
+  BOOST_TEST(!shipped.contains("note"));
+  const nlohmann::json wide = run_json("wave cases/wave_gaussian_five_point.toml --set water.nx=4 --set water.ny=4");
+  const double L = 4 * 0.0078125, peak = 0.01 * M_PI * 0.1 * 0.1 / (L * L);
+  char expected[64];
+  std::snprintf(expected, sizeof expected, "it sums to %.4g m at its centre", peak);
+  BOOST_TEST(std::string(expected).find("0.3217") != std::string::npos);
+  BOOST_TEST(!wide["initial_fits_grid"].get<bool>());
+  BOOST_TEST(wide["note"].get<std::string>().find(expected) != std::string::npos, wide["note"].get<std::string>());
 }
 
 BOOST_AUTO_TEST_CASE(a_ring_too_large_for_its_periodic_images_is_refused_naming_its_key) {
