@@ -435,12 +435,14 @@ std::optional<Figure> capture_room_and_water_figure(const std::string& key, cons
     << "plot " << room << " u 1:2 w l lw 2 lc rgb '" << kAxis[0] << "' t 'stone centre', " << room
     << " every ::0::0 u 1:2 w p pt 7 ps 1 lc rgb '" << kAxis[2] << "' t 'still part', " << v
     << " every ::0::0 u 1:2:4:5" << vector_style << " t 'release velocity'\n"
-    << "set origin 0, 0\nset size 0.42, 0.5\nset size noratio\n"
+    // The panels at the canvas's foot get the room for their axis label and the key below it
+    // (gnuplot's own margin put the key over the label there).
+    << "set origin 0, 0\nset size 0.42, 0.5\nset size noratio\nset bmargin 6\n"
     << "set title 'in the room, from the side'\nset ylabel 'up, from the still part (m)'\n"
     << "plot " << room << " u 1:3 w l lw 2 lc rgb '" << kAxis[0] << "' t 'stone centre', " << room
     << " every ::0::0 u 1:3 w p pt 7 ps 1 lc rgb '" << kAxis[2] << "' t 'still part', " << v
     << " every ::0::0 u 1:3:4:6" << vector_style << " t 'release velocity'\n"
-    << "set origin 0.42, 0\nset size 0.58, 1\nset key below\n"
+    << "set origin 0.42, 0\nset size 0.58, 1\nset bmargin 5\nset key below\n"
     << "set title 'the virtual stone over the water'\nset xlabel 'distance (m)'\nset ylabel 'height of the centre (m)'\n"
     << "plot 0 w l lw 1.5 lc rgb '#3060c0' t 'water', " << v << " every ::1::1 u 1:3:4:6" << vector_style
     << " t 'release velocity'";

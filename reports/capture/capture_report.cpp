@@ -155,8 +155,17 @@ void motion_part(SectionWriter& w, const std::string& key, const Record& c) {
       .row({"fraction of the samples clipped", fmt(sat.number("fraction"), 3)})
       .row({"clipped samples in the swing", fmt(sat.number("in_swing")) + " of " + fmt(sat.number("swing_samples")) +
                                                 (sat.text("clipped_axes").empty() ? "" : " (" + sat.text("clipped_axes") + ")")})
-      .row({"MotionPlus at the end of its range in the swing", yes_no(sat.flag("gyro_saturated_in_swing"))})
-      .row({"still part (s)", still.flag("found") ? span(still.number("t0_s"), still.number("t1_s"), 4) : "not found"})
+      .row({"MotionPlus at the end of its range in the swing", yes_no(sat.flag("gyro_saturated_in_swing"))});
+  // The MotionPlus in the swing, from the verdict's stored inputs (records stored before them lack them).
+  const Record& v = c.at("verdict");
+  if (v.has_number("swing_peak_rate_deg_s") && v.has_number("min_swing_rate_deg_s"))
+    t.row({"largest rate off the still part's in the swing (deg/s)",
+           fmt(v.number("swing_peak_rate_deg_s"), 4) + " (unusable below " + fmt(v.number("min_swing_rate_deg_s"), 3) +
+               ": a gyro that did not record the throw)"});
+  if (v.has_number("gyro_held_in_swing"))
+    t.row({"swing samples whose rate is held over a MotionPlus silence",
+           fmt(v.number("gyro_held_in_swing")) + " (unusable above 0)"});
+  t.row({"still part (s)", still.flag("found") ? span(still.number("t0_s"), still.number("t1_s"), 4) : "not found"})
       .row({"acceleration in the still part (g)",
             fmt(still.number("accel_g"), 5) + " (a caveat beyond 1 ± " + fmt(still.number("caveat_g"), 3) +
                 ", unusable beyond 1 ± " + fmt(still.number("unusable_g"), 3) + ")"})

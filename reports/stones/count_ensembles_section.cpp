@@ -24,7 +24,7 @@ std::string ran_away_tally(const Record& c) {
   if (!c.has_number("failed_runs") || !c.has_number("ran_away_runs") || c.number("failed_runs") == 0) return "";
   const double failed = c.number("failed_runs"), away = c.number("ran_away_runs");
   std::string s = " Of the " + fmt(failed, 6) + " failed members of all ensembles, " + fmt(away, 6) +
-                  " ran away (their energy over a thousand times its release value";
+                  " ran away (their last energy over a thousand times the release energy";
   s += c.text("convention") == "paper" ? ": the printed forces create energy, spec §1.6, so such a stone skips on "
                                          "with growing speed until the solver gives up)"
                                        : ": forces that only take energy away cannot do that, so the solver's steps did)";
@@ -81,9 +81,9 @@ SectionOutput count_ensembles_section(const Record& c) {
          (c.has_number("undecided_failed") && c.number("undecided_failed") > 0
               ? "; on " + fmt(c.number("undecided_failed"), 4) +
                     " nothing is decided because runs of an ensemble failed (a failed run has no count, and the runs "
-                    "that fail are not a random sample of the ensemble, so the survivors' means are not the ensemble's)." +
-                    ran_away_tally(c)
-              : "."));
+                    "that fail are not a random sample of the ensemble, so the survivors' means are not the ensemble's)."
+              : ".") +
+         ran_away_tally(c));  // also where too few members ran to compare at all ("not measured")
   w.subheading("Reasons");
   for (std::size_t i = 0; i < keys.size(); ++i) w.verdict(axis_name(params[i]) + " = " + fmt(value[i], 4), verdicts.at(keys[i]));
   w.end_list();

@@ -80,8 +80,9 @@ void check_sane(const Trace& t) {
   const double t0 = median_time_s(t);
   // A jump between neighbouring samples larger than a capture may span: of the two, the one
   // further from the median is named, with its neighbour (a file whose later half was shifted put
-  // the median there, and the check below named the first sample, a good one; a single absurd time
-  // was named as "going backwards" on the line after it).
+  // the median there, and the check below named the first sample, a good one). A single absurd
+  // time followed by a sane one is caught earlier, by the readers' "time goes backwards", which
+  // names both lines.
   const auto where = [&](std::size_t k) { return t.samples[k].line > 0 ? "line " + std::to_string(t.samples[k].line)
                                                                        : "sample " + std::to_string(k + 1); };
   for (std::size_t k = 1; k < t.samples.size(); ++k) {

@@ -350,7 +350,28 @@ BOOST_AUTO_TEST_CASE(an_evemu_motionplus_stream_that_starts_late_or_ends_early_i
   const Trace gap = parse_capture(without_gyro(mid, mid + 0.3), "gap.evemu");
   BOOST_TEST(gap.samples.size() == full.samples.size());
   BOOST_REQUIRE(gap.warnings.size() == 1u);
-  BOOST_TEST(contains(gap.warnings.front(), "no MotionPlus frame for"), gap.warnings.front());
+  BOOST_TEST(contains(gap.warnings.front(), "no MotionPlus frame from here"), gap.warnings.front());
+  // Every sample in the silence, from its last frame on (≈ 10 ms before the cut) to the next, holds
+  // that frame's rate and is flagged: at least the samples inside the cut, none outside it.
+  long held = 0, held_outside = 0;
+  for (const TraceSample& x : gap.samples)
+    if (x.flags & kGyroHeld) {
+      ++held;
+      const double at = first_event_s + x.t_s;
+      held_outside += at < mid - 0.02 || at > mid + 0.3 + 0.002;
+    }
+  BOOST_TEST(held >= full_samples(mid + 0.002, mid + 0.3 - 0.002));
+  BOOST_TEST(held_outside == 0);
+  // A silence inside the swing: the rate there is not measured, and the capture is unusable (cut
+  // 0.16 s before the release, the speed read 5.54 m/s for the truth's 5.2, "usable with caveats").
+  const double release_s = 12.5 + synthetic_release_time_s(th) + SyntheticSensor{}.latency_s;
+  CaptureOptions o;
+  o.members = 0;
+  const CaptureAnalysis swing = analyse_capture(parse_capture(without_gyro(release_s - 0.17, release_s - 0.01), "swing.evemu"), o);
+  BOOST_TEST(std::string(to_string(swing.verdict)) == "unusable");
+  BOOST_REQUIRE(!swing.reasons.empty());
+  BOOST_TEST(contains(swing.reasons.front(), "the MotionPlus sent no frame for 0.1 s or more during the swing"),
+             swing.reasons.front());
 }
 
 BOOST_AUTO_TEST_CASE(identical_reports_of_a_still_remote_at_200_hz_are_not_repeats_but_repeats_are) {

@@ -28,6 +28,12 @@ std::string seconds(double s) {
   return b;
 }
 
+std::string stamp(double s) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.6f", s);
+  return b;
+}
+
 struct Frame {
   double t_s;
   std::array<double, 3> v;
@@ -234,6 +240,7 @@ Trace read_evemu(const std::string& text, const std::string& file) {
   // accelerometer frames at either end are left out, and a silence inside the recording is warned of.
   constexpr double kGyroSilence_s = 0.1;
   std::vector<char> unseen(accel_frames.size(), 0);  // no MotionPlus frame within kGyroSilence_s before
+  std::vector<std::size_t> frame_of(accel_frames.size(), 0);  // the MotionPlus frame each sample's rate is from
   std::size_t g = 0, k = 0;
   unsigned buttons = 0;
   for (const Frame& a : accel_frames) {
@@ -242,8 +249,10 @@ Trace read_evemu(const std::string& text, const std::string& file) {
     x.t_s = a.t_s;  // counted from the first sample's below
     for (int i = 0; i < 3; ++i) x.accel_g[i] = c.accel_g_from_report(i, a.v[i] + 0x200);
     while (g + 1 < gyro_frames.size() && gyro_frames[g + 1].t_s <= a.t_s + kSameReport_s) ++g;
-    if (t.has_gyro)
+    if (t.has_gyro) {
       unseen[t.samples.size()] = gyro_frames[g].t_s > a.t_s + kSameReport_s || a.t_s - gyro_frames[g].t_s > kGyroSilence_s;
+      frame_of[t.samples.size()] = g;
+    }
     if (t.has_gyro && gyro_frames[g].t_s <= a.t_s + kSameReport_s) {
       for (int i = 0; i < 3; ++i) {
         const double counts = gyro_frames[g].v[i] / 9.0;  // slow-mode counts from zero
@@ -275,15 +284,29 @@ Trace read_evemu(const std::string& text, const std::string& file) {
       t.warnings.push_back(where(last - 1) + ": the MotionPlus stream ends here (no frame for " +
                            seconds(kGyroSilence_s) + " s after); the " + std::to_string(t.samples.size() - last) +
                            " accelerometer frame(s) after it have no rotation and are left out");
-    for (std::size_t i = first; i < last; ++i)
-      if (unseen[i]) {
-        std::size_t e = i;
-        while (e < last && unseen[e]) ++e;
-        t.warnings.push_back(where(i) + ": no MotionPlus frame for " + seconds(t.samples[e - 1].t_s - t.samples[i].t_s + kGyroSilence_s) +
-                             " s or more from here: its rate is held from the last frame over " + std::to_string(e - i) +
-                             " accelerometer frame(s)");
-        break;  // the first silence is named; the verdict's caveat counts the warnings
-      }
+    // A silence inside: its samples keep the last frame's rate, flagged held (the analysis judges
+    // a held rate in the swing, capture_verdict.hpp); the first silence is named by the MotionPlus
+    // frames around it.
+    bool named = false;
+    for (std::size_t i = first; i < last; ++i) {
+      if (!unseen[i]) continue;
+      t.samples[i].flags |= kGyroHeld;
+      // The silence began at its last frame: the samples since, within the first 0.1 s, are held too.
+      const double from_s = gyro_frames[frame_of[i]].t_s + kSameReport_s;
+      for (std::size_t j = i; j > first && frame_of[j - 1] == frame_of[i] && t.samples[j - 1].t_s > from_s &&
+                              !(t.samples[j - 1].flags & kGyroHeld);
+           --j)
+        t.samples[j - 1].flags |= kGyroHeld;
+      if (named) continue;
+      named = true;
+      const Frame& before = gyro_frames[frame_of[i]];
+      const bool after = frame_of[i] + 1 < gyro_frames.size();
+      const Frame& next = after ? gyro_frames[frame_of[i] + 1] : before;
+      t.warnings.push_back(input_location(file, before.line, "") + ": no MotionPlus frame from here (t = " +
+                           stamp(before.t_s) + " s) to line " + std::to_string(next.line) + " (t = " +
+                           stamp(next.t_s) + " s), " + seconds(next.t_s - before.t_s) +
+                           " s: the rate is held from this frame over that time (samples flagged H)");
+    }
     t.samples.erase(t.samples.begin() + static_cast<std::ptrdiff_t>(last), t.samples.end());
     t.samples.erase(t.samples.begin(), t.samples.begin() + static_cast<std::ptrdiff_t>(first));
   }

@@ -7,7 +7,7 @@
 //
 // fast_* are 0/1 (MotionPlus range mode), buttons the core button word (decimal or 0x hex),
 // flags letters X Y Z (accelerometer axis saturated), P (gyro saturated), R (repeated report),
-// G (reports lost before this one) or '-'. Every reader's trace can be written out in this form.
+// G (reports lost before this one), H (the MotionPlus rate held over a silence) or '-'. Every reader's trace can be written out in this form.
 #include <string>
 
 #include "verification/captures/capture_trace.hpp"

@@ -259,8 +259,8 @@ BOOST_AUTO_TEST_CASE(a_stone_lighter_than_water_is_said_to_sink_only_for_want_of
 }
 
 BOOST_AUTO_TEST_CASE(the_notes_reach_the_json_and_the_file_and_an_open_contact_is_marked) {
-  // The text's notes were the text's alone: JSON and file readers (sweeps included) saw a plain
-  // "sank" for a stone lighter than water. Oracle: the text summary's own note lines, and the
+  // The text's notes were the text's alone: JSON and file readers saw a plain "sank" for a stone
+  // lighter than water. (A sweep's table carries neither; its rows are throws' counts.) Oracle: the text summary's own note lines, and the
   // closed form of an open contact: cases/paper_8ms_spin.toml's first contact starts at 55 ms
   // (its text), so a run stopped at 70 ms ends inside it: the contact ends at 0.07 s, did not
   // bounce, and is open; the full run's same contact is not.

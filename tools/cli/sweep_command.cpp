@@ -168,7 +168,7 @@ void run(const SweepArgs& a) {
     if (a.threads && (*a.threads < 0 || *a.threads > kMaxSweepThreads))
       throw_input_error("--threads", 0, "",
                         "must be in [0, " + std::to_string(kMaxSweepThreads) + "] (got " + std::to_string(*a.threads) + ")");
-    if (a.threads && *a.threads == 0 && MpiSession::launched_size() <= 1)
+    if (a.threads && *a.threads == 0 && mpi.size() <= 1)
       throw_input_error("--threads", 0, "",
                         "0 leaves rank 0 only to schedule, and no MPI workers are running to compute: give 1 or "
                         "more, or run under mpirun");

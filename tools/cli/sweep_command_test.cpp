@@ -224,6 +224,17 @@ BOOST_AUTO_TEST_CASE(a_case_that_names_no_fixed_scheme_is_swept_with_the_adaptiv
   BOOST_TEST(at(tb, 1, "throw.spin_rev_s") == 20.0);
 }
 
+BOOST_AUTO_TEST_CASE(a_title_with_control_characters_is_printed_escaped) {
+  // Oracle: printable_text's escapes. The sweep's configuration lines printed its title as written:
+  // a bell and an escape sequence reached the terminal.
+  const fs::path p = setup("ctrl", "title = \"s\\u0007w\\u001b[31m\"\n" + grid_sweep(2, 2, "[\"realtime\"]"));
+  const Outcome r = command("sweep " + p.string() + " --out " + (work() / "ctrl.h5").string());
+  BOOST_REQUIRE(r.status == 0);
+  BOOST_TEST(r.out.find("sweep     s\\x07w\\x1B[31m (") != std::string::npos, r.out);
+  BOOST_TEST(r.out.find('\a') == std::string::npos);
+  BOOST_TEST(r.out.find('\x1b') == std::string::npos);
+}
+
 BOOST_AUTO_TEST_CASE(bad_sweep_files_fail_before_any_throw_with_one_line_and_no_output) {
   // Oracle: the line of the broken key in each file; no result file, no journal afterwards.
   setup("bad", grid_sweep());

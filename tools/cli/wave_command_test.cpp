@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -16,6 +19,7 @@ namespace {
 
 using stoneskip::test::Ran;
 using stoneskip::test::run_stoneskip;
+namespace fs = std::filesystem;
 
 nlohmann::json run_json(const std::string& args, int status = 0) {
   Ran r = run_stoneskip(args + " --json", false);  // stderr may carry notes; stdout is the JSON
@@ -197,6 +201,23 @@ BOOST_AUTO_TEST_CASE(a_gaussian_wide_against_its_periodic_grid_says_its_images_a
   BOOST_TEST(std::string(expected).find("0.3217") != std::string::npos);
   BOOST_TEST(!wide["initial_fits_grid"].get<bool>());
   BOOST_TEST(wide["note"].get<std::string>().find(expected) != std::string::npos, wide["note"].get<std::string>());
+}
+
+BOOST_AUTO_TEST_CASE(a_title_with_control_characters_is_printed_escaped) {
+  // Oracle: printable_text's escapes. The text summary printed the case's title as written.
+  std::ifstream in("cases/wave_gaussian_five_point.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string from = "title = \"Gaussian bump, five-point stencil\"";
+  BOOST_REQUIRE(text.find(from) != std::string::npos);
+  text.replace(text.find(from), from.size(), "title = \"w\\u0007v\\u001b[31m\"");
+  const fs::path p = fs::temp_directory_path() / ("stoneskip_wave_ctrl_" + std::to_string(::getpid()) + ".toml");
+  std::ofstream(p) << text;
+  const Ran r = run_stoneskip("wave " + p.string() + " --set water.nx=16 --set water.ny=16", false);
+  fs::remove(p);
+  BOOST_REQUIRE(r.status == 0);
+  BOOST_TEST(r.out.find("w\\x07v\\x1B[31m: five_point") != std::string::npos, r.out);
+  BOOST_TEST(r.out.find('\a') == std::string::npos);
+  BOOST_TEST(r.out.find('\x1b') == std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(a_ring_too_large_for_its_periodic_images_is_refused_naming_its_key) {

@@ -84,7 +84,7 @@ std::string text_summary(const StoneCase& c, const ThrowResult& r) {
   // Title and file name as data: a control character in either is written escaped, not sent to
   // the terminal (a bell, an escape sequence, a line break that splits the summary).
   s << "case      " << printable_text(c.title) << " (" << printable_text(c.file) << ")\n";
-  s << "stone     " << c.stone.description << ", mass " << num(c.stone.mass.mass_kg * 1e3) << " g\n";
+  s << "stone     " << printable_text(c.stone.description) << ", mass " << num(c.stone.mass.mass_kg * 1e3) << " g\n";
   s << "model     " << to_string(c.environment.convention) << " convention, " << to_string(c.environment.water_law)
     << " water law, C_w = " << c.environment.water_coefficient;
   if (c.environment.convention == Convention::physical)

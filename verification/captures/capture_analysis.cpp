@@ -148,6 +148,7 @@ void locate_still_part(CaptureAnalysis& a, const ChainInput& in, const CaptureOp
     ++a.swing_samples;
     if (in.flags[k] & kAccelSaturated) ++a.saturated_in_swing;
     if (in.flags[k] & kGyroSaturated) a.gyro_saturated_in_swing = true;
+    if ((in.flags[k] & kGyroHeld) && a.gyro_held_in_swing++ == 0) a.gyro_held_from_s = in.t_s[k];
     Vec3 off = in.rate_slow_deg_s(k) - bias_slow;
     for (int i = 0; i < 3; ++i)
       if (in.fast[k][i]) off[i] *= in.fast_factor;

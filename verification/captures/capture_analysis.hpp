@@ -164,6 +164,9 @@ struct CaptureAnalysis {
   // The swing's largest angular rate off the still part's mean (deg/s, each axis at its recorded
   // range): a wrist that throws turns at hundreds of deg/s, a gyro that did not record reads ≈ 0.
   double swing_peak_rate_deg_s = 0;
+  // Swing samples whose rate is held over a MotionPlus silence (kGyroHeld), and the first one's time.
+  int gyro_held_in_swing = 0;
+  double gyro_held_from_s = 0;
   std::vector<SaturatedSpan> spans;
   // release
   bool press_found = false, release_found = false, release_at_end = false;

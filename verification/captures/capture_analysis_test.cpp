@@ -86,9 +86,14 @@ Triangle on_samples(const std::vector<double>& t, double a, double m, double b, 
 CaptureOptions quick_options() {
   CaptureOptions o;
   o.members = 8;  // the intervals are not what these tests look at
-  // Most analytic throws here move without turning (closed forms for the integration); a real
-  // throw turns the wrist, and the rule that a swing without rotation is a gyro that did not
-  // record is tested on its own (a_swing_the_gyro_did_not_see_is_unusable).
+  return o;
+}
+
+// For the analytic throws that move without turning (closed forms for the integration): a real
+// throw turns the wrist, and the rule that a swing without rotation is a gyro that did not record
+// is switched off for them; it is tested on its own (a_swing_the_gyro_did_not_see_is_unusable).
+CaptureOptions unturned_options() {
+  CaptureOptions o = quick_options();
   o.rules.min_swing_rate_deg_s = 0;
   return o;
 }
@@ -162,7 +167,7 @@ BOOST_AUTO_TEST_CASE(the_virtual_thrower_maps_the_measured_throw_and_both_are_ke
   const Trace trace = make_trace(t, [&](double s) {
     return Reading{Vec3(push(s) / kG, 0, 1), Vec3(0, 0, 0), s > 0.3 && s < 1.0};
   });
-  CaptureOptions o = quick_options();
+  CaptureOptions o = unturned_options();
   o.thrower.speed_scale = 2.0;
   o.thrower.finger_spin_rev_s = 12.0;
   o.thrower.release_height_m = 0.25;
@@ -216,7 +221,7 @@ BOOST_AUTO_TEST_CASE(the_verdict_follows_the_rules_thresholds) {
   const Trace trace = make_trace(t, [](double s) {
     return Reading{Vec3(Triangle{0.7, 0.8, 0.9, 20.0}(s) / kG, 0, 1), Vec3(0, 0, 0), s > 0.3 && s < 1.0};
   });
-  CaptureOptions o = quick_options();
+  CaptureOptions o = unturned_options();
   CaptureAnalysis a = analyse_capture(trace, o);
   BOOST_REQUIRE(a.can_throw());
   const double jitter = a.timing.stats.jitter_s;
@@ -242,7 +247,7 @@ BOOST_AUTO_TEST_CASE(a_throw_no_human_could_make_is_unusable_naming_the_quantity
   const Trace trace = make_trace(t, [](double s) {
     return Reading{Vec3(Triangle{0.7, 0.8, 0.9, 20.0}(s) / kG, 0, 1), Vec3(0, 0, 0), s > 0.3 && s < 1.0};
   });
-  CaptureOptions o = quick_options();
+  CaptureOptions o = unturned_options();
   CaptureAnalysis a = analyse_capture(trace, o);
   BOOST_REQUIRE(a.can_throw());
   BOOST_TEST(to_string(a.verdict) == std::string("usable"));
@@ -262,7 +267,7 @@ BOOST_AUTO_TEST_CASE(a_throw_no_human_could_make_is_unusable_naming_the_quantity
   a = analyse_capture(trace, o);
   BOOST_TEST(to_string(a.verdict) == std::string("unusable"));
   BOOST_TEST(a.reasons.front().find("release speed") != std::string::npos, a.reasons.front());
-  o = quick_options();
+  o = unturned_options();
   o.rules.max_hand_displacement_m = 1e-4;  // below the analytic throw's travel
   a = analyse_capture(trace, o);
   BOOST_TEST(to_string(a.verdict) == std::string("unusable"));

@@ -30,7 +30,7 @@ Record clean_inputs() {
   in.set("nominal_timestamps", 0).set("inferred_range_switches", 0).set("device_calibration", 1);
   in.set("measured_speed_m_s", 10.0).set("lever_speed_m_s", 9.0).set("speed_difference_m_s", 1.0);
   in.set("accel_lever_disagreement", r.accel_lever_disagreement).set("reader_warnings", 0);
-  in.set("swing_peak_rate_deg_s", 800.0).set("min_swing_rate_deg_s", r.min_swing_rate_deg_s);
+  in.set("swing_peak_rate_deg_s", 800.0).set("min_swing_rate_deg_s", r.min_swing_rate_deg_s).set("gyro_held_in_swing", 0);
   return in;
 }
 
@@ -73,7 +73,7 @@ CaptureAnalysis small_analysis() {
   a.still_accel_g = 1.01;
   a.still_accel_error_g = 0.01;
   a.nominal.measured_speed_m_s = a.nominal.lever_speed_m_s = 9.0;
-  a.swing_peak_rate_deg_s = 300;  // the samples' rates, 100 k deg/s
+  a.swing_peak_rate_deg_s = 300;  // written by hand, as the rest: a rate a turning wrist passes
   a.speed_m_s = {9.0, 8.5, 9.75};
   a.attack_angle_deg = {20, 19, 21};
   a.path_angle_deg = {5, 4, 6};
@@ -145,6 +145,9 @@ BOOST_AUTO_TEST_CASE(the_capture_verdict_rule_decides_at_its_thresholds) {
   BOOST_TEST(capture_conditions(in).unusable == std::vector<std::string>{"gyro_still"});
   in.set("has_gyro", 0);  // no MotionPlus at all says so, not that it stood still
   BOOST_TEST(capture_conditions(in).unusable == std::vector<std::string>{"no_gyro"});
+  in = clean_inputs();  // one swing sample whose rate is held over a MotionPlus silence: unusable
+  in.set("gyro_held_in_swing", 1);
+  BOOST_TEST(capture_conditions(in).unusable == std::vector<std::string>{"gyro_held_in_swing"});
 
   in = clean_inputs();
   in.set("samples", in.number("min_samples") - 1).set("still_found", 0).set("reader_warnings", 2);

@@ -7,7 +7,7 @@ constexpr struct {
   std::uint32_t flag;
   char letter;
 } kLetters[] = {{kSaturatedX, 'X'}, {kSaturatedY, 'Y'}, {kSaturatedZ, 'Z'},
-                {kGyroSaturated, 'P'}, {kRepeated, 'R'}, {kGapBefore, 'G'}};
+                {kGyroSaturated, 'P'}, {kRepeated, 'R'}, {kGapBefore, 'G'}, {kGyroHeld, 'H'}};
 }  // namespace
 
 std::string flags_to_string(std::uint32_t flags) {

@@ -56,9 +56,10 @@ enum SampleFlag : std::uint32_t {
   kGyroSaturated = 1u << 3,  // a MotionPlus axis at the end of its 14-bit range
   kRepeated = 1u << 4,     // a repeat of the previous report (dropped by processing)
   kGapBefore = 1u << 5,    // reports were lost between the previous sample and this one
+  kGyroHeld = 1u << 6,     // no MotionPlus frame for a silence's length before: the rate is held, not measured
 };
 constexpr std::uint32_t kAccelSaturated = kSaturatedX | kSaturatedY | kSaturatedZ;
-// "XYZPRG" letters, '-' for none (the trace CSV's flags column).
+// "XYZPRGH" letters, '-' for none (the trace CSV's flags column).
 std::string flags_to_string(std::uint32_t flags);
 // Parses the letters back; returns false on an unknown letter.
 bool flags_from_string(const std::string& s, std::uint32_t& out);

@@ -42,7 +42,7 @@ bool CaptureVerdictRules::is_valid(std::string* why) const {
 
 namespace {
 std::string format(const char* fmt, double a = 0, double b = 0, double c = 0) {
-  char buf[320];
+  char buf[480];
   std::snprintf(buf, sizeof buf, fmt, a, b, c);
   return buf;
 }
@@ -120,6 +120,7 @@ Record capture_verdict_inputs(const CaptureAnalysis& a, const CaptureVerdictRule
   in.set("release_tilt_deg", finite ? release_tilt_deg(a) : 0.0);
   in.set("max_tilt_deg", r.max_tilt_deg);
   in.set("swing_peak_rate_deg_s", a.swing_peak_rate_deg_s);
+  in.set("gyro_held_in_swing", a.gyro_held_in_swing);
   in.set("min_swing_rate_deg_s", r.min_swing_rate_deg_s);
   return in;
 }
@@ -145,6 +146,11 @@ std::string reason_for(const std::string& c, const CaptureAnalysis& a, const Rec
   if (c == "no_still_part")
     return format("no still part of at least %.3g s before the release: gravity and the gyro bias cannot be found",
                   a.options.min_still_s);
+  if (c == "gyro_held_in_swing")
+    return format("the MotionPlus sent no frame for 0.1 s or more during the swing (%.0f of its samples, from %.4g s after the first "
+                  "sample): their rate is the last frame's, held, not measured, so the orientation through the swing is "
+                  "unknown there",
+                  in.number("gyro_held_in_swing"), a.gyro_held_from_s);
   if (c == "gyro_still")
     return format("the MotionPlus shows no rotation through the swing (its largest rate off the still part's is %.3g "
                   "deg/s, below %.3g deg/s; a throwing wrist turns at hundreds) while the accelerometer measures %.3g "

@@ -45,7 +45,7 @@ ThrowResult solve(const ThrowProblem& p, const SolverChoice& s);
 int sweep_bounce_count(const ThrowProblem& p, SolverChoice s);
 
 // Whether a failed solve ran away: its last state holds more than a thousand times the release
-// energy (and over 1 mJ) — the rule the real-time stepper names a paper-convention runaway by
+// energy, the release energy floored at 1 mJ (so over 1 J at least) — the rule the real-time stepper names a paper-convention runaway by
 // (solvers/realtime/stone_stepper.cpp): the printed forces create energy (spec §1.6), so such a
 // stone skips on, gaining speed, until a solver gives up; its count is not a finished throw's.
 // False for a solve that did not fail, or failed with its energy in bounds.

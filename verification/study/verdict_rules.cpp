@@ -444,6 +444,8 @@ CaptureConditions capture_conditions(const Record& in) {
   unusable(in.number("samples") >= 2 && !in.flag("press_found"), "no_press");
   unusable(in.flag("release_found") && in.number("release_gap_s") > in.number("max_release_gap_s"), "release_in_gap");
   unusable(in.flag("release_found") && !in.flag("still_found"), "no_still_part");
+  if (in.has_number("gyro_held_in_swing"))  // records stored before this input existed lack it
+    unusable(in.flag("still_found") && in.number("gyro_held_in_swing") > 0, "gyro_held_in_swing");
   if (in.has_number("min_swing_rate_deg_s"))  // records stored before this input existed lack it
     unusable(in.flag("has_gyro") && in.flag("still_found") &&
                  in.number("swing_peak_rate_deg_s") < in.number("min_swing_rate_deg_s"),

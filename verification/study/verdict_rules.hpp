@@ -138,9 +138,9 @@ Record& decide_verdict(Record& parent, const std::string& key, const std::string
 // nominal_timestamps, inferred_range_switches, device_calibration, measured_speed_m_s,
 // lever_speed_m_s, speed_difference_m_s, accel_lever_disagreement, reader_warnings, and (when
 // stored) release_speed_m_s, min/max_release_speed_m_s, hand_displacement_m, max_hand_displacement_m,
-// release_tilt_deg, max_tilt_deg, swing_peak_rate_deg_s, min_swing_rate_deg_s.
+// release_tilt_deg, max_tilt_deg, swing_peak_rate_deg_s, min_swing_rate_deg_s, gyro_held_in_swing.
 // Unusable: no_gyro, too_few_samples, no_rate, rate_too_low, no_press, release_in_gap,
-// no_still_part, gyro_still, state_not_finite, calibration_wrong, release_speed_implausible,
+// no_still_part, gyro_held_in_swing, gyro_still, state_not_finite, calibration_wrong, release_speed_implausible,
 // hand_displacement_implausible. Caveats: no_release_signal, button_held_at_end,
 // clipped_in_swing, gyro_saturated, reports_lost, jitter, calibration_off, no_timestamps,
 // range_switches_inferred, nominal_calibration, accel_lever_disagree, reader_warnings,
