@@ -140,6 +140,30 @@ BOOST_AUTO_TEST_CASE(time_going_backwards_names_the_line) {
   BOOST_TEST(split.samples.size() == 2u);
 }
 
+BOOST_AUTO_TEST_CASE(a_trace_marked_nominal_over_other_times_is_refused) {
+  // "# timestamps: nominal" over host stamps: the stamps were analysed (98.8 Hz, 1.7 ms of jitter,
+  // a gap) while the verdict said the nominal rate was assumed. Oracle: the mark's meaning, times
+  // k / nominal_rate_hz from the first: the gesture recorder's trace (nominal, as convert writes it)
+  // reads back, the same with one row 1 ms late is refused naming that row, and a host-stamped
+  // trace marked nominal is refused.
+  SyntheticThrow th;
+  th.swing_rate_rad_s = 7.0;
+  SyntheticTruth truth;
+  const Trace gesture = parse_capture(synthetic_gesture(th, SyntheticSensor{}, truth), "g.txt");
+  BOOST_REQUIRE(gesture.nominal_timestamps);
+  const std::string text = trace_csv_text(gesture);
+  BOOST_TEST(parse_capture(text, "g.csv").samples.size() == gesture.samples.size());
+  std::string late = text;
+  const std::size_t row = late.find("\n0.050000000,");  // the sixth sample at 100 Hz
+  BOOST_REQUIRE(row != std::string::npos);
+  late.replace(row + 1, 11, "0.051000000");
+  BOOST_TEST(contains(error_of(late), "'# timestamps: nominal' says the times are k / nominal_rate_hz (100 Hz)"), error_of(late));
+  BOOST_TEST(contains(error_of(late), "this row's is 0.051000000 s, not 0.050000000 s"));
+  std::string host = trace_csv_text(parse_capture(gentle_log(), "gentle.log"));
+  host.replace(host.find("# timestamps: host"), 18, "# timestamps: nominal");
+  BOOST_TEST(contains(error_of(host), "'# timestamps: nominal' says"), error_of(host));
+}
+
 BOOST_AUTO_TEST_CASE(a_misspelt_header_key_or_another_trace_version_is_refused_a_note_is_not) {
   // main: "# has_gyroo: false" was ignored (and the MotionPlus taken as present: another verdict),
   // "# nominal_rate_Hz: 100" too, and "# stoneskip trace v2" read as v1. Oracle: the keys of

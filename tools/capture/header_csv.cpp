@@ -453,6 +453,22 @@ Trace read_header_csv(const std::string& text, const std::string& file, const He
         throw_input_error(file, kept[i]->line, tc.header, what);
       }
     }
+    // The rows skipped for this remote (another's, or unchanged) are stamped by the same logger's
+    // clock: time going backwards on one of them is as wrong as on a kept row (it passed unseen).
+    // A fall of more than half the tick counter's range is its wrap, judged above on the kept rows.
+    const Row* before = nullptr;
+    for (const Row& r : rows) {
+      const double stamp = r.cells[col.at(F::time)];
+      if (empty(stamp)) continue;
+      const double previous = before ? before->cells[col.at(F::time)] : stamp;
+      if (stamp < previous && !(previous - stamp > kTicks / 2)) {
+        char what[200];
+        std::snprintf(what, sizeof what, "time goes backwards (%.15g after %.15g on line %ld)", stamp, previous,
+                      long(before->line));
+        throw_input_error(file, r.line, tc.header, what);
+      }
+      before = &r;
+    }
     CsvUnit unit = tc.rc.unit;
     std::string how = "from the header";
     if (unit == CsvUnit::none) {

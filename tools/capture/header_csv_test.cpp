@@ -4,6 +4,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <cctype>
 
 #include <cmath>
 #include <fstream>
@@ -356,6 +357,46 @@ BOOST_AUTO_TEST_CASE(the_first_remote_with_data_is_read_by_default) {
   const Trace t = parse_capture(text, "two.csv");
   BOOST_TEST(t.samples[1].accel_g.x() == 0.2);
   BOOST_TEST(contains(error_of(text, {1, ""}), "has no data"));
+}
+
+BOOST_AUTO_TEST_CASE(time_going_backwards_on_a_row_skipped_for_this_remote_is_refused) {
+  // A row whose thrower's data repeat the previous row's is skipped (#WM2's idle remote wrote it),
+  // and its time went unchecked: 100 ms taken off it passed, while the same on a kept row was an
+  // error. Oracle: one logger's clock runs forward over every row. The shipped two-remote CSV's
+  // first row whose #WM1 fields (3rd to 14th) repeat the row before gets its time cut by 100 ms.
+  std::ifstream f("cases/captures/skip_two_remotes_wiiyourself.csv");
+  std::vector<std::string> lines;
+  for (std::string l; std::getline(f, l);) lines.push_back(l);
+  BOOST_REQUIRE(lines.size() > 50u);
+  const auto fields = [](const std::string& l) {
+    std::vector<std::string> out;
+    std::size_t a = 0;
+    for (std::size_t b; (b = l.find(',', a)) != std::string::npos; a = b + 1) out.push_back(l.substr(a, b - a));
+    out.push_back(l.substr(a));
+    return out;
+  };
+  std::size_t at = 0;
+  for (std::size_t i = 1; i < lines.size() && at == 0; ++i) {
+    const auto p = fields(lines[i - 1]), q = fields(lines[i]);
+    if (p.size() > 14 && q.size() == p.size() && !q[0].empty() && std::isdigit(static_cast<unsigned char>(q[0][0])) &&
+        std::equal(p.begin() + 2, p.begin() + 14, q.begin() + 2))
+      at = i;
+  }
+  BOOST_REQUIRE(at > 0);
+  auto q = fields(lines[at]);
+  q[1] = std::to_string(std::stol(q[1]) - 100);
+  std::string edited;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    std::string l = lines[i];
+    if (i == at) {
+      l = q[0];
+      for (std::size_t k = 1; k < q.size(); ++k) l += "," + q[k];
+    }
+    edited += l + "\n";
+  }
+  const std::string e = error_of(edited);
+  BOOST_TEST(e.find("bad.csv:" + std::to_string(at + 1) + ":") != std::string::npos, e);
+  BOOST_TEST(e.find("time goes backwards") != std::string::npos, e);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,5 +1,6 @@
 #include "tools/capture/trace_csv.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <set>
 
@@ -123,6 +124,22 @@ Trace read_trace_csv(const std::string& text, const std::string& file) {
   }
   if (!columns_seen) throw_input_error(file, 0, "", "no column line: not a stoneskip trace");
   if (t.samples.empty()) throw_input_error(file, 0, "", "no samples");
+  // "timestamps: nominal" says the times are the nominal rate's, k / nominal_rate_hz from the first
+  // (as convert writes them, to the ns of its %.9f); a file so marked over other times had its
+  // stamps analysed while its verdict said the nominal rate was assumed.
+  if (t.nominal_timestamps) {
+    const double period = 1.0 / t.nominal_rate_hz;
+    for (std::size_t k = 1; k < t.samples.size(); ++k) {
+      const double expected = t.samples.front().t_s + double(k) * period;
+      if (std::abs(t.samples[k].t_s - expected) <= 2e-9 + 1e-12 * std::abs(expected)) continue;
+      char what[300];
+      std::snprintf(what, sizeof what,
+                    "'# timestamps: nominal' says the times are k / nominal_rate_hz (%.6g Hz) from the first, but "
+                    "this row's is %.9f s, not %.9f s: mark the file 'host', or give its nominal_rate_hz",
+                    t.nominal_rate_hz, t.samples[k].t_s, expected);
+      throw_input_error(file, t.samples[k].line, "", what);
+    }
+  }
   if (!has_gyro_given) {
     // No `has_gyro` line: the rate columns say whether a MotionPlus was there.
     for (const TraceSample& x : t.samples) t.has_gyro = t.has_gyro || x.rate_deg_s != Eigen::Vector3d::Zero();
