@@ -160,8 +160,9 @@ void motion_part(SectionWriter& w, const std::string& key, const Record& c) {
   const Record& v = c.at("verdict");
   if (v.has_number("swing_peak_rate_deg_s") && v.has_number("min_swing_rate_deg_s"))
     t.row({"largest rate off the still part's in the swing (deg/s)",
-           fmt(v.number("swing_peak_rate_deg_s"), 4) + " (unusable below " + fmt(v.number("min_swing_rate_deg_s"), 3) +
-               ": a gyro that did not record the throw)"});
+           !still.flag("found") ? std::string("not measured (no still part to measure from)")
+                                : fmt(v.number("swing_peak_rate_deg_s"), 4) + " (unusable below " +
+                                      fmt(v.number("min_swing_rate_deg_s"), 3) + ": a gyro that did not record the throw)"});
   if (v.has_number("gyro_held_in_swing"))
     t.row({"swing samples whose rate is held over a MotionPlus silence",
            fmt(v.number("gyro_held_in_swing")) + " (unusable above 0)"});
