@@ -36,6 +36,7 @@
 
 #include "solvers/realtime/clocks.hpp"
 #include "solvers/reference/absolute_tolerance.hpp"
+#include "solvers/reference/filippov_sliding.hpp"
 #include "solvers/realtime/stone_events.hpp"
 
 namespace stoneskip {
@@ -80,6 +81,8 @@ struct Problem {
   const Stone& stone;
   const Environment& env;
   StoneEvents& events;
+  FilippovSliding& sliding;
+  int sliding_face = -1;   // ≥ 0: sliding along this face's loaded-region switch (one more root: its exit)
   std::string nan_detail;  // the first non-finite value met in a callback
 };
 
@@ -100,7 +103,10 @@ int rhs_callback(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
       return 1;  // recoverable: CVODE retries with a smaller step, and gives up after a few
     }
   }
-  rigid_body_rhs(p.stone, p.env, yy, dy);
+  if (p.sliding_face >= 0)
+    p.sliding.field(p.sliding_face, yy, dy);
+  else
+    rigid_body_rhs(p.stone, p.env, yy, dy);
   for (int k = 0; k < kStateSize; ++k) {
     if (!std::isfinite(dy[k])) {
       note_nan(p, "right-hand side", t);
@@ -112,7 +118,10 @@ int rhs_callback(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
 
 int root_callback(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
   auto& p = *static_cast<Problem*>(user);
-  if (p.events.evaluate(N_VGetArrayPointer(y), g)) return 0;
+  if (p.events.evaluate(N_VGetArrayPointer(y), g)) {
+    if (p.sliding_face >= 0) g[p.events.count()] = p.sliding.exit_value(p.sliding_face, N_VGetArrayPointer(y));
+    return 0;
+  }
   note_nan(p, "state or a root function", t);
   return -1;  // unrecoverable: CVode returns CV_RTFUNC_FAIL
 }
@@ -151,7 +160,7 @@ class ReferenceSolve {
  public:
   ReferenceSolve(const Stone& stone, const Environment& env, const ReferenceOptions& o, ThrowResult& r)
       : stone_(stone), env_(env), o_(o), r_(r), events_(stone, env, o.restart == RestartStrategy::every_event),
-        problem_{stone, env, events_, {}}, g_(events_.count()), found_(events_.count()),
+        sliding_(stone, env), problem_{stone, env, events_, sliding_, -1, {}}, found_(events_.count() + 1),
         event_times_(std::clamp(o.max_events_per_ms, 1, kMaxEventsPerMs), -1e300) {}
 
   void run(const RigidState& initial);
@@ -163,6 +172,9 @@ class ReferenceSolve {
   void finish(const RigidState& s0);
   void restart(double t);
   void continue_after_event();
+  void set_roots();          // the root functions of the mode (the events', and a sliding's exit)
+  bool try_sliding();        // where the step collapsed: slide along an attracting switch, if one is there
+  void end_sliding(double t);
   void count_steps_to_event();
   void add_segment_stats();
   RigidState state() const;  // the current CVODE vector as a state, quaternion normalised
@@ -177,12 +189,21 @@ class ReferenceSolve {
   const ReferenceOptions& o_;
   ThrowResult& r_;
   StoneEvents events_;
+  FilippovSliding sliding_;
   Problem problem_;
   CvodeObjects cv_;
   std::string last_error_;
   ContactLog log_;
-  std::vector<double> g_;
   std::vector<int> found_;
+  std::vector<int> root_directions_;
+  int roots_now_ = 0;                // the number of root functions CVODE has
+  // Filippov sliding (filippov_sliding.hpp): the intervals slid, and why a collapse found none.
+  struct Slide {
+    int face = -1;
+    double from_s = 0, to_s = 0;
+  };
+  std::vector<Slide> slides_;
+  std::string no_slide_;
   std::vector<double> event_times_;  // ring of the last max_events_per_ms event times
   long event_count_ = 0;
   long window_steps_ = 0;            // step-collapse guard: total steps and t where the window began
@@ -269,9 +290,7 @@ void ReferenceSolve::setup(const RigidState& s0) {
   }
   if (o_.max_step_s > 0) check(CVodeSetMaxStep(cv_.mem, o_.max_step_s), "CVodeSetMaxStep");
   check(CVodeSetMaxHnilWarns(cv_.mem, -1), "CVodeSetMaxHnilWarns");
-  check(CVodeRootInit(cv_.mem, events_.count(), root_callback), "CVodeRootInit");
-  check(CVodeSetNoInactiveRootWarn(cv_.mem), "CVodeSetNoInactiveRootWarn");
-  check(CVodeSetRootDirection(cv_.mem, events_.directions()), "CVodeSetRootDirection");
+  set_roots();
   check(CVodeSetStopTime(cv_.mem, o_.t_max_s), "CVodeSetStopTime");
 }
 
@@ -308,8 +327,50 @@ void ReferenceSolve::restart(double t) {
   add_segment_stats();
   ++restarts_;
   check(CVodeReInit(cv_.mem, t, cv_.y), "CVodeReInit");
-  check(CVodeSetRootDirection(cv_.mem, events_.directions()), "CVodeSetRootDirection");
+  set_roots();
   check(CVodeSetStopTime(cv_.mem, o_.t_max_s), "CVodeSetStopTime");
+}
+
+// The events' root functions, and while sliding one more: the sliding's exit value, watched
+// falling through zero. CVodeRootInit (which resets the directions) only where the count changes.
+void ReferenceSolve::set_roots() {
+  const int n = events_.count() + (problem_.sliding_face >= 0 ? 1 : 0);
+  if (n != roots_now_) {
+    check(CVodeRootInit(cv_.mem, n, root_callback), "CVodeRootInit");
+    check(CVodeSetNoInactiveRootWarn(cv_.mem), "CVodeSetNoInactiveRootWarn");
+    roots_now_ = n;
+  }
+  root_directions_.assign(events_.directions(), events_.directions() + events_.count());
+  if (problem_.sliding_face >= 0) root_directions_.push_back(-1);
+  check(CVodeSetRootDirection(cv_.mem, root_directions_.data()), "CVodeSetRootDirection");
+}
+
+// Where the step collapsed (or CVODE failed to converge), a sliding mode on one face's loaded-region
+// switch is the one cause this solver can treat (filippov_sliding.hpp): when the switch nearest
+// zero attracts from both sides, the solve restarts from the last good state on Filippov's sliding
+// field, and leaves it at the located exit. Once sliding, a further collapse fails the solve.
+bool ReferenceSolve::try_sliding() {
+  if (problem_.sliding_face >= 0) return false;
+  const SlidingChoice c = sliding_.attracting_face(last_good_);
+  if (c.face < 0) {
+    no_slide_ = c.why;
+    return false;
+  }
+  const StateVector y = to_vector(last_good_);
+  std::copy(y.begin(), y.end(), N_VGetArrayPointer(cv_.y));
+  t_ = last_good_t_;
+  problem_.sliding_face = c.face;
+  slides_.push_back({c.face, t_, t_});
+  restart(t_);
+  window_steps_ = r_.stats.steps;
+  window_t_ = t_;
+  return true;
+}
+
+void ReferenceSolve::end_sliding(double t) {
+  if (problem_.sliding_face < 0) return;
+  slides_.back().to_s = t;
+  problem_.sliding_face = -1;
 }
 
 // No restart: CVODE keeps its history; only the directions to watch change with the mode. CVODE
@@ -318,7 +379,7 @@ void ReferenceSolve::restart(double t) {
 void ReferenceSolve::continue_after_event() {
   count_steps_to_event();
   ++continued_events_;
-  check(CVodeSetRootDirection(cv_.mem, events_.directions()), "CVodeSetRootDirection");
+  set_roots();
 }
 
 RigidState ReferenceSolve::state() const {
@@ -370,6 +431,9 @@ bool ReferenceSolve::handle_root(double t) {
   r_.event_times_s.push_back(t);
 
   check(CVodeGetRootInfo(cv_.mem, found_.data()), "CVodeGetRootInfo");
+  // The sliding's exit: one field has turned tangent to the switch; the loads decide again from the
+  // state after a restart (the field is continuous there, α being 0 or 1).
+  const bool slide_ends = problem_.sliding_face >= 0 && found_[static_cast<std::size_t>(events_.count())] != 0;
   // The returned vector is CVODE's output copy: renormalising it changes the integration only
   // where a restart takes it as the new initial value.
   renormalise();
@@ -398,7 +462,8 @@ bool ReferenceSolve::handle_root(double t) {
   // long enough to hold a whole submersion whose end CVODE's error test cannot tell from flight
   // (in the paper convention a fully submerged stone's opposite faces cancel).
   const bool contact_starts = c.submerged_before == 0 && c.submerged_after > 0;
-  const bool restart_here = o_.restart == RestartStrategy::every_event || o_.restart == RestartStrategy::every_crossing ||
+  if (slide_ends) end_sliding(t);
+  const bool restart_here = slide_ends || o_.restart == RestartStrategy::every_event || o_.restart == RestartStrategy::every_crossing ||
                             (o_.restart == RestartStrategy::at_jumps && (c.force_jumps() || contact_starts));
   if (restart_here)
     restart(t);
@@ -491,11 +556,17 @@ void ReferenceSolve::integrate() {
     }
     // Step-collapse guard: a full window of max_steps_per_ms steps must span 1 ms or more.
     if (total - window_steps_ >= o_.max_steps_per_ms) {
+      if (t_ - window_t_ < 1e-3 && try_sliding()) continue;
       if (t_ - window_t_ < 1e-3) {
         std::ostringstream m;
         m << "the step size collapsed: " << total - window_steps_ << " steps from t = " << window_t_ << " s to " << t_
           << " s, less than 1 ms (ReferenceOptions::max_steps_per_ms): the right-hand side is probably singular "
              "or discontinuous there, where no event is located (a sliding mode, say)";
+        if (problem_.sliding_face >= 0)
+          m << "; it collapsed while sliding along face " << problem_.sliding_face << "'s loaded-region switch (since t = "
+            << slides_.back().from_s << " s)";
+        else if (!no_slide_.empty())
+          m << "; no sliding mode was found to treat: " << no_slide_;
         fail(m.str());
         break;
       }
@@ -565,6 +636,10 @@ void ReferenceSolve::integrate() {
       const StateVector y = to_vector(s);
       if (std::all_of(y.begin(), y.end(), [](double v) { return std::isfinite(v); })) remember_good(t_ret);
     }
+    // Repeated error-test or convergence failures are how a sliding mode can also show.
+    if ((flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE) && try_sliding()) continue;
+    if (!no_slide_.empty() && (flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE))
+      m << "; no sliding mode was found to treat: " << no_slide_;
     fail(m.str());
   }
 }
@@ -588,6 +663,7 @@ void ReferenceSolve::finish(const RigidState& s0) {
     s_end = last_good_;
     t_ = last_good_t_;
   }
+  if (problem_.sliding_face >= 0) slides_.back().to_s = t_;  // still sliding at the end
   const bool cut = r_.outcome == Outcome::failed && log_.in_contact();
   if (log_.in_contact()) log_.end(t_, s_end, energy(s_end), false);
   if (o_.record_trajectory && (r_.trajectory.empty() || r_.trajectory.back().t_s < t_)) sample(t_, s_end);
@@ -598,6 +674,14 @@ void ReferenceSolve::finish(const RigidState& s0) {
   if (rcheck_restarts_ > 0)
     extra << "; restarted at " << rcheck_restarts_ << " event(s) where CVODE refused to continue past a root function "
           << "that stayed exactly zero (cvRcheck2)";
+  if (!slides_.empty()) {
+    double total = 0;
+    for (const Slide& sl : slides_) total += sl.to_s - sl.from_s;
+    extra << "; slid along a face's loaded-region switch (Filippov; a step collapsed there) " << slides_.size()
+          << " time(s), " << total * 1e3 << " ms in all: face " << slides_.front().face << " from t = " << slides_.front().from_s
+          << " s to " << slides_.front().to_s << " s";
+    if (slides_.size() > 1) extra << ", …";
+  }
   if (max_q_drift_ > kReportedQuaternionDrift) extra << "; quaternion norm drifted by up to " << max_q_drift_ << " between restarts";
   r_.outcome_detail += extra.str();
 }

@@ -29,6 +29,10 @@ bool parse_reference_method(const std::string& s, ReferenceMethod& out);
 //                   zero at its switch) and CVODE steps across the kink under its error control.
 // No strategy locates the savitsky distributions' own switches (model/stone/load_switches.hpp):
 // CVODE steps across them, their jumps included, under its error control (solvers/README.md).
+// Where one face's loaded-region switch attracts from both sides (a sliding mode: a lens stone's
+// planing exit), no step can cross it and the step collapses; the solve then restarts on
+// Filippov's sliding field along it and leaves at the located exit (filippov_sliding.hpp; every
+// strategy).
 //   never:          never restart; CVODE's error control alone handles every kink and jump. Not
 //                   safe where the force jumps: a step can carry the stone over a whole feature
 //                   whose ends look alike (cvode_stone_test shows a flat plate that falls through

@@ -1,0 +1,115 @@
+#include "solvers/reference/filippov_sliding.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "model/stone/rigid_body.hpp"
+
+namespace stoneskip {
+
+namespace {
+
+using Vector = std::array<double, kStateSize>;
+
+}  // namespace
+
+FilippovSliding::FilippovSliding(const Stone& stone, const Environment& env)
+    : stone_(stone), env_(env), switches_(stone, env) {}
+
+// The face's switch value at y: LoadSwitches' loaded_face function, which depends on the state
+// alone (not on a recorded mode), read after recording the mode of y.
+double FilippovSliding::switch_value(int face, const double* y) {
+  RigidState s = from_vector(y);
+  s.orientation.normalize();
+  switches_.reset(s, g_);
+  const int nv = static_cast<int>(stone_.body_mesh.vertices.size());
+  const std::size_t k = static_cast<std::size_t>(2 * nv + face);
+  return k < g_.size() ? g_[k] : std::numeric_limits<double>::quiet_NaN();
+}
+
+double FilippovSliding::rate_along(int face, const double* y, const double* f) {
+  Vector plus{}, minus{};
+  for (int k = 0; k < kStateSize; ++k) {
+    plus[k] = y[k] + kDirectionalStep_s * f[k];
+    minus[k] = y[k] - kDirectionalStep_s * f[k];
+  }
+  return (switch_value(face, plus.data()) - switch_value(face, minus.data())) / (2 * kDirectionalStep_s);
+}
+
+// The loads with the face held out of (loaded = 0) or in (1) the loaded region, every other face
+// as the loads decide it from the state (LoadMode::kDecide).
+void FilippovSliding::rhs_with_face(int face, char loaded, const double* y, double* dydt) {
+  mode_.loaded_faces.assign(stone_.body_mesh.triangles.size(), LoadMode::kDecide);
+  mode_.loaded_faces[static_cast<std::size_t>(face)] = loaded;
+  rigid_body_rhs(stone_, env_, y, dydt, nullptr, nullptr, &mode_);
+}
+
+SlidingChoice FilippovSliding::attracting_face(const RigidState& s) {
+  SlidingChoice c;
+  if (!available()) {
+    c.why = "only the savitsky distributions' loaded-region switches are slid along (physical convention)";
+    return c;
+  }
+  RigidState sn = s;
+  sn.orientation.normalize();
+  const StateVector y = to_vector(sn);
+  switches_.reset(sn, g_);
+  const int nv = static_cast<int>(stone_.body_mesh.vertices.size());
+  const int nf = static_cast<int>(stone_.body_mesh.triangles.size());
+  int best = -1;
+  for (int i = 0; i < nf; ++i) {
+    const double gi = g_[static_cast<std::size_t>(2 * nv + i)];
+    if (std::isfinite(gi) && (best < 0 || std::abs(gi) < std::abs(g_[static_cast<std::size_t>(2 * nv + best)]))) best = i;
+  }
+  if (best < 0) {
+    c.why = "no face is wetted there";
+    return c;
+  }
+  c.g = g_[static_cast<std::size_t>(2 * nv + best)];
+  Vector f0{}, f1{};
+  rhs_with_face(best, 0, y.data(), f0.data());
+  rhs_with_face(best, 1, y.data(), f1.data());
+  c.a0 = rate_along(best, y.data(), f0.data());
+  c.a1 = rate_along(best, y.data(), f1.data());
+  if (c.a0 > 0 && c.a1 < 0) {
+    c.face = best;
+    return c;
+  }
+  std::ostringstream m;
+  m << "the switch nearest zero there, face " << best << "'s loaded-region switch (g = " << c.g
+    << " m/s), does not attract from both sides (its rate is " << c.a0 << " m/s² with the face out of the loaded region, "
+    << c.a1 << " m/s² with it in)";
+  c.why = m.str();
+  return c;
+}
+
+SlidingField FilippovSliding::field(int face, const double* y, double* dydt) {
+  SlidingField out;
+  Vector f0{}, f1{};
+  rhs_with_face(face, 0, y, f0.data());
+  rhs_with_face(face, 1, y, f1.data());
+  const double a0 = rate_along(face, y, f0.data());
+  const double a1 = rate_along(face, y, f1.data());
+  if (!std::isfinite(a0) || !std::isfinite(a1)) {
+    // The face has no wetted polygon here: its switch is undefined and the loads decide alone.
+    rigid_body_rhs(stone_, env_, y, dydt);
+    out.exit = -1;
+    return out;
+  }
+  // α = a₀ / (a₀ − a₁) keeps ∇g · ẏ = 0; outside the sliding region (exit < 0, located as a root)
+  // it is clamped to the field on the side the state leaves by.
+  out.alpha = a0 - a1 > 0 ? std::clamp(a0 / (a0 - a1), 0.0, 1.0) : (a0 <= 0 ? 0.0 : 1.0);
+  out.exit = std::min(a0, -a1);
+  for (int k = 0; k < kStateSize; ++k) dydt[k] = (1 - out.alpha) * f0[k] + out.alpha * f1[k];
+  return out;
+}
+
+double FilippovSliding::exit_value(int face, const double* y) {
+  Vector f{};
+  return field(face, y, f.data()).exit;
+}
+
+}  // namespace stoneskip
