@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 
+#include "tools/io/column_units.hpp"
 #include "tools/io/input_error.hpp"
 
 namespace stoneskip {
@@ -158,7 +159,7 @@ struct Contour {
 // A heat map of a grid map (one cell per grid point, drawn as an image in cell-index space so
 // that neighbouring cells meet without seams; tics carry the values) with contours over it.
 Figure heat_map(const std::string& name, const std::string& title, const GridMap& map, const Axis& x, const Axis& y,
-                const std::string& scale, const std::vector<Contour>& contours) {
+                const std::string& value_unit, const std::string& scale, const std::vector<Contour>& contours) {
   Figure f;
   f.name = name;
   f.title = title;
@@ -168,6 +169,7 @@ Figure heat_map(const std::string& name, const std::string& title, const GridMap
   const double lowest = finite_range(map.value).first;
   Table cells, empty;
   cells.columns = {"ix", "iy", "x", "y", "value", "shown"};
+  cells.units = {"1", "1", column_unit(x.key), column_unit(y.key), value_unit, value_unit};
   empty.columns = {"ix", "iy"};
   for (std::size_t iy = 0; iy < ny; ++iy)
     for (std::size_t ix = 0; ix < nx; ++ix) {
@@ -185,7 +187,13 @@ Figure heat_map(const std::string& name, const std::string& title, const GridMap
   // white key hid.
   s << "set xrange [-0.5:" << nx - 0.5 << "]\nset yrange [-0.5:" << ny - 0.5
     << "]\nset key outside below box opaque fc rgb '#9e9e9e'\nset tics out\n";
-  s << "plot '" << name << "_cells.dat' using 1:2:6 with image notitle";
+  // gnuplot draws nothing `with image` under 2 × 2 cells ("Image grid must be at least 4 points"):
+  // a grid with one value on an axis is drawn as filled boxes, one per cell, instead.
+  if (nx >= 2 && ny >= 2)
+    s << "plot '" << name << "_cells.dat' using 1:2:6 with image notitle";
+  else
+    s << "plot '" << name << "_cells.dat' using 1:2:($1-0.5):($1+0.5):($2-0.5):($2+0.5):6 with boxxyerror "
+      << "fs solid 1.0 noborder fc palette notitle";
   if (empty.rows() > 0) {
     f.tables.emplace_back(name + "_empty", empty);
     s << ", \\\n     '" << name << "_empty.dat' using 1:2:($1-0.5):($1+0.5):($2-0.5):($2+0.5) with boxxyerror "
@@ -196,7 +204,7 @@ Figure heat_map(const std::string& name, const std::string& title, const GridMap
     for (std::size_t i = 0; i < nx; ++i) index.x_values[i] = double(i);
     for (std::size_t i = 0; i < ny; ++i) index.y_values[i] = double(i);
     Table seg;
-    seg.columns = {"ix0", "iy0", "ix1", "iy1"};
+    seg.columns = {"ix0", "iy0", "ix1", "iy1"};  // cell indices: unit "1" from the names
     for (const auto& e : threshold_edges(index, contours[l].level, false, false)) seg.add_row({e.x0, e.y0, e.x1, e.y1});
     if (seg.rows() == 0) continue;
     const std::string t = name + "_level" + std::to_string(l);
@@ -209,12 +217,13 @@ Figure heat_map(const std::string& name, const std::string& title, const GridMap
 
 Figure scatter(const std::string& name, const std::string& title, const std::vector<double>& xs,
                const std::vector<double>& ys, const std::vector<double>& v, const Axis& x, const Axis& y,
-               const std::string& scale) {
+               const std::string& value_unit, const std::string& scale) {
   Figure f;
   f.name = name;
   f.title = title;
   Table t;
   t.columns = {"x", "y", "value"};
+  t.units = {column_unit(x.key), column_unit(y.key), value_unit};
   for (std::size_t i = 0; i < v.size(); ++i)
     if (std::isfinite(v[i])) t.add_row({xs[i], ys[i], v[i]});
   if (t.rows() == 0) t.add_row({kNaN, kNaN, kNaN});
@@ -245,6 +254,7 @@ Figure histogram(const std::string& name, const std::string& title, const std::s
       if (std::isfinite(v)) counts[std::llround(v)] += 1;
     Table t;
     t.columns = {"value", "throws"};
+    t.units = {"1", "1"};  // a count, and the throws holding it
     for (const auto& [value, n] : counts) t.add_row({static_cast<double>(value), n});
     if (t.rows() == 0) t.add_row({kNaN, kNaN});
     const std::string tn = name + "_" + std::to_string(k);
@@ -269,6 +279,7 @@ Figure count_curve(const std::string& name, const std::string& title, const Axis
   for (std::size_t k = 0; k < series.size(); ++k) {
     Table t;
     t.columns = {"x", "bounces"};
+    t.units = {column_unit(x.key), "1"};
     for (std::size_t i = 0; i < series[k].second.x_values.size(); ++i)
       t.add_row({series[k].second.x_values[i], series[k].second.value[i]});
     const std::string tn = name + "_" + std::to_string(k);
@@ -384,7 +395,7 @@ std::vector<Figure> sweep_map_figures(const SweepData& d, const SweepMapOptions&
         const std::vector<double> zero(c.size(), 0.0);
         const auto [lo, hi] = finite_range(c);
         figs.push_back(scatter(pre + "bounces_" + s, "Bounce count (" + word(s) + ") against " + axes[0].key,
-                               d.throws.column(axes[0].key), c, c, axis(0), Axis{"bounces", false},
+                               d.throws.column(axes[0].key), c, c, axis(0), Axis{"bounces", false}, "1",
                                count_scale(lo, hi, "bounces")));
       }
     }
@@ -400,11 +411,11 @@ std::vector<Figure> sweep_map_figures(const SweepData& d, const SweepMapOptions&
           std::vector<Contour> levels;
           for (int k : threshold_counts(lo, hi, o.max_contour_levels))
             levels.push_back({m, k + 0.5, std::to_string(k) + " | " + std::to_string(k + 1) + " bounces"});
-          figs.push_back(heat_map(pre + "bounces_" + s + pair, title, m, axis(i), axis(j), count_scale(lo, hi, "bounces"),
+          figs.push_back(heat_map(pre + "bounces_" + s + pair, title, m, axis(i), axis(j), "1", count_scale(lo, hi, "bounces"),
                                   levels));
         } else {
           figs.push_back(scatter(pre + "bounces_" + s + pair, title, d.throws.column(axes[i].key),
-                                 d.throws.column(axes[j].key), c, axis(i), axis(j), count_scale(lo, hi, "bounces")));
+                                 d.throws.column(axes[j].key), c, axis(i), axis(j), "1", count_scale(lo, hi, "bounces")));
         }
       }
       if (!diff.empty()) {
@@ -415,12 +426,12 @@ std::vector<Figure> sweep_map_figures(const SweepData& d, const SweepMapOptions&
           std::vector<double> absolute(diff.size());
           for (std::size_t k = 0; k < diff.size(); ++k) absolute[k] = std::abs(diff[k]);
           // The edge of agreement: where the mean |difference| passes ½.
-          figs.push_back(heat_map(pre + "disagreement" + pair, title, grid_mean(d, diff, i, j), axis(i), axis(j),
+          figs.push_back(heat_map(pre + "disagreement" + pair, title, grid_mean(d, diff, i, j), axis(i), axis(j), "1",
                                   diverging_scale(span, "real-time − reference bounces"),
                                   {{grid_mean(d, absolute, i, j), 0.5, "edge of agreement"}}));
         } else {
           figs.push_back(scatter(pre + "disagreement" + pair, title, d.throws.column(axes[i].key),
-                                 d.throws.column(axes[j].key), diff, axis(i), axis(j),
+                                 d.throws.column(axes[j].key), diff, axis(i), axis(j), "1",
                                  diverging_scale(span, "real-time − reference bounces")));
         }
       }
@@ -438,16 +449,17 @@ std::vector<Figure> sweep_map_figures(const SweepData& d, const SweepMapOptions&
     for (char ch : column) stem += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
     if (n == 1)
       figs.push_back(scatter(stem, column + " against " + axes[0].key, d.throws.column(axes[0].key), v, v, axis(0),
-                             Axis{column, false}, continuous_scale(lo, hi, column)));
+                             Axis{column, false}, column_unit(column), continuous_scale(lo, hi, column)));
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = i + 1; j < n; ++j) {
         const std::string title = column + ": " + axes[j].key + " against " + axes[i].key + (grid ? others(i, j) : "");
         const std::string name = stem + "_" + std::to_string(i) + "_" + std::to_string(j);
         if (grid)
-          figs.push_back(heat_map(name, title, grid_mean(d, v, i, j), axis(i), axis(j), continuous_scale(lo, hi, column), {}));
+          figs.push_back(heat_map(name, title, grid_mean(d, v, i, j), axis(i), axis(j), column_unit(column),
+                                  continuous_scale(lo, hi, column), {}));
         else
           figs.push_back(scatter(name, title, d.throws.column(axes[i].key), d.throws.column(axes[j].key), v, axis(i), axis(j),
-                                 continuous_scale(lo, hi, column)));
+                                 column_unit(column), continuous_scale(lo, hi, column)));
       }
   }
   if (!grid) {

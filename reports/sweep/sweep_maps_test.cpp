@@ -15,12 +15,12 @@ namespace {
 
 constexpr double kRoundoff = 1e-14;  // a few ulps of the values involved
 
-SweepData grid_data(std::vector<long long> counts, SweepSolvers solvers) {
+SweepData grid_data(std::vector<long long> counts, SweepSolvers solvers, std::vector<std::string> keys = {}) {
   SweepData d;
   d.solvers = solvers;
   for (std::size_t k = 0; k < counts.size(); ++k) {
     SweepAxis a;
-    a.key = "k" + std::to_string(k);
+    a.key = k < keys.size() ? keys[k] : "k" + std::to_string(k);
     a.from = 1;
     a.to = static_cast<double>(counts[k]);
     a.count = counts[k];
@@ -131,6 +131,25 @@ BOOST_AUTO_TEST_CASE(a_two_key_grid_with_both_solvers_gets_count_and_disagreemen
   std::size_t levels = 0;
   for (const auto& [name, t] : f.tables) levels += name.find("_level") != std::string::npos ? 1 : 0;
   BOOST_TEST(levels == 5u);  // thresholds 2|3, 3|4, 4|5, 5|6, 6|7
+}
+
+BOOST_AUTO_TEST_CASE(a_grid_with_one_value_on_an_axis_is_drawn_as_boxes_and_its_tables_carry_units) {
+  // Oracle: gnuplot draws nothing `with image` under 2 × 2 cells ("Image grid must be at least 4
+  // points"): a 3 × 1 grid's map was a white picture counted as drawn. Its cells are boxes
+  // instead, each coloured by its value; the cells' units come from the axes' keys.
+  SweepData d = grid_data({3, 1}, SweepSolvers::realtime, {"throw.speed_m_s", "throw.spin_rev_s"});
+  fill(d, [](const std::vector<double>& p, int) { return p[0]; });
+  const Figure& f = figure(sweep_map_figures(d), "sweep_bounces_realtime_0_1");
+  BOOST_TEST(f.script.find("with image") == std::string::npos, f.script);
+  BOOST_TEST(f.script.find("with boxxyerror fs solid 1.0 noborder fc palette") != std::string::npos, f.script);
+  const Table& cells = table(f, "sweep_bounces_realtime_0_1_cells");
+  BOOST_TEST(cells.rows() == 3u);
+  const std::vector<std::string> units{"1", "1", "m/s", "rev/s", "1", "1"};
+  BOOST_TEST(cells.units == units, boost::test_tools::per_element());
+  // A full grid keeps the image.
+  SweepData full = grid_data({3, 2}, SweepSolvers::realtime);
+  fill(full, [](const std::vector<double>& p, int) { return p[0]; });
+  BOOST_TEST(figure(sweep_map_figures(full), "sweep_bounces_realtime_0_1").script.find("with image") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(a_throw_without_a_result_is_a_grey_cell_not_a_hole_in_the_image) {

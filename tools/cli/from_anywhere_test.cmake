@@ -5,6 +5,7 @@
 #  2. `cmake --install` into a fresh prefix gives P/bin/stoneskip, whose shipped cases are
 #     P/share/stoneskip/cases (not the source tree), and which runs the quick waves report into
 #     `elsewhere/waves` (a folder that does not exist yet) and a shipped throw from that outside folder.
+#  3. `regress --update` there rewrites no shipped baseline: refused, exit 2, the file unchanged.
 # Run by ctest: cmake -DBUILD_DIR=.. -DSOURCE_DIR=.. -DSTONESKIP=.. -DWORK=.. -P from_anywhere_test.cmake
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK}/cwd)  # `elsewhere` is not made here: the report makes its missing parent
@@ -52,5 +53,25 @@ run_checked("installed stoneskip run" ${installed} run cases/paper_8ms_spin.toml
 string(FIND "${RAN_OUTPUT}" "\"bounces\"" at)
 if(at EQUAL -1)
   message(FATAL_ERROR "installed stoneskip run printed no bounce count:\n${RAN_OUTPUT}")
+endif()
+
+# 3. `regress --update` from the outside folder rewrites no shipped baseline (it replaced the
+#    installed ones until December 5): with no --baseline, and with a shipped one named by its
+#    relative path, it is bad input (exit 2) before any work, and the installed file is unchanged.
+set(shipped_baseline ${WORK}/prefix/share/stoneskip/cases/baselines/spin_paper_realtime.toml)
+file(SHA256 ${shipped_baseline} before)
+foreach(args "regress;--update" "regress;--update;--baseline;cases/baselines/spin_paper_realtime.toml")
+  execute_process(COMMAND ${installed} ${args} WORKING_DIRECTORY ${WORK}/cwd RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 2)
+    message(FATAL_ERROR "installed stoneskip ${args} from an outside folder: exit ${rc}, not 2\n${out}\n${err}")
+  endif()
+  string(FIND "${err}" "shipped cop" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "installed stoneskip ${args}: the refusal should say the shipped copies are not rewritten:\n${err}")
+  endif()
+endforeach()
+file(SHA256 ${shipped_baseline} after)
+if(NOT before STREQUAL after)
+  message(FATAL_ERROR "regress --update from an outside folder changed the installed ${shipped_baseline}")
 endif()
 file(REMOVE_RECURSE ${WORK})

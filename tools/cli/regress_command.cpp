@@ -63,6 +63,18 @@ void add_regress(CLI::App& app) {
   add_limit_options(cmd, *limits);
   cmd->callback([files, update, workers, limits] {
     const auto t0 = std::chrono::steady_clock::now();
+    // --update rewrites only baselines here or named where they are: the shipped copies, found from
+    // any folder (tools/io/shipped_files.hpp), are read, never rewritten (an installed binary run
+    // from an empty folder rewrote its installed baselines until December 5).
+    if (*update && files->empty() && !fs::is_directory("cases/baselines"))
+      throw_input_error("cases/baselines", 0, "",
+                        "no baseline folder here: --update rewrites the baselines in ./cases/baselines or those named "
+                        "with --baseline, never the shipped copies");
+    if (*update)
+      for (const auto& p : *files)
+        if (!fs::exists(fs::symlink_status(p)))
+          throw_input_error(p, 0, "", "not found here: --update rewrites a baseline where it is named, never the shipped "
+                                      "copy (copy it here first)");
     const std::vector<std::string> paths = files->empty() ? default_baselines() : *files;
     // Read everything first: bad input is reported before any work.
     std::vector<BounceBaseline> stored;

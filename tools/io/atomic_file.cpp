@@ -92,6 +92,15 @@ void check_output_destination(const fs::path& path) {
     if (!S_ISREG(st.st_mode))
       refuse(path, "cannot write: it exists and is " + file_type_words(st.st_mode) +
                        ", not a regular file: refusing to replace it");
+    // A file nobody may write (a baseline marked read-only) is kept as its owner marked it: the
+    // move into place would replace it whatever its mode (rename needs only the folder's write
+    // permission), and root may write anything, so the mode bits are read, not access().
+    if ((st.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0) {
+      char mode[8];
+      std::snprintf(mode, sizeof mode, "%04o", static_cast<unsigned>(st.st_mode & 07777));
+      refuse(path, std::string("cannot write: it is read-only (mode ") + mode +
+                       "): refusing to replace it (make it writable to let it be rewritten)");
+    }
   } else if (errno != ENOENT) {
     refuse(path, "cannot write: " + errno_words(errno));
   }
@@ -172,7 +181,7 @@ void AtomicOutput::commit() {
   // move itself is atomic against a change after this check (move_into_place).
   check_output_destination(final_);
   with_registry_lock([&] {
-    // A file replaced keeps its permissions (a read-only baseline stays read-only).
+    // A file replaced keeps its permissions (a baseline made group-writable stays so).
     struct stat st {};
     const bool replacing = ::lstat(final_.c_str(), &st) == 0 && S_ISREG(st.st_mode);
     if (replacing) ::chmod(tmp_.c_str(), st.st_mode & 07777);

@@ -89,17 +89,21 @@ BOOST_AUTO_TEST_CASE(only_a_regular_file_is_ever_replaced) {
   BOOST_TEST(got == "text");
 }
 
-BOOST_AUTO_TEST_CASE(a_replaced_file_keeps_its_permissions) {
-  // Oracle: stat before and after. `regress --update` on a read-only baseline left it 0644; the
-  // new text goes in with the old mode bits.
+BOOST_AUTO_TEST_CASE(a_replaced_file_keeps_its_permissions_and_a_read_only_one_is_kept) {
+  // Oracle: stat before and after. The new text goes in with the old mode bits (0600 stays 0600).
+  // A file nobody may write is refused and left as it was: `regress --update` replaced a 0444
+  // baseline until December 5 (the move into place needs only the folder's permission).
   Scratch s;
   const fs::path f = s.dir / "baseline.toml";
   write_text_file(f, "old\n");
-  BOOST_REQUIRE(::chmod(f.c_str(), 0444) == 0);
+  BOOST_REQUIRE(::chmod(f.c_str(), 0600) == 0);
   write_text_file(f, "new\n");
   struct stat st {};
   BOOST_REQUIRE(::stat(f.c_str(), &st) == 0);
-  BOOST_TEST((st.st_mode & 07777) == 0444u);
+  BOOST_TEST((st.st_mode & 07777) == 0600u);
+  BOOST_TEST(read_text_file(f) == "new\n");
+  BOOST_REQUIRE(::chmod(f.c_str(), 0444) == 0);
+  BOOST_TEST(refusal(f).find("is read-only (mode 0444): refusing to replace it") != std::string::npos, refusal(f));
   BOOST_TEST(read_text_file(f) == "new\n");
 }
 

@@ -181,6 +181,7 @@ void estimate_throw(CaptureAnalysis& a, const ChainInput& in, const CaptureOptio
   }
   a.accel_upper = a.clipped ? run_chain(in, o, Perturbation{Perturb::none, ClipFill::at_max, ClipFill::as_recorded, 0}, nullptr, nullptr) : a.nominal;
   std::mt19937_64 seeds(o.seed);
+  std::vector<double> member_bounds;  // clipped: each member's own accelerometer bound (m/s)
   for (int m = 0; m < o.members; ++m) {
     const Perturbation p{Perturb::random, a.clipped ? ClipFill::random_bump : ClipFill::as_recorded,
                          a.gyro_saturated_in_swing ? ClipFill::random_bump : ClipFill::as_recorded, seeds()};
@@ -191,6 +192,7 @@ void estimate_throw(CaptureAnalysis& a, const ChainInput& in, const CaptureOptio
       const ReleaseKinematics bound = run_chain(in, o, twin, nullptr, nullptr);
       if (!bound.finite()) continue;
       floored.speed_floor_m_s = bound.accel_speed_m_s;
+      member_bounds.push_back(bound.accel_speed_m_s);
     }
     const ReleaseKinematics r = run_chain(floored, o, p, nullptr, nullptr);
     if (r.finite()) a.ensemble.push_back(r);
@@ -218,6 +220,10 @@ void estimate_throw(CaptureAnalysis& a, const ChainInput& in, const CaptureOptio
       v.high = std::max({v.high, x, y});
     };
     widen(a.accel_speed_m_s, a.accel_lower.accel_speed_m_s, a.accel_upper.accel_speed_m_s);
+    // Each member's own bound (its calibration and noise perturbed, the clipped spans as recorded)
+    // is a lower bound too: a member's speed raised to it can lie below the nominal bound, and the
+    // accelerometer's interval must reach it (hard_sidearm_clipped: 8.51 m/s against 8.64).
+    for (const double b : member_bounds) widen(a.accel_speed_m_s, b, b);
     // The direction as well: the lever arm's velocity misses the pivot's own motion, which the
     // accelerometer sees (its clipped spans as recorded, at max_accel_g, or as each member fills
     // them), so the path and attack angles span the accelerometer's directions too (a synthetic

@@ -152,6 +152,51 @@ BOOST_AUTO_TEST_CASE(a_lone_changes_count_past_it_is_held) {
   BOOST_TEST(!c.passed);
 }
 
+BOOST_AUTO_TEST_CASE(near_a_threshold_only_its_own_counts_are_tolerated) {
+  // Stored: 1 -> 2 at 9.9 (within the 0.5 compare tolerance of the grid value 10, whose count is 2).
+  // The threshold moving past 10 makes 10's count 1, every member agreeing: tolerated. A count of 5
+  // there, every member agreeing, is no threshold's doing: a regression (it was tolerated as
+  // "within 0.5 of a stored threshold" until December 5). So is a nudged throw that fails now.
+  Pair moved({1, 2, 2, 3}, {kOne, kTwo, kTwo, kThree}, {1, 1, 2, 3}, {kOne, kOne, kTwo, kThree});
+  moved.stored.thresholds = {{9.8, 10.0, 1, 2}};
+  moved.now.thresholds = {{10.0, 10.25, 1, 2}};
+  BaselineComparison c = compare_with_baseline(moved.stored, moved.now);
+  BOOST_TEST(c.passed);
+  BOOST_TEST(mentions(c.tolerated, "stored 2, now 1"));
+  const std::vector<int> kFive(8, 5);
+  Pair jumped({1, 2, 2, 3}, {kOne, kTwo, kTwo, kThree}, {1, 5, 2, 3}, {kOne, kFive, kTwo, kThree});
+  jumped.stored.thresholds = {{9.8, 10.0, 1, 2}};
+  jumped.now.thresholds = {{9.8, 10.0, 1, 5}};
+  c = compare_with_baseline(jumped.stored, jumped.now);
+  BOOST_TEST(!c.passed);
+  BOOST_TEST(mentions(c.regressions, "count at spin_rev_s = 10 rev/s: stored 2, now 5"));
+  std::vector<int> two_failed = kTwo;
+  two_failed[1] = two_failed[6] = -1;
+  Pair failing({1, 2, 2, 3}, {kOne, kTwo, kTwo, kThree}, {1, 2, 2, 3}, {kOne, two_failed, kTwo, kThree});
+  failing.stored.thresholds = failing.now.thresholds = {{9.8, 10.0, 1, 2}};
+  c = compare_with_baseline(failing.stored, failing.now);
+  BOOST_TEST(mentions(c.regressions, "2 of its 8 nudged throws failed now, 0 stored"));
+}
+
+BOOST_AUTO_TEST_CASE(on_a_sensitive_value_failure_rates_that_differ_beyond_chance_are_a_regression) {
+  // The sensitive value 20 (stored members 1, 2, 1, 2, ...): its one sensitive value makes the
+  // family's level 95 %. Wilson intervals: 0 of 8 failed [0, 0.32], 6 of 8 [0.41, 0.93]: disjoint,
+  // a regression (tolerated as "sensitive" until December 5); 1 of 8 [0.02, 0.47] overlaps 0 of 8:
+  // tolerated.
+  std::vector<int> six_failed{1, -1, -1, -1, 2, -1, -1, -1};
+  Pair many({1, 1, 1, 3}, {kOne, kOne, kMixed, kThree}, {1, 1, 1, 3}, {kOne, kOne, six_failed, kThree});
+  BaselineComparison c = compare_with_baseline(many.stored, many.now);
+  BOOST_TEST(c.sensitive_points == 1);
+  BOOST_TEST(!c.passed);
+  BOOST_TEST(mentions(c.regressions, "6 of its 8 nudged throws failed now, 0 stored"));
+  std::vector<int> one_failed = kMixed2;
+  one_failed[3] = -1;
+  Pair one({1, 1, 1, 3}, {kOne, kOne, kMixed, kThree}, {1, 1, 1, 3}, {kOne, kOne, one_failed, kThree});
+  c = compare_with_baseline(one.stored, one.now);
+  BOOST_TEST(c.passed);
+  BOOST_TEST(mentions(c.tolerated, "1 of its 8 nudged throws failed now, 0 stored"));
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace

@@ -170,8 +170,10 @@ std::vector<double> ThrowRecord::row(std::uint64_t throw_index, const std::vecto
       r.push_back(failed ? std::numeric_limits<double>::quiet_NaN() : f.value(*rt, *ref, c));
   }
   r.push_back(cost.setup_wall_s);
-  if (rt) r.insert(r.end(), {rt->stats.cpu_s, cost.realtime_cpu_s});
-  if (ref) r.insert(r.end(), {ref->stats.cpu_s, cost.reference_cpu_s});
+  // cost_<solver>_wall_s: the solve's own wall clock (SolverStats::wall_s); _cpu_s: the sweep's
+  // thread CPU around it. Until December 5 the wall column held the solve's CPU time.
+  if (rt) r.insert(r.end(), {rt->stats.wall_s, cost.realtime_cpu_s});
+  if (ref) r.insert(r.end(), {ref->stats.wall_s, cost.reference_cpu_s});
   r.insert(r.end(), {double(cost.rank), double(cost.thread), cost.start_unix_s});
   return r;
 }

@@ -20,7 +20,8 @@ ThrowResult result(int bounces, double distance_m, std::vector<std::pair<double,
   r.outcome = Outcome::sank;
   r.end_time_s = 1.5;
   r.stats.steps = 1234;
-  r.stats.cpu_s = 0.004;
+  r.stats.cpu_s = 0.003;
+  r.stats.wall_s = 0.004;
   for (const auto& [start, end] : contacts) {
     ContactRecord c;
     c.start_s = start;
@@ -126,7 +127,7 @@ BOOST_AUTO_TEST_CASE(only_cost_columns_depend_on_where_a_throw_ran) {
   // Oracle: the same results with two different sites and costs differ only in cost_ columns.
   const ThrowRecord rec({"a"}, SweepSolvers::realtime);
   ThrowResult r1 = result(1, 2.0, {{0.1, 0.2}}), r2 = r1;
-  r2.stats.cpu_s = 0.5;  // the solver's own wall clock is a cost
+  r2.stats.wall_s = 0.5;  // the solver's own wall clock is a cost
   SweepThrowCost c1, c2;
   c2.rank = 5;
   c2.thread = 3;
@@ -137,6 +138,14 @@ BOOST_AUTO_TEST_CASE(only_cost_columns_depend_on_where_a_throw_ran) {
   const auto a = rec.row(0, {1.0}, &r1, nullptr, c1, 1e-3, notes), b = rec.row(0, {1.0}, &r2, nullptr, c2, 1e-3, notes);
   for (std::size_t c = 0; c < rec.width(); ++c)
     BOOST_TEST((a[c] != b[c]) == rec.is_cost_column(c), rec.columns()[c]);
+  // The wall column holds the solve's wall clock, not its CPU time (which a sweep of more threads
+  // than cores leaves far below it).
+  ThrowResult r3 = r1;
+  r3.stats.wall_s = 0.75;
+  r3.stats.cpu_s = 0.25;
+  const auto w = rec.row(0, {1.0}, &r3, nullptr, c1, 1e-3, notes);
+  BOOST_TEST(at(rec, w, "cost_realtime_wall_s") == 0.75);
+  BOOST_TEST(at(rec, w, "cost_realtime_cpu_s") == c1.realtime_cpu_s);
   const auto n = rec.not_run_row(9, {1.0}, c2);
   BOOST_TEST(at(rec, n, "realtime_outcome") == kOutcomeNotRun);
   BOOST_TEST(std::isnan(at(rec, n, "realtime_bounces")));
