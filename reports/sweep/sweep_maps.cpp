@@ -266,26 +266,84 @@ Figure histogram(const std::string& name, const std::string& title, const std::s
   return finish(f, s, 900, 520);
 }
 
-Figure count_curve(const std::string& name, const std::string& title, const Axis& x,
-                   const std::vector<std::pair<std::string, GridMap>>& series) {
+// One solver's bounce counts along a one-axis grid: NaN where the run has no count, failed marking
+// the runs that failed (the others without a count were not run).
+struct CountSeries {
+  std::string label;
+  std::vector<double> x, count;
+  std::vector<char> failed;
+};
+
+// The convention of reports/README.md for bounce counts: each count held to halfway to its
+// neighbours (a step outline: a change is drawn at the middle of its bracket, and the last value
+// shows over the last half spacing; halfway in ln x on a log axis), the outline broken at a run
+// without a count, never bridged; the runs as dots; a failed run a cross on a row of its own at −1.
+// Until December 5 the counts were joined by sloping lines and a failed run left a silent gap.
+Figure count_curve(const std::string& name, const std::string& title, const Axis& x, const std::vector<CountSeries>& series) {
   Figure f;
   f.name = name;
   f.title = title;
+  const std::string xu = column_unit(x.key);
+  auto halfway = [&](double a, double b) { return x.log ? std::sqrt(a * b) : 0.5 * (a + b); };
   std::ostringstream s;
-  s << "set title " << quoted(title) << " noenhanced\nset xlabel " << quoted(x.key)
-    << " noenhanced\nset ylabel 'bounces'\nset grid\nset yrange [-0.5:*]\nset key below\n";
+  s << "set title " << quoted(title) << " noenhanced\nset xlabel " << quoted(x.key + (x.log ? " (log scale)" : ""))
+    << " noenhanced\nset ylabel 'bounces (−1: the solve failed)'\nset grid\nset yrange [-1.5:*]\nset key below\n";
   if (x.log) s << "set logscale x\n";
+  double most = 0;  // whole counts: a tic per count where they are few
+  for (const CountSeries& c : series)
+    for (double v : c.count)
+      if (std::isfinite(v)) most = std::max(most, v);
+  if (most <= 20) s << "set ytics 1\n";
   s << "plot ";
-  for (std::size_t k = 0; k < series.size(); ++k) {
-    Table t;
-    t.columns = {"x", "bounces"};
-    t.units = {column_unit(x.key), "1"};
-    for (std::size_t i = 0; i < series[k].second.x_values.size(); ++i)
-      t.add_row({series[k].second.x_values[i], series[k].second.value[i]});
+  const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c"};
+  // The later series (the reference) drawn first and wider, beneath: where the two agree a border of
+  // its colour shows around the real-time line (the stones report's convention).
+  bool first = true;
+  for (std::size_t k = series.size(); k-- > 0;) {
+    const bool wide = series.size() > 1 && k + 1 == series.size();
+    CountSeries c = series[k];  // in the order of x (a table's rows need not be)
+    std::vector<std::size_t> order(c.x.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return series[k].x[a] < series[k].x[b]; });
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      c.x[i] = series[k].x[order[i]];
+      c.count[i] = series[k].count[order[i]];
+      c.failed[i] = series[k].failed[order[i]];
+    }
+    const std::string colour = std::string(" lc rgb '") + colours[k % 3] + "'";
+    Table dots, outline, failed;
+    dots.columns = outline.columns = {"x", "bounces"};
+    failed.columns = {"x", "drawn_at"};
+    dots.units = outline.units = failed.units = {xu, "1"};
+    const std::size_t n = c.x.size();
+    auto has = [&](std::size_t i) { return i < n && std::isfinite(c.count[i]); };
+    for (std::size_t i = 0; i < n; ++i) {
+      if (has(i)) {
+        dots.add_row({c.x[i], c.count[i]});
+        const double left = i > 0 && has(i - 1) ? halfway(c.x[i - 1], c.x[i]) : c.x[i];
+        const double right = has(i + 1) ? halfway(c.x[i], c.x[i + 1]) : c.x[i];
+        outline.add_row({left, c.count[i]});
+        outline.add_row({right, c.count[i]});
+        if (!has(i + 1)) outline.add_row({kNaN, kNaN});  // a break (a blank line in the .dat)
+      } else if (c.failed[i]) {
+        failed.add_row({c.x[i], -1});
+      }
+    }
     const std::string tn = name + "_" + std::to_string(k);
-    f.tables.emplace_back(tn, t);
-    s << (k ? ", \\\n     " : "") << "'" << tn << ".dat' using 1:2 with linespoints pt 7 ps 0.6 title "
-      << quoted(series[k].first);
+    const bool any_failed = failed.rows() > 0;
+    for (Table* t : {&dots, &outline})
+      if (t->rows() == 0) t->add_row({kNaN, kNaN});
+    f.tables.emplace_back(tn, dots);
+    f.tables.emplace_back(tn + "_outline", outline);
+    s << (first ? "" : ", \\\n     ") << "'" << tn << "_outline.dat' using 1:2 with lines lw " << (wide ? "5" : "1.5")
+      << colour << " title "
+      << quoted(c.label) << ", \\\n     '" << tn << ".dat' using 1:2 with points pt 7 ps 0.6" << colour << " notitle";
+    if (any_failed) {
+      f.tables.emplace_back(tn + "_failed", failed);
+      s << ", \\\n     '" << tn << "_failed.dat' using 1:2 with points pt 2 ps " << (wide ? "2.6 lw 3" : "1.4 lw 2")
+        << colour << " title " << quoted(c.label + ": solve failed");
+    }
+    first = false;
   }
   return finish(f, s, 900, 520);
 }
@@ -381,12 +439,11 @@ std::vector<Figure> sweep_map_figures(const SweepData& d, const SweepMapOptions&
   const std::string pre = o.prefix + "_";
 
   if (n == 1) {
-    std::vector<std::pair<std::string, GridMap>> series;
+    std::vector<CountSeries> series;
     for (const auto& [s, c] : counts) {
-      GridMap m;
-      m.x_values = d.design.kind == DesignKind::grid ? d.design.grid_values(0) : d.throws.column(axes[0].key);
-      m.value = c;
-      series.emplace_back(word(s), m);
+      CountSeries cs{word(s), d.throws.column(axes[0].key), c, {}};
+      for (const double outcome : d.throws.column(s + "_outcome")) cs.failed.push_back(outcome == kOutcomeFailed ? 1 : 0);
+      series.push_back(std::move(cs));
     }
     if (grid) {
       figs.push_back(count_curve(pre + "bounces", "Bounce count against " + axes[0].key, axis(0), series));

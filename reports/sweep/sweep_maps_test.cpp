@@ -4,6 +4,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <limits>
 
 #include "reports/sweep/sweep_maps.hpp"
 #include "tools/io/input_error.hpp"
@@ -13,7 +14,8 @@ using namespace stoneskip;
 
 namespace {
 
-constexpr double kRoundoff = 1e-14;  // a few ulps of the values involved
+constexpr double kRoundoff = 1e-14;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();  // a few ulps of the values involved
 
 SweepData grid_data(std::vector<long long> counts, SweepSolvers solvers, std::vector<std::string> keys = {}) {
   SweepData d;
@@ -139,7 +141,8 @@ BOOST_AUTO_TEST_CASE(a_grid_with_one_value_on_an_axis_is_drawn_as_boxes_and_its_
   // instead, each coloured by its value; the cells' units come from the axes' keys.
   SweepData d = grid_data({3, 1}, SweepSolvers::realtime, {"throw.speed_m_s", "throw.spin_rev_s"});
   fill(d, [](const std::vector<double>& p, int) { return p[0]; });
-  const Figure& f = figure(sweep_map_figures(d), "sweep_bounces_realtime_0_1");
+  const std::vector<Figure> figs = sweep_map_figures(d);
+  const Figure& f = figure(figs, "sweep_bounces_realtime_0_1");
   BOOST_TEST(f.script.find("with image") == std::string::npos, f.script);
   BOOST_TEST(f.script.find("with boxxyerror fs solid 1.0 noborder fc palette") != std::string::npos, f.script);
   const Table& cells = table(f, "sweep_bounces_realtime_0_1_cells");
@@ -150,6 +153,35 @@ BOOST_AUTO_TEST_CASE(a_grid_with_one_value_on_an_axis_is_drawn_as_boxes_and_its_
   SweepData full = grid_data({3, 2}, SweepSolvers::realtime);
   fill(full, [](const std::vector<double>& p, int) { return p[0]; });
   BOOST_TEST(figure(sweep_map_figures(full), "sweep_bounces_realtime_0_1").script.find("with image") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(a_one_axis_count_curve_holds_each_count_to_halfway_and_marks_a_failed_run) {
+  // Oracle: hand-drawn outline (reports/README.md's convention). Grid 1..5, counts 1, 1, 2, (failed),
+  // 3: each count held to halfway to its neighbours with a count, the outline broken at the failed
+  // run (a NaN row: a blank line), never bridged; the failed run a cross at −1.
+  SweepData d = grid_data({5}, SweepSolvers::realtime, {"throw.spin_rev_s"});
+  fill(d, [](const std::vector<double>& p, int) { return p[0] < 2.5 ? 1.0 : p[0] < 4.5 ? 2.0 : 3.0; });
+  const std::size_t w = d.throws.columns.size(), failed_row = 3;
+  for (std::size_t c = 0; c < w; ++c)
+    if (d.throws.columns[c] == "realtime_outcome") d.throws.values[failed_row * w + c] = kOutcomeFailed;
+  const std::vector<Figure> figs = sweep_map_figures(d);
+  const Figure& f = figure(figs, "sweep_bounces");
+  const Table& outline = table(f, "sweep_bounces_0_outline");
+  const std::vector<std::vector<double>> expected{{1, 1}, {1.5, 1}, {1.5, 1}, {2.5, 1}, {2.5, 2}, {3, 2},
+                                                  {kNaN, kNaN}, {5, 3}, {5, 3}, {kNaN, kNaN}};
+  BOOST_REQUIRE_EQUAL(outline.rows(), expected.size());
+  for (std::size_t r = 0; r < expected.size(); ++r)
+    for (std::size_t c = 0; c < 2; ++c) {
+      const double got = outline.values[r * 2 + c], want = expected[r][c];
+      BOOST_TEST((std::isnan(want) ? std::isnan(got) : got == want), "row " << r << " column " << c << ": " << got);
+    }
+  const Table& failed = table(f, "sweep_bounces_0_failed");
+  BOOST_REQUIRE_EQUAL(failed.rows(), 1u);
+  BOOST_TEST(failed.values[0] == 4);
+  BOOST_TEST(failed.values[1] == -1);
+  BOOST_TEST(f.script.find("linespoints") == std::string::npos, f.script);
+  const std::vector<std::string> units{"rev/s", "1"};
+  BOOST_TEST(outline.units == units, boost::test_tools::per_element());
 }
 
 BOOST_AUTO_TEST_CASE(a_throw_without_a_result_is_a_grey_cell_not_a_hole_in_the_image) {

@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -44,6 +45,12 @@ namespace stoneskip {
 namespace {
 
 constexpr int kMaxEventsPerMs = 1000000;  // bounds the ring of event times below
+// Sliding (filippov_sliding.hpp): the probe looks for a sliding mode where kSlideProbeSteps steps
+// advance less than kSlideProbeSpan_s (the collapse guard waits for max_steps_per_ms, 20 000 by
+// default, ~0.4 s of CPU at a lens stone's sliding mode); a solve slides at most kMaxSlides times.
+constexpr long kSlideProbeSteps = 500;
+constexpr double kSlideProbeSpan_s = 1e-6;
+constexpr std::size_t kMaxSlides = 100;
 // |q| drifts between restarts by the accumulated integration error; above this (an attitude error
 // of ~1e-6 rad) the drift is named in outcome_detail.
 constexpr double kReportedQuaternionDrift = 1e-6;
@@ -82,7 +89,13 @@ struct Problem {
   const Environment& env;
   StoneEvents& events;
   FilippovSliding& sliding;
-  int sliding_face = -1;   // ≥ 0: sliding along this face's loaded-region switch (one more root: its exit)
+  // One face's loaded-region switch treated apart (filippov_sliding.hpp), with one more root
+  // function: sliding along it (the root: its exit), or held on the side a sliding left to (the
+  // root: g crossing back).
+  enum class FaceRule { none, sliding, held };
+  FaceRule rule = FaceRule::none;
+  int face = -1;
+  int held_side = 0;
   std::string nan_detail;  // the first non-finite value met in a callback
 };
 
@@ -103,8 +116,10 @@ int rhs_callback(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
       return 1;  // recoverable: CVODE retries with a smaller step, and gives up after a few
     }
   }
-  if (p.sliding_face >= 0)
-    p.sliding.field(p.sliding_face, yy, dy);
+  if (p.rule == Problem::FaceRule::sliding)
+    p.sliding.field(p.face, yy, dy);
+  else if (p.rule == Problem::FaceRule::held)
+    p.sliding.held_rhs(p.face, p.held_side, yy, dy);
   else
     rigid_body_rhs(p.stone, p.env, yy, dy);
   for (int k = 0; k < kStateSize; ++k) {
@@ -119,7 +134,9 @@ int rhs_callback(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
 int root_callback(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
   auto& p = *static_cast<Problem*>(user);
   if (p.events.evaluate(N_VGetArrayPointer(y), g)) {
-    if (p.sliding_face >= 0) g[p.events.count()] = p.sliding.exit_value(p.sliding_face, N_VGetArrayPointer(y));
+    const double* yy = N_VGetArrayPointer(y);
+    if (p.rule == Problem::FaceRule::sliding) g[p.events.count()] = p.sliding.exit_value(p.face, yy);
+    if (p.rule == Problem::FaceRule::held) g[p.events.count()] = p.sliding.held_value(p.face, p.held_side, yy);
     return 0;
   }
   note_nan(p, "state or a root function", t);
@@ -160,7 +177,7 @@ class ReferenceSolve {
  public:
   ReferenceSolve(const Stone& stone, const Environment& env, const ReferenceOptions& o, ThrowResult& r)
       : stone_(stone), env_(env), o_(o), r_(r), events_(stone, env, o.restart == RestartStrategy::every_event),
-        sliding_(stone, env), problem_{stone, env, events_, sliding_, -1, {}}, found_(events_.count() + 1),
+        sliding_(stone, env), problem_{stone, env, events_, sliding_, Problem::FaceRule::none, -1, 0, {}}, found_(events_.count() + 1),
         event_times_(std::clamp(o.max_events_per_ms, 1, kMaxEventsPerMs), -1e300) {}
 
   void run(const RigidState& initial);
@@ -173,8 +190,9 @@ class ReferenceSolve {
   void restart(double t);
   void continue_after_event();
   void set_roots();          // the root functions of the mode (the events', and a sliding's exit)
-  bool try_sliding();        // where the step collapsed: slide along an attracting switch, if one is there
-  void end_sliding(double t);
+  bool try_sliding();        // where the steps collapse: slide along an attracting switch, if one is there
+  void start_sliding(const SlidingChoice& c, double t);
+  void face_root_found(double t, const RigidState& s);  // a sliding's exit, or a hold's end
   void count_steps_to_event();
   void add_segment_stats();
   RigidState state() const;  // the current CVODE vector as a state, quaternion normalised
@@ -204,6 +222,8 @@ class ReferenceSolve {
   };
   std::vector<Slide> slides_;
   std::string no_slide_;
+  long probe_steps_ = 0;             // the sliding probe's window: total steps and t where it began
+  double probe_t_ = 0;
   std::vector<double> event_times_;  // ring of the last max_events_per_ms event times
   long event_count_ = 0;
   long window_steps_ = 0;            // step-collapse guard: total steps and t where the window began
@@ -331,26 +351,33 @@ void ReferenceSolve::restart(double t) {
   check(CVodeSetStopTime(cv_.mem, o_.t_max_s), "CVodeSetStopTime");
 }
 
-// The events' root functions, and while sliding one more: the sliding's exit value, watched
-// falling through zero. CVodeRootInit (which resets the directions) only where the count changes.
+// The events' root functions, and with a face treated apart one more (a sliding's exit value, a
+// hold's value), watched falling through zero. CVodeRootInit (which resets the directions) only
+// where the count changes.
 void ReferenceSolve::set_roots() {
-  const int n = events_.count() + (problem_.sliding_face >= 0 ? 1 : 0);
+  const bool extra = problem_.rule != Problem::FaceRule::none;
+  const int n = events_.count() + (extra ? 1 : 0);
   if (n != roots_now_) {
     check(CVodeRootInit(cv_.mem, n, root_callback), "CVodeRootInit");
     check(CVodeSetNoInactiveRootWarn(cv_.mem), "CVodeSetNoInactiveRootWarn");
     roots_now_ = n;
   }
   root_directions_.assign(events_.directions(), events_.directions() + events_.count());
-  if (problem_.sliding_face >= 0) root_directions_.push_back(-1);
+  if (extra) root_directions_.push_back(-1);
   check(CVodeSetRootDirection(cv_.mem, root_directions_.data()), "CVodeSetRootDirection");
 }
 
-// Where the step collapsed (or CVODE failed to converge), a sliding mode on one face's loaded-region
-// switch is the one cause this solver can treat (filippov_sliding.hpp): when the switch nearest
-// zero attracts from both sides, the solve restarts from the last good state on Filippov's sliding
-// field, and leaves it at the located exit. Once sliding, a further collapse fails the solve.
+// Where the steps collapse (the sliding probe, the collapse guard, or CVODE failing its error test
+// or convergence), a sliding mode on one face's loaded-region switch is the one cause this solver
+// can treat (filippov_sliding.hpp): when exactly one switch is at zero and it attracts from both
+// sides, the solve restarts from the last good state on Filippov's sliding field. Once sliding, a
+// further collapse fails the solve; so does sliding more than kMaxSlides times.
 bool ReferenceSolve::try_sliding() {
-  if (problem_.sliding_face >= 0) return false;
+  if (problem_.rule == Problem::FaceRule::sliding) return false;
+  if (slides_.size() >= kMaxSlides) {
+    no_slide_ = "it slid " + std::to_string(slides_.size()) + " times already (kMaxSlides)";
+    return false;
+  }
   const SlidingChoice c = sliding_.attracting_face(last_good_);
   if (c.face < 0) {
     no_slide_ = c.why;
@@ -359,18 +386,35 @@ bool ReferenceSolve::try_sliding() {
   const StateVector y = to_vector(last_good_);
   std::copy(y.begin(), y.end(), N_VGetArrayPointer(cv_.y));
   t_ = last_good_t_;
-  problem_.sliding_face = c.face;
-  slides_.push_back({c.face, t_, t_});
+  start_sliding(c, t_);
   restart(t_);
-  window_steps_ = r_.stats.steps;
-  window_t_ = t_;
+  window_steps_ = probe_steps_ = r_.stats.steps;
+  window_t_ = probe_t_ = t_;
   return true;
 }
 
-void ReferenceSolve::end_sliding(double t) {
-  if (problem_.sliding_face < 0) return;
-  slides_.back().to_s = t;
-  problem_.sliding_face = -1;
+void ReferenceSolve::start_sliding(const SlidingChoice& c, double t) {
+  problem_.rule = Problem::FaceRule::sliding;
+  problem_.face = c.face;
+  slides_.push_back({c.face, t, t});
+}
+
+// The face's own root: a sliding's exit (one field turned tangent: the face is held on the side the
+// state leaves to), or a hold's end (g crossed zero against it, or the face's polygon went: the
+// loads decide from the state again, unless the switch now attracts from both sides, where the
+// state slides at once instead of waiting for its steps to collapse). The caller restarts.
+void ReferenceSolve::face_root_found(double t, const RigidState& s) {
+  const StateVector y = to_vector(s);
+  if (problem_.rule == Problem::FaceRule::sliding) {
+    slides_.back().to_s = t;
+    problem_.rule = Problem::FaceRule::held;
+    problem_.held_side = sliding_.leaving_side(problem_.face, y.data());
+    return;
+  }
+  problem_.rule = Problem::FaceRule::none;
+  if (slides_.size() >= kMaxSlides) return;
+  const SlidingChoice c = sliding_.attracting_face(s);
+  if (c.face >= 0) start_sliding(c, t);
 }
 
 // No restart: CVODE keeps its history; only the directions to watch change with the mode. CVODE
@@ -431,9 +475,9 @@ bool ReferenceSolve::handle_root(double t) {
   r_.event_times_s.push_back(t);
 
   check(CVodeGetRootInfo(cv_.mem, found_.data()), "CVodeGetRootInfo");
-  // The sliding's exit: one field has turned tangent to the switch; the loads decide again from the
-  // state after a restart (the field is continuous there, α being 0 or 1).
-  const bool slide_ends = problem_.sliding_face >= 0 && found_[static_cast<std::size_t>(events_.count())] != 0;
+  // The face's own root (a sliding's exit, a hold's end): the rule changes, after a restart.
+  const bool face_root =
+      problem_.rule != Problem::FaceRule::none && found_[static_cast<std::size_t>(events_.count())] != 0;
   // The returned vector is CVODE's output copy: renormalising it changes the integration only
   // where a restart takes it as the new initial value.
   renormalise();
@@ -462,8 +506,8 @@ bool ReferenceSolve::handle_root(double t) {
   // long enough to hold a whole submersion whose end CVODE's error test cannot tell from flight
   // (in the paper convention a fully submerged stone's opposite faces cancel).
   const bool contact_starts = c.submerged_before == 0 && c.submerged_after > 0;
-  if (slide_ends) end_sliding(t);
-  const bool restart_here = slide_ends || o_.restart == RestartStrategy::every_event || o_.restart == RestartStrategy::every_crossing ||
+  if (face_root) face_root_found(t, s);
+  const bool restart_here = face_root || o_.restart == RestartStrategy::every_event || o_.restart == RestartStrategy::every_crossing ||
                             (o_.restart == RestartStrategy::at_jumps && (c.force_jumps() || contact_starts));
   if (restart_here)
     restart(t);
@@ -562,8 +606,8 @@ void ReferenceSolve::integrate() {
         m << "the step size collapsed: " << total - window_steps_ << " steps from t = " << window_t_ << " s to " << t_
           << " s, less than 1 ms (ReferenceOptions::max_steps_per_ms): the right-hand side is probably singular "
              "or discontinuous there, where no event is located (a sliding mode, say)";
-        if (problem_.sliding_face >= 0)
-          m << "; it collapsed while sliding along face " << problem_.sliding_face << "'s loaded-region switch (since t = "
+        if (problem_.rule == Problem::FaceRule::sliding)
+          m << "; it collapsed while sliding along face " << problem_.face << "'s loaded-region switch (since t = "
             << slides_.back().from_s << " s)";
         else if (!no_slide_.empty())
           m << "; no sliding mode was found to treat: " << no_slide_;
@@ -573,8 +617,19 @@ void ReferenceSolve::integrate() {
       window_steps_ = total;
       window_t_ = t_;
     }
-    check(CVodeSetMaxNumSteps(cv_.mem, std::min(left, o_.max_steps_per_ms - (total - window_steps_))),
-          "CVodeSetMaxNumSteps");
+    // Sliding probe: kSlideProbeSteps steps within kSlideProbeSpan_s are looked at for a sliding
+    // mode long before the guard above fires (only where one can be treated; CVODE returns every
+    // kSlideProbeSteps steps for it, which does not change its steps).
+    const bool probe = sliding_.available();
+    if (probe && total - probe_steps_ >= kSlideProbeSteps) {
+      const bool stalled = t_ - probe_t_ < kSlideProbeSpan_s;
+      probe_steps_ = total;
+      probe_t_ = t_;
+      if (stalled && try_sliding()) continue;
+    }
+    long steps_now = std::min(left, o_.max_steps_per_ms - (total - window_steps_));
+    if (probe) steps_now = std::min(steps_now, kSlideProbeSteps - (total - probe_steps_));
+    check(CVodeSetMaxNumSteps(cv_.mem, steps_now), "CVodeSetMaxNumSteps");
     double t_ret = t_;
     const int flag = CVode(cv_.mem, o_.t_max_s, cv_.y, &t_ret, sampled ? CV_ONE_STEP : CV_NORMAL);
     if (flag == CV_ILL_INPUT && last_error_.find("cvRcheck2") != std::string::npos && last_good_t_ != rcheck_restart_t_) {
@@ -638,7 +693,10 @@ void ReferenceSolve::integrate() {
     }
     // Repeated error-test or convergence failures are how a sliding mode can also show.
     if ((flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE) && try_sliding()) continue;
-    if (!no_slide_.empty() && (flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE))
+    if (problem_.rule == Problem::FaceRule::sliding)
+      m << "; it failed while sliding along face " << problem_.face << "'s loaded-region switch (since t = "
+        << slides_.back().from_s << " s)";
+    else if (!no_slide_.empty() && (flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE))
       m << "; no sliding mode was found to treat: " << no_slide_;
     fail(m.str());
   }
@@ -663,7 +721,7 @@ void ReferenceSolve::finish(const RigidState& s0) {
     s_end = last_good_;
     t_ = last_good_t_;
   }
-  if (problem_.sliding_face >= 0) slides_.back().to_s = t_;  // still sliding at the end
+  if (problem_.rule == Problem::FaceRule::sliding) slides_.back().to_s = t_;  // still sliding at the end
   const bool cut = r_.outcome == Outcome::failed && log_.in_contact();
   if (log_.in_contact()) log_.end(t_, s_end, energy(s_end), false);
   if (o_.record_trajectory && (r_.trajectory.empty() || r_.trajectory.back().t_s < t_)) sample(t_, s_end);
@@ -677,10 +735,13 @@ void ReferenceSolve::finish(const RigidState& s0) {
   if (!slides_.empty()) {
     double total = 0;
     for (const Slide& sl : slides_) total += sl.to_s - sl.from_s;
-    extra << "; slid along a face's loaded-region switch (Filippov; a step collapsed there) " << slides_.size()
-          << " time(s), " << total * 1e3 << " ms in all: face " << slides_.front().face << " from t = " << slides_.front().from_s
-          << " s to " << slides_.front().to_s << " s";
-    if (slides_.size() > 1) extra << ", …";
+    extra << "; slid along a face's loaded-region switch (Filippov; its steps collapsed there) " << slides_.size()
+          << " time(s), " << std::setprecision(4) << total * 1e3 << " ms in all:" << std::setprecision(9);
+    for (std::size_t k = 0; k < slides_.size() && k < 3; ++k)
+      extra << (k ? "," : "") << " face " << slides_[k].face << " from t = " << slides_[k].from_s << " s to "
+            << slides_[k].to_s << " s";
+    if (slides_.size() > 3) extra << ", …";
+    extra << std::setprecision(6);
   }
   if (max_q_drift_ > kReportedQuaternionDrift) extra << "; quaternion norm drifted by up to " << max_q_drift_ << " between restarts";
   r_.outcome_detail += extra.str();

@@ -21,12 +21,15 @@ FilippovSliding::FilippovSliding(const Stone& stone, const Environment& env)
 
 // The face's switch value at y: LoadSwitches' loaded_face function, which depends on the state
 // alone (not on a recorded mode), read after recording the mode of y.
+std::size_t FilippovSliding::index_of(int face) const {
+  return 2 * stone_.body_mesh.vertices.size() + static_cast<std::size_t>(face);  // load_switches.hpp's order
+}
+
 double FilippovSliding::switch_value(int face, const double* y) {
   RigidState s = from_vector(y);
   s.orientation.normalize();
   switches_.reset(s, g_);
-  const int nv = static_cast<int>(stone_.body_mesh.vertices.size());
-  const std::size_t k = static_cast<std::size_t>(2 * nv + face);
+  const std::size_t k = index_of(face);
   return k < g_.size() ? g_[k] : std::numeric_limits<double>::quiet_NaN();
 }
 
@@ -57,18 +60,35 @@ SlidingChoice FilippovSliding::attracting_face(const RigidState& s) {
   sn.orientation.normalize();
   const StateVector y = to_vector(sn);
   switches_.reset(sn, g_);
-  const int nv = static_cast<int>(stone_.body_mesh.vertices.size());
   const int nf = static_cast<int>(stone_.body_mesh.triangles.size());
   int best = -1;
+  std::vector<int> at_zero;
   for (int i = 0; i < nf; ++i) {
-    const double gi = g_[static_cast<std::size_t>(2 * nv + i)];
-    if (std::isfinite(gi) && (best < 0 || std::abs(gi) < std::abs(g_[static_cast<std::size_t>(2 * nv + best)]))) best = i;
+    const double gi = g_[index_of(i)];
+    if (!std::isfinite(gi)) continue;
+    if (std::abs(gi) <= kAtSwitch_m_s) at_zero.push_back(i);
+    if (best < 0 || std::abs(gi) < std::abs(g_[index_of(best)])) best = i;
   }
+  std::ostringstream m;
   if (best < 0) {
     c.why = "no face is wetted there";
     return c;
   }
-  c.g = g_[static_cast<std::size_t>(2 * nv + best)];
+  c.g = g_[index_of(best)];
+  if (at_zero.empty()) {
+    m << "no loaded-region switch is at zero there (the nearest, face " << best << "'s, is at g = " << c.g
+      << " m/s, beyond " << kAtSwitch_m_s << ")";
+    c.why = m.str();
+    return c;
+  }
+  if (at_zero.size() > 1) {
+    m << "the loaded-region switches of faces";
+    for (std::size_t k = 0; k < at_zero.size(); ++k) m << (k ? (k + 1 == at_zero.size() ? " and " : ", ") : " ") << at_zero[k];
+    m << (at_zero.size() == 2 ? " are both" : " are all") << " at zero there (a mirror-symmetric throw's twin faces, say): sliding on two switches at once "
+         "has no unique field and is not treated";
+    c.why = m.str();
+    return c;
+  }
   Vector f0{}, f1{};
   rhs_with_face(best, 0, y.data(), f0.data());
   rhs_with_face(best, 1, y.data(), f1.data());
@@ -78,8 +98,7 @@ SlidingChoice FilippovSliding::attracting_face(const RigidState& s) {
     c.face = best;
     return c;
   }
-  std::ostringstream m;
-  m << "the switch nearest zero there, face " << best << "'s loaded-region switch (g = " << c.g
+  m << "the switch at zero there, face " << best << "'s loaded-region switch (g = " << c.g
     << " m/s), does not attract from both sides (its rate is " << c.a0 << " m/s² with the face out of the loaded region, "
     << c.a1 << " m/s² with it in)";
   c.why = m.str();
@@ -110,6 +129,24 @@ SlidingField FilippovSliding::field(int face, const double* y, double* dydt) {
 double FilippovSliding::exit_value(int face, const double* y) {
   Vector f{};
   return field(face, y, f.data()).exit;
+}
+
+int FilippovSliding::leaving_side(int face, const double* y) {
+  Vector f0{}, f1{};
+  rhs_with_face(face, 0, y, f0.data());
+  rhs_with_face(face, 1, y, f1.data());
+  // The field that turned tangent is the one whose rate toward the switch reached zero first.
+  return rate_along(face, y, f0.data()) <= -rate_along(face, y, f1.data()) ? 0 : 1;
+}
+
+void FilippovSliding::held_rhs(int face, int side, const double* y, double* dydt) {
+  rhs_with_face(face, static_cast<char>(side), y, dydt);
+}
+
+double FilippovSliding::held_value(int face, int side, const double* y) {
+  const double g = switch_value(face, y);
+  if (!std::isfinite(g)) return -1;
+  return side == 0 ? -g : g;
 }
 
 }  // namespace stoneskip

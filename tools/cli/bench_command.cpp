@@ -22,7 +22,7 @@
 // match reaches the sweep's target.
 //   stoneskip bench
 //   stoneskip bench --json
-//   stoneskip bench --quick --json      # a smoke run (seconds): the same keys, rougher numbers
+//   stoneskip bench --quick --json      # a smoke run (seconds): rougher numbers, the large grid at 1024² (keys _1024)
 //   STONESKIP_ISA=avx2 stoneskip bench --every-isa
 //   stoneskip bench --cpu-clock         # the stencil on thread CPU time (a loaded machine)
 #include <cmath>
@@ -159,9 +159,13 @@ std::vector<double> range(double lo, double hi, double step) {
   return v;
 }
 
+// A whole number below 1e15 in full (a target of 3000 read "3e+03"), else `significant` digits.
 std::string g(double v, int significant = 3) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", significant, v);
+  if (v == std::floor(v) && std::abs(v) < 1e15)
+    std::snprintf(buf, sizeof buf, "%.0f", v);
+  else
+    std::snprintf(buf, sizeof buf, "%.*g", significant, v);
   return buf;
 }
 
@@ -370,8 +374,8 @@ void bench(const BenchArgs& a) {
     std::printf("%-58s %-26s %s\n", what.c_str(), value.c_str(),
                 target.empty() ? "—" : (target + (met ? "  met" : "  MISSED")).c_str());
   };
-  std::printf("stoneskip bench%s — %s, %d cores, stencil path %s; load average %s before, %s after; wall clock unless marked CPU%s\n",
-              a.quick ? " (quick: a smoke run)" : "", h.cpu_model.c_str(), h.cores, h.stencil_large.kernel_isa.empty() ? "– (not measured)" : h.stencil_large.kernel_isa.c_str(),
+  std::printf("stoneskip bench%s — %s, %d core%s, stencil path %s; load average %s before, %s after; wall clock unless marked CPU%s\n",
+              a.quick ? " (quick: a smoke run)" : "", h.cpu_model.c_str(), h.cores, h.cores == 1 ? "" : "s", h.stencil_large.kernel_isa.empty() ? "– (not measured)" : h.stencil_large.kernel_isa.c_str(),
               g(h.load_before).c_str(), g(h.load_after).c_str(), a.cpu_clock ? " (stencil: thread CPU)" : "");
   // (The stencil path is empty with --sweep-only: no stencil ran.)
   std::printf("scene case %s; sweep case %s; code %s\n", scene_case.file.c_str(), sweep_case.file.c_str(), kGitDescribe);

@@ -36,15 +36,34 @@ double load_average() {
   return getloadavg(l, 1) == 1 ? l[0] : -1;
 }
 
+// The first processor's "model name", with its "cpu family", "model" and "stepping" where given: a
+// virtual machine may say only "AMD EPYC", which the numbers tell apart (family 25: Zen 3/4, 26: Zen 5).
 std::string cpu_model() {
   std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("model name", 0) == 0) {
-      const std::size_t colon = line.find(':');
-      if (colon != std::string::npos) return line.substr(line.find_first_not_of(" \t", colon + 1));
-    }
-  return "unknown";
+  std::string line, name, family, model, stepping;
+  auto value = [&] {
+    const std::size_t colon = line.find(':');
+    if (colon == std::string::npos) return std::string();
+    const std::size_t start = line.find_first_not_of(" \t", colon + 1);
+    return start == std::string::npos ? std::string() : line.substr(start);
+  };
+  auto key = [&](const char* k) {
+    const std::size_t colon = line.find(':');
+    std::string head = line.substr(0, colon == std::string::npos ? line.size() : colon);
+    while (!head.empty() && (head.back() == ' ' || head.back() == '\t')) head.pop_back();
+    return head == k;
+  };
+  while (std::getline(in, line)) {
+    if (line.empty() && !name.empty()) break;  // the first processor only
+    if (key("model name")) name = value();
+    else if (key("cpu family")) family = value();
+    else if (key("model")) model = value();
+    else if (key("stepping")) stepping = value();
+  }
+  if (name.empty()) return "unknown";
+  if (!family.empty() && !model.empty())
+    name += " (family " + family + ", model " + model + (stepping.empty() ? "" : ", stepping " + stepping) + ")";
+  return name;
 }
 
 double median(std::vector<double> v) {

@@ -130,6 +130,9 @@ bool SweepDesign::is_valid(DesignProblem* problem) const {
     if (kind == DesignKind::grid) {
       if (a.count <= 0) return fail(i, "count", "must be >= 1 (got " + std::to_string(a.count) + ")");
       if (a.count == 1 && a.from != a.to) return fail(i, "count", "a single grid point needs from = to");
+      if (a.count > 1 && a.from == a.to)
+        return fail(i, "to", "must exceed from for " + std::to_string(a.count) +
+                                 " grid points (from = to gives identical throws; give count = 1 for one)");
       throws *= static_cast<double>(a.count);
     }
   }

@@ -172,6 +172,14 @@ BOOST_AUTO_TEST_CASE(invalid_designs_name_the_axis_and_key) {
   BOOST_TEST(problem(d).key == "key");
   d.axes = {axis("a", 1, 2, 1)};
   BOOST_TEST(problem(d).key == "count");
+  // Several grid points on one value: identical throws, a map without x labels (accepted until
+  // December 5).
+  d.axes = {axis("a", 2, 2, 3)};
+  const DesignProblem same = problem(d);
+  BOOST_TEST(same.key == "to");
+  BOOST_TEST(same.what.find("identical throws") != std::string::npos, same.what);
+  d.axes = {axis("a", 2, 2, 1)};
+  BOOST_TEST(d.is_valid(nullptr));
   d.axes = {};
   BOOST_TEST(problem(d).key == "vary");
   d.kind = DesignKind::random;
