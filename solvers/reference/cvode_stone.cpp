@@ -96,6 +96,9 @@ struct Problem {
   FaceRule rule = FaceRule::none;
   int face = -1;
   int held_side = 0;
+  // Load evaluations CVODE does not count: a sliding right-hand side evaluates the loads twice (f₀
+  // and f₁), its exit function twice more (filippov_sliding.hpp).
+  long uncounted_loads = 0;
   std::string nan_detail;  // the first non-finite value met in a callback
 };
 
@@ -116,8 +119,10 @@ int rhs_callback(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
       return 1;  // recoverable: CVODE retries with a smaller step, and gives up after a few
     }
   }
-  if (p.rule == Problem::FaceRule::sliding)
+  if (p.rule == Problem::FaceRule::sliding) {
     p.sliding.field(p.face, yy, dy);
+    p.uncounted_loads += 1;
+  }
   else if (p.rule == Problem::FaceRule::held)
     p.sliding.held_rhs(p.face, p.held_side, yy, dy);
   else
@@ -135,7 +140,10 @@ int root_callback(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
   auto& p = *static_cast<Problem*>(user);
   if (p.events.evaluate(N_VGetArrayPointer(y), g)) {
     const double* yy = N_VGetArrayPointer(y);
-    if (p.rule == Problem::FaceRule::sliding) g[p.events.count()] = p.sliding.exit_value(p.face, yy);
+    if (p.rule == Problem::FaceRule::sliding) {
+      g[p.events.count()] = p.sliding.exit_value(p.face, yy);
+      p.uncounted_loads += 2;
+    }
     if (p.rule == Problem::FaceRule::held) g[p.events.count()] = p.sliding.held_value(p.face, p.held_side, yy);
     return 0;
   }
@@ -177,7 +185,7 @@ class ReferenceSolve {
  public:
   ReferenceSolve(const Stone& stone, const Environment& env, const ReferenceOptions& o, ThrowResult& r)
       : stone_(stone), env_(env), o_(o), r_(r), events_(stone, env, o.restart == RestartStrategy::every_event),
-        sliding_(stone, env), problem_{stone, env, events_, sliding_, Problem::FaceRule::none, -1, 0, {}}, found_(events_.count() + 1),
+        sliding_(stone, env), problem_{stone, env, events_, sliding_, Problem::FaceRule::none, -1, 0, 0, {}}, found_(events_.count() + 1),
         event_times_(std::clamp(o.max_events_per_ms, 1, kMaxEventsPerMs), -1e300) {}
 
   void run(const RigidState& initial);
@@ -722,6 +730,7 @@ void ReferenceSolve::finish(const RigidState& s0) {
     t_ = last_good_t_;
   }
   if (problem_.rule == Problem::FaceRule::sliding) slides_.back().to_s = t_;  // still sliding at the end
+  r_.stats.rhs_evaluations += problem_.uncounted_loads;  // right-hand sides are load evaluations
   const bool cut = r_.outcome == Outcome::failed && log_.in_contact();
   if (log_.in_contact()) log_.end(t_, s_end, energy(s_end), false);
   if (o_.record_trajectory && (r_.trajectory.empty() || r_.trajectory.back().t_s < t_)) sample(t_, s_end);
