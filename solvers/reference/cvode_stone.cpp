@@ -381,7 +381,7 @@ void ReferenceSolve::set_roots() {
 // sides, the solve restarts from the last good state on Filippov's sliding field. Once sliding, a
 // further collapse fails the solve; so does sliding more than kMaxSlides times.
 bool ReferenceSolve::try_sliding() {
-  if (problem_.rule == Problem::FaceRule::sliding) return false;
+  if (!sliding_.available() || problem_.rule == Problem::FaceRule::sliding) return false;  // says nothing where none can be
   if (slides_.size() >= kMaxSlides) {
     no_slide_ = "it slid " + std::to_string(slides_.size()) + " times already (kMaxSlides)";
     return false;

@@ -19,12 +19,12 @@ using Vector = std::array<double, kStateSize>;
 FilippovSliding::FilippovSliding(const Stone& stone, const Environment& env)
     : stone_(stone), env_(env), switches_(stone, env) {}
 
-// The face's switch value at y: LoadSwitches' loaded_face function, which depends on the state
-// alone (not on a recorded mode), read after recording the mode of y.
 std::size_t FilippovSliding::index_of(int face) const {
   return 2 * stone_.body_mesh.vertices.size() + static_cast<std::size_t>(face);  // load_switches.hpp's order
 }
 
+// The face's switch value at y: LoadSwitches' loaded_face function, which depends on the state
+// alone (not on a recorded mode), read after recording the mode of y.
 double FilippovSliding::switch_value(int face, const double* y) {
   RigidState s = from_vector(y);
   s.orientation.normalize();
