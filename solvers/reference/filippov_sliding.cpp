@@ -1,7 +1,6 @@
 #include "solvers/reference/filippov_sliding.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -9,12 +8,6 @@
 #include "model/stone/rigid_body.hpp"
 
 namespace stoneskip {
-
-namespace {
-
-using Vector = std::array<double, kStateSize>;
-
-}  // namespace
 
 FilippovSliding::FilippovSliding(const Stone& stone, const Environment& env)
     : stone_(stone), env_(env), switches_(stone, env) {}
@@ -34,12 +27,21 @@ double FilippovSliding::switch_value(int face, const double* y) {
 }
 
 double FilippovSliding::rate_along(int face, const double* y, const double* f) {
-  Vector plus{}, minus{};
+  StateVector plus{}, minus{};
   for (int k = 0; k < kStateSize; ++k) {
     plus[k] = y[k] + kDirectionalStep_s * f[k];
     minus[k] = y[k] - kDirectionalStep_s * f[k];
   }
   return (switch_value(face, plus.data()) - switch_value(face, minus.data())) / (2 * kDirectionalStep_s);
+}
+
+FilippovSliding::Sides FilippovSliding::sides(int face, const double* y) {
+  Sides out;
+  rhs_with_face(face, 0, y, out.f0.data());
+  rhs_with_face(face, 1, y, out.f1.data());
+  out.a0 = rate_along(face, y, out.f0.data());
+  out.a1 = rate_along(face, y, out.f1.data());
+  return out;
 }
 
 // The loads with the face held out of (loaded = 0) or in (1) the loaded region, every other face
@@ -89,11 +91,9 @@ SlidingChoice FilippovSliding::attracting_face(const RigidState& s) {
     c.why = m.str();
     return c;
   }
-  Vector f0{}, f1{};
-  rhs_with_face(best, 0, y.data(), f0.data());
-  rhs_with_face(best, 1, y.data(), f1.data());
-  c.a0 = rate_along(best, y.data(), f0.data());
-  c.a1 = rate_along(best, y.data(), f1.data());
+  const Sides at = sides(best, y.data());
+  c.a0 = at.a0;
+  c.a1 = at.a1;
   if (c.a0 > 0 && c.a1 < 0) {
     c.face = best;
     return c;
@@ -107,11 +107,8 @@ SlidingChoice FilippovSliding::attracting_face(const RigidState& s) {
 
 SlidingField FilippovSliding::field(int face, const double* y, double* dydt) {
   SlidingField out;
-  Vector f0{}, f1{};
-  rhs_with_face(face, 0, y, f0.data());
-  rhs_with_face(face, 1, y, f1.data());
-  const double a0 = rate_along(face, y, f0.data());
-  const double a1 = rate_along(face, y, f1.data());
+  const Sides at = sides(face, y);
+  const double a0 = at.a0, a1 = at.a1;
   if (!std::isfinite(a0) || !std::isfinite(a1)) {
     // The face has no wetted polygon here: its switch is undefined and the loads decide alone.
     rigid_body_rhs(stone_, env_, y, dydt);
@@ -122,21 +119,19 @@ SlidingField FilippovSliding::field(int face, const double* y, double* dydt) {
   // it is clamped to the field on the side the state leaves by.
   out.alpha = a0 - a1 > 0 ? std::clamp(a0 / (a0 - a1), 0.0, 1.0) : (a0 <= 0 ? 0.0 : 1.0);
   out.exit = std::min(a0, -a1);
-  for (int k = 0; k < kStateSize; ++k) dydt[k] = (1 - out.alpha) * f0[k] + out.alpha * f1[k];
+  for (int k = 0; k < kStateSize; ++k) dydt[k] = (1 - out.alpha) * at.f0[k] + out.alpha * at.f1[k];
   return out;
 }
 
 double FilippovSliding::exit_value(int face, const double* y) {
-  Vector f{};
+  StateVector f{};
   return field(face, y, f.data()).exit;
 }
 
 int FilippovSliding::leaving_side(int face, const double* y) {
-  Vector f0{}, f1{};
-  rhs_with_face(face, 0, y, f0.data());
-  rhs_with_face(face, 1, y, f1.data());
   // The field that turned tangent is the one whose rate toward the switch reached zero first.
-  return rate_along(face, y, f0.data()) <= -rate_along(face, y, f1.data()) ? 0 : 1;
+  const Sides at = sides(face, y);
+  return at.a0 <= -at.a1 ? 0 : 1;
 }
 
 void FilippovSliding::held_rhs(int face, int side, const double* y, double* dydt) {

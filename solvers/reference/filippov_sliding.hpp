@@ -83,6 +83,12 @@ class FilippovSliding {
   double held_value(int face, int side, const double* y);
 
  private:
+  // The two fields at y, the face out (f₀) and in (f₁), and their rates a₀, a₁ toward its switch.
+  struct Sides {
+    StateVector f0{}, f1{};
+    double a0 = 0, a1 = 0;
+  };
+  Sides sides(int face, const double* y);
   // ∇g · f for the face's switch, f at y (central difference); NaN where g is undefined.
   double rate_along(int face, const double* y, const double* f);
   void rhs_with_face(int face, char loaded, const double* y, double* dydt);
