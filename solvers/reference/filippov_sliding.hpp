@@ -1,8 +1,9 @@
 #pragma once
-// A sliding mode on one face's loaded-region switch, solved as Filippov's differential inclusion
-// (A. F. Filippov, Differential Equations with Discontinuous Righthand Sides, Kluwer 1988; the
-// event-driven treatment of P. T. Piiroinen & Yu. A. Kuznetsov, "An event-driven method to simulate
-// Filippov systems with accurate computing of sliding motions", ACM TOMS 34(3), 2008).
+// A sliding mode on one face's loaded-region switch, or on two at once, solved as Filippov's
+// differential inclusion (A. F. Filippov, Differential Equations with Discontinuous Righthand
+// Sides, Kluwer 1988; the event-driven treatment of P. T. Piiroinen & Yu. A. Kuznetsov, "An
+// event-driven method to simulate Filippov systems with accurate computing of sliding motions",
+// ACM TOMS 34(3), 2008).
 //
 // Under the savitsky distributions a face belongs to the loaded region while its normal velocity
 // at the centroid of its polygon below the raised waterline is advancing, g = u − 1e-9 |v_c| > 0
@@ -19,9 +20,19 @@
 // After the exit the state leaves along the field that turned tangent, so g departs from zero only
 // quadratically and its sign there is round-off: the face is *held* on the side it leaves to (out
 // where a₀ reached zero, in where a₁ did) until g crosses zero against the hold, a located root.
-// Only one switch at zero is treated: where two faces' switches are at zero at once (the twin faces
-// of a mirror-symmetric throw), the sliding field is not unique (Filippov 1988; L. Dieci &
-// L. Lopez, SIAM J. Numer. Anal. 47(3), 2009) and attracting_face says so.
+// Two switches at zero at once (the twin faces of a mirror-symmetric throw, or a second face's
+// switch reached while sliding on one) are slid along together on their intersection with the
+// bilinear combination of the four fields f_ab (face i out/in a = 0/1, face j b = 0/1) that L. Dieci
+// & L. Lopez proposed (SIAM J. Numer. Anal. 47(3), 2009, where they also show that Filippov's
+// convex hull of four fields leaves the sliding field undetermined; extended to more switches in
+// Numer. Math. 117, 2011):
+//   ẏ = (1−α)(1−β) f₀₀ + α(1−β) f₁₀ + (1−α)β f₀₁ + αβ f₁₁,  ∇gᵢ · ẏ = 0 and ∇gⱼ · ẏ = 0,
+// two bilinear equations in (α, β), solved in closed form (a quadratic in β). It is taken where the
+// solution lies in the open unit square and the fields attract: ∇gᵢ · ẏ > 0 at α = 0 and < 0 at α = 1
+// (at the solution's β), and likewise for j (Dieci & Lopez's attractivity). The sliding ends where α
+// or β reaches 0 or 1 (that face leaves, out or in, and is held; the other slides on alone with it
+// held, where its switch attracts, else is held too) or where the solution ceases to exist.
+// More than two switches at zero at once are not treated; attracting() says so.
 // a_i is the central difference of g along f_i over ±kDirectionalStep_s. g is smooth in the state
 // away from a vertex crossing the raised waterline; round-off in g (world positions of metres) over
 // 2ε dominates the truncation error: ~1e-7 of a typical a_i of 1–10 m/s², ample for α and for the
@@ -43,18 +54,44 @@ constexpr double kDirectionalStep_s = 1e-7;  // the central difference's step al
 // switch farther from zero than this is not what stopped the step.
 constexpr double kAtSwitch_m_s = 1e-6;
 
-// The choice made where a solve's step collapsed: the face to slide on, or why there is none.
-struct SlidingChoice {
-  int face = -1;          // −1: no single switch at zero attracts from both sides here
-  double g = 0;           // the face's switch value there
-  double a0 = 0, a1 = 0;  // ∇g · f₀ and ∇g · f₁ there
-  std::string why;        // when face < 0: what was found instead
-};
+// Sliding on two switches, a weight this close to 0 or 1 where the other's reached it counts as
+// there too. The twins of a mirror-symmetric lens throw reach their bounds together, but their
+// weights differ there by 3e-8 (attack 20°) and 1.3e-6 (attack 5°; measured 5 December: the
+// round-off of the rates' central differences, and of the two switches' starting values), so the
+// root finder finds one exit first and the other, left to slide alone, exits at once. A weight
+// moves at 300–2000 /s on those throws, so treating 1e-5 as the bound moves an exit by < 4e-8 s.
+constexpr double kWeightAtBoundary = 1e-5;
 
-// The sliding field and its exit function at one state.
-struct SlidingField {
-  double alpha = 0;  // the weight of f₁ (clamped to [0, 1])
-  double exit = -1;  // min(a₀, −a₁); −1 where the face has no wetted polygon (g undefined)
+// At most this many faces' switches are treated apart at once (slid along or held).
+constexpr std::size_t kMaxTreatedFaces = 2;
+
+// The bilinear sliding field's weights on two switches (Dieci & Lopez 2009), from the four fields'
+// rates toward each: A[a][b] = ∇gᵢ · f_ab, B[a][b] = ∇gⱼ · f_ab (a: face i out 0 / in 1, b: face j).
+// `solved`: a real solution exists (of the two roots of the quadratic, the one nearest the unit
+// square); `attracts`: it lies inside the square and the fields attract (filippov_sliding.hpp).
+struct BilinearWeights {
+  bool solved = false, attracts = false;
+  double alpha = 0, beta = 0;
+};
+BilinearWeights bilinear_sliding_weights(const double (&A)[2][2], const double (&B)[2][2]);
+
+// One face's loaded-region switch treated apart: slid along (with the other sliding face, if any, on
+// the intersection), or held on one side (0: out of the loaded region, 1: in) after a sliding left it.
+struct FaceRule {
+  int face = -1;
+  bool sliding = false;
+  int side = 0;  // when held
+};
+using FaceRules = std::vector<FaceRule>;
+
+// The choice made where a solve's step collapsed: the face(s) to slide on, or why there is none.
+struct SlidingChoice {
+  int face = -1;          // −1: no switch (or pair of switches) at zero attracts here
+  int face2 = -1;         // the second face, sliding on the two switches' intersection; −1: one switch
+  double g = 0;           // the (first) face's switch value there
+  double a0 = 0, a1 = 0;  // one switch: ∇g · f₀ and ∇g · f₁ there
+  double alpha = 0, beta = 0;  // two switches: the bilinear weights there
+  std::string why;        // when face < 0: what was found instead
 };
 
 class FilippovSliding {
@@ -64,35 +101,57 @@ class FilippovSliding {
   FilippovSliding(const Stone& stone, const Environment& env);
   bool available() const { return switches_.active(); }
 
-  // The one loaded-face switch at zero at s (|g| ≤ kAtSwitch_m_s), tested for attraction from both
-  // sides (a₀ > 0 > a₁); none where no switch, or more than one, is at zero.
-  SlidingChoice attracting_face(const RigidState& s);
+  // The loaded-region switches at zero at s (|g| ≤ kAtSwitch_m_s), other than those `rules` hold,
+  // tested for attraction: one switch from both sides (a₀ > 0 > a₁), two on their intersection (the
+  // bilinear field's weights inside the unit square, attracting); the held faces stay held.
+  SlidingChoice attracting(const RigidState& s, const FaceRules& rules);
+  SlidingChoice attracting_face(const RigidState& s) { return attracting(s, {}); }
 
-  // The sliding field of `face` at y (kStateSize doubles) into dydt; its α and exit value.
-  SlidingField field(int face, const double* y, double* dydt);
-  // The exit value alone (the root function), at y.
-  double exit_value(int face, const double* y);
-
-  // At a sliding's exit: the side the state leaves to (0: out, where a₀ reached zero; 1: in, where
-  // a₁ did).
-  int leaving_side(int face, const double* y);
-  // Held on `side` after an exit: the loads with the face so held, and the hold's root function,
-  // positive while g lies on that side (−g for side 0, g for side 1), and −1 where the face has no
-  // wetted polygon (the hold ends there).
-  void held_rhs(int face, int side, const double* y, double* dydt);
-  double held_value(int face, int side, const double* y);
+  // The right-hand side at y (kStateSize doubles) under `rules` (the sliding field where a face
+  // slides, the loads with the held faces held); the load evaluations it took.
+  int rhs(const FaceRules& rules, const double* y, double* dydt);
+  // The rules' root functions at y, one per rule: a sliding face's exit value (one switch:
+  // min(a₀, −a₁); two: min(α, 1 − α) for the first, min(β, 1 − β) for the second; −1 where the
+  // field is undefined or, for two, the weights do not exist), a held face's hold value (−g on side
+  // 0, g on side 1; −1 where the face has no wetted polygon). The load evaluations it took.
+  int roots(const FaceRules& rules, const double* y, double* g);
+  // The rules after the roots flagged in `found` (one per rule, nonzero: its root was found) at y:
+  // a sliding face that exits is held on the side it leaves to (the other sliding face slides on
+  // alone where its switch attracts, else is held too); a hold that ends is dropped.
+  FaceRules after_roots(const FaceRules& rules, const int* found, const double* y);
 
  private:
-  // The two fields at y, the face out (f₀) and in (f₁), and their rates a₀, a₁ toward its switch.
+  // One switch: the sliding field's weight of f₁, clamped to [0, 1], and its exit value.
+  struct SlidingField {
+    double alpha = 0;
+    double exit = -1;
+  };
+  // The loads with `forced` faces set (LoadMode's loaded_faces values), the others decided.
+  void rhs_forced(const std::vector<std::pair<int, char>>& forced, const double* y, double* dydt);
+  std::vector<std::pair<int, char>> held_of(const FaceRules& rules) const;
+  // Switch values of `faces` at y (NaN where undefined), from one evaluation.
+  void switch_values(const std::vector<int>& faces, const double* y, double* out);
+  // ∇g · f for each of `faces` (central differences along f at y).
+  void rates_along(const std::vector<int>& faces, const double* y, const double* f, double* out);
+
+  // One switch with the held faces held: the two fields and their rates.
   struct Sides {
     StateVector f0{}, f1{};
     double a0 = 0, a1 = 0;
   };
-  Sides sides(int face, const double* y);
-  // ∇g · f for the face's switch, f at y (central difference); NaN where g is undefined.
-  double rate_along(int face, const double* y, const double* f);
-  void rhs_with_face(int face, char loaded, const double* y, double* dydt);
-  double switch_value(int face, const double* y);
+  Sides sides(int face, const FaceRules& held, const double* y);
+  SlidingField one_switch(int face, const FaceRules& held, const double* y, double* dydt);
+  // Two switches: the four fields f_ab (a: face i, b: face j), the rates A_ab = ∇gᵢ · f_ab and
+  // B_ab = ∇gⱼ · f_ab, and the bilinear solution.
+  struct Corners {
+    StateVector f[2][2]{};
+    double A[2][2]{}, B[2][2]{};
+    bool defined = false;   // every rate finite
+    bool solved = false, attracts = false;  // bilinear_sliding_weights'
+    double alpha = 0, beta = 0;
+  };
+  Corners corners(int fi, int fj, const FaceRules& held, const double* y);
+
   std::size_t index_of(int face) const;  // the face's loaded_face value among LoadSwitches' values
 
   const Stone& stone_;
