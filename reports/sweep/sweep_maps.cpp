@@ -80,8 +80,10 @@ std::string count_scale(double lo, double hi, const std::string& label) {
 
 std::string continuous_scale(double lo, double hi, const std::string& label) {
   std::ostringstream s;
+  // No offset: gnuplot sets the label beyond the tick labels, which are wider here than whole
+  // counts ("0.8"), and an offset of 1.5 put it past the picture's right edge.
   s << kCountPalette << "set cbrange [" << num(lo) << ":" << num(hi > lo ? hi : lo + 1) << "]\nset cblabel " << quoted(label)
-    << " noenhanced offset 1.5,0\n";
+    << " noenhanced\n";
   return s.str();
 }
 
@@ -183,21 +185,21 @@ Figure heat_map(const std::string& name, const std::string& title, const GridMap
   s << "set xlabel " << quoted(x.key + (x.log ? " (log scale)" : "")) << " noenhanced\nset ylabel "
     << quoted(y.key + (y.log ? " (log scale)" : "")) << " noenhanced\n";
   s << index_tics("x", map.x_values, x.log) << index_tics("y", map.y_values, y.log) << scale;
-  // The key on grey: the second contour's colour is white (seen on the map's dark end), which a
-  // white key hid.
-  s << "set xrange [-0.5:" << nx - 0.5 << "]\nset yrange [-0.5:" << ny - 0.5
-    << "]\nset key outside below box opaque fc rgb '#9e9e9e'\nset tics out\n";
+  s << "set xrange [-0.5:" << nx - 0.5 << "]\nset yrange [-0.5:" << ny - 0.5 << "]\nset tics out\n";
   // gnuplot draws nothing `with image` under 2 × 2 cells ("Image grid must be at least 4 points"):
   // a grid with one value on an axis is drawn as filled boxes, one per cell, instead.
+  std::ostringstream plot;
+  bool titled = false;  // a series in the key (without one, the key's box was a stray line)
   if (nx >= 2 && ny >= 2)
-    s << "plot '" << name << "_cells.dat' using 1:2:6 with image notitle";
+    plot << "plot '" << name << "_cells.dat' using 1:2:6 with image notitle";
   else
-    s << "plot '" << name << "_cells.dat' using 1:2:($1-0.5):($1+0.5):($2-0.5):($2+0.5):6 with boxxyerror "
-      << "fs solid 1.0 noborder fc palette notitle";
+    plot << "plot '" << name << "_cells.dat' using 1:2:($1-0.5):($1+0.5):($2-0.5):($2+0.5):6 with boxxyerror "
+         << "fs solid 1.0 noborder fc palette notitle";
   if (empty.rows() > 0) {
     f.tables.emplace_back(name + "_empty", empty);
-    s << ", \\\n     '" << name << "_empty.dat' using 1:2:($1-0.5):($1+0.5):($2-0.5):($2+0.5) with boxxyerror "
-      << "fs solid 1.0 noborder fc rgb '#bdbdbd' title 'no result (failed or not run)'";
+    plot << ", \\\n     '" << name << "_empty.dat' using 1:2:($1-0.5):($1+0.5):($2-0.5):($2+0.5) with boxxyerror "
+         << "fs solid 1.0 noborder fc rgb '#bdbdbd' title 'no result (failed or not run)'";
+    titled = true;
   }
   for (std::size_t l = 0; l < contours.size(); ++l) {
     GridMap index = contours[l].field;  // the same field on cell indices
@@ -209,9 +211,13 @@ Figure heat_map(const std::string& name, const std::string& title, const GridMap
     if (seg.rows() == 0) continue;
     const std::string t = name + "_level" + std::to_string(l);
     f.tables.emplace_back(t, seg);
-    s << ", \\\n     '" << t << ".dat' using 1:2:($3-$1):($4-$2) with vectors nohead lw 2.5 lc rgb '"
-      << kLevelColours[l % std::size(kLevelColours)] << "' title " << quoted(contours[l].label);
+    plot << ", \\\n     '" << t << ".dat' using 1:2:($3-$1):($4-$2) with vectors nohead lw 2.5 lc rgb '"
+         << kLevelColours[l % std::size(kLevelColours)] << "' title " << quoted(contours[l].label);
+    titled = true;
   }
+  // The key on grey: the second contour's colour is white (seen on the map's dark end), which a
+  // white key hid.
+  s << (titled ? "set key outside below box opaque fc rgb '#9e9e9e'\n" : "unset key\n") << plot.str();
   return finish(f, s, 900, 760);
 }
 
@@ -430,10 +436,14 @@ std::vector<Figure> sweep_map_figures(const SweepData& d, const SweepMapOptions&
     for (std::size_t i = 0; i < diff.size(); ++i) diff[i] = counts[0].second[i] - counts[1].second[i];
   }
   auto axis = [&](std::size_t k) { return Axis{axes[k].key, axes[k].scale == AxisScale::log}; };
-  auto others = [&](std::size_t i, std::size_t j) {
+  auto other_keys = [&](std::size_t i, std::size_t j) {
     std::string s;
     for (std::size_t k = 0; k < n; ++k)
       if (k != i && k != j) s += (s.empty() ? "" : ", ") + axes[k].key;
+    return s;
+  };
+  auto others = [&](std::size_t i, std::size_t j) {
+    const std::string s = other_keys(i, j);
     return s.empty() ? std::string() : " (mean over " + s + ")";
   };
   const std::string pre = o.prefix + "_";
@@ -479,13 +489,26 @@ std::vector<Figure> sweep_map_figures(const SweepData& d, const SweepMapOptions&
         const auto [lo, hi] = finite_range(diff);
         const double span = std::max(std::abs(lo), std::abs(hi));
         const std::string title = "Real-time minus reference bounce count: " + axes[j].key + " against " + axes[i].key + others(i, j);
-        if (grid) {
+        if (grid && n == 2) {
           std::vector<double> absolute(diff.size());
           for (std::size_t k = 0; k < diff.size(); ++k) absolute[k] = std::abs(diff[k]);
-          // The edge of agreement: where the mean |difference| passes ½.
+          // The edge of agreement: where the |difference| passes ½.
           figs.push_back(heat_map(pre + "disagreement" + pair, title, grid_mean(d, diff, i, j), axis(i), axis(j), "1",
                                   diverging_scale(span, "real-time − reference bounces"),
                                   {{grid_mean(d, absolute, i, j), 0.5, "edge of agreement"}}));
+        } else if (grid) {
+          // Over the other axes a mean of signed differences cancels (+1 and −1 average to an
+          // agreeing 0): the map is the share of those throws whose two counts differ, and its
+          // contour the edge of agreement, between the cells where every throw agrees and the
+          // rest (a share is 0 or at least one over the other axes' throws, far above 1e-9).
+          std::vector<double> differs(diff.size());
+          for (std::size_t k = 0; k < diff.size(); ++k) differs[k] = std::isfinite(diff[k]) ? (diff[k] != 0 ? 1.0 : 0.0) : kNaN;
+          const GridMap share = grid_mean(d, differs, i, j);
+          figs.push_back(heat_map(pre + "disagreement" + pair,
+                                  "Share of throws with differing counts: " + axes[j].key + " against " + axes[i].key +
+                                      " (over " + other_keys(i, j) + ")",
+                                  share, axis(i), axis(j), "1", continuous_scale(0, 1, "share differing"),
+                                  {{share, 1e-9, "all agree | some differ"}}));
         } else {
           figs.push_back(scatter(pre + "disagreement" + pair, title, d.throws.column(axes[i].key),
                                  d.throws.column(axes[j].key), diff, axis(i), axis(j), "1",

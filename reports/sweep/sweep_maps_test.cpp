@@ -135,6 +135,34 @@ BOOST_AUTO_TEST_CASE(a_two_key_grid_with_both_solvers_gets_count_and_disagreemen
   BOOST_TEST(levels == 5u);  // thresholds 2|3, 3|4, 4|5, 5|6, 6|7
 }
 
+BOOST_AUTO_TEST_CASE(over_a_third_axis_the_disagreement_map_is_the_share_of_throws_that_differ) {
+  // Oracle: hand counts on a 2 × 3 × 2 grid. Real-time minus reference is +1 at k2 = 1 and −1 at
+  // k2 = 2 where k0 = 1 (a mean over k2 of 0: the map showed agreement there), +1 and 0 where k0 = 2.
+  // The share of throws that differ over k2 is 1 and ½; the (k0, k2) map, over k1, has 1 and 0 or 1.
+  SweepData d = grid_data({2, 3, 2}, SweepSolvers::both);
+  fill(d, [](const std::vector<double>& p, int solver) {
+    if (solver == 1) return 5.0;
+    if (p[0] == 1) return p[2] == 1 ? 6.0 : 4.0;
+    return p[2] == 1 ? 6.0 : 5.0;
+  });
+  const auto figs = sweep_map_figures(d);
+  const Figure& f = figure(figs, "sweep_disagreement_0_1");
+  BOOST_TEST(f.title.find("Share of throws with differing counts") != std::string::npos, f.title);
+  BOOST_TEST(f.title.find("(over k2)") != std::string::npos, f.title);
+  const Table& cells = table(f, "sweep_disagreement_0_1_cells");
+  BOOST_REQUIRE_EQUAL(cells.rows(), 6u);
+  const std::size_t w = cells.columns.size();
+  for (std::size_t r = 0; r < cells.rows(); ++r) {
+    const double k0 = cells.values[r * w + 2], share = cells.values[r * w + 4];
+    BOOST_TEST(share == (k0 == 1 ? 1.0 : 0.5), "k0 " << k0 << ": share " << share);
+  }
+  const Table& k0k2 = table(figure(figs, "sweep_disagreement_0_2"), "sweep_disagreement_0_2_cells");
+  for (std::size_t r = 0; r < k0k2.rows(); ++r) {
+    const double k0 = k0k2.values[r * w + 2], k2 = k0k2.values[r * w + 3], share = k0k2.values[r * w + 4];
+    BOOST_TEST(share == (k0 == 2 && k2 == 2 ? 0.0 : 1.0), "k0 " << k0 << ", k2 " << k2 << ": share " << share);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(a_grid_with_one_value_on_an_axis_is_drawn_as_boxes_and_its_tables_carry_units) {
   // Oracle: gnuplot draws nothing `with image` under 2 × 2 cells ("Image grid must be at least 4
   // points"): a 3 × 1 grid's map was a white picture counted as drawn. Its cells are boxes

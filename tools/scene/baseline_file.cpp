@@ -190,6 +190,33 @@ BounceBaseline read_baseline(const std::string& path) {
                                     " starts before threshold " + std::to_string(i) + " ends)");
       b.thresholds.push_back(th);
     }
+    // The sweep bisects each grid cell whose two counts differ (neither a failure), once, inside
+    // that cell, keeping the left count below (bounce_sweep.cpp): thresholds that do not answer the
+    // counts so are a damaged [result], not a regression of the code.
+    if (b.counts.size() == b.values.size()) {
+      std::size_t next = 0;
+      for (std::size_t i = 0; i + 1 < b.values.size(); ++i) {
+        const int c0 = b.counts[i], c1 = b.counts[i + 1];
+        if (c0 == c1 || c0 < 0 || c1 < 0) continue;
+        const std::string cell = "[" + text(b.values[i]) + ", " + text(b.values[i + 1]) + "]";
+        if (next >= b.thresholds.size())
+          r->fail("threshold_lo", "the counts change from " + std::to_string(c0) + " to " + std::to_string(c1) + " in " +
+                                      cell + " but no threshold lies there");
+        const CountThreshold& th = b.thresholds[next];
+        if (th.lo < b.values[i] || th.hi > b.values[i + 1])
+          r->fail("threshold_lo", "threshold " + std::to_string(next + 1) + " [" + text(th.lo) + ", " + text(th.hi) +
+                                      "] should lie in " + cell + ", where the counts change from " + std::to_string(c0) +
+                                      " to " + std::to_string(c1));
+        if (th.count_below != c0)
+          r->fail("threshold_count_below", "threshold " + std::to_string(next + 1) + " has " +
+                                               std::to_string(th.count_below) + " below it, but counts has " +
+                                               std::to_string(c0) + " at " + text(b.values[i]));
+        ++next;
+      }
+      if (next < b.thresholds.size())
+        r->fail("threshold_lo", "threshold " + std::to_string(next + 1) + " [" + text(b.thresholds[next].lo) + ", " +
+                                    text(b.thresholds[next].hi) + "] lies in no grid cell where counts changes (neither run failing)");
+    }
     if (r->has("ensemble_counts")) {
       const auto e = r->numbers("ensemble_counts");
       const std::size_t m = static_cast<std::size_t>(b.ensemble_members);

@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "tools/io/atomic_file.hpp"
 #include "tools/io/input_error.hpp"
@@ -111,6 +113,48 @@ BOOST_AUTO_TEST_CASE(a_damaged_result_is_bad_input_naming_its_key) {
   m = refusal("threshold_lo = [14.375, 22.5", "threshold_lo = [14.375, 14.5");  // starts inside the first
   BOOST_TEST(m.find("ascending order without overlap") != std::string::npos, m);
   BOOST_TEST(refusal("generated = ", "generated = ") == "");  // the shipped file itself is taken
+}
+
+BOOST_AUTO_TEST_CASE(thresholds_that_do_not_answer_the_counts_are_bad_input) {
+  // Oracle: the sweep's rule (bounce_sweep.cpp): each grid cell whose two counts differ, neither a
+  // failure, is bisected once, inside the cell, the left count kept below. The shipped baseline
+  // (values 0, 10, …, 60; counts 1, 1, 2, 3, 4, 5, 9; one threshold in each of the five cells that
+  // change) with its [result] made to contradict itself; each was read and compared, and reported
+  // as a regression of the code (exit 1) after the whole sweep.
+  ScratchDir s("stoneskip_baseline_contradicts");
+  const std::string text = read_text_file("cases/baselines/spin_physical_realtime.toml");
+  auto refusal = [&](const std::vector<std::pair<std::string, std::string>>& edits) {
+    std::string t = text;
+    for (const auto& [from, to] : edits) {
+      const auto at = t.find(from);
+      BOOST_REQUIRE(at != std::string::npos);
+      t.replace(at, from.size(), to);
+    }
+    try {
+      read_baseline(s.write("contradicts.toml", t).string());
+      return std::string();
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+  };
+  // The count changes in [0, 10] now, where no threshold lies; the first lies in [10, 20].
+  std::string m = refusal({{"counts = [1, 1,", "counts = [1, 2,"}});
+  BOOST_TEST(m.find("result.threshold_lo: threshold 1 [14.375, 14.6875] should lie in [0, 10]") != std::string::npos, m);
+  // The last cell no longer changes, but threshold 5 still lies in it.
+  m = refusal({{"counts = [1, 1, 2, 3, 4, 5, 9]", "counts = [1, 1, 2, 3, 4, 5, 5]"}});
+  BOOST_TEST(m.find("threshold 5 [50.625, 50.9375] lies in no grid cell where counts changes") != std::string::npos, m);
+  // A count below a threshold that the grid does not have there.
+  m = refusal({{"threshold_count_below = [1, 2, 3, 4, 5]", "threshold_count_below = [1, 2, 3, 4, 7]"}});
+  BOOST_TEST(m.find("result.threshold_count_below: threshold 5 has 7 below it, but counts has 5 at 50") != std::string::npos, m);
+  // The last threshold removed: the change from 5 to 9 in [50, 60] has none.
+  m = refusal({{"threshold_lo = [14.375, 22.5, 34.375, 48.125, 50.625]", "threshold_lo = [14.375, 22.5, 34.375, 48.125]"},
+                {"threshold_hi = [14.6875, 22.8125, 34.6875, 48.4375, 50.9375]", "threshold_hi = [14.6875, 22.8125, 34.6875, 48.4375]"},
+                {"threshold_count_below = [1, 2, 3, 4, 5]", "threshold_count_below = [1, 2, 3, 4]"},
+                {"threshold_count_above = [3, 5, 4, 5, 4]", "threshold_count_above = [3, 5, 4, 5]"}});
+  BOOST_TEST(m.find("the counts change from 5 to 9 in [50, 60] but no threshold lies there") != std::string::npos, m);
+  // A failed grid run (−1) is bisected on neither side: its neighbours' thresholds are then extra.
+  m = refusal({{"counts = [1, 1, 2, 3, 4, 5, 9]", "counts = [1, 1, 2, 3, 4, -1, 9]"}});
+  BOOST_TEST(m.find("threshold 4 [48.125, 48.4375] lies in no grid cell where counts changes") != std::string::npos, m);
 }
 
 BOOST_AUTO_TEST_CASE(ensembles_are_read_written_and_read_back_and_a_wrong_count_is_refused) {
