@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace stoneskip {
 
@@ -24,18 +25,28 @@ void normalise_quaternion(StateVector& y) {
 }  // namespace
 
 Bs32Trial bs32_step(const Stone& stone, const Environment& env, const StateVector& y0, const StateVector& k1,
-                    double h, const WaterSurface* surface, const StateVector& atol, double rtol) {
+                    double h, const WaterSurface* surface, const StateVector& atol, double rtol,
+                    const FieldFunction* field) {
+  auto f = [&](const StateVector& y) {
+    if (!field) return rhs(stone, env, y, surface);
+    StateVector d;
+    (*field)(y.data(), d.data());
+    return d;
+  };
   // Butcher tableau (Bogacki & Shampine 1989): c = (0, 1/2, 3/4, 1);
   // b = (2/9, 1/3, 4/9, 0) (order 3), b̂ = (7/24, 1/4, 1/3, 1/8) (order 2).
   StateVector y;
   for (int i = 0; i < kStateSize; ++i) y[i] = y0[i] + 0.5 * h * k1[i];
-  const StateVector k2 = rhs(stone, env, y, surface);
+  const StateVector k2 = f(y);
   for (int i = 0; i < kStateSize; ++i) y[i] = y0[i] + 0.75 * h * k2[i];
-  const StateVector k3 = rhs(stone, env, y, surface);
+  const StateVector k3 = f(y);
   Bs32Trial t;
   for (int i = 0; i < kStateSize; ++i) t.y1[i] = y0[i] + h * (2.0 / 9.0 * k1[i] + 1.0 / 3.0 * k2[i] + 4.0 / 9.0 * k3[i]);
   normalise_quaternion(t.y1);
-  {
+  if (field) {
+    t.k4 = f(t.y1);
+    t.wetted_area_m2 = std::numeric_limits<double>::quiet_NaN();
+  } else {
     // k4 with the loads it used: the wetted area at y1 comes with it.
     Loads loads;
     const StateDerivative d = rigid_body_rhs(stone, env, from_vector(t.y1.data()), surface, &loads);

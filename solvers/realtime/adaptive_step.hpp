@@ -11,6 +11,8 @@
 // the cubic Hermite dense output (dense_output.hpp) for free, and it has the smallest error
 // constant of the common third-order pairs. The step is advanced with the third-order solution
 // (local extrapolation); the quaternion is renormalised before the last stage is evaluated.
+#include <functional>
+
 #include "model/stone/rigid_body.hpp"
 
 namespace stoneskip {
@@ -23,9 +25,14 @@ struct Bs32Trial {
   double position_error_m = 0;  // ‖(y1 − ŷ1)_x‖: the local error estimate of the position
 };
 
-// One trial step of size h from y0, with k1 = f(y0) given. Three right-hand sides.
+// A right-hand side other than the loads' own (a sliding field, filippov_sliding.hpp): dydt at y.
+using FieldFunction = std::function<void(const double* y, double* dydt)>;
+
+// One trial step of size h from y0, with k1 = f(y0) given. Three right-hand sides. With `field`,
+// the stages are its values (and wetted_area_m2 is NaN: the caller measures it).
 Bs32Trial bs32_step(const Stone& stone, const Environment& env, const StateVector& y0, const StateVector& k1,
-                    double h_s, const WaterSurface* surface, const StateVector& atol, double rtol);
+                    double h_s, const WaterSurface* surface, const StateVector& atol, double rtol,
+                    const FieldFunction* field = nullptr);
 
 // The next step size from the error norm of an accepted or a rejected one (Hairer, Nørsett &
 // Wanner §II.4, Eq. 4.13): h · min(5, max(0.2, 0.9 err^(−1/3))).

@@ -11,6 +11,7 @@
 #include "solvers/realtime/adaptive_step.hpp"
 #include "solvers/realtime/clocks.hpp"
 #include "solvers/realtime/dense_output.hpp"
+#include "solvers/realtime/sliding_steps.hpp"
 #include "solvers/realtime/state_scales.hpp"
 #include "solvers/realtime/stone_events.hpp"
 
@@ -436,6 +437,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
   StateVector k_start{};  // f at the start of the step (FSAL), valid while have_k
   bool have_k = false;
   KinkWatch kinks(stone, env, surface, kink_steps);
+  SlidingSteps sliding(stone, env, adaptive && surface == nullptr);  // bs32 in still water (sliding_steps.hpp)
   // The frame budget (bs32): the end of the current frame and the right-hand sides spent before it began.
   const bool budgeted = adaptive && o.rhs_per_frame > 0;
   double frame_end_s = 0;
@@ -544,11 +546,13 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
         while (frame_end_s <= t + 1e-9 * o.frame_dt_s) frame_end_s += o.frame_dt_s;
         frame_rhs0 = r.stats.rhs_evaluations;
       }
+      if (sliding.probe(r.stats.steps, t, s)) have_k = false;  // the steps stalled at an attracting switch
       if (!have_k) {
-        k_start = rhs(stone, env, y0, surface, step_start_pushes);
+        k_start = sliding.active() ? sliding.rhs(y0) : rhs(stone, env, y0, surface, step_start_pushes);
         ++r.stats.rhs_evaluations;
         have_k = true;
       }
+      if (sliding.active()) sliding.start_step(y0);
       kinks.start(y0);
       double h_resume = 0;  // the controller's proposal before an event cut the step back
       bool ok = false;
@@ -580,7 +584,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
           failed(t, m.str());
           break;
         }
-        trial = bs32_step(stone, env, y0, k_start, hh, surface, atol, o.rtol);
+        trial = bs32_step(stone, env, y0, k_start, hh, surface, atol, o.rtol, sliding.field());
         r.stats.rhs_evaluations += 3;
         const bool forced = budgeted && hh <= floor_h * (1 + 1e-12);
         if (forced && !std::isfinite(trial.error_norm)) {
@@ -610,6 +614,18 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
             continue;
           }
         }
+        if (sliding.active() && cuts < kMaxKinkCuts) {
+          // A sliding's exit or a hold's end inside the trial: cut back to just past it, as a kink.
+          const double f = sliding.first_root(dense);
+          const double cut = f * hh + event_window_s;
+          if (f > 0 && (1 - f) * hh > 2 * event_window_s && cut >= floor_h) {
+            if (h_resume == 0) h_resume = bs32_next_step(hh, trial.error_norm);
+            h = cut;
+            ++cuts;
+            ++r.stats.root_evaluations;
+            continue;
+          }
+        }
         if (trial.error_norm > 1.0) ++r.stats.budget_forced_steps;
         dt = hh;
         s_new = candidate;
@@ -621,8 +637,9 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
       }
       if (!ok) break;
       k_start = trial.k4;  // FSAL
-      trial_wetted_m2 = trial.wetted_area_m2;
+      trial_wetted_m2 = sliding.active() ? wetted_area(s_new) : trial.wetted_area_m2;
       have_dense = true;
+      if (sliding.after_step(t + dt, trial.y1)) have_k = false;  // the rules changed: f at the end with them
     }
     ++r.stats.steps;
     if (near) ++r.stats.contact_steps;
@@ -636,6 +653,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
           << energy(s_new) << " J against " << energy(initial)
           << " J at release): a contact too stiff for an explicit scheme, a vertex held at the surface (the CVODE "
              "reference, implicit, may solve these), or a state running away";
+        if (const std::string what = sliding.sliding_what(); !what.empty()) m << "; it collapsed while sliding along " << what;
         failed(t_new, m.str());
         s = s_new;
         t = t_new;
@@ -705,6 +723,8 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
   if (o.record_trajectory && (r.trajectory.empty() || r.trajectory.back().t_s < t))
     record(t, s, r.outcome != Outcome::failed && now.wet() ? wetted_area(s) : 0.0);
   finish_result(r, log, s, t);
+  r.stats.rhs_evaluations += sliding.extra_loads();  // right-hand sides are load evaluations
+  r.outcome_detail += sliding.summary(t);
   r.stats.cpu_s = cpu.seconds();
   r.stats.wall_s = wall.seconds();
   return r;

@@ -17,6 +17,10 @@
 // past its first root, located on the trial's cubic Hermite interpolant (dense_output.hpp), and
 // taken again; the fixed schemes then resume their step from there.
 //
+// Sliding (bs32 in still water, sliding_steps.hpp): where the steps stall at a loaded-region switch
+// that attracts from both sides (a sliding mode), bs32 steps on Filippov's sliding field
+// (filippov_sliding.hpp) and cuts its trials at the sliding's exit, as at a kink.
+//
 // Budget (bs32 only, rhs_per_frame > 0): the real-time mode. Steps end on the frames' boundaries
 // (frame_dt_s) and a frame spends at most rhs_per_frame right-hand sides: when the error test would
 // need more, the step is taken at the size the remaining budget allows and accepted whatever its

@@ -37,7 +37,7 @@
 
 #include "solvers/realtime/clocks.hpp"
 #include "solvers/reference/absolute_tolerance.hpp"
-#include "solvers/reference/filippov_sliding.hpp"
+#include "solvers/realtime/filippov_sliding.hpp"
 #include "solvers/realtime/stone_events.hpp"
 
 namespace stoneskip {

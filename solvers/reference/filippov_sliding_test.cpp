@@ -10,7 +10,7 @@
 #include "model/stone/throw.hpp"
 #include "solvers/realtime/stone_stepper.hpp"
 #include "solvers/reference/cvode_stone.hpp"
-#include "solvers/reference/filippov_sliding.hpp"
+#include "solvers/realtime/filippov_sliding.hpp"
 
 using namespace stoneskip;
 
@@ -237,6 +237,50 @@ BOOST_AUTO_TEST_CASE(a_step_that_fails_its_error_test_more_than_seven_times_goes
     BOOST_TEST(std::abs(r.contacts[1].start_s - x->contacts[1].start_s) <= kAgainstTight_s);
     BOOST_TEST(std::abs(r.end_time_s - x->end_time_s) <= kAgainstTight_s);
   }
+}
+
+BOOST_AUTO_TEST_CASE(the_real_time_stepper_slides_where_its_steps_stalled) {
+  // The 10 m/s, 1 rev/s lens throw at 8° attack slides on face 1 twice near t = 0.845 s. bs32 at
+  // rtol = atol_m 1e-10 and 1e-11, chattering across the switch under its error control, collapsed
+  // there before 5 December (20 000 steps in 0.17 ms); it now slides (sliding_steps.hpp).
+  // Oracle: the reference at rtol 1e-12 (BDF), which slides there too. Tolerance 1e-7 s: bs32's own
+  // error, measured 2.4e-8 and 2.8e-9 s on the sinking at 1e-10 and 1e-11 (3.7e-7 s at 1e-9).
+  constexpr double kTol_s = 1e-7;
+  const LensThrow t(10, 1, 8);
+  const ThrowResult ref = reference(t, 10);
+  BOOST_TEST_REQUIRE((ref.outcome == Outcome::sank), ref.outcome_detail);
+  BOOST_TEST_REQUIRE(ref.contacts.size() == 2u);
+  for (double tol : {1e-10, 1e-11}) {
+    const ThrowResult e = bs32(t, tol);
+    BOOST_TEST_REQUIRE((e.outcome == Outcome::sank), e.outcome_detail);
+    BOOST_TEST_REQUIRE(e.contacts.size() == 2u);
+    BOOST_TEST(e.outcome_detail.find("slid along") != std::string::npos, e.outcome_detail);
+    BOOST_TEST(e.outcome_detail.find("face 1 ") != std::string::npos, e.outcome_detail);
+    BOOST_TEST(std::abs(e.contacts[1].start_s - ref.contacts[1].start_s) <= kTol_s, tol);
+    BOOST_TEST(std::abs(e.end_time_s - ref.end_time_s) <= kTol_s, tol);
+    BOOST_TEST(e.max_energy_gain_J == 0.0);  // a convex combination of passive fields
+  }
+}
+
+BOOST_AUTO_TEST_CASE(the_real_time_stepper_with_every_kink_slides_at_the_lens_planing_exit) {
+  // With kinks = "all" bs32 cuts every trial back to the loaded-region switch, and at the lens
+  // throw's planing exit (t ≈ 0.78817 s, face 4) it collapsed before 5 December; it now slides.
+  // Oracle: the reference at rtol 1e-12. Tolerance 1e-5 s: the default tolerance's own error, bs32
+  // at 1e-9 with the default kinks (which steps across the switch) starts the third contact 3.6e-6 s
+  // off the reference (measured; with every kink, 3.6e-6 s and the sinking 6.4e-7 s).
+  constexpr double kTol_s = 1e-5;
+  const LensThrow t;
+  const ThrowResult ref = reference(t, 10);
+  RealtimeOptions o;
+  o.kinks = KinkSteps::all;
+  o.record_trajectory = false;
+  const ThrowResult e = run_realtime(t.stone, t.env, t.s0, o);
+  BOOST_TEST_REQUIRE((e.outcome == Outcome::sank), e.outcome_detail);
+  BOOST_TEST_REQUIRE(e.contacts.size() == ref.contacts.size());
+  BOOST_TEST(e.outcome_detail.find("face 4 ") != std::string::npos, e.outcome_detail);
+  BOOST_TEST(e.bounces == ref.bounces);
+  BOOST_TEST(std::abs(e.contacts[2].start_s - ref.contacts[2].start_s) <= kTol_s);
+  BOOST_TEST(std::abs(e.end_time_s - ref.end_time_s) <= kTol_s);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -84,15 +84,19 @@ BOOST_AUTO_TEST_CASE(stored_baselines_pass) {
 }
 
 BOOST_AUTO_TEST_CASE(a_baseline_with_changed_counts_fails_and_names_the_difference) {
-  // Oracle: every stored count, single and ensemble, shifted by 7 — no run of the stored settings
-  // can give all of them (the robust values' ensembles, without spread, are compared exactly), and a
-  // grid spacing (5 rev/s) far wider than compare_tolerance leaves values away from thresholds.
+  // Oracle: every stored count, single, ensemble and either side of a threshold, shifted by 7 (a
+  // [result] that still answers its own counts: baseline_file.cpp refuses one that does not) — no
+  // run of the stored settings can give all of them (the robust values' ensembles, without spread,
+  // are compared exactly), and a grid spacing (5 rev/s) far wider than compare_tolerance leaves
+  // values away from thresholds.
   BOOST_REQUIRE(fs::exists(kStored));
   const fs::path perturbed = copy_baseline(kStored, "perturbed.toml", [](const std::string& text) {
-    const std::regex counts_line("counts = \\[([^\\]]*)\\]");
-    std::smatch m;
     std::string out = text;
-    if (std::regex_search(text, m, counts_line)) {
+    for (const std::string key : {"\ncounts", "\nthreshold_count_below", "\nthreshold_count_above"}) {
+      const std::regex line(key + " = \\[([^\\]]*)\\]");
+      std::smatch m;
+      const std::string before = out;
+      BOOST_REQUIRE(std::regex_search(before, m, line));
       std::stringstream in(m[1].str()), shifted;
       std::string item;
       bool first = true;
@@ -100,7 +104,7 @@ BOOST_AUTO_TEST_CASE(a_baseline_with_changed_counts_fails_and_names_the_differen
         shifted << (first ? "" : ", ") << std::stoi(item) + 7;
         first = false;
       }
-      out = m.prefix().str() + "counts = [" + shifted.str() + "]" + m.suffix().str();
+      out = m.prefix().str() + key + " = [" + shifted.str() + "]" + m.suffix().str();
     }
     // The ensemble rows ("  1, 1, ..., 1,"), each count + 7.
     const std::size_t at = out.find("ensemble_counts = [");
@@ -128,7 +132,7 @@ BOOST_AUTO_TEST_CASE(a_baseline_with_changed_counts_fails_and_names_the_differen
 }
 
 BOOST_AUTO_TEST_CASE(a_moved_threshold_fails) {
-  // Oracle: the first stored threshold moved by 10 compare tolerances; a correct run puts it back.
+  // Oracle: the first stored threshold moved by 6 compare tolerances; a correct run puts it back.
   BOOST_REQUIRE(fs::exists(kStored));
   const std::string text = slurp(kStored);
   if (text.find("threshold_lo = []") != std::string::npos) return;  // no threshold stored: nothing to move
@@ -138,9 +142,9 @@ BOOST_AUTO_TEST_CASE(a_moved_threshold_fails) {
       const std::size_t at = out.find(key);
       const std::size_t start = at + std::string(key).size();
       const std::size_t end = out.find_first_of(",]", start);
-      // 10 × compare_tolerance 0.5, down: into the cell [0, 5], whose counts are robust (up, it
-      // would overlap the second threshold, which is bad input now).
-      const double v = std::stod(out.substr(start, end - start)) - 5.0;
+      // 6 × compare_tolerance 0.5, up, within its own cell [5, 10] (elsewhere it would answer no
+      // change of the counts, or overlap the second threshold: bad input).
+      const double v = std::stod(out.substr(start, end - start)) + 3.0;
       out = out.substr(0, start) + std::to_string(v) + out.substr(end);
     }
     return out;

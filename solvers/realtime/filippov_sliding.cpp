@@ -1,4 +1,4 @@
-#include "solvers/reference/filippov_sliding.hpp"
+#include "solvers/realtime/filippov_sliding.hpp"
 
 #include <algorithm>
 #include <cmath>

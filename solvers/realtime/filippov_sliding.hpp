@@ -33,6 +33,7 @@
 // or β reaches 0 or 1 (that face leaves, out or in, and is held; the other slides on alone with it
 // held, where its switch attracts, else is held too) or where the solution ceases to exist.
 // More than two switches at zero at once are not treated; attracting() says so.
+// Used by the CVODE reference (cvode_stone.cpp) and the adaptive real-time stepper (sliding_steps.hpp).
 // a_i is the central difference of g along f_i over ±kDirectionalStep_s. g is smooth in the state
 // away from a vertex crossing the raised waterline; round-off in g (world positions of metres) over
 // 2ε dominates the truncation error: ~1e-7 of a typical a_i of 1–10 m/s², ample for α and for the
