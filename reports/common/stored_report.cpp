@@ -18,8 +18,15 @@ namespace {
 StoredReport load_in_process(const std::filesystem::path& data_h5) {
   Hdf5Reader in(data_h5);
   const H5Group& root = in.root();
-  if (!root.has_attr("report") || !root.has("sections") || !root.has("report"))
+  if (!root.has_attr("report") || !root.has("sections") || !root.has("report")) {
+    // A sweep-plot folder's data.h5 (its figures and the sweep it came from, sweep_page.cpp) is
+    // redrawn from that sweep, not rendered.
+    if (root.has("figures") && root.has_attr("source"))
+      throw_input_error(data_h5.string(), 0, "",
+                        "the data file of a `sweep-plot` folder, not of a report: redraw it with `stoneskip sweep-plot " +
+                            root.attr_string("source") + " --out DIR`");
     throw_input_error(data_h5.string(), 0, "", "not the data file of a stoneskip report (no /report and /sections)");
+  }
   StoredReport s;
   s.file = data_h5;
   try {

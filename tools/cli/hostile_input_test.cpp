@@ -638,6 +638,11 @@ BOOST_AUTO_TEST_CASE(a_nan_limit_and_an_unknown_command_are_named) {
   // range check by comparing false; a misspelt command was only "a subcommand is required".
   expect_refused(run_apart("run cases/spin_sweep_base.toml --max-memory-gb nan"), {"--max-memory-gb: not a number: nan"});
   expect_refused(run_apart("frobnicate cases/spin_sweep_base.toml"), {"unknown command 'frobnicate'"});
+  // One level down too: `report sweep` said only that a subcommand is required.
+  expect_refused(run_apart("report sweep"),
+                 {"report: unknown subcommand 'sweep' (one of front, render, scene, stones, waves",
+                  "a sweep's maps come from `stoneskip sweep-plot FILE`"});
+  expect_refused(run_apart("capture frob"), {"capture: unknown subcommand 'frob' (one of validate,"});
 }
 
 BOOST_AUTO_TEST_CASE(a_latin1_field_is_quoted_as_escapes_not_raw_bytes) {

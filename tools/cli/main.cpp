@@ -102,6 +102,24 @@ int run_main(int argc, char** argv) {
     std::fprintf(stderr, "stoneskip: unknown command '%s' (see --help)\n", one_line(argv[1]).c_str());
     return 2;
   }
+  // The same one level down, for a command made of subcommands (`report sweep` said only that a
+  // subcommand is required): the word is named, with the ones there are.
+  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+    if (argc < 3 || !sub->check_name(argv[1]) || sub->get_require_subcommand_min() == 0 || argv[2][0] == '-') continue;
+    std::string names;
+    bool found = false;
+    for (const CLI::App* leaf : sub->get_subcommands([](CLI::App*) { return true; })) {
+      found = found || leaf->check_name(argv[2]);
+      names += (names.empty() ? "" : ", ") + leaf->get_name();
+    }
+    if (found) break;
+    const std::string word = argv[2];
+    std::fprintf(stderr, "stoneskip: %s: unknown subcommand '%s' (one of %s%s; see stoneskip %s --help)\n", sub->get_name().c_str(),
+                 one_line(word).c_str(), names.c_str(),
+                 sub->get_name() == "report" && word == "sweep" ? "; a sweep's maps come from `stoneskip sweep-plot FILE`" : "",
+                 sub->get_name().c_str());
+    return 2;
+  }
   int code = 0;
   try {
     app.parse(argc, argv);

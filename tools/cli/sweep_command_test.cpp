@@ -548,6 +548,14 @@ BOOST_AUTO_TEST_CASE(sweep_plot_maps_hold_the_tables_counts) {
   double throws = 0;
   for (double n : h.column("throws")) throws += n;
   BOOST_TEST(throws == 12);
+
+  // `report render` of a sweep-plot folder said only "not the data file of a stoneskip report":
+  // it now says what the folder is and how to redraw it (exit 2, one line naming the sweep).
+  const Outcome render = command("report render " + ldir.string());
+  BOOST_TEST(render.status == 2);
+  BOOST_TEST(render.err.find("the data file of a `sweep-plot` folder, not of a report: redraw it with `stoneskip sweep-plot " +
+                             lout.string()) != std::string::npos,
+             render.err);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

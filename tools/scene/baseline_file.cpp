@@ -180,7 +180,7 @@ BounceBaseline read_baseline(const std::string& path) {
       // (one per grid cell, ascending). Its width may pass threshold_tolerance: a bisection that
       // stopped at a failed run keeps its bracket (cases/baselines/spin_paper_realtime.toml).
       if (th.lo < b.values.front() || th.hi > b.values.back())
-        r->fail("threshold_lo", "threshold " + std::to_string(i + 1) + " [" + text(th.lo) + ", " + text(th.hi) +
+        r->fail(th.lo < b.values.front() ? "threshold_lo" : "threshold_hi", "threshold " + std::to_string(i + 1) + " [" + text(th.lo) + ", " + text(th.hi) +
                                     "] lies outside the grid [" + text(b.values.front()) + ", " + text(b.values.back()) + "]");
       if (th.count_below == th.count_above)
         r->fail("threshold_count_above", "threshold " + std::to_string(i + 1) + " changes nothing (" +

@@ -104,6 +104,9 @@ BOOST_AUTO_TEST_CASE(a_damaged_result_is_bad_input_naming_its_key) {
   m = refusal("threshold_lo = [14.375", "threshold_lo = [-1.375");
   BOOST_TEST(m.find("result.threshold_lo") != std::string::npos, m);
   BOOST_TEST(m.find("outside the grid [0, 60]") != std::string::npos, m);
+  m = refusal("threshold_hi = [14.6875, 22.8125, 34.6875, 48.4375, 50.9375]",
+              "threshold_hi = [14.6875, 22.8125, 34.6875, 48.4375, 60.9375]");  // the last ends past 60
+  BOOST_TEST(m.find("result.threshold_hi: threshold 5 [50.625, 60.9375] lies outside the grid [0, 60]") != std::string::npos, m);
   m = refusal("threshold_count_above = [3", "threshold_count_above = [1");
   BOOST_TEST(m.find("changes nothing") != std::string::npos, m);
   m = refusal("threshold_lo = [14.375, 22.5", "threshold_lo = [22.5, 14.375");

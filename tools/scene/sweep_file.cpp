@@ -217,14 +217,24 @@ SweepCases::SweepCases(const SweepFile& sweep) : sweep_(sweep) {
       return e;
     } catch (const InputError& e) {
       // Blame the varied key the case reader named, or the first one.
-      const std::string what = e.what();
+      std::string what = e.what();
       std::size_t k = 0;
       for (std::size_t j = 0; j < n; ++j)
         if (what.find(d.axes[j].key) != std::string::npos) k = j;
+      // The reader refused the override itself ("--set thrw: unknown key", a command line's words):
+      // here it is the varied key, the axis whose key it begins.
+      std::string label = "vary[" + std::to_string(k + 1) + "]";
+      if (const auto at = what.find("--set "); at != std::string::npos) {
+        const std::string named = what.substr(at + 6, what.find(':', at) - at - 6);
+        for (std::size_t j = 0; j < n; ++j)
+          if (d.axes[j].key.rfind(named, 0) == 0) k = j;
+        what.replace(at, 6, "the varied key ");
+        label = "vary[" + std::to_string(k + 1) + "].key";
+      }
+      if (what.find("unknown key") != std::string::npos) label = "vary[" + std::to_string(k + 1) + "].key";
       std::string values;
       for (std::size_t j = 0; j < n; ++j) values += (j ? ", " : "") + sweep_override(d.axes[j].key, p[j]);
-      throw_input_error(sweep.file, sweep.axis_lines[k], "vary[" + std::to_string(k + 1) + "]",
-                        "the base case refuses the throw at " + values + ": " + what);
+      throw_input_error(sweep.file, sweep.axis_lines[k], label, "the base case refuses the throw at " + values + ": " + what);
     }
   };
   // How heavy a probe is against the limits: the largest fraction of any limit it uses.

@@ -202,7 +202,10 @@ BOOST_AUTO_TEST_CASE(bad_sweep_files_fail_with_one_line_naming_file_line_and_key
       {replace(kGrid, "from = 0.5", "from = 3.0"), "s.toml:13: vary[2].to", "must not exceed"},
       {replace(kGrid, "from = 0.5", "from = 0.0"), "s.toml:12: vary[2].from", "log axis"},
       {replace(kGrid, "environment.water_coefficient", "environment.convention"), "s.toml:11: vary[2].key", "not a numeric key"},
-      {replace(kGrid, "throw.speed_m_s", "throw.sped_m_s"), "s.toml:6: vary[1]", "unknown key"},
+      {replace(kGrid, "throw.speed_m_s", "throw.sped_m_s"), "s.toml:6: vary[1].key", "unknown key"},
+      // A misspelt table: the reader's words ("--set thrw") were a command line's, not the file's.
+      {replace(kGrid, "key = \"environment.water_coefficient\"", "key = \"environmnt.water_coefficient\""),
+       "s.toml:11: vary[2].key", "the varied key environmnt: unknown key"},
       {replace(kGrid, "from = 4.0", "from = -4.0"), "s.toml:6: vary[1]", "speed_m_s"},
       {replace(kGrid, "paper_8ms_spin.toml", "missing.toml"), "s.toml:1: base", "no such file"},
       {replace(kGrid, "kind = \"grid\"", "kind = \"grid\"\nseed = 3"), "s.toml:5: design.seed", "random designs"},
