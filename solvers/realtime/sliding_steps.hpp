@@ -3,10 +3,13 @@
 // loaded-region switch that attracts from both sides (filippov_sliding.hpp), it steps on Filippov's
 // sliding field instead of chattering across the switch under its error control, which bounds the
 // step by the jump in the loads there (on lens stones at rtol 1e-10 and tighter the step collapsed,
-// solvers/README.md). As the reference does (cvode_stone.cpp), it looks where kProbeSteps steps
-// advance less than kProbeSpan_s, slides on one switch or two, and watches each rule's root
-// function (a sliding's exit, a hold's end): a step over which one falls through zero is cut back
-// to just past it on the step's interpolant and taken again, and the rules change at its end.
+// solvers/README.md). It looks for an attracting switch at zero as the reference does
+// (cvode_stone.cpp), but only where kProbeSteps steps advance less than kProbeSpan_s: an explicit
+// pair cannot follow a sliding mode without chattering across it, which shrinks its steps (the
+// reference's BDF can, so it looks every 20 steps). It slides on one switch or two, and watches
+// each rule's root function (a sliding's exit, a hold's end): a step over which one falls through
+// zero is cut back to just past it on the step's interpolant and taken again, and the rules
+// change at its end.
 // A run that never stalls at such a switch is unchanged to the bit.
 #include <optional>
 #include <string>
