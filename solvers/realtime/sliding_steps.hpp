@@ -18,6 +18,7 @@
 #include "solvers/realtime/adaptive_step.hpp"
 #include "solvers/realtime/dense_output.hpp"
 #include "solvers/realtime/filippov_sliding.hpp"
+#include "solvers/realtime/sliding_record.hpp"
 
 namespace stoneskip {
 
@@ -35,7 +36,7 @@ class SlidingSteps {
   SlidingSteps(const SlidingSteps&) = delete;  // field_ holds this
   SlidingSteps& operator=(const SlidingSteps&) = delete;
 
-  bool active() const { return !rules_.empty(); }
+  bool active() const { return !record_.rules().empty(); }
   // The right-hand side while active (nullptr when not).
   const FieldFunction* field() const { return active() ? &field_ : nullptr; }
   // The loads' right-hand side at y under the rules (one evaluation's worth of loads counted).
@@ -57,31 +58,22 @@ class SlidingSteps {
   // Load evaluations the stepper did not count (a sliding right-hand side evaluates the loads two
   // or four times, a root function as often).
   long extra_loads() const { return extra_loads_; }
-  // "; slid along … (Filippov) n time(s), … ms in all: face …", or empty.
-  std::string summary(double t_end) const;
-  // What was sliding when a step collapsed, for the failure's message (empty if nothing).
-  std::string sliding_what() const;
+  // The rules and the slides (the outcome's account: summary, sliding_what).
+  const SlidingRecord& record() const { return record_; }
 
  private:
-  int sliding_count() const;
-  void start(const SlidingChoice& c, double t);
   std::vector<double> roots_at(const StateVector& y);
 
   std::optional<FilippovSliding> sliding_;
   bool still_water_;
   const Stone& stone_;
   const Environment& env_;
-  FaceRules rules_;
+  SlidingRecord record_;
   FieldFunction field_;
   std::vector<double> roots0_;  // the rules' root values where the step began
   long probe_steps_ = 0;
   double probe_t_ = 0;
   long extra_loads_ = 0;
-  struct Slide {
-    int face = -1, face2 = -1;
-    double from_s = 0, to_s = -1;  // to_s < 0: still sliding
-  };
-  std::vector<Slide> slides_;
 };
 
 }  // namespace stoneskip

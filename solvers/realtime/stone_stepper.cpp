@@ -653,7 +653,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
           << energy(s_new) << " J against " << energy(initial)
           << " J at release): a contact too stiff for an explicit scheme, a vertex held at the surface (the CVODE "
              "reference, implicit, may solve these), or a state running away";
-        if (const std::string what = sliding.sliding_what(); !what.empty()) m << "; it collapsed while sliding along " << what;
+        if (const std::string what = sliding.record().sliding_what(); !what.empty()) m << "; it collapsed while sliding along " << what;
         failed(t_new, m.str());
         s = s_new;
         t = t_new;
@@ -724,7 +724,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
     record(t, s, r.outcome != Outcome::failed && now.wet() ? wetted_area(s) : 0.0);
   finish_result(r, log, s, t);
   r.stats.rhs_evaluations += sliding.extra_loads();  // right-hand sides are load evaluations
-  r.outcome_detail += sliding.summary(t);
+  r.outcome_detail += sliding.record().summary(t, "stalled");
   r.stats.cpu_s = cpu.seconds();
   r.stats.wall_s = wall.seconds();
   return r;

@@ -38,6 +38,7 @@
 #include "solvers/realtime/clocks.hpp"
 #include "solvers/reference/absolute_tolerance.hpp"
 #include "solvers/realtime/filippov_sliding.hpp"
+#include "solvers/realtime/sliding_record.hpp"
 #include "solvers/realtime/stone_events.hpp"
 
 namespace stoneskip {
@@ -98,7 +99,7 @@ struct Problem {
   // Up to two faces' loaded-region switches treated apart (filippov_sliding.hpp), each with one
   // more root function: sliding along one switch or two (the root: the exit), or held on the side a
   // sliding left to (the root: g crossing back).
-  FaceRules rules;
+  SlidingRecord record;
   // Load evaluations CVODE does not count: a sliding right-hand side evaluates the loads twice (f₀
   // and f₁) on one switch and four times on two, its exit function as often again
   // (filippov_sliding.hpp).
@@ -123,10 +124,10 @@ int rhs_callback(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
       return 1;  // recoverable: CVODE retries with a smaller step, and gives up after a few
     }
   }
-  if (p.rules.empty())
+  if (p.record.rules().empty())
     rigid_body_rhs(p.stone, p.env, yy, dy);
   else
-    p.uncounted_loads += p.sliding.rhs(p.rules, yy, dy) - 1;
+    p.uncounted_loads += p.sliding.rhs(p.record.rules(), yy, dy) - 1;
   for (int k = 0; k < kStateSize; ++k) {
     if (!std::isfinite(dy[k])) {
       note_nan(p, "right-hand side", t);
@@ -139,7 +140,8 @@ int rhs_callback(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
 int root_callback(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
   auto& p = *static_cast<Problem*>(user);
   if (p.events.evaluate(N_VGetArrayPointer(y), g)) {
-    if (!p.rules.empty()) p.uncounted_loads += p.sliding.roots(p.rules, N_VGetArrayPointer(y), g + p.events.count());
+    if (!p.record.rules().empty())
+      p.uncounted_loads += p.sliding.roots(p.record.rules(), N_VGetArrayPointer(y), g + p.events.count());
     return 0;
   }
   note_nan(p, "state or a root function", t);
@@ -194,10 +196,7 @@ class ReferenceSolve {
   void continue_after_event();
   void set_roots();          // the root functions of the mode (the events', and a sliding's exit)
   bool try_sliding();        // where the steps collapse: slide along an attracting switch, if one is there
-  void start_sliding(const SlidingChoice& c, double t);
   void face_root_found(double t, const RigidState& s);  // a sliding's exit, or a hold's end
-  int sliding_faces() const;           // how many faces slide now (0, 1 or 2)
-  std::string sliding_what() const;    // "face 4's loaded-region switch", or the two faces' intersection
   void count_steps_to_event();
   void add_segment_stats();
   RigidState state() const;  // the current CVODE vector as a state, quaternion normalised
@@ -220,12 +219,8 @@ class ReferenceSolve {
   std::vector<int> found_;
   std::vector<int> root_directions_;
   int roots_now_ = 0;                // the number of root functions CVODE has
-  // Filippov sliding (filippov_sliding.hpp): the intervals slid, and why a collapse found none.
-  struct Slide {
-    int face = -1, face2 = -1;  // face2: the second face, sliding on the two switches' intersection
-    double from_s = 0, to_s = 0;
-  };
-  std::vector<Slide> slides_;
+  // Filippov sliding (filippov_sliding.hpp; the rules and slides in problem_.record): why a
+  // collapse found none.
   std::string no_slide_;
   long probe_steps_ = 0;             // the sliding probe's window: total steps where it began
   std::vector<double> event_times_;  // ring of the last max_events_per_ms event times
@@ -359,7 +354,7 @@ void ReferenceSolve::restart(double t) {
 // hold's value), watched falling through zero. CVodeRootInit (which resets the directions) only
 // where the count changes.
 void ReferenceSolve::set_roots() {
-  const int extra = static_cast<int>(problem_.rules.size());
+  const int extra = static_cast<int>(problem_.record.rules().size());
   const int n = events_.count() + extra;
   if (n != roots_now_) {
     check(CVodeRootInit(cv_.mem, n, root_callback), "CVodeRootInit");
@@ -378,54 +373,29 @@ void ReferenceSolve::set_roots() {
 // restarts from the last good state on the sliding field. A collapse while sliding on two, or on
 // one with no second switch to add, fails the solve; so does sliding more than kMaxSlides times.
 bool ReferenceSolve::try_sliding() {
-  if (!sliding_.available() || sliding_faces() == 2) return false;  // says nothing where none can be
-  if (slides_.size() >= kMaxSlides) {
-    no_slide_ = "it slid " + std::to_string(slides_.size()) + " times already (kMaxSlides)";
+  const int sliding = problem_.record.sliding_count();
+  if (!sliding_.available() || sliding == 2) return false;  // says nothing where none can be
+  if (problem_.record.slides() >= kMaxSlides) {
+    no_slide_ = "it slid " + std::to_string(problem_.record.slides()) + " times already (kMaxSlides)";
     return false;
   }
-  const SlidingChoice c = sliding_.attracting(last_good_, problem_.rules);
+  const SlidingChoice c = sliding_.attracting(last_good_, problem_.record.rules());
   if (c.face < 0) {
     no_slide_ = c.why;
     return false;
   }
-  if (sliding_faces() == 1 && c.face2 < 0) {  // the switch it slides on: nothing to add
+  if (sliding == 1 && c.face2 < 0) {  // the switch it slides on: nothing to add
     no_slide_ = "no other loaded-region switch is at zero there";
     return false;
   }
   const StateVector y = to_vector(last_good_);
   std::copy(y.begin(), y.end(), N_VGetArrayPointer(cv_.y));
   t_ = last_good_t_;
-  start_sliding(c, t_);
+  problem_.record.start(c, t_);
   restart(t_);
   window_steps_ = probe_steps_ = r_.stats.steps;
   window_t_ = t_;
   return true;
-}
-
-int ReferenceSolve::sliding_faces() const {
-  return static_cast<int>(std::count_if(problem_.rules.begin(), problem_.rules.end(), [](const FaceRule& r) { return r.sliding; }));
-}
-
-std::string ReferenceSolve::sliding_what() const {
-  std::vector<int> faces;
-  for (const FaceRule& r : problem_.rules)
-    if (r.sliding) faces.push_back(r.face);
-  std::ostringstream m;
-  if (faces.size() == 1) m << "face " << faces[0] << "'s loaded-region switch";
-  if (faces.size() == 2) m << "the intersection of faces " << faces[0] << " and " << faces[1] << "'s loaded-region switches";
-  return m.str();
-}
-
-// The sliding faces replace any sliding now (ending its interval); held faces stay held.
-void ReferenceSolve::start_sliding(const SlidingChoice& c, double t) {
-  if (sliding_faces() > 0) slides_.back().to_s = t;
-  FaceRules next;
-  for (const FaceRule& r : problem_.rules)
-    if (!r.sliding) next.push_back(r);
-  next.push_back({c.face, true, 0});
-  if (c.face2 >= 0) next.push_back({c.face2, true, 0});
-  problem_.rules = next;
-  slides_.push_back({c.face, c.face2, t, t});
 }
 
 // The faces' own roots: a sliding's exit (a face is held on the side the state leaves to, and where
@@ -436,20 +406,13 @@ void ReferenceSolve::start_sliding(const SlidingChoice& c, double t) {
 void ReferenceSolve::face_root_found(double t, const RigidState& s) {
   const StateVector y = to_vector(s);
   const int* found = found_.data() + events_.count();
+  SlidingRecord& record = problem_.record;
   bool hold_ended = false;
-  for (std::size_t k = 0; k < problem_.rules.size(); ++k) hold_ended = hold_ended || (!problem_.rules[k].sliding && found[k]);
-  const int before = sliding_faces();
-  const FaceRules next = sliding_.after_roots(problem_.rules, found, y.data());
-  problem_.rules = next;
-  const int after = sliding_faces();
-  if (before > 0 && after != before) {
-    slides_.back().to_s = t;
-    for (const FaceRule& r : next)
-      if (r.sliding) slides_.push_back({r.face, -1, t, t});
-  }
-  if (!hold_ended || after > 0 || slides_.size() >= kMaxSlides) return;
-  const SlidingChoice c = sliding_.attracting(s, problem_.rules);
-  if (c.face >= 0) start_sliding(c, t);
+  for (std::size_t k = 0; k < record.rules().size(); ++k) hold_ended = hold_ended || (!record.rules()[k].sliding && found[k]);
+  record.set(sliding_.after_roots(record.rules(), found, y.data()), t);
+  if (!hold_ended || record.sliding_count() > 0 || record.slides() >= kMaxSlides) return;
+  const SlidingChoice c = sliding_.attracting(s, record.rules());
+  if (c.face >= 0) record.start(c, t);
 }
 
 // No restart: CVODE keeps its history; only the directions to watch change with the mode. CVODE
@@ -512,7 +475,7 @@ bool ReferenceSolve::handle_root(double t) {
   check(CVodeGetRootInfo(cv_.mem, found_.data()), "CVodeGetRootInfo");
   // The face's own root (a sliding's exit, a hold's end): the rule changes, after a restart.
   bool face_root = false;
-  for (std::size_t k = 0; k < problem_.rules.size(); ++k)
+  for (std::size_t k = 0; k < problem_.record.rules().size(); ++k)
     face_root = face_root || found_[static_cast<std::size_t>(events_.count()) + k] != 0;
   // The returned vector is CVODE's output copy: renormalising it changes the integration only
   // where a restart takes it as the new initial value.
@@ -642,8 +605,9 @@ void ReferenceSolve::integrate() {
         m << "the step size collapsed: " << total - window_steps_ << " steps from t = " << window_t_ << " s to " << t_
           << " s, less than 1 ms (ReferenceOptions::max_steps_per_ms): the right-hand side is probably singular "
              "or discontinuous there, where no event is located (a sliding mode, say)";
-        if (sliding_faces() > 0)
-          m << "; it collapsed while sliding along " << sliding_what() << " (since t = " << slides_.back().from_s << " s)"
+        if (problem_.record.sliding_count() > 0)
+          m << "; it collapsed while sliding along " << problem_.record.sliding_what() << " (since t = "
+            << problem_.record.sliding_since() << " s)"
             << (no_slide_.empty() ? "" : "; no second switch to add: " + no_slide_);
         else if (!no_slide_.empty())
           m << "; no sliding mode was found to treat: " << no_slide_;
@@ -727,8 +691,9 @@ void ReferenceSolve::integrate() {
     }
     // Repeated error-test or convergence failures are how a sliding mode can also show.
     if ((flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE) && try_sliding()) continue;
-    if (sliding_faces() > 0)
-      m << "; it failed while sliding along " << sliding_what() << " (since t = " << slides_.back().from_s << " s)";
+    if (problem_.record.sliding_count() > 0)
+      m << "; it failed while sliding along " << problem_.record.sliding_what() << " (since t = "
+        << problem_.record.sliding_since() << " s)";
     else if (!no_slide_.empty() && (flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE))
       m << "; no sliding mode was found to treat: " << no_slide_;
     fail(m.str());
@@ -754,7 +719,6 @@ void ReferenceSolve::finish(const RigidState& s0) {
     s_end = last_good_;
     t_ = last_good_t_;
   }
-  if (sliding_faces() > 0) slides_.back().to_s = t_;  // still sliding at the end
   r_.stats.rhs_evaluations += problem_.uncounted_loads;  // right-hand sides are load evaluations
   const bool cut = r_.outcome == Outcome::failed && log_.in_contact();
   if (log_.in_contact()) log_.end(t_, s_end, energy(s_end), false);
@@ -766,19 +730,7 @@ void ReferenceSolve::finish(const RigidState& s0) {
   if (rcheck_restarts_ > 0)
     extra << "; restarted at " << rcheck_restarts_ << " event(s) where CVODE refused to continue past a root function "
           << "that stayed exactly zero (cvRcheck2)";
-  if (!slides_.empty()) {
-    double total = 0;
-    for (const Slide& sl : slides_) total += sl.to_s - sl.from_s;
-    extra << "; slid along loaded-region switches (Filippov; the steps collapsed there) " << slides_.size()
-          << " time(s), " << std::setprecision(4) << total * 1e3 << " ms in all:" << std::setprecision(9);
-    for (std::size_t k = 0; k < slides_.size() && k < 3; ++k) {
-      extra << (k ? "," : "") << " face " << slides_[k].face;
-      if (slides_[k].face2 >= 0) extra << " and " << slides_[k].face2 << " together";
-      extra << " from t = " << slides_[k].from_s << " s to " << slides_[k].to_s << " s";
-    }
-    if (slides_.size() > 3) extra << ", …";
-    extra << std::setprecision(6);
-  }
+  extra << problem_.record.summary(t_, "collapsed");
   if (max_q_drift_ > kReportedQuaternionDrift) extra << "; quaternion norm drifted by up to " << max_q_drift_ << " between restarts";
   r_.outcome_detail += extra.str();
 }
