@@ -2,8 +2,8 @@
 
 namespace stoneskip {
 
-SlidingSteps::SlidingSteps(const Stone& stone, const Environment& env, bool still_water)
-    : still_water_(still_water), stone_(stone), env_(env) {
+SlidingSteps::SlidingSteps(const Stone& stone, const Environment& env, bool enabled)
+    : enabled_(enabled), stone_(stone), env_(env) {
   field_ = [this](const double* y, double* dydt) { extra_loads_ += sliding_->rhs(record_.rules(), y, dydt) - 1; };
 }
 
@@ -22,7 +22,7 @@ std::vector<double> SlidingSteps::roots_at(const StateVector& y) {
 void SlidingSteps::start_step(const StateVector& y) { roots0_ = roots_at(y); }
 
 bool SlidingSteps::probe(long steps, double t, const RigidState& s) {
-  if (!still_water_ || steps - probe_steps_ < kProbeSteps) return false;
+  if (!enabled_ || steps - probe_steps_ < kProbeSteps) return false;
   const bool stalled = t - probe_t_ < kProbeSpan_s;
   probe_steps_ = steps;
   probe_t_ = t;

@@ -31,8 +31,9 @@ class SlidingSteps {
   static constexpr double kProbeSpan_s = 1e-4;
   static constexpr std::size_t kMaxSlides = 100;
 
-  // Still water only (a live surface has no sliding field here): otherwise never active.
-  SlidingSteps(const Stone& stone, const Environment& env, bool still_water);
+  // Never active unless enabled: bs32 with RealtimeOptions::slide, in still water (a live surface
+  // has no sliding field here).
+  SlidingSteps(const Stone& stone, const Environment& env, bool enabled);
   SlidingSteps(const SlidingSteps&) = delete;  // field_ holds this
   SlidingSteps& operator=(const SlidingSteps&) = delete;
 
@@ -65,7 +66,7 @@ class SlidingSteps {
   std::vector<double> roots_at(const StateVector& y);
 
   std::optional<FilippovSliding> sliding_;
-  bool still_water_;
+  bool enabled_;
   const Stone& stone_;
   const Environment& env_;
   SlidingRecord record_;

@@ -437,7 +437,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
   StateVector k_start{};  // f at the start of the step (FSAL), valid while have_k
   bool have_k = false;
   KinkWatch kinks(stone, env, surface, kink_steps);
-  SlidingSteps sliding(stone, env, adaptive && surface == nullptr);  // bs32 in still water (sliding_steps.hpp)
+  SlidingSteps sliding(stone, env, adaptive && o.slide && surface == nullptr);  // bs32 in still water (sliding_steps.hpp)
   // The frame budget (bs32): the end of the current frame and the right-hand sides spent before it began.
   const bool budgeted = adaptive && o.rhs_per_frame > 0;
   double frame_end_s = 0;

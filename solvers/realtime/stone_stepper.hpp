@@ -99,6 +99,10 @@ struct RealtimeOptions {
   // scheme, or a vertex held at the surface (a sliding mode), shrinks the step without bound; bs32
   // takes about 10 steps a millisecond on a skipping throw. 0 or less: no guard.
   long max_steps_per_ms = 20000;
+  // bs32: slide along an attracting loaded-region switch where the steps stall (sliding_steps.hpp).
+  // false: step across it under the error control alone, as before (an oracle that shares no code
+  // with the sliding field, for the reference's tests; it may collapse there).
+  bool slide = true;
 };
 
 // One step of the scheme (no contact logic), for benchmarks and order studies. start_pushes
