@@ -3,8 +3,9 @@
 // Recomputes the golden bounce-count curves stored in cases/baselines/*.toml (or the files given)
 // and prints a difference report: counts must match exactly away from thresholds, thresholds
 // (bisected) must match within each baseline's compare_tolerance. Exit status 1 on a regression,
-// 2 on bad input. --update rewrites each baseline's [result] from the recomputed curve (its
-// settings are kept), for when a change of the model is intended.
+// 2 on bad input. --update rewrites each baseline's [result] from the recomputed curve (the text
+// before [result], settings and comments, is kept as written), for when a change of the model is
+// intended.
 //
 //   stoneskip regress                                     # all stored baselines (< 1 min)
 //   stoneskip regress --baseline cases/baselines/spin_paper_realtime.toml
@@ -102,7 +103,9 @@ void add_regress(CLI::App& app) {
     for (std::size_t i = 0; i < stored.size(); ++i) {
       const BounceBaseline& b = stored[i];
       if (*update) {
-        write_text_file(b.file, baseline_text(b, results[i], std::string("stoneskip ") + kVersion + " (git " + kGitDescribe + "), " + today_utc()));
+        // The file as the user wrote it, its [result] replaced (comments and layout kept).
+        write_text_file(b.file, updated_baseline_text(read_text_file(b.file), results[i],
+                                                      std::string("stoneskip ") + kVersion + " (git " + kGitDescribe + "), " + today_utc()));
         std::printf("  %-34s UPDATED  %zu grid values, %zu thresholds (%s)\n", b.name.c_str(), results[i].counts.size(),
                     results[i].thresholds.size(), b.file.c_str());
         continue;

@@ -349,6 +349,11 @@ std::string baseline_text(const BounceBaseline& b, const BounceSweepResult& r, c
   s << "threshold_tolerance = " << num(b.threshold_tolerance) << "\n";
   s << "compare_tolerance = " << num(b.compare_tolerance) << "\n";
   s << "ensemble_members = " << b.ensemble_members << "\n\n";
+  return s.str() + result_section_text(r, generated);
+}
+
+std::string result_section_text(const BounceSweepResult& r, const std::string& generated) {
+  std::ostringstream s;
   s << "[result]\n";
   s << "generated = " << quoted(generated) << "\n";
   s << "counts = " << array(r.counts, [](int c) { return std::to_string(c); }) << "\n";
@@ -380,6 +385,50 @@ std::string baseline_text(const BounceBaseline& b, const BounceSweepResult& r, c
       s << "# threshold " << i + 1 << " (" << t.count_below << " -> " << t.count_above
         << "): not located, its bisection stopped at a failed run at " << num(t.failed_at) << "\n";
   return s.str();
+}
+
+namespace {
+
+// Where a line opens the [result] table ("[result]", "[ result ]", a comment after it), outside a
+// multi-line string; npos if no line does.
+std::size_t result_header_at(const std::string& text) {
+  bool in_basic = false, in_literal = false;  // inside """...""" or '''...'''
+  std::size_t at = 0;
+  while (at < text.size()) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    const std::string line = text.substr(at, end - at);
+    if (!in_basic && !in_literal) {
+      std::string bare;  // the line without blanks, up to a comment
+      for (char c : line) {
+        if (c == '#') break;
+        if (!std::isspace(static_cast<unsigned char>(c))) bare += c;
+      }
+      if (bare == "[result]") return at;
+    }
+    for (std::size_t i = 0; i + 3 <= line.size(); ++i) {
+      if (!in_literal && line.compare(i, 3, "\"\"\"") == 0) {
+        in_basic = !in_basic;
+        i += 2;
+      } else if (!in_basic && line.compare(i, 3, "'''") == 0) {
+        in_literal = !in_literal;
+        i += 2;
+      }
+    }
+    at = end + 1;
+  }
+  return std::string::npos;
+}
+
+}  // namespace
+
+std::string updated_baseline_text(const std::string& old_text, const BounceSweepResult& r, const std::string& generated) {
+  const std::size_t at = result_header_at(old_text);
+  std::string kept = old_text.substr(0, at == std::string::npos ? old_text.size() : at);
+  if (at == std::string::npos) {  // no [result] yet: it follows the file, after one blank line
+    while (!kept.empty() && (kept.back() == '\n' || kept.back() == ' ' || kept.back() == '\t')) kept.pop_back();
+    if (!kept.empty()) kept += "\n\n";
+  }
+  return kept + result_section_text(r, generated);
 }
 
 }  // namespace stoneskip

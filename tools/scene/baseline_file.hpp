@@ -28,7 +28,15 @@ std::filesystem::path resolve_case_file(const BounceBaseline& b);
 // that the case's own [solver] would refuse).
 BounceSweepSpec sweep_of(const BounceBaseline& b);
 
-// The baseline file's text with the result of a new run.
+// A new baseline file's text: its settings, then the result of a run.
 std::string baseline_text(const BounceBaseline& settings, const BounceSweepResult& result, const std::string& generated);
+
+// `regress --update`: the file's text as it was up to its [result] table (settings, comments and
+// layout kept as the user wrote them), then the new run's [result]; a file without [result] gets
+// one at its end. The old [result], and anything after it, is replaced.
+std::string updated_baseline_text(const std::string& old_text, const BounceSweepResult& result, const std::string& generated);
+
+// The [result] table of a baseline file for a run.
+std::string result_section_text(const BounceSweepResult& result, const std::string& generated);
 
 }  // namespace stoneskip

@@ -207,6 +207,42 @@ BOOST_AUTO_TEST_CASE(a_baseline_written_before_ensembles_is_compared_on_single_r
   BOOST_TEST(read_baseline(fresh.string()).ensemble_members == kDefaultEnsembleMembers);
 }
 
+BOOST_AUTO_TEST_CASE(an_update_keeps_the_users_text_before_result_and_replaces_only_result) {
+  // Oracle: the texts themselves. A user's comments, layout and a multi-line description holding a
+  // line "[result]" survive `regress --update` byte for byte; the old [result] (and a comment after
+  // it) is gone; the file reads back with the new run's counts. A file without [result] gets one
+  // after its text.
+  ScratchDir s("stoneskip_baseline_update");
+  std::string text = read_text_file("cases/baselines/spin_physical_realtime.toml");
+  const auto settings_end = text.find("\n[result]");
+  BOOST_REQUIRE(settings_end != std::string::npos);
+  std::string mine = text.substr(0, settings_end + 1);
+  const auto d = mine.find("description = ");
+  BOOST_REQUIRE(d != std::string::npos);
+  mine.replace(d, mine.find('\n', d) - d, "description = \"\"\"\nmy notes\n[result]\nstill the description\"\"\"");
+  mine.insert(mine.find("[baseline]"), "# my own comment, kept\n");
+  mine += "  # indented comment before the table\n";
+  const std::string old_result = text.substr(settings_end + 1) + "# a comment after the old result\n";
+  BounceSweepResult r;
+  const BounceBaseline b = read_baseline("cases/baselines/spin_physical_realtime.toml");
+  r.counts = std::vector<int>(b.values.size(), 1);  // no change over the grid: no thresholds
+  r.ensembles = std::vector<std::vector<int>>(b.values.size(), std::vector<int>(b.ensemble_members, 1));
+  const std::string updated = updated_baseline_text(mine + old_result, r, "test run");
+  BOOST_TEST(updated.substr(0, mine.size()) == mine);
+  BOOST_TEST(updated.substr(mine.size(), 9) == "[result]\n");
+  BOOST_TEST(updated.find("a comment after the old result") == std::string::npos);
+  BOOST_TEST(updated.find("test run") != std::string::npos);
+  const BounceBaseline back = read_baseline(s.write("updated.toml", updated).string());
+  BOOST_TEST((back.counts == r.counts));
+  BOOST_TEST(back.thresholds.empty());
+  BOOST_TEST(back.description.find("still the description") != std::string::npos);
+  // Without [result]: the text, one blank line, the new [result].
+  const std::string appended = updated_baseline_text(mine + "\n\n\n", r, "test run");
+  BOOST_TEST(appended.substr(0, mine.size() + 1) == mine + "\n");
+  BOOST_TEST(appended.substr(mine.size() + 1, 9) == "[result]\n");
+  BOOST_TEST((read_baseline(s.write("appended.toml", appended).string()).counts == r.counts));
+}
+
 BOOST_AUTO_TEST_CASE(a_baseline_in_a_folder_of_its_own_finds_its_case_beside_it_first) {
   // Oracle: the folder listing. T/a/b/base.toml naming "mycase.toml", which exists beside it and
   // at T/mycase.toml (two folders up): the one beside it, as the baseline is not in <T>/cases/baselines/.
