@@ -54,7 +54,8 @@ constexpr int kMaxEventsPerMs = 1000000;  // bounds the ring of event times belo
 // 5 December); probed every 20 steps it slides from where rtol 1e-12 does and sinks with them.
 // Stepping along one unnoticed also ended 3 of 324 lens throws in CV_ERR_FAILURE, at a state off
 // every switch; probed so, all 324 sink. The probe costs one evaluation of the switches every 20
-// steps. The collapse guard waits for max_steps_per_ms (20 000 by default). A solve slides at most
+// steps: nothing measurable on prism throws (same steps, same wall clock), and it saves 15 % of the
+// right-hand sides on lens throws (solvers/README.md). The collapse guard waits for max_steps_per_ms (20 000 by default). A solve slides at most
 // kMaxSlides times.
 constexpr long kSlideProbeSteps = 20;
 constexpr std::size_t kMaxSlides = 100;
