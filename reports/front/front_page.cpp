@@ -226,7 +226,7 @@ std::string front_page_markdown(const FrontPageInput& in) {
   std::ostringstream md;
   md << "# stoneskip: what the main job found\n\n"
      << "stoneskip verifies and validates Lee & Baek's (2013) real-time stone-skipping model: the water surface against "
-        "its exact solution, the stone against a high-accuracy reference (SUNDIALS CVODE), both against experiments, and "
+        "its exact solution, the stone against a high-accuracy reference (SUNDIALS CVODE) and against experiments, and "
         "Wii Remote captures as inputs. This page links everything the main job wrote into this folder. Each line below is "
         "read from the reports' `data.h5`; each report opens with its findings and links to its sections.\n\n";
   // The reports, each with its verdicts in one line and a picture.
@@ -240,7 +240,9 @@ std::string front_page_markdown(const FrontPageInput& in) {
   for (const auto& r : in.reports) {
     md << "### [" << name(r) << "](" << link(r.folder) << "/index.md)\n\n";
     const std::string verdicts = verdict_line(r.findings);
-    md << "**Verdicts:** " << (verdicts.empty() ? std::string("none stated") : verdicts) << ". "
+    // The bold verdicts of the report's opening findings, each counted once per finding that states it
+    // (×2: two findings say it), not a tally of every verdict in the report.
+    md << "**Its findings' verdicts:** " << (verdicts.empty() ? std::string("none stated") : verdicts) << ". "
        << "Folder " << code(r.folder + "/") << " (`" << r.kind << "` report, data written " << r.created_utc << "): "
        << "[page](" << link(r.folder) << "/index.md), `data.h5`"
        << (r.figures == "folder" ? ", `figures/`"
@@ -252,7 +254,11 @@ std::string front_page_markdown(const FrontPageInput& in) {
   if (!in.movies.empty()) {
     md << "## The movie\n\n";
     for (const auto& m : in.movies) {
-      md << "* [" << code(m.file) << "](" << link(m.file) << ") (" << fmt(m.size_mb, 3) << " MB): the scene as a movie.\n";
+      // Each movie named by its scene: the shipped throw of the same name (throws/NAME.h5), if there is one.
+      std::string what = "the scene as a movie";
+      for (const auto& th : in.throws)
+        if (fs::path(th.file).stem() == fs::path(m.file).stem()) what = "the scene of " + code(fs::path(th.file).filename().string()) + " (" + printable_text(th.title) + ") as a movie";
+      md << "* [" << code(m.file) << "](" << link(m.file) << ") (" << fmt(m.size_mb, 3) << " MB): " << what << ".\n";
     }
     md << "\n";
     if (!in.movies.front().picture.empty()) md << "![A still of the scene](" << link(in.movies.front().picture) << ")\n\n";

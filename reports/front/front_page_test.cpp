@@ -50,10 +50,10 @@ BOOST_AUTO_TEST_SUITE(front_page_markdown_tests)
 BOOST_AUTO_TEST_CASE(each_report_gets_its_verdicts_in_one_line_with_counts) {
   const std::string md = front_page_markdown(two_reports());
   BOOST_TEST(has(md, "### [Water surface verification](waves/index.md)"));
-  BOOST_TEST(has(md, "**Verdicts:** **consistent** ×2 · **converges at the expected order** · **inconsistent**."));
+  BOOST_TEST(has(md, "**Its findings' verdicts:** **consistent** ×2 · **converges at the expected order** · **inconsistent**."));
   BOOST_TEST(has(md, "![Water surface verification](waves/figures/convergence.png)"));
   // Findings without bold verdicts give their first sentence.
-  BOOST_TEST(has(md, "### [Wii Remote captures](captures/index.md)\n\n**Verdicts:** 9 capture(s): 1 usable, 7 usable with caveats, 1 unusable. "));
+  BOOST_TEST(has(md, "### [Wii Remote captures](captures/index.md)\n\n**Its findings' verdicts:** 9 capture(s): 1 usable, 7 usable with caveats, 1 unusable. "));
 }
 
 BOOST_AUTO_TEST_CASE(what_we_found_repeats_the_findings_with_links_into_the_reports) {
@@ -67,6 +67,11 @@ BOOST_AUTO_TEST_CASE(the_movie_and_every_throw_are_linked) {
   const std::string md = front_page_markdown(two_reports());
   BOOST_TEST(has(md, "[`movies/seed.mp4`](movies/seed.mp4) (0.3 MB)"));
   BOOST_TEST(has(md, "![A still of the scene](scene/figures/still.png)"));
+  // A movie without a throw of its name is "the scene"; one with it is named by that throw's title.
+  BOOST_TEST(has(md, "(0.3 MB): the scene as a movie.\n"));
+  FrontPageInput named = two_reports();
+  named.movies.front().file = "movies/paper_8ms_spin.mp4";
+  BOOST_TEST(has(front_page_markdown(named), "(0.3 MB): the scene of `paper_8ms_spin.h5` (Lee & Baek 8 m/s throw, with spin) as a movie.\n"));
   BOOST_TEST(has(md, "| [`paper_8ms_spin.h5`](throws/paper_8ms_spin.h5) | Lee & Baek 8 m/s throw, with spin | `cases/paper_8ms_spin.toml` | "
                      "7, 4.25, sank | 1, 1.24, sank |"));
 }

@@ -148,9 +148,14 @@ SectionOutput validation_section(const Record& v) {
              "as thrown, the torques discarded: the high-spin limit in which Clanet et al. and Rosellini et al. analyse "
              "skipping) and `free` (the 6-DOF stone). Columns: " + titles +
              ". Each is the model itself (CVODE, physical convention, rtol " + fmt(v.number("reference_rtol"), 2) +
-             ") unless named `real-time` (the stepper's discretisation error added to the default law, " +
-             code(v.text("default_law")) +
-             ", uniform, free); the paper convention is the model with the paper's printed equations (their own law, "
+             ") unless named `real-time`: the real-time stepper at the study's settings on the study's first law, " +
+             code(v.text("default_law")) + ", uniform, free" +
+             (v.text("default_law") == v.text("model_default_law") ? std::string()
+                                                                    : " (not the model's default in the physical convention, " +
+                                                                          code(v.text("model_default_law")) + " with " +
+                                                                          code(v.text("model_default_distribution")) +
+                                                                          ", which the shipped throws run)") +
+             "; the paper convention is the model with the paper's printed equations (their own law, "
              "Eq. 2, uniform, free). To keep the report's run time, Bocquet's stone and the seed's throws are thrown "
              "only for the uniform, free variants and the paper's (\"not run\" elsewhere). The "
              "model is not expected to match: the differences are model-form error (a force law on a triangle mesh, no "
@@ -380,7 +385,12 @@ SectionOutput validation_section(const Record& v) {
   const Record& phys = why.at("physical");
   const Record& pap = why.at("paper");
   w.subheading("Why the two conventions disagree");
-  w.text("The seed's spinning throw (" + phys.text("label") + "), solved by the reference in both conventions.");
+  w.text("The seed's spinning throw (" + phys.text("label") + "), solved by the reference in both conventions" +
+         (v.text("default_law") == v.text("model_default_law")
+              ? std::string(".")
+              : std::string("; the physical one with the study's first law, not the model's default, ") +
+                    code(v.text("model_default_law")) + " with " + code(v.text("model_default_distribution")) +
+                    ", which the shipped case runs (its bounces may differ)."));
   w.bullet("**physical**: " + first_contact_text(phys) + ". " + fmt(phys.number("bounces")) + " bounces in all; " +
            verdict_markdown(why.at("physical_energy")) + "; |roll| stays below " + fmt(phys.number("max_abs_roll_deg"), 3) + "°.");
   w.bullet("**paper**: " + first_contact_text(pap) + ". " + fmt(pap.number("bounces")) + " bounces in all; " +

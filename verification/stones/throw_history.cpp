@@ -1,5 +1,7 @@
 #include "verification/stones/throw_history.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <numbers>
 
 namespace stoneskip {
@@ -18,6 +20,22 @@ ThrowHistory make_history(const ThrowProblem& p, ThrowResult result, const std::
     h.table.add_row({s.t_s, m * s.state.velocity_m_s.norm(), s.energy_J, fluid_power_W(p.stone, p.environment, s.state),
                      s.state.position_m.x(), s.state.position_m.y(), s.state.position_m.z(), a.attack_angle_deg,
                      a.roll_angle_deg, s.angular_velocity_rad_s.dot(n) / (2 * std::numbers::pi), s.wetted_area_m2});
+  }
+  if (!result.contacts.empty() && !result.trajectory.empty()) {
+    const ContactRecord& k = result.contacts.front();
+    const auto nearest = std::min_element(result.trajectory.begin(), result.trajectory.end(), [&](const auto& a, const auto& b) {
+      return std::abs(a.t_s - k.start_s) < std::abs(b.t_s - k.start_s);
+    });
+    const Mat3 R = nearest->state.orientation.normalized().toRotationMatrix();
+    double lo = 1e300, hi = -1e300;
+    for (const Vec3& v : p.stone.body_mesh.vertices) {
+      const double z = (R * v).z();
+      lo = std::min(lo, z);
+      hi = std::max(hi, z);
+    }
+    // Vertical entry speed from the contact's entry speed and path angle (below the horizontal: down).
+    const double down_m_s = k.entry_speed_m_s * std::sin(k.entry_path_angle_deg * std::numbers::pi / 180);
+    if (down_m_s > 0 && hi > lo) h.plunge_s = (hi - lo) / down_m_s;
   }
   result.trajectory.clear();
   result.trajectory.shrink_to_fit();

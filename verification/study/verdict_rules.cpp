@@ -66,13 +66,14 @@ RowJudgement judge_rows(const Record& in, const std::string& v) {
   const double f = in.number("min_speed_fraction"), g = in.number("contact_time_fraction");
   bracketed("min_speed", in.number("min_speed_low") * (1 - f), in.number("min_speed_high") * (1 + f), "U_min");
   // The argmin: where the grid's lowest minimum speeds tie over a span of angles (records since
-  // the span was stored), every angle of it must lie within the bound.
+  // the span was stored), the span against the bound like any interval: met when every angle of it
+  // lies within, missed when none does, else undecided.
   const double a_lo = in.number("best_attack_low") - in.number("best_attack_bound"),
                a_hi = in.number("best_attack_high") + in.number("best_attack_bound");
-  const bool tied = in.has_number(v + "best_attack_tied_low");
-  row(tied ? within(in.number(v + "best_attack_tied_low"), a_lo, a_hi) && within(in.number(v + "best_attack_tied_high"), a_lo, a_hi)
-           : within(in.number(v + "best_attack"), a_lo, a_hi),
-      "argmin α");
+  if (in.has_number(v + "best_attack_tied_low"))
+    placed(in.number(v + "best_attack_tied_low"), in.number(v + "best_attack_tied_high"), a_lo, a_hi, "argmin α");
+  else
+    row(within(in.number(v + "best_attack"), a_lo, a_hi), "argmin α");
   bracketed("max_path_angle", in.number("max_path_angle_low") - in.number("max_path_angle_bound"),
             in.number("max_path_angle_high") + in.number("max_path_angle_bound"), "β_max");
   row(within(in.number(v + "contact_time"), in.number("contact_time_low") * (1 - g), in.number("contact_time_high") * (1 + g)),
@@ -219,7 +220,12 @@ const std::map<std::string, Rule>& rules() {
       {"surfing",
        [](const Record& in) {
          if (in.number("contacts") < 1) return std::string("no contact");
-         return std::string(in.number("bounces") == 0 ? "never leaves the water" : "leaves the water");
+         if (in.number("bounces") > 0) return std::string("leaves the water");
+         // A stone that sinks within a few plunge times was not held at the surface: it did not
+         // surf, whatever its count (NaN: no downward entry to measure a plunge by).
+         const double ratio = in.number("duration_s") / in.number("plunge_s");
+         if (!(ratio >= 0)) return std::string("not decided: no plunge time");
+         return std::string(ratio >= in.number("surf_plunge_ratio") ? "never leaves the water" : "sinks as it plunges");
        }},
       {"diving",
        [](const Record& in) {

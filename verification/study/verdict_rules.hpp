@@ -30,7 +30,10 @@
 //   contact_energy       contacts, max_residual_ratio, max_gain_ratio (each contact's |ΔE − ∫P dt| and
 //                        ΔE over its tolerance, the largest) → no contact | unbalanced (a ratio above 1 or
 //                        NaN) | balanced, passive | balanced, creates energy
-//   surfing              contacts, bounces → no contact | never leaves the water | leaves the water
+//   surfing              contacts, bounces, duration_s (the first contact's), plunge_s (ThrowHistory),
+//                        surf_plunge_ratio → no contact | leaves the water | never leaves the water (no
+//                        bounce, the contact ≥ ratio × plunge) | sinks as it plunges | not decided: no
+//                        plunge time
 //   diving               bounces, attack_change_deg, tolerance_deg → bounces | tumbles and dives
 //                        (|first contact's attack change| > tolerance) | sinks holding its attitude
 //   trout                bounces, entry_attack_deg, min_attack_deg, tolerance_deg → no bounce |

@@ -144,13 +144,16 @@ BOOST_AUTO_TEST_CASE(a_bisected_value_or_an_exponent_interval_across_a_bound_is_
 BOOST_AUTO_TEST_CASE(a_tied_argmin_holds_only_if_every_tied_angle_is_within_the_bound) {
   // Oracle: the rule's definition. The argmin window is [15, 25]° (bounds(): measured 20°, bound
   // 5°). A point argmin of 20° whose minimum speed ties with 30° (their bisection brackets overlap)
-  // does not hold the row: the model's argmin may be 30°. Records without the tied span are judged
-  // on the point, as before.
+  // does not hold the row: the model's argmin may be 30°, or 20°: not decided (the span across the
+  // window, as any interval). A span wholly outside it misses. Records without the tied span are
+  // judged on the point, as before.
   Record in = bounds();
   passing(in, "");
   in.set("best_attack", 20.0).set("best_attack_tied_low", 20.0).set("best_attack_tied_high", 20.0);
   BOOST_TEST(decide("skips_like_a_stone", in) == "skips like a real stone");
   in.set("best_attack_tied_high", 30.0);
+  BOOST_TEST(decide("skips_like_a_stone", in) == "not decided: argmin α");
+  in.set("best_attack", 30.0).set("best_attack_tied_low", 30.0).set("best_attack_tied_high", 35.0);
   BOOST_TEST(decide("skips_like_a_stone", in) == "misses argmin α");
   in.set("best_attack_tied_low", 15.0).set("best_attack_tied_high", 25.0);
   BOOST_TEST(decide("skips_like_a_stone", in) == "skips like a real stone");
@@ -213,11 +216,16 @@ BOOST_AUTO_TEST_CASE(a_contact_energy_balance_can_fail) {
 }
 
 BOOST_AUTO_TEST_CASE(the_three_regimes_are_judged_from_counts_and_angles) {
-  // Oracle: the rules' definitions, by hand: surfing is a contact without a bounce; diving, no
-  // bounce and an attack change beyond the tolerance; the trout, a bounce after a dip beyond it.
+  // Oracle: the rules' definitions, by hand: surfing is a contact without a bounce lasting at least
+  // the ratio times the plunge time (a shorter one sinks as it plunges); diving, no bounce and an
+  // attack change beyond the tolerance; the trout, a bounce after a dip beyond it.
   Record s;
-  s.set("contacts", 1.0).set("bounces", 0.0);
+  s.set("contacts", 1.0).set("bounces", 0.0).set("duration_s", 0.0301).set("plunge_s", 0.015).set("surf_plunge_ratio", 2.0);
   BOOST_TEST(decide("surfing", s) == "never leaves the water");
+  s.set("duration_s", 0.0299);
+  BOOST_TEST(decide("surfing", s) == "sinks as it plunges");
+  s.set("plunge_s", std::numeric_limits<double>::quiet_NaN());
+  BOOST_TEST(decide("surfing", s) == "not decided: no plunge time");
   s.set("bounces", 1.0);
   BOOST_TEST(decide("surfing", s) == "leaves the water");
   s.set("contacts", 0.0);
