@@ -119,6 +119,35 @@ FilippovSliding::Corners FilippovSliding::corners(int fi, int fj, const FaceRule
   return c;
 }
 
+PairHandover handover_pair(const double (&A)[2][2], const double (&B)[2][2], int prefer) {
+  // Rates in the corner order of Corners: [a][b], a face i's side, b face j's.
+  auto j_slides = [&](int a, PairHandover& out) {
+    const double b0 = B[a][0], b1 = B[a][1];
+    if (!(b0 > 0 && b1 < 0)) return false;
+    const double beta = b0 / (b0 - b1);
+    const double ri = (1 - beta) * A[a][0] + beta * A[a][1];
+    if (!(a == 0 ? ri < 0 : ri > 0)) return false;
+    out = {1, a};
+    return true;
+  };
+  auto i_slides = [&](int b, PairHandover& out) {
+    const double a0 = A[0][b], a1 = A[1][b];
+    if (!(a0 > 0 && a1 < 0)) return false;
+    const double alpha = a0 / (a0 - a1);
+    const double rj = (1 - alpha) * B[0][b] + alpha * B[1][b];
+    if (!(b == 0 ? rj < 0 : rj > 0)) return false;
+    out = {0, b};
+    return true;
+  };
+  PairHandover out;
+  for (int first = 0; first < 2; ++first) {
+    const int who = first == 0 ? prefer : 1 - prefer;
+    for (int side = 0; side < 2; ++side)
+      if (who == 1 ? j_slides(side, out) : i_slides(side, out)) return out;
+  }
+  return PairHandover{};
+}
+
 // wᵢ(α, β) = ∇gᵢ · ẏ = p₀ + p₁α + p₂β + p₃αβ and wⱼ = q₀ + q₁α + q₂β + q₃αβ (the bilinear field's
 // rates). wᵢ = 0 gives α = −(p₀ + p₂β)/(p₁ + p₃β); put in wⱼ = 0 it leaves c₂β² + c₁β + c₀ = 0.
 // Of its real roots the one nearest the unit square (by its largest excursion outside it) is taken:
@@ -192,6 +221,17 @@ SlidingChoice FilippovSliding::attracting(const RigidState& s, const FaceRules& 
     if (std::abs(gi) <= kAtSwitch_m_s) at_zero.push_back(i);
     if (best < 0 || std::abs(gi) < std::abs(g_[index_of(best)])) best = i;
   }
+  // A face already sliding is on its switch by construction, though its g may have drifted past
+  // kAtSwitch_m_s (the sliding field holds ∇g · ẏ = 0 to its central differences' round-off): a
+  // second switch reached while sliding on one is tried with it, on their intersection (a 20 cm
+  // lens sliding on face 62 reached face 64's switch with 62's g no longer within 1e-6 m/s, and
+  // the real-time stepper's steps then collapsed where the reference, by another path, slid on).
+  if (!at_zero.empty())
+    for (const FaceRule& r : rules)
+      if (r.sliding && std::find(at_zero.begin(), at_zero.end(), r.face) == at_zero.end()) {
+        at_zero.push_back(r.face);
+        std::sort(at_zero.begin(), at_zero.end());
+      }
   std::ostringstream m;
   if (best < 0) {
     c.why = "no face is wetted there";
@@ -204,12 +244,25 @@ SlidingChoice FilippovSliding::attracting(const RigidState& s, const FaceRules& 
     c.why = m.str();
     return c;
   }
-  if (at_zero.size() + held.size() > kMaxTreatedFaces) {
-    m << "the loaded-region switches of faces";
-    for (std::size_t k = 0; k < at_zero.size(); ++k) m << (k ? (k + 1 == at_zero.size() ? " and " : ", ") : " ") << at_zero[k];
-    m << (at_zero.size() == 2 ? " are both" : " are all") << " at zero there";
-    if (!held.empty()) m << " while face " << held.front().face << " is held";
-    m << ": sliding on more than " << kMaxTreatedFaces << " switches at once is not treated";
+  if (at_zero.size() > kMaxSlidingFaces || at_zero.size() + held.size() > kMaxTreatedFaces) {
+    auto faces = [&m](const std::vector<int>& f) {
+      m << (f.size() == 1 ? "face " : "faces ");
+      for (std::size_t k = 0; k < f.size(); ++k) m << (k ? (k + 1 == f.size() ? " and " : ", ") : "") << f[k];
+    };
+    m << "the loaded-region switch" << (at_zero.size() == 1 ? " of " : "es of ");
+    faces(at_zero);
+    m << (at_zero.size() == 1 ? " is" : at_zero.size() == 2 ? " are both" : " are all") << " at zero there";
+    if (!held.empty()) {
+      std::vector<int> h;
+      for (const FaceRule& r : held) h.push_back(r.face);
+      m << " while ";
+      faces(h);
+      m << (h.size() == 1 ? " is" : " are") << " held on one side after sliding";
+    }
+    if (at_zero.size() > kMaxSlidingFaces)
+      m << ": sliding on more than " << kMaxSlidingFaces << " switches at once is not built";
+    else
+      m << ": treating more than " << kMaxTreatedFaces << " switches apart at once (slid along or held) is not built";
     c.why = m.str();
     return c;
   }
@@ -222,6 +275,18 @@ SlidingChoice FilippovSliding::attracting(const RigidState& s, const FaceRules& 
       c.face = fi;
       c.face2 = fj;
       return c;
+    }
+    // Not on the intersection: one face may slide alone with the other held (a face already sliding
+    // exits as the new one's switch takes over), when the corner rates say so consistently.
+    if (k.defined) {
+      const bool i_slides_now = std::any_of(rules.begin(), rules.end(), [fi](const FaceRule& r) { return r.sliding && r.face == fi; });
+      const PairHandover h = handover_pair(k.A, k.B, i_slides_now ? 1 : 0);
+      if (h.slides >= 0) {
+        c.face = h.slides == 0 ? fi : fj;
+        c.hold_face = h.slides == 0 ? fj : fi;
+        c.hold_side = h.held_side;
+        return c;
+      }
     }
     m << "the loaded-region switches of faces " << fi << " and " << fj << " are both at zero there, and their intersection "
       << (k.solved ? "does not attract" : "has no bilinear sliding field")

@@ -63,8 +63,11 @@ constexpr double kAtSwitch_m_s = 1e-6;
 // moves at 300–2000 /s on those throws, so treating 1e-5 as the bound moves an exit by < 4e-8 s.
 constexpr double kWeightAtBoundary = 1e-5;
 
-// At most this many faces' switches are treated apart at once (slid along or held).
-constexpr std::size_t kMaxTreatedFaces = 2;
+// At most this many faces slide at once (on one switch, or on two switches' intersection), and at
+// most kMaxTreatedFaces are treated apart at once, sliding or held on one side after sliding (a
+// large lens can leave two faces held while a third switch attracts: a 28 cm lens at 37 m/s did).
+constexpr std::size_t kMaxSlidingFaces = 2;
+constexpr std::size_t kMaxTreatedFaces = 16;
 
 // The bilinear sliding field's weights on two switches (Dieci & Lopez 2009), from the four fields'
 // rates toward each: A[a][b] = ∇gᵢ · f_ab, B[a][b] = ∇gⱼ · f_ab (a: face i out 0 / in 1, b: face j).
@@ -75,6 +78,19 @@ struct BilinearWeights {
   double alpha = 0, beta = 0;
 };
 BilinearWeights bilinear_sliding_weights(const double (&A)[2][2], const double (&B)[2][2]);
+
+// Two switches at zero whose intersection does not attract (no bilinear weights in the unit
+// square): the single-switch sliding modes on one of them with the other face held on a side,
+// from the same corner rates. Sliding on j with i held on side a: j's switch attracts there
+// (B[a][0] > 0 > B[a][1]) and its sliding field, β = B[a][0] / (B[a][0] − B[a][1]), keeps i on
+// side a (its rate (1 − β) A[a][0] + β A[a][1] < 0 for side 0, > 0 for side 1); likewise sliding
+// on i with j held. Consistent modes are tried with the face `prefer` sliding first (the face not
+// sliding yet: the sliding is handed over to it, the other exits). `slides`: 0 for face i, 1 for
+// face j, −1 if none is consistent; `held_side` the other's side.
+struct PairHandover {
+  int slides = -1, held_side = 0;
+};
+PairHandover handover_pair(const double (&A)[2][2], const double (&B)[2][2], int prefer);
 
 // One face's loaded-region switch treated apart: slid along (with the other sliding face, if any, on
 // the intersection), or held on one side (0: out of the loaded region, 1: in) after a sliding left it.
@@ -92,7 +108,13 @@ struct SlidingChoice {
   double g = 0;           // the (first) face's switch value there
   double a0 = 0, a1 = 0;  // one switch: ∇g · f₀ and ∇g · f₁ there
   double alpha = 0, beta = 0;  // two switches: the bilinear weights there
+  // Two switches at zero whose intersection does not attract, where one slides alone with the
+  // other face held on one side (handover_pair): that face and side; −1 otherwise.
+  int hold_face = -1, hold_side = 0;
   std::string why;        // when face < 0: what was found instead
+  // A choice that changes what slides where one face slides already: a second switch added, or
+  // the sliding handed over to another face.
+  bool changes_sliding() const { return face2 >= 0 || hold_face >= 0; }
 };
 
 class FilippovSliding {

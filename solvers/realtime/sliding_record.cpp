@@ -14,7 +14,8 @@ void SlidingRecord::start(const SlidingChoice& c, double t) {
   if (sliding_count() > 0) slides_.back().to_s = t;
   FaceRules next;
   for (const FaceRule& r : rules_)
-    if (!r.sliding) next.push_back(r);
+    if (!r.sliding && r.face != c.hold_face) next.push_back(r);
+  if (c.hold_face >= 0) next.push_back({c.hold_face, false, c.hold_side});  // handed over: it exits to that side
   next.push_back({c.face, true, 0});
   if (c.face2 >= 0) next.push_back({c.face2, true, 0});
   rules_ = next;

@@ -31,7 +31,7 @@ bool SlidingSteps::probe(long steps, double t, const RigidState& s) {
   if (!sliding_) sliding_.emplace(stone_, env_);
   if (!sliding_->available()) return false;
   const SlidingChoice c = sliding_->attracting(s, record_.rules());
-  if (c.face < 0 || (sliding == 1 && c.face2 < 0)) return false;
+  if (c.face < 0 || (sliding == 1 && !c.changes_sliding())) return false;
   record_.start(c, t);
   return true;
 }

@@ -385,7 +385,7 @@ bool ReferenceSolve::try_sliding() {
     no_slide_ = c.why;
     return false;
   }
-  if (sliding == 1 && c.face2 < 0) {  // the switch it slides on: nothing to add
+  if (sliding == 1 && !c.changes_sliding()) {  // the switch it slides on: nothing to add or hand over
     no_slide_ = "no other loaded-region switch is at zero there";
     return false;
   }
