@@ -68,6 +68,18 @@ PlotSeries table_series(const std::string& title, const Record& r, const std::st
   return table_series(title, r, table, how, style);
 }
 
+std::string series_colour(int k) {
+  static const char* kColours[16] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b",
+                                     "#e377c2", "#7f7f7f", "#bcbd22", "#17becf", "#000080", "#800000",
+                                     "#008080", "#556b2f", "#c71585", "#00a86b"};
+  return std::string(" lc rgb '") + kColours[(k % 16 + 16) % 16] + "'";
+}
+
+std::string series_dash(int k) {
+  static const int kDashes[3] = {1, 3, 4};  // solid, short dashes, dash-dot (2, long dashes, is left for marking)
+  return " dt " + std::to_string(kDashes[((k / 16) % 3 + 3) % 3]);
+}
+
 PlotSeries power_law_guide(const std::string& title, const std::vector<double>& x, double x0, double y0, double p,
                            const std::string& style) {
   PlotSeries s;

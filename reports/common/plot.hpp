@@ -31,6 +31,12 @@ PlotSeries table_series(const std::string& title, const Record& r, const std::st
 PlotSeries table_series(const std::string& title, const Record& r, const std::string& table, TableSource how,
                         const std::string& style = "linespoints");
 
+// The k-th (0-based) of many series told apart: a gnuplot colour clause (" lc rgb '#rrggbb'") from
+// 16 distinct colours dark enough on white, and a dash type that changes each time they come round
+// (" dt 1", then 3, 4): gnuplot's own cycle has 8 colours, so series 1 and 9 were drawn alike.
+std::string series_colour(int k);
+std::string series_dash(int k);
+
 // A guide through (x0, y0) with slope p on log axes: y = y0 (x / x0)^p at each x.
 PlotSeries power_law_guide(const std::string& title, const std::vector<double>& x, double x0, double y0, double p,
                            const std::string& style = "lines dt 2");

@@ -2,7 +2,9 @@
 // the variants judged against the rows' bounds, ranked by their distance from the measurements and
 // by their cost per throw, and the cheapest that skips like a real stone, if any. Formatted from the validation section's stored
 // "ranking" record: the metric, every distance, the verdicts and their reasons were computed there.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "reports/common/markdown.hpp"
 #include "reports/common/plot.hpp"
@@ -137,7 +139,18 @@ SectionOutput ranking_section(const Record& v) {
       const Record& g = vars.at(key);
       if (!g.has_child(regime) || g.text("attitude") == "held") continue;
       const Record& h = g.at(regime);
-      ps.push_back(attack_angle_series(h, g.text("title") + " (" + fmt(h.number("bounces")) + " bounces)", "lines"));
+      const int k = static_cast<int>(ps.size());
+      // The shortest flight beside the count: a flight of a fraction of a millisecond is a rim vertex
+      // lifting clear between two contacts, a bounce by the rule but not a skip (model/README.md §1.8).
+      std::string shortest;
+      if (h.has_table("contacts")) {
+        const auto st = h.table("contacts").column("start_s"), en = h.table("contacts").column("end_s");
+        double f = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i + 1 < st.size(); ++i) f = std::min(f, st[i + 1] - en[i]);
+        if (std::isfinite(f)) shortest = "; shortest flight " + fmt(1000 * f, 2) + " ms";
+      }
+      ps.push_back(attack_angle_series(h, g.text("title") + " (" + fmt(h.number("bounces")) + " bounces" + shortest + ")",
+                                       "lines" + series_colour(k) + series_dash(k)));
     }
     PlotAxes ax;
     ax.x_label = "time (s)";

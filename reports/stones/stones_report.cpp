@@ -177,8 +177,8 @@ RenderedReport render_stones_report(const StoredReport& s) {
      << "3. How does the bounce count depend on spin, speed and angles (the paper's Fig. 8 and 9), and where exactly "
         "does it change?\n"
      << "4. Which throws break a solver, and how?\n"
-     << "5. How does each water law compare with experiments (Clanet et al. 2004, Bocquet 2003) and with the paper's "
-        "own claims — and why do the paper's printed equations behave so differently?\n"
+     << "5. How does each water law compare with experiments (Clanet et al. 2004, Rosellini et al. 2005), with "
+        "Bocquet's (2003) model estimates, and with the paper's own claims — and why do the paper's printed equations behave so differently?\n"
      << "6. Which water law skips like a real stone, and which is the cheapest that does?\n\n"
      << "Settings: the `" << settings.text("preset") << "` preset, " << fmt(settings.number("workers")) << " worker threads."
      << (settings.text("preset") != "full" ? " **This is a reduced run: coarse grids and single timings — a smoke test, not the report's numbers.**" : "")

@@ -112,8 +112,12 @@ std::vector<PlotSeries> variant_curves(const Record& vars, const std::string& ta
     how.y_column = y_column;
     how.x_power = square_x ? 2 : 1;
     how.y_scale = scale;
+    // Series k in the k-th distinct colour (the min-speed figure's bracket ends match it): 20
+    // variants, and gnuplot's 8-colour cycle drew the 1st and 9th alike. The real-time column dashed.
+    const int k = static_cast<int>(ps.size());
     ps.push_back(table_series("model: " + g.text("title"), g, table, how,
-                              g.text("solver") == "realtime" ? "linespoints dt 2" : "linespoints"));
+                              "linespoints" + series_colour(k) + (g.text("solver") == "realtime" ? std::string(" dt 2") : series_dash(k)) +
+                                  " pt " + std::to_string(4 + k % 10)));  // squares, circles, triangles, diamonds: not the ends' crosses
   }
   return ps;
 }
@@ -166,7 +170,7 @@ SectionOutput validation_section(const Record& v) {
              "° is called held (the verdicts `attack_change`, `roll_change`).");
   const Record& m = v.at("measured");
   auto rows_table = [&](const std::string& kind, bool beside_models_only) {
-    std::vector<std::string> head{"quantity", "measured", "expected (model/README.md §3)", "source"};
+    std::vector<std::string> head{"quantity", "measured", "expected: a 2-D newtonian reduction, attitude held (model/README.md §3)", "source"};
     std::vector<std::string> cols;
     for (const auto& key : vars.strings("keys"))
       if (!beside_models_only || vars.at(key).flag("beside_models") || vars.at(key).text("convention") == "paper") {
@@ -243,7 +247,10 @@ SectionOutput validation_section(const Record& v) {
     std::vector<PlotSeries> ps = variant_curves(vars, "min_speed", "attack_deg", "min_speed_m_s", 1, false);
     // Each bisection's bracket, its two ends as small crosses in the variant's colour (linetype k:
     // the variants are the figure's first series), so that a point is read with its width.
+    // Where every bracket is narrower than a mark (a fiftieth of the speeds' span), the ends are not
+    // drawn and the caption gives the widest bracket instead.
     std::vector<PlotSeries> ends;
+    double widest = 0, top = 0;
     {
       int k = 0;
       for (const auto& key : vars.strings("keys")) {
@@ -251,11 +258,18 @@ SectionOutput validation_section(const Record& v) {
         if (!g.has_table("min_speed")) continue;
         ++k;
         if (!g.table("min_speed").has_column("low_m_s")) continue;  // older data: no ends stored
+        const auto lo = g.table("min_speed").column("low_m_s"), hi = g.table("min_speed").column("high_m_s");
+        for (std::size_t i = 0; i < lo.size(); ++i)
+          if (std::isfinite(lo[i]) && std::isfinite(hi[i])) {
+            widest = std::max(widest, hi[i] - lo[i]);
+            top = std::max(top, hi[i]);
+          }
         for (const char* end : {"low_m_s", "high_m_s"})
-          ends.push_back(table_series("", g, "min_speed", "attack_deg", end, "points pt 1 ps 1.3 lc " + std::to_string(k)));
+          ends.push_back(table_series("", g, "min_speed", "attack_deg", end, "points pt 1 ps 1.3" + series_colour(k - 1)));
       }
-      ps.insert(ps.end(), ends.begin(), ends.end());
     }
+    const bool ends_visible = !ends.empty() && widest > top / 50;
+    if (ends_visible) ps.insert(ps.end(), ends.begin(), ends.end());
     const Record& curves = v.at("curves");
     for (const auto& ck : curves.strings("keys")) {
       const Record& c = curves.at(ck);
@@ -269,7 +283,10 @@ SectionOutput validation_section(const Record& v) {
     ax.y_label = "minimum speed for a bounce (m/s)";
     ax.extra = "set yrange [0:*]";
     w.figure(line_figure("clanet_min_speed", std::string("Clanet's disk: minimum bouncing speed against attack angle at β = 20°, measured and each variant") +
-                             (ends.empty() ? "" : " (crosses: the ends of each bisection's bracket)"),
+                             (ends.empty()   ? std::string()
+                              : ends_visible ? std::string(" (crosses: the ends of each bisection's bracket)")
+                                             : " (each bisection's bracket, at most " + fmt(widest, 2) +
+                                                   " m/s wide, lies within its mark)"),
                          ax, ps, "attack_deg", "speed_m_s"));
     for (const auto& ck : curves.strings("keys")) {
       const Record& c = curves.at(ck);
@@ -281,8 +298,33 @@ SectionOutput validation_section(const Record& v) {
     PlotAxes ax;
     ax.x_label = "speed U (m/s)";
     ax.y_label = "duration of the first contact (ms)";
-    w.figure(line_figure("clanet_contact_time", "Clanet's disk: contact time against speed", ax,
-                         variant_curves(vars, "contact_time", "speed_m_s", "contact_s", 1000, false), "speed_m_s", "contact_ms"));
+    std::vector<PlotSeries> ps = variant_curves(vars, "contact_time", "speed_m_s", "contact_s", 1000, false);
+    // The measured contact time at its speed, and the measured law through it (τ ∝ U^k), over the
+    // speeds the variants were thrown at.
+    std::string measured_words;
+    const Record& meas = v.at("measured");
+    if (meas.has_child("clanet_contact_time") && meas.at("clanet_contact_time").flag("scored") && meas.has_child("clanet_contact_exponent") &&
+        meas.at("clanet_contact_exponent").flag("scored")) {
+      const Record& mt = meas.at("clanet_contact_time");
+      const double U0 = v.number("contact_time_speed_m_s"), tau_ms = 1000 * mt.number("score_low");
+      const double k = meas.at("clanet_contact_exponent").number("score_low");
+      std::vector<double> speeds;
+      for (const auto& key : vars.strings("keys"))
+        if (vars.at(key).has_table("contact_time")) {
+          speeds = vars.at(key).table("contact_time").column("speed_m_s");
+          break;
+        }
+      if (!speeds.empty())
+        ps.push_back(power_law_guide("measured law, τ ∝ U^{" + fmt(k, 3) + "} through the measured point", speeds, U0, tau_ms, k,
+                                     "lines dt 2 lw 2 lc rgb 'black'"));
+      ps.push_back(power_law_guide("measured: " + fmt(tau_ms, 3) + " ms at " + fmt(U0, 3) + " m/s", {U0}, U0, tau_ms, k,
+                                   "points pt 7 ps 2.5 lc rgb 'black'"));
+      measured_words = "Measured (black): " + mt.text("measured") + " at " + fmt(U0, 3) + " m/s (" + mt.text("source") +
+                       "), and the law τ ∝ U^" + fmt(k, 3) + " through it.";
+    }
+    w.figure(line_figure("clanet_contact_time", "Clanet's disk: contact time against speed, each variant and the measured value", ax,
+                         ps, "speed_m_s", "contact_ms"));
+    if (!measured_words.empty()) w.text(measured_words);
   }
   // Attitude (pitch and roll) through the first contact at the trout's and the held spin: every
   // free reference variant (a held one keeps both by construction).
@@ -296,7 +338,7 @@ SectionOutput validation_section(const Record& v) {
       const Record& h = g.at(regime);
       spin = fmt(h.number("spin_rev_s"), 3);
       // One colour per variant: pitch solid, roll dashed.
-      const std::string colour = " lc " + std::to_string(ps.size() / 2 + 1);
+      const std::string colour = series_colour(static_cast<int>(ps.size() / 2));
       ps.push_back(table_series(g.text("title") + ": pitch (attack)", h, "history", "t_s", "attack_deg", "lines" + colour));
       ps.push_back(table_series(g.text("title") + ": roll", h, "history", "t_s", "roll_deg", "lines dt 2" + colour));
       if (h.at("first_contact").flag("exists")) t_zoom = std::max(t_zoom, 1.3 * h.at("first_contact").number("end_s"));
@@ -375,9 +417,23 @@ SectionOutput validation_section(const Record& v) {
     std::vector<PlotSeries> qs = variant_curves(vars, "bocquet_spin", "spin_rev_s", "count", 1, true);
     squared.x_column = "spin_rev_s";
     squared.y_column = "bocquet_N_omega";
+    // The model's counts set the height; Bocquet's N_Ω, which reaches far higher (it bounds the count
+    // by the spin alone), is drawn up to the top and leaves the figure there, said in the caption.
+    double most = 0, bocquet_most = 0;
+    for (std::size_t i = 0; i + 1 < qs.size(); ++i)
+      for (double y : qs[i].y)
+        if (std::isfinite(y)) most = std::max(most, y);
     qs.push_back(table_series("Bocquet N_Ω = RΩ²/g", bq, "spin", squared, "lines dt 3"));
+    for (double y : qs.back().y)
+      if (std::isfinite(y)) bocquet_most = std::max(bocquet_most, y);
+    const bool clipped = most > 0 && bocquet_most > 1.5 * most;
     ax.x_label = "Ω² (rev²/s²)";
-    w.figure(line_figure("bocquet_spin", "Bounce count against Ω² (Bocquet's stone)", ax, qs, "spin2_rev2_s2", "bounces"));
+    if (clipped) ax.extra = "set yrange [0:" + fmt(std::ceil(1.5 * most), 4) + "]";
+    w.figure(line_figure("bocquet_spin",
+                         "Bounce count against Ω² (Bocquet's stone)" +
+                             (clipped ? " — Bocquet's N_Ω leaves the figure, reaching " + fmt(bocquet_most, 3) + " at the largest spin"
+                                      : std::string()),
+                         ax, qs, "spin2_rev2_s2", "bounces"));
   }
 
   // Why the conventions disagree.
