@@ -170,7 +170,11 @@ SectionOutput validation_section(const Record& v) {
              "° is called held (the verdicts `attack_change`, `roll_change`).");
   const Record& m = v.at("measured");
   auto rows_table = [&](const std::string& kind, bool beside_models_only) {
-    std::vector<std::string> head{"quantity", "measured", "expected: a 2-D newtonian reduction, attitude held (model/README.md §3)", "source"};
+    // A peer simulator's column where the study names one (data written before: none).
+    const bool peer = v.has_text("peer_description") && !v.text("peer_description").empty();
+    std::vector<std::string> head{"quantity", "measured", "expected: a 2-D newtonian reduction, attitude held (model/README.md §3)"};
+    if (peer) head.push_back("peer: " + v.text("peer_description"));
+    head.push_back("source");
     std::vector<std::string> cols;
     for (const auto& key : vars.strings("keys"))
       if (!beside_models_only || vars.at(key).flag("beside_models") || vars.at(key).text("convention") == "paper") {
@@ -181,7 +185,9 @@ SectionOutput validation_section(const Record& v) {
     for (const auto& key : m.strings("keys")) {
       const Record& row = m.at(key);
       if (row.text("kind") != kind) continue;
-      std::vector<std::string> cells{row.text("quantity"), row.text("measured"), row.text("expected"), row.text("source")};
+      std::vector<std::string> cells{row.text("quantity"), row.text("measured"), row.text("expected")};
+      if (peer) cells.push_back(row.has_text("peer") ? row.text("peer") : "–");
+      cells.push_back(row.text("source"));
       for (const auto& vk : cols) cells.push_back(model_cell(vars.at(vk), key, v));
       t.row(cells);
     }

@@ -444,6 +444,7 @@ void read_validation(TomlTable t, StoneStudiesOptions& o) {
   v.count_exponent_expected = t.number_or("count_exponent_expected", v.count_exponent_expected);
   v.exponent_tolerance = positive(t, "exponent_tolerance", v.exponent_tolerance);
   v.history_dt_s = positive(t, "history_dt_s", v.history_dt_s);
+  v.peer_description = t.string_or("peer_description", "");
   if (auto r = t.maybe_table("ranking")) {
     RankingOptions& k = v.ranking;
     k.miss_distance = positive(*r, "miss_distance", k.miss_distance);
@@ -501,6 +502,9 @@ void read_validation(TomlTable t, StoneStudiesOptions& o) {
       x.expected = m.string_or("expected", "–");
       x.source = m.string("source");
       x.kind = m.string_or("kind", "measurement");
+      x.peer = m.string_or("peer", "");
+      if (!x.peer.empty() && v.peer_description.empty())
+        m.fail("peer", "a peer's value needs validation.peer_description (what the peer is and where its numbers come from)");
       if (x.kind != "measurement" && x.kind != "model") m.fail("kind", "'" + x.kind + "' is not one of measurement, model");
       if (x.kind == "model" && (m.has("score_low") || m.has("score_high")))
         m.fail("kind", "a model's estimate is shown beside the model, never scored");

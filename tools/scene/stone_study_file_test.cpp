@@ -78,6 +78,10 @@ BOOST_AUTO_TEST_CASE(the_shipped_presets_name_their_laws_ranges_and_curve) {
   int models = 0;
   for (const auto& m : full.validation.measured) models += m.kind == "model" ? 1 : 0;
   BOOST_TEST(models == 6);  // Bocquet's three rows and the seed's three: model beside model
+  int peers = 0;
+  for (const auto& m : full.validation.measured) peers += m.peer.empty() ? 0 : 1;
+  BOOST_TEST(peers == 3);  // the peer simulator's U_min, β_max and contact time (model/README.md §3)
+  BOOST_TEST(!full.validation.peer_description.empty());
   BOOST_TEST(quick.validation.ranking.held_spin_rev_s == 65.0);
   BOOST_TEST(full.convergence.correction_term);  // written out in both presets
   BOOST_TEST(quick.convergence.correction_term);
@@ -102,6 +106,10 @@ BOOST_AUTO_TEST_CASE(bad_laws_ranges_and_strategies_are_one_line_errors_naming_t
   names(error_of({"validation.ranking.attitude_bound_deg=-1.0"}), "attitude_bound_deg");
   names(error_of({R"(validation.measured=[{key = "seed_spin", quantity = "q", measured = "m", source = "s", kind = "guess"}])"}),
         "kind");
+  // A peer's value without saying what the peer is.
+  names(error_of({"validation.peer_description=\"\"",
+                  R"(validation.measured=[{key = "seed_spin", quantity = "q", measured = "m", source = "s", kind = "model", peer = "3"}])"}),
+        "validation.measured[0].peer");
   names(error_of({"restarts.strategies=[\"at_jumps\", \"never\"]"}), "restarts.strategies");
   names(error_of({"restarts.throws=[\"nospin@planning\"]"}), "restarts.throws");
   // The seed's cases are planing already: "nospin@planing" beside "nospin" is one throw twice.

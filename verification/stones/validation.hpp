@@ -43,6 +43,9 @@ struct MeasuredValue {
   // "measurement" (an experiment, read from its text, a figure or a secondary account: the quantity
   // or source says which) or "model" (another model's estimate: shown "model beside model", never scored).
   std::string kind = "measurement";
+  // The peer simulator's value of the same quantity (ValidationOptions::peer_description), as its
+  // source reports it; empty: none given.
+  std::string peer;
 };
 
 // The rows whose model value is a number the ranking can score (validation_findings.cpp computes
@@ -110,6 +113,9 @@ struct ValidationOptions {
   double exponent_tolerance = 0.25;                   // the fitted exponents' interval must lie within this
   double history_dt_s = 1e-3;                         // stored histories: rows at least this far apart
   std::vector<MeasuredValue> measured;
+  // Another simulator of the same experiments, whose reported values (MeasuredValue::peer) stand in
+  // a column of their own beside the measured ones; empty: no peer column.
+  std::string peer_description;
   std::vector<MeasuredCurve> curves;
   RankingOptions ranking;
   int workers = 2;

@@ -611,6 +611,7 @@ Record validation_findings(const ValidationResult& v, const ValidationOptions& o
     sp.set("speed_m_s", o.sphere_speed_m_s);
     sp.set("theta_max_deg", o.sphere_theta_coefficient_deg / std::sqrt(o.sphere_density_ratio));
   }
+  r.set("peer_description", o.peer_description);
   r.set("surfing_attack_deg", o.surfing_attack_deg);
   r.set("surfing_path_angle_deg", o.surfing_path_angle_deg);
   r.set("diving_spin_rev_s", o.diving_spin_rev_s);
@@ -627,6 +628,7 @@ Record validation_findings(const ValidationResult& v, const ValidationOptions& o
       k.set("quantity", x.quantity);
       k.set("measured", x.measured);
       k.set("expected", x.expected);
+      k.set("peer", x.peer.empty() ? std::string("–") : x.peer);
       k.set("source", x.source);
       k.set("kind", x.kind);
       k.set("scored", x.score.has_value());
