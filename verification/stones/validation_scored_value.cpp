@@ -30,11 +30,15 @@ ScoredValue scored_value(const Record& g, const std::string& key, const Validati
     }
   };
   auto from_exponent = [&](const Record& e) {
-    if (e.flag("valid") && e.number("points") >= 3) {
+    if (!(e.flag("valid") && e.number("points") >= 3)) {
+      s.note = "fewer than 3 points to fit";
+    } else if (e.has_number("curved") && e.flag("curved")) {
+      // The row's verdict counts no exponent where the points bend (skip_inputs): nor does the
+      // distance, which had scored a bent fit's slope as a near hit.
+      s.note = "the points bend: no single power law";
+    } else {
       s.has_value = true;
       s.model = e.number("exponent");
-    } else {
-      s.note = "fewer than 3 points to fit";
     }
   };
   if (key == "clanet_min_speed") {

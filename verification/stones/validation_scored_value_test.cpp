@@ -33,6 +33,22 @@ BOOST_AUTO_TEST_CASE(the_best_attack_angle_of_a_one_angle_grid_is_not_measured) 
   BOOST_TEST(two.model == 20.0);
 }
 
+BOOST_AUTO_TEST_CASE(a_bent_contact_time_series_has_no_exponent_to_score) {
+  // Oracle: the rule itself. A fit whose points bend (the shape test's "curved") is no power law:
+  // the row counts none (skip_inputs), and the distance must not score its slope (a bent series'
+  // −1.04 had been scored as a near hit beside a verdict "misses contact exponent").
+  const ValidationOptions o;
+  Record g;
+  Record& e = g.child("contact_exponent");
+  e.set("valid", 1.0).set("points", 6.0).set("exponent", -1.04).set("curved", 0.0);
+  BOOST_TEST(scored_value(g, "clanet_contact_exponent", o).has_value);
+  BOOST_TEST(scored_value(g, "clanet_contact_exponent", o).model == -1.04);
+  e.set("curved", 1.0);
+  const ScoredValue bent = scored_value(g, "clanet_contact_exponent", o);
+  BOOST_TEST(!bent.has_value);
+  BOOST_TEST(bent.note == "the points bend: no single power law");
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace
