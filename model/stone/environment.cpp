@@ -107,7 +107,7 @@ std::string environment_problem(const Environment& env) {
       std::snprintf(b, sizeof b, "%.6g", env.water_coefficient);
       return std::string(b);
     }() +
-           " with the paper convention: Lee & Baek's Eq. 2 as printed has no coefficient (C_w = 1, spec §1.4); "
+           " with the paper convention: Lee & Baek's Eq. 2 as printed has no coefficient (C_w = 1, model/README.md §1.4); "
            "another C_w exists in the physical convention only";
   if (env.convention == Convention::paper && env.pressure_distribution != PressureDistribution::uniform)
     return std::string("pressure distribution \"") + to_string(env.pressure_distribution) +

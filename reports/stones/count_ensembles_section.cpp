@@ -25,7 +25,7 @@ std::string ran_away_tally(const Record& c) {
   const double failed = c.number("failed_runs"), away = c.number("ran_away_runs");
   std::string s = " Of the " + fmt(failed, 6) + " failed members of all ensembles, " + fmt(away, 6) +
                   " ran away (their last energy over a thousand times the release energy";
-  s += c.text("convention") == "paper" ? ": the printed forces create energy, spec §1.6, so such a stone skips on "
+  s += c.text("convention") == "paper" ? ": the printed forces create energy (model/README.md §1.6), so such a stone skips on "
                                          "with growing speed until the solver gives up)"
                                        : ": forces that only take energy away cannot do that, so the solver's steps did)";
   s += away == failed ? "." : "; " + fmt(failed - away, 6) + " failed otherwise (each throw's reason below says how many of each).";

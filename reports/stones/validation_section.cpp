@@ -320,11 +320,18 @@ SectionOutput validation_section(const Record& v) {
           speeds = vars.at(key).table("contact_time").column("speed_m_s");
           break;
         }
-      if (!speeds.empty())
-        ps.push_back(power_law_guide("measured law, τ ∝ U^{" + fmt(k, 3) + "} through the measured point", speeds, U0, tau_ms, k,
+      // The law over the speeds thrown and the measured one (none where they are one speed).
+      speeds.push_back(U0);
+      const auto [lo, hi] = std::minmax_element(speeds.begin(), speeds.end());
+      if (*lo < *hi) {
+        std::vector<double> along;  // 40 points: a curve on the figure's linear axes
+        for (int i = 0; i <= 40; ++i) along.push_back(*lo + (*hi - *lo) * i / 40.0);
+        ps.push_back(power_law_guide("measured law, τ ∝ U^{" + fmt(k, 3) + "} through the measured point", along, U0, tau_ms, k,
                                      "lines dt 2 lw 2 lc rgb 'black'"));
-      ps.push_back(power_law_guide("measured: " + fmt(tau_ms, 3) + " ms at " + fmt(U0, 3) + " m/s", {U0}, U0, tau_ms, k,
-                                   "points pt 7 ps 2.5 lc rgb 'black'"));
+      }
+      if (v.has_table("measured_contact_time"))
+        ps.push_back(table_series("measured: " + fmt(tau_ms, 3) + " ms at " + fmt(U0, 3) + " m/s", v, "measured_contact_time",
+                                  "speed_m_s", "contact_ms", "points pt 7 ps 2.5 lc rgb 'black'"));
       measured_words = "Measured (black): " + mt.text("measured") + " at " + fmt(U0, 3) + " m/s (" + mt.text("source") +
                        "), and the law τ ∝ U^" + fmt(k, 3) + " through it.";
     }

@@ -577,7 +577,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
           // The paper convention's printed forces create energy (spec §1.6): a thousandfold gain
           // is the model running away, not the stepper failing, and is named so.
           if (env.convention == Convention::paper && energy(s) > 1e3 * std::max(std::abs(energy(initial)), 1e-3))
-            m << "the paper convention's printed forces ran the stone away (spec §1.6; a thousandfold energy gain); ";
+            m << "the paper convention's printed forces ran the stone away (model/README.md §1.6; a thousandfold energy gain); ";
           m << "the adaptive step fell below round-off (speed " << s.velocity_m_s.norm() << " m/s, spin "
             << angular_velocity(stone, s).norm() << " rad/s, energy " << energy(s) << " J against "
             << energy(initial) << " J at release)";

@@ -241,6 +241,7 @@ class ReferenceSolve {
   // rest), and a SUNDIALS call that throws leaves no state to trust.
   RigidState last_good_;
   double last_good_t_ = 0;
+  double release_energy_J_ = 0;  // the runaway test of fail()
   double rcheck_restart_t_ = -1;  // the event a refused continuation was restarted at (once each)
   long rcheck_restarts_ = 0;
   void remember_good(double t) {
@@ -455,7 +456,16 @@ void ReferenceSolve::sample(double t, const RigidState& s) {
 
 void ReferenceSolve::fail(const std::string& why) {
   r_.outcome = Outcome::failed;
-  r_.outcome_detail = why;
+  // The paper convention's printed forces create energy (spec §1.6): a thousandfold gain by the last
+  // good state is the model running away, not CVODE failing, and is named so, as bs32 names it.
+  const double e = last_good_t_ > 0 ? energy(last_good_) : 0;
+  const bool ran_away = env_.convention == Convention::paper && std::isfinite(e) &&
+                        e > 1e3 * std::max(std::abs(release_energy_J_), 1e-3);
+  std::ostringstream m;
+  if (ran_away)
+    m << "the paper convention's printed forces ran the stone away (model/README.md §1.6; a thousandfold energy gain: " << e
+      << " J at t = " << last_good_t_ << " s against " << release_energy_J_ << " J at release); ";
+  r_.outcome_detail = m.str() + why;
   done_ = true;
 }
 
@@ -526,6 +536,7 @@ void ReferenceSolve::run(const RigidState& initial) {
   s0.orientation.normalize();
   last_good_ = s0;
   last_good_t_ = 0;
+  release_energy_J_ = energy(s0);
   events_.reset(s0);
   const int nv = events_.vertex_count();
   if (events_.submerged_vertices() > 0) {

@@ -766,4 +766,33 @@ BOOST_AUTO_TEST_CASE(reference_methods_round_trip_through_their_names) {
   BOOST_TEST(!parse_tolerance_scaling("scalar", ts));
 }
 
+BOOST_AUTO_TEST_CASE(a_paper_runaway_is_named_as_one_and_a_step_limit_is_not) {
+  // A small thick lens (R 1.22 cm, h 1.67 cm, 5 segments, 1500 kg/m³) thrown in the paper convention
+  // at 6.846 m/s, path 10.09°, attack 47.37°, −53.02 rev/s from 0.261 m (found by random throws, 5
+  // December): the printed forces spin it up until CVODE fails on a non-finite state at t = 2.178 s
+  // (measured), with some 1e286 J against 0.08 J at release. Oracle: the runaway rule, a thousandfold
+  // energy gain in the paper convention (bs32's); before, the message said only CV_CONV_FAILURE.
+  const Mesh m = make_lens(0.0122, 0.0167, 5);
+  const Stone stone = make_stone(m, mass_properties_from_density(m, 1500), 0.0122, "lens");
+  Environment env;
+  set_convention(env, Convention::paper);
+  ThrowParameters p;
+  p.speed_m_s = 6.846;
+  p.path_angle_deg = 10.09;
+  p.attack_angle_deg = 47.37;
+  p.spin_rev_s = -53.02;
+  p.height_m = 0.261;
+  ReferenceOptions o;
+  o.t_max_s = 5;
+  o.record_trajectory = false;
+  const ThrowResult r = run_reference(stone, env, initial_state(stone, p), o);
+  BOOST_TEST_REQUIRE(name(r.outcome) == name(Outcome::failed));
+  BOOST_TEST(r.outcome_detail.find("the paper convention's printed forces ran the stone away") == 0u, r.outcome_detail);
+  // A failure that is not a runaway says nothing of one: max_steps of 10 on the same throw.
+  o.max_steps = 10;
+  const ThrowResult capped = run_reference(stone, env, initial_state(stone, p), o);
+  BOOST_TEST_REQUIRE(name(capped.outcome) == name(Outcome::failed));
+  BOOST_TEST(capped.outcome_detail.find("ran the stone away") == std::string::npos, capped.outcome_detail);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

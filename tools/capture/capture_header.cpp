@@ -97,7 +97,7 @@ namespace {
 bool apply_header_value(Trace& t, const std::string& key, const std::string& value, const std::string& file, long line) {
   CaptureCalibration& c = t.calibration;
   if (key == "nominal_rate_hz") {
-    t.nominal_rate_hz = bounded(value, 1, 1000, "a Wii Remote reports at up to about 100 Hz (spec §4); 1000 leaves room for any logger", file, line, key);
+    t.nominal_rate_hz = bounded(value, 1, 1000, "a Wii Remote reports at up to about 100 Hz (tools/capture/README.md); 1000 leaves room for any logger", file, line, key);
     return true;
   }
   if (key.rfind("mounting.", 0) == 0) {

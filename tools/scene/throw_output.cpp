@@ -40,7 +40,7 @@ std::vector<std::string> run_notes(const StoneCase& c, const ThrowResult& r) {
   if (const double rho = c.stone.mass.mass_kg / c.stone.mass.volume_m3; rho < c.environment.water_density_kg_m3)
     notes.push_back("the stone's mean density " + num(rho, "%.4g") + " kg/m^3 is below the water's " +
                     num(c.environment.water_density_kg_m3, "%.4g") +
-                    ": the model has no buoyancy (only faces advancing into the water push, spec §1.4), so it sinks "
+                    ": the model has no buoyancy (only faces advancing into the water push, model/README.md §1.4), so it sinks "
                     "where a real stone would float");
   if (!r.contacts.empty() && contact_open_at_end(r, r.contacts.size() - 1))
     notes.push_back("contact " + std::to_string(r.contacts.size()) + " was still open when the run ended (" +
@@ -117,7 +117,7 @@ std::string text_summary(const StoneCase& c, const ThrowResult& r) {
     s << "energy    a contact gained " << num(r.max_energy_gain_J) << " J (";
     if (held) s << "the model created energy: a held attitude is not passive, the water's torque on the spin is discarded)\n";
     else if (c.environment.convention == Convention::paper)
-      s << "the model created energy: the paper's laws as printed can do positive work, spec §1.6)\n";
+      s << "the model created energy: the paper's laws as printed can do positive work, model/README.md §1.6)\n";
     else s << "the integrator's: the physical water and air laws are passive, F.v + tau.omega <= 0)\n";
   }
   for (const std::string& n : run_notes(c, r)) s << "note      " << n << "\n";

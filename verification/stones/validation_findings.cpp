@@ -612,6 +612,13 @@ Record validation_findings(const ValidationResult& v, const ValidationOptions& o
     sp.set("theta_max_deg", o.sphere_theta_coefficient_deg / std::sqrt(o.sphere_density_ratio));
   }
   r.set("peer_description", o.peer_description);
+  // The measured contact time as a point for the contact-time figure (ms, at its speed).
+  for (const auto& x : o.measured)
+    if (x.key == "clanet_contact_time" && x.score) {
+      Table t{{"speed_m_s", "contact_ms"}, {}};
+      t.add_row({o.contact_time_speed_m_s, 1000 * x.score->low});
+      r.set_table("measured_contact_time", t);
+    }
   r.set("surfing_attack_deg", o.surfing_attack_deg);
   r.set("surfing_path_angle_deg", o.surfing_path_angle_deg);
   r.set("diving_spin_rev_s", o.diving_spin_rev_s);
