@@ -171,7 +171,10 @@ SectionOutput validation_section(const Record& v) {
   const Record& m = v.at("measured");
   auto rows_table = [&](const std::string& kind, bool beside_models_only) {
     // A peer simulator's column where the study names one (data written before: none).
-    const bool peer = v.has_text("peer_description") && !v.text("peer_description").empty();
+    bool peer = false;  // only in a table with a row that has a peer's value
+    if (v.has_text("peer_description") && !v.text("peer_description").empty())
+      for (const auto& key : m.strings("keys"))
+        peer = peer || (m.at(key).text("kind") == kind && m.at(key).has_text("peer") && m.at(key).text("peer") != "–");
     std::vector<std::string> head{"quantity", "measured", "expected: a 2-D newtonian reduction, attitude held (model/README.md §3)"};
     if (peer) head.push_back("peer: " + v.text("peer_description"));
     head.push_back("source");
