@@ -154,7 +154,7 @@ SectionOutput validation_section(const Record& v) {
              ". Each is the model itself (CVODE, physical convention, rtol " + fmt(v.number("reference_rtol"), 2) +
              ") unless named `real-time`: the real-time stepper at the study's settings on the study's first law, " +
              code(v.text("default_law")) + ", uniform, free" +
-             (v.text("default_law") == v.text("model_default_law") ? std::string()
+             ((!v.has_text("model_default_law") || v.text("default_law") == v.text("model_default_law")) ? std::string()
                                                                     : " (not the model's default in the physical convention, " +
                                                                           code(v.text("model_default_law")) + " with " +
                                                                           code(v.text("model_default_distribution")) +
@@ -458,7 +458,7 @@ SectionOutput validation_section(const Record& v) {
   const Record& pap = why.at("paper");
   w.subheading("Why the two conventions disagree");
   w.text("The seed's spinning throw (" + phys.text("label") + "), solved by the reference in both conventions" +
-         (v.text("default_law") == v.text("model_default_law")
+         ((!v.has_text("model_default_law") || v.text("default_law") == v.text("model_default_law"))
               ? std::string(".")
               : std::string("; the physical one with the study's first law, not the model's default, ") +
                     code(v.text("model_default_law")) + " with " + code(v.text("model_default_distribution")) +

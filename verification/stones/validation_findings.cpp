@@ -427,6 +427,7 @@ void skip_inputs(Record& in, const std::string& prefix, const Record& g, const s
   if (g.has_number("best_attack_tied_low_deg") && std::isfinite(value("clanet_best_attack"))) {
     in.set(prefix + "best_attack_tied_low", g.number("best_attack_tied_low_deg"));
     in.set(prefix + "best_attack_tied_high", g.number("best_attack_tied_high_deg"));
+    in.set(prefix + "best_attack_tied_placed", 1.0);  // the span judged as an interval (verdict_rules.cpp)
   }
   in.set(prefix + "max_path_angle", value("clanet_max_path_angle"));
   in.set(prefix + "contact_time", value("clanet_contact_time"));

@@ -70,8 +70,13 @@ RowJudgement judge_rows(const Record& in, const std::string& v) {
   // lies within, missed when none does, else undecided.
   const double a_lo = in.number("best_attack_low") - in.number("best_attack_bound"),
                a_hi = in.number("best_attack_high") + in.number("best_attack_bound");
-  if (in.has_number(v + "best_attack_tied_low"))
+  // Records written before the span was judged as an interval (no best_attack_tied_placed): a span
+  // not wholly within missed, as then.
+  if (in.has_number(v + "best_attack_tied_low") && in.has_number(v + "best_attack_tied_placed"))
     placed(in.number(v + "best_attack_tied_low"), in.number(v + "best_attack_tied_high"), a_lo, a_hi, "argmin α");
+  else if (in.has_number(v + "best_attack_tied_low"))
+    row(within(in.number(v + "best_attack_tied_low"), a_lo, a_hi) && within(in.number(v + "best_attack_tied_high"), a_lo, a_hi),
+        "argmin α");
   else
     row(within(in.number(v + "best_attack"), a_lo, a_hi), "argmin α");
   bracketed("max_path_angle", in.number("max_path_angle_low") - in.number("max_path_angle_bound"),
@@ -221,6 +226,8 @@ const std::map<std::string, Rule>& rules() {
        [](const Record& in) {
          if (in.number("contacts") < 1) return std::string("no contact");
          if (in.number("bounces") > 0) return std::string("leaves the water");
+         // Records written before the plunge time was stored: judged by the count alone, as then.
+         if (!in.has_number("duration_s")) return std::string("never leaves the water");
          // A stone that sinks within a few plunge times was not held at the surface: it did not
          // surf, whatever its count (NaN: no downward entry to measure a plunge by).
          const double ratio = in.number("duration_s") / in.number("plunge_s");

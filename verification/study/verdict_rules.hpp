@@ -33,7 +33,7 @@
 //   surfing              contacts, bounces, duration_s (the first contact's), plunge_s (ThrowHistory),
 //                        surf_plunge_ratio → no contact | leaves the water | never leaves the water (no
 //                        bounce, the contact ≥ ratio × plunge) | sinks as it plunges | not decided: no
-//                        plunge time
+//                        plunge time (records without duration_s, written before: the count alone)
 //   diving               bounces, attack_change_deg, tolerance_deg → bounces | tumbles and dives
 //                        (|first contact's attack change| > tolerance) | sinks holding its attitude
 //   trout                bounces, entry_attack_deg, min_attack_deg, tolerance_deg → no bounce |

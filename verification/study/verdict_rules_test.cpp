@@ -152,6 +152,8 @@ BOOST_AUTO_TEST_CASE(a_tied_argmin_holds_only_if_every_tied_angle_is_within_the_
   in.set("best_attack", 20.0).set("best_attack_tied_low", 20.0).set("best_attack_tied_high", 20.0);
   BOOST_TEST(decide("skips_like_a_stone", in) == "skips like a real stone");
   in.set("best_attack_tied_high", 30.0);
+  BOOST_TEST(decide("skips_like_a_stone", in) == "misses argmin α");  // written before: as then
+  in.set("best_attack_tied_placed", 1.0);
   BOOST_TEST(decide("skips_like_a_stone", in) == "not decided: argmin α");
   in.set("best_attack", 30.0).set("best_attack_tied_low", 30.0).set("best_attack_tied_high", 35.0);
   BOOST_TEST(decide("skips_like_a_stone", in) == "misses argmin α");
@@ -226,6 +228,9 @@ BOOST_AUTO_TEST_CASE(the_three_regimes_are_judged_from_counts_and_angles) {
   BOOST_TEST(decide("surfing", s) == "sinks as it plunges");
   s.set("plunge_s", std::numeric_limits<double>::quiet_NaN());
   BOOST_TEST(decide("surfing", s) == "not decided: no plunge time");
+  Record old;  // a record written before the plunge time: the count alone, as then
+  old.set("contacts", 1.0).set("bounces", 0.0);
+  BOOST_TEST(decide("surfing", old) == "never leaves the water");
   s.set("bounces", 1.0);
   BOOST_TEST(decide("surfing", s) == "leaves the water");
   s.set("contacts", 0.0);
