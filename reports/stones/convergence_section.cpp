@@ -170,7 +170,10 @@ SectionOutput convergence_section(const Record& c) {
              "whole interval within " +
              fmt(c.number("order_tolerance"), 2) +
              " of the formal order, says *order not established* when the interval is too wide to decide (or rests on "
-             "fewer than three points), and *does not converge* only when the slope is shown to be at most " +
+             "fewer than three points), when the error does not fall at some halving, or when its local order drifts "
+             "across the steps by more than twice that tolerance (the bend of log error against log h significant by "
+             "an F test: an error running onto a floor), and *does not converge* only when the slope is shown to be at "
+             "most " +
              fmt(c.number("minimum_order"), 2) +
              ". The pairwise orders of neighbouring step sizes show whether the slope is steady; Celik's GCI (fine grid) "
              "estimates the remaining relative error of a scalar from the three finest runs.");
@@ -217,10 +220,17 @@ SectionOutput convergence_section(const Record& c) {
     if (s.has_child("gci")) {
       // Divergent or at round-off: Celik's GCI is not defined (gci_fine is stored as 0), and "0 %"
       // read as "no error left" (GciResult::brief).
-      const std::string kind = s.at("gci").text("kind");
+      const Record& g = s.at("gci");
+      const std::string kind = g.text("kind");
+      // An apparent order that is not reasonable: the formal order and Fs = 3 (gci.hpp; records
+      // written before the rule have no `reverted`).
+      const std::string reverted = g.has("reverted") && g.flag("reverted")
+                                       ? "; p = " + fmt(g.number("order")) + " not reasonable: the formal " +
+                                             fmt(g.number("order_used")) + " with Fs = " + fmt(g.number("safety_factor"))
+                                       : "";
       gci = kind == "divergent" || kind == "converged to round-off"
                 ? "none (" + kind + ")"
-                : fmt(100 * s.at("gci").number("gci_fine"), 2) + " % (" + kind + ")";
+                : fmt(100 * g.number("gci_fine"), 2) + " % (" + kind + reverted + ")";
     }
     table.row({s.text("description"), s.text("scheme"),
                fmt(s.number("formal_order")) + (s.flag("against_tolerance") ? " (in tol)" : ""), observed(fit),

@@ -187,8 +187,10 @@ SectionOutput convergence_section(const Record& c) {
          "against log(h) over " + (fp > 0 ? "the finest " + fmt(fp) + " points" : std::string("every point")) +
          ", with its 95 % confidence interval (Student t); the pairwise orders use every pair of neighbouring grids. "
          "The verdict asks for the whole interval within " + fmt(c.number("tolerance")) + " of " +
-         fmt(c.number("expected_order")) + "; an interval too wide to decide (or a fit on fewer than 3 points) says "
-         "*order not established*, and *does not converge* needs the whole interval at or below " +
+         fmt(c.number("expected_order")) + "; an interval too wide to decide (or a fit on fewer than 3 points), a run without a finite error, "
+         "or a local order that drifts across the grids by more than twice that tolerance (the bend of log error "
+         "against log h significant by an F test) says *order not established*, and *does not converge* needs the "
+         "whole interval at or below " +
          fmt(c.number("minimum_order")) + ".");
   MarkdownTable t({"stencil", "sequence", "finest h", "RMS error at finest (m)", "max error at finest (m)",
                    "order (95 % interval)", "pairwise orders", "verdict", "CPU of the runs (s)"});
@@ -227,7 +229,12 @@ SectionOutput convergence_section(const Record& c) {
     const bool defined = gc.text("kind") != "divergent" && gc.text("kind") != "converged to round-off";
     g.row({code(n), gc.text("kind"), defined ? fmt(gc.number("order"), 3) : "–", fmt(gc.number("point_fine_m"), 5),
            gc.text("kind") != "divergent" ? fmt(gc.number("extrapolated_m"), 5) : "–", fmt(gc.number("point_exact_m"), 5),
-           defined ? fmt(100 * gc.number("gci_fine"), 3) + " %" : "none",
+           defined ? fmt(100 * gc.number("gci_fine"), 3) + " %" +
+                         (gc.has("reverted") && gc.flag("reverted")
+                              ? " (p not reasonable: " + fmt(gc.number("order_used"), 3) + " and Fs = " +
+                                    fmt(gc.number("safety_factor"), 3) + " used)"
+                              : "")
+                   : "none",
            fmt(100 * gc.number("actual_relative_error"), 3) + " %", gc.at("verdict").text("verdict")});
   }
   w.table(g);

@@ -1,5 +1,7 @@
 #include "verification/convergence/order_fit.hpp"
 
+#include "verification/convergence/power_law_shape.hpp"
+
 #include <boost/math/distributions/fisher_f.hpp>
 #include <boost/math/distributions/students_t.hpp>
 
@@ -119,16 +121,23 @@ OrderFit fit_order(const std::vector<double>& h, const std::vector<double>& erro
     fit.problem = "h and error have different lengths";
     return fit;
   }
-  std::vector<double> x, y;
+  std::vector<double> x, y, hs, es;
   for (std::size_t i = 0; i < h.size(); ++i) {
-    if (h[i] > 0 && error[i] > 0 && std::isfinite(h[i]) && std::isfinite(error[i])) {
+    if (!std::isfinite(h[i]) || !std::isfinite(error[i])) {
+      ++fit.failed_points;
+    } else if (!(error[i] > 0)) {
+      ++fit.nonpositive_points;
+    } else if (h[i] > 0) {
       x.push_back(std::log(h[i]));
       y.push_back(std::log(error[i]));
+      hs.push_back(h[i]);
+      es.push_back(error[i]);
     }
   }
   fit.points = static_cast<int>(x.size());
   if (x.size() < 2) {
     fit.problem = "fewer than 2 points with h > 0 and error > 0";
+    if (fit.failed_points > 0) fit.problem += " (" + std::to_string(fit.failed_points) + " with a NaN or infinite value)";
     return fit;
   }
   const LineFit line = fit_line(x, y);
@@ -144,6 +153,15 @@ OrderFit fit_order(const std::vector<double>& h, const std::vector<double>& erro
   for (std::size_t i = 0; i + 1 < x.size(); ++i) fit.pairwise.push_back((y[i] - y[i + 1]) / (x[i] - x[i + 1]));
   fit.valid = true;
   if (options.correction_term) test_correction_term(x, y, line, fit);
+  const PowerLawShape shape = test_power_law_shape(hs, es);
+  if (shape.tested) {
+    fit.shape_tested = true;
+    fit.curved = shape.curved;
+    fit.curvature_f = shape.f_statistic;
+    fit.curvature_f_critical = shape.f_critical;
+    fit.local_order_fine = shape.quadratic_slope_at_min_x;  // the finest h is the least
+    fit.local_order_coarse = shape.quadratic_slope_at_max_x;
+  }
   return fit;
 }
 
@@ -182,49 +200,83 @@ const char* to_string(OrderVerdict v) {
 
 OrderDecision judge_order(const OrderFit& fit, const OrderJudgement& j) {
   OrderDecision d;
-  if (!fit.valid) {
-    d.reason = "no fit: " + fit.problem;
-    return d;
-  }
-  if (fit.points < 3) {
-    d.reason = "only " + std::to_string(fit.points) + " points: a fit needs 3 for a confidence interval";
-    return d;
-  }
   auto num = [](double x) {
+    if (std::isnan(x)) return std::string("–");
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.3g", x);
     return std::string(buf);
   };
+  // Exact errors (≤ 0) left out are said, not hidden.
+  const std::string zeros =
+      fit.nonpositive_points > 0
+          ? " (" + std::to_string(fit.nonpositive_points) + " run" + (fit.nonpositive_points == 1 ? "" : "s") +
+                " with an error ≤ 0 left out)"
+          : "";
+  if (!fit.valid) {
+    d.reason = "no fit: " + fit.problem + zeros;
+    return d;
+  }
+  const int all = fit.points + fit.failed_points + fit.nonpositive_points;
+  if (fit.failed_points > 0) {
+    // A failed or unstable run is a result, not a gap: the others are not the sequence asked for.
+    d.verdict = OrderVerdict::order_not_established;
+    d.reason = std::to_string(fit.failed_points) + " of " + std::to_string(all) +
+               " runs gave no finite error (a failed or unstable run): no order from the others";
+    return d;
+  }
+  if (fit.points < 3) {
+    d.reason = "only " + std::to_string(fit.points) + " points: a fit needs 3 for a confidence interval" + zeros;
+    return d;
+  }
   const std::string interval = "p = " + num(fit.order) + " [" + num(fit.order_low) + ", " + num(fit.order_high) + "]";
   const std::string expected = "the " + j.expected_name + " " + num(j.expected_order);
   const double band_low = j.expected_order - j.tolerance, band_high = j.expected_order + j.tolerance;
   const bool within = fit.order_low >= band_low && fit.order_high <= band_high;
   const bool misses_band = fit.order_high < band_low || fit.order_low > band_high;
-  // An error that grows at some refinement (a pairwise order ≤ 0) is not approaching C h^p, so
-  // no order is claimed from it, however narrow the fit's interval (its residuals are not the
-  // scatter the interval assumes): the interval alone would call an erratic series convergent.
+  // An error that does not fall at some refinement (a pairwise order ≤ 0) is not approaching
+  // C h^p, so no order is claimed from it, however narrow the fit's interval (its residuals are not
+  // the scatter the interval assumes): the interval alone would call an erratic series convergent.
   const int growing = fit.growing_refinements();
+  // Nor from a series whose local order drifts across the range by more than the band is wide
+  // (an error running onto a floor): the interval of a straight line through a bend describes no
+  // part of it, whether it claims an order or no convergence. A fit that took the correction term
+  // has described its bend already.
+  const bool drifts = fit.shape_tested && fit.curved && !fit.corrected &&
+                      std::abs(fit.local_order_fine - fit.local_order_coarse) > 2 * j.tolerance;
   const bool claims_order = within || (misses_band && fit.order_low > j.minimum_order);
   if (claims_order && growing > 0) {
     d.verdict = OrderVerdict::order_not_established;
-    d.reason = interval + ", but the error grows at " + std::to_string(growing) + " of " +
+    d.reason = interval + ", but the error does not fall at " + std::to_string(growing) + " of " +
                std::to_string(fit.pairwise.size()) + " refinements (pairwise orders ≤ 0): not in the asymptotic range";
+  } else if ((claims_order || fit.order_high <= j.minimum_order) && drifts) {
+    d.verdict = OrderVerdict::order_not_established;
+    d.reason = interval + ", but its local order drifts from " + num(fit.local_order_coarse) + " at the coarsest h to " +
+               num(fit.local_order_fine) + " at the finest (curvature F = " + num(fit.curvature_f) + " > " +
+               num(fit.curvature_f_critical) + ", more than the band's width " + num(2 * j.tolerance) +
+               "): no one order describes the range";
   } else if (within) {
     d.verdict = OrderVerdict::converges_at_expected_order;
     d.reason = interval + " lies within " + num(j.tolerance) + " of " + expected;
   } else if (fit.order_high <= j.minimum_order) {
     d.verdict = OrderVerdict::does_not_converge;
-    d.reason = interval + " lies at or below " + num(j.minimum_order) + ": the error does not fall as h shrinks";
+    d.reason = interval + " lies at or below " + num(j.minimum_order) +
+               (fit.order_low > 0 ? ": the error falls, but no faster than h^" + num(j.minimum_order) +
+                                        ", too slowly to count as convergence"
+                                  : ": the error does not fall as h shrinks");
   } else if (misses_band && fit.order_low > j.minimum_order) {
     d.verdict = OrderVerdict::converges_at_other_order;
     d.reason = interval + " excludes " + expected;
   } else {
     d.verdict = OrderVerdict::order_not_established;
+    const bool narrow = fit.order_high - fit.order_low < 2 * j.tolerance;
     d.reason = interval + (misses_band ? " excludes " + expected + " but reaches " + num(j.minimum_order) +
                                              " (no convergence): too wide to decide"
+                           : narrow    ? " straddles the edge of " + expected + " ± " + num(j.tolerance) +
+                                          ": neither within the band nor outside it"
                                        : " overlaps " + expected + " ± " + num(j.tolerance) +
                                              " without lying within it: too wide to decide");
   }
+  d.reason += zeros;
   return d;
 }
 

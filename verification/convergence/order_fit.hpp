@@ -24,6 +24,10 @@ LineFit fit_line(const std::vector<double>& x, const std::vector<double>& y);
 struct OrderFit {
   bool valid = false;            // false with fewer than 2 usable points (error > 0, h > 0)
   std::string problem;           // why not valid
+  // Points left out of the fit: an error or h that is NaN or infinite (a failed or unstable run),
+  // and an error ≤ 0 (exact to the last bit, or a signed quantity). judge_order claims no order
+  // where any run failed: the survivors are not the sequence that was asked for.
+  int failed_points = 0, nonpositive_points = 0;
   double order = 0;              // slope p
   double constant = 0;           // C
   double order_low = 0;          // 95 % confidence interval of p (equal to p with 2 points)
@@ -38,6 +42,13 @@ struct OrderFit {
   double single_order = 0, single_low = 0, single_high = 0;
   double correction = 0;
   double f_statistic = 0, f_critical = 0;  // the test's F and its 95 % quantile (0: not tested)
+  // Whether one power describes the fitted points at all (power_law_shape.hpp: the F test of a
+  // quadratic in log h, n ≥ 4), and the quadratic's local order at the coarsest and the finest h.
+  // A fit whose local order drifts across its range (an error running onto a floor: 2.0 at the
+  // coarse end, 0.2 at the fine) has an interval that describes no part of it (judge_order).
+  bool shape_tested = false, curved = false;
+  double curvature_f = 0, curvature_f_critical = 0;
+  double local_order_coarse = 0, local_order_fine = 0;
   std::string brief() const;     // "p = 2.01 [1.98, 2.04] (5 points)"
   int growing_refinements() const;  // pairwise orders ≤ 0 (or NaN): refinements at which the error grew
 };
@@ -73,10 +84,16 @@ double richardson_extrapolate(double phi_fine, double phi_coarse, double ratio, 
 //   converges_at_other_order     the interval misses the band expected ± tolerance entirely and
 //                                lies above minimum_order (it excludes no convergence too);
 //   does_not_converge            the whole interval lies at or below minimum_order: the data show
-//                                that the error does not fall (a wide interval shows nothing);
-//   order_not_established        anything else: the interval is too wide to decide, or the error
-//                                grows at some refinement (a pairwise order ≤ 0) where one of the
-//                                two verdicts above would claim an order;
+//                                that the error falls no faster than h^minimum_order, if at all (a
+//                                wide interval shows nothing);
+//   order_not_established        anything else: a run failed (a NaN or infinite error); the
+//                                interval is too wide to decide or straddles the band's edge; where
+//                                one of the two order verdicts would be given, the error does not
+//                                fall at some refinement (a pairwise order ≤ 0); where any of the
+//                                three would be, the local order drifts across the range by more
+//                                than the band's width (2 × tolerance) with the curvature
+//                                significant (F test; not for a fit that took the correction term,
+//                                which describes that bend);
 //   insufficient_data            fewer than 3 points in the fit (a two-point fit has no residual,
 //                                so its "interval" is the point itself), or no fit at all.
 enum class OrderVerdict {

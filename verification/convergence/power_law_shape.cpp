@@ -39,16 +39,20 @@ PowerLawShape test_power_law_shape(const std::vector<double>& x, const std::vect
   }
   const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> line(X.leftCols(2)), quadratic(X);
   if (quadratic.rank() < 3) return s;  // fewer than 3 distinct x
+  const Eigen::Vector3d b = quadratic.solve(Y);
   const double sse1 = (Y - X.leftCols(2) * line.solve(Y)).squaredNorm();
-  const double sse2 = (Y - X * quadratic.solve(Y)).squaredNorm();
-  // Three parameters through every point (to round-off): nothing to test against.
+  const double sse2 = (Y - X * b).squaredNorm();
   const double syy = (Y.array() - Y.mean()).matrix().squaredNorm();
-  if (!(sse2 > 1e-20 * syy)) return s;
+  // A line through every point (to round-off): a power law, nothing to test against.
+  if (!(sse1 > 1e-20 * syy)) return s;
   const double dof = n - 3;
   s.tested = true;
-  s.f_statistic = std::max(0.0, sse1 - sse2) / (sse2 / dof);
   s.f_critical = boost::math::quantile(boost::math::complement(boost::math::fisher_f(1, dof), 0.05));
+  // A quadratic through every point that the line misses: as curved as a series can be.
+  s.f_statistic = sse2 > 1e-20 * syy ? std::max(0.0, sse1 - sse2) / (sse2 / dof) : std::numeric_limits<double>::infinity();
   s.curved = s.f_statistic > s.f_critical;
+  s.quadratic_slope_at_min_x = b(1) + 2 * b(2) * (p.front().first - mean);
+  s.quadratic_slope_at_max_x = b(1) + 2 * b(2) * (p.back().first - mean);
   return s;
 }
 

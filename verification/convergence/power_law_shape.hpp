@@ -6,7 +6,8 @@
 // the same test order_fit.hpp applies to its correction term). Where the term is significant the
 // local exponent drifts across the range, and a fitted k with its interval describes no part of the
 // series: the exponents between neighbouring points are reported instead. With fewer than 4
-// points, or no residual, nothing is tested.
+// points, or a line through every point (to round-off), nothing is tested; a quadratic through
+// every point that the line misses is curved (F infinite).
 #include <vector>
 
 namespace stoneskip {
@@ -19,6 +20,9 @@ struct PowerLawShape {
   // Exponents between neighbouring points in order of x, log(y₂/y₁)/log(x₂/x₁): their least and
   // greatest (NaN with fewer than 2 points).
   double local_min = 0, local_max = 0;
+  // Where tested: the quadratic's local exponent d log y / d log x at the least and the greatest x
+  // (k + 2c (log x − mean)); their difference is how far the exponent drifts across the range.
+  double quadratic_slope_at_min_x = 0, quadratic_slope_at_max_x = 0;
 };
 
 PowerLawShape test_power_law_shape(const std::vector<double>& x, const std::vector<double>& y);

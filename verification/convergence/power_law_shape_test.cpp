@@ -50,13 +50,31 @@ BOOST_AUTO_TEST_CASE(too_few_points_or_no_residual_are_not_tested) {
   BOOST_TEST(three.local_min == -1.0, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(three.local_max == -1.0, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(!three.curved);
-  // An exact parabola in log–log coordinates: no residual, nothing to test against.
+  // An exact power law: the line through every point, nothing to test against.
+  std::vector<double> x, y;
+  for (double v : {1.0, 2.0, 4.0, 8.0, 16.0}) {
+    x.push_back(v);
+    y.push_back(3 * std::pow(v, -1.5));
+  }
+  BOOST_TEST(!test_power_law_shape(x, y).tested);
+}
+
+BOOST_AUTO_TEST_CASE(an_exact_parabola_in_log_log_is_curved_and_its_local_exponents_drift) {
+  // Oracle: log y = (log x)² exactly, so the quadratic has no residual and the line a large one:
+  // curved, F infinite (it was "not tested", and the exponent rule then read an exponent off a
+  // series that is no power law). Its local exponent 2 log x runs from 0 at x = 1 to 2 log 16 at
+  // x = 16 (tolerance: the least-squares solution of a 5 × 3 system, 1e-9).
   std::vector<double> x, y;
   for (double v : {1.0, 2.0, 4.0, 8.0, 16.0}) {
     x.push_back(v);
     y.push_back(std::exp(std::pow(std::log(v), 2)));
   }
-  BOOST_TEST(!test_power_law_shape(x, y).tested);
+  const PowerLawShape s = test_power_law_shape(x, y);
+  BOOST_TEST_REQUIRE(s.tested);
+  BOOST_TEST(s.curved);
+  BOOST_TEST(std::isinf(s.f_statistic));
+  BOOST_TEST(std::abs(s.quadratic_slope_at_min_x) <= 1e-9);
+  BOOST_TEST(std::abs(s.quadratic_slope_at_max_x - 2 * std::log(16.0)) <= 1e-9);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -217,6 +217,8 @@ Record scene_coupling_findings(const SceneStudiesOptions& o, const ProgressFacto
     in.set("difference_low", md.low);
     in.set("difference_high", md.high);
     in.set("count_spread", md.sd_a + md.sd_b);
+    in.set("exact_p", md.exact_p);  // no spread: the exact permutation test (ensemble_difference.hpp)
+    in.set("alpha", md.alpha);
     in.set("failed_runs", failed_two + failed_one);
     in.set("max_time_change_s", first_change);
     in.set("time_tolerance_s", o.coupling.time_tolerance_s);

@@ -36,7 +36,12 @@ void store_series(Record& parent, const ConvergenceSeries& s, OrderJudgement j) 
     g.set("kind", std::string(to_string(s.gci.kind)));
     g.set("order", s.gci.order);
     g.set("gci_fine", s.gci.gci_fine);
+    g.set("gci_fine_absolute", s.gci.gci_fine_absolute);
     g.set("extrapolated", s.gci.extrapolated);
+    // Where the apparent order was not reasonable: the formal order and Fs = 3 used (gci.hpp).
+    g.set("reverted", s.gci.reverted);
+    g.set("order_used", s.gci.order_used);
+    g.set("safety_factor", s.gci.safety_factor);
   }
 }
 

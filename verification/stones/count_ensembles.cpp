@@ -143,6 +143,8 @@ Record count_ensembles_findings(const std::vector<CountEnsembleThrow>& throws, c
     in.set("difference_low", d.low);
     in.set("difference_high", d.high);
     in.set("count_spread", d.sd_a + d.sd_b);
+    in.set("exact_p", d.exact_p);  // no spread: the exact permutation test (ensemble_difference.hpp)
+    in.set("alpha", d.alpha);
     in.set("realtime_failed", c.realtime_failed);
     in.set("reference_failed", c.reference_failed);
     // Of the failed members, how many ran away (their energy over a thousandfold: the paper

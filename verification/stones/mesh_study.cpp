@@ -97,6 +97,8 @@ const Record& compare(Record& verdicts, const std::string& key, const std::vecto
   in.set("difference_low", d.valid ? d.low : std::nan(""));
   in.set("difference_high", d.valid ? d.high : std::nan(""));
   in.set("count_spread", d.valid ? d.sd_a + d.sd_b : std::nan(""));
+  in.set("exact_p", d.exact_p);  // no spread: the exact sign-flip test (ensemble_difference.hpp)
+  in.set("alpha", d.alpha);
   in.set("failed_runs", sa.failed + sb.failed);
   char reason[512];
   in.set("unequal_pairs", unequal);

@@ -113,14 +113,20 @@ void finish_series(ConvergenceSeries& s, const RealtimeConvergenceOptions& o) {
     s.left_out += b;
     s.decision.reason += b;
   }
-  // GCI (Celik et al. 2008) from the three finest steps with finite values; h_s is descending.
+  // GCI (Celik et al. 2008) from the three finest steps of the order fit (finite values, above the
+  // reference's error bound and round-off, the reference's contact list): a value the fit left out
+  // would put its floor into Eq. 9 as if it were the scheme's error. h_s is descending. An apparent
+  // order outside the formal ± the verdict's tolerance reverts to it with Fs = 3 (gci.hpp).
   std::vector<std::size_t> idx;
   for (std::size_t i = n; i-- > 0 && idx.size() < 3;)
-    if (std::isfinite(s.value[i])) idx.push_back(i);
+    if (s.in_fit[i] && std::isfinite(s.value[i])) idx.push_back(i);
   if (idx.size() == 3 && !s.against_tolerance) {  // GCI needs steps, not tolerances
     s.has_gci = true;
+    GciOptions go;
+    go.formal_order = s.formal_order;
+    go.order_band = o.order_tolerance;
     s.gci = grid_convergence_index(s.value[idx[0]], s.value[idx[1]], s.value[idx[2]], s.h_s[idx[0]], s.h_s[idx[1]],
-                                   s.h_s[idx[2]]);
+                                   s.h_s[idx[2]], go);
   }
 }
 

@@ -17,6 +17,22 @@ void moments(const std::vector<double>& x, double& mean, double& sd) {
   sd = std::sqrt(ss / (x.size() - 1));
 }
 
+// The exact two-sided permutation p of two ensembles without spread, all of a equal to A and all
+// of b equal to B ≠ A: the number k of A values that land in the first ensemble when the N = n_a +
+// n_b labels are shuffled is hypergeometric, P(k) = C(n_a, k) C(n_b, n_a − k) / C(N, n_a), and the
+// difference of the means is D(k) = (A − B)(k/n_a − (n_a − k)/n_b); p sums P(k) over the k with
+// |D(k)| ≥ |D(n_a)| (the observed one).
+double permutation_p(int na, int nb) {
+  auto log_choose = [](int n, int k) { return std::lgamma(n + 1.0) - std::lgamma(k + 1.0) - std::lgamma(n - k + 1.0); };
+  const double observed = 1.0;  // |D(n_a)| / |A − B|
+  double p = 0;
+  for (int k = std::max(0, na - nb); k <= na; ++k) {
+    const double d = std::abs(static_cast<double>(k) / na - static_cast<double>(na - k) / nb);
+    if (d >= observed * (1 - 1e-12)) p += std::exp(log_choose(na, k) + log_choose(nb, na - k) - log_choose(na + nb, na));
+  }
+  return std::min(1.0, p);
+}
+
 }  // namespace
 
 std::vector<double> perturbation_factors(int members, double smallest, double largest) {
@@ -42,8 +58,10 @@ MeanDifference welch_difference(const std::vector<double>& a, const std::vector<
   d.difference = d.mean_a - d.mean_b;
   const double va = d.sd_a * d.sd_a / d.n_a, vb = d.sd_b * d.sd_b / d.n_b;
   d.standard_error = std::sqrt(va + vb);
+  d.alpha = 1 - confidence;
   if (!(d.standard_error > 0)) {
     d.low = d.high = d.difference;
+    if (d.difference != 0) d.exact_p = permutation_p(d.n_a, d.n_b);
     return d;
   }
   // Welch–Satterthwaite: ν = (va + vb)² / (va²/(n_a − 1) + vb²/(n_b − 1)).
@@ -70,6 +88,7 @@ MeanDifference paired_difference(const std::vector<double>& a, const std::vector
   d.standard_error = sd / std::sqrt(static_cast<double>(diff.size()));
   if (!(d.standard_error > 0)) {
     d.low = d.high = d.difference;
+    if (d.difference != 0) d.exact_p = std::pow(2.0, 1.0 - static_cast<double>(diff.size()));  // all d_k of one sign
     return d;
   }
   d.dof = static_cast<double>(diff.size() - 1);

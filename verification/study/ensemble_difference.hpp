@@ -5,8 +5,13 @@
 // relative amounts log-spaced over [smallest, largest], of both signs; the two ensembles' mean
 // counts are compared by Welch's t interval (Welch 1947): difference of means ± t_{0.975, ν} · se,
 // se² = s_a²/n_a + s_b²/n_b, ν by Welch–Satterthwaite. An interval that excludes 0 establishes a
-// difference; one that contains it does not (and says so); two ensembles without spread give the
-// difference itself as the interval (the count did not depend on the perturbation).
+// difference; one that contains it does not (and says so). Two ensembles without spread give the
+// difference itself as the interval (the count did not depend on the perturbation), and then an
+// exact permutation test decides instead of the t interval, whose zero width would otherwise
+// establish {9, 9} against {8, 8, 8}: relabelling the members at random puts every 9 in the first
+// ensemble with probability 1/C(5, 2) = 0.1 (Fisher 1935, The Design of Experiments, §21; the
+// hypergeometric law of where the values fall), not below 0.05.
+#include <limits>
 #include <vector>
 
 namespace stoneskip {
@@ -24,7 +29,11 @@ struct MeanDifference {
   double standard_error = 0;
   double dof = 0;               // Welch–Satterthwaite ν (infinite without spread: 0 stored)
   double low = 0, high = 0;     // 95 % (or the asked-for level's) interval of the difference
-  bool established() const { return valid && (low > 0 || high < 0); }
+  // Where neither ensemble (paired: no difference) has spread and the means differ: the exact
+  // permutation test's two-sided p (NaN where the t interval decides), and its level 1 − confidence.
+  double exact_p = std::numeric_limits<double>::quiet_NaN();
+  double alpha = 0.05;
+  bool established() const { return valid && (low > 0 || high < 0) && !(exact_p > alpha); }
 };
 
 // `confidence`: the interval's two-sided level (0.95 for 95 %); a family of m comparisons held to
@@ -34,7 +43,8 @@ MeanDifference welch_difference(const std::vector<double>& a, const std::vector<
 // The same for two ensembles whose members are paired (a_k and b_k thrown with the same
 // perturbation: two meshes, or a throw and its mirror image): the t interval of the mean of the
 // differences d_k = a_k − b_k, se = sd(d)/√n, ν = n − 1 (Student 1908). Members without spread in
-// d give the difference itself as the interval. a and b must have one size (≥ 2 to be valid);
+// d give the difference itself as the interval, decided by the exact sign-flip test: every d_k of
+// one sign has p = 2 / 2^n under the null (Fisher 1935, §21). a and b must have one size (≥ 2 to be valid);
 // mean_a, sd_a, mean_b, sd_b are each ensemble's own.
 MeanDifference paired_difference(const std::vector<double>& a, const std::vector<double>& b);
 

@@ -28,9 +28,18 @@ BOOST_AUTO_TEST_CASE(ensembles_without_spread_give_the_difference_itself) {
   const MeanDifference same = welch_difference({8, 8, 8}, {8, 8, 8});
   BOOST_TEST(!same.established());
   BOOST_TEST(same.low == 0.0);
+  // Without spread the interval is the difference itself, and the exact permutation test decides:
+  // {9, 9} against {8, 8, 8} puts both 9s in the first ensemble in 1 of C(5, 2) = 10 relabellings
+  // (and no other relabelling differs as much), p = 0.1 > 0.05: not established (it was, on the
+  // zero-width interval). Eight against eight: p = 2 / C(16, 8) = 2/12870 (both extremes).
   const MeanDifference other = welch_difference({9, 9}, {8, 8, 8});
-  BOOST_TEST(other.established());
   BOOST_TEST(other.low == 1.0);
+  BOOST_TEST(std::abs(other.exact_p - 0.1) <= 1e-12);
+  BOOST_TEST(!other.established());
+  const MeanDifference eight = welch_difference(std::vector<double>(8, 9.0), std::vector<double>(8, 8.0));
+  BOOST_TEST(std::abs(eight.exact_p - 2.0 / 12870) <= 1e-15);
+  BOOST_TEST(eight.established());
+  BOOST_TEST(std::isnan(same.exact_p));  // no difference: nothing to test
   BOOST_TEST(!welch_difference({8}, {8, 9}).valid);  // one member has no spread to estimate
 }
 
@@ -59,9 +68,14 @@ BOOST_AUTO_TEST_CASE(the_paired_interval_is_student_s_on_the_differences) {
   // what shows the difference.
   BOOST_TEST(!welch_difference(a, b).established());
   // Pairs that differ by one and the same count: the interval is that count.
+  // Decided by the exact sign-flip test: all 3 differences of one sign has p = 2/2³ = 0.25 under
+  // the null, not established; 6 pairs, 2/2⁶ = 0.03125, established.
   const MeanDifference shift = paired_difference({9, 10, 12}, {8, 9, 11});
   BOOST_TEST(shift.low == 1.0);
   BOOST_TEST(shift.high == 1.0);
+  BOOST_TEST(shift.exact_p == 0.25);
+  BOOST_TEST(!shift.established());
+  BOOST_TEST(paired_difference({9, 10, 12, 9, 10, 12}, {8, 9, 11, 8, 9, 11}).established());
   BOOST_TEST(!paired_difference({8, 9}, {8}).valid);  // members must pair up
 }
 

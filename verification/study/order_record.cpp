@@ -16,6 +16,16 @@ Record& store_order_fit(Record& parent, const std::string& key, const OrderFit& 
   r.set("r_squared", fit.r_squared);
   r.set("constant", fit.constant);
   if (!fit.problem.empty()) r.set("problem", fit.problem);
+  r.set("failed_points", fit.failed_points);
+  r.set("nonpositive_points", fit.nonpositive_points);
+  if (fit.shape_tested) {  // whether one power describes the points (order_fit.hpp)
+    r.set("shape_tested", true);
+    r.set("curved", fit.curved);
+    r.set("curvature_f", fit.curvature_f);
+    r.set("curvature_f_critical", fit.curvature_f_critical);
+    r.set("local_order_coarse", fit.local_order_coarse);
+    r.set("local_order_fine", fit.local_order_fine);
+  }
   r.set_table("pairwise", value_list(fit.pairwise, "order"));
   if (fit.f_critical > 0) {  // the correction term was tested (order_fit.hpp, OrderFitOptions)
     r.set("correction_tested", true);
@@ -41,6 +51,14 @@ Record& store_order_fit(Record& parent, const std::string& key, const OrderFit& 
   // The refinements at which the error grew (pairwise order ≤ 0): judge_order claims no order then.
   in.set("refinements", static_cast<long>(fit.pairwise.size()));
   in.set("growing_refinements", fit.growing_refinements());
+  // Failed runs and a drifting local order: no order claimed either (records written before these
+  // were inputs have none, and are judged as before).
+  in.set("failed_points", fit.failed_points);
+  in.set("corrected", fit.corrected);
+  in.set("shape_tested", fit.shape_tested);
+  in.set("curved", fit.curved);
+  in.set("local_order_coarse", fit.local_order_coarse);
+  in.set("local_order_fine", fit.local_order_fine);
   decide_verdict(r, "verdict", "order_fit", in, judge_order(fit, j).reason);
   return r;
 }
@@ -55,6 +73,13 @@ OrderFit stored_order_fit(const Record& r) {
   f.r_squared = r.number("r_squared");
   f.constant = r.number("constant");
   if (r.has_text("problem")) f.problem = r.text("problem");
+  if (r.has_number("failed_points")) f.failed_points = static_cast<int>(r.number("failed_points"));
+  if (r.has_number("nonpositive_points")) f.nonpositive_points = static_cast<int>(r.number("nonpositive_points"));
+  read_order_shape(r, f);
+  if (r.has("shape_tested")) {
+    f.curvature_f = r.number("curvature_f");
+    f.curvature_f_critical = r.number("curvature_f_critical");
+  }
   f.pairwise = list_values(r.table("pairwise"));
   if (r.has("correction_tested")) {
     f.corrected = r.flag("corrected");
@@ -68,6 +93,14 @@ OrderFit stored_order_fit(const Record& r) {
     }
   }
   return f;
+}
+
+void read_order_shape(const Record& r, OrderFit& f) {
+  if (!r.has("shape_tested")) return;
+  f.shape_tested = r.flag("shape_tested");
+  f.curved = r.flag("curved");
+  f.local_order_coarse = r.number("local_order_coarse");
+  f.local_order_fine = r.number("local_order_fine");
 }
 
 OrderJudgement stored_judgement(const Record& v) {

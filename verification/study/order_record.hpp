@@ -16,6 +16,10 @@ Record& store_order_fit(Record& parent, const std::string& key, const OrderFit& 
 
 // The fit as stored (for deciding again).
 OrderFit stored_order_fit(const Record& fit_record);
+// The drift of the local order as stored, in a fit record or a verdict's inputs (shape_tested,
+// curved, local_order_coarse, local_order_fine; records written before them have none, and leave
+// `fit` as it was).
+void read_order_shape(const Record& r, OrderFit& fit);
 OrderJudgement stored_judgement(const Record& verdict_record);
 
 // A list of numbers as a one-column table ("value").

@@ -1,5 +1,7 @@
 #include "verification/study/verdict_rules.hpp"
 
+#include "verification/study/order_record.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -128,6 +130,17 @@ std::string cheapest(const std::vector<Candidate>& passing) {
   return best ? best->name : std::string();
 }
 
+// Two ensembles' counts: does the difference of the means exclude 0? Without spread the interval
+// is the difference itself and an exact permutation test decides (ensemble_difference.hpp); a
+// difference seen but not established is "no difference established", never "same". Records
+// written before exact_p was an input have none, and are judged by the interval as before.
+bool exact_test_made(const Record& in) { return in.has_number("exact_p") && std::isfinite(in.number("exact_p")); }
+bool difference_established(const Record& in) {
+  if (!(in.number("difference_low") > 0 || in.number("difference_high") < 0)) return false;
+  return !exact_test_made(in) || in.number("exact_p") <= in.number("alpha");
+}
+bool difference_seen(const Record& in) { return in.number("count_spread") > 0 || exact_test_made(in); }
+
 const std::map<std::string, Rule>& rules() {
   static const std::map<std::string, Rule> r{
       {"order_fit",
@@ -145,6 +158,11 @@ const std::map<std::string, Rule>& rules() {
            f.pairwise.assign(static_cast<std::size_t>(std::max(0L, n)), 1.0);
            for (long k = 0; k < grew && k < n; ++k) f.pairwise[static_cast<std::size_t>(k)] = -1.0;
          }
+         // Failed runs and the drift of the local order (order_fit.hpp); records written before
+         // they were inputs have none.
+         if (in.has_number("failed_points")) f.failed_points = static_cast<int>(in.number("failed_points"));
+         if (in.has("corrected")) f.corrected = in.flag("corrected");
+         read_order_shape(in, f);
          OrderJudgement j;
          j.expected_order = in.number("expected_order");
          j.tolerance = in.number("tolerance");
@@ -376,8 +394,8 @@ const std::map<std::string, Rule>& rules() {
          // (Records written before the failures were inputs have no such key: judged as before.)
          const auto failed = [&](const char* k) { return in.has_number(k) && in.number(k) > 0; };
          if (failed("realtime_failed") || failed("reference_failed")) return std::string("not decided: runs failed");
-         if (in.number("difference_low") > 0 || in.number("difference_high") < 0) return std::string("different bounce counts");
-         return std::string(in.number("count_spread") > 0 ? "no difference established" : "same bounce count");
+         if (difference_established(in)) return std::string("different bounce counts");
+         return std::string(difference_seen(in) ? "no difference established" : "same bounce count");
        }},
       {"ensemble_count_difference",
        [](const Record& in) {
@@ -386,16 +404,16 @@ const std::map<std::string, Rule>& rules() {
          // with a failed run (see ensemble_bounce_agreement).
          if (!in.flag("valid")) return std::string("not measured");
          if (in.number("failed_runs") > 0) return std::string("not decided: runs failed");
-         if (in.number("difference_low") > 0 || in.number("difference_high") < 0) return std::string("different bounce counts");
-         return std::string(in.number("count_spread") > 0 ? "no difference established" : "same bounce count");
+         if (difference_established(in)) return std::string("different bounce counts");
+         return std::string(difference_seen(in) ? "no difference established" : "same bounce count");
        }},
       {"coupling_change",
        [](const Record& in) {
          // Bounce counts on ensembles: the 95 % interval of the difference of the means; nothing is
          // decided on an ensemble with a failed run (see ensemble_bounce_agreement).
          if (in.has_number("failed_runs") && in.number("failed_runs") > 0) return std::string("not decided: runs failed");
-         if (in.number("difference_low") > 0 || in.number("difference_high") < 0) return std::string("changes the bounce count");
-         if (in.number("count_spread") > 0) return std::string("no difference established");
+         if (difference_established(in)) return std::string("changes the bounce count");
+         if (difference_seen(in)) return std::string("no difference established");
          // Counts that did not depend on the perturbation and agree: the first contact decides.
          return std::string(in.number("max_time_change_s") > in.number("time_tolerance_s") ? "moves the contacts"
                                                                                            : "no visible change");

@@ -6,7 +6,9 @@
 //
 // Rules (inputs → phrases):
 //   order_fit            valid, order, order_low, order_high, points, expected_order, tolerance,
-//                        minimum_order, refinements, growing_refinements (pairwise orders ≤ 0) →
+//                        minimum_order, refinements, growing_refinements (pairwise orders ≤ 0),
+//                        failed_points, corrected, shape_tested, curved, local_order_coarse,
+//                        local_order_fine (the last six absent from older records) →
 //                        verification/convergence/order_fit.hpp judge_order()
 //   consistency          constant_term, laplacian_coefficient, tolerance → consistent | inconsistent
 //   gci_band             usable, order_does_not_converge, gci_fine, actual_relative_error →
@@ -63,6 +65,10 @@
 //                        time_tolerance_s, failed_runs (runs without a count) → not decided: runs
 //                        failed | changes the bounce count | no difference established |
 //                        moves the contacts | no visible change
+//                        (all three: where stored, exact_p and alpha: with no spread in either
+//                        ensemble the interval is the difference itself, and the exact permutation
+//                        test's p ≤ alpha decides; a difference it does not establish is "no
+//                        difference established")
 //   coupled_limit        growth_below, growth_above, growth_free_above, growth_tolerance →
 //                        stable below the limit, unstable above it | the limit is not confirmed
 //   ring_speed           valid, speed_low, speed_high, predicted_low, predicted_high → not measured |

@@ -2,6 +2,7 @@
 // ranking's bounds and answer) and the restart strategies: each rule at and beside its edges.
 #include <boost/test/unit_test.hpp>
 
+#include <cmath>
 #include <limits>
 
 #include "verification/study/verdict_rules.hpp"
@@ -37,6 +38,65 @@ BOOST_AUTO_TEST_CASE(a_power_law_exponent_is_judged_by_its_interval) {
   BOOST_TEST(decide("power_law_exponent", bent) == "not a single power law");
   bent.set("curved", 0.0);
   BOOST_TEST(decide("power_law_exponent", bent) == "consistent with the expected exponent");
+}
+
+BOOST_AUTO_TEST_CASE(ensembles_without_spread_are_decided_by_the_exact_test) {
+  // Oracle: the rules' definition (verdict_rules.hpp): a zero-width interval [1, 1] excludes 0,
+  // but with exact_p = 0.1 > alpha = 0.05 the difference is seen and not established; with
+  // 1.5e-4 it is; a record without exact_p (written before) is judged by the interval alone; two
+  // equal constant ensembles are the same count.
+  auto in = [](double p) {
+    Record r;
+    r.set("valid", 1.0).set("difference_low", 1.0).set("difference_high", 1.0).set("count_spread", 0.0);
+    r.set("realtime_failed", 0.0).set("reference_failed", 0.0).set("failed_runs", 0.0);
+    r.set("max_time_change_s", 0.0).set("time_tolerance_s", 1e-3);
+    if (!std::isnan(p)) r.set("exact_p", p).set("alpha", 0.05);
+    return r;
+  };
+  BOOST_TEST(decide("ensemble_bounce_agreement", in(0.1)) == "no difference established");
+  BOOST_TEST(decide("ensemble_count_difference", in(0.1)) == "no difference established");
+  BOOST_TEST(decide("coupling_change", in(0.1)) == "no difference established");
+  BOOST_TEST(decide("ensemble_bounce_agreement", in(1.5e-4)) == "different bounce counts");
+  BOOST_TEST(decide("coupling_change", in(1.5e-4)) == "changes the bounce count");
+  BOOST_TEST(decide("ensemble_count_difference", in(kNaN)) == "different bounce counts");
+  Record same = in(kNaN);
+  same.set("difference_low", 0.0).set("difference_high", 0.0).set("exact_p", kNaN).set("alpha", 0.05);
+  BOOST_TEST(decide("ensemble_bounce_agreement", same) == "same bounce count");
+}
+
+BOOST_AUTO_TEST_CASE(an_order_fit_is_judged_again_with_its_drift_and_failures_where_stored) {
+  // Oracle: judge_order's definition (order_fit.hpp): p = 1.48 [1.16, 1.80] excludes 2 ± 0.1 and
+  // 0.25, so it claims another order, unless its local order drifts (2.5 → 0.4, a bend found
+  // significant) or a run failed; a record without those inputs (written before) is judged as before.
+  Record in;
+  in.set("valid", 1.0).set("order", 1.48).set("order_low", 1.16).set("order_high", 1.80).set("points", 8.0);
+  in.set("expected_order", 2.0).set("tolerance", 0.1).set("minimum_order", 0.25);
+  in.set("refinements", 7.0).set("growing_refinements", 0.0);
+  BOOST_TEST(decide("order_fit", in) == "converges, not at the expected order");
+  Record drift = in;
+  drift.set("failed_points", 0.0).set("corrected", 0.0).set("shape_tested", 1.0).set("curved", 1.0);
+  drift.set("local_order_coarse", 2.5).set("local_order_fine", 0.4);
+  BOOST_TEST(decide("order_fit", drift) == "order not established");
+  drift.set("corrected", 1.0);  // the correction term describes the bend
+  BOOST_TEST(decide("order_fit", drift) == "converges, not at the expected order");
+  Record failed = in;
+  failed.set("failed_points", 1.0);
+  BOOST_TEST(decide("order_fit", failed) == "order not established");
+}
+
+BOOST_AUTO_TEST_CASE(a_gci_band_contains_or_misses_the_exact_value) {
+  // Oracle: the rule's definition: no usable GCI is no estimate; a sequence the order test calls
+  // non-converging makes any band misleading; otherwise the actual relative error against the
+  // band, its edge inclusive.
+  auto in = [](double usable, double no_order, double gci, double actual) {
+    Record r;
+    r.set("usable", usable).set("order_does_not_converge", no_order).set("gci_fine", gci).set("actual_relative_error", actual);
+    return r;
+  };
+  BOOST_TEST(decide("gci_band", in(0, 0, kNaN, 0.01)) == "no estimate");
+  BOOST_TEST(decide("gci_band", in(1, 1, 0.02, 0.01)) == "misleading");
+  BOOST_TEST(decide("gci_band", in(1, 0, 0.02, 0.02)) == "contains the exact value");
+  BOOST_TEST(decide("gci_band", in(1, 0, 0.02, 0.0201)) == "misses the exact value");
 }
 
 BOOST_AUTO_TEST_CASE(clean_steps_are_said_only_where_every_change_was_located) {

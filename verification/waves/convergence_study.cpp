@@ -26,11 +26,16 @@ void fit_sequence(ConvergenceSequence& s, int fit_points, const OrderJudgement& 
   s.verdict = judge_order(s.fit, judgement).verdict;
 }
 
-void attach_gci(ConvergenceSequence& s) {
+void attach_gci(ConvergenceSequence& s, const OrderJudgement& judgement) {
   const auto& b = s.points;
   if (b.size() < 3) return;
   const std::size_t k = b.size();
-  s.gci = grid_convergence_index(b[k - 1].point_m, b[k - 2].point_m, b[k - 3].point_m, b[k - 1].h, b[k - 2].h, b[k - 3].h);
+  // An apparent order outside the order verdict's band is not reasonable (gci.hpp, Roache 2011).
+  GciOptions go;
+  go.formal_order = judgement.expected_order;
+  go.order_band = judgement.tolerance;
+  s.gci = grid_convergence_index(b[k - 1].point_m, b[k - 2].point_m, b[k - 3].point_m, b[k - 1].h, b[k - 2].h,
+                                 b[k - 3].h, go);
 }
 
 std::size_t convergence_study_work(const ConvergenceStudyOptions& o) {
@@ -111,7 +116,7 @@ ConvergenceStudy run_convergence_study(const Stencil& stencil, const Convergence
     tick(static_cast<std::size_t>(n) * n * steps);
   }
   fit_sequence(study.both, o.fit_points, o.judgement);
-  attach_gci(study.both);
+  attach_gci(study.both, o.judgement);
   return study;
 }
 

@@ -64,7 +64,8 @@ std::size_t convergence_study_work(const ConvergenceStudyOptions& options);
 
 // The order fit of the finest `fit_points` of a sequence (0: all; both norms) and its verdict.
 void fit_sequence(ConvergenceSequence& s, int fit_points, const OrderJudgement& judgement);
-// The Grid Convergence Index of a sequence's three finest point values (no change with fewer).
-void attach_gci(ConvergenceSequence& s);
+// The Grid Convergence Index of a sequence's three finest point values (no change with fewer); an
+// apparent order outside the judgement's expected ± tolerance reverts to it with Fs = 3 (gci.hpp).
+void attach_gci(ConvergenceSequence& s, const OrderJudgement& judgement);
 
 }  // namespace stoneskip

@@ -119,7 +119,7 @@ ForcedConvergenceStudy run_forced_convergence(const Stencil& stencil, const Forc
     study.both.point_exact_m = cont[static_cast<std::size_t>(n / 2) * n + 3 * n / 4];
   }
   fit_sequence(study.both, o.fit_points, o.judgement);
-  attach_gci(study.both);
+  attach_gci(study.both, o.judgement);
   // The reference's own error: halve the sub-intervals' length on the finest grid used.
   int finest = o.time_grid;
   for (int n : o.space_grids) finest = std::max(finest, n);

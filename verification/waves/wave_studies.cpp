@@ -170,6 +170,10 @@ void store_sequence(Record& parent, const ConvergenceSequence& seq, const OrderJ
     g.set("order", usable ? seq.gci.order : kNaN);
     g.set("extrapolated_m", usable ? seq.gci.extrapolated : kNaN);
     g.set("gci_fine", usable ? seq.gci.gci_fine : kNaN);
+    // Where the apparent order was not reasonable: the expected order and Fs = 3 used (gci.hpp).
+    g.set("reverted", usable && seq.gci.reverted);
+    g.set("order_used", usable ? seq.gci.order_used : kNaN);
+    g.set("safety_factor", usable ? seq.gci.safety_factor : kNaN);
     g.set("point_fine_m", fine);
     g.set("point_exact_m", seq.point_exact_m);
     const double actual = std::abs(seq.point_exact_m - fine) / std::abs(fine);
@@ -185,6 +189,10 @@ void store_sequence(Record& parent, const ConvergenceSequence& seq, const OrderJ
                num(100 * actual, 3) + " %";
     } else {
       reason = "GCI " + num(100 * seq.gci.gci_fine, 3) + " % against an actual error of " + num(100 * actual, 3) + " %";
+      if (seq.gci.reverted)
+        reason += " (the apparent order " + num(seq.gci.order, 3) + " is not within " + num(j.tolerance, 3) + " of " +
+                  num(j.expected_order, 3) + ": the GCI uses " + num(seq.gci.order_used, 3) + " and Fs = " +
+                  num(seq.gci.safety_factor, 3) + ", Roache 2011)";
     }
     Record in;
     in.set("usable", usable);
