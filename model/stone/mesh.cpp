@@ -145,21 +145,34 @@ MeshCheck check_mesh(const Mesh& mesh) {
       if (uses > 2) ++c.nonmanifold_edges;
     }
   }
+  auto count = [](int n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); };
   if (mesh.triangles.empty() || nv < 4)
     c.problem = "the mesh has fewer than 4 vertices or no triangles";
   else if (c.bad_indices)
-    c.problem = std::to_string(c.bad_indices) + " triangles index vertices that do not exist";
+    c.problem = count(c.bad_indices, "triangle indexes a vertex", "triangles index vertices") + " that do not exist";
   else if (c.repeated_vertex_triangles)
-    c.problem = std::to_string(c.repeated_vertex_triangles) + " triangles name one vertex twice (no area)";
-  else if (c.boundary_edges)
-    c.problem = "the mesh is open: " + std::to_string(c.boundary_edges) + " edges belong to one triangle only";
+    c.problem = count(c.repeated_vertex_triangles, "triangle names", "triangles name") + " one vertex twice (no area)";
+  else if (c.boundary_edges) {
+    c.problem = "the mesh is open: " + count(c.boundary_edges, "edge belongs", "edges belong") + " to one triangle only";
+    // A closed surface written as a triangle soup (each face with its own copies of its corners)
+    // reads as open: say so, and what mends it.
+    std::vector<Vec3> sorted = mesh.vertices;
+    std::sort(sorted.begin(), sorted.end(), [](const Vec3& a, const Vec3& b) {
+      return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+    });
+    int repeats = 0;
+    for (std::size_t i = 1; i < sorted.size(); ++i) repeats += sorted[i] == sorted[i - 1] ? 1 : 0;
+    if (repeats > 0)
+      c.problem += " (" + count(repeats, "vertex repeats", "vertices repeat") +
+                   " another's position: merge duplicate vertices, e.g. as the file is exported, so that faces share them)";
+  }
   else if (c.nonmanifold_edges)
-    c.problem = std::to_string(c.nonmanifold_edges) + " edges are shared by more than two triangles";
+    c.problem = count(c.nonmanifold_edges, "edge is", "edges are") + " shared by more than two triangles";
   else if (c.misoriented_edges)
-    c.problem = "inconsistent orientation: " + std::to_string(c.misoriented_edges) +
-                " edges are traversed twice in the same direction";
+    c.problem = "inconsistent orientation: " + count(c.misoriented_edges, "edge is", "edges are") +
+                " traversed twice in the same direction";
   else if (c.degenerate_triangles)
-    c.problem = std::to_string(c.degenerate_triangles) + " triangles have zero area";
+    c.problem = count(c.degenerate_triangles, "triangle has", "triangles have") + " zero area";
   else if (!(c.signed_volume_m3 > 0))
     c.problem = "the mesh is oriented inward (negative signed volume)";
   c.ok = c.problem.empty();

@@ -158,6 +158,24 @@ BOOST_AUTO_TEST_CASE(open_flipped_and_inward_meshes_are_rejected) {
   BOOST_TEST(!check_mesh(open).ok);
   BOOST_TEST(check_mesh(open).boundary_edges == 3);
 
+  BOOST_TEST(check_mesh(open).problem == "the mesh is open: 3 edges belong to one triangle only", check_mesh(open).problem);
+
+  // The same closed prism as a triangle soup (each face with its own copies of its corners): open
+  // by its edges, and the line says why and what mends it. 44 faces × 3 corners over 24 positions
+  // (a prism of 11 sides: 22 rim corners and the two face centres) repeat 132 − 24 = 108 times.
+  const Mesh prism = make_prism(0.03, 0.008, 11);
+  Mesh soup;
+  for (const auto& t : prism.triangles) {
+    const int k = static_cast<int>(soup.vertices.size());
+    for (int e = 0; e < 3; ++e) soup.vertices.push_back(prism.vertices[t[e]]);
+    soup.triangles.push_back({k, k + 1, k + 2});
+  }
+  const MeshCheck sc = check_mesh(soup);
+  BOOST_TEST(!sc.ok);
+  BOOST_TEST(sc.problem.find("(" + std::to_string(3 * prism.triangles.size() - prism.vertices.size()) +
+                             " vertices repeat another's position: merge duplicate vertices") != std::string::npos,
+             sc.problem);
+
   Mesh flipped = make_prism(0.03, 0.008, 11);
   std::swap(flipped.triangles[0][1], flipped.triangles[0][2]);
   BOOST_TEST(!check_mesh(flipped).ok);

@@ -332,6 +332,22 @@ StateVector rhs_at(const Stone& stone, const Environment& env, const RigidState&
   return rhs(stone, env, to_vector(s), surface);
 }
 
+// The flight's right-hand side at s (gravity and air; the water's loads left out): the slope at
+// the end of a step that a contact starts inside, for the interpolant the entry is located on.
+// Before the first vertex goes under the stone is in flight; f at a step's end under water holds
+// the water's loads at the full depth the step reached, and a cubic Hermite through that slope
+// swings the flight part of the step far off the scheme's own states (a 5 ms semi-implicit Euler
+// step into the water at 30 m/s gave an entry speed of 32.2 m/s against 29.9 m/s).
+StateVector flight_rhs_at(const Stone& stone, const Environment& env, const RigidState& s, const WaterSurface* surface) {
+  Loads loads;
+  StateDerivative d = rigid_body_rhs(stone, env, s, surface, &loads);
+  d.dvelocity -= loads.water.force_N / stone.mass.mass_kg;
+  if (env.attitude != Attitude::held) d.dangular_momentum -= loads.water.torque_N_m;
+  StateVector y{};
+  to_vector(d, y.data());
+  return y;
+}
+
 }  // namespace
 
 ThrowResult run_realtime(const Stone& stone, const Environment& env, const RigidState& initial,
@@ -681,8 +697,15 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
       r.stats.rhs_evaluations += 2;
     }
     if (starts) {
-      const Crossing c = locate(dense, stone, surface, now, next, Direction::under, Pick::first, next.deepest);
-      const RigidState sc = dense.state_at(c.fraction);
+      // Without steps cut at the crossings (a fixed step), the entry is located on the flight's
+      // interpolant (flight_rhs_at); a sinking in the same step on the full one.
+      HermiteStep entry = dense;
+      if (!have_dense) {
+        entry.f1 = flight_rhs_at(stone, env, s_new, surface);
+        ++r.stats.rhs_evaluations;
+      }
+      const Crossing c = locate(entry, stone, surface, now, next, Direction::under, Pick::first, next.deepest);
+      const RigidState sc = entry.state_at(c.fraction);
       const double tc = t + c.fraction * dt;
       const Vec3 touch = world_vertex(stone, sc, sc.orientation.toRotationMatrix(), c.vertex);
       if (!logged(log.start(tc, sc, touch, energy(sc)), tc)) break;

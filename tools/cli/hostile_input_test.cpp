@@ -357,7 +357,7 @@ BOOST_AUTO_TEST_CASE(the_smaller_ones) {
   expect_refused(run_apart("run /dev/zero"), {"it is a character device, not a regular file"});
   // --rtol 0 was silently ignored, as was --rtol with the real-time solver.
   expect_refused(run_apart(run_good + " --solver reference --rtol 0"), {"--rtol: must be in [1e-15, 1e-2] (got 0)"});
-  expect_refused(run_apart(run_good + " --rtol 1e-8"), {"--rtol: only the reference solver has a tolerance"});
+  expect_refused(run_apart(run_good + " --rtol 1e-8"), {"--rtol: sets the CVODE reference's tolerance: add --solver reference or both"});
   // run --out "" exited 0 writing nothing.
   expect_refused(run_apart(words(run_good, {"--out", ""})), {"--out: needs a file name"});
   // A failed solve (exit 1) still wrote its .h5 though reports/README.md says a failed run leaves none.

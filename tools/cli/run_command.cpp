@@ -67,8 +67,60 @@ std::string failed_runs(const ThrowResult& rt, const ThrowResult& ref) {
   return a && b ? "both runs failed" : a ? "the real-time run failed" : b ? "the reference run failed" : "";
 }
 
-// How the real-time run agrees with the reference: one line, and the same as JSON.
-std::string agreement_line(const ThrowResult& rt, const ThrowResult& ref) {
+// Where two runs whose counts differ part: the first contact, in order, whose start differs by
+// more than kPartStart_s or whose exit speed differs by more than kPartSpeed (relative), or that
+// one run has and the other not. Thresholds for naming the place only: no verdict rests on them.
+constexpr double kPartStart_s = 5e-4, kPartSpeed = 5e-3;
+struct Parting {
+  int contact = 0;   // 1-based; 0: the runs do not part (same counts, or a failed run)
+  std::string what;  // "start 0.8567 s and 0.8567 s, exit 33.231 and 32.985 m/s"
+  std::string cause; // the likely cause and what to do
+};
+
+Parting parting(const StoneCase& c, const ThrowResult& rt, const ThrowResult& ref) {
+  Parting p;
+  if (rt.bounces == ref.bounces || !failed_runs(rt, ref).empty()) return p;
+  const std::size_t n = std::min(rt.contacts.size(), ref.contacts.size());
+  char b[512];
+  for (std::size_t i = 0; i < n && p.contact == 0; ++i) {
+    const ContactRecord &a = rt.contacts[i], &r = ref.contacts[i];
+    const double speed = std::max(std::abs(r.exit_speed_m_s), 1e-12);
+    if (std::abs(a.start_s - r.start_s) > kPartStart_s || std::abs(a.exit_speed_m_s - r.exit_speed_m_s) > kPartSpeed * speed ||
+        a.bounced != r.bounced) {
+      p.contact = static_cast<int>(i) + 1;
+      std::snprintf(b, sizeof b, "start %.5g s and %.5g s, exit %.5g and %.5g m/s%s", a.start_s, r.start_s, a.exit_speed_m_s,
+                    r.exit_speed_m_s, a.bounced != r.bounced ? (a.bounced ? ", a bounce against a sinking" : ", a sinking against a bounce") : "");
+      p.what = b;
+    }
+  }
+  if (p.contact == 0) {
+    p.contact = static_cast<int>(n) + 1;
+    p.what = std::string("only the ") + (rt.contacts.size() > n ? "real-time" : "reference") + " run has it";
+  }
+  if (c.environment.convention == Convention::paper) {
+    p.cause = "the paper convention's laws create energy and its counts are chaotic (model/README.md §1.6): one pair of "
+              "runs decides nothing; compare ensembles (the stones report's section on the conventions)";
+  } else if (c.realtime.scheme == Scheme::bs32) {
+    std::snprintf(b, sizeof b,
+                  "the solvers' error (at rtol %.3g / %.3g) or a chaotic count: tighten both (solver.rtol and solver.atol_m, "
+                  "--rtol) until neither count changes; a count that still moves when the release is nudged by 1e-9 "
+                  "is chaotic and only ensembles decide it (solvers/README.md, \"Where the disagreements are\")",
+                  c.realtime.rtol, c.reference.rtol);
+    p.cause = b;
+  } else {
+    std::snprintf(b, sizeof b,
+                  "the fixed step's error (dt_s %.3g s, contact_dt_s %.3g s): shorten both until the count stops changing, "
+                  "or name no scheme for the adaptive default",
+                  c.realtime.dt_s, c.realtime.contact_dt_s);
+    p.cause = b;
+  }
+  return p;
+}
+
+// How the real-time run agrees with the reference: one line (and, where the counts differ, where
+// the runs part and why they may), and the same as JSON.
+std::string agreement_line(const StoneCase& sc, const ThrowResult& rt, const ThrowResult& ref) {
+  const Parting part = parting(sc, rt, ref);
   const ContactComparison c = compare_contacts(rt, ref);
   const double d = first_contact_s(rt) - first_contact_s(ref);
   char diff[64] = "";
@@ -78,11 +130,15 @@ std::string agreement_line(const ThrowResult& rt, const ThrowResult& ref) {
           : rt.bounces == ref.bounces    ? " (same)"
                                          : " (differ)") +
          "; first contact at " + seconds(first_contact_s(rt)) +
-         " and " + seconds(first_contact_s(ref)) + diff + "; contacts: " + c.brief() + "\n";
+         " and " + seconds(first_contact_s(ref)) + diff + "; contacts: " + c.brief() + "\n" +
+         (part.contact > 0 ? "          the runs part at contact " + std::to_string(part.contact) + " (" + part.what +
+                                 "); likely cause: " + part.cause + "\n"
+                           : "");
 }
 
-nlohmann::json agreement_json(const ThrowResult& rt, const ThrowResult& ref) {
+nlohmann::json agreement_json(const StoneCase& sc, const ThrowResult& rt, const ThrowResult& ref) {
   const ContactComparison c = compare_contacts(rt, ref);
+  const Parting part = parting(sc, rt, ref);
   const double d = first_contact_s(rt) - first_contact_s(ref);
   nlohmann::json j;
   j["bounces_realtime"] = rt.bounces;
@@ -92,6 +148,10 @@ nlohmann::json agreement_json(const ThrowResult& rt, const ThrowResult& ref) {
   j["first_contact_difference_s"] = std::isfinite(d) ? nlohmann::json(d) : nlohmann::json(nullptr);
   j["same_contacts"] = c.same_contacts();
   j["contacts"] = c.brief();
+  // Where the counts differ: the first contact at which the runs part, and the likely cause.
+  j["parts_at_contact"] = part.contact > 0 ? nlohmann::json(part.contact) : nlohmann::json(nullptr);
+  j["parting"] = part.contact > 0 ? nlohmann::json(part.what) : nlohmann::json(nullptr);
+  j["likely_cause"] = part.contact > 0 ? nlohmann::json(part.cause) : nlohmann::json(nullptr);
   return j;
 }
 
@@ -100,7 +160,7 @@ void run(const RunArgs& a) {
   const bool realtime = a.solver == "realtime" || a.solver == "both";
   const bool reference = a.solver == "reference" || a.solver == "both";
   if (a.rtol_option->count() > 0) {
-    if (!reference) throw_input_error("--rtol", 0, "", "only the reference solver has a tolerance: add --solver reference or both");
+    if (!reference) throw_input_error("--rtol", 0, "", "sets the CVODE reference's tolerance: add --solver reference or both (the real-time stepper's is --set solver.rtol=... --set solver.atol_m=...)");
     if (!(a.rtol >= 1e-15 && a.rtol <= 1e-2)) {
       char got[32];
       std::snprintf(got, sizeof got, "%g", a.rtol);
@@ -134,7 +194,7 @@ void run(const RunArgs& a) {
     } else {
       j["case"] = c.title;
       for (const auto& [name, r] : results) j[name] = json_summary(c, r);
-      j["agreement"] = agreement_json(results[0].second, results[1].second);
+      j["agreement"] = agreement_json(c, results[0].second, results[1].second);
     }
     j["convention"] = to_string(c.environment.convention);
     // The paper convention is Eq. 2 as printed: its law is newtonian, its pressure uniform.
@@ -145,7 +205,7 @@ void run(const RunArgs& a) {
     std::cout << json_text(j) << std::endl;
   } else {
     for (const auto& [name, r] : results) std::cout << text_summary(c, r) << (results.size() > 1 ? "\n" : "");
-    if (results.size() == 2) std::cout << agreement_line(results[0].second, results[1].second);
+    if (results.size() == 2) std::cout << agreement_line(c, results[0].second, results[1].second);
   }
   if (writes) {
     if (failed) {

@@ -60,6 +60,16 @@ BOOST_AUTO_TEST_CASE(the_issues_implausible_throws_are_refused_with_key_and_boun
     BOOST_TEST(e.find(c.fragment) != std::string::npos, c.set << " -> " << e);
     BOOST_TEST(e.find("c.toml: --set ") == 0u, e);
   }
+  // A fixed step longer than the run is refused by its own key (it was blamed on output_dt_s, which
+  // the case never wrote: its default is dt_s).
+  const std::string long_step = error_of(kCase, {"solver.dt_s=0.5", "solver.t_max_s=0.01"});
+  BOOST_TEST(long_step.find("solver.dt_s: must not exceed t_max_s = 0.01 s (got 0.5)") != std::string::npos, long_step);
+  // contact_dt_s with no scheme is the fixed-step case, and the missing dt_s says so.
+  std::string no_dt = kCase;
+  no_dt.replace(no_dt.find("dt_s = 1.0e-3\n"), 14, "");
+  const std::string missing = error_of(no_dt, {});
+  BOOST_TEST(missing.find("solver.dt_s: missing key: a [solver] that types contact_dt_s and names no scheme") != std::string::npos,
+             missing);
   // What a key only implies: 1 kg in a 3 cm prism is a density of 44 000 kg/m³ (allowed), 100 kg
   // is 4.4e6 (no stone).
   std::string text = kCase;
@@ -84,6 +94,25 @@ BOOST_AUTO_TEST_CASE(a_mesh_file_that_is_no_file_names_the_key_and_the_path) {
   BOOST_TEST(folder.find("stone.mesh_file: " + dir + ": cannot read: it is a folder") != std::string::npos, folder);
   const std::string f = error_of(text, {"stone.mesh_file=\"" + fifo + "\""});
   BOOST_TEST(f.find("it is a FIFO, not a regular file") != std::string::npos, f);
+  fs::remove_all(dir);
+}
+
+BOOST_AUTO_TEST_CASE(a_mesh_in_millimetres_is_named_as_one_before_its_mass_is_judged) {
+  // Oracle: a 60 mm cube written in millimetres is a 60 m cube: its corners reach √3 · 30 = 52 m
+  // from its centre, outside the stone's [.., 10] m, and at 2500 kg/m³ it weighs 5.4e8 kg, outside
+  // the mass bound too. The size is the cause, so it is what the line names (it named the mass).
+  const std::string dir = fs::temp_directory_path() / ("mesh_mm_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string obj = dir + "/cube_mm.obj";
+  std::ofstream(obj) << "v 0 0 0\nv 60 0 0\nv 60 60 0\nv 0 60 0\nv 0 0 60\nv 60 0 60\nv 60 60 60\nv 0 60 60\n"
+                        "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 4 8 7\nf 4 7 3\nf 1 5 8\nf 1 8 4\n"
+                        "f 2 3 7\nf 2 7 6\n";
+  std::string text = kCase;
+  const std::string dims = "shape = \"prism\"\nradius_m = 0.03\nthickness_m = 0.008\n";
+  text.replace(text.find(dims), dims.size(), "shape = \"mesh\"\n");
+  const std::string e = error_of(text, {"stone.mesh_file=\"" + obj + "\""});
+  BOOST_TEST(e.find("the stone reaches 51.96") != std::string::npos, e);
+  BOOST_TEST(e.find("(a mesh in millimetres?)") != std::string::npos, e);
   fs::remove_all(dir);
 }
 

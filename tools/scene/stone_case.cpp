@@ -188,6 +188,9 @@ RealtimeOptions read_solver(TomlTable t) {
     for (const char* key : {"rtol", "atol_m"})
       if (t.has(key)) t.fail(key, std::string("sets the adaptive scheme's tolerance; scheme \"") + scheme +
                                       "\" takes fixed steps (dt_s, contact_dt_s)");
+    if (!t.has("scheme") && !t.has("dt_s"))
+      t.fail("dt_s", "missing key: a [solver] that types contact_dt_s and names no scheme is a fixed-step "
+                     "(semi_implicit_euler) case, which needs dt_s too; or name scheme = \"bs32\" for the adaptive default");
     o.dt_s = t.number("dt_s");
     o.contact_dt_s = t.number("contact_dt_s");
   }
@@ -253,6 +256,9 @@ std::optional<std::pair<std::string, std::string>> realtime_options_problem(cons
   if (auto p = range("contact_dt_s", o.contact_dt_s, kMinStep_s, kMaxStep_s)) return p;
   if (o.contact_dt_s > o.dt_s) return std::make_pair(std::string("contact_dt_s"), std::string("must not exceed dt_s"));
   if (auto p = range("t_max_s", o.t_max_s, kMinDuration_s, kMaxDuration_s)) return p;
+  // A step longer than the run (and output_dt_s, whose default is dt_s, with it).
+  if (o.dt_s > o.t_max_s)
+    return std::make_pair(std::string("dt_s"), "must not exceed t_max_s = " + num(o.t_max_s) + " s (got " + num(o.dt_s) + ")");
   if (auto p = range("output_dt_s", o.output_dt_s, 0, o.t_max_s)) return p;
   if (o.t_max_s / o.contact_dt_s > kMaxStepsPerThrow)
     return std::make_pair(std::string("t_max_s"), "t_max_s / contact_dt_s = " + num(o.t_max_s / o.contact_dt_s) +
@@ -288,6 +294,16 @@ Stone build_stone(const StoneSpec& spec, const std::string& file) {
                                                    : mass_properties_from_mass(mesh, spec.mass_kg);
   if (!(mp.mass_kg > 0) || !mp.inertia_kg_m2.allFinite())
     throw_input_error(file, 0, "stone", "the mesh has no positive volume");
+  // A mesh's size first: one in millimetres makes its mass and density implausible too, and the
+  // size says why (the same reach from the centre of mass as make_stone's bounding radius).
+  if (spec.shape == StoneShape::mesh_file) {
+    double reach = 0;
+    for (const Vec3& v : mesh.vertices) reach = std::max(reach, (v - mp.center_of_mass_m).norm());
+    if (!(reach >= kStoneRadius.lo && reach <= kStoneRadius.hi))
+      throw_input_error(file, 0, "stone.mesh_file",
+                        spec.mesh_file + ": the stone reaches " + num(reach) + " m from its centre of mass, outside [" +
+                            num(kStoneRadius.lo) + ", " + num(kStoneRadius.hi) + "] m (a mesh in millimetres?)");
+  }
   // Plausibility of what the keys only imply (cases/README.md, Limits).
   if (!(mp.density_kg_m3 >= kStoneDensity.lo && mp.density_kg_m3 <= kStoneDensity.hi))
     throw_input_error(file, 0, "stone", "mass " + num(mp.mass_kg) + " kg in a volume of " + num(mp.volume_m3) +
@@ -298,13 +314,7 @@ Stone build_stone(const StoneSpec& spec, const std::string& file) {
                                             ", " + num(kStoneMass.hi) + "] kg");
   // A prism or a lens keeps its symmetry axis as body z, however thick (BodyAxes::mesh); a mesh
   // read from a file is turned onto its principal axes.
-  Stone stone = make_stone(mesh, mp, spec.radius_m, d.str(), spec.shape == StoneShape::mesh_file ? BodyAxes::principal : BodyAxes::mesh);
-  if (spec.shape == StoneShape::mesh_file &&
-      !(stone.bounding_radius_m >= kStoneRadius.lo && stone.bounding_radius_m <= kStoneRadius.hi))
-    throw_input_error(file, 0, "stone.mesh_file",
-                      spec.mesh_file + ": the stone reaches " + num(stone.bounding_radius_m) + " m from its centre of mass, outside [" +
-                          num(kStoneRadius.lo) + ", " + num(kStoneRadius.hi) + "] m (a mesh in millimetres?)");
-  return stone;
+  return make_stone(mesh, mp, spec.radius_m, d.str(), spec.shape == StoneShape::mesh_file ? BodyAxes::principal : BodyAxes::mesh);
 }
 
 StoneCase stone_case_from_document(const TomlDocument& doc) {

@@ -42,6 +42,12 @@ std::vector<std::string> run_notes(const StoneCase& c, const ThrowResult& r) {
                     num(c.environment.water_density_kg_m3, "%.4g") +
                     ": the model has no buoyancy (only faces advancing into the water push, model/README.md §1.4), so it sinks "
                     "where a real stone would float");
+  // A release with a vertex at or under the surface: the throw starts in the water, and its first
+  // "entry" is the release itself, not an arrival from the air.
+  if (!r.contacts.empty() && r.contacts.front().start_s <= 0)
+    notes.push_back("the stone was released touching the water (a vertex at or below the surface at t = 0; "
+                    "throw.height_m is its centre's height): contact 1 starts at release and its entry values are the "
+                    "release's, not an arrival from the air");
   if (!r.contacts.empty() && contact_open_at_end(r, r.contacts.size() - 1))
     notes.push_back("contact " + std::to_string(r.contacts.size()) + " was still open when the run ended (" +
                     (r.outcome == Outcome::failed ? std::string("the solve failed") : std::string("t_max_s")) +
@@ -115,7 +121,10 @@ std::string text_summary(const StoneCase& c, const ThrowResult& r) {
   // (P = F·v + τ·ω ≤ 0, model/README.md, tested over random states), and the gain is the integrator's.
   if (r.max_energy_gain_J > 0) {
     s << "energy    a contact gained " << num(r.max_energy_gain_J) << " J (";
-    if (held) s << "the model created energy: a held attitude is not passive, the water's torque on the spin is discarded)\n";
+    if (held && c.environment.convention == Convention::paper)
+      s << "the model created energy: the paper's laws as printed can do positive work, model/README.md §1.6, and a "
+           "held attitude discards the water's torque on the spin)\n";
+    else if (held) s << "the model created energy: a held attitude is not passive, the water's torque on the spin is discarded)\n";
     else if (c.environment.convention == Convention::paper)
       s << "the model created energy: the paper's laws as printed can do positive work, model/README.md §1.6)\n";
     else s << "the integrator's: the physical water and air laws are passive, F.v + tau.omega <= 0)\n";
