@@ -93,8 +93,21 @@ StateVector rhs(const Stone& stone, const Environment& env, const StateVector& y
 namespace {
 
 // One step of a scheme from s with its first stage k1 = f(s) given; the other stages are counted.
+// `met_water` (optional) is set where a later stage felt the water's loads (midpoint, rk4).
 RigidState step_from(const Stone& stone, const Environment& env, const RigidState& s, const StateVector& k1, double dt,
-                     Scheme scheme, const WaterSurface* surface, long* rhs_evaluations, const LoadMode* mode = nullptr) {
+                     Scheme scheme, const WaterSurface* surface, long* rhs_evaluations, const LoadMode* mode = nullptr,
+                     bool* met_water = nullptr) {
+  // A stage's f(y), the same numbers as rhs(); with met_water, whether its water loads wet a face.
+  auto rhs = [&](const Stone&, const Environment&, const StateVector& y, const WaterSurface*, std::nullptr_t,
+                 const LoadMode* m) {
+    if (!met_water) return stoneskip::rhs(stone, env, y, surface, nullptr, m);
+    Loads loads;
+    const StateDerivative d = rigid_body_rhs(stone, env, from_vector(y.data()), surface, &loads, nullptr, m);
+    *met_water = *met_water || loads.water.wetted_area_m2 > 0;
+    StateVector out;
+    to_vector(d, out.data());
+    return out;
+  };
   RigidState out;
   switch (scheme) {
     case Scheme::semi_implicit_euler: {
@@ -150,10 +163,10 @@ RigidState step_from(const Stone& stone, const Environment& env, const RigidStat
 
 RigidState realtime_step(const Stone& stone, const Environment& env, const RigidState& s, double dt,
                          Scheme scheme, const WaterSurface* surface, long* rhs_evaluations,
-                         std::vector<FacePush>* start_pushes) {
+                         std::vector<FacePush>* start_pushes, bool* stage_met_water) {
   const StateVector k1 = rhs(stone, env, to_vector(s), surface, start_pushes);
   if (rhs_evaluations) ++*rhs_evaluations;
-  return step_from(stone, env, s, k1, dt, scheme, surface, rhs_evaluations);
+  return step_from(stone, env, s, k1, dt, scheme, surface, rhs_evaluations, nullptr, stage_met_water);
 }
 
 namespace {
@@ -499,8 +512,15 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
       dt = near ? o.contact_dt_s : o.dt_s;
       if (t + dt > o.t_max_s) dt = o.t_max_s - t;
       if (!kinks.active()) {
-        s_new = realtime_step(stone, env, s, dt, o.scheme, surface, &r.stats.rhs_evaluations, step_start_pushes);
+        bool stage_wet = false;
+        s_new = realtime_step(stone, env, s, dt, o.scheme, surface, &r.stats.rhs_evaluations, step_start_pushes, &stage_wet);
         if (finite(s_new)) measure_waterline(stone, s_new, surface, next);
+        // A step whose stages felt the water while neither end is wet passed through a contact that
+        // no step resolved: no contact is logged, and the loads changed the throw (a game-frame rk4
+        // step of a grazing throw). Counted and said, never silent.
+        if (stage_wet && finite(s_new) && !now.wet() && !next.wet() && !log.in_contact()) {
+          if (r.stats.steps_through_water++ == 0) r.stats.first_step_through_water_s = t;
+        }
       } else {
         // Steps that end at the kinks: a trial over which a watched function changes sign is cut back
         // to just past its first root and taken again; f at the end (the interpolant's, and the next

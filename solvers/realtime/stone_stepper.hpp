@@ -106,10 +106,11 @@ struct RealtimeOptions {
 };
 
 // One step of the scheme (no contact logic), for benchmarks and order studies. start_pushes
-// (optional): the faces' pushes at s (FacePush), from the step's first right-hand side.
+// (optional): the faces' pushes at s (FacePush), from the step's first right-hand side;
+// stage_met_water (optional): set where a later stage (midpoint, rk4) felt the water's loads.
 RigidState realtime_step(const Stone& stone, const Environment& env, const RigidState& s, double dt_s,
                          Scheme scheme, const WaterSurface* surface = nullptr, long* rhs_evaluations = nullptr,
-                         std::vector<FacePush>* start_pushes = nullptr);
+                         std::vector<FacePush>* start_pushes = nullptr, bool* stage_met_water = nullptr);
 
 // before_step (optional) is called with the time at the start of every step: a scene uses it to
 // advance a live water surface to that time.

@@ -239,6 +239,31 @@ BOOST_AUTO_TEST_CASE(a_fixed_step_into_the_water_enters_at_the_flight_s_speed_an
   BOOST_TEST(std::abs(c.entry_energy_J - e0) <= 1e-4 * e0);
 }
 
+BOOST_AUTO_TEST_CASE(a_step_whose_stages_met_the_water_between_dry_ends_is_counted) {
+  // Oracle: the same grazing throw (8 m/s, 1° down, from 2 cm) with fine rk4 steps makes contacts;
+  // one 0.1 s rk4 step from the release has its third stage ~1 cm under water (z0 + dt/2 (v0 +
+  // g dt/2)) while both its ends are dry, so no contact is logged although the water's loads changed
+  // the throw: the step must be counted, not silent. The fine run has no such step.
+  const Stone s = prism_stone();
+  const Environment env = vacuum();
+  const RigidState s0 = initial_state(s, ThrowParameters{8.0, 1.0, 10.0, 10.0, 0.02, 0.0});
+  RealtimeOptions o;
+  o.scheme = Scheme::rk4;
+  o.record_trajectory = false;
+  o.t_max_s = 0.1;
+  o.dt_s = 1e-3;
+  o.contact_dt_s = 1e-5;
+  const ThrowResult fine = run_realtime(s, env, s0, o);
+  BOOST_TEST(!fine.contacts.empty());
+  BOOST_TEST(fine.stats.steps_through_water == 0);
+  o.dt_s = o.contact_dt_s = 0.1;
+  const ThrowResult coarse = run_realtime(s, env, s0, o);
+  BOOST_TEST(coarse.stats.steps == 1);
+  BOOST_TEST(coarse.contacts.empty());
+  BOOST_TEST(coarse.stats.steps_through_water == 1);
+  BOOST_TEST(coarse.stats.first_step_through_water_s == 0.0);
+}
+
 BOOST_AUTO_TEST_CASE(a_dropped_plate_sinks_at_the_closed_form_time_and_place) {
   // Oracle: the dropped plate's closed form (DroppedPlate): it sinks when its top face reaches the
   // surface, i.e. after falling h − 1e-9 m, at t_s = time_to_fall(h − 1e-9), with its centre at

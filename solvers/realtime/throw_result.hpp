@@ -49,6 +49,10 @@ struct SolverStats {
   // (m; ‖ŷ − y‖ over x, accepted steps): the error made, before propagation.
   double max_error_ratio = 0;
   long budget_forced_steps = 0;
+  // Real-time fixed steps: steps whose stages felt the water while neither end was wet (a contact
+  // passed through inside one step, unlogged; its loads changed the throw), and the first one's start.
+  long steps_through_water = 0;
+  double first_step_through_water_s = 0;
   double position_error_estimate_m = 0;
   double cpu_s = 0;            // CPU time of the solve: its own thread's (solvers/realtime/clocks.hpp)
   double wall_s = 0;           // wall-clock time of the solve (longer than cpu_s when cores are shared)

@@ -132,6 +132,11 @@ std::string text_summary(const StoneCase& c, const ThrowResult& r) {
   for (const std::string& n : run_notes(c, r)) s << "note      " << n << "\n";
   // A frame's budget (solver.rhs_per_frame) takes a step whatever its error test says: the run is
   // then not at its tolerance, and the text said nothing (a ratio of 7e6 flipped Clanet's disk).
+  if (r.stats.steps_through_water > 0)
+    s << "steps     " << r.stats.steps_through_water << " step" << (r.stats.steps_through_water == 1 ? "" : "s")
+      << " met the water only inside (a stage felt its loads, neither end was wet; the first at t = "
+      << num(r.stats.first_step_through_water_s, "%.4g") << " s): contacts no step resolved, unlogged and uncounted, "
+         "though their loads changed the throw; shorten dt_s and contact_dt_s\n";
   if (r.stats.budget_forced_steps > 0)
     s << "budget    " << r.stats.budget_forced_steps << " step" << (r.stats.budget_forced_steps == 1 ? "" : "s")
       << " forced past the error test by the frame budget (largest error ratio " << num(r.stats.max_error_ratio, "%.3g")
@@ -198,6 +203,7 @@ nlohmann::json json_summary(const ThrowResult& r) {
                 {"segments", r.stats.segments},
                 {"max_error_ratio", r.stats.max_error_ratio},
                 {"budget_forced_steps", r.stats.budget_forced_steps},
+                {"steps_through_water", r.stats.steps_through_water},
                 {"position_error_estimate_m", r.stats.position_error_estimate_m},
                 {"cpu_s", r.stats.cpu_s}};
   return j;
@@ -297,6 +303,7 @@ void write_throw_file(const std::string& path, const StoneCase& c,
     g.set_attr("stats_segments", static_cast<long long>(r->stats.segments));
     g.set_attr("stats_max_error_ratio", r->stats.max_error_ratio);
     g.set_attr("stats_budget_forced_steps", static_cast<long long>(r->stats.budget_forced_steps));
+    g.set_attr("stats_steps_through_water", static_cast<long long>(r->stats.steps_through_water));
     g.set_attr("stats_position_error_estimate_m", r->stats.position_error_estimate_m);
     g.set_attr("stats_cpu_s", r->stats.cpu_s);
     g.write_table("trajectory", trajectory_table(c.stone, *r));
