@@ -46,7 +46,12 @@ SectionOutput count_ensembles_section(const Record& c) {
              fmt(c.number("perturbation_smallest"), 2) + " to " + fmt(c.number("perturbation_largest"), 2) +
              ". Test: Welch's t interval (95 %) of the difference of the mean counts (real-time − reference); a difference "
              "is established only where the interval excludes 0, and the verdict says \"no difference established\" "
-             "where the ensembles cannot tell; where any run of either ensemble failed, nothing is decided.");
+             "where the ensembles cannot tell; where any run of either ensemble failed, nothing is decided. Where neither "
+             "ensemble has any spread the interval is the difference itself, and an exact permutation test decides "
+             "(p ≤ 0.05). Each throw's interval is 95 % on its own, not jointly: over the " +
+             fmt(c.number("sampled"), 3) + " throws, about " + fmt(0.05 * c.number("sampled"), 2) +
+             " could read \"different\" by chance alone where the solvers agree on average (no correction for the "
+             "multiple comparisons).");
   const Table& t = c.table("throws");
   const auto& params = c.strings("parameters");
   const Record& verdicts = c.at("verdicts");
