@@ -148,7 +148,7 @@ BOOST_AUTO_TEST_CASE(a_mesh_far_from_the_origin_is_judged_by_its_own_size) {
   }
   Mesh bad = box(0);
   bad.triangles.push_back({0, 0, 1});
-  BOOST_TEST(check_mesh(bad).problem.find("name one vertex twice") != std::string::npos, check_mesh(bad).problem);
+  BOOST_TEST(check_mesh(bad).problem.find("names one vertex twice") != std::string::npos, check_mesh(bad).problem);
 }
 
 BOOST_AUTO_TEST_CASE(open_flipped_and_inward_meshes_are_rejected) {

@@ -173,6 +173,10 @@ Record mesh_study_findings(const std::vector<MeshThrowRuns>& runs, const MeshStu
     if (phrase == "same bounce count") return 2;
     return 3;  // not decided: runs failed, not measured
   };
+  // Per mesh: comparisons whose ensembles had no spread and differed, too few members for the exact
+  // test to establish it (ensemble_difference.hpp): "no difference established", but not agreement,
+  // so a cut does not settle across them.
+  std::vector<int> too_few(o.meshes.size(), 0);
   for (std::size_t t = 0; t < runs.size(); ++t) {
     const MeshThrowRuns& run = runs[t];
     for (std::size_t m = 0; m < o.meshes.size(); ++m) {
@@ -187,6 +191,8 @@ Record mesh_study_findings(const std::vector<MeshThrowRuns>& runs, const MeshStu
       const Record& v = compare(verdicts, key, run.counts[m], run.counts[ref],
                                 mesh_name(o.meshes[m]) + " against " + mesh_name(o.meshes[ref]));
       ++tally[m][tally_of(v.text("verdict"))];
+      if (v.text("verdict") == "no difference established" && v.has_number("exact_p") && std::isfinite(v.number("exact_p")))
+        ++too_few[m];
       order.push_back(key);
       subjects.push_back(throw_name(run.spin_rev_s, run.attack_angle_deg) + ", " + mesh_name(o.meshes[m]));
     }
@@ -235,7 +241,8 @@ Record mesh_study_findings(const std::vector<MeshThrowRuns>& runs, const MeshStu
                     c[7]});
   }
   // Per cut: the smallest N from which on no mesh of that cut differs from its reference, nor is
-  // undecided, at any throw (NaN: not even the mesh below the reference, or the cut has one mesh).
+  // undecided, nor differs in every member with too few members to tell, at any throw (NaN: not
+  // even the mesh below the reference, or the cut has one mesh).
   Table cuts{{"centre_cut", "reference_segments", "meshes", "settled_segments"}, {}};
   for (RimSplit split : {RimSplit::diagonal, RimSplit::centre}) {
     std::vector<std::size_t> of;
@@ -245,7 +252,7 @@ Record mesh_study_findings(const std::vector<MeshThrowRuns>& runs, const MeshStu
     std::sort(of.begin(), of.end(), [&](std::size_t a, std::size_t b) { return o.meshes[a].segments > o.meshes[b].segments; });
     double settled = o.meshes[of.front()].segments;  // the reference
     for (std::size_t k = 1; k < of.size(); ++k) {
-      if (tally[of[k]][0] > 0 || tally[of[k]][3] > 0) break;
+      if (tally[of[k]][0] > 0 || tally[of[k]][3] > 0 || too_few[of[k]] > 0) break;
       settled = o.meshes[of[k]].segments;
     }
     if (settled == o.meshes[of.front()].segments) settled = std::nan("");
