@@ -1,11 +1,13 @@
 // stoneskip regress [--baseline FILE...] [--update] [--workers N]
 //
 // Recomputes the golden bounce-count curves stored in cases/baselines/*.toml (or the files given)
-// and prints a difference report: counts must match exactly away from thresholds, thresholds
+// and prints a difference report by the rules of verification/stones/bounce_baseline.hpp: robust
+// counts must match away from thresholds, sensitive ones are compared on ensembles, thresholds
 // (bisected) must match within each baseline's compare_tolerance. Exit status 1 on a regression,
 // 2 on bad input. --update rewrites each baseline's [result] from the recomputed curve (the text
 // before [result], settings and comments, is kept as written), for when a change of the model is
-// intended.
+// intended; it says how many throws failed (stored as −1) and refuses a curve of which every grid
+// value failed (nothing to compare later runs with).
 //
 //   stoneskip regress                                     # all stored baselines (< 1 min)
 //   stoneskip regress --baseline cases/baselines/spin_paper_realtime.toml
@@ -103,11 +105,25 @@ void add_regress(CLI::App& app) {
     for (std::size_t i = 0; i < stored.size(); ++i) {
       const BounceBaseline& b = stored[i];
       if (*update) {
+        const BounceSweepResult& r = results[i];
+        const long grid_failed = std::count_if(r.counts.begin(), r.counts.end(), [](int n) { return n < 0; });
+        long members_failed = 0;
+        for (const auto& e : r.ensembles) members_failed += std::count_if(e.begin(), e.end(), [](int n) { return n < 0; });
+        // A curve of failures only would be golden: every later run that failed alike would pass.
+        if (!r.counts.empty() && grid_failed == static_cast<long>(r.counts.size())) {
+          std::printf("  %-34s NOT UPDATED  every grid value's throw failed (%s): %s\n", b.name.c_str(),
+                      r.failures.empty() ? "" : r.failures.front().c_str(), b.file.c_str());
+          ++failed;
+          continue;
+        }
         // The file as the user wrote it, its [result] replaced (comments and layout kept).
-        write_text_file(b.file, updated_baseline_text(read_text_file(b.file), results[i],
+        write_text_file(b.file, updated_baseline_text(read_text_file(b.file), r,
                                                       std::string("stoneskip ") + kVersion + " (git " + kGitDescribe + "), " + today_utc()));
-        std::printf("  %-34s UPDATED  %zu grid values, %zu thresholds (%s)\n", b.name.c_str(), results[i].counts.size(),
-                    results[i].thresholds.size(), b.file.c_str());
+        std::printf("  %-34s UPDATED  %zu grid values, %zu thresholds", b.name.c_str(), r.counts.size(), r.thresholds.size());
+        if (grid_failed + members_failed > 0)
+          std::printf("; failed and stored as -1: %ld grid throw%s, %ld nudged member%s", grid_failed, grid_failed == 1 ? "" : "s",
+                      members_failed, members_failed == 1 ? "" : "s");
+        std::printf(" (%s)\n", b.file.c_str());
         continue;
       }
       const BaselineComparison c = compare_with_baseline(b, results[i]);
@@ -121,11 +137,13 @@ void add_regress(CLI::App& app) {
         std::printf("      single runs only (ensemble_members = 0): a count a nudge changes is not told from a regression\n");
       for (const auto& r : c.regressions) std::printf("      REGRESSION: %s\n", r.c_str());
       for (const auto& r : c.tolerated) std::printf("      tolerated:  %s\n", r.c_str());
+      for (const auto& r : c.resolution) std::printf("      resolution: %s\n", r.c_str());
       if (!c.passed) ++failed;
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (*update) {
-      std::printf("regress: %zu baselines rewritten in %.1f s\n", stored.size(), wall);
+      std::printf("regress: %zu baselines rewritten, %d refused (%.1f s)\n", stored.size() - failed, failed, wall);
+      if (failed) set_exit_code(1);
       return;
     }
     std::printf("regress: %zu passed, %d failed (%.1f s)\n", stored.size() - failed, failed, wall);

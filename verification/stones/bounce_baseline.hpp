@@ -23,9 +23,12 @@
 //  * on a robust value the single count, the ensemble (Welch) and the number of failed members are
 //    all held;
 //  * on a sensitive value the count is a regression only where the two ensembles' mean counts
-//    differ by Welch's interval (verification/study/ensemble_difference.hpp) held to 95 % over the
-//    sensitive values together (Bonferroni), with at least half the members run on each side; a
-//    changed single count, and failures moving among the members, are tolerated and said;
+//    differ by Welch's interval (verification/study/ensemble_difference.hpp; the exact permutation
+//    test where neither has spread) held to 95 % over the baseline's sensitive values together
+//    (Bonferroni, per baseline file), with at least half the members run on each side, or where a
+//    changed single count lies outside every member's range on both sides (no nudge's count); a
+//    changed single count within it is tolerated and said, and so are failures moving among the
+//    members unless Fisher's exact test of the two failure rates gives p at most the same level;
 //  * a threshold gone, moved or new in a cell with a sensitive end is tolerated and said, and in
 //    such a cell or one holding more changes (its count past the change is not the grid's at the
 //    cell's end) the count just past a change is not held run against run.
@@ -77,7 +80,11 @@ struct BaselineComparison {
   std::vector<std::string> tolerated;    // differences within the rules (near a threshold)
   int grid_points = 0;
   int thresholds = 0;
-  int sensitive_points = 0;  // grid values whose stored or new ensemble has spread
+  int sensitive_points = 0;  // grid values whose stored ensemble has spread
+  // Per sensitive value, how coarse its check is: the shift of the mean count that the ensembles'
+  // interval would just establish, t · s √(2/n) (s the stored ensemble's sd, n its members that
+  // ran, t at the family's per-value level, ν = 2(n − 1)): smaller shifts pass unseen.
+  std::vector<std::string> resolution;
 };
 
 BaselineComparison compare_with_baseline(const BounceBaseline& stored, const BounceSweepResult& now);

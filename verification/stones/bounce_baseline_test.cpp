@@ -180,9 +180,9 @@ BOOST_AUTO_TEST_CASE(near_a_threshold_only_its_own_counts_are_tolerated) {
 
 BOOST_AUTO_TEST_CASE(on_a_sensitive_value_failure_rates_that_differ_beyond_chance_are_a_regression) {
   // The sensitive value 20 (stored members 1, 2, 1, 2, ...): its one sensitive value makes the
-  // family's level 95 %. Wilson intervals: 0 of 8 failed [0, 0.32], 6 of 8 [0.41, 0.93]: disjoint,
-  // a regression (tolerated as "sensitive" until December 5); 1 of 8 [0.02, 0.47] overlaps 0 of 8:
-  // tolerated.
+  // family's level 95 %. Fisher's exact test (two-sided, computed apart in Python from the
+  // hypergeometric law): 6 of 8 failed against 0 of 8, p = 0.0070: a regression (tolerated as
+  // "sensitive" until December 5); 1 of 8 against 0 of 8, p = 1: tolerated.
   std::vector<int> six_failed{1, -1, -1, -1, 2, -1, -1, -1};
   Pair many({1, 1, 1, 3}, {kOne, kOne, kMixed, kThree}, {1, 1, 1, 3}, {kOne, kOne, six_failed, kThree});
   BaselineComparison c = compare_with_baseline(many.stored, many.now);
@@ -195,6 +195,38 @@ BOOST_AUTO_TEST_CASE(on_a_sensitive_value_failure_rates_that_differ_beyond_chanc
   c = compare_with_baseline(one.stored, one.now);
   BOOST_TEST(c.passed);
   BOOST_TEST(mentions(c.tolerated, "1 of its 8 nudged throws failed now, 0 stored"));
+  // 6 of 8 against 1 of 8: p = 0.0406 ≤ 0.05, a regression; the Wilson intervals ([0.41, 0.93]
+  // and [0.02, 0.47]) overlap, which let it pass until December 6.
+  std::vector<int> stored_one_failed = kMixed;
+  stored_one_failed[0] = -1;
+  Pair six_one({1, 1, 1, 3}, {kOne, kOne, stored_one_failed, kThree}, {1, 1, 1, 3}, {kOne, kOne, six_failed, kThree});
+  c = compare_with_baseline(six_one.stored, six_one.now);
+  BOOST_TEST(!c.passed);
+  BOOST_TEST(mentions(c.regressions, "Fisher's exact test of the failure rates: p = 0.041"));
+}
+
+BOOST_AUTO_TEST_CASE(a_single_count_outside_every_member_is_a_regression_even_where_sensitive) {
+  // Oracle: by construction: at the sensitive value 20 both ensembles hold 1s and 2s (the same
+  // distribution: no difference of means); a single count of 2 among them is tolerated, one of
+  // 1000 is no nudge's count and is a regression (it passed as "sensitive").
+  Pair ok({1, 1, 1, 3}, {kOne, kOne, kMixed, kThree}, {1, 1, 2, 3}, {kOne, kOne, kMixed2, kThree});
+  BOOST_TEST(compare_with_baseline(ok.stored, ok.now).passed);
+  Pair absurd({1, 1, 1000, 3}, {kOne, kOne, kMixed, kThree}, {1, 1, 2, 3}, {kOne, kOne, kMixed2, kThree});
+  const BaselineComparison c = compare_with_baseline(absurd.stored, absurd.now);
+  BOOST_TEST(!c.passed);
+  BOOST_TEST(mentions(c.regressions, "a single count outside every member's range, 1–2"));
+  // And the check's coarseness is said for the sensitive value: t(14) at 97.5 % = 2.1448 times
+  // sd 0.5345 √(2/8) = 0.573 bounces.
+  BOOST_REQUIRE(c.resolution.size() == 1u);
+  BOOST_TEST(c.resolution[0].find("below about 0.57 ") != std::string::npos, c.resolution[0]);
+}
+
+BOOST_AUTO_TEST_CASE(constant_ensembles_say_the_exact_test_decided) {
+  // Oracle: the robust value 10 went from eight 1s to eight 2s: no spread, so the exact
+  // permutation test decides (p = 2 / C(16, 8) = 1.6e-4), and the line says so, not "Welch".
+  Pair p({1, 1, 2, 3}, {kOne, kOne, kTwo, kThree}, {1, 2, 2, 3}, {kOne, kTwo, kTwo, kThree});
+  const BaselineComparison c = compare_with_baseline(p.stored, p.now);
+  BOOST_TEST(mentions(c.regressions, "exact permutation test p = 0.00016"));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

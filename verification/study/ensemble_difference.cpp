@@ -73,6 +73,20 @@ MeanDifference welch_difference(const std::vector<double>& a, const std::vector<
   return d;
 }
 
+double fisher_exact_p(int failed_a, int n_a, int failed_b, int n_b) {
+  auto log_choose = [](int n, int k) { return std::lgamma(n + 1.0) - std::lgamma(k + 1.0) - std::lgamma(n - k + 1.0); };
+  const int n = n_a + n_b, k = failed_a + failed_b;
+  if (n_a <= 0 || n_b <= 0 || failed_a < 0 || failed_b < 0 || failed_a > n_a || failed_b > n_b) return 1.0;
+  auto prob = [&](int x) { return std::exp(log_choose(k, x) + log_choose(n - k, n_a - x) - log_choose(n, n_a)); };
+  const double observed = prob(failed_a);
+  double p = 0;
+  for (int x = std::max(0, n_a - (n - k)); x <= std::min(k, n_a); ++x) {
+    const double q = prob(x);
+    if (q <= observed * (1 + 1e-7)) p += q;  // R's fisher.test: a relative tolerance of 1e-7
+  }
+  return std::min(1.0, p);
+}
+
 MeanDifference paired_difference(const std::vector<double>& a, const std::vector<double>& b) {
   MeanDifference d;
   d.n_a = static_cast<int>(a.size());
