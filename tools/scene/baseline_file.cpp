@@ -221,7 +221,8 @@ BounceBaseline read_baseline(const std::string& path) {
       const auto e = r->numbers("ensemble_counts");
       const std::size_t m = static_cast<std::size_t>(b.ensemble_members);
       if (m == 0 || e.size() != b.values.size() * m)
-        r->fail("ensemble_counts", "needs baseline.ensemble_members (" + std::to_string(m) + ") counts per grid value, " +
+        r->fail("ensemble_counts", "needs baseline.ensemble_members (" + std::to_string(m) + (members_given ? "" : ", the default") +
+                                       ") counts per grid value, " +
                                        std::to_string(b.values.size() * m) + " in all (got " + std::to_string(e.size()) + ")");
       b.ensembles.assign(b.values.size(), {});
       for (std::size_t k = 0; k < e.size(); ++k) b.ensembles[k / m].push_back(whole("ensemble_counts", e[k]));
@@ -424,11 +425,23 @@ std::size_t result_header_at(const std::string& text) {
 std::string updated_baseline_text(const std::string& old_text, const BounceSweepResult& r, const std::string& generated) {
   const std::size_t at = result_header_at(old_text);
   std::string kept = old_text.substr(0, at == std::string::npos ? old_text.size() : at);
+  // A file written with CRLF line ends keeps them in the new [result] too (it got LF).
+  const bool crlf = kept.find("\r\n") != std::string::npos;
   if (at == std::string::npos) {  // no [result] yet: it follows the file, after one blank line
-    while (!kept.empty() && (kept.back() == '\n' || kept.back() == ' ' || kept.back() == '\t')) kept.pop_back();
-    if (!kept.empty()) kept += "\n\n";
+    while (!kept.empty() && (kept.back() == '\n' || kept.back() == '\r' || kept.back() == ' ' || kept.back() == '\t'))
+      kept.pop_back();
+    if (!kept.empty()) kept += crlf ? "\r\n\r\n" : "\n\n";
   }
-  return kept + result_section_text(r, generated);
+  std::string result = result_section_text(r, generated);
+  if (crlf) {
+    std::string with_cr;
+    for (char ch : result) {
+      if (ch == '\n') with_cr += '\r';
+      with_cr += ch;
+    }
+    result = std::move(with_cr);
+  }
+  return kept + result;
 }
 
 }  // namespace stoneskip

@@ -241,6 +241,17 @@ BOOST_AUTO_TEST_CASE(an_update_keeps_the_users_text_before_result_and_replaces_o
   BOOST_TEST(appended.substr(0, mine.size() + 1) == mine + "\n");
   BOOST_TEST(appended.substr(mine.size() + 1, 9) == "[result]\n");
   BOOST_TEST((read_baseline(s.write("appended.toml", appended).string()).counts == r.counts));
+  // A file with CRLF line ends gets its new [result] with CRLF too: no bare LF in the whole text.
+  std::string crlf;
+  for (char ch : mine + old_result) {
+    if (ch == '\n') crlf += '\r';
+    crlf += ch;
+  }
+  const std::string updated_crlf = updated_baseline_text(crlf, r, "test run");
+  bool bare_lf = false;
+  for (std::size_t i = 0; i < updated_crlf.size(); ++i) bare_lf = bare_lf || (updated_crlf[i] == '\n' && (i == 0 || updated_crlf[i - 1] != '\r'));
+  BOOST_TEST(!bare_lf);
+  BOOST_TEST((read_baseline(s.write("crlf.toml", updated_crlf).string()).counts == r.counts));
 }
 
 BOOST_AUTO_TEST_CASE(a_baseline_in_a_folder_of_its_own_finds_its_case_beside_it_first) {
