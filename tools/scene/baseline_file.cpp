@@ -67,6 +67,11 @@ BounceBaseline read_baseline(const std::string& path) {
   TomlTable top = doc.top();
   BounceBaseline b;
   b.file = path;
+  // A file with no [baseline] (an empty one, a case file named by mistake) says what it lacks.
+  if (!top.has("baseline"))
+    throw_input_error(path, 0, "baseline",
+                      "missing table: a baseline file starts with [baseline] (its case, swept parameter and grid; "
+                      "cases/README.md, \"Stone studies, hard cases and golden baselines\")");
   TomlTable t = top.table("baseline");
   b.name = t.string("name");
   for (char c : b.name)

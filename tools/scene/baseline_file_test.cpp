@@ -82,6 +82,21 @@ BOOST_AUTO_TEST_CASE(a_copied_tree_runs_its_own_case_not_the_working_directorys)
   BOOST_TEST(fs::equivalent(resolve_case_file(read_baseline(b.string())), s.dir / "cases" / "spin_sweep_base.toml"));
 }
 
+BOOST_AUTO_TEST_CASE(a_file_without_a_baseline_table_says_so) {
+  // Oracle: the file's text: an empty file, and a case file named by mistake, have no [baseline];
+  // the line names the table and what a baseline file starts with (it said "baseline: missing key").
+  ScratchDir s("stoneskip_baseline_no_table");
+  for (const std::string& text : {std::string(), read_text_file("cases/paper_8ms_spin.toml")}) {
+    std::string e;
+    try {
+      read_baseline(s.write("no_table.toml", text).string());
+    } catch (const InputError& x) {
+      e = x.what();
+    }
+    BOOST_TEST(e.find("baseline: missing table: a baseline file starts with [baseline]") != std::string::npos, e);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(a_damaged_result_is_bad_input_naming_its_key) {
   // Oracle: the shipped baseline (grid 0–60 rev/s, threshold_tolerance 0.5) with one [result]
   // line damaged. These were reported as regressions of the code (exit 1) after the whole sweep.

@@ -65,7 +65,8 @@ struct OrderFit {
 // It needs n ≥ 4 points whose error falls at every halving (every pairwise order > 0: an error
 // that grows somewhere as h shrinks is not approaching C h^p, and a three-parameter fit of such
 // scatter means nothing); its interval on p (Student t, n − 3 degrees of freedom) is wider than
-// the single power's, so few points give "not established", never a narrower claim. A floor (the
+// the single power's, so few points give "not established", never a narrower claim (it is computed
+// on the data that chose the model by the F test, so its 95 % is nominal, not exact). A floor (the
 // reference's error) bends the fine end, which this term does not describe: such points are to be
 // left out before the fit, as the studies do.
 struct OrderFitOptions {
