@@ -97,12 +97,11 @@ namespace {
 RigidState step_from(const Stone& stone, const Environment& env, const RigidState& s, const StateVector& k1, double dt,
                      Scheme scheme, const WaterSurface* surface, long* rhs_evaluations, const LoadMode* mode = nullptr,
                      bool* met_water = nullptr) {
-  // A stage's f(y), the same numbers as rhs(); with met_water, whether its water loads wet a face.
-  auto rhs = [&](const Stone&, const Environment&, const StateVector& y, const WaterSurface*, std::nullptr_t,
-                 const LoadMode* m) {
-    if (!met_water) return stoneskip::rhs(stone, env, y, surface, nullptr, m);
+  // A later stage's f(y), the same numbers as rhs(); with met_water, whether its water loads wet a face.
+  auto stage = [&](const StateVector& y) {
+    if (!met_water) return rhs(stone, env, y, surface, nullptr, mode);
     Loads loads;
-    const StateDerivative d = rigid_body_rhs(stone, env, from_vector(y.data()), surface, &loads, nullptr, m);
+    const StateDerivative d = rigid_body_rhs(stone, env, from_vector(y.data()), surface, &loads, nullptr, mode);
     *met_water = *met_water || loads.water.wetted_area_m2 > 0;
     StateVector out;
     to_vector(d, out.data());
@@ -129,16 +128,16 @@ RigidState step_from(const Stone& stone, const Environment& env, const RigidStat
     }
     case Scheme::midpoint: {
       const StateVector y = to_vector(s);
-      const StateVector k2 = rhs(stone, env, axpy(y, 0.5 * dt, k1), surface, nullptr, mode);
+      const StateVector k2 = stage(axpy(y, 0.5 * dt, k1));
       if (rhs_evaluations) *rhs_evaluations += 1;
       out = from_vector(axpy(y, dt, k2).data());
       break;
     }
     case Scheme::rk4: {
       const StateVector y = to_vector(s);
-      const StateVector k2 = rhs(stone, env, axpy(y, 0.5 * dt, k1), surface, nullptr, mode);
-      const StateVector k3 = rhs(stone, env, axpy(y, 0.5 * dt, k2), surface, nullptr, mode);
-      const StateVector k4 = rhs(stone, env, axpy(y, dt, k3), surface, nullptr, mode);
+      const StateVector k2 = stage(axpy(y, 0.5 * dt, k1));
+      const StateVector k3 = stage(axpy(y, 0.5 * dt, k2));
+      const StateVector k4 = stage(axpy(y, dt, k3));
       if (rhs_evaluations) *rhs_evaluations += 3;
       StateVector yn;
       for (int i = 0; i < kStateSize; ++i) yn[i] = y[i] + dt / 6.0 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);

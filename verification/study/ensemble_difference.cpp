@@ -17,13 +17,15 @@ void moments(const std::vector<double>& x, double& mean, double& sd) {
   sd = std::sqrt(ss / (x.size() - 1));
 }
 
+// log C(n, k), for the hypergeometric laws below.
+double log_choose(int n, int k) { return std::lgamma(n + 1.0) - std::lgamma(k + 1.0) - std::lgamma(n - k + 1.0); }
+
 // The exact two-sided permutation p of two ensembles without spread, all of a equal to A and all
 // of b equal to B ≠ A: the number k of A values that land in the first ensemble when the N = n_a +
 // n_b labels are shuffled is hypergeometric, P(k) = C(n_a, k) C(n_b, n_a − k) / C(N, n_a), and the
 // difference of the means is D(k) = (A − B)(k/n_a − (n_a − k)/n_b); p sums P(k) over the k with
 // |D(k)| ≥ |D(n_a)| (the observed one).
 double permutation_p(int na, int nb) {
-  auto log_choose = [](int n, int k) { return std::lgamma(n + 1.0) - std::lgamma(k + 1.0) - std::lgamma(n - k + 1.0); };
   const double observed = 1.0;  // |D(n_a)| / |A − B|
   double p = 0;
   for (int k = std::max(0, na - nb); k <= na; ++k) {
@@ -74,7 +76,6 @@ MeanDifference welch_difference(const std::vector<double>& a, const std::vector<
 }
 
 double fisher_exact_p(int failed_a, int n_a, int failed_b, int n_b) {
-  auto log_choose = [](int n, int k) { return std::lgamma(n + 1.0) - std::lgamma(k + 1.0) - std::lgamma(n - k + 1.0); };
   const int n = n_a + n_b, k = failed_a + failed_b;
   if (n_a <= 0 || n_b <= 0 || failed_a < 0 || failed_b < 0 || failed_a > n_a || failed_b > n_b) return 1.0;
   auto prob = [&](int x) { return std::exp(log_choose(k, x) + log_choose(n - k, n_a - x) - log_choose(n, n_a)); };
