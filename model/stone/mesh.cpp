@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <utility>
@@ -104,9 +105,12 @@ Mesh make_icosphere(double radius_m, int subdivisions) {
 MeshCheck check_mesh(const Mesh& mesh) {
   MeshCheck c;
   const int nv = static_cast<int>(mesh.vertices.size());
-  // Directed edge counts: a closed, consistently oriented 2-manifold uses every edge exactly
-  // once in each direction.
-  std::map<std::pair<int, int>, int> directed;
+  // Directed edge uses: a closed, consistently oriented 2-manifold uses every edge exactly once
+  // in each direction. Each keeps its first and second triangle, to name one at fault.
+  struct Uses {
+    int count = 0, first = -1, second = -1;
+  };
+  std::map<std::pair<int, int>, Uses> directed;
   // Sizes relative to the mesh itself, not to the origin: a stone's file may place it far away
   // (a 6 cm box at 1.2e5 m was called inward and at 1.8e5 m degenerate, its coordinates' magnitude
   // swamping its size). The scale is the bounding box's diagonal; the volume's tetrahedra meet at
@@ -118,9 +122,13 @@ MeshCheck check_mesh(const Mesh& mesh) {
   }
   const double scale = nv > 0 ? (hi - lo).norm() : 0;
   const Vec3 o = nv > 0 ? Vec3(0.5 * (lo + hi)) : Vec3::Zero();
-  for (const auto& t : mesh.triangles) {
+  constexpr int none = std::numeric_limits<int>::max();
+  int first_bad_index = none, first_repeated = none, first_degenerate = none;
+  for (int i = 0; i < static_cast<int>(mesh.triangles.size()); ++i) {
+    const auto& t = mesh.triangles[i];
     if (t[0] < 0 || t[1] < 0 || t[2] < 0 || t[0] >= nv || t[1] >= nv || t[2] >= nv) {
       ++c.bad_indices;
+      first_bad_index = std::min(first_bad_index, i);
       continue;
     }
     const Vec3 a = mesh.vertices[t[0]] - o;
@@ -129,31 +137,57 @@ MeshCheck check_mesh(const Mesh& mesh) {
     const Vec3 cr = (b - a).cross(d - a);
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
       ++c.repeated_vertex_triangles;  // "f 1 1 2": not a triangle; its edges would read as misoriented
+      first_repeated = std::min(first_repeated, i);
       continue;
     }
-    if (cr.norm() <= 1e-14 * scale * scale) ++c.degenerate_triangles;
+    if (cr.norm() <= 1e-14 * scale * scale) {
+      ++c.degenerate_triangles;
+      first_degenerate = std::min(first_degenerate, i);
+    }
     c.signed_volume_m3 += a.dot(b.cross(d)) / 6.0;  // divergence theorem, tetrahedra from the box's centre
-    for (int e = 0; e < 3; ++e) ++directed[{t[e], t[(e + 1) % 3]}];
+    for (int e = 0; e < 3; ++e) {
+      Uses& u = directed[{t[e], t[(e + 1) % 3]}];
+      if (u.count == 0) u.first = i;
+      else if (u.count == 1) u.second = i;
+      ++u.count;
+    }
   }
-  for (const auto& [edge, count] : directed) {
+  int first_boundary = none, first_nonmanifold = none;
+  std::map<int, int> misoriented_uses;  // triangle → its edges traversed twice one way
+  for (const auto& [edge, uses] : directed) {
     const auto rev = directed.find({edge.second, edge.first});
-    const int back = rev == directed.end() ? 0 : rev->second;
-    if (count > 1) ++c.misoriented_edges;
-    if (edge.first < edge.second || back == 0) {
-      const int uses = count + back;
-      if (uses == 1) ++c.boundary_edges;
-      if (uses > 2) ++c.nonmanifold_edges;
+    const Uses back = rev == directed.end() ? Uses{} : rev->second;
+    if (uses.count > 1) {
+      ++c.misoriented_edges;
+      ++misoriented_uses[uses.first];
+      ++misoriented_uses[uses.second];
+    }
+    if (edge.first < edge.second || back.count == 0) {
+      const int total = uses.count + back.count;
+      const int earliest = back.count == 0 ? uses.first : std::min(uses.first, back.first);
+      if (total == 1) {
+        ++c.boundary_edges;
+        first_boundary = std::min(first_boundary, earliest);
+      }
+      if (total > 2) {
+        ++c.nonmanifold_edges;
+        first_nonmanifold = std::min(first_nonmanifold, earliest);
+      }
     }
   }
   auto count = [](int n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); };
+  auto blame = [&](int first) { c.at_fault = first == none ? -1 : first; };
   if (mesh.triangles.empty() || nv < 4)
     c.problem = "the mesh has fewer than 4 vertices or no triangles";
-  else if (c.bad_indices)
+  else if (c.bad_indices) {
     c.problem = count(c.bad_indices, "triangle indexes a vertex", "triangles index vertices") + " that do not exist";
-  else if (c.repeated_vertex_triangles)
+    blame(first_bad_index);
+  } else if (c.repeated_vertex_triangles) {
     c.problem = count(c.repeated_vertex_triangles, "triangle names", "triangles name") + " one vertex twice (no area)";
-  else if (c.boundary_edges) {
+    blame(first_repeated);
+  } else if (c.boundary_edges) {
     c.problem = "the mesh is open: " + count(c.boundary_edges, "edge belongs", "edges belong") + " to one triangle only";
+    blame(first_boundary);
     // A closed surface written as a triangle soup (each face with its own copies of its corners)
     // reads as open: say so, and what mends it.
     std::vector<Vec3> sorted = mesh.vertices;
@@ -165,15 +199,23 @@ MeshCheck check_mesh(const Mesh& mesh) {
     if (repeats > 0)
       c.problem += " (" + count(repeats, "vertex repeats", "vertices repeat") +
                    " another's position: merge duplicate vertices, e.g. as the file is exported, so that faces share them)";
-  }
-  else if (c.nonmanifold_edges)
+  } else if (c.nonmanifold_edges) {
     c.problem = count(c.nonmanifold_edges, "edge is", "edges are") + " shared by more than two triangles";
-  else if (c.misoriented_edges)
+    blame(first_nonmanifold);
+  } else if (c.misoriented_edges) {
     c.problem = "inconsistent orientation: " + count(c.misoriented_edges, "edge is", "edges are") +
                 " traversed twice in the same direction";
-  else if (c.degenerate_triangles)
+    // The triangle with most such edges (a face flipped alone has all three), the first on ties.
+    int most = 0;
+    for (const auto& [t, n] : misoriented_uses)
+      if (n > most) {
+        most = n;
+        c.at_fault = t;
+      }
+  } else if (c.degenerate_triangles) {
     c.problem = count(c.degenerate_triangles, "triangle has", "triangles have") + " zero area";
-  else if (!(c.signed_volume_m3 > 0))
+    blame(first_degenerate);
+  } else if (!(c.signed_volume_m3 > 0))
     c.problem = "the mesh is oriented inward (negative signed volume)";
   c.ok = c.problem.empty();
   return c;

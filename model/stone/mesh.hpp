@@ -51,6 +51,10 @@ struct MeshCheck {
   int repeated_vertex_triangles = 0;  // triangles naming one vertex twice ("f 1 1 2")
   double signed_volume_m3 = 0;     // > 0 for an outward-oriented closed mesh
   std::string problem;             // first problem found, in words; empty when ok
+  int at_fault = -1;               // for `problem`, a triangle (0-based) at fault: the first among
+                                   // those the problem counts (for edges traversed twice one way,
+                                   // the triangle with most of them: a flipped face has all three);
+                                   // -1 where no one triangle is (an inward mesh)
 };
 
 MeshCheck check_mesh(const Mesh& mesh);

@@ -182,11 +182,46 @@ BOOST_AUTO_TEST_CASE(open_flipped_and_inward_meshes_are_rejected) {
   BOOST_TEST(check_mesh(flipped).misoriented_edges > 0);
 
   Mesh inward = make_lens(0.03, 0.008, 22);
+  BOOST_TEST(check_mesh(inward).at_fault == -1);  // closed and outward: nothing at fault
   for (auto& t : inward.triangles) std::swap(t[1], t[2]);
   const MeshCheck c = check_mesh(inward);
   BOOST_TEST(!c.ok);
   BOOST_TEST(c.signed_volume_m3 < 0);
   BOOST_TEST(c.problem.find("inward") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(the_triangle_at_fault_is_named) {
+  // Oracle: each defect planted by hand at a known triangle of the 44-triangle prism, so that a
+  // reader of a large OBJ file is sent to the face to mend (tools/scene/stone_case.cpp names its line).
+  const Mesh prism = make_prism(0.03, 0.008, 11);
+  for (int k : {0, 17, 43}) {
+    // A face flipped alone: all three of its edges are traversed twice one way, each neighbour's one.
+    Mesh flipped = prism;
+    std::swap(flipped.triangles[k][1], flipped.triangles[k][2]);
+    BOOST_TEST(check_mesh(flipped).at_fault == k);
+
+    // A face removed: the first triangle at fault owns one of the hole's edges, so it shares two
+    // vertices with the face removed.
+    Mesh open = prism;
+    open.triangles.erase(open.triangles.begin() + k);
+    const MeshCheck c = check_mesh(open);
+    BOOST_REQUIRE(c.at_fault >= 0);
+    int shared = 0;
+    for (int v : open.triangles[c.at_fault]) shared += std::count(prism.triangles[k].begin(), prism.triangles[k].end(), v);
+    BOOST_TEST(shared == 2, "face " << k << ": triangle " << c.at_fault);
+  }
+  Mesh repeated = prism;
+  repeated.triangles.push_back({3, 3, 5});
+  BOOST_TEST(check_mesh(repeated).at_fault == 44);
+  // A third triangle on an edge: the first user of that edge (triangle 0's edge from the top centre).
+  Mesh fin = prism;
+  const int apex = static_cast<int>(fin.vertices.size());
+  fin.vertices.push_back(Vec3(0, 0, 0.05));
+  fin.triangles.push_back({0, prism.triangles[0][1], apex});
+  fin.triangles.push_back({prism.triangles[0][1], 0, apex});
+  const MeshCheck f = check_mesh(fin);
+  BOOST_TEST(f.problem.find("shared by more than two") != std::string::npos, f.problem);
+  BOOST_TEST(f.at_fault == 0);
 }
 
 BOOST_AUTO_TEST_CASE(icosphere_volume_and_inertia_lie_between_its_inner_and_outer_balls) {

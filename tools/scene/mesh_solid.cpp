@@ -149,6 +149,8 @@ SolidCheck check_solid(const Mesh& m) {
             if (cell_of(low, 0) != x || cell_of(low, 1) != y || cell_of(low, 2) != z) continue;
             if (!triangles_cross(m, i, j, eps)) continue;
             out.ok = false;
+            out.at_fault = i;
+            out.other_at_fault = j;
             if (shell_of[i] == shell_of[j])
               out.problem = "triangles " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +
                             " cross each other (the surface passes through itself)";
@@ -179,6 +181,7 @@ nesting:
       const double wb = winding_number(m, shells[b], p);
       if (std::abs(wb - std::round(wb)) > 1e-6) {
         out.ok = false;
+        out.at_fault = shells[a][0];
         out.problem = "shells " + std::to_string(a + 1) + " and " + std::to_string(b + 1) +
                       " touch or overlap (a vertex of one lies on the surface of the other)";
         return out;
@@ -189,6 +192,7 @@ nesting:
     const bool inside_ok = (w == 0 || w == 1) && (w + s_a == 0 || w + s_a == 1);
     if (!inside_ok) {
       out.ok = false;
+      out.at_fault = shells[a][0];
       out.problem = "shell " + std::to_string(a + 1) + " (of " + std::to_string(shells.size()) + ") lies " +
                     (w >= 1 ? "inside another shell with the same orientation: the volume inside both would be counted twice"
                             : "outside every other shell but is inward-oriented (a cavity with no solid around it)");

@@ -28,6 +28,8 @@ struct SolidCheck {
   bool crossings_checked = true;  // false: more than 2e8 candidate pairs (a fan of long thin
                                   // triangles), the crossing test was not completed
   std::string problem;            // empty when ok
+  int at_fault = -1;              // for `problem`, the triangle (0-based) at fault: of two crossing
+  int other_at_fault = -1;        // triangles the first and the other; of a shell, its first
 };
 
 SolidCheck check_solid(const Mesh& mesh);

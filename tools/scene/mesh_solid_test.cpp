@@ -2,6 +2,7 @@
 // Oracles: boxes whose overlaps are known by construction, the winding number of a tetrahedron
 // (1 inside, 0 outside: Σ solid angles / 4π), and the volume of the union of two boxes.
 #include <boost/test/unit_test.hpp>
+#include <regex>
 
 #include <unistd.h>
 
@@ -144,8 +145,76 @@ BOOST_AUTO_TEST_CASE(an_obj_stone_of_two_overlapping_shells_is_refused_with_the_
     BOOST_TEST(m.find("case.toml: stone.mesh_file: " + spec.mesh_file) == 0u, m);
     BOOST_TEST(m.find("shells 1 and 2 cross each other") != std::string::npos, m);
     BOOST_TEST(m.find("counted twice") != std::string::npos, m);
+    // The file's lines of the two triangles: 16 vertex lines come first, then one face a line, so
+    // triangle t is on line 16 + t; the message's location is the first one's line.
+    std::smatch g;
+    BOOST_REQUIRE_MESSAGE(std::regex_search(m, g, std::regex(R"(\.obj:(\d+): shells 1 and 2 cross each other \(triangles (\d+) and (\d+)\).*\(triangle (\d+) is on line (\d+), triangle (\d+) on line (\d+)\)$)")), m);
+    BOOST_TEST(std::stoi(g[4]) == std::stoi(g[2]));
+    BOOST_TEST(std::stoi(g[6]) == std::stoi(g[3]));
+    BOOST_TEST(std::stoi(g[5]) == 16 + std::stoi(g[2]));
+    BOOST_TEST(std::stoi(g[7]) == 16 + std::stoi(g[3]));
+    BOOST_TEST(std::stoi(g[1]) == std::stoi(g[5]));
+  }
+  std::filesystem::remove(spec.mesh_file);
+}
+
+BOOST_AUTO_TEST_CASE(an_obj_stone_with_a_flipped_polygon_names_its_line) {
+  // Oracle: by construction: a cube of six quads (each fanned into two triangles), with comments
+  // and blank lines between, and the fourth face written clockwise. The message names the file's
+  // line of that face, not a triangle's number (the 7th and 8th triangles are on line 16).
+  const std::string obj_text =
+      "# a 4 cm cube\n\nv 0 0 0\nv 0.04 0 0\nv 0.04 0.04 0\nv 0 0.04 0\n"
+      "v 0 0 0.04\nv 0.04 0 0.04\nv 0.04 0.04 0.04\nv 0 0.04 0.04\n\n# faces\n"
+      "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\n"
+      "f 2 6 7 3\n"  // line 16: clockwise seen from outside (+x), the flipped face
+      "f 3 4 8 7\nf 4 1 5 8\n";
+  StoneSpec spec;
+  spec.shape = StoneShape::mesh_file;
+  spec.mesh_file = (std::filesystem::temp_directory_path() / ("flipped_" + std::to_string(::getpid()) + ".obj")).string();
+  { std::ofstream(spec.mesh_file) << obj_text; }
+  spec.density_kg_m3 = 2500;
+  try {
+    build_stone(spec, "case.toml");
+    BOOST_FAIL("a cube with a flipped face accepted");
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    BOOST_TEST(m.find("case.toml: stone.mesh_file: " + spec.mesh_file + ":16: inconsistent orientation") == 0u, m);
   }
   std::filesystem::remove(spec.mesh_file);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
+
+BOOST_AUTO_TEST_CASE(an_air_disk_wider_than_the_obj_stone_is_refused) {
+  // Oracle: a 6 × 4 × 1 cm box turned onto its principal axes (body z the normal of its largest
+  // face): its farthest point from that axis is a corner, √(0.03² + 0.02²) = 0.0360555 m. The air
+  // model's disk (S_d = π R², model/README.md §1.5) stands for the stone's planform: a radius up to
+  // that is the user's choice, a wider one (10 m passed the key's bounds) is no stone's.
+  const Mesh m = boxes({{Vec3(0, 0, 0), Vec3(0.06, 0.04, 0.01)}});
+  StoneSpec spec;
+  spec.shape = StoneShape::mesh_file;
+  spec.mesh_file = (std::filesystem::temp_directory_path() / ("disk_" + std::to_string(::getpid()) + ".obj")).string();
+  {
+    std::ofstream out(spec.mesh_file);
+    for (const auto& v : m.vertices) out << "v " << v.x() << " " << v.y() << " " << v.z() << "\n";
+    for (const auto& f : m.triangles) out << "f " << f[0] + 1 << " " << f[1] + 1 << " " << f[2] + 1 << "\n";
+  }
+  spec.density_kg_m3 = 2500;
+  const double rim = std::hypot(0.03, 0.02);
+  spec.radius_m = 0;
+  BOOST_TEST(build_stone(spec, "case.toml").disk_radius_m == rim, boost::test_tools::tolerance(1e-12));
+  spec.radius_m = 0.999999 * rim;
+  BOOST_TEST(build_stone(spec, "case.toml").disk_radius_m == spec.radius_m);
+  for (double wide : {1.0001 * rim, 10.0}) {
+    spec.radius_m = wide;
+    try {
+      build_stone(spec, "case.toml");
+      BOOST_FAIL("a disk of " << wide << " m accepted");
+    } catch (const InputError& e) {
+      const std::string msg = e.what();
+      BOOST_TEST(msg.find("case.toml: stone.disk_radius_m: ") == 0u, msg);
+      BOOST_TEST(msg.find("wider than the stone: its farthest point from its axis is 0.0360555 m") != std::string::npos, msg);
+    }
+  }
+  std::filesystem::remove(spec.mesh_file);
+}

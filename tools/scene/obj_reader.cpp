@@ -8,8 +8,9 @@
 
 namespace stoneskip {
 
-Mesh parse_obj(const std::string& text, const std::string& name) {
+Mesh parse_obj(const std::string& text, const std::string& name, std::vector<long>* triangle_lines) {
   Mesh m;
+  if (triangle_lines) triangle_lines->clear();
   std::istringstream in(text);
   std::string line;
   long line_no = 0;
@@ -45,7 +46,10 @@ Mesh parse_obj(const std::string& text, const std::string& name) {
         idx.push_back(static_cast<int>(i));
       }
       if (idx.size() < 3) throw_input_error(name, line_no, "", "a face needs at least three vertices");
-      for (std::size_t k = 1; k + 1 < idx.size(); ++k) m.triangles.push_back({idx[0], idx[k], idx[k + 1]});
+      for (std::size_t k = 1; k + 1 < idx.size(); ++k) {
+        m.triangles.push_back({idx[0], idx[k], idx[k + 1]});
+        if (triangle_lines) triangle_lines->push_back(line_no);
+      }
       if (m.triangles.size() > kMaxObjTriangles)
         throw_input_error(name, line_no, "", "more than " + std::to_string(kMaxObjTriangles) + " triangles (a limit)");
     }
@@ -54,6 +58,8 @@ Mesh parse_obj(const std::string& text, const std::string& name) {
   return m;
 }
 
-Mesh read_obj(const std::string& path) { return parse_obj(read_text_file(path, kMaxObjBytes), path); }
+Mesh read_obj(const std::string& path, std::vector<long>* triangle_lines) {
+  return parse_obj(read_text_file(path, kMaxObjBytes), path, triangle_lines);
+}
 
 }  // namespace stoneskip

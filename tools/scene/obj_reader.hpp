@@ -5,6 +5,7 @@
 // 1 000 000 triangles, vertex coordinates within ±1e6 m.
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "model/stone/mesh.hpp"
 
@@ -14,7 +15,9 @@ constexpr std::size_t kMaxObjBytes = 256u << 20;
 constexpr std::size_t kMaxObjTriangles = 1000000;
 constexpr double kMaxObjCoordinate_m = 1e6;
 
-Mesh read_obj(const std::string& path);
-Mesh parse_obj(const std::string& text, const std::string& name);
+// triangle_lines, where given, receives each triangle's line in the file (1-based; a polygon's
+// triangles share its line), so that a problem found in the mesh can name the line.
+Mesh read_obj(const std::string& path, std::vector<long>* triangle_lines = nullptr);
+Mesh parse_obj(const std::string& text, const std::string& name, std::vector<long>* triangle_lines = nullptr);
 
 }  // namespace stoneskip

@@ -280,11 +280,24 @@ Stone build_stone(const StoneSpec& spec, const std::string& file) {
       d << "lens R=" << spec.radius_m << " m, h=" << spec.thickness_m << " m, N=" << spec.segments;
       break;
     case StoneShape::mesh_file: {
-      mesh = read_obj(spec.mesh_file);
+      std::vector<long> lines;  // each triangle's line in the OBJ file
+      mesh = read_obj(spec.mesh_file, &lines);
+      // A problem names the OBJ file's line of the first triangle at fault (and of the second, for
+      // two that cross): a triangle's number alone is no help where polygons were fanned.
+      auto refuse = [&](const std::string& problem, int at_fault, int other) {
+        const auto line = [&](int t) { return t >= 0 && t < static_cast<int>(lines.size()) ? lines[t] : 0L; };
+        std::string where = spec.mesh_file;
+        if (line(at_fault) > 0) where += ":" + std::to_string(line(at_fault));
+        std::string more;
+        if (line(other) > 0)
+          more = " (triangle " + std::to_string(at_fault + 1) + " is on line " + std::to_string(line(at_fault)) + ", triangle " +
+                 std::to_string(other + 1) + " on line " + std::to_string(line(other)) + ")";
+        throw_input_error(file, 0, "stone.mesh_file", where + ": " + problem + more);
+      };
       const MeshCheck check = check_mesh(mesh);
-      if (!check.ok) throw_input_error(file, 0, "stone.mesh_file", spec.mesh_file + ": " + check.problem);
+      if (!check.ok) refuse(check.problem, check.at_fault, -1);
       const SolidCheck solid = check_solid(mesh);
-      if (!solid.ok) throw_input_error(file, 0, "stone.mesh_file", spec.mesh_file + ": " + solid.problem);
+      if (!solid.ok) refuse(solid.problem, solid.at_fault, solid.other_at_fault);
       d << "mesh " << spec.mesh_file;
       break;
     }
@@ -314,7 +327,18 @@ Stone build_stone(const StoneSpec& spec, const std::string& file) {
                                             ", " + num(kStoneMass.hi) + "] kg");
   // A prism or a lens keeps its symmetry axis as body z, however thick (BodyAxes::mesh); a mesh
   // read from a file is turned onto its principal axes.
-  return make_stone(mesh, mp, spec.radius_m, d.str(), spec.shape == StoneShape::mesh_file ? BodyAxes::principal : BodyAxes::mesh);
+  Stone stone = make_stone(mesh, mp, spec.radius_m, d.str(), spec.shape == StoneShape::mesh_file ? BodyAxes::principal : BodyAxes::mesh);
+  // The air's disk (model/README.md §1.5, S_d = π R²) stands for the stone's own planform: a disk
+  // wider than the stone's farthest point from its axis (the default radius) is no stone's.
+  if (spec.shape == StoneShape::mesh_file && spec.radius_m > 0) {
+    double rim = 0;
+    for (const Vec3& v : stone.body_mesh.vertices) rim = std::max(rim, std::hypot(v.x(), v.y()));
+    if (spec.radius_m > rim * (1 + 1e-9))
+      throw_input_error(file, 0, "stone.disk_radius_m",
+                        num(spec.radius_m) + " m is wider than the stone: its farthest point from its axis is " + num(rim) +
+                            " m (the default, where the key is left out)");
+  }
+  return stone;
 }
 
 StoneCase stone_case_from_document(const TomlDocument& doc) {
