@@ -1,6 +1,7 @@
 #include "model/stone/fluid_forces.hpp"
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "model/stone/pressure_distribution.hpp"
@@ -140,6 +141,13 @@ WaterLoads water_loads_from_depths(const Stone& stone, const Environment& env, c
   out.vertex_count = nv;
   double deepest = -1e300;
   for (int k = 0; k < nv; ++k) {
+    if (std::isnan(depth[k])) {
+      // A NaN surface or state: NaN loads, which the solvers fail on, saying where (std::max would
+      // skip the NaN, and a stone over a NaN field would fly on as if over no water).
+      out.force_N = out.torque_N_m = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+      out.deepest_depth_m = depth[k];
+      return out;
+    }
     deepest = std::max(deepest, depth[k]);
     if (depth[k] > 0) ++out.submerged_vertices;
   }

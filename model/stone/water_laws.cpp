@@ -1,8 +1,13 @@
 #include "model/stone/water_laws.hpp"
 
+#include <cmath>
+
 namespace stoneskip {
 
 double law_pressure_Pa(const Environment& env, double u, double stone_speed_m_s) {
+  // A NaN normal speed (a NaN state) passes on as NaN, so that the solvers fail on it, saying where;
+  // `!(u > 0)` alone would make it "no water".
+  if (std::isnan(u)) return u;
   if (!(u > 0)) return 0;
   const double k = env.water_coefficient * env.water_density_kg_m3;
   switch (env.water_law) {
