@@ -545,9 +545,24 @@ std::optional<Figure> capture_scene_stone_figure(const std::string& key, const R
   return f;
 }
 
+WaveForcingWords wave_forcing_words(const Record& s) {
+  const std::string forcing = s.has_text("forcing") ? s.text("forcing") : "";
+  const std::string samples = s.has_number("draught_samples") ? fmt(s.number("draught_samples")) : "?";
+  if (forcing == "pressure")
+    return {"the pressure head", "pressure head",
+            "the head of the stone's own loads against the moving surface, gathered at its steps",
+            "the pressure head gathered with the leapfrog's hat weights"};
+  if (forcing == "displacement")
+    return {"the draught", "draught", "b against the moving surface, sampled at the stone's steps",
+            samples + " draught samples per water step"};
+  return {"the forcing head", "forcing head", "the head against the moving surface, gathered at the stone's steps",
+          "a forcing this record does not name"};
+}
+
 std::optional<Figure> capture_scene_wave_figure(const std::string& key, const Record& c) {
   if (!c.has_child("scene") || !c.at("scene").at("waves").flag("compared")) return std::nullopt;
   const Record& w = c.at("scene").at("waves");
+  const WaveForcingWords head = wave_forcing_words(c.at("scene").at("settings"));
   // Data written before the row of the largest difference was stored has the first contact's row only.
   const bool worst = w.has_table("worst_profile");
   Figure f = make(key, "scene_waves",
@@ -555,7 +570,7 @@ std::optional<Figure> capture_scene_wave_figure(const std::string& key, const Re
                       (worst ? " (top) and along the row holding the largest difference between the scene and the continuum "
                                "reference (bottom)"
                              : "") +
-                      ": the scene, the forced leapfrog driven by the reference's draught, and the forced spectral reference "
+                      ": the scene, the forced leapfrog driven by the reference's " + head.short_name + ", and the forced spectral reference "
                       "(the stencil's exact semi-discrete solution, and the continuum one)",
                   1100, worst ? 860 : 520);
   auto panel = [&](std::ostringstream& s, const char* table, const std::string& title) {
@@ -563,7 +578,7 @@ std::optional<Figure> capture_scene_wave_figure(const std::string& key, const Re
     const std::string d = dat(f, table);
     s << "set title " << gnuplot_quote(title) << "\n"
       << "plot " << d << " u 1:($2*1e3) w l lw 3 lc rgb '" << kRealtime << "' t 'scene (two-way)', " << d
-      << " u 1:($3*1e3) w l lw 2 lc rgb '" << kAxis[0] << "' t 'leapfrog, reference draught', " << d
+      << " u 1:($3*1e3) w l lw 2 lc rgb '" << kAxis[0] << "' t " << gnuplot_quote("leapfrog, reference " + head.short_name) << ", " << d
       << " u 1:($4*1e3) w l lw 1.5 dt 2 lc rgb '" << kAxis[2] << "' t 'semi-discrete reference', " << d
       << " u 1:($5*1e3) w l lw 1.5 dt 3 lc rgb '" << kReference << "' t 'continuum reference'\n";
   };

@@ -36,4 +36,15 @@ std::optional<Figure> capture_bounce_figure(const std::string& key, const Record
 std::optional<Figure> capture_scene_stone_figure(const std::string& key, const Record& capture);
 std::optional<Figure> capture_scene_wave_figure(const std::string& key, const Record& capture);
 
+// The words for the head that forces the capture scene's water, from its settings' `forcing`
+// (solvers/scene/coupled_scene.hpp): the faces' pressure head, or the draught b. Records written
+// before `forcing` was stored get words that name neither.
+struct WaveForcingWords {
+  std::string name;        // "the pressure head"
+  std::string short_name;  // "pressure head"
+  std::string feedback;    // what the scene's own forcing adds to the stone's path
+  std::string gathering;   // how the scene gathers the head over a water step
+};
+WaveForcingWords wave_forcing_words(const Record& settings);
+
 }  // namespace stoneskip

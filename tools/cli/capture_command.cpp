@@ -402,12 +402,14 @@ nlohmann::json scene_json(const Record& r) {
   nlohmann::json j;
   j["case_file"] = r.at("settings").text("case_file");
   j["coupling"] = r.at("settings").text("coupling");
+  j["forcing"] = r.at("settings").text("forcing");
   nlohmann::json s;
   for (const char* k : {"scene_bounces", "still_bounces", "reference_bounces", "max_start_difference_s",
                         "max_end_difference_s", "still_max_start_difference_s"})
     s[k] = st.number(k);
   s["verdict"] = st.at("agreement").text("verdict");
   s["reason"] = st.at("agreement").text("reason");
+  s["ensemble_members"] = st.number("ensemble_members");  // the verdict's: stepper against CVODE on still water
   const Table& t = st.table("contacts");
   for (std::size_t i = 0; i < t.rows(); ++i) {
     nlohmann::json c;

@@ -331,27 +331,32 @@ const char* const kSmallPond =
     " --scene-set water.nx=80 --scene-set water.ny=40 --scene-set water.cell_m=0.04";
 
 BOOST_AUTO_TEST_CASE(a_skipping_capture_through_the_scene_against_both_references) {
-  // Oracles: the CVODE reference for the stone (contact starts within one flight step of the
-  // stepper, whose flight is first order in it); the triangle inequality for the waves' error split
-  // (|scene − continuum| ≤ model + time + space, each a max over the grid); the scene's clock (the
-  // field's last level at 27 steps of 1/90 s = 0.3 s); the reference's own error far below the
-  // errors it measures (its stored verdict agrees).
+  // Oracles: the CVODE reference for the stone's first contact, on water the stone has not yet
+  // disturbed: the stepper at rtol 1e-8 (the pond's) makes a position error of about 1e-8 m in the
+  // 0.3 s flight, a start error of that over the stone's sinking speed (about 1 m/s), ~1e-8 s: 1e-6 s
+  // leaves a factor of 100. The count is judged on ensembles (16 members each, the rule's own), and
+  // the forcing named (the pond's default, pressure). The scene's clock (the field's last level at
+  // 27 steps of 1/90 s = 0.3 s); the reference's own error far below the errors it measures (its
+  // stored verdict agrees).
   const Run r = run("capture throw cases/captures/skip_12ms_14revs.log --thrower finger_spin_rev_s=11.5 --json" +
                     std::string(kSmallPond));
   BOOST_REQUIRE_MESSAGE(r.status == 0, "exit " << r.status);
   const auto j = nlohmann::json::parse(r.out);
   const auto& st = j.at("scene").at("stone");
   const auto& w = j.at("scene").at("waves");
-  constexpr double kFlightStep_s = 1e-3;  // the case's solver.dt_s
-  BOOST_TEST(st.at("contacts").size() >= 1u);
-  BOOST_TEST(st.at("max_start_difference_s").get<double>() < kFlightStep_s);
+  BOOST_REQUIRE(st.at("contacts").size() >= 1u);
+  const auto& first = st.at("contacts").at(0);
+  BOOST_TEST(first.at("index").get<double>() == 1);
+  constexpr double kFirstStart_s = 1e-6;
+  BOOST_TEST(std::abs(first.at("scene_start_s").get<double>() - first.at("reference_start_s").get<double>()) < kFirstStart_s);
   BOOST_TEST(st.at("reference_bounces").get<double>() >= 1);  // the capture skips in the paper convention
+  BOOST_TEST(st.at("ensemble_members").get<double>() == 16);
+  BOOST_TEST(st.at("reason").get<std::string>().find("on still water over 16 throws each") != std::string::npos);
+  BOOST_TEST(j.at("scene").at("forcing").get<std::string>() == "pressure");
   BOOST_REQUIRE(w.at("compared").get<bool>());
   constexpr double kClock = 1e-12;  // round-off of 27 additions of 1/90
   BOOST_TEST(std::abs(w.at("t_s").get<double>() - 0.3) < kClock);
-  const double total = w.at("total_m"), model = w.at("model_m"), time = w.at("time_m"), space = w.at("space_m");
-  constexpr double kRoundoff = 1e-15;  // a few ulps of millimetre heights
-  BOOST_TEST(total <= model + time + space + kRoundoff);
+  const double total = w.at("total_m"), time = w.at("time_m"), space = w.at("space_m");
   BOOST_TEST(w.at("amplitude_m").get<double>() > 0);
   BOOST_TEST(10 * w.at("quadrature_m").get<double>() <= std::min({time, space, total}));
   BOOST_TEST(w.at("verdict").get<std::string>() == "the reference resolves the errors");

@@ -30,6 +30,10 @@ bool CaptureSceneOptions::valid(std::string* why) const {
     return fail("quadrature_interval_s must be > 0");
   if (quadrature_nodes < 1 || quadrature_nodes > 32) return fail("quadrature_nodes must be in [1, 32]");
   if (!(max_reference_cell_transforms > 0)) return fail("max_reference_cell_transforms must be > 0");
+  if (ensemble_members < 0 || ensemble_members % 2 != 0 || ensemble_members > 1000)
+    return fail("ensemble_members must be even, in [0, 1000]");
+  if (!(perturbation_smallest > 0) || !(perturbation_largest >= perturbation_smallest) || !(perturbation_largest < 1))
+    return fail("the ensemble's perturbations must satisfy 0 < smallest <= largest < 1");
   return true;
 }
 
@@ -231,31 +235,53 @@ std::vector<double> spectral(const HeightFieldOptions& field, SpectralSymbol sym
   return z;
 }
 
+// Contacts paired by overlapping time: a contact of one run that overlaps none of the other's is
+// unpaired (a sub-millisecond rim contact of one run alone must not shift every later pair, as
+// pairing the i-th with the i-th did). Both lists are in time order; the one that ends first moves on.
+std::vector<std::pair<int, int>> paired_by_overlap(const std::vector<ContactRecord>& a, const std::vector<ContactRecord>& b) {
+  std::vector<std::pair<int, int>> out;
+  std::size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    if (a[i].start_s <= b[j].end_s && b[j].start_s <= a[i].end_s) {
+      out.emplace_back(static_cast<int>(i), static_cast<int>(j));
+      ++i;
+      ++j;
+    } else if (a[i].end_s < b[j].end_s) {
+      ++i;
+    } else {
+      ++j;
+    }
+  }
+  return out;
+}
+
 void compare_contacts(CaptureSceneComparison& out) {
   const auto& sc = out.scene.stone.contacts;
   const auto& rc = out.reference.contacts;
   const auto& wc = out.still_water.contacts;
-  const std::size_t n = std::min(sc.size(), rc.size());
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (std::size_t i = 0; i < n; ++i) {
+  std::vector<int> still_of(rc.size(), -1);
+  for (const auto& [w, r] : paired_by_overlap(wc, rc)) {
+    still_of[r] = w;
+    out.still_max_start_difference_s = std::max(out.still_max_start_difference_s, std::abs(wc[w].start_s - rc[r].start_s));
+  }
+  for (const auto& [i, r] : paired_by_overlap(sc, rc)) {
     SceneContactComparison c;
-    c.index = static_cast<int>(i + 1);
+    c.index = r + 1;
     c.scene_start_s = sc[i].start_s;
     c.scene_end_s = sc[i].end_s;
-    c.reference_start_s = rc[i].start_s;
-    c.reference_end_s = rc[i].end_s;
-    c.still_start_s = i < wc.size() ? wc[i].start_s : nan;
-    c.still_end_s = i < wc.size() ? wc[i].end_s : nan;
+    c.reference_start_s = rc[r].start_s;
+    c.reference_end_s = rc[r].end_s;
+    c.still_start_s = still_of[r] >= 0 ? wc[still_of[r]].start_s : nan;
+    c.still_end_s = still_of[r] >= 0 ? wc[still_of[r]].end_s : nan;
     c.scene_exit_x_m = sc[i].exit_position_m.x();
-    c.reference_exit_x_m = rc[i].exit_position_m.x();
+    c.reference_exit_x_m = rc[r].exit_position_m.x();
     c.scene_bounced = sc[i].bounced;
-    c.reference_bounced = rc[i].bounced;
+    c.reference_bounced = rc[r].bounced;
     out.max_start_difference_s = std::max(out.max_start_difference_s, std::abs(c.scene_start_s - c.reference_start_s));
     out.max_end_difference_s = std::max(out.max_end_difference_s, std::abs(c.scene_end_s - c.reference_end_s));
     out.contacts.push_back(c);
   }
-  for (std::size_t i = 0; i < std::min(wc.size(), rc.size()); ++i)
-    out.still_max_start_difference_s = std::max(out.still_max_start_difference_s, std::abs(wc[i].start_s - rc[i].start_s));
 }
 
 }  // namespace
@@ -291,6 +317,31 @@ CaptureSceneComparison compare_capture_scene(const CaptureSceneOptions& o) {
   ro.record_trajectory = true;
   out.reference = run_reference(so.stone, so.environment, so.initial, ro);
   compare_contacts(out);
+
+  // The ensembles on still water: the throw's speed × 1 ± ε, direction, attitude and spin kept.
+  if (o.ensemble_members > 0) {
+    const CpuTimer cpu;
+    const WallTimer wall;
+    out.ensemble_factors = perturbation_factors(o.ensemble_members, o.perturbation_smallest, o.perturbation_largest);
+    ReferenceOptions counts = ro;
+    counts.record_trajectory = false;
+    std::vector<double> still_ran, reference_ran;
+    for (double factor : out.ensemble_factors) {
+      RigidState initial = so.initial;
+      initial.velocity_m_s *= factor;
+      const ThrowResult a = run_realtime(so.stone, so.environment, initial, still);
+      const ThrowResult b = run_reference(so.stone, so.environment, initial, counts);
+      out.still_ensemble.push_back(a.outcome == Outcome::failed ? -1.0 : double(a.bounces));
+      out.reference_ensemble.push_back(b.outcome == Outcome::failed ? -1.0 : double(b.bounces));
+      if (a.outcome == Outcome::failed) ++out.still_failed;
+      else still_ran.push_back(a.bounces);
+      if (b.outcome == Outcome::failed) ++out.reference_failed;
+      else reference_ran.push_back(b.bounces);
+    }
+    out.ensemble_difference = welch_difference(still_ran, reference_ran);
+    out.ensemble_cpu_s = cpu.seconds();
+    out.ensemble_wall_s = wall.seconds();
+  }
 
   // The waves.
   if (so.coupling != Coupling::two_way) {

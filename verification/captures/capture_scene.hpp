@@ -44,6 +44,7 @@
 #include "solvers/reference/reference_options.hpp"
 #include "solvers/scene/coupled_scene.hpp"
 #include "solvers/spectral/forced_wave.hpp"
+#include "verification/study/ensemble_difference.hpp"
 
 namespace stoneskip {
 
@@ -57,6 +58,12 @@ struct CaptureSceneOptions {
   // semi-discrete): beyond this many cell-transforms (about a minute of CPU at 1e9) the waves are
   // not compared, and `waves_not_compared` says how many it would have taken.
   double max_reference_cell_transforms = 5e9;
+  // The bounce count is chaotic (a 1e-9 change of speed may change it, model/README.md §2.4): the
+  // stepper and CVODE are compared on still water over ensembles of the throw with its speed × 1 ± ε,
+  // ε log-spaced over [smallest, largest] (verification/study/ensemble_difference.hpp), as the
+  // stones report's count ensembles are; 0 members: the single runs only, and no verdict.
+  int ensemble_members = 16;
+  double perturbation_smallest = 1e-9, perturbation_largest = 1e-4;
   bool valid(std::string* why = nullptr) const;
 };
 
@@ -101,8 +108,10 @@ std::vector<double> prescribed_forced_leapfrog(const HeightFieldOptions& field, 
 std::vector<double> hat_forced_leapfrog(const HeightFieldOptions& field, const std::vector<double>& initial_m,
                                         const DraughtField& head, double piece_s, long steps);
 
+// A contact of the scene paired with CVODE's that it overlaps in time (and the still-water
+// stepper's that overlaps the same CVODE contact, NaN where none does).
 struct SceneContactComparison {
-  int index = 0;                          // 1-based
+  int index = 0;                          // CVODE's contact's number, 1-based
   double scene_start_s = 0, scene_end_s = 0;
   double still_start_s = 0, still_end_s = 0;  // the stepper on still water (NaN when it has fewer contacts)
   double reference_start_s = 0, reference_end_s = 0;
@@ -132,10 +141,16 @@ struct CaptureSceneComparison {
   SceneSummary scene;
   ThrowResult still_water;                // the scene's stepper on still water
   ThrowResult reference;                  // CVODE, still water
-  std::vector<SceneContactComparison> contacts;  // the first min(scene, reference) contacts
+  std::vector<SceneContactComparison> contacts;  // the scene's contacts that overlap CVODE's, paired in time
   double max_start_difference_s = 0;      // over those: |scene − reference| contact start …
   double max_end_difference_s = 0;        // … and end
-  double still_max_start_difference_s = 0;  // |still water − reference| over the contacts both have
+  double still_max_start_difference_s = 0;  // |still water − reference| over the still-water contacts paired likewise
+  // The still-water ensembles (counts per member, −1 where the solve failed) and their difference
+  // of means, stepper − CVODE (Welch, or the exact test without spread).
+  std::vector<double> still_ensemble, reference_ensemble, ensemble_factors;
+  int still_failed = 0, reference_failed = 0;
+  MeanDifference ensemble_difference;
+  double ensemble_cpu_s = 0, ensemble_wall_s = 0;
   bool waves_compared = false;
   std::string waves_not_compared;         // why not, when not
   WaveComparison waves;

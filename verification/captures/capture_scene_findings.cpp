@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 
 #include "verification/study/verdict_rules.hpp"
 #include "verification/study/words.hpp"
@@ -23,11 +25,15 @@ Record settings(const CaptureSceneOptions& o, const std::string& case_file) {
   const SceneOptions& s = o.scene;
   r.set("case_file", case_file);
   r.set("coupling", std::string(to_string(s.coupling)));
+  r.set("forcing", std::string(to_string(s.forcing)));  // pressure: the faces' pressure head; displacement: the draught b
   r.set("convention", std::string(to_string(s.environment.convention)));
   r.set("stone_description", s.stone.description);
   r.set("draught_samples", s.draught_samples);
   r.set("frame_rate_hz", s.frame_rate_hz);
   r.set("duration_s", s.end_s());
+  r.set("stone_scheme", std::string(to_string(s.stone_steps.scheme)));
+  r.set("stone_adaptive", is_adaptive(s.stone_steps.scheme));
+  r.set("stone_rtol", s.stone_steps.rtol);
   r.set("stone_dt_s", s.stone_steps.dt_s);
   r.set("stone_contact_dt_s", s.stone_steps.contact_dt_s);
   r.set("reference_rtol", o.reference.rtol);
@@ -77,19 +83,51 @@ Record stone(const CaptureSceneComparison& c) {
   r.set("scene_cpu_s", c.scene.cpu_s).set("scene_wall_s", c.scene.wall_s);
   r.set("water_steps", c.scene.water_steps);
   r.set("reference_cpu_s", c.reference.stats.cpu_s).set("reference_wall_s", c.reference.stats.wall_s);
-  Record in;
-  in.set("realtime_bounces", c.scene.stone.bounces).set("reference_bounces", c.reference.bounces);
-  // A failed run's bounces until the failure are not its count (rule bounce_agreement).
-  in.set("realtime_failed", c.scene.stone.outcome == Outcome::failed);
-  in.set("reference_failed", c.reference.outcome == Outcome::failed);
   auto made = [](const ThrowResult& run) {
     return (run.outcome == Outcome::failed ? "fails after " : "makes ") + bounce_words(run.bounces);
   };
-  decide_verdict(r, "agreement", "bounce_agreement", in,
-                 "in the scene's " + num(c.scene.simulated_s) + " s the scene's stone " + made(c.scene.stone) +
-                     ", the CVODE reference on still water " + made(c.reference) + "; the first " + num(double(c.contacts.size()), 9) +
-                     " contact(s) start at most " + num(1e3 * c.max_start_difference_s) + " ms apart (the stepper on "
-                     "still water: " + num(1e3 * c.still_max_start_difference_s) + " ms)");
+  const std::string single =
+      "in the scene's " + num(c.scene.simulated_s) + " s the scene's stone on the live water " + made(c.scene.stone) +
+      ", the same stepper on still water " + made(c.still_water) + ", the CVODE reference on still water " +
+      made(c.reference) + " (one run each); the " + num(double(c.contacts.size()), 9) + " contact(s) of the scene that overlap CVODE's in time start at most " +
+      num(1e3 * c.max_start_difference_s) + " ms apart (the stepper on still water: " +
+      num(1e3 * c.still_max_start_difference_s) + " ms)";
+  r.set("single_runs", single);
+  // The count is chaotic: the stepper and CVODE are judged on ensembles on the same (still) water,
+  // never run against run (rule ensemble_bounce_agreement, as the stones report's count ensembles).
+  // The live water's own change of the count is not judged here: one scene is one run.
+  const MeanDifference& d = c.ensemble_difference;
+  r.set("ensemble_members", c.ensemble_factors.size());
+  r.set("ensemble_cpu_s", c.ensemble_cpu_s).set("ensemble_wall_s", c.ensemble_wall_s);
+  Table e{{"factor", "still_bounces", "reference_bounces"}, {}};
+  for (std::size_t k = 0; k < c.ensemble_factors.size(); ++k)
+    e.add_row({c.ensemble_factors[k], c.still_ensemble[k], c.reference_ensemble[k]});
+  r.set_table("ensemble", e);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  Record in;
+  in.set("valid", d.valid);
+  in.set("difference_low", d.valid ? d.low : nan).set("difference_high", d.valid ? d.high : nan);
+  in.set("count_spread", d.valid ? d.sd_a + d.sd_b : nan);
+  in.set("exact_p", d.exact_p).set("alpha", d.alpha);
+  in.set("realtime_failed", c.still_failed).set("reference_failed", c.reference_failed);
+  std::string reason = single;
+  if (c.ensemble_factors.empty()) {
+    reason += "; no ensembles were run, and a chaotic count is not judged on single runs";
+  } else {
+    double smallest = 1, largest = 0;  // the relative perturbations |factor − 1|
+    for (double f : c.ensemble_factors) {
+      smallest = std::min(smallest, std::abs(f - 1));
+      largest = std::max(largest, std::abs(f - 1));
+    }
+    char b[400];
+    std::snprintf(b, sizeof b,
+                  "; on still water over %zu throws each (speed × 1 ± %.3g … %.3g) the stepper %.3g ± %.2g, CVODE %.3g ± %.2g "
+                  "bounces (mean ± sd; %d and %d failed); difference %.3g, 95 %% interval [%.3g, %.3g]%s",
+                  c.ensemble_factors.size(), smallest, largest, d.mean_a, d.sd_a, d.mean_b, d.sd_b, c.still_failed, c.reference_failed,
+                  d.difference, d.low, d.high, std::isnan(d.exact_p) ? "" : " (no spread: the exact permutation test decides)");
+    reason += b;
+  }
+  decide_verdict(r, "agreement", "ensemble_bounce_agreement", in, reason);
   return r;
 }
 
