@@ -23,6 +23,9 @@ struct SilenceHdf5 {
 };
 const SilenceHdf5 kSilence;
 
+// The final name of the file this thread's innermost Hdf5Writer writes (nullptr: none).
+thread_local const std::filesystem::path* t_writing = nullptr;
+
 // Runs one HDF5 call and throws where it failed. errno is cleared before the call, so that the
 // cause read after it is the call's own, not one left by an earlier, unrelated failure.
 template <class Call>
@@ -33,6 +36,9 @@ void check(Call&& call, const std::string& what) {
   // A write that failed for want of room (a large dataset goes to the disk at once, past HDF5's
   // cache): the output place's fault, exit 2 (tools/cli/main.cpp), not an internal error.
   const int e = errno;
+  if ((e == ENOSPC || e == EDQUOT || e == EFBIG || e == EIO) && t_writing)
+    throw_input_error(t_writing->string(), 0, "",
+                      "cannot write the HDF5 file (" + std::string(std::strerror(e)) + ", at " + what + "); nothing written there");
   if (e == ENOSPC || e == EDQUOT || e == EFBIG || e == EIO) throw std::system_error(e, std::generic_category(), "HDF5: " + what);
   throw std::runtime_error("HDF5: " + what);
 }
@@ -374,6 +380,8 @@ Hdf5Writer::Hdf5Writer(const std::filesystem::path& path) : out_(path) {
   if (f < 0) throw_input_error(path.string(), 0, "", "cannot create HDF5 file");
   file_ = f;
   root_ = std::make_unique<H5Group>(H5Id(H5Gopen2(file_, "/", H5P_DEFAULT), H5Gclose), "");
+  previous_writing_ = t_writing;
+  t_writing = &out_.final_path();
 }
 
 namespace {
@@ -383,6 +391,7 @@ std::atomic<bool> g_write_failed{false};
 bool hdf5_write_failed() { return g_write_failed.load(); }
 
 Hdf5Writer::~Hdf5Writer() {
+  if (t_writing == &out_.final_path()) t_writing = previous_writing_;
   root_.reset();
   if (file_ >= 0) {
     // Not committed (an error on the way): the temporary is removed by out_. The library may still

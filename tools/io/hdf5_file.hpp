@@ -117,6 +117,9 @@ class Hdf5Writer {
   AtomicOutput out_;
   hid_t file_ = -1;  // closed (its result checked) by commit(); by the destructor otherwise
   std::unique_ptr<H5Group> root_;
+  // The file this thread writes, for a write that fails for want of room before the commit (a
+  // large dataset goes to the disk at once): its error names the file, as commit()'s does.
+  const std::filesystem::path* previous_writing_ = nullptr;
 };
 
 // An existing HDF5 file, read only. Throws InputError naming the file if it cannot be opened.

@@ -3,12 +3,20 @@
 // call failing, so it is not a full disk whatever errno held before it.
 #include <boost/test/unit_test.hpp>
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <cerrno>
+#include <csignal>
+#include <filesystem>
+#include <vector>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 
 #include "tools/io/hdf5_file.hpp"
+#include "tools/io/input_error.hpp"
 #include "tools/io/scratch_dir.hpp"
 
 using namespace stoneskip;
@@ -35,6 +43,54 @@ BOOST_AUTO_TEST_CASE(a_failed_call_is_not_blamed_on_an_earlier_full_disk) {
   }
   BOOST_TEST(!system_error);
   BOOST_TEST(other_error);
+}
+
+BOOST_AUTO_TEST_CASE(a_dataset_write_that_does_not_fit_names_the_file) {
+  // Oracle: the bad-output rule (one line naming the file). A dataset larger than HDF5's cache goes
+  // to the disk at its write, before the commit: past a file-size limit (RLIMIT_FSIZE with SIGXFSZ
+  // ignored; a full disk fails the same way with ENOSPC) the write fails with EFBIG. It said
+  // "HDF5: write trajectory: File too large", naming no file; and nothing is left behind.
+  // In a child process: after a failed write HDF5 may still hold the file, and its clean-up at
+  // exit can crash on it (the CLI's main ends without that clean-up; the child ends with _exit).
+  ScratchDir dir("stoneskip_hdf5_full");
+  const auto path = dir.dir / "big.h5";
+  int fds[2];
+  BOOST_REQUIRE(::pipe(fds) == 0);
+  const pid_t child = ::fork();
+  BOOST_REQUIRE(child >= 0);
+  if (child == 0) {
+    ::close(fds[0]);
+    rlimit old{};
+    ::getrlimit(RLIMIT_FSIZE, &old);
+    const rlimit small{20000, old.rlim_max};
+    std::signal(SIGXFSZ, SIG_IGN);
+    ::setrlimit(RLIMIT_FSIZE, &small);
+    std::string m;
+    try {
+      Hdf5Writer w(path);
+      w.root().write_vector("big", std::vector<double>(1 << 20, 1.0));  // 8 MiB
+      w.commit();
+    } catch (const InputError& e) {
+      m = e.what();
+    } catch (const std::exception& e) {
+      m = std::string("not an InputError: ") + e.what();
+    }
+    [[maybe_unused]] const auto n = ::write(fds[1], m.data(), m.size());
+    ::_exit(0);
+  }
+  ::close(fds[1]);
+  std::string message;
+  char buf[512];
+  for (ssize_t n; (n = ::read(fds[0], buf, sizeof buf)) > 0;) message.append(buf, static_cast<std::size_t>(n));
+  ::close(fds[0]);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  BOOST_TEST(WIFEXITED(status));
+  BOOST_TEST(message.find(path.string() + ": cannot write the HDF5 file (File too large") == 0u, message);
+  BOOST_TEST(!std::filesystem::exists(path));
+  std::size_t left = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.dir)) ++left;
+  BOOST_TEST(left == 0u);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
