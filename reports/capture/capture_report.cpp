@@ -334,7 +334,11 @@ void solvers_part(SectionWriter& w, const std::string& key, const Record& c) {
            r.text("outcome"), fmt(r.number("cpu_s"), 3), fmt(r.number("wall_s"), 3)});
   }
   w.table(t);
-  if (sim.has_child("agreement")) w.verdict("Real-time model against the reference", sim.at("agreement"));
+  // Records written before the ensembles judged the nominal throw's single runs.
+  if (sim.has_child("agreement"))
+    w.verdict(sim.has_table("count_ensemble") ? "Real-time model against the reference, on ensembles of the nominal throw"
+                                        : "Real-time model against the reference",
+              sim.at("agreement"));
   add_figure(w, capture_trajectory_figure(key, c));
   if (sim.has_child("ensemble")) {
     const Record& e = sim.at("ensemble");
@@ -391,12 +395,15 @@ void scene_part(SectionWriter& w, const std::string& key, const Record& c) {
   }
   w.table(t);
   // Records written before the ensembles judged the scene's one run against CVODE's.
-  w.verdict(st.has_table("ensemble") ? "The stepper against CVODE on still water, on ensembles (the scene's live water is "
+  w.verdict(st.has_table("count_ensemble") ? "The stepper against CVODE on still water, on ensembles (the scene's live water is "
                                        "one run, shown and not judged)"
                                      : "The scene's stone against CVODE",
             st.at("agreement"));
   w.end_list();
   add_figure(w, capture_scene_stone_figure(key, c));
+  if (st.has_number("count_ensemble_members") && st.number("count_ensemble_members") > 0)
+    w.text("Cost of the still-water ensembles (" + fmt(st.number("count_ensemble_members")) + " throws through each solver): " +
+           fmt(st.number("count_ensemble_cpu_s"), 3) + " s CPU, " + fmt(st.number("count_ensemble_wall_s"), 3) + " s wall.");
   if (!wv.flag("compared")) {
     w.text("The waves are not compared: " + wv.text("not_compared") + ".");
   } else {

@@ -409,7 +409,7 @@ nlohmann::json scene_json(const Record& r) {
     s[k] = st.number(k);
   s["verdict"] = st.at("agreement").text("verdict");
   s["reason"] = st.at("agreement").text("reason");
-  s["ensemble_members"] = st.number("ensemble_members");  // the verdict's: stepper against CVODE on still water
+  s["ensemble_members"] = st.number("count_ensemble_members");  // the verdict's: stepper against CVODE on still water
   const Table& t = st.table("contacts");
   for (std::size_t i = 0; i < t.rows(); ++i) {
     nlohmann::json c;

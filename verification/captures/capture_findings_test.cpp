@@ -178,10 +178,14 @@ BOOST_AUTO_TEST_CASE(judge_capture_gives_one_reason_per_condition_with_its_numbe
 BOOST_AUTO_TEST_CASE(the_findings_read_back_from_hdf5_unchanged_and_their_verdicts_decide_again) {
   // Oracle: the analysis and the simulation themselves — the stored intervals are theirs bit for
   // bit, the record reads back from HDF5 equal, and every stored verdict is what its rule decides
-  // from its stored inputs (1 and 1 bounces: the same count; an ensemble from 0 to 2: undecided).
+  // from its stored inputs (both solvers' count ensembles all 1 bounce: the same count, by the exact
+  // test; an ensemble from 0 to 2: undecided).
   CaptureAnalysis a = small_analysis();
   judge_capture(a, a.options.rules);
   CaptureSimulation sim = one_bounce_each();
+  sim.agreement.factors = {1 - 1e-9, 1 + 1e-9, 1 - 1e-4, 1 + 1e-4};
+  sim.agreement.realtime = sim.agreement.reference = {1, 1, 1, 1};
+  sim.agreement.difference = welch_difference(sim.agreement.realtime, sim.agreement.reference);
   sim.ensemble_bounces = {0, 1, 2};
   sim.bounce_histogram = {{0, 1}, {1, 1}, {2, 1}};
   sim.bounces_low = 0;
@@ -219,20 +223,26 @@ BOOST_AUTO_TEST_CASE(the_findings_read_back_from_hdf5_unchanged_and_their_verdic
 
 BOOST_AUTO_TEST_CASE(a_failed_run_decides_no_count) {
   // Oracle: a failed run's bounces until the failure are not its count. The nominal pair (1 and 1
-  // bounces, the reference failed) is not "the same count"; the ensemble whose surviving members
+  // bounces, the reference failed), with one of the reference's count ensemble failed, is not "the
+  // same count"; the ensemble whose surviving members
   // all make 1 bounce, with one member failed, is not "decided by the capture", and the failed
   // member is NaN in the stored table, not its partial count.
   CaptureAnalysis a = small_analysis();
   judge_capture(a, a.options.rules);
   CaptureSimulation sim = one_bounce_each();
   sim.reference->outcome = Outcome::failed;
+  sim.agreement.factors = {1 - 1e-9, 1 + 1e-9, 1 - 1e-4, 1 + 1e-4};
+  sim.agreement.realtime = {1, 1, 1, 1};
+  sim.agreement.reference = {1, -1, 1, 1};
+  sim.agreement.reference_failed = 1;
+  sim.agreement.difference = welch_difference({1, 1, 1, 1}, {1, 1, 1});
   sim.ensemble_bounces = {1, -1, 1};
   sim.ensemble_failed = 1;
   sim.bounce_histogram = {{1, 2}};
   sim.bounces_low = sim.bounces_median = sim.bounces_high = 1;
   const Record r = capture_findings(a, sim, {"cases/x.toml", "prism", "physical", "newtonian"});
   const Record& m = r.at("simulation");
-  BOOST_TEST(m.at("agreement").text("verdict") == "not decided: a run failed");
+  BOOST_TEST(m.at("agreement").text("verdict") == "not decided: runs failed");
   BOOST_TEST(m.at("agreement").text("reason").find("(CVODE) fails after 1 bounce") != std::string::npos,
              m.at("agreement").text("reason"));
   BOOST_TEST(m.at("ensemble").at("spread").text("verdict") == "not decided: runs failed");

@@ -30,11 +30,7 @@ bool CaptureSceneOptions::valid(std::string* why) const {
     return fail("quadrature_interval_s must be > 0");
   if (quadrature_nodes < 1 || quadrature_nodes > 32) return fail("quadrature_nodes must be in [1, 32]");
   if (!(max_reference_cell_transforms > 0)) return fail("max_reference_cell_transforms must be > 0");
-  if (ensemble_members < 0 || ensemble_members % 2 != 0 || ensemble_members > 1000)
-    return fail("ensemble_members must be even, in [0, 1000]");
-  if (!(perturbation_smallest > 0) || !(perturbation_largest >= perturbation_smallest) || !(perturbation_largest < 1))
-    return fail("the ensemble's perturbations must satisfy 0 < smallest <= largest < 1");
-  return true;
+  return agreement.valid(why);
 }
 
 // ---- the trajectory's pose between samples ----
@@ -318,30 +314,8 @@ CaptureSceneComparison compare_capture_scene(const CaptureSceneOptions& o) {
   out.reference = run_reference(so.stone, so.environment, so.initial, ro);
   compare_contacts(out);
 
-  // The ensembles on still water: the throw's speed × 1 ± ε, direction, attitude and spin kept.
-  if (o.ensemble_members > 0) {
-    const CpuTimer cpu;
-    const WallTimer wall;
-    out.ensemble_factors = perturbation_factors(o.ensemble_members, o.perturbation_smallest, o.perturbation_largest);
-    ReferenceOptions counts = ro;
-    counts.record_trajectory = false;
-    std::vector<double> still_ran, reference_ran;
-    for (double factor : out.ensemble_factors) {
-      RigidState initial = so.initial;
-      initial.velocity_m_s *= factor;
-      const ThrowResult a = run_realtime(so.stone, so.environment, initial, still);
-      const ThrowResult b = run_reference(so.stone, so.environment, initial, counts);
-      out.still_ensemble.push_back(a.outcome == Outcome::failed ? -1.0 : double(a.bounces));
-      out.reference_ensemble.push_back(b.outcome == Outcome::failed ? -1.0 : double(b.bounces));
-      if (a.outcome == Outcome::failed) ++out.still_failed;
-      else still_ran.push_back(a.bounces);
-      if (b.outcome == Outcome::failed) ++out.reference_failed;
-      else reference_ran.push_back(b.bounces);
-    }
-    out.ensemble_difference = welch_difference(still_ran, reference_ran);
-    out.ensemble_cpu_s = cpu.seconds();
-    out.ensemble_wall_s = wall.seconds();
-  }
+  // The ensembles on still water: the stepper against CVODE.
+  out.agreement = nudged_agreement(so.stone, so.environment, so.initial, still, ro, o.agreement);
 
   // The waves.
   if (so.coupling != Coupling::two_way) {

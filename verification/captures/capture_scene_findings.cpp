@@ -94,40 +94,9 @@ Record stone(const CaptureSceneComparison& c) {
       num(1e3 * c.still_max_start_difference_s) + " ms)";
   r.set("single_runs", single);
   // The count is chaotic: the stepper and CVODE are judged on ensembles on the same (still) water,
-  // never run against run (rule ensemble_bounce_agreement, as the stones report's count ensembles).
-  // The live water's own change of the count is not judged here: one scene is one run.
-  const MeanDifference& d = c.ensemble_difference;
-  r.set("ensemble_members", c.ensemble_factors.size());
-  r.set("ensemble_cpu_s", c.ensemble_cpu_s).set("ensemble_wall_s", c.ensemble_wall_s);
-  Table e{{"factor", "still_bounces", "reference_bounces"}, {}};
-  for (std::size_t k = 0; k < c.ensemble_factors.size(); ++k)
-    e.add_row({c.ensemble_factors[k], c.still_ensemble[k], c.reference_ensemble[k]});
-  r.set_table("ensemble", e);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  Record in;
-  in.set("valid", d.valid);
-  in.set("difference_low", d.valid ? d.low : nan).set("difference_high", d.valid ? d.high : nan);
-  in.set("count_spread", d.valid ? d.sd_a + d.sd_b : nan);
-  in.set("exact_p", d.exact_p).set("alpha", d.alpha);
-  in.set("realtime_failed", c.still_failed).set("reference_failed", c.reference_failed);
-  std::string reason = single;
-  if (c.ensemble_factors.empty()) {
-    reason += "; no ensembles were run, and a chaotic count is not judged on single runs";
-  } else {
-    double smallest = 1, largest = 0;  // the relative perturbations |factor − 1|
-    for (double f : c.ensemble_factors) {
-      smallest = std::min(smallest, std::abs(f - 1));
-      largest = std::max(largest, std::abs(f - 1));
-    }
-    char b[400];
-    std::snprintf(b, sizeof b,
-                  "; on still water over %zu throws each (speed × 1 ± %.3g … %.3g) the stepper %.3g ± %.2g, CVODE %.3g ± %.2g "
-                  "bounces (mean ± sd; %d and %d failed); difference %.3g, 95 %% interval [%.3g, %.3g]%s",
-                  c.ensemble_factors.size(), smallest, largest, d.mean_a, d.sd_a, d.mean_b, d.sd_b, c.still_failed, c.reference_failed,
-                  d.difference, d.low, d.high, std::isnan(d.exact_p) ? "" : " (no spread: the exact permutation test decides)");
-    reason += b;
-  }
-  decide_verdict(r, "agreement", "ensemble_bounce_agreement", in, reason);
+  // never run against run. The live water's own change of the count is not judged here: one scene
+  // is one run.
+  decide_nudged_agreement(r, "agreement", c.agreement, single + "; on still water", "the stepper", "CVODE");
   return r;
 }
 

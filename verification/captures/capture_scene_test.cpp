@@ -59,7 +59,7 @@ CaptureSceneOptions skipping_options(double duration_s) {
   s.water = w;
   o.reference.rtol = 1e-10;
   o.quadrature_interval_s = 2.5e-5;  // fine enough that the reference's error lies below the finest leapfrog's
-  o.ensemble_members = 0;             // the count ensembles cost 2 × 16 throws: only where a test looks at them
+  o.agreement.members = 0;            // the count ensembles cost 2 × 16 throws: only where a test looks at them
   return o;
 }
 
@@ -112,7 +112,7 @@ BOOST_AUTO_TEST_CASE(skipping_capture_through_the_scene_against_both_references)
   // (model/README.md §2.5) for the forced leapfrog driven by the CVODE trajectory's pressure head.
   // The comparison ends at 0.3 s, after the first bounces.
   CaptureSceneOptions o = skipping_options(0.3);
-  o.ensemble_members = 8;
+  o.agreement.members = 8;
   const CaptureSceneComparison c = compare_capture_scene(o);
   BOOST_REQUIRE(c.waves_compared);
   BOOST_TEST_MESSAGE("bounces scene " << c.scene.stone.bounces << " still " << c.still_water.bounces << " reference "
@@ -148,9 +148,9 @@ BOOST_AUTO_TEST_CASE(skipping_capture_through_the_scene_against_both_references)
   BOOST_TEST(std::abs(c.contacts.front().scene_start_s - c.contacts.front().reference_start_s) <= 10 * ladder_s + kTimeRoundoff_s);
   // The count ensembles on still water (the stepper and CVODE: the same equations): no difference
   // established between them (the stones report's ensembles find the same on the physical throws).
-  BOOST_TEST(c.ensemble_factors.size() == 8u);
-  BOOST_TEST(!c.ensemble_difference.established(), "stepper " << c.ensemble_difference.mean_a << ", CVODE "
-                                                             << c.ensemble_difference.mean_b);
+  BOOST_TEST(c.agreement.factors.size() == 8u);
+  BOOST_TEST(!c.agreement.difference.established(), "stepper " << c.agreement.difference.mean_a << ", CVODE "
+                                                           << c.agreement.difference.mean_b);
   BOOST_TEST(c.waves.amplitude_m > 0);
   // Order in time: the forced leapfrog with Δt, Δt/2, Δt/4, Δt/8 (same grid), forced by the CVODE
   // throw's pressure head gathered with the leapfrog's hat weights on pieces of the scene's contact

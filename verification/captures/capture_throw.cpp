@@ -22,6 +22,8 @@ CaptureSimulation simulate_capture(const Stone& stone, const Environment& env, c
   const RigidState s0 = capture_initial_state(stone, a.nominal);
   if (o.realtime) sim.realtime = run_realtime(stone, env, s0, o.realtime_options);
   if (o.reference) sim.reference = run_reference(stone, env, s0, o.reference_options);
+  if (o.realtime && o.reference)
+    sim.agreement = nudged_agreement(stone, env, s0, o.realtime_options, o.reference_options, o.agreement);
   if (o.ensemble && !a.ensemble.empty()) {
     RealtimeOptions ro = o.realtime_options;
     ro.record_trajectory = false;

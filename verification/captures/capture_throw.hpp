@@ -11,6 +11,7 @@
 #include "solvers/realtime/stone_stepper.hpp"
 #include "solvers/reference/cvode_stone.hpp"
 #include "verification/captures/capture_analysis.hpp"
+#include "verification/captures/nudged_agreement.hpp"
 
 namespace stoneskip {
 
@@ -26,11 +27,15 @@ struct CaptureSimulationOptions {
   ReferenceOptions reference_options;
   // Called after each ensemble member (done, total); empty: no progress. Nothing here prints.
   std::function<void(std::size_t done, std::size_t total)> progress;
+  // The real-time model against the reference on the nominal throw's bounce count, decided on
+  // ensembles of it (nudged_agreement.hpp): with both solvers only.
+  NudgedAgreementOptions agreement;
 };
 
 struct CaptureSimulation {
   std::optional<ThrowResult> realtime;   // nominal throw
   std::optional<ThrowResult> reference;  // nominal throw
+  NudgedAgreement agreement;             // both solvers on the nominal throw's speed × 1 ± ε
   std::vector<int> ensemble_bounces;     // one per ensemble member (real-time model); −1: the run failed
   std::map<int, int> bounce_histogram;   // bounces → members, over the members that did not fail
   int ensemble_failed = 0;               // members whose run failed (they have no count)
