@@ -48,7 +48,8 @@ class StoneDraught {
                          const FieldPlacement& placement, DraughtPatch& out);
   DraughtSummary compute(const RigidState& pose, const HeightField& field, const FieldPlacement& placement,
                          DraughtPatch& out) {
-    return compute(pose.position_m, pose.orientation.toRotationMatrix(), field, placement, out);
+    // Normalised, as the loads normalise it (rigid_state.hpp): an integrator's quaternion drifts off unit length.
+    return compute(pose.position_m, pose.orientation.normalized().toRotationMatrix(), field, placement, out);
   }
 
   const Mesh& body_mesh() const { return mesh_; }
