@@ -220,6 +220,31 @@ BOOST_AUTO_TEST_CASE(update_refuses_a_linked_baseline_before_any_work) {
   BOOST_TEST(slurp(copy) == before);
 }
 
+BOOST_AUTO_TEST_CASE(update_refuses_a_curve_of_which_every_throw_failed) {
+  // Oracle: the update's rule (regress_command.cpp): a curve of failures only is not golden, since
+  // every later run that failed alike would pass. The baseline's solver is CVODE, allowed one step
+  // (reference.max_steps = 1, its documented minimum), so every throw fails; the file is left byte for
+  // byte, the line says why, and the exit status is 1. A new baseline made from the stored one
+  // (its [baseline] only; two grid values, single runs) keeps it quick.
+  BOOST_REQUIRE(fs::exists(kStored));
+  const fs::path one_step = scratch_dir() / "one_step.toml";
+  std::ofstream(one_step) << slurp("cases/spin_sweep_base.toml") << "\n[reference]\nmax_steps = 1\n";
+  const fs::path copy = copy_baseline(kStored, "all_failed.toml", [&](const std::string& t) {
+    std::string out = std::regex_replace(t, std::regex("case = \"[^\"]*\""), "case = \"" + one_step.string() + "\"");
+    out = std::regex_replace(out, std::regex("\nvalues = \\[[^\\]]*\\]"), "\nvalues = [0.0, 10.0]");
+    out = std::regex_replace(out, std::regex("\nensemble_members = 16"), "\nensemble_members = 0");
+    out = std::regex_replace(out, std::regex("\nsolver = \"realtime\""), "\nsolver = \"reference\"");
+    return out.substr(0, out.find("\n[result]") + 1);  // a new baseline: no [result] yet
+  });
+  const std::string before = slurp(copy);
+  const Run r = run("regress --baseline " + copy.string() + " --update");
+  BOOST_TEST_INFO("stdout:\n" << r.out << "\nstderr:\n" << r.err);
+  BOOST_TEST(r.status == 1);
+  BOOST_TEST(r.out.find("NOT UPDATED  every grid value's throw failed") != std::string::npos);
+  BOOST_TEST(r.out.find("0 baselines rewritten, 1 refused") != std::string::npos);
+  BOOST_TEST(slurp(copy) == before);
+}
+
 BOOST_AUTO_TEST_CASE(a_case_on_live_water_is_refused_not_run_on_still_water) {
   // Main dropped the case's [water] and stored still-water counts for a swell (1, 1, 9 bounces,
   // where `stoneskip run` on the swell gives 0, 0, 0). Oracle: the input rules — exit 2, one line
