@@ -483,6 +483,7 @@ std::optional<Figure> capture_bounce_figure(const std::string& key, const Record
   double hi = counts.empty() ? 0 : *std::max_element(counts.begin(), counts.end());
   // The nominal throw's counts as lines beside the bar of their count (real-time left, reference right).
   std::string marks, arrows;
+  double marks_hi = lo;  // the largest count marked
   for (const auto& [solver, colour, title, shift] :
        {std::tuple{"realtime", kRealtime, "nominal throw, real-time model", -0.15},
         std::tuple{"reference", kReference, "nominal throw, reference (CVODE)", 0.15}}) {
@@ -490,6 +491,7 @@ std::optional<Figure> capture_bounce_figure(const std::string& key, const Record
     const double b = sim.at(solver).number("bounces");
     lo = std::min(lo, b);
     hi = std::max(hi, b);
+    marks_hi = std::max(marks_hi, b);
     arrows += "set arrow from " + g(b + shift) + ", graph 0 to " + g(b + shift) + ", graph 0.85 nohead lw 3 dt 2 lc rgb '" +
               colour + "' front\n";
     marks += ", keyentry w l lw 3 dt 2 lc rgb '" + std::string(colour) + "' t " + gnuplot_quote(title);
@@ -502,15 +504,34 @@ std::optional<Figure> capture_bounce_figure(const std::string& key, const Record
       seen.push_back(b);
       lo = std::min(lo, b);
       hi = std::max(hi, b);
+      marks_hi = std::max(marks_hi, b);
       arrows += "set arrow from " + g(b) + ", graph 0 to " + g(b) + ", graph 0.6 nohead lw 3 dt 3 lc rgb '" + kAxis[1] + "' front\n";
     }
     if (!seen.empty())
       marks += ", keyentry w l lw 3 dt 3 lc rgb '" + std::string(kAxis[1]) + "' t 'nominal throw at the corners of the speed and height intervals'";
   }
+  // A few far members (a paper-convention member can make 100 bounces where the rest make 1 to 30)
+  // would squeeze the ensemble and the marks into a corner: the axis then ends past the central
+  // 95 % and the marks, and a label says how many members lie beyond, and how far.
+  std::string beyond;
+  const double central_hi = e.has_number("bounces_high") && std::isfinite(e.number("bounces_high")) ? e.number("bounces_high") : hi;
+  const double keep = std::max(central_hi, marks_hi);
+  const double counts_hi = counts.empty() ? 0 : *std::max_element(counts.begin(), counts.end());
+  if (counts_hi > 2 * keep + 5 && hi == counts_hi) {
+    const double axis_hi = std::ceil(1.25 * keep + 2);
+    double members = 0;
+    const auto per = h.column("members");
+    for (std::size_t i = 0; i < counts.size(); ++i)
+      if (counts[i] > axis_hi) members += per[i];
+    hi = axis_hi;
+    beyond = "set label " + gnuplot_quote(fmt(members) + (members == 1 ? " member" : " members") +
+                                          " beyond the axis, up to " + fmt(counts_hi) + " bounces") +
+             " at graph 0.98, graph 0.95 right front\n";
+  }
   std::ostringstream s;
   // A tic per count where they fit; gnuplot's own spacing for a wide spread (a paper-convention
   // member can make 100 bounces, whose 100 labels would overprint).
-  s << "set grid y\nset key below\nset xlabel 'bounces'\nset ylabel 'throws of the ensemble'\nset xtics "
+  s << beyond << "set grid y\nset key below\nset xlabel 'bounces'\nset ylabel 'throws of the ensemble'\nset xtics "
     << (hi - lo > 20 ? "autofreq" : "1") << "\n"
     << "set xrange [" << g(lo - 0.6) << ":" << g(hi + 0.6) << "]\nset yrange [0:*]\nset offsets 0, 0, graph 0.3, 0\n"
     << "set style fill solid 0.6\n"

@@ -37,4 +37,27 @@ BOOST_AUTO_TEST_CASE(the_words_follow_the_stored_forcing) {
   BOOST_TEST(!says(n, "pressure"));
 }
 
+BOOST_AUTO_TEST_CASE(a_far_member_does_not_set_the_bounce_axis) {
+  // Oracle: by construction: 59 members make 1 to 31 bounces (central 95 % up to 31) and one makes
+  // 102. The axis ends at ⌈1.25 · 31 + 2⌉ = 41 (the 31 shown with room), and a label says that one
+  // member lies beyond, up to 102; a spread without such a member keeps its whole range.
+  Record c;
+  Record& e = c.child("simulation").child("ensemble");
+  Table h{{"bounces", "members"}, {}};
+  h.add_row({1, 30});
+  h.add_row({2, 20});
+  h.add_row({31, 9});
+  h.add_row({102, 1});
+  e.set_table("histogram", h);
+  e.set("bounces_high", 31.0);
+  const auto f = capture_bounce_figure("k", c);
+  BOOST_REQUIRE(f.has_value());
+  BOOST_TEST(f->script.find("set xrange [0.4:41.6]") != std::string::npos, f->script);
+  BOOST_TEST(f->script.find("1 member beyond the axis, up to 102 bounces") != std::string::npos, f->script);
+  e.set("bounces_high", 102.0);  // the far member inside the central 95 %: the whole range
+  const auto whole = capture_bounce_figure("k", c);
+  BOOST_TEST(whole->script.find("set xrange [0.4:102.6]") != std::string::npos, whole->script);
+  BOOST_TEST(whole->script.find("beyond the axis") == std::string::npos);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

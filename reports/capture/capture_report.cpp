@@ -124,6 +124,9 @@ void timing_part(SectionWriter& w, const std::string& key, const Record& c) {
       .row({"shortest / longest interval (ms)",
             fmt(1e3 * t.number("min_interval_s"), 3) + " / " + fmt(1e3 * t.number("max_interval_s"), 3)})
       .row({"pairs of equal stamps", fmt(t.number("equal_stamps"))})
+      .row({"rate of the regular clock that replaced the stamps (Hz)",
+            t.text("clock") == "regular_reports" && t.has_number("clock_rate_hz") ? fmt(t.number("clock_rate_hz"), 5)
+                                                                                  : std::string("– (stamps used as given)")})
       .row({"stamp − regular clock (ms): RMS / largest",
             fmt(1e3 * t.number("clock_residual_rms_s"), 3) + " / " + fmt(1e3 * t.number("clock_residual_max_s"), 3)})
       .row({"gaps / reports lost in them", fmt(t.number("gaps")) + " / " + fmt(t.number("dropped_reports"))})
@@ -238,7 +241,10 @@ void release_part(SectionWriter& w, const std::string& key, const Record& c) {
            (raised ? ", here raised to that lower bound, since its speed (" + fmt(lever, 3) + " m/s) falls below it"
                    : std::string()) +
            ". The speed's interval spans the accelerometer's bounds and the re-runs, each re-run's speed raised the "
-           "same way to its own bound where slower.");
+           "same way to its own bound where slower. The lever arm's velocity misses the pivot's own motion, which the "
+           "accelerometer sees, so the path and attack angles' intervals also span the directions of the "
+           "accelerometer's velocity (at both bounds and in each re-run), and the rise's interval spans the rise "
+           "integrated at both bounds: these intervals can reach far beyond the re-runs' spread.");
   }
   const bool fixed = s.text("height_mapping") == "fixed_release_height";
   const double finger = s.number("finger_spin_rev_s");
@@ -326,14 +332,35 @@ void solvers_part(SectionWriter& w, const std::string& key, const Record& c) {
   w.text("The stone and the water come from " + code(sim.text("case_file")) + " (" + sim.text("stone_description") + "; " +
          sim.text("convention") + " convention, " + sim.text("water_law") +
          " water law); the throw is the capture's virtual stone.");
-  MarkdownTable t({"solver", "bounces", "contacts", "distance (m)", "outcome", "CPU (s)", "wall (s)"});
+  // Records written before the energy was stored have no such column.
+  const bool energy = (!sim.has_child("realtime") || sim.at("realtime").has_number("max_energy_gain_J")) &&
+                      (!sim.has_child("reference") || sim.at("reference").has_number("max_energy_gain_J"));
+  std::vector<std::string> head{"solver", "bounces", "contacts", "distance (m)", "outcome", "CPU (s)", "wall (s)"};
+  if (energy) head.insert(head.begin() + 3, "contacts gaining energy; largest gain (J)");
+  MarkdownTable t(head);
+  int gaining = 0;
   for (const char* solver : {"realtime", "reference"}) {
     if (!sim.has_child(solver)) continue;
     const Record& r = sim.at(solver);
-    t.row({r.text("solver"), fmt(r.number("bounces")), fmt(r.number("contacts")), fmt(r.number("distance_m"), 3),
-           r.text("outcome"), fmt(r.number("cpu_s"), 3), fmt(r.number("wall_s"), 3)});
+    std::vector<std::string> row{r.text("solver"), fmt(r.number("bounces")), fmt(r.number("contacts")),
+                                 fmt(r.number("distance_m"), 3), r.text("outcome"), fmt(r.number("cpu_s"), 3),
+                                 fmt(r.number("wall_s"), 3)};
+    if (energy) {
+      gaining += static_cast<int>(r.number("contacts_gaining_energy"));
+      row.insert(row.begin() + 3, fmt(r.number("contacts_gaining_energy")) + "; " +
+                                      (r.number("max_energy_gain_J") > 0 ? fmt(r.number("max_energy_gain_J"), 3) : "none"));
+    }
+    t.row(row);
   }
   w.table(t);
+  if (energy && gaining > 0)
+    w.text("The stone leaves " + std::string(gaining == 1 ? "a contact" : "contacts") +
+           " with more energy than it entered " + (gaining == 1 ? "it" : "them") + ": the water created energy, as the " +
+           sim.text("convention") + " convention's equations " +
+           (sim.text("convention") == "paper" ? "as printed can (model/README.md §1.6); its bounces are not a physical "
+                                                "stone's"
+                                              : "should not (a solver's error: see its tolerance)") +
+           ".");
   // Records written before the ensembles judged the nominal throw's single runs.
   if (sim.has_child("agreement"))
     w.verdict(sim.has_table("count_ensemble") ? "Real-time model against the reference, on ensembles of the nominal throw"

@@ -89,13 +89,35 @@ SectionOutput hard_cases_section(const Record& c) {
   MarkdownTable mt({"speed (m/s)", "reference bounces / contacts", "(a) finite up to h (s)", "(b) no energy gain up to h (s)",
                     "(c) same contacts up to h (s)"});
   const Table& rows = s.table("rows");
-  auto h_text = [](double v) { return v > 0 ? fmt(v, 3) : std::string("< smallest"); };
+  // A criterion met by every step tried has its limit beyond the largest: "≥", not a limit.
+  const double largest_tried = hs.empty() ? 0 : hs.back();
+  auto h_text = [&](double v) {
+    if (!(v > 0)) return std::string("< smallest");
+    return largest_tried > 0 && v >= largest_tried ? "≥ " + fmt(v, 3) + " (all tried)" : fmt(v, 3);
+  };
   for (std::size_t i = 0; i < rows.rows(); ++i) {
     auto col = [&](const char* k) { return rows.column(k)[i]; };
     mt.row({fmt(col("speed_m_s"), 3), fmt(col("reference_bounces")) + " / " + fmt(col("reference_contacts")),
             h_text(col("largest_finite_s")), h_text(col("largest_no_energy_gain_s")), h_text(col("largest_same_contacts_s"))});
   }
   w.table(mt);
+  // Where no step tried keeps the reference's contacts, (a) and (b) judge runs that miss contacts.
+  std::vector<std::string> missing;
+  for (std::size_t i = 0; i < rows.rows(); ++i)
+    if (!(rows.column("largest_same_contacts_s")[i] > 0) && rows.column("largest_no_energy_gain_s")[i] > 0)
+      missing.push_back(fmt(rows.column("speed_m_s")[i], 3) + " m/s");
+  std::string note;
+  if (largest_tried > 0)
+    note = "A point at " + fmt(largest_tried, 3) + " s (\"≥ … (all tried)\" in the table) is the largest step tried: every "
+           "step tried met that criterion, and its limit lies beyond.";
+  std::string speeds;
+  for (std::size_t i = 0; i < missing.size(); ++i)
+    speeds += (i == 0 ? "" : i + 1 == missing.size() ? " and " : ", ") + missing[i];
+  if (!missing.empty())
+    note += std::string(note.empty() ? "" : " ") + "At " + speeds +
+            " not even the smallest step tried makes the reference's contacts, so there (a) and (b) judge runs that "
+            "miss contacts, not the stepper on the throw.";
+  if (!note.empty()) w.text(note);
   {
     // A step that was never stable is stored as 0 (or less): not drawn on the log axis.
     using Rows = TableSource::Rows;

@@ -72,6 +72,7 @@ Record timing_findings(const CaptureAnalysis& a) {
   r.set("equal_stamps", t.equal_stamps);
   r.set("clock_residual_rms_s", t.clock_residual_rms_s);
   r.set("clock_residual_max_s", t.clock_residual_max_s);
+  r.set("clock_rate_hz", t.clock_rate_hz);  // the regular clock fitted through the reports' slots
   r.set("clock", std::string(to_string(t.clock)));
   r.set("gaps", t.gaps);
   r.set("dropped_reports", t.dropped_reports);
@@ -224,6 +225,11 @@ Record solver_findings(const ThrowResult& t) {
   r.set("distance_m", t.distance_m);
   r.set("cpu_s", t.stats.cpu_s);
   r.set("wall_s", t.stats.wall_s);
+  // The largest rise of the total energy over a contact (> 0: the water created energy, as the
+  // paper convention's printed equations can, model/README.md §1.6), and how many contacts gained.
+  r.set("max_energy_gain_J", t.max_energy_gain_J);
+  r.set("contacts_gaining_energy",
+        std::count_if(t.contacts.begin(), t.contacts.end(), [](const ContactRecord& k) { return k.exit_energy_J > k.entry_energy_J; }));
   Table path{{"t_s", "x_m", "y_m", "z_m"}, {}};
   for (const auto& p : t.trajectory) path.add_row({p.t_s, p.state.position_m.x(), p.state.position_m.y(), p.state.position_m.z()});
   r.set_table("trajectory", path);

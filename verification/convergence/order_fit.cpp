@@ -275,6 +275,10 @@ OrderDecision judge_order(const OrderFit& fit, const OrderJudgement& j) {
                                           ": neither within the band nor outside it"
                                        : " overlaps " + expected + " ± " + num(j.tolerance) +
                                              " without lying within it: too wide to decide");
+    // What makes it wide, where the data show it: an error that stops falling.
+    if (growing > 0)
+      d.reason += "; the error does not fall at " + std::to_string(growing) + " of " + std::to_string(fit.pairwise.size()) +
+                  " refinements (pairwise orders ≤ 0)";
   }
   d.reason += zeros;
   return d;
