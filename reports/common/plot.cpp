@@ -22,6 +22,23 @@ std::string gnuplot_quote(const std::string& s) {
   return "'" + out + "'";
 }
 
+std::string plot_title(const std::string& caption) {
+  // The figure's caption, under the picture, keeps it all; the title over the plot must fit its
+  // width (about 110 characters at 1100 pixels): a closing parenthetical goes first, then the words
+  // past the limit (cut at a space, so that no UTF-8 character is split).
+  constexpr std::size_t kFits = 110;
+  std::string t = caption;
+  if (t.size() > kFits && t.back() == ')') {
+    const auto open = t.rfind(" (");
+    if (open != std::string::npos && open > 20) t = t.substr(0, open);
+  }
+  if (t.size() > kFits) {
+    const auto space = t.rfind(' ', kFits - 4);  // " …" is 4 bytes
+    t = t.substr(0, space == std::string::npos ? kFits - 4 : space) + " …";
+  }
+  return t;
+}
+
 bool selected(TableSource::Rows rows, double y) {
   switch (rows) {
     case TableSource::Rows::y_nonnegative: return y >= 0;
@@ -148,7 +165,7 @@ Figure line_figure(const std::string& name, const std::string& title, const Plot
   f.name = name;
   f.title = title;
   std::ostringstream s;
-  s << "set title " << gnuplot_quote(title) << "\n";
+  s << "set title " << gnuplot_quote(plot_title(title)) << "\n";
   s << "set xlabel " << gnuplot_quote(axes.x_label) << "\nset ylabel " << gnuplot_quote(axes.y_label) << "\n";
   if (axes.log_x) s << "set logscale x\nset format x '10^{%L}'\n";
   if (axes.log_y) s << "set logscale y\nset format y '10^{%L}'\n";

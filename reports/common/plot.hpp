@@ -65,5 +65,8 @@ Figure line_figure(const std::string& name, const std::string& title, const Plot
 
 // Gnuplot needs quotes escaped in titles.
 std::string gnuplot_quote(const std::string& s);
+// The title drawn over a plot from its caption: the caption whole where it fits the plot's width
+// (110 characters), else without a closing parenthetical, else cut at a word with " …".
+std::string plot_title(const std::string& caption);
 
 }  // namespace stoneskip

@@ -191,9 +191,10 @@ SectionOutput coupling_section(const Record& c) {
       w.table(ct);
       if (ci.rows() > 20) w.text("(" + fmt(double(ci.rows())) + " in all; the first 20 shown, every one in data.h5.)");
     }
+    // One-way as open rings under the two-way dots, so that a contact both runs share shows both.
     std::vector<PlotSeries> series;
-    for (const auto& [key, label] : {std::pair<const char*, const char*>{"two_way", "two-way"}, {"one_way", "one-way"}})
-      series.push_back(table_series(label, r.at(key), "contacts", "touch_x_m", "start_s", "points pt 7 ps 0.9"));
+    series.push_back(table_series("one-way", r.at("one_way"), "contacts", "touch_x_m", "start_s", "points pt 6 ps 1.6"));
+    series.push_back(table_series("two-way", r.at("two_way"), "contacts", "touch_x_m", "start_s", "points pt 7 ps 0.8"));
     PlotAxes ax{"first touch x (m)", "contact start (s)", false, false, ""};
     w.figure(line_figure("coupling_" + name, "Where and when the stone touched the water: " + name, ax, series, "x_m", "t_s"));
   }
