@@ -2,6 +2,7 @@
 // holds): the verdicts first, then one section per capture.
 #include "reports/capture/capture_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "reports/capture/capture_figures.hpp"
@@ -346,7 +347,7 @@ void solvers_part(SectionWriter& w, const std::string& key, const Record& c) {
                                  fmt(r.number("distance_m"), 3), r.text("outcome"), fmt(r.number("cpu_s"), 3),
                                  fmt(r.number("wall_s"), 3)};
     if (energy) {
-      gaining += static_cast<int>(r.number("contacts_gaining_energy"));
+      gaining = std::max(gaining, static_cast<int>(r.number("contacts_gaining_energy")));  // the runs' most
       row.insert(row.begin() + 3, fmt(r.number("contacts_gaining_energy")) + "; " +
                                       (r.number("max_energy_gain_J") > 0 ? fmt(r.number("max_energy_gain_J"), 3) : "none"));
     }
@@ -366,6 +367,9 @@ void solvers_part(SectionWriter& w, const std::string& key, const Record& c) {
     w.verdict(sim.has_table("count_ensemble") ? "Real-time model against the reference, on ensembles of the nominal throw"
                                         : "Real-time model against the reference",
               sim.at("agreement"));
+  if (sim.has_number("count_ensemble_members") && sim.number("count_ensemble_members") > 0)
+    w.text("Cost of those ensembles (" + fmt(sim.number("count_ensemble_members")) + " throws through each solver): " +
+           fmt(sim.number("count_ensemble_cpu_s"), 3) + " s CPU, " + fmt(sim.number("count_ensemble_wall_s"), 3) + " s wall.");
   add_figure(w, capture_trajectory_figure(key, c));
   if (sim.has_child("ensemble")) {
     const Record& e = sim.at("ensemble");

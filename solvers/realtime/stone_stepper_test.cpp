@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <vector>
 #include <numbers>
 #include <ostream>
@@ -185,6 +186,31 @@ BOOST_AUTO_TEST_CASE(a_flat_plate_dropped_flat_follows_the_closed_form) {
     BOOST_TEST(std::abs((s0.position_m.z() - p.state.position_m.z()) - fallen) <= 1e-9 * h, "t = " << t);
   }
   BOOST_TEST(s0.position_m.z() - r.final_state.position_m.z() < h - 1e-3);
+}
+
+BOOST_AUTO_TEST_CASE(a_nan_water_surface_fails_the_throw_saying_so) {
+  // Oracle: the bad-input rule, no silent default: a surface that gives NaN heights (a broken field)
+  // makes NaN loads (fluid_forces.cpp), and every scheme fails the throw with its reason, promptly.
+  // The loads had skipped a NaN depth: the stone flew on as if over no water, to t_max_s.
+  struct NanSurface : WaterSurface {
+    double height_m(double, double) const override { return std::numeric_limits<double>::quiet_NaN(); }
+  } nan_surface;
+  const Stone s = prism_stone();
+  const RigidState s0 = initial_state(s, {8, 10, 10, 5, 0.1, 0});
+  for (Scheme scheme : {Scheme::bs32, Scheme::semi_implicit_euler, Scheme::rk4}) {
+    RealtimeOptions o;
+    o.scheme = scheme;
+    o.t_max_s = 5;
+    o.record_trajectory = false;
+    const auto t0 = std::chrono::steady_clock::now();
+    const ThrowResult r = run_realtime(s, Environment{}, s0, o, &nan_surface);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    BOOST_TEST_CONTEXT(to_string(scheme)) {
+      BOOST_TEST(r.outcome == Outcome::failed, r.outcome_detail);
+      BOOST_TEST(!r.outcome_detail.empty());
+      BOOST_TEST(seconds < 5.0);  // no hang: the state or the step fails at once
+    }
+  }
 }
 
 BOOST_AUTO_TEST_CASE(contact_start_is_located_between_steps) {
