@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <limits>
 
 #include "verification/study/verdict_rules.hpp"
 #include "verification/study/words.hpp"
