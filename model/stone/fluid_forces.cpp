@@ -25,7 +25,7 @@ struct FaceScratch {
 
 // The law's pressure redistributed along the wetted length (model/stone/pressure_distribution.hpp):
 // on face i, p(x) = K p_i w(ξ(x)) over its wetted polygon (below the raised waterline for the
-// Wagner variant), with p_i the law evaluated at the face's centre of pressure x_i = ∫w x dA / ∫w dA
+// Wagner variant, on the stone's underside: on_underside in pressure_distribution.hpp), with p_i the law evaluated at the face's centre of pressure x_i = ∫w x dA / ∫w dA
 // (so the face's power −K p_i W_i u(x_i) is never positive) and K such that Σ K p_i W_i is the law's
 // total force on the geometric wetted area. F_i = −K p_i W_i n_i acts at x_i. Below planing speed
 // the weight is blended with a uniform one, w_β = (1 − β) + β w (planing_share): W_i and ∫w x dA
@@ -46,6 +46,7 @@ void add_distributed_loads(const Stone& stone, const Environment& env, const Rig
   const auto& tris = stone.body_mesh.triangles;
   const std::size_t nt = tris.size();
   const double rise = waterline_rise_m(env.pressure_distribution, out.deepest_depth_m);
+  const int side = mode && mode->underside != 0 ? mode->underside : underside_side(R);
   if (polys.size() < nt) polys.resize(nt);
   if (poly_areas.size() < nt) poly_areas.resize(nt);
   if (faces.size() < nt) faces.resize(nt);
@@ -57,8 +58,9 @@ void add_distributed_loads(const Stone& stone, const Environment& env, const Rig
     FaceScratch& f = scratch[i];
     ClippedArea c;
     const auto& t = tris[i];
-    if (rise == 0 || f.fully_wet) {
-      // The same polygon as below the geometric waterline (that waterline, or a face wholly under it).
+    if (rise == 0 || f.fully_wet || !on_underside(stone.face_normals_body[i], side)) {
+      // The same polygon as below the geometric waterline (that waterline, a face wholly under it,
+      // or a face the rise does not wet: off the underside).
       poly = f.wetted;
       c = f.area;
     } else {

@@ -32,7 +32,7 @@ struct FacePush {
   Vec3 force_N = Vec3::Zero();
 };
 
-// The distributed pressure's one discrete choice that makes its loads jump: which faces form the
+// The distributed pressure's discrete choices that make its loads jump: which faces form the
 // loaded region (advancing into the water at their wetted centroid, fluid_forces.cpp), whose extent
 // sets every face's centre of pressure. A stepper that locates where that choice changes
 // (model/stone/load_switches.hpp) holds it over a step, so that each of the step's stages sees one
@@ -42,6 +42,9 @@ struct LoadMode {
   // the mode was taken) decided from the state as without a mode.
   static constexpr char kDecide = 2;
   std::vector<char> loaded_faces;
+  // The side the Wagner rise wets (underside_side in pressure_distribution.hpp): ±1 held, 0 decided
+  // from the state. It flips only with the stone on edge (R₂₂ = 0), where the raised faces jump.
+  int underside = 0;
 };
 
 struct AirLoads {

@@ -6,7 +6,11 @@
 #include <limits>
 #include <numbers>
 
+#include <algorithm>
+
+#include "model/stone/pressure_distribution.hpp"
 #include "model/stone/rigid_body.hpp"
+#include "model/stone/triangle_clip.hpp"
 #include "model/stone/throw.hpp"
 #include "model/stone/water_laws.hpp"
 #include "model/stone/water_surface.hpp"
@@ -126,6 +130,111 @@ BOOST_AUTO_TEST_CASE(a_nan_state_or_surface_gives_nan_loads_not_dry_ones) {
         BOOST_TEST(water_loads(s, env, st).force_N.allFinite());  // the same state over still water
       }
     }
+}
+
+namespace {
+
+// The N = 11 prism pitched nose up by α (leading edge +x up) moving at `speed` along a path β below
+// the horizontal, its lowest vertex `depth` under still water.
+RigidState pitched_in_contact(const Stone& s, double alpha_deg, double beta_deg, double speed, double depth) {
+  RigidState st;
+  st.orientation = Quat(Eigen::AngleAxisd(-alpha_deg * std::numbers::pi / 180, Vec3::UnitY()));
+  double lowest = 1e300;
+  for (const Vec3& v : s.body_mesh.vertices) lowest = std::min(lowest, (st.orientation * v).z());
+  st.position_m = Vec3(0, 0, -depth - lowest);
+  const double b = beta_deg * std::numbers::pi / 180;
+  st.velocity_m_s = speed * Vec3(std::cos(b), 0, -std::sin(b));
+  return st;
+}
+
+Environment planing(PressureDistribution d) {
+  Environment env;
+  set_water_law(env, WaterLaw::planing);
+  env.pressure_distribution = d;
+  return env;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(the_wagner_rise_wets_the_underside_only) {
+  // Oracle: the rule itself, computed independently of the loads (pressure_distribution.hpp,
+  // on_underside): each face's push acts on its polygon below the raised waterline (π/2 − 1) d_max
+  // on the underside and below the surface elsewhere; the pushes add up to the force; and the
+  // pushes' magnitudes add up to the law's total Σ p_i S_i on the geometric wetted area (K's
+  // normalisation), which the uniform distribution's pushes give. Tolerance 1e-12: sums of ≤ 44
+  // faces. States: the N = 11 prism, pitched 10° nose up at 8 m/s, 10° path, contacts 1–10 mm deep,
+  // deep enough that the raised waterline cuts the rim (the faces the rise used to wet).
+  const Stone s = test_stone();
+  for (double depth_mm : {1.0, 4.0, 6.0, 8.0, 10.0}) {
+    BOOST_TEST_CONTEXT("depth " << depth_mm << " mm") {
+      const RigidState st = pitched_in_contact(s, 10, 10, 8, depth_mm * 1e-3);
+      std::vector<FacePush> wagner, uniform;
+      const WaterLoads l = water_loads(s, planing(PressureDistribution::savitsky_wagner), st, nullptr, &wagner);
+      water_loads(s, planing(PressureDistribution::uniform), st, nullptr, &uniform);
+      const Mat3 R = st.orientation.toRotationMatrix();
+      const double rise = (std::numbers::pi / 2 - 1) * depth_mm * 1e-3;
+      double total_uniform = 0, total_wagner = 0;
+      for (const FacePush& p : uniform) total_uniform += p.force_N.norm();
+      Vec3 sum = Vec3::Zero();
+      int rim_faces_cut = 0;
+      for (const FacePush& p : wagner) {
+        total_wagner += p.force_N.norm();
+        sum += p.force_N;
+        // Its face: one whose polygon, clipped by the rule, is the push's (the bottom's 11 triangles
+        // share a plane, so the polygon decides).
+        bool found = false;
+        for (int i = 0; i < static_cast<int>(s.body_mesh.triangles.size()) && !found; ++i) {
+          const auto& t = s.body_mesh.triangles[i];
+          Vec3 w[3];
+          double d[3];
+          const bool under = s.face_normals_body[i].z() < -1e-9;  // body z up: the underside faces down
+          for (int k = 0; k < 3; ++k) {
+            w[k] = st.position_m + R * s.body_mesh.vertices[t[k]];
+            d[k] = -w[k].z() + (under ? rise : 0);
+          }
+          const ClippedPolygon expected = clip_submerged_polygon(w[0], w[1], w[2], d[0], d[1], d[2]);
+          bool same = expected.count == p.wetted.count && (R * s.face_normals_body[i]).dot(p.force_N) < 0;
+          for (int k = 0; same && k < expected.count; ++k)
+            same = (p.wetted.vertices[k] - expected.vertices[k]).norm() <= 1e-12;
+          found = same;
+        }
+        BOOST_TEST(found);
+      }
+      // The faces off the underside that the raised waterline cuts: the case the rule is about.
+      for (int i = 0; i < static_cast<int>(s.body_mesh.triangles.size()); ++i) {
+        if (s.face_normals_body[i].z() < -1e-9) continue;
+        bool cut = false;
+        for (int k : s.body_mesh.triangles[i]) {
+          const double d = -(st.position_m + R * s.body_mesh.vertices[k]).z();
+          cut = cut || (d < 0 && d + rise >= 0);
+        }
+        rim_faces_cut += cut;
+      }
+      if (depth_mm >= 4) BOOST_TEST(rim_faces_cut > 0);  // the case the rule is about is exercised
+      BOOST_TEST((sum - l.force_N).norm() <= 1e-12 * l.force_N.norm());
+      BOOST_TEST(std::abs(total_wagner - total_uniform) <= 1e-12 * total_uniform);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_deeper_planing_contact_lifts_more_under_every_distribution) {
+  // Oracle: planing physics (Savitsky 1964: at a fixed trim and speed the lift grows with the wetted
+  // length): the N = 11 prism pitched 10° nose up at 8 m/s on a 10° path, its lowest vertex 2, 4, 6,
+  // 8 and 10 mm deep, must be lifted more at each depth. When the Wagner rise wetted the rim, the
+  // leading-edge peak of the distribution loaded the leading flank, and lift fell with depth past
+  // 6 mm (16.7, 15.2, 13.2 N at 6, 8, 10 mm, against the uniform pressure's 18.0, 24.6, 28.6 N).
+  // Margin: each step at least 5 % more lift (the wetted area grows by more than that).
+  const Stone s = test_stone();
+  for (PressureDistribution d :
+       {PressureDistribution::uniform, PressureDistribution::savitsky, PressureDistribution::savitsky_wagner}) {
+    double previous = 0;
+    for (double depth_mm : {2.0, 4.0, 6.0, 8.0, 10.0}) {
+      const double lift = water_loads(s, planing(d), pitched_in_contact(s, 10, 10, 8, depth_mm * 1e-3)).force_N.z();
+      BOOST_TEST_MESSAGE(to_string(d) << " " << depth_mm << " mm: lift " << lift << " N");
+      BOOST_TEST(lift >= 1.05 * previous, to_string(d) << " at " << depth_mm << " mm: " << lift << " N after " << previous << " N");
+      previous = lift;
+    }
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

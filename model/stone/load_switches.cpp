@@ -14,15 +14,15 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The corners of the polygon clip_submerged_polygon cuts from triangle t at raised depths d, in
-// its order (Sutherland–Hodgman against d ≥ 0).
-int corners_of(const std::array<int, 3>& t, const double d[3], PolygonCorner out[4]) {
+// The corners of the polygon clip_submerged_polygon cuts from triangle t at depths d (raised or
+// not), in its order (Sutherland–Hodgman against d ≥ 0).
+int corners_of(const std::array<int, 3>& t, const double d[3], bool raised, PolygonCorner out[4]) {
   int n = 0;
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3;
     const bool in_i = d[i] >= 0, in_j = d[j] >= 0;
     if (in_i) out[n++] = {t[i], -1};
-    if (in_i != in_j) out[n++] = {std::min(t[i], t[j]), std::max(t[i], t[j])};
+    if (in_i != in_j) out[n++] = {std::min(t[i], t[j]), std::max(t[i], t[j]), raised};
   }
   return n;
 }
@@ -50,13 +50,14 @@ LoadSwitches::Kind LoadSwitches::kind(int k) const {
   if (k < 2 * nv_ + nf_) return Kind::loaded_face;
   if (k < 2 * nv_ + 2 * nf_) return Kind::centre_of_pressure;
   if (k == 2 * nv_ + 2 * nf_) return Kind::planing_share;
-  return k < 2 * nv_ + 2 * nf_ + 1 + static_cast<int>(mode_.corners.size()) ? Kind::span_start : Kind::span_end;
+  if (k == 2 * nv_ + 2 * nf_ + 1) return Kind::underside_flip;
+  return k < 2 * nv_ + 2 * nf_ + 2 + static_cast<int>(mode_.corners.size()) ? Kind::span_start : Kind::span_end;
 }
 
 // With record, the mode is recorded from s as the faces are visited and the values are those in it
 // (held is then *record).
 void LoadSwitches::compute(const RigidState& s, Mode* record, const Mode& held, std::vector<double>& g) const {
-  g.assign(2 * nv_ + 2 * nf_ + 1, kNaN);
+  g.assign(2 * nv_ + 2 * nf_ + 2, kNaN);
   if (!active_) return;
   // The state's geometry exactly as water_loads computes it (fluid_forces.cpp).
   const Mat3 R = s.orientation.normalized().toRotationMatrix();
@@ -79,7 +80,9 @@ void LoadSwitches::compute(const RigidState& s, Mode* record, const Mode& held, 
   if (record) {
     record->deepest = depth[deepest] > 0 ? deepest : -1;
     record->loads.loaded_faces.assign(nf_, LoadMode::kDecide);
+    record->loads.underside = wagner ? underside_side(R) : 0;
   }
+  const int side = held.loads.underside != 0 ? held.loads.underside : underside_side(R);
   const double rise = waterline_rise_m(env_.pressure_distribution, depth[deepest]);
   std::vector<double> raised(nv_);
   for (int k = 0; k < nv_; ++k) raised[k] = depth[k] + rise;
@@ -88,10 +91,12 @@ void LoadSwitches::compute(const RigidState& s, Mode* record, const Mode& held, 
     // The deepest vertex of the mode against each other.
     for (int k = 0; k < nv_; ++k)
       if (k != held.deepest) g[nv_ + k] = depth[held.deepest] - depth[k];
+    g[2 * nv_ + 2 * nf_ + 1] = R(2, 2);  // the body z axis's vertical part: the underside's side
   }
 
-  // Each face's polygon below the raised waterline and whether it is loaded (advancing into the
-  // water at its centroid), as add_distributed_loads in fluid_forces.cpp decides it.
+  // Each face's polygon below the raised waterline (on the underside; elsewhere below the surface)
+  // and whether it is loaded (advancing into the water at its centroid), as add_distributed_loads
+  // in fluid_forces.cpp decides it.
   const auto& tris = stone_.body_mesh.triangles;
   std::vector<ClippedPolygon> polys(nf_);
   std::vector<ClippedArea> areas(nf_);
@@ -101,7 +106,9 @@ void LoadSwitches::compute(const RigidState& s, Mode* record, const Mode& held, 
   const int face_base = 2 * nv_;
   for (int i = 0; i < nf_; ++i) {
     const auto& t = tris[i];
-    const double d[3] = {raised[t[0]], raised[t[1]], raised[t[2]]};
+    const bool up = on_underside(stone_.face_normals_body[i], side);
+    const std::vector<double>& di = up ? raised : depth;
+    const double d[3] = {di[t[0]], di[t[1]], di[t[2]]};
     if (d[0] < 0 && d[1] < 0 && d[2] < 0) continue;
     normals[i] = R * stone_.face_normals_body[i];
     polys[i] = clip_submerged_polygon(world[t[0]], world[t[1]], world[t[2]], d[0], d[1], d[2]);
@@ -123,7 +130,7 @@ void LoadSwitches::compute(const RigidState& s, Mode* record, const Mode& held, 
       span_builder.add(polys[i]);
       if (record) {
         PolygonCorner corners[4];
-        const int n = corners_of(t, d, corners);
+        const int n = corners_of(t, d, up, corners);
         for (int k = 0; k < n; ++k) {
           bool seen = false;
           for (const PolygonCorner& c0 : record->corners) seen = seen || c0 == corners[k];
@@ -162,7 +169,8 @@ void LoadSwitches::compute(const RigidState& s, Mode* record, const Mode& held, 
     const Vec3 dir(s.velocity_m_s.x() / vh, s.velocity_m_s.y() / vh, 0);
     auto along = [&](const PolygonCorner& c) {
       if (c.b < 0) return dir.dot(world[c.a]);
-      const double da = raised[c.a], db = raised[c.b];
+      const std::vector<double>& dc = c.raised ? raised : depth;
+      const double da = dc[c.a], db = dc[c.b];
       if (da == db) return kNaN;
       return dir.dot(world[c.a] + (da / (da - db)) * (world[c.b] - world[c.a]));
     };
@@ -177,7 +185,7 @@ void LoadSwitches::compute(const RigidState& s, Mode* record, const Mode& held, 
     }
     if (nc > 0 && held.start >= 0 && held.end >= 0) {
       const double lo = along(held.corners[held.start]), hi = along(held.corners[held.end]);
-      const int base = 2 * nv_ + 2 * nf_ + 1;
+      const int base = 2 * nv_ + 2 * nf_ + 2;
       for (int c = 0; c < nc; ++c) {
         const double sc = along(held.corners[c]);
         if (c != held.start) g[base + c] = sc - lo;

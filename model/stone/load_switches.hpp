@@ -15,7 +15,9 @@
 //   * the span's trailing or leading end passing from one polygon corner to another
 //     (s_b − s_a = 0, s = ĥ·x along the horizontal velocity; a corner is a mesh vertex or the
 //     point where the raised waterline cuts a mesh edge);
-//   * the planing share reaching 1 (|v_h| = √(g b), pressure_distribution.hpp).
+//   * the planing share reaching 1 (|v_h| = √(g b), pressure_distribution.hpp);
+//   * under savitsky_wagner, the stone turning over (R₂₂ = 0: the side the rise wets, on_underside
+//     in pressure_distribution.hpp, flips), held by the mode like the loaded faces.
 // The functions that compare two choices (the deepest vertex, a span end) are defined relative to
 // the choice made at a reference state, the *mode*: recorded by reset, then held by evaluate, so
 // a step from that state sees the choice change as a sign change. Every function is continuous in
@@ -34,10 +36,11 @@
 
 namespace stoneskip {
 
-// A corner of a wetted polygon: mesh vertex a (b < 0), or where the raised waterline cuts the
-// mesh edge (a, b), a < b.
+// A corner of a wetted polygon: mesh vertex a (b < 0), or where the waterline cuts the mesh edge
+// (a, b), a < b: the raised waterline on a face of the underside (raised), else the surface.
 struct PolygonCorner {
   int a = -1, b = -1;
+  bool raised = false;
   bool operator==(const PolygonCorner&) const = default;
 };
 
@@ -60,7 +63,16 @@ class LoadSwitches {
   const LoadMode& load_mode() const { return mode_.loads; }
 
   // What value k is (for tests and messages).
-  enum class Kind { raised_crossing, deepest_vertex, loaded_face, centre_of_pressure, planing_share, span_start, span_end };
+  enum class Kind {
+    raised_crossing,
+    deepest_vertex,
+    loaded_face,
+    centre_of_pressure,
+    planing_share,
+    underside_flip,
+    span_start,
+    span_end
+  };
   Kind kind(int k) const;
 
  private:
@@ -68,7 +80,7 @@ class LoadSwitches {
     int deepest = -1;
     std::vector<PolygonCorner> corners;  // the loaded polygons' corners, each once
     int start = -1, end = -1;            // indices into corners: the span's trailing and leading ends
-    LoadMode loads;                      // the loaded faces
+    LoadMode loads;                      // the loaded faces and the side the rise wets
   };
   void compute(const RigidState& s, Mode* record, const Mode& held, std::vector<double>& g) const;
 

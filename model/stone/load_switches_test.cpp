@@ -20,8 +20,12 @@ Stone test_stone() {
 }
 
 // A rigid motion through the water with a fixed velocity and a fixed world angular velocity (a
-// kinematic path: no integrator in the way): attack 15° nose up, skimming forward and down at 4 m/s
-// and 0.4 m/s, 30 rev/s about the disk's axis, the trailing rim 1 mm under water at t = 0.
+// kinematic path: no integrator in the way): attack 5° nose up, skimming forward and down at 4 m/s
+// and 0.4 m/s, 30 rev/s about the disk's axis, the trailing rim 4 mm under water at t = 0: deep
+// enough that the rim's flanks are wet, where the spin turns a face's normal through the direction
+// of motion and the face joins or leaves the loaded region (the Wagner rise no longer wets the rim
+// above the surface, where a shallower path found those changes).
+constexpr double kAttackDeg = 5, kDepth = 0.004;
 struct Path {
   Stone stone = test_stone();
   Vec3 v = Vec3(4, 0, -0.4);
@@ -29,9 +33,9 @@ struct Path {
   Quat q0;
   Vec3 x0;
   Path() {
-    q0 = Quat(Eigen::AngleAxisd(-15 * std::numbers::pi / 180, Vec3::UnitY()));
+    q0 = Quat(Eigen::AngleAxisd(-kAttackDeg * std::numbers::pi / 180, Vec3::UnitY()));
     omega = 2 * std::numbers::pi * 30 * (q0 * Vec3::UnitZ());
-    x0 = Vec3(0, 0, 0.03 * std::sin(15 * std::numbers::pi / 180) - 0.001);
+    x0 = Vec3(0, 0, 0.03 * std::sin(kAttackDeg * std::numbers::pi / 180) - kDepth);
   }
   RigidState at(double t) const {
     RigidState s;
@@ -66,7 +70,7 @@ BOOST_AUTO_TEST_SUITE(load_switches)
 BOOST_AUTO_TEST_CASE(every_jump_of_the_distributed_loads_lies_where_a_switch_changes_sign) {
   // Oracle: the loads themselves, sampled every 20 ns over 3 ms of the path. A jump is a change
   // between two samples 20 times both neighbouring changes (a kink only bends the changes; on this
-  // path the loads change by ~4e-6 N a sample, and the region's jump is 5e-4 N). Each must lie in
+  // path the loads change by ~5e-6 N a sample, and the region's jumps are 8e-3 and 2e-2 N). Each must lie in
   // an interval where a vertex crosses the surface or the raised waterline (the polygons change)
   // or a face's loaded-region switch changes sign; and the path must hold such a jump.
   const Path p;
@@ -146,6 +150,43 @@ BOOST_AUTO_TEST_CASE(holding_the_loaded_region_keeps_the_loads_smooth_where_it_c
     ++checked;
   }
   BOOST_TEST(checked >= 1);
+}
+
+BOOST_AUTO_TEST_CASE(a_stone_turning_over_in_contact_flips_the_wetted_side_where_its_switch_changes_sign) {
+  // Oracle: the loads themselves. The prism stands on its rim (body z axis horizontal, turned by
+  // 90° ∓ ε about the x axis), 3 mm in the water, moving forward, down and towards +y: the disk face
+  // towards +y advances into the water. Which face is the underside that the Wagner rise wets
+  // flips with the sign of R₂₂ (pressure_distribution.hpp): the free loads jump between ε = ±1e-9,
+  // by far more than between ε = 1e-9 and 3e-9 (a smooth branch: 1e3 times), the underside_flip
+  // switch changes sign there, and the loads held in the mode taken at +ε continue that branch at
+  // −ε (a change no larger than twice the smooth one).
+  const Stone stone = test_stone();
+  const Environment env = savitsky_wagner();
+  LoadSwitches switches(stone, env);
+  auto state = [&](double eps) {
+    RigidState s;
+    s.orientation = Quat(Eigen::AngleAxisd(std::numbers::pi / 2 - eps, Vec3::UnitX()));
+    s.position_m = Vec3(0, 0, 0.03 - 0.003);
+    s.velocity_m_s = Vec3(4, 1, -0.5);
+    return s;
+  };
+  auto loads = [&](double eps, const LoadMode* mode) {
+    const WaterLoads w = water_loads(stone, env, state(eps), nullptr, nullptr, mode);
+    return Sample{w.force_N, w.torque_N_m};
+  };
+  const double smooth = change(loads(3e-9, nullptr), loads(1e-9, nullptr));
+  const double jump = change(loads(1e-9, nullptr), loads(-1e-9, nullptr));
+  BOOST_TEST_MESSAGE("turning over: free jump " << jump << " N, smooth change " << smooth << " N");
+  BOOST_TEST(jump > 1e3 * smooth);
+  std::vector<double> g0, g1;
+  switches.reset(state(1e-9), g0);
+  switches.evaluate(state(-1e-9), g1);
+  int flips = 0;
+  for (int k = 0; k < static_cast<int>(g0.size()); ++k)
+    if (switches.kind(k) == LoadSwitches::Kind::underside_flip) flips += g0[k] > 0 && g1[k] < 0;
+  BOOST_TEST(flips == 1);
+  const LoadMode mode = switches.load_mode();
+  BOOST_TEST(change(loads(1e-9, &mode), loads(-1e-9, &mode)) <= 2 * smooth);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

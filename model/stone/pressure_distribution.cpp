@@ -144,4 +144,6 @@ double waterline_rise_m(PressureDistribution d, double deepest_depth_m) {
   return (kWagnerRiseFactor - 1) * deepest_depth_m;  // Wagner 1932: wetted length × π/2
 }
 
+int underside_side(const Mat3& R) { return R(2, 2) >= 0 ? 1 : -1; }
+
 }  // namespace stoneskip

@@ -81,4 +81,17 @@ double planing_share(const Vec3& velocity_m_s, double gravity_m_s2, double beam_
 // for savitsky_wagner with d_max > 0, else 0.
 double waterline_rise_m(PressureDistribution d, double deepest_depth_m);
 
+// Where the Wagner rise wets: the stone's underside only. The water piled up ahead of a planing
+// bottom runs up along that bottom (Wagner 1932: the wetted length of the planing surface × π/2);
+// it does not wet the stone's flanks or top above the undisturbed waterline, where a rise loaded
+// with the distribution's leading-edge peak would turn the lift into drag (a deep contact's lift
+// then fell with depth: model/README.md §1.4). The underside is the faces whose body normal points
+// away from the side of the body z axis (the disk normal) that faces up: body n_z · s < 0, with
+// s = underside_side(R) = +1 while the body z axis points up (R₂₂ ≥ 0), −1 for a stone turned over.
+// Faces with body n_z = 0 (a prism's rim) are not on it: |n_z| ≤ 1e-9 counts as 0, since a rim
+// face's normal, a normalised cross product, carries round-off of 1e-17 either way (which would
+// wet one of a mirror-symmetric rim's twin faces and not the other).
+int underside_side(const Mat3& R);
+inline bool on_underside(const Vec3& body_normal, int side) { return body_normal.z() * side < -1e-9; }
+
 }  // namespace stoneskip

@@ -250,8 +250,10 @@ class KinkWatch {
     // The pressure distribution's switches, in the mode of the step's start (load_switches.hpp).
     if (loads_) {
       previous_held_ = loads_->load_mode().loaded_faces;
+      const int previous_side = loads_->load_mode().underside;
       loads_->reset(from_vector(y0.data()), l0_);
-      held_changed_ = previous_held_ != loads_->load_mode().loaded_faces;
+      held_changed_ = previous_held_ != loads_->load_mode().loaded_faces ||
+                      previous_side != loads_->load_mode().underside;
     }
     if (!events_) return;
     const std::vector<char> before = under_;

@@ -4,6 +4,8 @@
 // the findings' own stored inputs (Welch's interval recomputed from the members).
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
+
 #include <cmath>
 
 #include "verification/stones/convergence_throw.hpp"
@@ -42,7 +44,7 @@ BOOST_AUTO_TEST_CASE(each_mesh_is_compared_with_its_cut_s_finest_on_paired_membe
   MeshStudyOptions o;
   o.meshes = {prism(16, RimSplit::centre), prism(11, RimSplit::diagonal), prism(16, RimSplit::diagonal),
               prism(11, RimSplit::centre)};
-  o.spins_rev_s = {-40, 40};
+  o.spins_rev_s = {-60, 60};
   o.attack_angles_deg = {10};
   o.members = 6;  // constant differences need 6 paired members for the exact test (2/2⁶ ≤ 0.05)
   BOOST_TEST(o.reference_of(0) == 0u);
@@ -101,14 +103,17 @@ BOOST_AUTO_TEST_CASE(a_cut_settles_from_the_smallest_n_whose_meshes_all_agree_wi
 }
 
 BOOST_AUTO_TEST_CASE(a_stone_that_is_its_own_mirror_image_counts_the_same_either_way_round) {
-  // The spin-sweep throw (8 m/s, β = α = 10°) at ±40 rev/s with the 11-gon cut at its faces'
-  // centres: every member of the +40 ensemble must bounce as often as its mirror at −40 (mirror
+  // The spin-sweep throw (8 m/s, β = α = 10°) at ±60 rev/s with the 11-gon cut at its faces'
+  // centres: every member of the +60 ensemble must bounce as often as its mirror at −60 (mirror
   // symmetry of the solid, the water and the throw; the solver's rounding is the only difference).
-  // The same comparison can fail: the paper's diagonal cut, which has a hand, gives 9 and 12 at
-  // this throw (model/README.md §1.1), and the study must find that pair different.
+  // The same comparison can fail: the paper's diagonal cut, which has a hand, gives 8 (5 of 6
+  // members) and 11 (5 of 6) at this throw, and the study must find that pair different. (The
+  // spin was chosen for that: single runs at 10–80 rev/s by 10, 60 the first where the diagonal
+  // cut's counts differ by more than 2 either way round; 40 rev/s served before the Wagner rise was
+  // confined to the underside, when the pair was 9 and 12.)
   MeshStudyOptions o;
   o.meshes = {prism(11, RimSplit::diagonal), prism(11, RimSplit::centre)};
-  o.spins_rev_s = {-40, 40};
+  o.spins_rev_s = {-60, 60};
   o.attack_angles_deg = {10};
   o.members = 6;  // enough for the exact test to establish a difference without spread (2/2⁶)
   ThrowProblem base = convergence_throw();
@@ -124,7 +129,12 @@ BOOST_AUTO_TEST_CASE(a_stone_that_is_its_own_mirror_image_counts_the_same_either
     BOOST_TEST(runs[0].counts[1][k] == runs[1].counts[1][k], "member " << k);
   }
   const Record r = mesh_study_findings(runs, o, "bs32");
-  BOOST_TEST(r.at("verdicts").at("mirror_2_1_mesh_2").text("verdict") == "same bounce count");
+  // Equal member by member, the two ensembles' difference of means is 0 and its interval holds 0:
+  // "same bounce count" where every member has one count, else no difference is established.
+  const auto& centre = runs[0].counts[1];
+  const bool spread = *std::max_element(centre.begin(), centre.end()) != *std::min_element(centre.begin(), centre.end());
+  BOOST_TEST(r.at("verdicts").at("mirror_2_1_mesh_2").text("verdict") ==
+             (spread ? "no difference established" : "same bounce count"));
   BOOST_TEST(r.at("verdicts").at("mirror_2_1_mesh_1").text("verdict") == "different bounce counts");
 }
 
