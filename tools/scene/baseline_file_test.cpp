@@ -16,6 +16,10 @@ namespace fs = std::filesystem;
 using namespace stoneskip;
 
 namespace {
+// The spin_physical_realtime baseline as shipped on 5 December (its [result] damaged at known values
+// below; the shipped one changes with the model).
+constexpr const char* kFixture = "tools/scene/baseline_file_test_fixture.toml";
+
 // The shipped baseline `shipped` with its `case = ...` line naming `case_file` instead, written to
 // s.dir/name.
 fs::path baseline_naming(const ScratchDir& s, const std::string& name, const std::string& shipped, const std::string& case_file) {
@@ -98,10 +102,10 @@ BOOST_AUTO_TEST_CASE(a_file_without_a_baseline_table_says_so) {
 }
 
 BOOST_AUTO_TEST_CASE(a_damaged_result_is_bad_input_naming_its_key) {
-  // Oracle: the shipped baseline (grid 0–60 rev/s, threshold_tolerance 0.5) with one [result]
+  // Oracle: the 5 December baseline (kFixture: grid 0–60 rev/s, threshold_tolerance 0.5) with one [result]
   // line damaged. These were reported as regressions of the code (exit 1) after the whole sweep.
   ScratchDir s("stoneskip_baseline_damaged");
-  const std::string text = read_text_file("cases/baselines/spin_physical_realtime.toml");
+  const std::string text = read_text_file(kFixture);
   auto refusal = [&](const std::string& from, const std::string& to) {
     std::string t = text;
     const auto at = t.find(from);
@@ -130,17 +134,17 @@ BOOST_AUTO_TEST_CASE(a_damaged_result_is_bad_input_naming_its_key) {
   BOOST_TEST(m.find("result.threshold_") != std::string::npos, m);
   m = refusal("threshold_lo = [14.375, 22.5", "threshold_lo = [14.375, 14.5");  // starts inside the first
   BOOST_TEST(m.find("ascending order without overlap") != std::string::npos, m);
-  BOOST_TEST(refusal("generated = ", "generated = ") == "");  // the shipped file itself is taken
+  BOOST_TEST(refusal("generated = ", "generated = ") == "");  // the undamaged file itself is taken
 }
 
 BOOST_AUTO_TEST_CASE(thresholds_that_do_not_answer_the_counts_are_bad_input) {
   // Oracle: the sweep's rule (bounce_sweep.cpp): each grid cell whose two counts differ, neither a
-  // failure, is bisected once, inside the cell, the left count kept below. The shipped baseline
+  // failure, is bisected once, inside the cell, the left count kept below. The 5 December baseline
   // (values 0, 10, …, 60; counts 1, 1, 2, 3, 4, 5, 9; one threshold in each of the five cells that
-  // change) with its [result] made to contradict itself; each was read and compared, and reported
+  // change; kFixture) with its [result] made to contradict itself; each was read and compared, and reported
   // as a regression of the code (exit 1) after the whole sweep.
   ScratchDir s("stoneskip_baseline_contradicts");
-  const std::string text = read_text_file("cases/baselines/spin_physical_realtime.toml");
+  const std::string text = read_text_file(kFixture);
   auto refusal = [&](const std::vector<std::pair<std::string, std::string>>& edits) {
     std::string t = text;
     for (const auto& [from, to] : edits) {
