@@ -25,9 +25,10 @@ struct FaceScratch {
 
 // The law's pressure redistributed along the wetted length (model/stone/pressure_distribution.hpp):
 // on face i, p(x) = K p_i w(ξ(x)) over its wetted polygon (below the raised waterline for the
-// Wagner variant, on the stone's underside: on_underside in pressure_distribution.hpp), with p_i the law evaluated at the face's centre of pressure x_i = ∫w x dA / ∫w dA
-// (so the face's power −K p_i W_i u(x_i) is never positive) and K such that Σ K p_i W_i is the law's
-// total force on the geometric wetted area. F_i = −K p_i W_i n_i acts at x_i. Below planing speed
+// Wagner variant, on the stone's underside: on_underside in pressure_distribution.hpp), with p_i
+// the law evaluated at the face's centre of pressure x_i = ∫w x dA / ∫w dA (so the face's power
+// −K p_i W_i u(x_i) is never positive) and K such that Σ K p_i W_i is the law's total force on the
+// geometric wetted area. F_i = −K p_i W_i n_i acts at x_i. Below planing speed
 // the weight is blended with a uniform one, w_β = (1 − β) + β w (planing_share): W_i and ∫w x dA
 // are then (1 − β) S_i + β W_i and (1 − β) S_i c_i + β ∫w x dA, S_i and c_i the polygon's area
 // and centroid.
