@@ -9,7 +9,9 @@ namespace stoneskip {
 SectionOutput convergence_section(const Record& convergence);
 SectionOutput work_precision_section(const Record& work_precision);
 SectionOutput work_precision_grid_section(const Record& work_precision_grid);  // subsection 2.1
-SectionOutput sweeps_section(const Record& sweeps, const Record& fig9);
+// mesh (optional): the mesh study's record (§3c), whose verdict on the base stone's mesh the
+// section states beside its counts.
+SectionOutput sweeps_section(const Record& sweeps, const Record& fig9, const Record* mesh = nullptr);
 SectionOutput count_ensembles_section(const Record& count_ensembles);  // count_ensembles_section.cpp
 SectionOutput mesh_section(const Record& mesh);                        // mesh_section.cpp
 SectionOutput hard_cases_section(const Record& hard_cases);

@@ -187,7 +187,8 @@ RenderedReport render_stones_report(const StoredReport& s) {
   append(out, convergence_section(secs.at("convergence")));
   append(out, work_precision_section(secs.at("work_precision")));
   if (secs.has_child("work_precision_grid")) append(out, work_precision_grid_section(secs.at("work_precision_grid")));
-  append(out, sweeps_section(secs.at("sweeps"), secs.at("validation").at("fig9")));
+  append(out, sweeps_section(secs.at("sweeps"), secs.at("validation").at("fig9"),
+                             secs.has_child("mesh") ? &secs.at("mesh") : nullptr));
   if (secs.has_child("count_ensembles")) append(out, count_ensembles_section(secs.at("count_ensembles")));
   if (secs.has_child("mesh")) append(out, mesh_section(secs.at("mesh")));
   append(out, hard_cases_section(secs.at("hard_cases")));

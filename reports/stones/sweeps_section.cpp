@@ -122,9 +122,46 @@ std::vector<PlotSeries> count_curve(const Record& s, const std::string& title, c
   return out;
 }
 
+// What the mesh study (§3c) says of the base stone's mesh, found among its meshes by its triangle
+// count (one match, or nothing is said; records written before the base stored its triangles say
+// nothing either): against its cut's reference, and whether that cut's count settles.
+std::string mesh_caveat(const Record& base, const Record& m) {
+  if (!base.has_number("triangles") || !m.has_table("meshes") || !m.has_table("cuts")) return "";
+  const Table& t = m.table("meshes");
+  const auto tri = t.column("triangles"), n = t.column("segments"), cut = t.column("centre_cut"), refs = t.column("reference");
+  std::size_t found = t.rows(), matches = 0;
+  for (std::size_t k = 0; k < t.rows(); ++k)
+    if (tri[k] == base.number("triangles")) found = k, ++matches;
+  if (matches != 1) return "";
+  auto name = [&](std::size_t k) {
+    return "N = " + fmt(n[k], 6) + ", " + (cut[k] > 0 ? "centre" : "diagonal") + " cut, " + fmt(tri[k], 6) + " triangles";
+  };
+  const std::size_t ref = static_cast<std::size_t>(refs[found]);
+  std::string s = "**These counts are the base stone's mesh's** (" + name(found) + "). Section 3c throws " +
+                  fmt(m.number("throws"), 4) + " throws with other meshes of the same solid";
+  if (ref == found) return s + ", this mesh being its cut's finest there.";
+  s += ": against " + name(ref) + " this mesh's count is different on " + fmt(t.column("changed")[found], 4) + " of " +
+       fmt(m.number("throws"), 4);
+  if (t.column("not_established")[found] > 0) s += ", no difference established on " + fmt(t.column("not_established")[found], 4);
+  if (t.column("undecided")[found] > 0) s += ", not decided on " + fmt(t.column("undecided")[found], 4);
+  s += " (ensembles, 95 % interval)";
+  const Table& cuts = m.table("cuts");
+  for (std::size_t row = 0; row < cuts.rows(); ++row) {
+    if ((cuts.column("centre_cut")[row] > 0) != (cut[found] > 0)) continue;
+    const double settled = cuts.column("settled_segments")[row];
+    if (std::isnan(settled) || settled > n[found])
+      s += ", and the " + std::string(cut[found] > 0 ? "centre" : "diagonal") + " cut's count is not shown to settle by N = " +
+           fmt(n[found], 6) + ". A count or a threshold below is this mesh's, not shown to be the solid's";
+    else
+      s += "; from N = " + fmt(settled, 6) + " that cut's counts show no difference from N = " +
+           fmt(cuts.column("reference_segments")[row], 6);
+  }
+  return s + ".";
+}
+
 }  // namespace
 
-SectionOutput sweeps_section(const Record& c, const Record& fig9) {
+SectionOutput sweeps_section(const Record& c, const Record& fig9, const Record* mesh) {
   SectionWriter w(c, "3. Bounce-count curves");
   w.lead("What is measured.",
          "The bounce count (contacts that end with the stone leaving the water, model/README.md §1.8) of one base throw as one "
@@ -142,6 +179,10 @@ SectionOutput sweeps_section(const Record& c, const Record& fig9) {
                                      fmt(b.number("atol_m"), 2) + " m (largest step " + fmt(b.number("dt_s"), 3) + " s)."
                                : "`" + b.text("scheme") + "`, " + fmt(b.number("dt_s"), 3) + " s flight step, " +
                                      fmt(b.number("contact_dt_s"), 3) + " s contact step."));
+    if (mesh) {
+      const std::string caveat = mesh_caveat(b, *mesh);
+      if (!caveat.empty()) w.text(caveat);
+    }
   }
   for (const auto& param : c.strings("parameters")) {
     const Record& pr = c.at(param);

@@ -119,6 +119,7 @@ Record sweeps_findings(const std::vector<BounceSweepResult>& sweeps) {
     base.set("label", b.label);
     base.set("stone", b.stone.description);
     base.set("mass_kg", b.stone.mass.mass_kg);
+    base.set("triangles", b.stone.body_mesh.triangles.size());  // to find it among the mesh study's meshes
     base.set("speed_m_s", b.parameters.speed_m_s);
     base.set("path_angle_deg", b.parameters.path_angle_deg);
     base.set("attack_angle_deg", b.parameters.attack_angle_deg);
