@@ -137,10 +137,10 @@ std::string mesh_caveat(const Record& base, const Record& m) {
     return "N = " + fmt(n[k], 6) + ", " + (cut[k] > 0 ? "centre" : "diagonal") + " cut, " + fmt(tri[k], 6) + " triangles";
   };
   const std::size_t ref = static_cast<std::size_t>(refs[found]);
-  std::string s = "**These counts are the base stone's mesh's** (" + name(found) + "). Section 3c throws " +
+  std::string s = "**These counts are the base stone's mesh's** (" + name(found) + "). Section 3c repeats " +
                   fmt(m.number("throws"), 4) + " throws with other meshes of the same solid";
   if (ref == found) return s + ", this mesh being its cut's finest there.";
-  s += ": against " + name(ref) + " this mesh's count is different on " + fmt(t.column("changed")[found], 4) + " of " +
+  s += ": against " + name(ref) + ", this mesh's count differs on " + fmt(t.column("changed")[found], 4) + " of the " +
        fmt(m.number("throws"), 4);
   if (t.column("not_established")[found] > 0) s += ", no difference established on " + fmt(t.column("not_established")[found], 4);
   if (t.column("undecided")[found] > 0) s += ", not decided on " + fmt(t.column("undecided")[found], 4);
@@ -150,7 +150,7 @@ std::string mesh_caveat(const Record& base, const Record& m) {
     if ((cuts.column("centre_cut")[row] > 0) != (cut[found] > 0)) continue;
     const double settled = cuts.column("settled_segments")[row];
     if (std::isnan(settled) || settled > n[found])
-      s += ", and the " + std::string(cut[found] > 0 ? "centre" : "diagonal") + " cut's count is not shown to settle by N = " +
+      s += ", and the " + std::string(cut[found] > 0 ? "centre" : "diagonal") + " cut's count is not shown to have settled at N = " +
            fmt(n[found], 6) + ". A count or a threshold below is this mesh's, not shown to be the solid's";
     else
       s += "; from N = " + fmt(settled, 6) + " that cut's counts show no difference from N = " +

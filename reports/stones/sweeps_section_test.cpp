@@ -49,12 +49,12 @@ BOOST_AUTO_TEST_CASE(the_counts_are_said_to_be_the_mesh_s_where_the_mesh_study_f
   const Record unsettled = mesh_record(9);
   const std::string md = sweeps_section(sweeps_record(44), fig9, &unsettled).markdown;
   BOOST_TEST(md.find("**These counts are the base stone's mesh's** (N = 11, diagonal cut, 44 triangles)") != std::string::npos, md);
-  BOOST_TEST(md.find("against N = 16, diagonal cut, 64 triangles this mesh's count is different on 1 of 2") != std::string::npos, md);
-  BOOST_TEST(md.find("not shown to settle by N = 11") != std::string::npos, md);
+  BOOST_TEST(md.find("against N = 16, diagonal cut, 64 triangles, this mesh's count differs on 1 of the 2") != std::string::npos, md);
+  BOOST_TEST(md.find("not shown to have settled at N = 11") != std::string::npos, md);
   // Where N = 11 agrees with N = 16 at both throws, the cut settles from 11: said, with no warning.
   const Record settled = mesh_record(3);
   const std::string ok = sweeps_section(sweeps_record(44), fig9, &settled).markdown;
-  BOOST_TEST(ok.find("different on 0 of 2") != std::string::npos, ok);
+  BOOST_TEST(ok.find("differs on 0 of the 2") != std::string::npos, ok);
   BOOST_TEST(ok.find("from N = 11 that cut's counts show no difference from N = 16") != std::string::npos, ok);
   BOOST_TEST(ok.find("not shown to be the solid's") == std::string::npos);
   // A base throw stored before its triangles were (or another mesh): nothing is said.
