@@ -85,7 +85,7 @@ double waterline_rise_m(PressureDistribution d, double deepest_depth_m);
 // bottom runs up along that bottom (Wagner 1932: the wetted length of the planing surface × π/2);
 // it does not wet the stone's flanks or top above the undisturbed waterline, where a rise loaded
 // with the distribution's leading-edge peak would turn the lift into drag (a deep contact's lift
-// then fell with depth: model/README.md §1.4). The underside is the faces whose body normal points
+// then fell with depth: model/README.md §1.9). The underside is the faces whose body normal points
 // away from the side of the body z axis (the disk normal) that faces up: body n_z · s < 0, with
 // s = underside_side(R) = +1 while the body z axis points up (R₂₂ ≥ 0), −1 for a stone turned over.
 // Faces with body n_z = 0 (a prism's rim) are not on it: |n_z| ≤ 1e-9 counts as 0, since a rim

@@ -123,15 +123,16 @@ std::vector<PlotSeries> count_curve(const Record& s, const std::string& title, c
 }
 
 // What the mesh study (§3c) says of the base stone's mesh, found among its meshes by its triangle
-// count (one match, or nothing is said; records written before the base stored its triangles say
-// nothing either): against its cut's reference, and whether that cut's count settles.
+// count and its mass (one match, or nothing is said; records written before the base stored its
+// triangles say nothing either): against its cut's reference, and whether that cut's count settles.
 std::string mesh_caveat(const Record& base, const Record& m) {
   if (!base.has_number("triangles") || !m.has_table("meshes") || !m.has_table("cuts")) return "";
   const Table& t = m.table("meshes");
   const auto tri = t.column("triangles"), n = t.column("segments"), cut = t.column("centre_cut"), refs = t.column("reference");
+  const auto mass = t.column("mass_kg");
   std::size_t found = t.rows(), matches = 0;
   for (std::size_t k = 0; k < t.rows(); ++k)
-    if (tri[k] == base.number("triangles")) found = k, ++matches;
+    if (tri[k] == base.number("triangles") && std::abs(mass[k] - base.number("mass_kg")) <= 1e-9 * mass[k]) found = k, ++matches;
   if (matches != 1) return "";
   auto name = [&](std::size_t k) {
     return "N = " + fmt(n[k], 6) + ", " + (cut[k] > 0 ? "centre" : "diagonal") + " cut, " + fmt(tri[k], 6) + " triangles";

@@ -29,10 +29,11 @@ Record mesh_record(int count_at_11) {
   return mesh_study_findings(runs, o, "test");
 }
 
-Record sweeps_record(double triangles) {
+// The base throw's record; its stone that of the N = 11 diagonal prism above unless said.
+Record sweeps_record(double triangles, double mass_kg = prism(11, RimSplit::diagonal).stone.mass.mass_kg) {
   Record r;
   Record& b = r.child("base");
-  b.set("label", std::string("test throw")).set("stone", std::string("prism")).set("mass_kg", 0.05);
+  b.set("label", std::string("test throw")).set("stone", std::string("prism")).set("mass_kg", mass_kg);
   b.set("speed_m_s", 8.0).set("path_angle_deg", 10.0).set("attack_angle_deg", 10.0).set("spin_rev_s", 0.0);
   b.set("scheme", std::string("bs32")).set("adaptive", 1.0).set("rtol", 1e-9).set("atol_m", 1e-9).set("dt_s", 0.01);
   b.set("contact_dt_s", 1e-4);
@@ -60,6 +61,8 @@ BOOST_AUTO_TEST_CASE(the_counts_are_said_to_be_the_mesh_s_where_the_mesh_study_f
   // A base throw stored before its triangles were (or another mesh): nothing is said.
   BOOST_TEST(sweeps_section(sweeps_record(0), fig9, &unsettled).markdown.find("These counts") == std::string::npos);
   BOOST_TEST(sweeps_section(sweeps_record(66), fig9, &unsettled).markdown.find("These counts") == std::string::npos);
+  // 44 triangles of another solid (a heavier stone): not the study's mesh either.
+  BOOST_TEST(sweeps_section(sweeps_record(44, 1.0), fig9, &unsettled).markdown.find("These counts") == std::string::npos);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
