@@ -11,6 +11,10 @@ StateVector HermiteStep::at(double theta) const {
   const double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + t, h01 = -2 * t3 + 3 * t2, h11 = t3 - t2;
   StateVector y;
   for (int i = 0; i < kStateSize; ++i) y[i] = h00 * y0[i] + h10 * h_s * f0[i] + h01 * y1[i] + h11 * h_s * f1[i];
+  if (has_quartic) {
+    const double q = t2 * (1 - t) * (1 - t);
+    for (int i = 0; i < kStateSize; ++i) y[i] += q * quartic[i];
+  }
   return y;
 }
 

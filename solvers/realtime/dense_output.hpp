@@ -17,6 +17,11 @@ struct HermiteStep {
   StateVector y0{}, y1{};  // the states at the start and the end of the step
   StateVector f0{}, f1{};  // dy/dt there (the right-hand side)
   double h_s = 0;
+  // Dormand–Prince 5(4)'s continuous extension (Shampine 1986; Hairer, Nørsett & Wanner §II.6,
+  // the dense output of DOPRI5): the cubic Hermite plus θ²(1 − θ)² q, q = h Σ d_i k_i from the
+  // step's stages; O(h⁵) locally, so its events keep order 5. Absent (has_quartic false): the cubic.
+  StateVector quartic{};
+  bool has_quartic = false;
 
   // The interpolated flat state at t0 + θ h (θ ∈ [0, 1]); exact at θ = 0 and 1.
   StateVector at(double theta) const;

@@ -23,12 +23,13 @@ const char* to_string(Scheme s) {
     case Scheme::midpoint: return "midpoint";
     case Scheme::rk4: return "rk4";
     case Scheme::bs32: return "bs32";
+    case Scheme::dp54: return "dp54";
   }
   return "?";
 }
 
 bool parse_scheme(const std::string& s, Scheme& out) {
-  for (Scheme c : {Scheme::semi_implicit_euler, Scheme::midpoint, Scheme::rk4, Scheme::bs32}) {
+  for (Scheme c : {Scheme::semi_implicit_euler, Scheme::midpoint, Scheme::rk4, Scheme::bs32, Scheme::dp54}) {
     if (s == to_string(c)) {
       out = c;
       return true;
@@ -43,11 +44,12 @@ int formal_order(Scheme s) {
     case Scheme::midpoint: return 2;
     case Scheme::rk4: return 4;
     case Scheme::bs32: return 3;
+    case Scheme::dp54: return 5;
   }
   return 0;
 }
 
-bool is_adaptive(Scheme s) { return s == Scheme::bs32; }
+bool is_adaptive(Scheme s) { return s == Scheme::bs32 || s == Scheme::dp54; }
 
 const char* to_string(KinkSteps k) {
   switch (k) {
@@ -86,6 +88,18 @@ StateVector rhs(const Stone& stone, const Environment& env, const StateVector& y
   StateVector d;
   rigid_body_rhs(stone, env, y.data(), d.data(), surface, pushes, mode);
   return d;
+}
+
+// The adaptive schemes' pair (adaptive_step.hpp): one trial, its right-hand sides, the next step.
+AdaptiveTrial adaptive_trial(Scheme scheme, const Stone& stone, const Environment& env, const StateVector& y0,
+                             const StateVector& k1, double h, const WaterSurface* surface, const StateVector& atol,
+                             double rtol, const FieldFunction* field = nullptr) {
+  return scheme == Scheme::dp54 ? dp54_step(stone, env, y0, k1, h, surface, atol, rtol, field)
+                                : bs32_step(stone, env, y0, k1, h, surface, atol, rtol, field);
+}
+long trial_rhs(Scheme scheme) { return scheme == Scheme::dp54 ? 6 : 3; }
+double next_step(Scheme scheme, double h, double error_norm) {
+  return scheme == Scheme::dp54 ? dp54_next_step(h, error_norm) : bs32_next_step(h, error_norm);
 }
 
 }  // namespace
@@ -144,12 +158,13 @@ RigidState step_from(const Stone& stone, const Environment& env, const RigidStat
       out = from_vector(yn.data());
       break;
     }
-    case Scheme::bs32: {
-      // One step of the pair's third-order solution at the given size (no error control).
+    case Scheme::bs32:
+    case Scheme::dp54: {
+      // One step of the pair's higher-order solution at the given size (no error control).
       StateVector atol;
       atol.fill(1.0);
-      const Bs32Trial t = bs32_step(stone, env, to_vector(s), k1, dt, surface, atol, 0.0);
-      if (rhs_evaluations) *rhs_evaluations += 3;
+      const AdaptiveTrial t = adaptive_trial(scheme, stone, env, to_vector(s), k1, dt, surface, atol, 0.0);
+      if (rhs_evaluations) *rhs_evaluations += trial_rhs(scheme);
       out = from_vector(t.y1.data());
       break;
     }
@@ -593,17 +608,17 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
       kinks.start(y0);
       double h_resume = 0;  // the controller's proposal before an event cut the step back
       bool ok = false;
-      Bs32Trial trial;
+      AdaptiveTrial trial;
       int cuts = 0;  // kink cuts of this step (error-test rejections do not count against the guard)
       for (;;) {
         double hh = std::min({h, o.dt_s, o.t_max_s - t});
         if (!now.wet()) hh = std::min(hh, flight_step_limit(stone, env, s, -now.deepest_m(), dip_m, surface == nullptr));
         // With a budget: the step ends by the frame's end and is no shorter than the budget left
-        // allows (each trial costs three right-hand sides); such a step is accepted whatever its error.
+        // allows (each trial costs trial_rhs right-hand sides); such a step is accepted whatever its error.
         double floor_h = 0;
         if (budgeted) {
           const double left_s = std::min(frame_end_s, o.t_max_s) - t;
-          const long trials = std::max(1L, (o.rhs_per_frame - (r.stats.rhs_evaluations - frame_rhs0)) / 3);
+          const long trials = std::max(1L, (o.rhs_per_frame - (r.stats.rhs_evaluations - frame_rhs0)) / trial_rhs(o.scheme));
           floor_h = left_s / static_cast<double>(trials);
           hh = std::clamp(hh, floor_h, left_s);
         }
@@ -621,8 +636,8 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
           failed(t, m.str());
           break;
         }
-        trial = bs32_step(stone, env, y0, k_start, hh, surface, atol, o.rtol, sliding.field());
-        r.stats.rhs_evaluations += 3;
+        trial = adaptive_trial(o.scheme, stone, env, y0, k_start, hh, surface, atol, o.rtol, sliding.field());
+        r.stats.rhs_evaluations += trial_rhs(o.scheme);
         const bool forced = budgeted && hh <= floor_h * (1 + 1e-12);
         if (forced && !std::isfinite(trial.error_norm)) {
           // The budget holds the step at its floor: a shorter retry would be lengthened to the same
@@ -633,18 +648,18 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
         }
         if (!(trial.error_norm <= 1.0) && !(forced && std::isfinite(trial.error_norm))) {  // too large, or NaN
           ++r.stats.error_test_failures;
-          h = std::isfinite(trial.error_norm) ? bs32_next_step(hh, trial.error_norm) : 0.25 * hh;
+          h = std::isfinite(trial.error_norm) ? next_step(o.scheme, hh, trial.error_norm) : 0.25 * hh;
           continue;
         }
         const RigidState candidate = from_vector(trial.y1.data());
         measure_waterline(stone, candidate, surface, next);
-        dense = HermiteStep{y0, trial.y1, k_start, trial.k4, hh};
+        dense = HermiteStep{y0, trial.y1, k_start, trial.k4, hh, trial.quartic, trial.has_quartic};
         if (cuts < kMaxKinkCuts) {
           // Located to a tenth of the window: enough to end the cut step past the kink.
           const double f = kinks.first(dense, now, next, 0.1 * event_window_s / hh, 0.0);
           const double cut = f * hh + event_window_s;
           if (f > 0 && (1 - f) * hh > 2 * event_window_s && cut >= floor_h) {
-            if (h_resume == 0) h_resume = bs32_next_step(hh, trial.error_norm);
+            if (h_resume == 0) h_resume = next_step(o.scheme, hh, trial.error_norm);
             h = cut;
             ++cuts;
             ++r.stats.root_evaluations;  // real-time: steps cut back to a kink
@@ -656,7 +671,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
           const double f = sliding.first_root(dense);
           const double cut = f * hh + event_window_s;
           if (f > 0 && (1 - f) * hh > 2 * event_window_s && cut >= floor_h) {
-            if (h_resume == 0) h_resume = bs32_next_step(hh, trial.error_norm);
+            if (h_resume == 0) h_resume = next_step(o.scheme, hh, trial.error_norm);
             h = cut;
             ++cuts;
             ++r.stats.root_evaluations;
@@ -666,7 +681,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
         if (trial.error_norm > 1.0) ++r.stats.budget_forced_steps;
         dt = hh;
         s_new = candidate;
-        h = std::max(bs32_next_step(hh, trial.error_norm), h_resume);
+        h = std::max(next_step(o.scheme, hh, trial.error_norm), h_resume);
         r.stats.max_error_ratio = std::max(r.stats.max_error_ratio, trial.error_norm);
         r.stats.position_error_estimate_m += trial.position_error_m;
         ok = true;

@@ -5,6 +5,9 @@
 //   midpoint (2), rk4 (4)    fixed steps, explicit Runge–Kutta on the flat state (model/README.md §1.3).
 //   bs32 (3)                 adaptive: Bogacki–Shampine 3(2) with FSAL (adaptive_step.hpp), steps
 //                            from rtol/atol_m, bounded where a vertex crosses the surface.
+//   dp54 (5)                 adaptive as bs32, with Dormand–Prince 5(4) and its own continuous
+//                            extension (events to order 5); everything said of bs32 below holds
+//                            for it unless it says otherwise.
 // Fixed schemes switch to contact_dt_s when the lowest vertex could reach the surface within one
 // flight step (clearance < (|v| + |ω| r_bound) dt_s), so a flight step cannot carry it deep; bs32
 // uses dt_s as its largest step and ignores contact_dt_s.
@@ -28,7 +31,8 @@
 // (1 = the tolerance) and the summed local error estimate of the positions: the error it made.
 //
 // Contacts (model/README.md §1.8) are located inside the step on the cubic Hermite interpolant of
-// the step (dense_output.hpp: O(h⁴), so to the scheme's order up to 4): a contact starts where the
+// the step (dense_output.hpp: O(h⁴), so to the scheme's order up to 4; dp54's quartic extension
+// O(h⁵)): a contact starts where the
 // first vertex goes under (the first-touch point is that vertex there), ends where the last comes
 // out, and the stone sinks where the last goes under; the state there is the interpolant's, and a
 // throw that sinks ends at that time and state.
@@ -45,11 +49,11 @@
 
 namespace stoneskip {
 
-enum class Scheme { semi_implicit_euler, midpoint, rk4, bs32 };
+enum class Scheme { semi_implicit_euler, midpoint, rk4, bs32, dp54 };
 const char* to_string(Scheme s);
 bool parse_scheme(const std::string& s, Scheme& out);
 int formal_order(Scheme s);
-bool is_adaptive(Scheme s);  // steps from a tolerance (bs32), not from dt_s / contact_dt_s
+bool is_adaptive(Scheme s);  // steps from a tolerance (bs32, dp54), not from dt_s / contact_dt_s
 
 // The adaptive scheme's tolerance (rtol = atol_m) where a case names none: the one the stones
 // report's work-precision grid chooses by its stated rule (bounce counts equal to CVODE's on
@@ -70,7 +74,9 @@ constexpr double kDefaultAdaptiveTolerance = 1e-9;
 //              none of its stages sees the loads jump where the region changes: the step cut back
 //              to the change ends on the old branch, the next starts on the new. (bs32 needs no
 //              hold: its solution uses no stage past 3/4 of the step, and its cut step ends within
-//              two event windows past the switch.)
+//              two event windows past the switch. dp54's sixth stage is at the step's end, so a
+//              step cut just past a jump carries it in that stage, weight 11/84: its error test
+//              sees the jump and shortens the step until it no longer matters.)
 enum class KinkSteps { none, crossings, all };
 const char* to_string(KinkSteps k);
 bool parse_kink_steps(const std::string& s, KinkSteps& out);

@@ -472,25 +472,33 @@ BOOST_AUTO_TEST_CASE(the_first_touch_time_converges_at_the_scheme_s_order) {
 }
 
 BOOST_AUTO_TEST_CASE(the_adaptive_stepper_locates_the_first_touch_to_its_tolerance) {
-  // Oracle: exact_first_touch as above. bs32 with rtol = atol_m = tol keeps the position error per
-  // unit time near tol, so the touch time errs by about tol × t / (the vertex's vertical speed,
-  // ~1.4 m/s here): at most 10 tol (a margin of ~100 over that estimate) at every tolerance, and
-  // every step of the flight is far longer than the fixed schemes' 10 µs contact step.
+  // Oracle: exact_first_touch as above. Each pair (bs32, dp54) with rtol = atol_m = tol keeps the
+  // position error per unit time near tol, so the touch time errs by about tol × t / (the vertex's
+  // vertical speed, ~1.4 m/s here): at most 10 tol (a margin of ~100 over that estimate) at every
+  // tolerance, and every step of the flight is far longer than the fixed schemes' 10 µs contact
+  // step. dp54, of order 5, must take fewer steps than bs32 at 1e-8 (at 1e-4 and 1e-6 both take
+  // the 78 steps that the flight's dip limit allows, whatever the tolerance).
   constexpr double kTimePerTolerance_s = 10;  // seconds of touch-time error per unit tolerance
   const Stone stone = prism_stone();
   const Environment env = vacuum();
   const auto [s0, exact] = spun_tilted_throw(stone, env.gravity_m_s2);
   for (double tol : {1e-4, 1e-6, 1e-8}) {
-    RealtimeOptions o;
-    o.scheme = Scheme::bs32;
-    o.rtol = o.atol_m = tol;
-    o.t_max_s = exact.t_s + 1e-4;
-    o.record_trajectory = false;
-    const ThrowResult r = run_realtime(stone, env, s0, o);
-    BOOST_REQUIRE(!r.contacts.empty());
-    const double e = std::abs(r.contacts[0].start_s - exact.t_s);
-    BOOST_TEST(e <= kTimePerTolerance_s * tol, "tol " << tol << ": touch error " << e << " s in " << r.stats.steps << " steps");
-    BOOST_TEST(exact.t_s / r.stats.steps > 1e-5, "tol " << tol << ": " << r.stats.steps << " steps");
+    long steps[2] = {0, 0};
+    for (Scheme scheme : {Scheme::bs32, Scheme::dp54}) {
+      RealtimeOptions o;
+      o.scheme = scheme;
+      o.rtol = o.atol_m = tol;
+      o.t_max_s = exact.t_s + 1e-4;
+      o.record_trajectory = false;
+      const ThrowResult r = run_realtime(stone, env, s0, o);
+      BOOST_REQUIRE(!r.contacts.empty());
+      const double e = std::abs(r.contacts[0].start_s - exact.t_s);
+      BOOST_TEST(e <= kTimePerTolerance_s * tol,
+                 to_string(scheme) << " tol " << tol << ": touch error " << e << " s in " << r.stats.steps << " steps");
+      BOOST_TEST(exact.t_s / r.stats.steps > 1e-5, to_string(scheme) << " tol " << tol << ": " << r.stats.steps << " steps");
+      steps[scheme == Scheme::dp54] = r.stats.steps;
+    }
+    if (tol <= 1e-8) BOOST_TEST(steps[1] < steps[0], "tol " << tol << ": dp54 " << steps[1] << " steps, bs32 " << steps[0]);
   }
 }
 

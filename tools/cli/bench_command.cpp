@@ -11,7 +11,8 @@
 // path; --every-isa adds the stencil on every path the CPU supports, side by side. A benchmark, not a test: the numbers depend on the
 // machine and on what else runs on it.
 // The sweep runs the adaptive real-time stepper (bs32 at --sweep-rtol, rtol = atol_m; the default
-// chosen from the work-precision table in solvers/README.md) on two workers; beside its throws/s,
+// chosen from the work-precision table in solvers/README.md; --sweep-scheme dp54 for
+// Dormand–Prince 5(4)) on two workers; beside its throws/s,
 // untimed, the fraction of its throws whose bounce count equals CVODE's where CVODE (BDF, the case's
 // reference settings) at rtol = atol 1e-8 and 1e-10 agrees, and the same fraction apart on the
 // throws whose CVODE solution has no flight shorter than 1 ms (kShortFlight_s).
@@ -60,6 +61,7 @@ struct BenchArgs {
   std::string scene = "cases/scenes/seed_8ms.toml";
   std::string sweep_case = "cases/spin_sweep_base.toml";
   double sweep_rtol = kDefaultAdaptiveTolerance;  // the cases' default (kSweepTolerance below)
+  std::string sweep_scheme = "bs32";  // an adaptive scheme (stone_stepper.hpp)
   std::string sweep_kinks;  // the scheme's default unless --sweep-kinks is given
   CLI::Option* sweep_kinks_option = nullptr;
   CLI::Option* repeats_option = nullptr;
@@ -193,9 +195,12 @@ void bench(const BenchArgs& a) {
   const double sweep_tolerance = a.sweep_rtol;  // checked as given: 0 or a negative value is refused, not read as the default
   if (!(sweep_tolerance >= 1e-12 && sweep_tolerance <= 1e-2))
     throw_input_error("--sweep-rtol", 0, "", "must be in [1e-12, 1e-2] (got " + g(sweep_tolerance, 17) + ")");
-  o.sweep.base.realtime.scheme = Scheme::bs32;
+  Scheme sweep_scheme{};
+  if (!parse_scheme(a.sweep_scheme, sweep_scheme) || !is_adaptive(sweep_scheme))
+    throw_input_error("--sweep-scheme", 0, "", "must be an adaptive scheme, bs32 or dp54 (got " + a.sweep_scheme + ")");
+  o.sweep.base.realtime.scheme = sweep_scheme;
   o.sweep.base.realtime.rtol = o.sweep.base.realtime.atol_m = sweep_tolerance;
-  KinkSteps kinks = default_kink_steps(Scheme::bs32);
+  KinkSteps kinks = default_kink_steps(sweep_scheme);
   if (a.sweep_kinks_option->count() > 0 && !parse_kink_steps(a.sweep_kinks, kinks))
     throw_input_error("--sweep-kinks", 0, "", "must be none, crossings or all (got " + a.sweep_kinks + ")");
   o.sweep.base.realtime.kinks = kinks;
@@ -476,7 +481,10 @@ void add_bench(CLI::App& app) {
   cmd->add_option("--scene", a->scene, "The scene to time")->capture_default_str()->check(named);
   cmd->add_option("--sweep-case", a->sweep_case, "The throw whose spin and attack angle the sweep varies")->capture_default_str()->check(named);
   cmd->add_option("--sweep-rtol", a->sweep_rtol,
-                  "The sweep's tolerance (bs32, rtol = atol_m; default " + g(kSweepTolerance) + ", from solvers/README.md's work-precision table)");
+                  "The sweep's tolerance (rtol = atol_m; default " + g(kSweepTolerance) + ", from solvers/README.md's work-precision table)");
+  cmd->add_option("--sweep-scheme", a->sweep_scheme,
+                  "The sweep's adaptive scheme: bs32 (Bogacki–Shampine 3(2)) or dp54 (Dormand–Prince 5(4))")
+      ->capture_default_str();
   a->sweep_kinks_option = cmd->add_option("--sweep-kinks", a->sweep_kinks, "Which kinks end the sweep's steps: none, crossings or all (default: the scheme's own, crossings for bs32)");
   a->repeats_option =
       cmd->add_option("--repeats", a->repeats, "Runs of the scene and of the sweep (the best is reported; --quick: 1 unless given)")

@@ -294,6 +294,30 @@ BOOST_AUTO_TEST_CASE(bench_refuses_a_sweep_tolerance_of_zero_or_below_rather_tha
   }
 }
 
+BOOST_AUTO_TEST_CASE(bench_sweeps_with_the_named_adaptive_pair_and_refuses_a_fixed_scheme) {
+  // Oracles: the input rules (one line naming the option, exit 2, for a scheme that takes no
+  // tolerance or does not exist); and `run`: with --sweep-scheme dp54 the sweep's count for a
+  // throw is the one `stoneskip run` gives that throw under dp54 at the same tolerance.
+  for (const char* v : {"rk4", "dp45"}) {
+    const auto r = stoneskip::test::run_stoneskip(std::string("bench --quick --sweep-only --sweep-scheme ") + v);
+    BOOST_TEST(r.status == 2, v);
+    BOOST_TEST(r.out.find("--sweep-scheme") != std::string::npos, r.out);
+  }
+  const auto b = stoneskip::test::run_stoneskip("bench --quick --sweep-only --sweep-scheme dp54 --json", false);
+  BOOST_REQUIRE_MESSAGE(b.status == 0, b.out);
+  const nlohmann::json j = nlohmann::json::parse(b.out);
+  BOOST_TEST(j["sweep_scheme"].get<std::string>() == "dp54");
+  const auto rt = j["sweep_bounces"].get<std::vector<int>>();
+  BOOST_REQUIRE_EQUAL(rt.size(), 6u);  // 3 spins × 2 attack angles
+  // Throw 5 of the grid (spins outer, attacks inner: spin 40 rev/s, attack 20°).
+  const auto a = stoneskip::test::run_stoneskip(
+      "run cases/spin_sweep_base.toml --set throw.spin_rev_s=40 --set throw.attack_angle_deg=20 --json --solver realtime "
+      "--set solver.scheme=dp54 --set solver.rtol=1e-9 --set solver.atol_m=1e-9",
+      false);
+  BOOST_REQUIRE_MESSAGE(a.status == 0, a.out);
+  BOOST_TEST(nlohmann::json::parse(a.out)["bounces"].get<int>() == rt[5]);
+}
+
 BOOST_AUTO_TEST_CASE(bench_refuses_a_live_water_sweep_case_rather_than_timing_it_on_still_water) {
   // Oracle: the input rules. The sweep's throws and CVODE's run on still water, so a sweep case
   // with [water] (the shipped swell, thrown from [throw] parameters) was timed as if its surface

@@ -100,7 +100,7 @@ Parting parting(const StoneCase& c, const ThrowResult& rt, const ThrowResult& re
   if (c.environment.convention == Convention::paper) {
     p.cause = "the paper convention's laws create energy and its counts are chaotic (model/README.md §1.6): one pair of "
               "runs decides nothing; compare ensembles (the stones report's section on the conventions)";
-  } else if (c.realtime.scheme == Scheme::bs32) {
+  } else if (is_adaptive(c.realtime.scheme)) {
     std::snprintf(b, sizeof b,
                   "the solvers' error (at rtol %.3g / %.3g) or a chaotic count: tighten both (solver.rtol and solver.atol_m, "
                   "--rtol) until neither count changes; a count that still moves when the release is nudged by 1e-9 "

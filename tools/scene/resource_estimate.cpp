@@ -23,6 +23,7 @@ double rhs_per_step(Scheme s) {
     case Scheme::midpoint: return 2;
     case Scheme::rk4: return 4;
     case Scheme::bs32: return 6;  // 3 per trial; as many trials cut back to a crossing or rejected
+    case Scheme::dp54: return 12;  // 6 per trial, the same
   }
   return 4;
 }

@@ -175,7 +175,7 @@ RealtimeOptions read_solver(TomlTable t) {
   const std::string scheme = t.string_or("scheme", to_string(fallback));
   if (!parse_scheme(scheme, o.scheme))
     t.fail("scheme",
-           "must be \"bs32\", \"semi_implicit_euler\", \"midpoint\" or \"rk4\" (got \"" + scheme + "\")");
+           "must be \"bs32\", \"dp54\", \"semi_implicit_euler\", \"midpoint\" or \"rk4\" (got \"" + scheme + "\")");
   if (is_adaptive(o.scheme)) {
     // A fixed scheme's contact step is read and not used, so that a case written for one can be
     // switched with --set solver.scheme=bs32 (cases/README.md says so).

@@ -34,7 +34,7 @@ int count(TomlTable& t, const std::string& key, long long fallback, long long lo
 
 Scheme scheme_of(TomlTable& t, const std::string& key, const std::string& name) {
   Scheme s;
-  if (!parse_scheme(name, s)) t.fail(key, "'" + name + "' is not one of bs32, semi_implicit_euler, midpoint, rk4");
+  if (!parse_scheme(name, s)) t.fail(key, "'" + name + "' is not one of bs32, dp54, semi_implicit_euler, midpoint, rk4");
   return s;
 }
 

@@ -51,7 +51,7 @@ std::vector<FrameBudgetRung> run_frame_budget_ladder(const std::vector<ThrowProb
         throws.size(),
         [&](std::size_t i) {
           RealtimeOptions ro = throws[i].realtime;
-          ro.scheme = Scheme::bs32;
+          if (!is_adaptive(ro.scheme)) ro.scheme = Scheme::bs32;  // the throw's own adaptive pair, else bs32
           ro.rhs_per_frame = n;
           ro.frame_dt_s = o.frame_dt_s;
           ro.record_trajectory = false;

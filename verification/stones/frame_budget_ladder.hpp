@@ -39,8 +39,8 @@ struct FrameBudgetRung {
   double mean_cpu_per_frame_s() const { return frames > 0 ? cpu_s / frames : 0; }
 };
 
-// Runs every throw (its realtime options with scheme bs32 and the budget set) at every rung and
-// counts the matches against reference_bounces (same order as throws; may be empty).
+// Runs every throw (its realtime options with the budget set; its scheme if adaptive, else bs32)
+// at every rung and counts the matches against reference_bounces (same order as throws; may be empty).
 std::vector<FrameBudgetRung> run_frame_budget_ladder(const std::vector<ThrowProblem>& throws,
                                                      const std::vector<int>& reference_bounces,
                                                      const FrameBudgetLadderOptions& o);
