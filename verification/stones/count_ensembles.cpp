@@ -18,7 +18,12 @@ bool CountEnsembleOptions::valid(std::string* why) const {
   if (!(perturbation_smallest > 0) || !(perturbation_largest >= perturbation_smallest) || !(perturbation_largest < 1))
     return fail("ensemble perturbations must satisfy 0 < smallest <= largest < 1");
   if (throws_per_axis < 0 || throws_per_axis > 1000) return fail("ensemble throws_per_axis must be in [0, 1000]");
+  if (!(family_confidence > 0 && family_confidence < 1)) return fail("ensemble family_confidence must be in (0, 1)");
   return true;
+}
+
+double comparison_confidence(const CountEnsembleOptions& o, std::size_t m) {
+  return 1 - (1 - o.family_confidence) / static_cast<double>(std::max<std::size_t>(m, 1));
 }
 
 std::vector<double> sampled_values(const std::vector<double>& grid, int count) {
@@ -48,6 +53,11 @@ std::vector<double> ran(const std::vector<double>& counts, int& failed) {
 }
 
 }  // namespace
+
+MeanDifference member_difference(const CountEnsembleThrow& t, double confidence) {
+  int failed_a = 0, failed_b = 0;
+  return welch_difference(ran(t.realtime, failed_a), ran(t.reference, failed_b), confidence);
+}
 
 std::vector<CountEnsembleThrow> run_count_ensembles(const ThrowProblem& base, const SolverChoice& realtime,
                                                    const SolverChoice& reference,
@@ -98,8 +108,11 @@ std::vector<CountEnsembleThrow> run_count_ensembles(const ThrowProblem& base, co
     }
   }
   run_jobs(jobs, parallel);
+  const double level = comparison_confidence(o, out.size());
   for (CountEnsembleThrow& t : out) {
-    t.difference = welch_difference(ran(t.realtime, t.realtime_failed), ran(t.reference, t.reference_failed));
+    ran(t.realtime, t.realtime_failed);
+    ran(t.reference, t.reference_failed);
+    t.difference = member_difference(t, level);
     t.realtime_ran_away = static_cast<int>(std::count(t.realtime_away.begin(), t.realtime_away.end(), 1));
     t.reference_ran_away = static_cast<int>(std::count(t.reference_away.begin(), t.reference_away.end(), 1));
   }
@@ -113,6 +126,9 @@ Record count_ensembles_findings(const std::vector<CountEnsembleThrow>& throws, c
   r.set("perturbation_smallest", o.perturbation_smallest);
   r.set("perturbation_largest", o.perturbation_largest);
   r.set("throws_per_axis", o.throws_per_axis);
+  const double level = comparison_confidence(o, throws.size());
+  r.set("family_confidence", o.family_confidence);
+  r.set("comparison_confidence", level);
   Table t{{"value", "realtime_single", "reference_single", "realtime_mean", "realtime_sd", "reference_mean", "reference_sd",
            "difference", "difference_low", "difference_high", "realtime_failed", "reference_failed", "single_agree",
            "established", "realtime_ran_away", "reference_ran_away"},
@@ -122,7 +138,7 @@ Record count_ensembles_findings(const std::vector<CountEnsembleThrow>& throws, c
   int failed_runs = 0, ran_away_runs = 0;  // over every ensemble's members
   for (std::size_t i = 0; i < throws.size(); ++i) {
     const CountEnsembleThrow& c = throws[i];
-    MeanDifference d = c.difference;
+    MeanDifference d = member_difference(c, level);  // from the members' counts, at the family's level
     if (!d.valid) {  // fewer than 2 members of a solver ran: no means to compare
       const double nan = std::nan("");
       d.mean_a = d.mean_b = d.sd_a = d.sd_b = d.difference = d.low = d.high = nan;
@@ -153,15 +169,15 @@ Record count_ensembles_findings(const std::vector<CountEnsembleThrow>& throws, c
     if (c.realtime_ran_away + c.reference_ran_away > 0)
       std::snprintf(away, sizeof away, ", of which %d and %d ran away (energy over a thousand times the release value)",
                     c.realtime_ran_away, c.reference_ran_away);
-    char reason[600];
+    char reason[900];
     std::snprintf(reason, sizeof reason,
                   "%s = %.4g %s: over %zu throws each (speed × 1 ± 1e%.3g … 1e%.3g) real-time %.3g ± %.2g, reference "
-                  "%.3g ± %.2g bounces (mean ± sd; %d and %d failed%s); difference %.3g, 95 %% interval [%.3g, %.3g] "
-                  "(Welch); the single runs gave %d and %d",
+                  "%.3g ± %.2g bounces (mean ± sd; %d and %d failed%s); difference %.3g, %.4g %% interval [%.3g, %.3g] "
+                  "(Welch; Bonferroni over the %zu sampled throws); the single runs gave %d and %d",
                   to_string(c.parameter), c.value, unit_of(c.parameter), c.factors.size(),
                   std::log10(o.perturbation_smallest), std::log10(o.perturbation_largest), d.mean_a, d.sd_a, d.mean_b,
-                  d.sd_b, c.realtime_failed, c.reference_failed, away, d.difference, d.low, d.high, c.realtime_single,
-                  c.reference_single);
+                  d.sd_b, c.realtime_failed, c.reference_failed, away, d.difference, 100 * level, d.low, d.high,
+                  throws.size(), c.realtime_single, c.reference_single);
     const Record& v = decide_verdict(r.child("verdicts"), key, "ensemble_bounce_agreement", in, reason);
     const std::string& phrase = v.text("verdict");
     if (phrase == "different bounce counts") ++established;

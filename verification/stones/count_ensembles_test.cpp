@@ -172,12 +172,51 @@ BOOST_AUTO_TEST_CASE(the_record_counts_the_failed_members_that_ran_away) {
   BOOST_TEST(r.at("verdicts").at("throw_2").text("reason").find("ran away") == std::string::npos);
 }
 
+BOOST_AUTO_TEST_CASE(the_sampled_throws_verdicts_hold_together_at_the_family_level) {
+  // Oracle: Bonferroni. A pair of ensembles whose Welch interval excludes 0 at 95 % but not at
+  // 99 % (checked below on the interval itself) reads "different" alone, and "no difference
+  // established" as one of five sampled throws, each then at 1 − 0.05/5 = 99 %. The exact test
+  // (no spread) is held to the same level: {9, 9, 9, 9} against {8, 8, 8, 8} has p = 2/C(8, 4) =
+  // 0.029 (every 9 in one ensemble, either way round): different alone, not among five.
+  CountEnsembleThrow spread;
+  spread.factors = {1, 1, 1, 1, 1, 1, 1, 1};
+  spread.realtime = {4, 5, 5, 6, 5, 4, 6, 5};
+  spread.reference = {4, 5, 3, 5, 4, 4, 3, 4};
+  BOOST_REQUIRE(welch_difference(spread.realtime, spread.reference, 0.95).low > 0);
+  BOOST_REQUIRE(welch_difference(spread.realtime, spread.reference, 0.99).low < 0);
+  CountEnsembleThrow flat;
+  flat.factors = {1, 1, 1, 1};
+  flat.realtime = {9, 9, 9, 9};
+  flat.reference = {8, 8, 8, 8};
+  CountEnsembleOptions o;
+  o.members = 8;
+  for (const CountEnsembleThrow& c : {spread, flat}) {
+    const Record alone = count_ensembles_findings({c}, o);
+    BOOST_TEST(alone.number("comparison_confidence") == 0.95, boost::test_tools::tolerance(1e-15));
+    BOOST_TEST(alone.at("verdicts").at("throw_1").text("verdict") == "different bounce counts");
+    const Record among = count_ensembles_findings({c, c, c, c, c}, o);
+    BOOST_TEST(among.number("comparison_confidence") == 0.99, boost::test_tools::tolerance(1e-15));
+    BOOST_TEST(among.number("family_confidence") == 0.95);
+    BOOST_TEST(among.at("verdicts").at("throw_1").text("verdict") == "no difference established");
+    BOOST_TEST(among.number("different") == 0.0);
+    const std::string reason = among.at("verdicts").at("throw_1").text("reason");
+    BOOST_TEST(reason.find("99 % interval") != std::string::npos, reason);
+    BOOST_TEST(reason.find("Bonferroni over the 5 sampled throws") != std::string::npos, reason);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(invalid_options_are_refused) {
   CountEnsembleOptions o;
   o.members = 3;
   std::string why;
   BOOST_TEST(!o.valid(&why));
   BOOST_TEST(why.find("even") != std::string::npos);
+  o.members = 4;
+  for (double f : {0.0, 1.0, -0.5, std::nan("")}) {
+    o.family_confidence = f;
+    BOOST_TEST(!o.valid(&why), f);
+    BOOST_TEST(why.find("family_confidence") != std::string::npos);
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
