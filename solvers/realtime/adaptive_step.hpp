@@ -16,13 +16,15 @@
 // are located to order 5.
 //
 // Why bs32 stays the default (solvers/README.md, "The fifth-order pair"): the stone's right-hand
-// side is only piecewise smooth (a kink wherever a vertex crosses the surface, model/README.md
-// §1.4), and a high order pays only between kinks. At the tolerance that decides bounce counts
-// (1e-9) dp54 takes a quarter of bs32's steps, but a spinning stone planing on its faceted rim
-// meets a crossing every half millisecond or so, and each costs a trial cut back and taken again:
-// half of dp54's trials are cut or rejected, against a tenth of bs32's. On the bench grid it
-// spends 18 % fewer right-hand sides at equal tolerance and matches CVODE's count on one throw
-// fewer; at the tolerance where it meets the default's rule (1e-10) it costs more than bs32 at 1e-9.
+// side is only piecewise smooth (a kink wherever a vertex crosses the surface, a jump where a face
+// joins the distributed pressure's loaded region, model/README.md §1.4), and a high order pays
+// only between them. At the tolerance that decides bounce counts (1e-9) dp54 takes a quarter of
+// bs32's steps, but a spinning stone planing on its faceted rim meets a crossing every half
+// millisecond or so, and each costs a trial cut back and taken again: half of dp54's trials are
+// cut or rejected, against a tenth of bs32's. And dp54's estimate is all but blind to a jump
+// inside its step (Σ e_i = 0, and its e over stages 3–7 sums to −e₁ = 0.0012 while its solution
+// errs by up to 0.16 of the jump × h), so it must cut its steps at the jumps too (kinks "all"),
+// which costs more again.
 #include <functional>
 
 #include "model/stone/rigid_body.hpp"

@@ -126,6 +126,44 @@ BOOST_AUTO_TEST_CASE(dp54_s_dense_output_is_a_fifth_order_local_interpolant) {
   }
 }
 
+BOOST_AUTO_TEST_CASE(dp54_s_error_estimate_is_blind_to_a_jump_inside_its_step_and_bs32_s_is_not) {
+  // Oracle: the tableaux' arithmetic. A field whose x advances at 1 (a clock) and whose v_x jumps
+  // from 0 to 1 where x passes f = 0.25 of a unit step: the exact change of v_x is 1 − f = 0.75,
+  // the pair's solution adds b_i over the stages past the jump (c_i > f), its error estimate e_i
+  // over the same stages. dp54: stages 3–7, Σ b = 1 − 35/384 (error 0.25 − 35/384 = 0.159) and
+  // Σ e = −e₁ = −71/57600 (0.0012): the estimate sees 1/129 of the error, which is why dp54 cuts
+  // its steps at the loads' jumps (default kinks "all"). bs32: stages 2–4, Σ b = 7/9 (error 1/36),
+  // Σ e = 1/12 + 1/9 − 1/8 = 5/72: its estimate bounds the error here.
+  constexpr double kRoundoff = 1e-14;
+  const Stone stone = squashed_stone();
+  const Environment env;
+  const double f = 0.25;
+  const FieldFunction field = [f](const double* y, double* d) {
+    for (int i = 0; i < kStateSize; ++i) d[i] = 0;
+    d[kPosition] = 1;
+    d[kVelocity] = y[kPosition] > f ? 1 : 0;
+  };
+  const StateVector y0 = to_vector(RigidState{});
+  StateVector k1, atol;
+  field(y0.data(), k1.data());
+  atol.fill(1.0);
+  // Only v_x has an error estimate (x is integrated exactly): |e_v| = RMS × √(state size).
+  const auto estimate = [](const AdaptiveTrial& t) { return t.error_norm * std::sqrt(double(kStateSize)); };
+  const AdaptiveTrial dp = dp54_step(stone, env, y0, k1, 1.0, nullptr, atol, 0.0, &field);
+  const double dp_error = dp.y1[kVelocity] - (1 - f);
+  BOOST_TEST(dp_error == 0.25 - 35.0 / 384, boost::test_tools::tolerance(kRoundoff));
+  BOOST_TEST(estimate(dp) == 71.0 / 57600, boost::test_tools::tolerance(kRoundoff));
+  BOOST_TEST(std::abs(dp_error) > 100 * estimate(dp));
+  const AdaptiveTrial bs = bs32_step(stone, env, y0, k1, 1.0, nullptr, atol, 0.0, &field);
+  const double bs_error = bs.y1[kVelocity] - (1 - f);
+  BOOST_TEST(bs_error == 1.0 / 36, boost::test_tools::tolerance(kRoundoff));
+  BOOST_TEST(estimate(bs) == 5.0 / 72, boost::test_tools::tolerance(kRoundoff));
+  BOOST_TEST(estimate(bs) >= std::abs(bs_error));
+  // And the default kinks follow: dp54 cuts at every switch, bs32 at the crossings.
+  BOOST_TEST((default_kink_steps(Scheme::dp54) == KinkSteps::all));
+  BOOST_TEST((default_kink_steps(Scheme::bs32) == KinkSteps::crossings));
+}
+
 BOOST_AUTO_TEST_CASE(the_pairs_step_sizes_follow_their_orders) {
   // Oracle: the step-size rule h · clamp(0.9 err^(−1/(q+1)), 0.2, 5) (Hairer, Nørsett & Wanner
   // §II.4, Eq. 4.13) with q the embedded order: 2 for bs32, 4 for dp54. Closed form at three

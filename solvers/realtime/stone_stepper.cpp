@@ -70,7 +70,10 @@ bool parse_kink_steps(const std::string& s, KinkSteps& out) {
   return false;
 }
 
-KinkSteps default_kink_steps(Scheme s) { return is_adaptive(s) ? KinkSteps::crossings : KinkSteps::none; }
+KinkSteps default_kink_steps(Scheme s) {
+  if (s == Scheme::dp54) return KinkSteps::all;
+  return is_adaptive(s) ? KinkSteps::crossings : KinkSteps::none;
+}
 
 namespace {
 

@@ -485,7 +485,7 @@ void add_bench(CLI::App& app) {
   cmd->add_option("--sweep-scheme", a->sweep_scheme,
                   "The sweep's adaptive scheme: bs32 (Bogacki–Shampine 3(2)) or dp54 (Dormand–Prince 5(4))")
       ->capture_default_str();
-  a->sweep_kinks_option = cmd->add_option("--sweep-kinks", a->sweep_kinks, "Which kinks end the sweep's steps: none, crossings or all (default: the scheme's own, crossings for bs32)");
+  a->sweep_kinks_option = cmd->add_option("--sweep-kinks", a->sweep_kinks, "Which kinks end the sweep's steps: none, crossings or all (default: the scheme's own, crossings for bs32, all for dp54)");
   a->repeats_option =
       cmd->add_option("--repeats", a->repeats, "Runs of the scene and of the sweep (the best is reported; --quick: 1 unless given)")
           ->capture_default_str();
