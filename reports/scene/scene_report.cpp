@@ -368,7 +368,8 @@ SectionOutput speed_section(const Record& s, int number) {
   // The sweep's stepper: the adaptive scheme by its tolerance, a fixed one by its contact step
   // (records written before the sweep named its scheme: the contact step).
   auto sweep_stepper_words = [](const Record& r) {
-    if (r.has_text("sweep_scheme") && r.text("sweep_scheme") == "bs32") return "bs32, rtol " + fmt(r.number("sweep_rtol"), 2);
+    if (r.has_text("sweep_scheme") && (r.text("sweep_scheme") == "bs32" || r.text("sweep_scheme") == "dp54"))
+      return r.text("sweep_scheme") + ", rtol " + fmt(r.number("sweep_rtol"), 2);
     return (r.has_text("sweep_scheme") ? r.text("sweep_scheme") + ", " : std::string()) + "contact step " +
            fmt(r.number("sweep_contact_dt_s"), 2) + " s";
   };

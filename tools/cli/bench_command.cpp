@@ -16,7 +16,7 @@
 // untimed, the fraction of its throws whose bounce count equals CVODE's where CVODE (BDF, the case's
 // reference settings) at rtol = atol 1e-8 and 1e-10 agrees, and the same fraction apart on the
 // throws whose CVODE solution has no flight shorter than 1 ms (kShortFlight_s).
-// The real-time budget (bs32 at the same tolerance, at most N right-hand sides per 1/90 s frame),
+// The real-time budget (the sweep's scheme at the same tolerance, at most N right-hand sides per 1/90 s frame),
 // untimed, on the same throws at N = 16 … 2048: per N the throws keeping CVODE's agreed count, the
 // steps the budget forced, the largest error ratio accepted and the CPU a frame costs at most
 // (N × thread CPU per right-hand side); and the smallest N at which, and at every larger one, the
@@ -433,8 +433,8 @@ void bench(const BenchArgs& a) {
               g(cvode.fraction_without_short_flight(), 4).c_str());
   std::printf("sweep passivity: the largest energy gain over a contact is %s J; %ld of %ld throws gain energy in a contact\n",
               g(h.sweep.max_energy_gain_J).c_str(), h.sweep.throws_gaining_energy, h.sweep.throws);
-  std::printf("real-time budget (bs32 rtol %s, at most N right-hand sides per %s ms frame; CPU: thread CPU of the same runs):\n",
-              g(o.sweep.base.realtime.rtol).c_str(), g(1e3 * bo.frame_dt_s).c_str());
+  std::printf("real-time budget (%s rtol %s, at most N right-hand sides per %s ms frame; CPU: thread CPU of the same runs):\n",
+              to_string(o.sweep.base.realtime.scheme), g(o.sweep.base.realtime.rtol).c_str(), g(1e3 * bo.frame_dt_s).c_str());
   std::printf("  %6s %22s %14s %16s %20s %20s %22s\n", "N", "counts = CVODE's", "forced steps", "worst error ratio",
               "frame CPU bound µs", "mean frame CPU µs", "energy gain J (throws)");
   for (const FrameBudgetRung& r : ladder)
