@@ -121,6 +121,22 @@ template <class Real, class T, bool Diagonal, bool Defect, bool IncrementForm>
   }
 }
 
+// The column form of the float64 update with corners (leapfrog_kernel.hpp): the column value
+// q = wd·ud + wo·z of a cell, ud = z[k − w] + z[k + w] its column's sum above and below, and the
+// update from q[k − 1] + q[k + 1] (`sides`), on a vector or a scalar alike.
+template <class Real, class T>
+[[gnu::always_inline]] inline T column(T ud, T zc, Real wo, Real wd) {
+  return wd * ud + wo * zc;
+}
+template <class Real, class T>
+[[gnu::always_inline]] inline T column_update(T sides, T ud, T zc, T zm, Real wc, Real wo, Real wp) {
+  return ((sides + wo * ud) + wc * zc) - wp * zm;
+}
+// Whether a path evaluates the column form: float64 with corners (the float32 increment form and
+// the five-point stencils keep the form of update()).
+template <class Real, bool Diagonal>
+inline constexpr bool kColumnForm = std::is_same_v<Real, double> && Diagonal;
+
 // The activity of one vector of results r over the old values zc: the bit patterns of |r| and
 // |r − zc| (sign cleared), whose integer order is the numbers' order with NaN above ∞ above all.
 template <class S>
@@ -202,18 +218,34 @@ template <int Bytes, class Real, bool Diagonal, bool Defect, bool Activity>
       // shuffles where four would do the rows one by one.
       V mid0 = load<V>(z - L), mid1 = load<V>(z);
       V ud0 = load<V>(z - w - L) + load<V>(z + w - L), ud1 = load<V>(z - w) + load<V>(z + w);
+      // The column form shifts one stream (q), the other form two (the row and ud).
+      V q0{}, q1{};
       Sides<S> mid_sides, ud_sides;
-      mid_sides.start(mid0, mid1);
-      ud_sides.start(ud0, ud1);
+      if constexpr (kColumnForm<Real, Diagonal>) {
+        q0 = column<Real>(ud0, mid0, wo, wd);
+        q1 = column<Real>(ud1, mid1, wo, wd);
+        mid_sides.start(q0, q1);
+      } else {
+        mid_sides.start(mid0, mid1);
+        ud_sides.start(ud0, ud1);
+      }
       for (; k + L <= n; k += L) {
         __builtin_prefetch(z + k + w + STONESKIP_PF, 0, 3);
         __builtin_prefetch(zp + k + STONESKIP_PF, 1, 3);
         const V mid2 = load<V>(z + k + L), ud2 = load<V>(z + k - w + L) + load<V>(z + k + w + L);
         const V zc = mid1;
-        const V orth = mid_sides.sum(mid0, mid1, mid2) + ud1;
-        V diag{};
-        if constexpr (Diagonal) diag = ud_sides.sum(ud0, ud1, ud2);
-        const V r = update<Real, V, Diagonal, Defect, increment_form>(zc, orth, diag, load<V>(zp + k), wc, wo, wd, wp, wx);
+        V r;
+        if constexpr (kColumnForm<Real, Diagonal>) {
+          const V q2 = column<Real>(ud2, mid2, wo, wd);
+          r = column_update<Real>(mid_sides.sum(q0, q1, q2), ud1, zc, load<V>(zp + k), wc, wo, wp);
+          q0 = q1;
+          q1 = q2;
+        } else {
+          const V orth = mid_sides.sum(mid0, mid1, mid2) + ud1;
+          V diag{};
+          if constexpr (Diagonal) diag = ud_sides.sum(ud0, ud1, ud2);
+          r = update<Real, V, Diagonal, Defect, increment_form>(zc, orth, diag, load<V>(zp + k), wc, wo, wd, wp, wx);
+        }
         std::memcpy(zp + k, &r, sizeof r);
         if constexpr (Activity) {
           track<S>(r, zc, vmax);
@@ -229,11 +261,18 @@ template <int Bytes, class Real, bool Diagonal, bool Defect, bool Activity>
         __builtin_prefetch(z + k + w + STONESKIP_PF, 0, 3);
         __builtin_prefetch(zp + k + STONESKIP_PF, 1, 3);
         const V zc = load<V>(z + k);
-        const V orth = (load<V>(z + k - 1) + load<V>(z + k + 1)) + (load<V>(z + k - w) + load<V>(z + k + w));
-        V diag{};
-        if constexpr (Diagonal)
-          diag = (load<V>(z + k - w - 1) + load<V>(z + k + w - 1)) + (load<V>(z + k - w + 1) + load<V>(z + k + w + 1));
-        const V r = update<Real, V, Diagonal, Defect, increment_form>(zc, orth, diag, load<V>(zp + k), wc, wo, wd, wp, wx);
+        V r;
+        if constexpr (kColumnForm<Real, Diagonal>) {
+          const V ql = column<Real>(load<V>(z + k - w - 1) + load<V>(z + k + w - 1), load<V>(z + k - 1), wo, wd);
+          const V qr = column<Real>(load<V>(z + k - w + 1) + load<V>(z + k + w + 1), load<V>(z + k + 1), wo, wd);
+          r = column_update<Real>(ql + qr, load<V>(z + k - w) + load<V>(z + k + w), zc, load<V>(zp + k), wc, wo, wp);
+        } else {
+          const V orth = (load<V>(z + k - 1) + load<V>(z + k + 1)) + (load<V>(z + k - w) + load<V>(z + k + w));
+          V diag{};
+          if constexpr (Diagonal)
+            diag = (load<V>(z + k - w - 1) + load<V>(z + k + w - 1)) + (load<V>(z + k - w + 1) + load<V>(z + k + w + 1));
+          r = update<Real, V, Diagonal, Defect, increment_form>(zc, orth, diag, load<V>(zp + k), wc, wo, wd, wp, wx);
+        }
         std::memcpy(zp + k, &r, sizeof r);
         if constexpr (Activity) {
           track<S>(r, zc, vmax);
@@ -245,10 +284,17 @@ template <int Bytes, class Real, bool Diagonal, bool Defect, bool Activity>
   Int smax = 0;
   for (; k < n; ++k) {
     const Real zc = z[k];
-    const Real orth = (z[k - 1] + z[k + 1]) + (z[k - w] + z[k + w]);
-    Real diag = 0;
-    if constexpr (Diagonal) diag = (z[k - w - 1] + z[k + w - 1]) + (z[k - w + 1] + z[k + w + 1]);
-    const Real r = update<Real, Real, Diagonal, Defect, increment_form>(zc, orth, diag, zp[k], wc, wo, wd, wp, wx);
+    Real r;
+    if constexpr (kColumnForm<Real, Diagonal>) {
+      const Real ql = column<Real>(z[k - w - 1] + z[k + w - 1], z[k - 1], wo, wd);
+      const Real qr = column<Real>(z[k - w + 1] + z[k + w + 1], z[k + 1], wo, wd);
+      r = column_update<Real>(ql + qr, z[k - w] + z[k + w], zc, zp[k], wc, wo, wp);
+    } else {
+      const Real orth = (z[k - 1] + z[k + 1]) + (z[k - w] + z[k + w]);
+      Real diag = 0;
+      if constexpr (Diagonal) diag = (z[k - w - 1] + z[k + w - 1]) + (z[k - w + 1] + z[k + w + 1]);
+      r = update<Real, Real, Diagonal, Defect, increment_form>(zc, orth, diag, zp[k], wc, wo, wd, wp, wx);
+    }
     zp[k] = r;
     if constexpr (Activity) {
       const Int sign = Int(1) << (8 * sizeof(Real) - 1);
@@ -279,8 +325,10 @@ template <int Bytes, class Real, bool Diagonal, bool Defect, bool Activity>
 // neighbours of the middle rows are unaligned loads (no shuffles). The sums above and below,
 // ud = z[k − w] + z[k + w], enter Σ_orth as they are and Σ_diag shifted by ±1: with `ShuffleUd` (z,
 // zp and w aligned to a vector) they are shifted out of adjacent ud vectors (two shuffles, one
-// addition fewer), otherwise the corners are loaded and added like the scalar tail. Either way
-// every cell's operands and the order of its operations are the scalar expression's.
+// addition fewer), otherwise the corners are loaded and added like the scalar tail. In the column
+// form (float64 with corners) the column values q = wd·ud + wo·z of each row are what is shifted
+// (with `ShuffleUd`: no ±1 loads at all) or loaded at k ± 1. Either way every cell's operands and
+// the order of its operations are the scalar expression's.
 template <int Bytes, class Real, bool Diagonal, bool Defect, bool ShuffleUd>
 [[gnu::always_inline]] inline void row_pair_body(Real* __restrict zp, const Real* __restrict z, std::ptrdiff_t n,
                                                  std::ptrdiff_t w, const LeapfrogWeights<Real>& c) {
@@ -298,12 +346,39 @@ template <int Bytes, class Real, bool Diagonal, bool Defect, bool ShuffleUd>
     V ac = load<V>(a), bc = load<V>(b);
     V uda0 = load<V>(a - w - L) + load<V>(b - L), uda1 = load<V>(a - w) + bc;
     V udb0 = load<V>(a - L) + load<V>(b + w - L), udb1 = ac + load<V>(b + w);
+    // The column form shifts the column values q of each row (and loads no ±1 neighbours).
+    V qa0{}, qa1{}, qb0{}, qb1{};
     Sides<S> sides_a, sides_b;
-    sides_a.start(uda0, uda1);
-    sides_b.start(udb0, udb1);
+    if constexpr (kColumnForm<Real, Diagonal>) {
+      qa0 = column<Real>(uda0, load<V>(a - L), wo, wd);
+      qa1 = column<Real>(uda1, ac, wo, wd);
+      qb0 = column<Real>(udb0, load<V>(b - L), wo, wd);
+      qb1 = column<Real>(udb1, bc, wo, wd);
+      sides_a.start(qa0, qa1);
+      sides_b.start(qb0, qb1);
+    } else {
+      sides_a.start(uda0, uda1);
+      sides_b.start(udb0, udb1);
+    }
     auto step = [&](std::ptrdiff_t j) __attribute__((always_inline)) {
       const V an = load<V>(a + j + L), bn = load<V>(b + j + L);
       const V uda2 = load<V>(a - w + j + L) + bn, udb2 = an + load<V>(b + w + j + L);
+      if constexpr (kColumnForm<Real, Diagonal>) {
+        const V qa2 = column<Real>(uda2, an, wo, wd), qb2 = column<Real>(udb2, bn, wo, wd);
+        const V ra = column_update<Real>(sides_a.sum(qa0, qa1, qa2), uda1, ac, load<V>(pa + j), wc, wo, wp);
+        const V rb = column_update<Real>(sides_b.sum(qb0, qb1, qb2), udb1, bc, load<V>(pb + j), wc, wo, wp);
+        std::memcpy(pa + j, &ra, sizeof ra);
+        std::memcpy(pb + j, &rb, sizeof rb);
+        ac = an;
+        bc = bn;
+        uda1 = uda2;
+        udb1 = udb2;
+        qa0 = qa1;
+        qa1 = qa2;
+        qb0 = qb1;
+        qb1 = qb2;
+        return;
+      }
       const V orth_a = (load<V>(a + j - 1) + load<V>(a + j + 1)) + uda1;
       const V orth_b = (load<V>(b + j - 1) + load<V>(b + j + 1)) + udb1;
       V diag_a{}, diag_b{};
@@ -339,6 +414,17 @@ template <int Bytes, class Real, bool Diagonal, bool Defect, bool ShuffleUd>
       __builtin_prefetch(pb + k + STONESKIP_PF, 1, 3);
       const V al = load<V>(a + k - 1), ac = load<V>(a + k), ar = load<V>(a + k + 1);
       const V bl = load<V>(b + k - 1), bc = load<V>(b + k), br = load<V>(b + k + 1);
+      if constexpr (kColumnForm<Real, Diagonal>) {
+        const V qal = column<Real>(load<V>(a - w + k - 1) + bl, al, wo, wd);
+        const V qar = column<Real>(load<V>(a - w + k + 1) + br, ar, wo, wd);
+        const V qbl = column<Real>(al + load<V>(b + w + k - 1), bl, wo, wd);
+        const V qbr = column<Real>(ar + load<V>(b + w + k + 1), br, wo, wd);
+        const V ra = column_update<Real>(qal + qar, load<V>(a - w + k) + bc, ac, load<V>(pa + k), wc, wo, wp);
+        const V rb = column_update<Real>(qbl + qbr, ac + load<V>(b + w + k), bc, load<V>(pb + k), wc, wo, wp);
+        std::memcpy(pa + k, &ra, sizeof ra);
+        std::memcpy(pb + k, &rb, sizeof rb);
+        continue;
+      }
       const V orth_a = (al + ar) + (load<V>(a - w + k) + bc);
       const V orth_b = (bl + br) + (ac + load<V>(b + w + k));
       V diag_a{}, diag_b{};
