@@ -26,6 +26,30 @@ std::string tally_words(double changed, double none, double same, double undecid
   return s;
 }
 
+// How the verdicts are tested, and at which levels. Records since the family levels store them;
+// older ones tested every verdict at 95 % on its own, and keep that text.
+std::string levels_words(const Record& m) {
+  const std::string test =
+      "Test: the paired t interval of the mean difference of the counts; a difference is established only where the "
+      "interval excludes 0, and where no pair's difference varies (an interval without width) only where the exact "
+      "sign-flip test's p is under the level's α; where a run of either ensemble failed, nothing is decided. ";
+  if (!m.has_number("mirror_confidence"))
+    return test + "Each verdict holds at 95 %: of this section's " + fmt(m.number("verdict_count"), 4) + " verdicts, about " +
+           fmt(0.05 * m.number("verdict_count"), 2) + " could say \"different\" by chance where there is no difference.";
+  const double family = m.number("family_confidence");
+  const std::size_t cuts = m.at("verdicts").strings("cut_order").size(), mirrors = m.at("verdicts").strings("mirror_order").size();
+  std::string s = test + "Against its cut's reference each verdict is at " + fmt(100 * m.number("reference_confidence"), 4) +
+                  " % on its own: a chance \"different\" there can only make a mesh look unsettled, the cautious side of "
+                  "the settled N below, where a stricter level would make settling easier by chance.";
+  auto family_words = [&](const std::string& what, std::size_t n, double each) {
+    return " The " + fmt(double(n), 4) + " " + what + " claim a difference where they find one, so they are one family held "
+           "to " + fmt(100 * family, 4) + " % together (Bonferroni): each at " + fmt(100 * each, 4) + " %.";
+  };
+  if (cuts > 0) s += family_words("comparisons of the two cuts", cuts, m.number("cut_confidence"));
+  if (mirrors > 0) s += family_words("mirror-pair comparisons", mirrors, m.number("mirror_confidence"));
+  return s;
+}
+
 }  // namespace
 
 SectionOutput mesh_section(const Record& m) {
@@ -55,11 +79,7 @@ SectionOutput mesh_section(const Record& m) {
              " (the same factors for every mesh, so members pair up), solved by " + m.text("solver") +
              ". Each mesh is compared with its cut's reference, the same cut at the largest N; where both cuts reach "
              "that N, the two references are compared with each other; and where the throws hold a spin and its mirror "
-             "image (−spin, the same attack angle), each mesh's two ensembles are compared. Test: the paired t interval "
-             "(95 %) of the mean difference of the counts; a difference is established only where the interval "
-             "excludes 0; where a run of either ensemble failed, nothing is decided. Each verdict holds at 95 %: of "
-             "this section's " + fmt(m.number("verdict_count"), 4) + " verdicts, about " +
-             fmt(0.05 * m.number("verdict_count"), 2) + " could say \"different\" by chance where there is no difference.");
+             "image (−spin, the same attack angle), each mesh's two ensembles are compared. " + levels_words(m));
   // Mean ± sd per mesh (rows) and throw (columns).
   const auto thr = counts.column("throw"), spin = counts.column("spin_rev_s"), attack = counts.column("attack_angle_deg"),
              mesh = counts.column("mesh"), mean = counts.column("count_mean"), sd = counts.column("count_sd"),

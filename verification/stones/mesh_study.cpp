@@ -1,6 +1,7 @@
 #include "verification/stones/mesh_study.hpp"
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -28,6 +29,7 @@ bool MeshStudyOptions::valid(std::string* why) const {
   if (members < 2 || members % 2 != 0 || members > 1000) return fail("mesh study members must be even, in [2, 1000]");
   if (!(perturbation_smallest > 0) || !(perturbation_largest >= perturbation_smallest) || !(perturbation_largest < 1))
     return fail("mesh study perturbations must satisfy 0 < smallest <= largest < 1");
+  if (!(family_confidence > 0 && family_confidence < 1)) return fail("mesh study family_confidence must be in (0, 1)");
   return true;
 }
 
@@ -77,9 +79,24 @@ std::string throw_name(double spin, double attack) {
   return b;
 }
 
-// The verdict of two ensembles of one throw (a and b), with its reason.
+// The two cuts' reference meshes (diagonal, centre; meshes.size() where a cut has none).
+std::pair<std::size_t, std::size_t> cut_references(const MeshStudyOptions& o) {
+  std::size_t ref_diagonal = o.meshes.size(), ref_centre = o.meshes.size();
+  for (std::size_t m = 0; m < o.meshes.size(); ++m)
+    if (o.reference_of(m) == m) (o.meshes[m].split == RimSplit::centre ? ref_centre : ref_diagonal) = m;
+  return {ref_diagonal, ref_centre};
+}
+
+// Whether the two cuts' references share one N (then they are compared with each other).
+bool shared_reference_n(const MeshStudyOptions& o) {
+  const auto [d, c] = cut_references(o);
+  return d < o.meshes.size() && c < o.meshes.size() && o.meshes[d].segments == o.meshes[c].segments;
+}
+
+// The verdict of two ensembles of one throw (a and b), with its reason, at the two-sided level
+// `confidence`.
 const Record& compare(Record& verdicts, const std::string& key, const std::vector<double>& a, const std::vector<double>& b,
-                      const std::string& what) {
+                      const std::string& what, double confidence) {
   const Summary sa = summary_of(a), sb = summary_of(b);
   // The members pair up by their speed factor; those where either run failed leave the pairs (and
   // any failure leaves the verdict undecided).
@@ -91,7 +108,7 @@ const Record& compare(Record& verdicts, const std::string& key, const std::vecto
       pb.push_back(b[k]);
       unequal += a[k] != b[k] ? 1 : 0;
     }
-  MeanDifference d = paired_difference(pa, pb);
+  MeanDifference d = paired_difference(pa, pb, confidence);
   Record in;
   in.set("valid", d.valid);
   in.set("difference_low", d.valid ? d.low : std::nan(""));
@@ -100,14 +117,22 @@ const Record& compare(Record& verdicts, const std::string& key, const std::vecto
   in.set("exact_p", d.exact_p);  // no spread: the exact sign-flip test (ensemble_difference.hpp)
   in.set("alpha", d.alpha);
   in.set("failed_runs", sa.failed + sb.failed);
-  char reason[512];
+  char reason[640];
   in.set("unequal_pairs", unequal);
   std::snprintf(reason, sizeof reason,
                 "%s: %.3g ± %.2g against %.3g ± %.2g bounces (mean ± sd over %zu members each; %d and %d failed); "
-                "%d of %zu pairs differ; mean difference %.3g, 95 %% interval [%.3g, %.3g] (paired t)",
+                "%d of %zu pairs differ; mean difference %.3g, %.4g %% interval [%.3g, %.3g] (paired t)",
                 what.c_str(), sa.mean, sa.sd, sb.mean, sb.sd, a.size(), sa.failed, sb.failed, unequal, pa.size(),
-                d.valid ? d.difference : std::nan(""), d.valid ? d.low : std::nan(""), d.valid ? d.high : std::nan(""));
-  return decide_verdict(verdicts, key, "ensemble_count_difference", in, reason);
+                d.valid ? d.difference : std::nan(""), 100 * confidence, d.valid ? d.low : std::nan(""),
+                d.valid ? d.high : std::nan(""));
+  std::string why = reason;
+  if (d.valid && std::isfinite(d.exact_p)) {
+    char exact[160];
+    std::snprintf(exact, sizeof exact, "; no pair's difference varies, so the exact sign-flip test decides: p = %.4g against α = %.4g",
+                  d.exact_p, d.alpha);
+    why += exact;
+  }
+  return decide_verdict(verdicts, key, "ensemble_count_difference", in, why);
 }
 
 }  // namespace
@@ -157,6 +182,21 @@ Record mesh_study_findings(const std::vector<MeshThrowRuns>& runs, const MeshStu
   r.set("members", o.members);
   r.set("perturbation_smallest", o.perturbation_smallest);
   r.set("perturbation_largest", o.perturbation_largest);
+  // The levels (mesh_study.hpp): against the reference each verdict at 95 % on its own; the cuts'
+  // and the mirror pairs' verdicts each a family held to family_confidence together (Bonferroni).
+  const bool cuts_compared = shared_reference_n(o);
+  std::size_t mirror_comparisons = 0;
+  for (const MeshThrowRuns& t : runs)
+    for (const MeshThrowRuns& u : runs)
+      if (t.spin_rev_s > 0 && u.spin_rev_s == -t.spin_rev_s && u.attack_angle_deg == t.attack_angle_deg)
+        mirror_comparisons += o.meshes.size();
+  auto family_level = [&](std::size_t m) { return 1 - (1 - o.family_confidence) / double(std::max<std::size_t>(m, 1)); };
+  const double reference_level = 0.95, cut_level = family_level(cuts_compared ? runs.size() : 0),
+               mirror_level = family_level(mirror_comparisons);
+  r.set("family_confidence", o.family_confidence);
+  r.set("reference_confidence", reference_level);
+  r.set("cut_confidence", cut_level);
+  r.set("mirror_confidence", mirror_level);
   Table meshes{{"segments", "centre_cut", "triangles", "mass_kg", "reference", "changed", "not_established", "same", "undecided",
                 "mirror_pairs", "mirror_different", "mirror_not_established", "mirror_same", "mirror_undecided"},
                {}};
@@ -189,7 +229,7 @@ Record mesh_study_findings(const std::vector<MeshThrowRuns>& runs, const MeshStu
       char key[64];
       std::snprintf(key, sizeof key, "throw_%zu_mesh_%zu", t + 1, m + 1);
       const Record& v = compare(verdicts, key, run.counts[m], run.counts[ref],
-                                mesh_name(o.meshes[m]) + " against " + mesh_name(o.meshes[ref]));
+                                mesh_name(o.meshes[m]) + " against " + mesh_name(o.meshes[ref]), reference_level);
       ++tally[m][tally_of(v.text("verdict"))];
       if (v.text("verdict") == "no difference established" && v.has_number("exact_p") && std::isfinite(v.number("exact_p")))
         ++too_few[m];
@@ -198,17 +238,14 @@ Record mesh_study_findings(const std::vector<MeshThrowRuns>& runs, const MeshStu
     }
   }
   // The two cuts' references against each other, where they share one N (the cut alone).
-  std::size_t ref_diagonal = o.meshes.size(), ref_centre = o.meshes.size();
-  for (std::size_t m = 0; m < o.meshes.size(); ++m)
-    if (o.reference_of(m) == m) (o.meshes[m].split == RimSplit::centre ? ref_centre : ref_diagonal) = m;
+  const auto [ref_diagonal, ref_centre] = cut_references(o);
   std::vector<std::string> cut_order, cut_subjects;
-  if (ref_diagonal < o.meshes.size() && ref_centre < o.meshes.size() &&
-      o.meshes[ref_diagonal].segments == o.meshes[ref_centre].segments)
+  if (cuts_compared)
     for (std::size_t t = 0; t < runs.size(); ++t) {
       char key[64];
       std::snprintf(key, sizeof key, "cuts_throw_%zu", t + 1);
       compare(verdicts, key, runs[t].counts[ref_diagonal], runs[t].counts[ref_centre],
-              mesh_name(o.meshes[ref_diagonal]) + " against " + mesh_name(o.meshes[ref_centre]));
+              mesh_name(o.meshes[ref_diagonal]) + " against " + mesh_name(o.meshes[ref_centre]), cut_level);
       cut_order.push_back(key);
       cut_subjects.push_back(throw_name(runs[t].spin_rev_s, runs[t].attack_angle_deg));
     }
@@ -224,7 +261,8 @@ Record mesh_study_findings(const std::vector<MeshThrowRuns>& runs, const MeshStu
         std::snprintf(key, sizeof key, "mirror_%zu_%zu_mesh_%zu", t + 1, u + 1, m + 1);
         const Record& v = compare(verdicts, key, runs[t].counts[m], runs[u].counts[m],
                                   mesh_name(o.meshes[m]) + ": " + throw_name(runs[t].spin_rev_s, runs[t].attack_angle_deg) +
-                                      " against its mirror image");
+                                      " against its mirror image",
+                                  mirror_level);
         ++tally[m][4 + tally_of(v.text("verdict"))];
         mirror_order.push_back(key);
         char subject[128];

@@ -10,10 +10,17 @@
 // A count is chaotic (it may change under a 1e-9 relative change of the speed), so each throw runs
 // as an ensemble (speed × 1 ± ε, ε log-spaced over [smallest, largest], the same factors for every
 // mesh) and two ensembles, whose members pair up by their speed factor, are compared by the paired
-// t interval (95 %) of the difference of their counts (verification/study/ensemble_difference.hpp;
+// t interval of the difference of their counts (verification/study/ensemble_difference.hpp;
 // rule ensemble_count_difference). Where the
 // throws hold a spin s and its mirror −s at one attack angle, each mesh's pair is compared the same
 // way: a difference is the mesh's hand.
+//
+// The levels. Against its cut's reference each verdict is at 95 % on its own: there a chance
+// "different" can only make a mesh look unsettled (the cautious side of the settled N), while a
+// stricter level would make settling easier by chance. The cuts' comparisons and the mirror pairs
+// claim a difference where they find one (the cut changes the count; the mesh shows its hand), so
+// each is one family held to family_confidence together (Bonferroni: each of its m verdicts at
+// 1 − (1 − family_confidence)/m).
 #include <string>
 #include <vector>
 
@@ -37,6 +44,7 @@ struct MeshStudyOptions {
   int members = 16;                         // perturbed throws per mesh and throw (even, ≥ 2)
   double perturbation_smallest = 1e-9;
   double perturbation_largest = 1e-4;
+  double family_confidence = 0.95;          // the cuts' verdicts, and the mirror pairs', each held together, (0, 1)
   bool valid(std::string* why = nullptr) const;
   // The reference of mesh m: the mesh of its cut with the largest N (m itself where it is that one).
   std::size_t reference_of(std::size_t m) const;

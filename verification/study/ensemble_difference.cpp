@@ -88,8 +88,9 @@ double fisher_exact_p(int failed_a, int n_a, int failed_b, int n_b) {
   return std::min(1.0, p);
 }
 
-MeanDifference paired_difference(const std::vector<double>& a, const std::vector<double>& b) {
+MeanDifference paired_difference(const std::vector<double>& a, const std::vector<double>& b, double confidence) {
   MeanDifference d;
+  d.alpha = 1 - confidence;
   d.n_a = static_cast<int>(a.size());
   d.n_b = static_cast<int>(b.size());
   if (a.size() != b.size() || d.n_a < 2) return d;
@@ -108,7 +109,7 @@ MeanDifference paired_difference(const std::vector<double>& a, const std::vector
   }
   d.dof = static_cast<double>(diff.size() - 1);
   const boost::math::students_t dist(d.dof);
-  const double t = boost::math::quantile(boost::math::complement(dist, 0.025));
+  const double t = boost::math::quantile(boost::math::complement(dist, 0.5 * (1 - confidence)));
   d.low = d.difference - t * d.standard_error;
   d.high = d.difference + t * d.standard_error;
   return d;

@@ -45,8 +45,8 @@ MeanDifference welch_difference(const std::vector<double>& a, const std::vector<
 // differences d_k = a_k − b_k, se = sd(d)/√n, ν = n − 1 (Student 1908). Members without spread in
 // d give the difference itself as the interval, decided by the exact sign-flip test: every d_k of
 // one sign has p = 2 / 2^n under the null (Fisher 1935, §21). a and b must have one size (≥ 2 to be valid);
-// mean_a, sd_a, mean_b, sd_b are each ensemble's own.
-MeanDifference paired_difference(const std::vector<double>& a, const std::vector<double>& b);
+// mean_a, sd_a, mean_b, sd_b are each ensemble's own. `confidence` as for welch_difference.
+MeanDifference paired_difference(const std::vector<double>& a, const std::vector<double>& b, double confidence = 0.95);
 
 // Fisher's exact test of two proportions (Fisher 1935, §12; the 2 × 2 table): failed_a of n_a
 // against failed_b of n_b. Given the failures in all, the number in the first group is

@@ -76,6 +76,13 @@ BOOST_AUTO_TEST_CASE(the_paired_interval_is_student_s_on_the_differences) {
   BOOST_TEST(shift.exact_p == 0.25);
   BOOST_TEST(!shift.established());
   BOOST_TEST(paired_difference({9, 10, 12, 9, 10, 12}, {8, 9, 11, 8, 9, 11}).established());
+  // At 99 % (a family's level): the same 6 pairs' p = 0.031 no longer establishes it, and the
+  // sleep pairs' interval widens by t_{0.995, 9} = 3.2498 (a t table's 4 decimals) standard errors.
+  BOOST_TEST(!paired_difference({9, 10, 12, 9, 10, 12}, {8, 9, 11, 8, 9, 11}, 0.99).established());
+  const MeanDifference d99 = paired_difference(a, b, 0.99);
+  BOOST_TEST(std::abs(d99.low - (d.difference - 3.2498 * d.standard_error)) <= 0.00005 * d.standard_error + 1e-12);
+  BOOST_TEST(std::abs(d99.high - (d.difference + 3.2498 * d.standard_error)) <= 0.00005 * d.standard_error + 1e-12);
+  BOOST_TEST(d99.alpha == 0.01, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(!paired_difference({8, 9}, {8}).valid);  // members must pair up
 }
 
