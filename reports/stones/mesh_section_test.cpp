@@ -6,22 +6,18 @@
 
 #include "reports/stones/report_sections.hpp"
 #include "verification/stones/mesh_study.hpp"
+#include "verification/stones/mesh_study_fixture.hpp"
 
 namespace stoneskip {
 namespace {
-
-MeshVariant prism(int segments, RimSplit split) {
-  const Mesh mesh = make_prism(0.03, 0.008, segments, split);
-  return MeshVariant{segments, split, make_stone(mesh, mass_properties_from_density(mesh, 2500.0), 0.03, "test prism")};
-}
 
 // Both cuts at N = 11 and 16, spins ±40 at one attack angle: 2 cut comparisons (one per throw)
 // and 4 mirror pairs (one per mesh), so each cut verdict at 97.5 % and each mirror verdict at
 // 98.75 %.
 Record mesh_record() {
   MeshStudyOptions o;
-  o.meshes = {prism(16, RimSplit::centre), prism(11, RimSplit::diagonal), prism(16, RimSplit::diagonal),
-              prism(11, RimSplit::centre)};
+  o.meshes = {test_prism_variant(16, RimSplit::centre), test_prism_variant(11, RimSplit::diagonal),
+              test_prism_variant(16, RimSplit::diagonal), test_prism_variant(11, RimSplit::centre)};
   o.spins_rev_s = {-40, 40};
   o.attack_angles_deg = {10};
   o.members = 6;

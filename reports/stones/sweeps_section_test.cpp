@@ -5,20 +5,16 @@
 
 #include "reports/stones/report_sections.hpp"
 #include "verification/stones/mesh_study.hpp"
+#include "verification/stones/mesh_study_fixture.hpp"
 
 namespace stoneskip {
 namespace {
-
-MeshVariant prism(int segments, RimSplit split) {
-  const Mesh mesh = make_prism(0.03, 0.008, segments, split);
-  return MeshVariant{segments, split, make_stone(mesh, mass_properties_from_density(mesh, 2500.0), 0.03, "test prism")};
-}
 
 // The diagonal cut at N = 11 (44 triangles) and 16 (64): two throws of 6 paired members, N = 11
 // different at the first (9 against 3 in every member) and the same at the second.
 Record mesh_record(int count_at_11) {
   MeshStudyOptions o;
-  o.meshes = {prism(11, RimSplit::diagonal), prism(16, RimSplit::diagonal)};
+  o.meshes = {test_prism_variant(11, RimSplit::diagonal), test_prism_variant(16, RimSplit::diagonal)};
   o.spins_rev_s = {20, 40};
   o.attack_angles_deg = {10};
   o.members = 6;
@@ -30,7 +26,7 @@ Record mesh_record(int count_at_11) {
 }
 
 // The base throw's record; its stone that of the N = 11 diagonal prism above unless said.
-Record sweeps_record(double triangles, double mass_kg = prism(11, RimSplit::diagonal).stone.mass.mass_kg) {
+Record sweeps_record(double triangles, double mass_kg = test_prism_variant(11, RimSplit::diagonal).stone.mass.mass_kg) {
   Record r;
   Record& b = r.child("base");
   b.set("label", std::string("test throw")).set("stone", std::string("prism")).set("mass_kg", mass_kg);

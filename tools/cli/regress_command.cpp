@@ -100,6 +100,9 @@ void add_regress(CLI::App& app) {
     }
     enforce_limits(estimate_regress(specs), *limits, "regress");
     std::printf("regress: %zu baseline%s\n", paths.size(), paths.size() == 1 ? "" : "s");
+    // Out before the sweeps: a signal ends the process without flushing stdio's buffer (a file's
+    // is not flushed line by line), and the line would be lost.
+    std::fflush(stdout);
     const auto results = run_bounce_sweeps(specs, ParallelOptions{*workers, "regress", terminal_progress()});
     int failed = 0;
     for (std::size_t i = 0; i < stored.size(); ++i) {

@@ -318,4 +318,30 @@ BOOST_AUTO_TEST_CASE(a_movie_interrupted_while_gnuplot_draws_leaves_no_frames_an
   }
 }
 
+BOOST_AUTO_TEST_CASE(an_interrupted_regress_keeps_the_line_it_printed_before_its_sweeps) {
+  // Oracle: what regress had printed when the signal came. Its first line ("regress: N
+  // baselines") is printed before the sweeps; with stdout a file, stdio holds it in a buffer that
+  // the signal's exit does not flush, so it was lost. The signal is sent once stderr shows the
+  // sweeps' progress, which comes after that line; the whole run takes about 30 s here.
+  Scratch s;
+  std::size_t baselines = 0;
+  for (const auto& e : fs::directory_iterator("cases/baselines")) baselines += e.path().extension() == ".toml" ? 1 : 0;
+  BOOST_REQUIRE(baselines > 1);
+  const auto t0 = std::chrono::steady_clock::now();
+  const pid_t pid = start({"regress"}, s.dir);
+  const auto give_up = t0 + std::chrono::seconds(60);
+  for (;;) {
+    std::ifstream err(s.dir / "stderr");
+    const std::string text((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+    if (text.find("regress (") != std::string::npos || std::chrono::steady_clock::now() > give_up) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ::kill(pid, SIGINT);
+  const Ended e = finish(pid, t0);
+  BOOST_TEST(e.status == 128 + SIGINT);  // stopped in its sweeps, not finished
+  std::ifstream out(s.dir / "stdout");
+  const std::string text((std::istreambuf_iterator<char>(out)), std::istreambuf_iterator<char>());
+  BOOST_TEST(text == "regress: " + std::to_string(baselines) + " baselines\n", "stdout: '" << text << "'");
+}
+
 BOOST_AUTO_TEST_SUITE_END()

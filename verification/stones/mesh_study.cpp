@@ -128,8 +128,9 @@ const Record& compare(Record& verdicts, const std::string& key, const std::vecto
   std::string why = reason;
   if (d.valid && std::isfinite(d.exact_p)) {
     char exact[160];
-    std::snprintf(exact, sizeof exact, "; no pair's difference varies, so the exact sign-flip test decides: p = %.4g against α = %.4g",
-                  d.exact_p, d.alpha);
+    std::snprintf(exact, sizeof exact,
+                  "; no pair's difference varies, so the exact sign-flip test decides: p = %.4g against α = %.4g", d.exact_p,
+                  d.alpha);
     why += exact;
   }
   return decide_verdict(verdicts, key, "ensemble_count_difference", in, why);

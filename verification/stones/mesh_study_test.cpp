@@ -10,16 +10,12 @@
 
 #include "verification/stones/convergence_throw.hpp"
 #include "verification/stones/mesh_study.hpp"
+#include "verification/stones/mesh_study_fixture.hpp"
 #include "verification/study/ensemble_difference.hpp"
 #include "verification/study/verdict_rules.hpp"
 
 namespace stoneskip {
 namespace {
-
-MeshVariant prism(int segments, RimSplit split) {
-  const Mesh mesh = make_prism(0.03, 0.008, segments, split);
-  return MeshVariant{segments, split, make_stone(mesh, mass_properties_from_density(mesh, 2500.0), 0.03, "test prism")};
-}
 
 BOOST_AUTO_TEST_SUITE(mesh_study)
 
@@ -42,8 +38,8 @@ BOOST_AUTO_TEST_CASE(the_count_difference_rule_decides_on_the_interval_and_not_o
 BOOST_AUTO_TEST_CASE(each_mesh_is_compared_with_its_cut_s_finest_on_paired_members) {
   // Listed finest first: each mesh's reference is the same cut at the largest N, whatever the order.
   MeshStudyOptions o;
-  o.meshes = {prism(16, RimSplit::centre), prism(11, RimSplit::diagonal), prism(16, RimSplit::diagonal),
-              prism(11, RimSplit::centre)};
+  o.meshes = {test_prism_variant(16, RimSplit::centre), test_prism_variant(11, RimSplit::diagonal),
+              test_prism_variant(16, RimSplit::diagonal), test_prism_variant(11, RimSplit::centre)};
   o.spins_rev_s = {-60, 60};
   o.attack_angles_deg = {10};
   o.members = 6;  // constant differences need 6 paired members for the exact test (2/2⁶ ≤ 0.05)
@@ -111,7 +107,8 @@ BOOST_AUTO_TEST_CASE(a_cut_settles_from_the_smallest_n_whose_meshes_all_agree_wi
   // Diagonal cut at N = 11, 16, 32: N = 16 and 32 agree at every throw, N = 11 does not: settled
   // from 16. A failed run at N = 16 would leave it undecided, and then nothing settles.
   MeshStudyOptions o;
-  o.meshes = {prism(11, RimSplit::diagonal), prism(16, RimSplit::diagonal), prism(32, RimSplit::diagonal)};
+  o.meshes = {test_prism_variant(11, RimSplit::diagonal), test_prism_variant(16, RimSplit::diagonal),
+              test_prism_variant(32, RimSplit::diagonal)};
   o.spins_rev_s = {40};
   o.attack_angles_deg = {10};
   o.members = 2;
@@ -135,10 +132,12 @@ BOOST_AUTO_TEST_CASE(a_stone_that_is_its_own_mirror_image_counts_the_same_either
   // cut's counts differ by more than 2 either way round; 40 rev/s served before the Wagner rise was
   // confined to the underside, when the pair was 9 and 12.)
   MeshStudyOptions o;
-  o.meshes = {prism(11, RimSplit::diagonal), prism(11, RimSplit::centre)};
+  o.meshes = {test_prism_variant(11, RimSplit::diagonal), test_prism_variant(11, RimSplit::centre)};
   o.spins_rev_s = {-60, 60};
   o.attack_angles_deg = {10};
-  o.members = 8;  // enough for the exact test to establish a difference without spread at the mirror family's level (2/2⁸ ≤ 0.05/2)
+  // 8 members: enough for the exact test to establish a difference without spread at the mirror
+  // family's level (2/2⁸ ≤ 0.05/2).
+  o.members = 8;
   ThrowProblem base = convergence_throw();
   base.parameters.attack_angle_deg = 10;  // cases/spin_sweep_base.toml's throw, under its default law
   base.environment.water_law = WaterLaw::planing;
