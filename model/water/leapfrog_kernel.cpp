@@ -363,31 +363,26 @@ template <int Bytes, class Real, bool Diagonal, bool Defect, bool ShuffleUd>
     auto step = [&](std::ptrdiff_t j) __attribute__((always_inline)) {
       const V an = load<V>(a + j + L), bn = load<V>(b + j + L);
       const V uda2 = load<V>(a - w + j + L) + bn, udb2 = an + load<V>(b + w + j + L);
+      V ra, rb;
       if constexpr (kColumnForm<Real, Diagonal>) {
         const V qa2 = column<Real>(uda2, an, wo, wd), qb2 = column<Real>(udb2, bn, wo, wd);
-        const V ra = column_update<Real>(sides_a.sum(qa0, qa1, qa2), uda1, ac, load<V>(pa + j), wc, wo, wp);
-        const V rb = column_update<Real>(sides_b.sum(qb0, qb1, qb2), udb1, bc, load<V>(pb + j), wc, wo, wp);
-        std::memcpy(pa + j, &ra, sizeof ra);
-        std::memcpy(pb + j, &rb, sizeof rb);
-        ac = an;
-        bc = bn;
-        uda1 = uda2;
-        udb1 = udb2;
+        ra = column_update<Real>(sides_a.sum(qa0, qa1, qa2), uda1, ac, load<V>(pa + j), wc, wo, wp);
+        rb = column_update<Real>(sides_b.sum(qb0, qb1, qb2), udb1, bc, load<V>(pb + j), wc, wo, wp);
         qa0 = qa1;
         qa1 = qa2;
         qb0 = qb1;
         qb1 = qb2;
-        return;
+      } else {
+        const V orth_a = (load<V>(a + j - 1) + load<V>(a + j + 1)) + uda1;
+        const V orth_b = (load<V>(b + j - 1) + load<V>(b + j + 1)) + udb1;
+        V diag_a{}, diag_b{};
+        if constexpr (Diagonal) {
+          diag_a = sides_a.sum(uda0, uda1, uda2);
+          diag_b = sides_b.sum(udb0, udb1, udb2);
+        }
+        ra = update<Real, V, Diagonal, Defect, increment_form>(ac, orth_a, diag_a, load<V>(pa + j), wc, wo, wd, wp, wx);
+        rb = update<Real, V, Diagonal, Defect, increment_form>(bc, orth_b, diag_b, load<V>(pb + j), wc, wo, wd, wp, wx);
       }
-      const V orth_a = (load<V>(a + j - 1) + load<V>(a + j + 1)) + uda1;
-      const V orth_b = (load<V>(b + j - 1) + load<V>(b + j + 1)) + udb1;
-      V diag_a{}, diag_b{};
-      if constexpr (Diagonal) {
-        diag_a = sides_a.sum(uda0, uda1, uda2);
-        diag_b = sides_b.sum(udb0, udb1, udb2);
-      }
-      const V ra = update<Real, V, Diagonal, Defect, increment_form>(ac, orth_a, diag_a, load<V>(pa + j), wc, wo, wd, wp, wx);
-      const V rb = update<Real, V, Diagonal, Defect, increment_form>(bc, orth_b, diag_b, load<V>(pb + j), wc, wo, wd, wp, wx);
       std::memcpy(pa + j, &ra, sizeof ra);
       std::memcpy(pb + j, &rb, sizeof rb);
       ac = an;

@@ -1,10 +1,10 @@
 #include "verification/stones/mesh_study.hpp"
 
 #include <algorithm>
-#include <utility>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <utility>
 
 #include "verification/study/ensemble_difference.hpp"
 #include "verification/study/verdict_rules.hpp"
