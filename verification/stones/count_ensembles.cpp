@@ -23,7 +23,7 @@ bool CountEnsembleOptions::valid(std::string* why) const {
 }
 
 double comparison_confidence(const CountEnsembleOptions& o, std::size_t m) {
-  return 1 - (1 - o.family_confidence) / static_cast<double>(std::max<std::size_t>(m, 1));
+  return bonferroni_confidence(o.family_confidence, m);
 }
 
 std::vector<double> sampled_values(const std::vector<double>& grid, int count) {

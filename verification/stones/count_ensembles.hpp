@@ -29,7 +29,6 @@ struct CountEnsembleOptions {
   bool valid(std::string* why = nullptr) const;
 };
 
-
 // One sampled throw: the unperturbed runs (the sweep's single-run comparison) and the ensembles.
 struct CountEnsembleThrow {
   SweepParameter parameter = SweepParameter::spin_rev_s;

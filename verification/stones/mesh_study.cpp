@@ -191,9 +191,9 @@ Record mesh_study_findings(const std::vector<MeshThrowRuns>& runs, const MeshStu
     for (const MeshThrowRuns& u : runs)
       if (t.spin_rev_s > 0 && u.spin_rev_s == -t.spin_rev_s && u.attack_angle_deg == t.attack_angle_deg)
         mirror_comparisons += o.meshes.size();
-  auto family_level = [&](std::size_t m) { return 1 - (1 - o.family_confidence) / double(std::max<std::size_t>(m, 1)); };
-  const double reference_level = 0.95, cut_level = family_level(cuts_compared ? runs.size() : 0),
-               mirror_level = family_level(mirror_comparisons);
+  const double reference_level = 0.95,
+               cut_level = bonferroni_confidence(o.family_confidence, cuts_compared ? runs.size() : 0),
+               mirror_level = bonferroni_confidence(o.family_confidence, mirror_comparisons);
   r.set("family_confidence", o.family_confidence);
   r.set("reference_confidence", reference_level);
   r.set("cut_confidence", cut_level);

@@ -1,5 +1,6 @@
 #include "verification/study/ensemble_difference.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -86,6 +87,10 @@ double fisher_exact_p(int failed_a, int n_a, int failed_b, int n_b) {
     if (q <= observed * (1 + 1e-7)) p += q;  // R's fisher.test: a relative tolerance of 1e-7
   }
   return std::min(1.0, p);
+}
+
+double bonferroni_confidence(double family_confidence, std::size_t comparisons) {
+  return 1 - (1 - family_confidence) / static_cast<double>(std::max<std::size_t>(comparisons, 1));
 }
 
 MeanDifference paired_difference(const std::vector<double>& a, const std::vector<double>& b, double confidence) {

@@ -11,6 +11,7 @@
 // establish {9, 9} against {8, 8, 8}: relabelling the members at random puts every 9 in the first
 // ensemble with probability 1/C(5, 2) = 0.1 (Fisher 1935, The Design of Experiments, §21; the
 // hypergeometric law of where the values fall), not below 0.05.
+#include <cstddef>
 #include <limits>
 #include <vector>
 
@@ -47,6 +48,10 @@ MeanDifference welch_difference(const std::vector<double>& a, const std::vector<
 // one sign has p = 2 / 2^n under the null (Fisher 1935, §21). a and b must have one size (≥ 2 to be valid);
 // mean_a, sd_a, mean_b, sd_b are each ensemble's own. `confidence` as for welch_difference.
 MeanDifference paired_difference(const std::vector<double>& a, const std::vector<double>& b, double confidence = 0.95);
+
+// The level of each of m comparisons held to `family_confidence` together (Bonferroni):
+// 1 − (1 − family_confidence)/m, the family's own level where m is 0 or 1.
+double bonferroni_confidence(double family_confidence, std::size_t comparisons);
 
 // Fisher's exact test of two proportions (Fisher 1935, §12; the 2 × 2 table): failed_a of n_a
 // against failed_b of n_b. Given the failures in all, the number in the first group is

@@ -83,6 +83,10 @@ BOOST_AUTO_TEST_CASE(the_paired_interval_is_student_s_on_the_differences) {
   BOOST_TEST(std::abs(d99.low - (d.difference - 3.2498 * d.standard_error)) <= 0.00005 * d.standard_error + 1e-12);
   BOOST_TEST(std::abs(d99.high - (d.difference + 3.2498 * d.standard_error)) <= 0.00005 * d.standard_error + 1e-12);
   BOOST_TEST(d99.alpha == 0.01, boost::test_tools::tolerance(1e-12));
+  // Bonferroni's level for each of m comparisons: 1 − 0.05/m; a single comparison, or none, keeps 95 %.
+  BOOST_TEST(bonferroni_confidence(0.95, 4) == 0.9875, boost::test_tools::tolerance(1e-15));
+  BOOST_TEST(bonferroni_confidence(0.95, 1) == 0.95, boost::test_tools::tolerance(1e-15));
+  BOOST_TEST(bonferroni_confidence(0.95, 0) == 0.95, boost::test_tools::tolerance(1e-15));
   BOOST_TEST(!paired_difference({8, 9}, {8}).valid);  // members must pair up
 }
 
