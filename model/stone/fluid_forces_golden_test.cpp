@@ -14,6 +14,7 @@
 
 #include "model/stone/fluid_forces.hpp"
 #include "model/stone/mass_properties.hpp"
+#include "model/stone/portable_uniform.hpp"
 #include "model/stone/pressure_distribution.hpp"
 #include "model/stone/stone.hpp"
 
@@ -23,18 +24,6 @@ namespace {
 
 constexpr double kRelative = 1e-12;  // reordered sums of ≤ 44 faces, weights integrated in closed form
 constexpr int kStatesPerEnvironment = 40;
-
-// A portable uniform generator (splitmix64): the same states on every platform and library.
-struct Uniform {
-  std::uint64_t x;
-  double operator()(double lo, double hi) {
-    std::uint64_t z = (x += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    z ^= z >> 31;
-    return lo + (hi - lo) * (static_cast<double>(z >> 11) * 0x1.0p-53);
-  }
-};
 
 Stone prism() {
   const Mesh m = make_prism(0.03, 0.008, 11);
@@ -53,7 +42,7 @@ Environment environment(int k) {
   return e;
 }
 
-RigidState random_state(Uniform& u) {
+RigidState random_state(PortableUniform& u) {
   RigidState s;
   s.position_m = Vec3(u(-0.1, 0.1), u(-0.1, 0.1), u(-0.02, 0.02));
   Quat q(u(-1, 1), u(-1, 1), u(-1, 1), u(-1, 1));
@@ -107,7 +96,7 @@ BOOST_AUTO_TEST_CASE(the_loads_equal_the_straightforward_implementation_s_to_rou
   int row = 0, compared = 0, below_planing_speed = 0, off_underside = 0;
   for (int e = 0; e < 5; ++e) {
     const Environment env = environment(e);
-    Uniform u{static_cast<std::uint64_t>(1000 + e)};
+    PortableUniform u{static_cast<std::uint64_t>(1000 + e)};
     for (int k = 0; k < kStatesPerEnvironment; ++k, ++row) {
       const RigidState s = random_state(u);
       std::vector<FacePush> pushes;

@@ -3,12 +3,12 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <numbers>
 
 #include <algorithm>
 
+#include "model/stone/portable_uniform.hpp"
 #include "model/stone/pressure_distribution.hpp"
 #include "model/stone/rigid_body.hpp"
 #include "model/stone/triangle_clip.hpp"
@@ -226,13 +226,7 @@ BOOST_AUTO_TEST_CASE(the_distribution_moves_the_law_s_total_and_never_amplifies_
   // distributions and two laws, the pushes' magnitudes add up to the uniform pushes' to 1e-12
   // relative (sums of ≤ 44 faces), so no state gets more push from the water than the law gives.
   const Stone s = test_stone();
-  std::uint64_t x = 12345;
-  auto u = [&](double lo, double hi) {  // splitmix64
-    std::uint64_t z = (x += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return lo + (hi - lo) * (static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53);
-  };
+  PortableUniform u{12345};  // the same states on every platform
   int wet = 0;
   for (int k = 0; k < 2000; ++k) {
     RigidState st;

@@ -22,7 +22,7 @@ std::size_t FilippovSliding::index_of(int face) const {
 
 // The faces' switch values at y: LoadSwitches' loaded_face functions, which depend on the state
 // alone (not on a recorded mode), read after recording the mode of y.
-void FilippovSliding::switch_values(const std::vector<int>& faces, const double* y, double* out) {
+void FilippovSliding::switch_values(std::span<const int> faces, const double* y, double* out) {
   RigidState s = from_vector(y);
   s.orientation.normalize();
   switches_.reset(s, g_);
@@ -32,7 +32,7 @@ void FilippovSliding::switch_values(const std::vector<int>& faces, const double*
   }
 }
 
-void FilippovSliding::rates_along(const std::vector<int>& faces, const double* y, const double* f, double* out) {
+void FilippovSliding::rates_along(std::span<const int> faces, const double* y, const double* f, double* out) {
   StateVector plus{}, minus{};
   for (int k = 0; k < kStateSize; ++k) {
     plus[k] = y[k] + kDirectionalStep_s * f[k];
@@ -44,30 +44,29 @@ void FilippovSliding::rates_along(const std::vector<int>& faces, const double* y
   for (std::size_t n = 0; n < faces.size(); ++n) out[n] = (gp[n] - gm[n]) / (2 * kDirectionalStep_s);
 }
 
-// The loads with the `forced` faces held out of (0) or in (1) the loaded region, every other face
+// The loads with the faces of forced_ held out of (0) or in (1) the loaded region, every other face
 // as the loads decide it from the state (LoadMode::kDecide).
-void FilippovSliding::rhs_forced(const std::vector<std::pair<int, char>>& forced, const double* y, double* dydt) {
+void FilippovSliding::rhs_forced(const double* y, double* dydt) {
   mode_.loaded_faces.assign(stone_.body_mesh.triangles.size(), LoadMode::kDecide);
-  for (const auto& [face, loaded] : forced) mode_.loaded_faces[static_cast<std::size_t>(face)] = loaded;
+  for (const auto& [face, loaded] : forced_) mode_.loaded_faces[static_cast<std::size_t>(face)] = loaded;
   rigid_body_rhs(stone_, env_, y, dydt, nullptr, nullptr, &mode_);
 }
 
-std::vector<std::pair<int, char>> FilippovSliding::held_of(const FaceRules& rules) const {
-  std::vector<std::pair<int, char>> forced;
+void FilippovSliding::hold(const FaceRules& rules) {
+  forced_.clear();
   for (const FaceRule& r : rules)
-    if (!r.sliding) forced.emplace_back(r.face, static_cast<char>(r.side));
-  return forced;
+    if (!r.sliding) forced_.emplace_back(r.face, static_cast<char>(r.side));
 }
 
 FilippovSliding::Sides FilippovSliding::sides(int face, const FaceRules& held, const double* y) {
   Sides out;
-  std::vector<std::pair<int, char>> forced = held_of(held);
-  forced.emplace_back(face, 0);
-  rhs_forced(forced, y, out.f0.data());
-  forced.back().second = 1;
-  rhs_forced(forced, y, out.f1.data());
-  rates_along({face}, y, out.f0.data(), &out.a0);
-  rates_along({face}, y, out.f1.data(), &out.a1);
+  hold(held);
+  forced_.emplace_back(face, 0);
+  rhs_forced(y, out.f0.data());
+  forced_.back().second = 1;
+  rhs_forced(y, out.f1.data());
+  rates_along({&face, 1}, y, out.f0.data(), &out.a0);
+  rates_along({&face, 1}, y, out.f1.data(), &out.a1);
   return out;
 }
 
@@ -78,7 +77,8 @@ FilippovSliding::SlidingField FilippovSliding::one_switch(int face, const FaceRu
   const double a0 = at.a0, a1 = at.a1;
   if (!std::isfinite(a0) || !std::isfinite(a1)) {
     // The face has no wetted polygon here: its switch is undefined and the loads decide alone.
-    rhs_forced(held_of(held), y, dydt);
+    hold(held);
+    rhs_forced(y, dydt);
     out.exit = -1;
     return out;
   }
@@ -94,17 +94,18 @@ FilippovSliding::SlidingField FilippovSliding::one_switch(int face, const FaceRu
 // both switches; then the bilinear weights.
 FilippovSliding::Corners FilippovSliding::corners(int fi, int fj, const FaceRules& held, const double* y) {
   Corners c;
-  std::vector<std::pair<int, char>> forced = held_of(held);
-  forced.emplace_back(fi, 0);
-  forced.emplace_back(fj, 0);
+  hold(held);
+  forced_.emplace_back(fi, 0);
+  forced_.emplace_back(fj, 0);
+  const int both[2] = {fi, fj};
   c.defined = true;
   for (int a = 0; a < 2; ++a)
     for (int b = 0; b < 2; ++b) {
-      forced[forced.size() - 2].second = static_cast<char>(a);
-      forced.back().second = static_cast<char>(b);
-      rhs_forced(forced, y, c.f[a][b].data());
+      forced_[forced_.size() - 2].second = static_cast<char>(a);
+      forced_.back().second = static_cast<char>(b);
+      rhs_forced(y, c.f[a][b].data());
       double rates[2];
-      rates_along({fi, fj}, y, c.f[a][b].data(), rates);
+      rates_along(both, y, c.f[a][b].data(), rates);
       c.A[a][b] = rates[0];
       c.B[a][b] = rates[1];
       c.defined = c.defined && std::isfinite(rates[0]) && std::isfinite(rates[1]);
@@ -313,20 +314,23 @@ SlidingChoice FilippovSliding::attracting(const RigidState& s, const FaceRules& 
 }
 
 int FilippovSliding::rhs(const FaceRules& rules, const double* y, double* dydt) {
-  std::vector<int> sliding;
+  int sliding[kMaxSlidingFaces];  // the first sliding faces (the rules hold at most kMaxSlidingFaces)
+  std::size_t n_sliding = 0;
   for (const FaceRule& r : rules)
-    if (r.sliding) sliding.push_back(r.face);
-  if (sliding.empty()) {
-    rhs_forced(held_of(rules), y, dydt);
+    if (r.sliding && n_sliding < kMaxSlidingFaces) sliding[n_sliding++] = r.face;
+  if (n_sliding == 0) {
+    hold(rules);
+    rhs_forced(y, dydt);
     return 1;
   }
-  if (sliding.size() == 1) {
+  if (n_sliding == 1) {
     one_switch(sliding[0], rules, y, dydt);
     return 2;
   }
   const Corners c = corners(sliding[0], sliding[1], rules, y);
   if (!c.defined) {
-    rhs_forced(held_of(rules), y, dydt);  // a face's polygon went: the loads decide (the exit is located)
+    hold(rules);
+    rhs_forced(y, dydt);  // a face's polygon went: the loads decide (the exit is located)
     return 5;
   }
   // Outside the square (past the exit, located as a root) the weights are clamped; without a
@@ -338,22 +342,24 @@ int FilippovSliding::rhs(const FaceRules& rules, const double* y, double* dydt) 
 }
 
 int FilippovSliding::roots(const FaceRules& rules, const double* y, double* g) {
-  std::vector<std::size_t> sliding;
+  std::size_t sliding[kMaxSlidingFaces];  // indices of the first sliding rules
+  std::size_t n_sliding = 0;
   for (std::size_t k = 0; k < rules.size(); ++k) {
     if (rules[k].sliding) {
-      sliding.push_back(k);
+      if (n_sliding < kMaxSlidingFaces) sliding[n_sliding] = k;
+      ++n_sliding;
       continue;
     }
     double v = kNaN;
-    switch_values({rules[k].face}, y, &v);
+    switch_values({&rules[k].face, 1}, y, &v);
     g[k] = !std::isfinite(v) ? -1 : (rules[k].side == 0 ? -v : v);
   }
-  if (sliding.size() == 1) {
+  if (n_sliding == 1) {
     StateVector f{};
     g[sliding[0]] = one_switch(rules[sliding[0]].face, rules, y, f.data()).exit;
     return 2;
   }
-  if (sliding.size() == 2) {
+  if (n_sliding == 2) {
     const Corners c = corners(rules[sliding[0]].face, rules[sliding[1]].face, rules, y);
     const bool ok = c.defined && c.solved;
     g[sliding[0]] = ok ? std::min(c.alpha, 1 - c.alpha) : -1;

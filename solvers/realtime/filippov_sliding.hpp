@@ -38,6 +38,7 @@
 // away from a vertex crossing the raised waterline; round-off in g (world positions of metres) over
 // 2ε dominates the truncation error: ~1e-7 of a typical a_i of 1–10 m/s², ample for α and for the
 // exit function's sign.
+#include <span>
 #include <string>
 #include <vector>
 
@@ -149,13 +150,14 @@ class FilippovSliding {
     double alpha = 0;
     double exit = -1;
   };
-  // The loads with `forced` faces set (LoadMode's loaded_faces values), the others decided.
-  void rhs_forced(const std::vector<std::pair<int, char>>& forced, const double* y, double* dydt);
-  std::vector<std::pair<int, char>> held_of(const FaceRules& rules) const;
+  // The loads with the faces of forced_ set (LoadMode's loaded_faces values), the others decided.
+  void rhs_forced(const double* y, double* dydt);
+  // forced_ = the held faces of `rules`, each on its side (the sliding ones left to the caller).
+  void hold(const FaceRules& rules);
   // Switch values of `faces` at y (NaN where undefined), from one evaluation.
-  void switch_values(const std::vector<int>& faces, const double* y, double* out);
-  // ∇g · f for each of `faces` (central differences along f at y).
-  void rates_along(const std::vector<int>& faces, const double* y, const double* f, double* out);
+  void switch_values(std::span<const int> faces, const double* y, double* out);
+  // ∇g · f for each of `faces` (at most 2: central differences along f at y).
+  void rates_along(std::span<const int> faces, const double* y, const double* f, double* out);
 
   // One switch with the held faces held: the two fields and their rates.
   struct Sides {
@@ -182,6 +184,9 @@ class FilippovSliding {
   LoadSwitches switches_;
   LoadMode mode_;
   std::vector<double> g_;
+  // The faces rhs_forced holds (face, 0 out of the loaded region or 1 in), rebuilt by each caller;
+  // kept, like mode_ and g_, so that a right-hand side allocates nothing once they have grown.
+  std::vector<std::pair<int, char>> forced_;
 };
 
 }  // namespace stoneskip

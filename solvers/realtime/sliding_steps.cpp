@@ -13,13 +13,12 @@ StateVector SlidingSteps::rhs(const StateVector& y) {
   return d;
 }
 
-std::vector<double> SlidingSteps::roots_at(const StateVector& y) {
-  std::vector<double> g(record_.rules().size());
+void SlidingSteps::roots_at(const StateVector& y, std::vector<double>& g) {
+  g.resize(record_.rules().size());
   if (!g.empty()) extra_loads_ += sliding_->roots(record_.rules(), y.data(), g.data());
-  return g;
 }
 
-void SlidingSteps::start_step(const StateVector& y) { roots0_ = roots_at(y); }
+void SlidingSteps::start_step(const StateVector& y) { roots_at(y, roots0_); }
 
 bool SlidingSteps::probe(long steps, double t, const RigidState& s) {
   if (!enabled_ || steps - probe_steps_ < kProbeSteps) return false;
@@ -39,16 +38,16 @@ bool SlidingSteps::probe(long steps, double t, const RigidState& s) {
 double SlidingSteps::first_root(const HermiteStep& step) {
   const FaceRules& rules = record_.rules();
   if (rules.empty()) return -1;
-  const std::vector<double> g1 = roots_at(step.y1);
+  roots_at(step.y1, roots1_);
+  const std::vector<double>& g1 = roots1_;
   double first = -1;
   for (std::size_t k = 0; k < rules.size(); ++k) {
     // Watched falling through zero, as the reference watches them (a root at the start is behind).
     if (!(roots0_[k] > 0 && g1[k] <= 0)) continue;
     const double f = sign_change_fraction(
         [&](double theta) {
-          std::vector<double> g(rules.size());
-          extra_loads_ += sliding_->roots(rules, step.at(theta).data(), g.data());
-          return g[k];
+          roots_at(step.at(theta), roots_inside_);
+          return roots_inside_[k];
         },
         roots0_[k], g1[k]);
     if (first < 0 || f < first) first = f;
@@ -57,18 +56,19 @@ double SlidingSteps::first_root(const HermiteStep& step) {
 }
 
 bool SlidingSteps::after_step(double t, const StateVector& y) {
-  const FaceRules rules = record_.rules();
+  const FaceRules& rules = record_.rules();
   if (rules.empty()) return false;
-  const std::vector<double> g = roots_at(y);
-  std::vector<int> found(rules.size(), 0);
+  roots_at(y, roots1_);
+  found_.assign(rules.size(), 0);
   bool any = false, hold_ended = false;
   for (std::size_t k = 0; k < rules.size(); ++k) {
-    found[k] = roots0_[k] > 0 && g[k] <= 0;
-    any = any || found[k];
-    hold_ended = hold_ended || (found[k] && !rules[k].sliding);
+    found_[k] = roots0_[k] > 0 && roots1_[k] <= 0;
+    any = any || found_[k];
+    hold_ended = hold_ended || (found_[k] && !rules[k].sliding);
   }
   if (!any) return false;
-  record_.set(sliding_->after_roots(rules, found.data(), y.data()), t);
+  // The new rules are made whole from the old before they replace them (`rules` is not read after).
+  record_.set(sliding_->after_roots(rules, found_.data(), y.data()), t);
   if (hold_ended && record_.sliding_count() == 0 && record_.slides() < kMaxSlides) {
     RigidState s = from_vector(y.data());
     s.orientation.normalize();

@@ -63,7 +63,8 @@ class SlidingSteps {
   const SlidingRecord& record() const { return record_; }
 
  private:
-  std::vector<double> roots_at(const StateVector& y);
+  // The rules' root values at y, into g (resized to the rules).
+  void roots_at(const StateVector& y, std::vector<double>& g);
 
   std::optional<FilippovSliding> sliding_;
   bool enabled_;
@@ -72,6 +73,10 @@ class SlidingSteps {
   SlidingRecord record_;
   FieldFunction field_;
   std::vector<double> roots0_;  // the rules' root values where the step began
+  // Scratch for the roots at a step's end and inside it, and the roots found: kept so that a step
+  // allocates nothing once they have grown.
+  std::vector<double> roots1_, roots_inside_;
+  std::vector<int> found_;
   long probe_steps_ = 0;
   double probe_t_ = 0;
   long extra_loads_ = 0;
