@@ -32,6 +32,7 @@
 #include "model/stone/fluid_forces.hpp"
 #include "model/stone/rigid_state.hpp"
 #include "model/stone/stone.hpp"
+#include "model/stone/triangle_clip.hpp"
 #include "model/stone/water_surface.hpp"
 
 namespace stoneskip {
@@ -57,6 +58,11 @@ class LoadSwitches {
   void reset(const RigidState& s, std::vector<double>& g);
   // The values at s in the recorded mode.
   void evaluate(const RigidState& s, std::vector<double>& g) const;
+  // Value k of evaluate(s, g), bit for bit, computing only what it needs: the vertices alone for a
+  // crossing of the raised waterline, the deepest vertex, the underside's side and the span's ends,
+  // and one face for a face's loaded-region switch (a root search on one function evaluates it
+  // alone; evaluate's every face costs several times more). NaN where evaluate's is.
+  double value(const RigidState& s, int k) const;
 
   // The loaded region of the recorded mode, for a right-hand side that holds it over a step (the
   // loads' own choice at the state reset was given).
@@ -84,12 +90,44 @@ class LoadSwitches {
   };
   void compute(const RigidState& s, Mode* record, const Mode& held, std::vector<double>& g) const;
 
+  // The state's vertices exactly as water_loads computes them (fluid_forces.cpp), and what the
+  // distribution makes of them: the deepest vertex, the Wagner rise and the raised depths.
+  struct Vertices {
+    Mat3 R;
+    Vec3 omega;
+    std::vector<Vec3> world;
+    std::vector<double> depth, raised;
+    int deepest = -1;  // -1: no vertices
+  };
+  void vertices(const RigidState& s, Vertices& v) const;
+  // Face i's polygon below the raised waterline (a face on the underside `side`) or the surface,
+  // its area and centroid, and the normal velocity u at the centroid (vc the velocity there).
+  struct FaceCut {
+    bool up = false;   // on the underside: cut at the raised waterline
+    double d[3] = {};  // its vertices' depths at that waterline
+    Vec3 normal;
+    ClippedPolygon poly;
+    ClippedArea area;
+    Vec3 vc;
+    double u = 0;
+  };
+  // False where the face is dry (then only up and d are set) or its polygon has no area.
+  bool cut_face(int i, int side, const RigidState& s, const Vertices& v, FaceCut& f) const;
+  // Where corner c lies along the horizontal unit direction dir.
+  double along(const PolygonCorner& c, const Vec3& dir, const Vertices& v) const;
+
   const Stone& stone_;
   const Environment& env_;
   const WaterSurface* surface_;
   bool active_ = false;
   int nv_ = 0, nf_ = 0;
   Mode mode_;
+  // Scratch for compute and value, kept so that they allocate nothing once grown: one object is
+  // used by one thread at a time (a stepper's or a sliding treatment's own).
+  mutable Vertices vertices_;
+  mutable std::vector<FaceCut> faces_;
+  mutable std::vector<char> loaded_;
+  mutable std::vector<double> values_;
 };
 
 }  // namespace stoneskip

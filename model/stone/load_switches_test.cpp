@@ -6,8 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include "model/stone/load_switches.hpp"
+#include "model/stone/portable_uniform.hpp"
 #include "model/stone/throw.hpp"
 
 using namespace stoneskip;
@@ -187,6 +190,74 @@ BOOST_AUTO_TEST_CASE(a_stone_turning_over_in_contact_flips_the_wetted_side_where
   BOOST_TEST(flips == 1);
   const LoadMode mode = switches.load_mode();
   BOOST_TEST(change(loads(1e-9, &mode), loads(-1e-9, &mode)) <= 2 * smooth);
+}
+
+BOOST_AUTO_TEST_CASE(one_switch_alone_is_the_value_of_them_all_bit_for_bit) {
+  // Oracle: evaluate, which computes every switch at once. value(s, k) computes only what switch k
+  // needs (the real-time stepper's root search on one switch), through the same functions, so it
+  // must give the same double, bit for bit, or NaN where evaluate's is NaN: any difference would
+  // move a located kink. States: the path through the water (modes recorded at 8 times, values
+  // 0–2 ms later, past several switches) and 300 random states near the water (attitudes, speeds
+  // to 8 m/s, spins to 100 rev/s), each recorded and then moved by up to 2 mm, 0.02 rad and 0.2 m/s,
+  // under savitsky_wagner and savitsky. Every kind of switch must be compared finite somewhere,
+  // or the check would be empty.
+  const Path path;
+  const Stone& s = path.stone;
+  PortableUniform u{2024};
+  auto random_state = [&] {
+    RigidState st;
+    st.position_m = Vec3(0, 0, u(-0.01, 0.01));
+    st.orientation = Quat(u(-1, 1), u(-1, 1), u(-1, 1), u(-1, 1)).normalized();
+    st.velocity_m_s = Vec3(u(-8, 8), u(-8, 8), u(-3, 3));
+    const Vec3 w(u(-60, 60), u(-60, 60), u(-630, 630));
+    const Mat3 R = st.orientation.toRotationMatrix();
+    st.angular_momentum_kg_m2_s = R * s.inertia_body_kg_m2 * w;
+    return st;
+  };
+  auto moved = [&](RigidState st) {
+    st.position_m += Vec3(u(-2e-3, 2e-3), u(-2e-3, 2e-3), u(-2e-3, 2e-3));
+    st.orientation = (Quat(Eigen::AngleAxisd(u(0, 0.02), Vec3(u(-1, 1), u(-1, 1), u(-1, 1)).normalized())) *
+                      st.orientation).normalized();
+    st.velocity_m_s += Vec3(u(-0.2, 0.2), u(-0.2, 0.2), u(-0.2, 0.2));
+    return st;
+  };
+  std::vector<std::pair<RigidState, RigidState>> pairs;
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 5; ++j) pairs.push_back({path.at(0.004 * i), path.at(0.004 * i + 0.0005 * j)});
+  for (int i = 0; i < 300; ++i) {
+    const RigidState a = random_state();
+    pairs.push_back({a, moved(a)});
+  }
+  int finite[8] = {};
+  long compared = 0, mismatches = 0;
+  for (const PressureDistribution d : {PressureDistribution::savitsky_wagner, PressureDistribution::savitsky}) {
+    Environment env = savitsky_wagner();
+    env.pressure_distribution = d;
+    LoadSwitches sw(s, env);
+    std::vector<double> g0, g;
+    for (const auto& [a, b] : pairs) {
+      sw.reset(a, g0);
+      sw.evaluate(b, g);
+      for (int k = 0; k < static_cast<int>(g.size()); ++k) {
+        const double v = sw.value(b, k);
+        ++compared;
+        const bool same = std::isnan(g[k]) ? std::isnan(v) : v == g[k];
+        if (!same) {
+          ++mismatches;
+          BOOST_TEST_MESSAGE("switch " << k << ": value " << v << " against evaluate's " << g[k]);
+        }
+        if (std::isfinite(g[k])) ++finite[static_cast<int>(sw.kind(k))];
+      }
+      BOOST_TEST(std::isnan(sw.value(b, static_cast<int>(g.size()))));  // past the last switch
+    }
+  }
+  BOOST_TEST(mismatches == 0);
+  BOOST_TEST(compared > 10000);
+  for (const LoadSwitches::Kind k :
+       {LoadSwitches::Kind::raised_crossing, LoadSwitches::Kind::deepest_vertex, LoadSwitches::Kind::loaded_face,
+        LoadSwitches::Kind::centre_of_pressure, LoadSwitches::Kind::planing_share, LoadSwitches::Kind::underside_flip,
+        LoadSwitches::Kind::span_start, LoadSwitches::Kind::span_end})
+    BOOST_TEST(finite[static_cast<int>(k)] > 0, "switch kind " << static_cast<int>(k) << " never finite");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -31,13 +31,14 @@ double vertex_depth(const Stone& stone, const RigidState& s, const WaterSurface*
   return eta - w.z();
 }
 
-double sign_change_fraction(const std::function<double(double)>& g, double g0, double g1, double fraction_tolerance) {
+double sign_change_fraction(const std::function<double(double)>& g, double g0, double g1, double fraction_tolerance,
+                            double wanted_below) {
   constexpr int kMaxIterations = 100;
   // Keep a bracket [a, b] whose ends differ in (g > 0), as the callers' tests do.
   double a = 0, b = 1, fa = g0, fb = g1;
   const bool a_positive = fa > 0;
   int side = 0;
-  for (int it = 0; it < kMaxIterations && b - a > fraction_tolerance; ++it) {
+  for (int it = 0; it < kMaxIterations && b - a > fraction_tolerance && a < wanted_below; ++it) {
     double c = (fa == fb) ? 0.5 * (a + b) : a + (b - a) * fa / (fa - fb);
     if (!(c > a && c < b)) c = 0.5 * (a + b);
     const double fc = g(c);

@@ -38,9 +38,12 @@ double vertex_depth(const Stone& stone, const RigidState& s, const WaterSurface*
 // §6.2.3); the returned θ is the bracket's end on the side of the step's end.
 constexpr double kFullFractionTolerance = 1e-13;  // a few hundred ulps of the unit interval
 // The same for any function of the fraction whose ends g0, g1 differ in (g > 0): the first θ at
-// which g(θ) is on g1's side, to |Δθ| ≤ fraction_tolerance.
+// which g(θ) is on g1's side, to |Δθ| ≤ fraction_tolerance. A caller that wants only a root
+// before `wanted_below` (the earliest of several) may pass it: the search then stops as soon as
+// the bracket lies at or above it, and returns a θ ≥ wanted_below; a root below it is located as
+// without it, bit for bit (the iterates are the same until the search stops).
 double sign_change_fraction(const std::function<double(double)>& g, double g0, double g1,
-                            double fraction_tolerance = kFullFractionTolerance);
+                            double fraction_tolerance = kFullFractionTolerance, double wanted_below = 2);
 double crossing_fraction(const HermiteStep& step, const Stone& stone, const WaterSurface* surface, int k,
                          double d0, double d1, double fraction_tolerance = kFullFractionTolerance);
 
