@@ -54,6 +54,69 @@ std::pair<int, int> correction_counts(const Record& c) {
   return {tested, used};
 }
 
+// The adaptive schemes of the record (those with series against the tolerance), each with its
+// fixed-step member's formal order (its scheme-alone series'; 0 where it has none), in the order
+// the series list them.
+std::vector<std::pair<std::string, double>> adaptive_schemes(const Record& c) {
+  std::vector<std::pair<std::string, double>> out;
+  const Record& series = c.at("series");
+  const auto keys = c.strings("series_keys");
+  for (const auto& key : keys) {
+    const Record& s = series.at(key);
+    if (!s.flag("against_tolerance")) continue;
+    const std::string scheme = s.text("scheme");
+    if (std::any_of(out.begin(), out.end(), [&](const auto& a) { return a.first == scheme; })) continue;
+    double formal = 0;
+    for (const auto& other : keys) {
+      const Record& f = series.at(other);
+      if (f.text("scheme") == scheme && !f.flag("against_tolerance")) formal = f.number("formal_order");
+    }
+    out.push_back({scheme, formal});
+  }
+  return out;
+}
+
+// "`a`", "`a` and `b`", "`a`, `b` and `c`".
+std::string scheme_list(const std::vector<std::pair<std::string, double>>& schemes) {
+  std::string s;
+  for (std::size_t i = 0; i < schemes.size(); ++i)
+    s += (i == 0 ? "" : i + 1 == schemes.size() ? " and " : ", ") + ("`" + schemes[i].first + "`");
+  return s;
+}
+
+}  // namespace
+
+// The first paragraph's words on the adaptive schemes: what they run and the orders they should show
+// ("" pieces where the study ran none).
+ConvergenceAdaptiveWords convergence_adaptive_words(const Record& c) {
+  const auto adaptive = adaptive_schemes(c);
+  ConvergenceAdaptiveWords w;
+  if (adaptive.empty()) return w;
+  const bool one = adaptive.size() == 1;
+  w.runs = std::string(one ? ", its adaptive scheme (" : ", its adaptive schemes (") + scheme_list(adaptive) +
+           ") with shrinking tolerances (rtol = atol_m)";
+  std::vector<std::pair<std::string, double>> members;
+  for (const auto& a : adaptive)
+    if (a.second > 0) members.push_back(a);
+  if (members.size() == 1) {
+    w.members = ", and `" + members[0].first + "`'s fixed-step member " + fmt(members[0].second) + " when the scheme runs alone";
+  } else if (members.size() > 1) {
+    w.members = ", and the fixed-step members of ";
+    for (std::size_t i = 0; i < members.size(); ++i)
+      w.members += (i == 0 ? "" : i + 1 == members.size() ? " and " : ", ") + ("`" + members[i].first + "` (" +
+                                                                               fmt(members[i].second) + ")");
+    w.members += " when the scheme runs alone";
+  }
+  w.proportional = std::string(one ? "; the adaptive scheme's" : "; an adaptive scheme's") +
+                   " error should fall in proportion to its tolerance (order 1 in tol: its controller keeps the local "
+                   "error of each step near tol × the step's share)";
+  w.fitted = one ? " The adaptive scheme's errors against its tolerance are fitted with a single power."
+                 : " The adaptive schemes' errors against their tolerances are fitted with a single power.";
+  return w;
+}
+
+namespace {
+
 // The series of one quantity, all schemes, as a figure.
 Figure series_figure(const std::string& name, const std::string& title, const Record& c, const std::string& quantity,
                      const std::string& x_label, const std::string& y_label) {
@@ -91,14 +154,16 @@ std::vector<std::string> left_out(const Record& s, bool with_quantity) {
 }
 
 // The adaptive scheme's whole-stepper series (error against its tolerance) as one figure.
-Figure tolerance_figure(const Record& c) {
+// One adaptive scheme's series against its tolerance (one figure per scheme: two schemes' nine
+// series each on one plot could not be told apart).
+Figure tolerance_figure(const Record& c, const std::string& scheme, const std::string& name) {
   std::vector<PlotSeries> ps;
   const Record& series = c.at("series");
   for (const auto& key : c.strings("series_keys")) {
     const Record& s = series.at(key);
-    if (!s.flag("against_tolerance")) continue;
+    if (!s.flag("against_tolerance") || s.text("scheme") != scheme) continue;
     const Record& fit = s.at("fit");
-    ps.push_back(table_series(s.text("scheme") + ", " + s.text("quantity") + " (" + s.text("unit") + "; observed " +
+    ps.push_back(table_series(s.text("quantity") + " (" + s.text("unit") + "; observed " +
                                   (fit.flag("valid") ? fmt(fit.number("order"), 3) : std::string("–")) + ")",
                               s, "points", "h_s", "error"));
   }
@@ -106,7 +171,7 @@ Figure tolerance_figure(const Record& c) {
   ax.x_label = "tolerance (rtol = atol_m)";
   ax.y_label = "error against the reference";
   ax.log_x = ax.log_y = true;
-  return line_figure("conv_adaptive_tolerance", "Adaptive stepper: error against its tolerance", ax, ps, "tolerance", "error");
+  return line_figure(name, "Adaptive stepper " + scheme + ": error against its tolerance", ax, ps, "tolerance", "error");
 }
 
 // The events' series (quantity, words), in the order shown.
@@ -157,15 +222,15 @@ MarkdownTable event_table(const Record& c) {
 SectionOutput convergence_section(const Record& c) {
   SectionWriter w(c, "1. Convergence of the real-time model, each water law");
   const std::string contact_step = "dt × " + fmt(c.number("contact_ratio"), 3);
+  const ConvergenceAdaptiveWords adaptive = convergence_adaptive_words(c);
   w.lead("What is measured.",
          "The real-time stepper's fixed schemes (a finer *contact step* near and in the water) are run on one throw "
-         "with shrinking steps, its adaptive scheme (`bs32`) with shrinking tolerances (rtol = atol_m), and each "
+         "with shrinking steps" + adaptive.runs + ", and each "
          "result is compared with the CVODE reference solution of the same equations (rtol = " +
              fmt(c.number("reference_rtol"), 2) +
              ", every contact event located). If the stepper is correct, its error falls like h^p with p its scheme's "
-             "formal order (semi-implicit Euler 1, midpoint 2, RK4 4, and `bs32`'s fixed-step member 3 when the scheme "
-             "runs alone); the adaptive scheme's error should fall in proportion to its tolerance (order 1 in tol: its "
-             "controller keeps the local error of each step near tol × the step's share). The observed p is a "
+             "formal order (semi-implicit Euler 1, midpoint 2, RK4 4" + adaptive.members + ")" + adaptive.proportional +
+             ". The observed p is a "
              "least-squares fit of log error against log h (or log tol) with its 95 % interval; the verdict asks for the "
              "whole interval within " +
              fmt(c.number("order_tolerance"), 2) +
@@ -186,7 +251,7 @@ SectionOutput convergence_section(const Record& c) {
            "therefore also fitted as log e = log C + p log h + d h, and that fit's p and interval (Student t, n − 3 "
            "degrees of freedom, so wider) are used where the extra term lowers the residual significantly (F test at "
            "95 %): " + fmt(used) + " of the " + fmt(tested) + " series, marked *with h^(p+1)* with the single "
-           "power's p beside it. The adaptive scheme's errors against its tolerance are fitted with a single power.");
+           "power's p beside it." + adaptive.fitted);
   w.text("Throw: **" + c.text("case") + "**. The reference makes " + fmt(c.number("reference_contacts")) + " contacts and " +
          fmt(c.number("reference_bounces")) + " bounces and ends (" + c.text("reference_outcome") + ") at " +
          fmt(c.number("reference_end_time_s"), 4) + " s. Two kinds of measurement:");
@@ -328,11 +393,11 @@ SectionOutput convergence_section(const Record& c) {
                          xl, "error (s)"));
   w.figure(series_figure("conv_free_flight", "Whole stepper: state error in free flight after the first bounce", c,
                          "free_flight_state", xl, "relative state error"));
-  {
-    bool adaptive = false;
-    for (const auto& key : c.strings("series_keys")) adaptive = adaptive || c.at("series").at(key).flag("against_tolerance");
-    if (adaptive) w.figure(tolerance_figure(c));
-  }
+  // The first adaptive scheme's figure keeps the name it had when it was the only one.
+  const auto pairs = adaptive_schemes(c);
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    w.figure(tolerance_figure(c, pairs[i].first,
+                              i == 0 ? std::string("conv_adaptive_tolerance") : "conv_adaptive_tolerance_" + pairs[i].first));
   {
     const Record& ev = c.at("events");
     const Table& cr = ev.table("crowding");

@@ -43,10 +43,10 @@ struct RealtimeConvergenceOptions {
   // step across a kink makes an O(h²)–O(h³) local error, so without it no scheme shows more than
   // order 2–3 through a contact, and the events' orders would say so, not the scheme's order.
   KinkSteps fixed_kinks = KinkSteps::all;
-  // Whole stepper, adaptive schemes (bs32) in `schemes`: rtol = atol_m over these, descending. Its
-  // error is fitted against the tolerance, expected order 1 (an error-per-step controller on a
-  // pair with local extrapolation makes a global error ∝ tol); the scheme alone is its fixed-step
-  // member (formal order 3).
+  // Whole stepper, adaptive schemes (bs32, dp54) in `schemes`: rtol = atol_m over these, descending.
+  // Their errors are fitted against the tolerance, expected order 1 (an error-per-step controller
+  // on a pair with local extrapolation makes a global error ∝ tol); the scheme alone is the pair's
+  // fixed-step member (formal order 3 and 5).
   std::vector<double> adaptive_tolerances{1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10};
   std::vector<int> interval_steps{64, 128, 256, 512, 1024, 2048, 4096, 8192};  // scheme alone: steps per interval
   double reference_rtol = 1e-12;                 // rtol ≤ 1e-10: far below the stepper's errors
