@@ -19,6 +19,12 @@ std::string fmt(double value, int significant) {
 
 std::string pct(double fraction) { return fmt(100 * fraction, 3) + " %"; }
 
+std::string and_list(const std::vector<std::string>& items) {
+  std::string s;
+  for (std::size_t i = 0; i < items.size(); ++i) s += (i == 0 ? "" : i + 1 == items.size() ? " and " : ", ") + items[i];
+  return s;
+}
+
 MarkdownTable::MarkdownTable(std::vector<std::string> headers) : headers_(std::move(headers)) {}
 
 MarkdownTable& MarkdownTable::row(std::vector<std::string> cells) {

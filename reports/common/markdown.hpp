@@ -10,6 +10,8 @@ namespace stoneskip {
 std::string fmt(double value, int significant = 4);
 // A fraction as a percentage to 3 significant digits: 0.0512 → "5.12 %".
 std::string pct(double fraction);
+// Items as prose: "a", "a and b", "a, b and c"; "" for none.
+std::string and_list(const std::vector<std::string>& items);
 
 class MarkdownTable {
  public:

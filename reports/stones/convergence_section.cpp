@@ -78,10 +78,9 @@ std::vector<std::pair<std::string, double>> adaptive_schemes(const Record& c) {
 
 // "`a`", "`a` and `b`", "`a`, `b` and `c`".
 std::string scheme_list(const std::vector<std::pair<std::string, double>>& schemes) {
-  std::string s;
-  for (std::size_t i = 0; i < schemes.size(); ++i)
-    s += (i == 0 ? "" : i + 1 == schemes.size() ? " and " : ", ") + ("`" + schemes[i].first + "`");
-  return s;
+  std::vector<std::string> names;
+  for (const auto& s : schemes) names.push_back("`" + s.first + "`");
+  return and_list(names);
 }
 
 }  // namespace
@@ -101,11 +100,9 @@ ConvergenceAdaptiveWords convergence_adaptive_words(const Record& c) {
   if (members.size() == 1) {
     w.members = ", and `" + members[0].first + "`'s fixed-step member " + fmt(members[0].second) + " when the scheme runs alone";
   } else if (members.size() > 1) {
-    w.members = ", and the fixed-step members of ";
-    for (std::size_t i = 0; i < members.size(); ++i)
-      w.members += (i == 0 ? "" : i + 1 == members.size() ? " and " : ", ") + ("`" + members[i].first + "` (" +
-                                                                               fmt(members[i].second) + ")");
-    w.members += " when the scheme runs alone";
+    std::vector<std::string> each;
+    for (const auto& m : members) each.push_back("`" + m.first + "` (" + fmt(m.second) + ")");
+    w.members = ", and the fixed-step members of " + and_list(each) + " when the scheme runs alone";
   }
   w.proportional = std::string(one ? "; the adaptive scheme's" : "; an adaptive scheme's") +
                    " error should fall in proportion to its tolerance (order 1 in tol: its controller keeps the local "

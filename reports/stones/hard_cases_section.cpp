@@ -110,9 +110,7 @@ SectionOutput hard_cases_section(const Record& c) {
   if (largest_tried > 0)
     note = "A point at " + fmt(largest_tried, 3) + " s (\"≥ … (all tried)\" in the table) is the largest step tried: every "
            "step tried met that criterion, and its limit lies beyond.";
-  std::string speeds;
-  for (std::size_t i = 0; i < missing.size(); ++i)
-    speeds += (i == 0 ? "" : i + 1 == missing.size() ? " and " : ", ") + missing[i];
+  const std::string speeds = and_list(missing);
   if (!missing.empty())
     note += std::string(note.empty() ? "" : " ") + "At " + speeds +
             " not even the smallest step tried makes the reference's contacts, so there (a) and (b) judge runs that "

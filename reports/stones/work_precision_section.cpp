@@ -142,9 +142,9 @@ SectionOutput work_precision_section(const Record& c) {
     const std::vector<std::string> set_aside = a.has("set_aside") ? a.strings("set_aside") : std::vector<std::string>{};
     std::string s;
     if (!set_aside.empty()) {
-      std::string names;
-      for (std::size_t i = 0; i < set_aside.size(); ++i)
-        names += (i == 0 ? "" : i + 1 == set_aside.size() ? " and " : ", ") + ("*" + set_aside[i] + "*");
+      std::vector<std::string> italic;
+      for (const std::string& n : set_aside) italic.push_back("*" + n + "*");
+      const std::string names = and_list(italic);
       s += "The choice is made on the physical convention's throws, the convention the cases' default serves. " +
            std::string(set_aside.size() == 1 ? "One paper-convention throw is" : fmt(double(set_aside.size())) + " paper-convention throws are") +
            " set aside (" + names + "): the printed equations create energy in a contact, which makes a contact list "
