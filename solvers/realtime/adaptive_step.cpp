@@ -8,9 +8,10 @@ namespace stoneskip {
 
 namespace {
 
-StateVector rhs(const Stone& stone, const Environment& env, const StateVector& y, const WaterSurface* surface) {
+StateVector rhs(const Stone& stone, const Environment& env, const StateVector& y, const WaterSurface* surface,
+                const LoadMode* mode) {
   StateVector d;
-  rigid_body_rhs(stone, env, y.data(), d.data(), surface);
+  rigid_body_rhs(stone, env, y.data(), d.data(), surface, nullptr, mode);
   return d;
 }
 
@@ -22,10 +23,11 @@ void normalise_quaternion(StateVector& y) {
     for (int k = 0; k < 4; ++k) y[kQuaternion + k] /= n;
 }
 
-// A stage: the loads' right-hand side at y, or the field's where one is given.
+// A stage: the loads' right-hand side at y (in the held loaded region, if any), or the field's
+// where one is given.
 StateVector stage(const Stone& stone, const Environment& env, const WaterSurface* surface, const FieldFunction* field,
-                  const StateVector& y) {
-  if (!field) return rhs(stone, env, y, surface);
+                  const LoadMode* mode, const StateVector& y) {
+  if (!field) return rhs(stone, env, y, surface, mode);
   StateVector d;
   (*field)(y.data(), d.data());
   return d;
@@ -34,13 +36,13 @@ StateVector stage(const Stone& stone, const Environment& env, const WaterSurface
 // The last stage, f(y1) (FSAL: the next step's first), with the loads it used: the wetted area at
 // y1 comes with it (with a field, NaN: the caller measures it).
 void last_stage(const Stone& stone, const Environment& env, const WaterSurface* surface, const FieldFunction* field,
-                AdaptiveTrial& t) {
+                const LoadMode* mode, AdaptiveTrial& t) {
   if (field) {
     (*field)(t.y1.data(), t.k4.data());
     t.wetted_area_m2 = std::numeric_limits<double>::quiet_NaN();
   } else {
     Loads loads;
-    const StateDerivative d = rigid_body_rhs(stone, env, from_vector(t.y1.data()), surface, &loads);
+    const StateDerivative d = rigid_body_rhs(stone, env, from_vector(t.y1.data()), surface, &loads, nullptr, mode);
     to_vector(d, t.k4.data());
     t.wetted_area_m2 = loads.water.wetted_area_m2;
   }
@@ -71,8 +73,8 @@ double next_step(double h, double error_norm, int q) {
 
 AdaptiveTrial bs32_step(const Stone& stone, const Environment& env, const StateVector& y0, const StateVector& k1,
                         double h, const WaterSurface* surface, const StateVector& atol, double rtol,
-                        const FieldFunction* field) {
-  auto f = [&](const StateVector& y) { return stage(stone, env, surface, field, y); };
+                        const FieldFunction* field, const LoadMode* mode) {
+  auto f = [&](const StateVector& y) { return stage(stone, env, surface, field, mode, y); };
   // Butcher tableau (Bogacki & Shampine 1989): c = (0, 1/2, 3/4, 1);
   // b = (2/9, 1/3, 4/9, 0) (order 3), b̂ = (7/24, 1/4, 1/3, 1/8) (order 2).
   StateVector y;
@@ -83,7 +85,7 @@ AdaptiveTrial bs32_step(const Stone& stone, const Environment& env, const StateV
   AdaptiveTrial t;
   for (int i = 0; i < kStateSize; ++i) t.y1[i] = y0[i] + h * (2.0 / 9.0 * k1[i] + 1.0 / 3.0 * k2[i] + 4.0 / 9.0 * k3[i]);
   normalise_quaternion(t.y1);
-  last_stage(stone, env, surface, field, t);
+  last_stage(stone, env, surface, field, mode, t);
   StateVector e;
   // b − b̂ = (−5/72, 1/12, 1/9, −1/8).
   for (int i = 0; i < kStateSize; ++i)
@@ -94,8 +96,8 @@ AdaptiveTrial bs32_step(const Stone& stone, const Environment& env, const StateV
 
 AdaptiveTrial dp54_step(const Stone& stone, const Environment& env, const StateVector& y0, const StateVector& k1,
                         double h, const WaterSurface* surface, const StateVector& atol, double rtol,
-                        const FieldFunction* field) {
-  auto f = [&](const StateVector& y) { return stage(stone, env, surface, field, y); };
+                        const FieldFunction* field, const LoadMode* mode) {
+  auto f = [&](const StateVector& y) { return stage(stone, env, surface, field, mode, y); };
   // Butcher tableau (Dormand & Prince 1980, J. Comput. Appl. Math. 6(1), 19–26; Hairer, Nørsett &
   // Wanner, Solving ODEs I, §II.5, Table 5.2): c = (0, 1/5, 3/10, 4/5, 8/9, 1, 1); the fifth-order
   // weights b are the last row of a (FSAL), the fourth-order ones
@@ -126,7 +128,7 @@ AdaptiveTrial dp54_step(const Stone& stone, const Environment& env, const StateV
   for (int i = 0; i < kStateSize; ++i)
     t.y1[i] = y0[i] + h * (b1 * k1[i] + b3 * k3[i] + b4 * k4[i] + b5 * k5[i] + b6 * k6[i]);
   normalise_quaternion(t.y1);
-  last_stage(stone, env, surface, field, t);
+  last_stage(stone, env, surface, field, mode, t);
   // The continuous extension's quartic term (dense_output.hpp; Hairer's DOPRI5, CONTD5):
   // d = (−12715105075/11282082432, 0, 87487479700/32700410799, −10690763975/1880347072,
   //      701980252875/199316789632, −1453857185/822651844, 69997945/29380423).

@@ -49,12 +49,12 @@ using FieldFunction = std::function<void(const double* y, double* dydt)>;
 // the stages are its values (and wetted_area_m2 is NaN: the caller measures it).
 AdaptiveTrial bs32_step(const Stone& stone, const Environment& env, const StateVector& y0, const StateVector& k1,
                         double h_s, const WaterSurface* surface, const StateVector& atol, double rtol,
-                        const FieldFunction* field = nullptr);
+                        const FieldFunction* field = nullptr, const LoadMode* mode = nullptr);
 
 // The same for Dormand–Prince 5(4): six right-hand sides (k1 given, k7 = f(y1) returned as k4).
 AdaptiveTrial dp54_step(const Stone& stone, const Environment& env, const StateVector& y0, const StateVector& k1,
                         double h_s, const WaterSurface* surface, const StateVector& atol, double rtol,
-                        const FieldFunction* field = nullptr);
+                        const FieldFunction* field = nullptr, const LoadMode* mode = nullptr);
 
 // The next step size from the error norm of an accepted or a rejected one (Hairer, Nørsett &
 // Wanner §II.4, Eq. 4.13): h · min(5, max(0.2, 0.9 err^(−1/3))).

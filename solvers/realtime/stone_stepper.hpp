@@ -72,18 +72,17 @@ constexpr double kDefaultAdaptiveTolerance = 1e-9;
 //              wetted span's ends, the raised waterline, the loaded region, …). A fixed scheme
 //              then holds the loaded region over each step (LoadMode, fluid_forces.hpp), so that
 //              none of its stages sees the loads jump where the region changes: the step cut back
-//              to the change ends on the old branch, the next starts on the new. (bs32 needs no
-//              hold: its solution uses no stage past 3/4 of the step, and its cut step ends within
-//              two event windows past the switch. dp54's sixth stage is at the step's end, so a
-//              step cut just past a jump carries it in that stage, weight b₆ = 11/84, of which its
-//              estimate sees e₆ + e₇ = 0.017, an eighth: that step's error may reach about eight
-//              times the tolerance. Holding the region over adaptive steps, as the fixed schemes
-//              do, is not done: tried on 6 December (every stage of a trial on the step start's
-//              region, the first stage refreshed where it changed) on held_load_mode_test.cpp's
-//              throw, dp54's first-contact end against CVODE at 1e-12 was 6.4e-10, 1.8e-9,
-//              6.3e-10 and 3.9e-10 s at rtol 1e-7, 1e-8, 1e-9 and 1e-10 held, against 1.8e-9,
-//              5.8e-10, 1.8e-9 and 4.9e-10 s as it is, and bs32's the same to 1 %: no gain seen,
-//              for 1–2 % more right-hand sides.)
+//              to the change ends on the old branch, the next starts on the new; so does dp54,
+//              whose sixth stage (c = 1, weight b₆ = 11/84 in its solution) lies a window past the
+//              switch at a cut step's end: unheld, that step errs by 11/84 of its length × the jump,
+//              which its estimate all but misses (with steps capped at 1e-4 s on
+//              held_load_mode_test.cpp's throw: 1.6e-9 s on the first contact's end unheld, 9e-13 s
+//              held). On the same throw at uncapped tolerances the hold changes that error little
+//              (6.4e-10 … 3.9e-10 s held against 1.8e-9 … 4.9e-10 s over rtol 1e-7 … 1e-10): a second
+//              floor, long cut steps outside dp54's asymptotic range, dominates there
+//              (solvers/README.md, "The fifth-order pair"). bs32 does not hold: its solution gives
+//              its stage at c = 1 weight 0, and held it kept the same bench counts for 4 % more
+//              right-hand sides.
 enum class KinkSteps { none, crossings, all };
 const char* to_string(KinkSteps k);
 bool parse_kink_steps(const std::string& s, KinkSteps& out);
