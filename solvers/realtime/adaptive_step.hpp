@@ -46,7 +46,8 @@ struct AdaptiveTrial {
 using FieldFunction = std::function<void(const double* y, double* dydt)>;
 
 // One trial step of size h from y0, with k1 = f(y0) given. Three right-hand sides. With `field`,
-// the stages are its values (and wetted_area_m2 is NaN: the caller measures it).
+// the stages are its values (and wetted_area_m2 is NaN: the caller measures it); with `mode`, every
+// stage's loads hold that loaded region (LoadMode, fluid_forces.hpp; k1 must have been computed so).
 AdaptiveTrial bs32_step(const Stone& stone, const Environment& env, const StateVector& y0, const StateVector& k1,
                         double h_s, const WaterSurface* surface, const StateVector& atol, double rtol,
                         const FieldFunction* field = nullptr, const LoadMode* mode = nullptr);

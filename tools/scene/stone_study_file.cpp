@@ -17,6 +17,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// A family's confidence (the Bonferroni families of the count ensembles and the mesh study): below
+// one half its verdicts would be no better than a coin toss; at the top, 0.999 already holds each
+// of a hundred comparisons to 0.99999.
+constexpr double kMinFamilyConfidence = 0.5, kMaxFamilyConfidence = 0.999;
+
 // A fixed scheme's flight steps, and the contact steps they imply (× contact_ratio; 1 where there is
 // none), held to the range a case's steps keep (`run`: [1e-9, 1] s, cases/README.md): a study step
 // of 1e-9 s (a contact step of 1e-10 s) sat for minutes with its progress line the only sign.
@@ -359,6 +364,9 @@ void read_mesh(const fs::path& dir, TomlTable t, StoneStudiesOptions& o) {
   m.perturbation_smallest = positive(t, "perturbation_smallest", m.perturbation_smallest);
   m.perturbation_largest = positive(t, "perturbation_largest", m.perturbation_largest);
   t.require_in("perturbation_largest", m.perturbation_largest, m.perturbation_smallest, 0.1);
+  // The level each family of verdicts (the cuts', the mirror pairs') is held to together.
+  m.family_confidence = t.number_or("family_confidence", m.family_confidence);
+  t.require_in("family_confidence", m.family_confidence, kMinFamilyConfidence, kMaxFamilyConfidence);
   t.finish();
 }
 
@@ -370,6 +378,11 @@ void read_sweeps(TomlTable t, StoneStudiesOptions& o) {
   o.count_ensembles.members = count(t, "ensemble_members", o.count_ensembles.members, 2, 1000);
   if (o.count_ensembles.members % 2 != 0) t.fail("ensemble_members", "must be even (members of both signs)");
   o.count_ensembles.throws_per_axis = count(t, "ensemble_throws_per_axis", o.count_ensembles.throws_per_axis, 0, 1000);
+  // The level the sampled throws' verdicts are held to together.
+  o.count_ensembles.family_confidence =
+      t.number_or("ensemble_family_confidence", o.count_ensembles.family_confidence);
+  t.require_in("ensemble_family_confidence", o.count_ensembles.family_confidence, kMinFamilyConfidence,
+               kMaxFamilyConfidence);
   o.sweep_axes.clear();
   for (TomlTable a : t.tables("axis")) {
     SweepAxisOptions ax;

@@ -172,4 +172,25 @@ BOOST_AUTO_TEST_CASE(the_mesh_study_reads_its_meshes_and_refuses_bad_ones) {
   names(error_of({"mesh.base=\"../hard/paper_high_spin.toml\""}), "physical convention");
 }
 
+BOOST_AUTO_TEST_CASE(the_families_confidence_is_a_key_of_its_own_and_held_to_its_range) {
+  // Oracle: the defaults of count_ensembles.hpp and mesh_study.hpp (0.95) where the file names none,
+  // the value given where it does, and the range [0.5, 0.999] (stone_study_file.cpp), its ends kept.
+  const StoneStudiesOptions plain = load_stone_study_file(kQuick).options;
+  BOOST_TEST(plain.count_ensembles.family_confidence == 0.95);
+  BOOST_TEST(plain.mesh.family_confidence == 0.95);
+  const StoneStudiesOptions set =
+      load_stone_study_file(kQuick, {"sweeps.ensemble_family_confidence=0.9", "mesh.family_confidence=0.999"}).options;
+  BOOST_TEST(set.count_ensembles.family_confidence == 0.9);
+  BOOST_TEST(set.mesh.family_confidence == 0.999);
+  BOOST_TEST(error_of({"sweeps.ensemble_family_confidence=0.5", "mesh.family_confidence=0.5"}).empty());
+  auto names = [](const std::string& message, const std::string& part) {
+    BOOST_TEST(message.find(part) != std::string::npos, "'" << part << "' not in: " << message);
+  };
+  names(error_of({"sweeps.ensemble_family_confidence=1.0"}), "sweeps.ensemble_family_confidence");
+  names(error_of({"sweeps.ensemble_family_confidence=0.49"}), "sweeps.ensemble_family_confidence");
+  names(error_of({"mesh.family_confidence=0.9995"}), "mesh.family_confidence");
+  names(error_of({"mesh.family_confidence=\"high\""}), "mesh.family_confidence");
+  names(error_of({"mesh.family_confidance=0.9"}), "family_confidance");  // a misspelt key is refused
+}
+
 BOOST_AUTO_TEST_SUITE_END()
