@@ -86,13 +86,13 @@ constexpr double kDefaultAdaptiveTolerance = 1e-9;
 enum class KinkSteps { none, crossings, all };
 const char* to_string(KinkSteps k);
 bool parse_kink_steps(const std::string& s, KinkSteps& out);
-// What a scheme does when a case names nothing: bs32 crossings (at rtol 1e-8 on the bench grid, `all`
-// kept CVODE's count on the same 290 of 296 settled throws for 5.6× the CPU, 6 December, and was
-// no more accurate in the contact times of single throws: solvers/README.md), dp54 all (its error estimate is all
-// but blind to a jump in the loads inside a step: a jump of J in the first 80 % of a step moves
-// its solution by up to 0.1 J h and its estimate by 0.0012 J h, so it must not step across the
-// distribution's jumps: solvers/README.md, "The fifth-order pair"), the fixed schemes none (a
-// fixed step is what a game engine takes).
+// What a scheme does when a case names nothing: bs32 crossings (at rtol 1e-8 on the bench grid,
+// `all` kept CVODE's count on the same 290 of 296 settled throws for 5.6× the CPU, 6 December, and
+// was no more accurate in the contact times of single throws: solvers/README.md), dp54 all (its
+// error estimate is all but blind to a jump in the loads inside a step: a jump of J in the first
+// 80 % of a step moves its solution by up to 0.1 J h and its estimate by 0.0012 J h, so it must not
+// step across the distribution's jumps: solvers/README.md, "The fifth-order pair"), the fixed
+// schemes none (a fixed step is what a game engine takes).
 KinkSteps default_kink_steps(Scheme s);
 
 struct RealtimeOptions {
