@@ -27,6 +27,12 @@ std::string error_of(const std::vector<std::string>& overrides) {
   return "";
 }
 
+// An error message names `part` and is one line.
+void names(const std::string& message, const std::string& part) {
+  BOOST_TEST(message.find(part) != std::string::npos, "'" << part << "' not in: " << message);
+  BOOST_TEST(message.find('\n') == std::string::npos, message);
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(stone_study_file_keys)
@@ -90,10 +96,6 @@ BOOST_AUTO_TEST_CASE(the_shipped_presets_name_their_laws_ranges_and_curve) {
 
 BOOST_AUTO_TEST_CASE(bad_laws_ranges_and_strategies_are_one_line_errors_naming_the_key) {
   // Oracle: the strict-parsing rule of cases/README.md — file, key and what is wrong, one line.
-  auto names = [](const std::string& message, const std::string& key) {
-    BOOST_TEST(message.find(key) != std::string::npos, message);
-    BOOST_TEST(message.find('\n') == std::string::npos, message);
-  };
   names(error_of({"validation.laws=[\"newtonian\", \"planning\"]"}), "validation.laws");
   names(error_of({"convergence.laws=[\"planing\", \"planing\"]"}), "convergence.laws");
   names(error_of({"validation.ranking.held_spin_rev_s=30.0"}), "validation.ranking.held_spin_rev_s");
@@ -155,9 +157,6 @@ BOOST_AUTO_TEST_CASE(the_mesh_study_reads_its_meshes_and_refuses_bad_ones) {
   BOOST_TEST(m.reference_of(3) == 3u);
   // One solid, two cuts: the same mass to round-off.
   BOOST_TEST(m.meshes[0].stone.mass.mass_kg == m.meshes[1].stone.mass.mass_kg, boost::test_tools::tolerance(1e-12));
-  auto names = [](const std::string& message, const std::string& part) {
-    BOOST_TEST(message.find(part) != std::string::npos, "'" << part << "' not in: " << message);
-  };
   names(error_of({"mesh.segments=[11, 11]"}), "mesh.segments");
   names(error_of({"mesh.segments=[11.5]"}), "mesh.segments");
   names(error_of({"mesh.segments=[2]"}), "mesh.segments");
@@ -183,9 +182,6 @@ BOOST_AUTO_TEST_CASE(the_families_confidence_is_a_key_of_its_own_and_held_to_its
   BOOST_TEST(set.count_ensembles.family_confidence == 0.9);
   BOOST_TEST(set.mesh.family_confidence == 0.999);
   BOOST_TEST(error_of({"sweeps.ensemble_family_confidence=0.5", "mesh.family_confidence=0.5"}).empty());
-  auto names = [](const std::string& message, const std::string& part) {
-    BOOST_TEST(message.find(part) != std::string::npos, "'" << part << "' not in: " << message);
-  };
   names(error_of({"sweeps.ensemble_family_confidence=1.0"}), "sweeps.ensemble_family_confidence");
   names(error_of({"sweeps.ensemble_family_confidence=0.49"}), "sweeps.ensemble_family_confidence");
   names(error_of({"mesh.family_confidence=0.9995"}), "mesh.family_confidence");
