@@ -84,9 +84,10 @@ BOOST_AUTO_TEST_SUITE(held_load_mode)
 BOOST_AUTO_TEST_CASE(rk4_and_cvode_meet_on_the_first_contact_s_end_under_savitsky_wagner) {
   // Oracles: CVODE at a tighter tolerance for the reference; the reference for rk4.
   // The reference at rtol 1e-11 and 1e-12 agree within 1e-9 s: ten times CVODE's usual global
-  // error of 10–100 rtol on a 0.08 s event (measured 4.8e-12 s).
+  // error of 10–100 rtol on a 0.08 s event (measured 2.9e-11 s on 6 December, 4.8e-12 s on 3 December).
   // rk4 at dt 5e-4 and 2.5e-4 s (contact steps 5e-5 and 2.5e-5 s) is within 1e-8 and 1e-9 s of it
-  // (measured 1.5e-9 and 9.9e-11 s). Without the held region the same runs were 1.3e-7 and
+  // (measured 3.8e-9 and 2.5e-10 s on 6 December, 1.5e-9 and 9.9e-11 s on 3 December, the loads
+  // having changed between). Without the held region the same runs were 1.3e-7 and
   // 2.6e-8 s off: a jump of the loads inside a step costs O(h) whatever the scheme (measured
   // 3 December on the stones report's convergence throw, against CVODE at 1e-12 as it then was).
   const Throw t;
