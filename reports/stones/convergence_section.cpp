@@ -150,7 +150,6 @@ std::vector<std::string> left_out(const Record& s, bool with_quantity) {
   return out;
 }
 
-// The adaptive scheme's whole-stepper series (error against its tolerance) as one figure.
 // One adaptive scheme's series against its tolerance (one figure per scheme: two schemes' nine
 // series each on one plot could not be told apart).
 Figure tolerance_figure(const Record& c, const std::string& scheme, const std::string& name) {
