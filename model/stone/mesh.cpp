@@ -6,6 +6,7 @@
 #include <map>
 #include <numbers>
 #include <utility>
+#include <vector>
 
 namespace stoneskip {
 
@@ -175,6 +176,17 @@ MeshCheck check_mesh(const Mesh& mesh) {
       }
     }
   }
+  // Vertices no valid triangle names.
+  std::vector<char> named(static_cast<std::size_t>(std::max(nv, 0)), 0);
+  for (const auto& t : mesh.triangles)
+    for (int k : t)
+      if (k >= 0 && k < nv) named[static_cast<std::size_t>(k)] = 1;
+  int first_loose = -1;
+  for (int k = nv - 1; k >= 0; --k)
+    if (!named[static_cast<std::size_t>(k)]) {
+      ++c.loose_vertices;
+      first_loose = k;
+    }
   auto count = [](int n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); };
   auto blame = [&](int first) { c.at_fault = first == none ? -1 : first; };
   if (mesh.triangles.empty() || nv < 4)
@@ -212,6 +224,13 @@ MeshCheck check_mesh(const Mesh& mesh) {
         most = n;
         c.at_fault = t;
       }
+  } else if (c.loose_vertices) {
+    // A vertex no face names is still a point of the stone to everything that walks the vertex
+    // list: its crossing of the surface would start a contact no face makes, and it would set
+    // the bounding and the air disk's default radius.
+    c.problem = count(c.loose_vertices, "vertex belongs", "vertices belong") +
+                " to no triangle (a loose point would be taken for part of the stone: remove it, e.g. as the file is exported)";
+    c.vertex_at_fault = first_loose;
   } else if (c.degenerate_triangles) {
     c.problem = count(c.degenerate_triangles, "triangle has", "triangles have") + " zero area";
     blame(first_degenerate);

@@ -49,12 +49,14 @@ struct MeshCheck {
   int degenerate_triangles = 0;    // zero-area triangles
   int bad_indices = 0;             // triangle indices outside the vertex list
   int repeated_vertex_triangles = 0;  // triangles naming one vertex twice ("f 1 1 2")
+  int loose_vertices = 0;          // vertices no triangle names (the stone's events watch every vertex)
   double signed_volume_m3 = 0;     // > 0 for an outward-oriented closed mesh
   std::string problem;             // first problem found, in words; empty when ok
   int at_fault = -1;               // for `problem`, a triangle (0-based) at fault: the first among
                                    // those the problem counts (for edges traversed twice one way,
                                    // the triangle with most of them: a flipped face has all three);
-                                   // -1 where no one triangle is (an inward mesh)
+                                   // -1 where no one triangle is (an inward mesh, loose vertices)
+  int vertex_at_fault = -1;        // for loose vertices, the first (0-based); -1 otherwise
 };
 
 MeshCheck check_mesh(const Mesh& mesh);

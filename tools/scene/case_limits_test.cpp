@@ -116,6 +116,27 @@ BOOST_AUTO_TEST_CASE(a_mesh_in_millimetres_is_named_as_one_before_its_mass_is_ju
   fs::remove_all(dir);
 }
 
+BOOST_AUTO_TEST_CASE(a_loose_vertex_in_an_obj_stone_is_refused_naming_its_line) {
+  // Oracle: a closed, outward 6 cm cube (lines 1–8 its corners, 10–21 its faces) with a stray
+  // point on line 9 that no face names: the case is refused, naming the file, that line and why.
+  const std::string dir = fs::temp_directory_path() / ("mesh_loose_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string obj = dir + "/cube.obj";
+  const std::string cube = "v 0 0 0\nv 0.06 0 0\nv 0.06 0.06 0\nv 0 0.06 0\nv 0 0 0.06\nv 0.06 0 0.06\nv 0.06 0.06 0.06\nv 0 0.06 0.06\n";
+  const std::string faces = "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 4 8 7\nf 4 7 3\nf 1 5 8\nf 1 8 4\n"
+                            "f 2 3 7\nf 2 7 6\n";
+  std::string text = kCase;
+  const std::string dims = "shape = \"prism\"\nradius_m = 0.03\nthickness_m = 0.008\n";
+  text.replace(text.find(dims), dims.size(), "shape = \"mesh\"\n");
+  std::ofstream(obj) << cube << faces;
+  BOOST_TEST(error_of(text, {"stone.mesh_file=\"" + obj + "\""}) == "");  // the cube alone is a stone
+  std::ofstream(obj) << cube << "v 0.03 0.03 -0.01\n" << faces;
+  const std::string e = error_of(text, {"stone.mesh_file=\"" + obj + "\""});
+  BOOST_TEST(e.find("stone.mesh_file: " + obj + ":9: 1 vertex belongs to no triangle") != std::string::npos, e);
+  BOOST_TEST(e.find('\n') == std::string::npos, e);
+  fs::remove_all(dir);
+}
+
 BOOST_AUTO_TEST_CASE(an_unstable_scene_water_is_refused_naming_its_step) {
   // Oracle: the nine-point isotropic stencil's limit over the modes of this 50 × 50 reflecting pond
   // (k = πm/50, m < 50: the most negative symbol at cos k = −cos(π/50), −10/3 − (8/3)c + (2/3)c²,

@@ -8,9 +8,11 @@
 
 namespace stoneskip {
 
-Mesh parse_obj(const std::string& text, const std::string& name, std::vector<long>* triangle_lines) {
+Mesh parse_obj(const std::string& text, const std::string& name, std::vector<long>* triangle_lines,
+               std::vector<long>* vertex_lines) {
   Mesh m;
   if (triangle_lines) triangle_lines->clear();
+  if (vertex_lines) vertex_lines->clear();
   std::istringstream in(text);
   std::string line;
   long line_no = 0;
@@ -26,6 +28,7 @@ Mesh parse_obj(const std::string& text, const std::string& name, std::vector<lon
       if (std::abs(x) > kMaxObjCoordinate_m || std::abs(y) > kMaxObjCoordinate_m || std::abs(z) > kMaxObjCoordinate_m)
         throw_input_error(name, line_no, "", "a vertex coordinate beyond ±1e6 m");
       m.vertices.emplace_back(x, y, z);
+      if (vertex_lines) vertex_lines->push_back(line_no);
     } else if (tag == "f") {
       std::vector<int> idx;
       std::string tok;
@@ -58,8 +61,8 @@ Mesh parse_obj(const std::string& text, const std::string& name, std::vector<lon
   return m;
 }
 
-Mesh read_obj(const std::string& path, std::vector<long>* triangle_lines) {
-  return parse_obj(read_text_file(path, kMaxObjBytes), path, triangle_lines);
+Mesh read_obj(const std::string& path, std::vector<long>* triangle_lines, std::vector<long>* vertex_lines) {
+  return parse_obj(read_text_file(path, kMaxObjBytes), path, triangle_lines, vertex_lines);
 }
 
 }  // namespace stoneskip

@@ -16,8 +16,10 @@ constexpr std::size_t kMaxObjTriangles = 1000000;
 constexpr double kMaxObjCoordinate_m = 1e6;
 
 // triangle_lines, where given, receives each triangle's line in the file (1-based; a polygon's
-// triangles share its line), so that a problem found in the mesh can name the line.
-Mesh read_obj(const std::string& path, std::vector<long>* triangle_lines = nullptr);
-Mesh parse_obj(const std::string& text, const std::string& name, std::vector<long>* triangle_lines = nullptr);
+// triangles share its line), and vertex_lines each vertex's, so that a problem found in the mesh
+// can name the line.
+Mesh read_obj(const std::string& path, std::vector<long>* triangle_lines = nullptr, std::vector<long>* vertex_lines = nullptr);
+Mesh parse_obj(const std::string& text, const std::string& name, std::vector<long>* triangle_lines = nullptr,
+               std::vector<long>* vertex_lines = nullptr);
 
 }  // namespace stoneskip

@@ -280,14 +280,16 @@ Stone build_stone(const StoneSpec& spec, const std::string& file) {
       d << "lens R=" << spec.radius_m << " m, h=" << spec.thickness_m << " m, N=" << spec.segments;
       break;
     case StoneShape::mesh_file: {
-      std::vector<long> lines;  // each triangle's line in the OBJ file
-      mesh = read_obj(spec.mesh_file, &lines);
+      std::vector<long> lines, vertex_lines;  // each triangle's and each vertex's line in the OBJ file
+      mesh = read_obj(spec.mesh_file, &lines, &vertex_lines);
       // A problem names the OBJ file's line of the first triangle at fault (and of the second, for
-      // two that cross): a triangle's number alone is no help where polygons were fanned.
-      auto refuse = [&](const std::string& problem, int at_fault, int other) {
+      // two that cross), or of the vertex at fault: a triangle's number alone is no help where
+      // polygons were fanned.
+      auto refuse = [&](const std::string& problem, int at_fault, int other, int vertex = -1) {
         const auto line = [&](int t) { return t >= 0 && t < static_cast<int>(lines.size()) ? lines[t] : 0L; };
+        const long at = vertex >= 0 && vertex < static_cast<int>(vertex_lines.size()) ? vertex_lines[vertex] : line(at_fault);
         std::string where = spec.mesh_file;
-        if (line(at_fault) > 0) where += ":" + std::to_string(line(at_fault));
+        if (at > 0) where += ":" + std::to_string(at);
         std::string more;
         if (line(other) > 0)
           more = " (triangle " + std::to_string(at_fault + 1) + " is on line " + std::to_string(line(at_fault)) + ", triangle " +
@@ -295,7 +297,7 @@ Stone build_stone(const StoneSpec& spec, const std::string& file) {
         throw_input_error(file, 0, "stone.mesh_file", where + ": " + problem + more);
       };
       const MeshCheck check = check_mesh(mesh);
-      if (!check.ok) refuse(check.problem, check.at_fault, -1);
+      if (!check.ok) refuse(check.problem, check.at_fault, -1, check.vertex_at_fault);
       const SolidCheck solid = check_solid(mesh);
       if (!solid.ok) refuse(solid.problem, solid.at_fault, solid.other_at_fault);
       d << "mesh " << spec.mesh_file;
