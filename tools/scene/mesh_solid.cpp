@@ -199,6 +199,21 @@ nesting:
       return out;
     }
   }
+  // 4. One piece: in a solid that passed 3 each piece has one outward shell (its outside; the
+  // inward ones are its cavities), so a second outward shell is a second piece, apart from the
+  // first or loose inside its cavity. A stone is one rigid body: two pieces would be carried as one,
+  // their gap rigid (an exported scene's other object, taken for part of the stone).
+  std::vector<int> outward;
+  for (std::size_t s = 0; s < shells.size(); ++s)
+    if (shell_volume[s] > 0) outward.push_back(static_cast<int>(s));
+  out.pieces = static_cast<int>(outward.size());
+  if (outward.size() > 1) {
+    out.ok = false;
+    out.at_fault = shells[outward[1]][0];
+    out.problem = "the mesh is " + std::to_string(outward.size()) + " separate pieces (shells " + std::to_string(outward[0] + 1) +
+                  " and " + std::to_string(outward[1] + 1) +
+                  " each bound a solid of their own): a stone is one rigid piece (another object exported with it?)";
+  }
   return out;
 }
 

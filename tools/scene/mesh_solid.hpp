@@ -13,6 +13,9 @@
 //    Van Oosterom & Strackee 1983) and w + s_A (s_A = ±1 by the orientation of A) must both be
 //    0 or 1. So an outward shell inside another outward shell (volume twice) is refused, an inward
 //    shell inside an outward one (a cavity) is allowed.
+//  * One piece: a solid that passes the above has one outward shell per piece, so a second
+//    outward shell (a box beside the stone, or loose in its cavity) is refused: a stone is one
+//    rigid body.
 // Triangle pairs are found through a uniform grid over the bounding box, so the check is about
 // linear in the triangle count for meshes of evenly sized triangles; a mesh that puts more than
 // 2e8 triangle pairs into common cells is not tested for crossings (crossings_checked = false).
@@ -25,6 +28,7 @@ namespace stoneskip {
 struct SolidCheck {
   bool ok = true;
   int shells = 0;
+  int pieces = 1;                 // outward shells, where the shells were compared (one solid each)
   bool crossings_checked = true;  // false: more than 2e8 candidate pairs (a fan of long thin
                                   // triangles), the crossing test was not completed
   std::string problem;            // empty when ok

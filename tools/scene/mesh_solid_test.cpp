@@ -62,13 +62,32 @@ BOOST_AUTO_TEST_CASE(the_winding_number_is_one_inside_and_zero_outside) {
   BOOST_TEST(std::abs(winding_number(box, all(box), Vec3(0.5, 1, 0)) - 0.5) < 1e-9);  // on a face
 }
 
-BOOST_AUTO_TEST_CASE(one_box_and_two_apart_are_one_solid) {
+BOOST_AUTO_TEST_CASE(one_box_is_one_solid_and_two_apart_are_two_pieces) {
+  // Oracle: by construction. Two boxes apart each bound a solid of their own, and so does a box
+  // loose in a hollow box's cavity: a stone is one rigid piece, and main carried both as one (a box
+  // a metre from the stone passed every other check). The hollow box alone is one piece.
   const SolidCheck one = check_solid(boxes({{Vec3(0, 0, 0), Vec3(1, 1, 1)}}));
   BOOST_TEST(one.ok, one.problem);
   BOOST_TEST(one.shells == 1);
   const SolidCheck two = check_solid(boxes({{Vec3(0, 0, 0), Vec3(1, 1, 1)}, {Vec3(2, 0, 0), Vec3(3, 1, 1)}}));
-  BOOST_TEST(two.ok, two.problem);
+  BOOST_TEST(!two.ok);
   BOOST_TEST(two.shells == 2);
+  BOOST_TEST(two.pieces == 2);
+  BOOST_TEST(two.at_fault == 12);  // the second box's first triangle
+  BOOST_TEST(two.problem == "the mesh is 2 separate pieces (shells 1 and 2 each bound a solid of their own): a stone is one "
+                            "rigid piece (another object exported with it?)",
+             two.problem);
+  Mesh rattle;
+  add_box(rattle, Vec3(0, 0, 0), Vec3(1, 1, 1));
+  add_box(rattle, Vec3(0.25, 0.25, 0.25), Vec3(0.75, 0.75, 0.75), true);
+  const SolidCheck hollow = check_solid(rattle);
+  BOOST_TEST(hollow.ok, hollow.problem);
+  BOOST_TEST(hollow.pieces == 1);
+  add_box(rattle, Vec3(0.4, 0.4, 0.4), Vec3(0.6, 0.6, 0.6));
+  const SolidCheck loose = check_solid(rattle);
+  BOOST_TEST(!loose.ok);
+  BOOST_TEST(loose.pieces == 2);
+  BOOST_TEST(loose.problem.find("the mesh is 2 separate pieces (shells 1 and 3") == 0u, loose.problem);
 }
 
 BOOST_AUTO_TEST_CASE(overlapping_and_nested_outward_shells_are_refused) {
