@@ -61,7 +61,9 @@ struct CacheAligned {
   T* allocate(std::size_t n) {
     return reinterpret_cast<T*>(static_cast<char*>(::operator new(bytes(n), alignment())) + page_offset);
   }
-  void deallocate(T* p, std::size_t n) { ::operator delete(reinterpret_cast<char*>(p) - page_offset, bytes(n), alignment()); }
+  // The unsized aligned delete: the sized one is not declared where sized deallocation is off
+  // (clang before 19 by default: the fuzz build, tools/README.md, failed to compile).
+  void deallocate(T* p, std::size_t) { ::operator delete(reinterpret_cast<char*>(p) - page_offset, alignment()); }
   friend bool operator==(const CacheAligned& a, const CacheAligned& b) { return a.paged == b.paged && a.page_offset == b.page_offset; }
 
  private:
