@@ -4,7 +4,7 @@
 #   *_test.cpp   -> one Boost.Test executable NAME_tests, registered with ctest;
 #   *_bench.cpp  -> one Google Benchmark executable NAME_bench;
 #   *_fuzz.cpp   -> one libFuzzer target each (STONESKIP_FUZZERS=ON, clang) and, always, a corpus
-#                   replay test built with any compiler (tools/capture/fuzz_corpus/<stem>/).
+#                   replay test built with any compiler (<dir>/fuzz_corpus/<stem>/).
 # Adding a file needs no CMake edit (CONFIGURE_DEPENDS re-globs on build).
 function(stoneskip_module name)
   cmake_parse_arguments(A "" "DIR" "DEPS;TEST_DEPS" ${ARGN})
