@@ -125,6 +125,7 @@ MeshCheck check_mesh(const Mesh& mesh) {
   const Vec3 o = nv > 0 ? Vec3(0.5 * (lo + hi)) : Vec3::Zero();
   constexpr int none = std::numeric_limits<int>::max();
   int first_bad_index = none, first_repeated = none, first_degenerate = none;
+  std::vector<char> named(static_cast<std::size_t>(std::max(nv, 0)), 0);  // vertices a valid triangle names
   for (int i = 0; i < static_cast<int>(mesh.triangles.size()); ++i) {
     const auto& t = mesh.triangles[i];
     if (t[0] < 0 || t[1] < 0 || t[2] < 0 || t[0] >= nv || t[1] >= nv || t[2] >= nv) {
@@ -132,6 +133,7 @@ MeshCheck check_mesh(const Mesh& mesh) {
       first_bad_index = std::min(first_bad_index, i);
       continue;
     }
+    for (int k : t) named[static_cast<std::size_t>(k)] = 1;
     const Vec3 a = mesh.vertices[t[0]] - o;
     const Vec3 b = mesh.vertices[t[1]] - o;
     const Vec3 d = mesh.vertices[t[2]] - o;
@@ -176,11 +178,6 @@ MeshCheck check_mesh(const Mesh& mesh) {
       }
     }
   }
-  // Vertices no valid triangle names.
-  std::vector<char> named(static_cast<std::size_t>(std::max(nv, 0)), 0);
-  for (const auto& t : mesh.triangles)
-    for (int k : t)
-      if (k >= 0 && k < nv) named[static_cast<std::size_t>(k)] = 1;
   int first_loose = -1;
   for (int k = nv - 1; k >= 0; --k)
     if (!named[static_cast<std::size_t>(k)]) {

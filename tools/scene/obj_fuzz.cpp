@@ -3,36 +3,24 @@
 // and their plausibility, the principal axes) on arbitrary bytes. A mesh comes from a user's
 // exporter or scanner, not from stoneskip: bad input must end in an InputError, never a crash, a
 // hang or undefined behaviour.
-#include <unistd.h>
-
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
-#include <filesystem>
 #include <string>
 
 #include "tools/io/input_error.hpp"
+#include "tools/io/scratch_dir.hpp"
 #include "tools/scene/stone_case.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   // build_stone reads the file a case names: the bytes go to a file of this process's own.
-  static const std::string path =
-      (std::filesystem::temp_directory_path() / ("stoneskip_obj_fuzz_" + std::to_string(::getpid()) + ".obj")).string();
-  if (std::FILE* f = std::fopen(path.c_str(), "wb")) {
-    const bool written = size == 0 || std::fwrite(data, 1, size, f) == size;
-    std::fclose(f);
-    if (!written) return 0;
-  } else {
-    return 0;
-  }
+  static const stoneskip::ScratchDir scratch("stoneskip_obj_fuzz");
   stoneskip::StoneSpec spec;
   spec.shape = stoneskip::StoneShape::mesh_file;
-  spec.mesh_file = path;
+  spec.mesh_file = scratch.write("stone.obj", std::string(reinterpret_cast<const char*>(data), size)).string();
   spec.density_kg_m3 = 2500;
   try {
     (void)stoneskip::build_stone(spec, "fuzz.toml");
   } catch (const stoneskip::InputError&) {
   }
-  std::remove(path.c_str());
   return 0;
 }
