@@ -115,6 +115,36 @@ BOOST_AUTO_TEST_CASE(free_flight_follows_the_parabola) {
   }
 }
 
+BOOST_AUTO_TEST_CASE(the_trajectory_is_sampled_at_each_output_time_however_short_output_dt_is) {
+  // Oracle: rk4 in free flight with 1 ms steps, 0.5 s. With output_dt_s = 0.01 the samples are the
+  // steps at k·0.01 s, k = 0 … 50 (to round-off of the summed steps); with an output_dt_s far below
+  // the step (1e-14 s, and 1e-300 s) every step's end is an output time: the samples are those of
+  // output_dt_s = 0 (every step), 501 of them. The stepper used to step the next output time up
+  // by output_dt_s, which at 1e-14 s took 1e11 additions a step and at 1e-300 s never moved it
+  // (a hang, found by feeding the CLI such a value).
+  const Stone s = prism_stone();
+  const RigidState s0 = initial_state(s, ThrowParameters{12.0, -30.0, 5.0, 7.0, 1000.0, 0.0});
+  auto times = [&](double output_dt_s) {
+    RealtimeOptions o;
+    o.scheme = Scheme::rk4;
+    o.dt_s = o.contact_dt_s = 1e-3;
+    o.t_max_s = 0.5;
+    o.output_dt_s = output_dt_s;
+    std::vector<double> t;
+    for (const TrajectorySample& x : run_realtime(s, vacuum(), s0, o).trajectory) t.push_back(x.t_s);
+    return t;
+  };
+  const std::vector<double> every = times(0), coarse = times(0.01);
+  BOOST_TEST_REQUIRE(every.size() == 501u);
+  BOOST_TEST_REQUIRE(coarse.size() == 51u);
+  for (std::size_t k = 0; k < coarse.size(); ++k) BOOST_TEST(std::abs(coarse[k] - 0.01 * k) <= 1e-12);
+  for (double tiny : {1e-14, 1e-300}) {
+    const std::vector<double> t = times(tiny);
+    BOOST_TEST_REQUIRE(t.size() == every.size(), "output_dt_s = " << tiny);
+    for (std::size_t k = 0; k < t.size(); ++k) BOOST_TEST(t[k] == every[k]);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(a_tumbling_asymmetric_stone_keeps_its_angular_momentum_and_energy) {
   // Oracle: torque-free rigid body — L (world) and ½ ω·L are invariants. Spun mostly about the
   // intermediate axis, the stone tumbles (flips) repeatedly over 10 s, exercising the attitude.

@@ -255,6 +255,15 @@ y_m = 0.5
   const ResourceEstimate be = estimate_run(b, RunSolvers{});
   BOOST_TEST(be.work.at(0).count == 1e10 * 6 * 44);
   BOOST_CHECK_THROW(enforce_limits(be, ResourceLimits{}, "b.toml"), InputError);
+  // The reference interpolates every output time inside its steps: output_dt_s = 1e-9 over 10 s is
+  // 1e10 samples however few steps it takes, not its max_steps (2e6). Estimated as its steps, such
+  // a run was let start and ran out of memory. The real-time stepper records at most one sample a
+  // step, so its estimate stays bounded by its steps.
+  const StoneCase r = stone_case_from_document(parse_toml_text(kCase, "r.toml", {"solver.t_max_s=10", "solver.output_dt_s=1e-9"}));
+  const ResourceEstimate re = estimate_run(r, RunSolvers{false, true, false});
+  BOOST_TEST(re.memory_bytes >= 1e10 * sizeof(TrajectorySample));
+  BOOST_CHECK_THROW(enforce_limits(re, ResourceLimits{}, "r.toml"), InputError);
+  BOOST_CHECK_NO_THROW(enforce_limits(estimate_run(r, RunSolvers{true, false, false}), ResourceLimits{}, "r.toml"));
 }
 
 BOOST_AUTO_TEST_CASE(every_shipped_case_and_baseline_is_inside_the_bounds_and_limits) {

@@ -45,9 +45,16 @@ double realtime_steps(const RealtimeOptions& o) {
 }
 
 // Trajectory samples held in memory: one per output_dt_s (plus contact transitions), or every step.
+// The real-time stepper records at the ends of its steps, at most one sample a step; the reference
+// interpolates every output time inside its steps, however many fall in one (cvode_stone.cpp,
+// ReferenceSolve::integrate), so its count is not bounded by its steps.
 double samples(double t_max_s, double output_dt_s, double max_steps) {
   if (output_dt_s <= 0) return max_steps;
   return std::min(max_steps, std::floor(t_max_s / output_dt_s) + 1) + 64;
+}
+double interpolated_samples(double t_max_s, double output_dt_s, double max_steps) {
+  if (output_dt_s <= 0) return max_steps;
+  return std::floor(t_max_s / output_dt_s) + 1 + 64;
 }
 
 // A trajectory sample in memory (a vector grows by doubling: up to twice its size) and, with
@@ -119,7 +126,7 @@ ResourceEstimate estimate_run(const StoneCase& c, const RunSolvers& solvers) {
     e.add_work(steps * triangles, kMaxTriangleEvaluations,
                "triangle evaluations of the reference ([reference] max_steps = " + sci(steps) + " × " + sci(triangles) +
                    " triangles)");
-    const double n = samples(o.t_max_s, o.output_dt_s, steps);
+    const double n = interpolated_samples(o.t_max_s, o.output_dt_s, steps);
     e.add_memory(n * sample_bytes(solvers.writes_file), sci(n) + " trajectory samples of the reference");
     e.add_memory(steps * kDouble, human_bytes(steps * kDouble) + " for the located events' times, at most one a step ([reference] "
                                       "max_steps = " + sci(steps) + ")");

@@ -26,11 +26,8 @@ StoneCase load_case(const fs::path& dir, TomlTable& t, const std::string& key, c
 std::vector<double> range_of(TomlTable& t, const std::string& key, const std::vector<double>& fallback) {
   auto v = t.maybe_numbers(key);
   if (!v) return fallback;
-  if (v->size() != 3 || !((*v)[2] > 0) || (*v)[1] < (*v)[0] || ((*v)[1] - (*v)[0]) / (*v)[2] > 1e4)
-    t.fail(key, "must be [from, to, step] with step > 0, to >= from and at most 1e4 values");
-  std::vector<double> out;
-  for (double x = (*v)[0]; x <= (*v)[1] + 1e-9 * (*v)[2]; x += (*v)[2]) out.push_back(x);
-  return out;
+  if (v->size() != 3) t.fail(key, "must be [from, to, step]");
+  return from_to_step(t, key, (*v)[0], (*v)[1], (*v)[2], 1e4 + 1);
 }
 
 std::vector<int> int_list(TomlTable& t, const std::string& key, const std::vector<int>& fallback, int lo, int hi) {

@@ -49,6 +49,11 @@ BOOST_AUTO_TEST_CASE(bad_values_are_one_line_errors_naming_the_key) {
   names(error_of({"rings.case=\"nowhere\""}), "rings.case");
   names(error_of({"shortcuts.epsilons_m=[-1e-6]"}), "shortcuts.epsilons_m");
   names(error_of({"speed.sweep_spin_range=[40.0, 0.0, 20.0]"}), "speed.sweep_spin_range");
+  // A step that adding does not change the value by: the range was summed without end (until the
+  // memory ran out), found by feeding the report such a file.
+  const std::string tiny = error_of({"speed.sweep_spin_range=[1e20, 1e20, 1.0]"});
+  names(tiny, "speed.sweep_spin_range");
+  BOOST_TEST(tiny.find("below the values' resolution") != std::string::npos, tiny);
   names(error_of({"stability.stencil=\"six_point\""}), "stability.stencil");
   names(error_of({"convergence.stencils=[]"}), "convergence.stencils");
   names(error_of({"frames.treshold_fraction=0.1"}), "frames.treshold_fraction");

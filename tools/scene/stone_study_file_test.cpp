@@ -140,6 +140,12 @@ BOOST_AUTO_TEST_CASE(bad_laws_ranges_and_strategies_are_one_line_errors_naming_t
   // A measured curve whose points do not pair up.
   names(error_of({R"(validation.curve=[{key = "clanet_min_speed", label = "l", source = "s", x = [20.0, 25.0], low = [2.5], high = [2.6, 2.7]}])"}),
         "low");
+  // An axis's from/to/step whose step does not move its values: summed without end before (until
+  // the memory ran out). Refused on the step, naming why.
+  const std::string tiny = error_of(
+      {R"(sweeps.axis=[{parameter = "spin_rev_s", from = 1e20, to = 1e20, step = 1.0, tolerance = 0.25}])"});
+  names(tiny, "step");
+  names(tiny, "below the values' resolution");
   BOOST_TEST(error_of({}).empty());
 }
 

@@ -1,5 +1,7 @@
 #include "tools/scene/study_keys.hpp"
 
+#include <sstream>
+
 namespace stoneskip {
 
 std::vector<double> positive_list(TomlTable& t, const std::string& key, const std::vector<double>& fallback) {
@@ -26,6 +28,23 @@ long long count_in(TomlTable& t, const std::string& key, long long fallback, lon
   const long long v = t.integer_or(key, fallback);
   if (v < lo || v > hi) t.fail(key, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
   return v;
+}
+
+std::vector<double> from_to_step(TomlTable& t, const std::string& key, double from, double to, double step,
+                                 double max_values) {
+  if (!(step > 0)) t.fail(key, "the step must be > 0");
+  if (!(to >= from)) t.fail(key, "to must be >= from");
+  if ((to - from) / step > max_values - 1) t.fail(key, "more than " + std::to_string(static_cast<long long>(max_values)) + " values");
+  std::vector<double> out;
+  for (double x = from; x <= to + 1e-9 * step; x += step) {
+    if (!(x + step > x)) {
+      std::ostringstream m;
+      m << "the step " << step << " is below the values' resolution (adding it leaves " << x << " unchanged)";
+      t.fail(key, m.str());
+    }
+    out.push_back(x);
+  }
+  return out;
 }
 
 std::string study_preset(TomlTable& study, const std::string& kind) {

@@ -15,6 +15,12 @@ std::vector<double> any_list(TomlTable& t, const std::string& key, const std::ve
 double positive(TomlTable& t, const std::string& key, double fallback);
 // A whole number in [lo, hi]; `fallback` if absent.
 long long count_in(TomlTable& t, const std::string& key, long long fallback, long long lo, long long hi);
+// from, from + step, … up to `to` (and `to` itself within 1e-9 step), summed step by step as the
+// studies always have (their grids' values are bit for bit those of earlier runs). `key` is failed
+// when step ≤ 0, to < from, there would be more than max_values values, or adding step to a value
+// does not change it (a step below the values' resolution: [1e20, 1e20, 1] never ended).
+std::vector<double> from_to_step(TomlTable& t, const std::string& key, double from, double to, double step,
+                                 double max_values);
 // The [study] table's kind, which must be `kind` ("waves", "stones", "scene"), and its preset;
 // the table is left open for the study's own keys.
 std::string study_preset(TomlTable& study, const std::string& kind);
