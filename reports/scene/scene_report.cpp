@@ -8,6 +8,7 @@
 #include "reports/common/markdown.hpp"
 #include "reports/common/plot.hpp"
 #include "reports/scene/frame_plot.hpp"
+#include "verification/study/stored_values.hpp"
 
 namespace stoneskip {
 
@@ -435,25 +436,28 @@ Figure still_figure(const std::string& name, const Record& r) {
     s << "'" << table << ".dat' matrix using (" << x0 << "+$1*" << dx << "):(" << y0 << "+$2*" << dx << "):3";
     return s.str();
   };
+  // The numbers the script is written from, finite (a NaN was written as `nan`, which gnuplot
+  // refuses as an undefined variable): data edited by hand is refused by name (stored_values.hpp).
+  auto at = [&r](const char* key) { return stored_finite(r, key); };
   FramePlot p;
-  p.top = matrix(fig.name + "_top", r.number("top_x0_m"), r.number("top_y0_m"), r.number("top_dx_m"));
-  p.near = matrix(fig.name + "_near", r.number("near_x0_m"), r.number("near_y0_m"), r.number("near_dx_m"));
+  p.top = matrix(fig.name + "_top", at("top_x0_m"), at("top_y0_m"), at("top_dx_m"));
+  p.near = matrix(fig.name + "_near", at("near_x0_m"), at("near_y0_m"), at("near_dx_m"));
   if (r.table("track").rows() >= 2) p.track = "'" + fig.name + "_track.dat' using 1:2";
   if (r.table("touches").rows() >= 1) p.touches = "'" + fig.name + "_touches.dat' using 1:2";
-  p.stone_x_m = r.number("stone_x_m");
-  p.stone_y_m = r.number("stone_y_m");
-  p.stone_z_m = r.number("stone_z_m");
-  p.stone_radius_m = r.number("stone_radius_m");
+  p.stone_x_m = at("stone_x_m");
+  p.stone_y_m = at("stone_y_m");
+  p.stone_z_m = at("stone_z_m");
+  p.stone_radius_m = at("stone_radius_m");
   p.stone_sunk = r.text("stone_status") == "sank";
-  p.pond_x0_m = r.number("pond_x0_m");
-  p.pond_x1_m = r.number("pond_x1_m");
-  p.pond_y0_m = r.number("pond_y0_m");
-  p.pond_y1_m = r.number("pond_y1_m");
+  p.pond_x0_m = at("pond_x0_m");
+  p.pond_x1_m = at("pond_x1_m");
+  p.pond_y0_m = at("pond_y0_m");
+  p.pond_y1_m = at("pond_y1_m");
   const int n = static_cast<int>(r.table("near").columns.size());
-  p.near_x0_m = r.number("near_x0_m");
-  p.near_x1_m = r.number("near_x0_m") + (n - 1) * r.number("near_dx_m");
-  p.near_y0_m = r.number("near_y0_m");
-  p.near_y1_m = r.number("near_y0_m") + (n - 1) * r.number("near_dx_m");
+  p.near_x0_m = at("near_x0_m");
+  p.near_x1_m = at("near_x0_m") + (n - 1) * at("near_dx_m");
+  p.near_y0_m = at("near_y0_m");
+  p.near_y1_m = at("near_y0_m") + (n - 1) * at("near_dx_m");
   // The colour scale from the drawn data (reports/common/colour_scale.hpp), the 3-D box from its window's.
   const RobustScale top = robust_scale(r.table("top").values), near = robust_scale(r.table("near").values);
   p.scale_m = top.scale;

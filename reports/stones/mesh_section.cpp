@@ -6,6 +6,7 @@
 
 #include "reports/common/markdown.hpp"
 #include "reports/stones/report_sections.hpp"
+#include "verification/study/stored_values.hpp"
 
 namespace stoneskip {
 
@@ -84,7 +85,7 @@ SectionOutput mesh_section(const Record& m) {
   const auto thr = counts.column("throw"), spin = counts.column("spin_rev_s"), attack = counts.column("attack_angle_deg"),
              mesh = counts.column("mesh"), mean = counts.column("count_mean"), sd = counts.column("count_sd"),
              lo = counts.column("count_min"), hi = counts.column("count_max"), failed = counts.column("failed");
-  const std::size_t nt = static_cast<std::size_t>(m.number("throws"));
+  const std::size_t nt = stored_count(m, "throws", counts.rows());  // each throw has rows in the table
   std::vector<std::string> headers{"mesh", "mass (g)"};
   for (std::size_t t = 0; t < nt; ++t)
     for (std::size_t i = 0; i < counts.rows(); ++i)

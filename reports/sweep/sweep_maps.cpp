@@ -141,7 +141,13 @@ std::string index_tics(const char* axis, const std::vector<double>& values, bool
         step = m * mag;
         break;
       }
-    for (double t = std::ceil(lo / step) * step; t <= hi + 1e-9 * step; t += step) ticks.push_back(std::abs(t) < 1e-12 * step ? 0 : t);
+    // The multiples of step in [lo, hi], by index: summing step from lo never ended where step is
+    // below lo's resolution (an axis from 0.1 to 0.1 + 1 ulp hung sweep-plot).
+    const double k0 = std::ceil(lo / step), k1 = std::floor(hi / step + 1e-9);
+    for (int i = 0; std::isfinite(k0) && k0 + i <= k1 && i <= 10; ++i) {
+      const double t = (k0 + i) * step;
+      if (ticks.empty() || t > ticks.back()) ticks.push_back(std::abs(t) < 1e-12 * step ? 0 : t);
+    }
   }
   bool first = true;
   for (double t : ticks) {

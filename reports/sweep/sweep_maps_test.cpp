@@ -114,6 +114,29 @@ BOOST_AUTO_TEST_CASE(a_pair_map_is_the_mean_over_the_other_axes) {
       BOOST_TEST(std::abs(m.at(ix, iy) - (m.x_values[ix] + 10 * m.y_values[iy] + 250)) < kRoundoff * 300);
 }
 
+BOOST_AUTO_TEST_CASE(an_axis_whose_values_are_one_ulp_apart_gets_its_tics_in_finite_time) {
+  // A valid design (from < to) whose two values are 0.1 and the next double: the tic step (a fifth
+  // of the range, rounded) is below 0.1's resolution, and summing it from 0.1 never reached the
+  // end (sweep-plot hung). Oracle: the tics are multiples of the step inside [from, to], so here
+  // 1 or 2 distinct labels, each reading 0.1 at 10 digits, at most 11 of them in any case.
+  SweepData d = grid_data({2, 3}, SweepSolvers::realtime);
+  d.design.axes[0].from = 0.1;
+  d.design.axes[0].to = std::nextafter(0.1, 1.0);
+  fill(d, [](const std::vector<double>& p, int) { return p[1]; });
+  const auto figs = sweep_map_figures(d);
+  const std::string& script = figure(figs, "sweep_bounces_realtime_0_1").script;
+  const std::size_t at = script.find("set xtics (");
+  BOOST_TEST_REQUIRE(at != std::string::npos, script);
+  const std::string tics = script.substr(at, script.find('\n', at) - at);
+  std::size_t labels = 0;
+  for (std::size_t q = tics.find('\''); q != std::string::npos; q = tics.find('\'', tics.find('\'', q + 1) + 1)) {
+    BOOST_TEST(tics.compare(q, 5, "'0.1'") == 0, tics);  // quoted(num(·)): 10 digits, 0.1 either way
+    ++labels;
+  }
+  BOOST_TEST(labels >= 1u, tics);
+  BOOST_TEST(labels <= 2u, tics);
+}
+
 BOOST_AUTO_TEST_CASE(a_two_key_grid_with_both_solvers_gets_count_and_disagreement_maps) {
   // Oracle: bounces = k0 + k1 (real-time) and k0 (reference) on a 3 × 4 grid; the disagreement
   // is k1; count thresholds are drawn between the counts present.

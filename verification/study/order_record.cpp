@@ -1,5 +1,6 @@
 #include "verification/study/order_record.hpp"
 
+#include "verification/study/stored_values.hpp"
 #include "verification/study/verdict_rules.hpp"
 #include "verification/study/words.hpp"
 
@@ -69,12 +70,12 @@ OrderFit stored_order_fit(const Record& r) {
   f.order = r.number("order");
   f.order_low = r.number("order_low");
   f.order_high = r.number("order_high");
-  f.points = static_cast<int>(r.number("points"));
+  f.points = static_cast<int>(stored_count(r, "points", kMostFitPoints));
   f.r_squared = r.number("r_squared");
   f.constant = r.number("constant");
   if (r.has_text("problem")) f.problem = r.text("problem");
-  if (r.has_number("failed_points")) f.failed_points = static_cast<int>(r.number("failed_points"));
-  if (r.has_number("nonpositive_points")) f.nonpositive_points = static_cast<int>(r.number("nonpositive_points"));
+  if (r.has_number("failed_points")) f.failed_points = static_cast<int>(stored_count(r, "failed_points", kMostFitPoints));
+  if (r.has_number("nonpositive_points")) f.nonpositive_points = static_cast<int>(stored_count(r, "nonpositive_points", kMostFitPoints));
   read_order_shape(r, f);
   if (r.has("shape_tested")) {
     f.curvature_f = r.number("curvature_f");

@@ -1,6 +1,7 @@
 #include "verification/study/verdict_rules.hpp"
 
 #include "verification/study/order_record.hpp"
+#include "verification/study/stored_values.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -150,17 +151,18 @@ const std::map<std::string, Rule>& rules() {
          f.order = in.number("order");
          f.order_low = in.number("order_low");
          f.order_high = in.number("order_high");
-         f.points = static_cast<int>(in.number("points"));
+         f.points = static_cast<int>(stored_count(in, "points", kMostFitPoints));
          // Only how many refinements grew the error matters to the rule (order_fit.hpp); records
          // written before it was an input have none.
          if (in.has_number("refinements") && in.has_number("growing_refinements")) {
-           const long n = static_cast<long>(in.number("refinements")), grew = static_cast<long>(in.number("growing_refinements"));
+           const long n = static_cast<long>(stored_count(in, "refinements", kMostFitPoints)),
+                    grew = static_cast<long>(stored_count(in, "growing_refinements", kMostFitPoints));
            f.pairwise.assign(static_cast<std::size_t>(std::max(0L, n)), 1.0);
            for (long k = 0; k < grew && k < n; ++k) f.pairwise[static_cast<std::size_t>(k)] = -1.0;
          }
          // Failed runs and the drift of the local order (order_fit.hpp); records written before
          // they were inputs have none.
-         if (in.has_number("failed_points")) f.failed_points = static_cast<int>(in.number("failed_points"));
+         if (in.has_number("failed_points")) f.failed_points = static_cast<int>(stored_count(in, "failed_points", kMostFitPoints));
          if (in.has("corrected")) f.corrected = in.flag("corrected");
          read_order_shape(in, f);
          OrderJudgement j;

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include "verification/study/verdict_rules.hpp"
 
@@ -82,6 +84,20 @@ BOOST_AUTO_TEST_CASE(an_order_fit_is_judged_again_with_its_drift_and_failures_wh
   Record failed = in;
   failed.set("failed_points", 1.0);
   BOOST_TEST(decide("order_fit", failed) == "order not established");
+  // Inputs edited by hand into counts no fit has (2^62 refinements was an allocation of 2^62
+  // entries and an internal error; a NaN or a fraction a cast of undefined meaning): refused as
+  // data, naming the key, which `report render` turns into its one-line error.
+  for (const auto& [key, bad] : std::vector<std::pair<std::string, double>>{
+           {"refinements", 4611686018427387904.0}, {"growing_refinements", kNaN}, {"points", -1.0}, {"failed_points", 0.5}}) {
+    Record edited = in;
+    edited.set("failed_points", 0.0).set(key, bad);
+    try {
+      decide("order_fit", edited);
+      BOOST_ERROR(key << " = " << bad << " was accepted");
+    } catch (const RecordError& e) {
+      BOOST_TEST(std::string(e.what()).find("'" + key + "' must be a whole number") != std::string::npos, e.what());
+    }
+  }
 }
 
 BOOST_AUTO_TEST_CASE(a_gci_band_contains_or_misses_the_exact_value) {
