@@ -230,10 +230,15 @@ BOOST_AUTO_TEST_CASE(the_distribution_moves_the_law_s_total_and_never_amplifies_
   int wet = 0;
   for (int k = 0; k < 2000; ++k) {
     RigidState st;
+    // One draw a statement (a call's arguments are evaluated in an unspecified order: GCC right
+    // to left, clang left to right), last component first, as GCC drew them.
     st.position_m = Vec3(0, 0, u(-0.02, 0.02));
-    st.orientation = Quat(u(-1, 1), u(-1, 1), u(-1, 1), u(-1, 1)).normalized();
-    st.velocity_m_s = Vec3(u(-8, 8), u(-8, 8), u(-3, 3));
-    set_body_angular_velocity(s, st, Vec3(u(-60, 60), u(-60, 60), u(-630, 630)));
+    const double qz = u(-1, 1), qy = u(-1, 1), qx = u(-1, 1), qw = u(-1, 1);
+    st.orientation = Quat(qw, qx, qy, qz).normalized();
+    const double vz = u(-3, 3), vy = u(-8, 8), vx = u(-8, 8);
+    st.velocity_m_s = Vec3(vx, vy, vz);
+    const double wz = u(-630, 630), wy = u(-60, 60), wx = u(-60, 60);
+    set_body_angular_velocity(s, st, Vec3(wx, wy, wz));
     for (WaterLaw law : {WaterLaw::planing, WaterLaw::newtonian}) {
       Environment uniform;
       set_water_law(uniform, law);

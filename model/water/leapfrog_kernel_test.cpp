@@ -138,8 +138,13 @@ BOOST_AUTO_TEST_CASE(every_supported_instruction_set_computes_the_scalar_paths_b
   check_paths_against_scalar<double>();
   check_paths_against_scalar<float>();
   set_leapfrog_kernel_path(before);
-  // This build offers scalar and at least one vector path on x86-64 and aarch64.
+  // A GCC build offers scalar and at least one vector path on x86-64 and aarch64; a clang build
+  // (the fuzz build) the scalar path alone (leapfrog_kernel.cpp: GCC's vector extensions).
+#if defined(__clang__)
+  BOOST_TEST(supported_simd_paths().size() == 1u);
+#else
   BOOST_TEST(supported_simd_paths().size() >= 2u);
+#endif
   BOOST_TEST((supported_simd_paths().front() == SimdPath::scalar));
 }
 

@@ -13,6 +13,7 @@
 
 #include "reports/common/markdown.hpp"
 #include "reports/common/plot.hpp"
+#include "verification/study/stored_values.hpp"
 
 namespace stoneskip {
 
@@ -33,8 +34,11 @@ constexpr double kArrow_s = 0.05;
 // Stacked panels with their keys outside on the right: the same plot area in every panel.
 constexpr const char* kStacked = "set grid\nset key outside right top\nset lmargin at screen 0.08\nset rmargin at screen 0.72\n";
 
-// A number for a gnuplot script, with every digit it needs.
+// A number for a gnuplot script, with every digit it needs; gnuplot's NaN where it is not finite
+// (printf's `nan` and `inf` are undefined variables to gnuplot, and the figure failed): a
+// constant NaN draws nothing.
 std::string g(double x) {
+  if (!std::isfinite(x)) return "NaN";
   char b[40];
   std::snprintf(b, sizeof b, "%.9g", x);
   return b;
@@ -321,8 +325,11 @@ std::optional<Figure> capture_timing_figure(const std::string& key, const Record
     f.title += " (a long capture: the panels against time draw every gap and each run's extremes; the histogram "
                "counts every interval)";
   }
-  const double p = 1e3 * t.number("period_s"), j = 1e3 * t.number("jitter_s");
-  const double max_ms = 1e3 * t.number("max_interval_s");
+  // Seconds a capture's timing can hold (capture_timing.cpp refuses a clock beyond 1e12 s); data
+  // edited by hand beyond them is refused by name (stored_values.hpp), not drawn as `inf`.
+  constexpr double kLongest_s = 1e12;
+  const double p = 1e3 * stored_in(t, "period_s", 0, kLongest_s), j = 1e3 * stored_in(t, "jitter_s", 0, kLongest_s);
+  const double max_ms = 1e3 * stored_in(t, "max_interval_s", 0, kLongest_s);
   const double bin = p / 20;
   const std::string d = dat(f, drawn), all = dat(f, "intervals");
   std::ostringstream s;

@@ -3,6 +3,7 @@
 // pond forces its water with the pressure head.
 #include <boost/test/unit_test.hpp>
 
+#include <cmath>
 #include <string>
 
 #include "reports/capture/capture_figures.hpp"
@@ -58,6 +59,34 @@ BOOST_AUTO_TEST_CASE(a_far_member_does_not_set_the_bounce_axis) {
   const auto whole = capture_bounce_figure("k", c);
   BOOST_TEST(whole->script.find("set xrange [0.4:102.6]") != std::string::npos, whole->script);
   BOOST_TEST(whole->script.find("beyond the axis") == std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(the_timing_figure_writes_no_nan_or_inf_into_its_script) {
+  // Oracle: gnuplot knows NaN but not printf's `nan` or `inf` (an undefined variable: the figure
+  // failed), found by rendering a data.h5 edited to a NaN jitter and to 1e308 s. A timing of 10 ms
+  // ± 1 ms is drawn with those lines; a jitter of 1e308 s is refused by name; NaN too.
+  Record c;
+  Record& t = c.child("timing");
+  t.set("nominal", false).set("ok", true).set("clock", std::string("host"));
+  t.set("period_s", 0.01).set("jitter_s", 0.001).set("max_interval_s", 0.012);
+  Table iv{{"t_s", "interval_ms", "lost_reports", "stamp_minus_clock_ms"}, {}};
+  for (int k = 1; k <= 5; ++k) iv.add_row({0.01 * k, 10.0, 0.0, 0.0});
+  t.set_table("intervals", iv);
+  const auto f = capture_timing_figure("k", c);
+  BOOST_REQUIRE(f.has_value());
+  BOOST_TEST(f->script.find("11 w l dt 2") != std::string::npos, f->script);  // the median + jitter, ms
+  BOOST_TEST(f->script.find("nan") == std::string::npos);
+  BOOST_TEST(f->script.find("inf") == std::string::npos);
+  for (double bad : {1e308, std::nan(""), -1.0}) {
+    t.set("jitter_s", bad);
+    try {
+      capture_timing_figure("k", c);
+      BOOST_ERROR("jitter_s = " << bad << " was drawn");
+    } catch (const RecordError& e) {
+      BOOST_TEST(std::string(e.what()).find("/timing: 'jitter_s' must be a number in [0, 1000000000000]") != std::string::npos,
+                 e.what());
+    }
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

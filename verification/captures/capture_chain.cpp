@@ -155,9 +155,13 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
     for (std::size_t k = 0; k <= stop; ++k)
       for (int i = 0; i < 3; ++i) {
         const bool still = k >= in.still_begin && k <= in.still_end;
-        f[k][i] += bias[i] + (still ? still_bias[i] : 0.0) + o.accel_noise_g * gauss(rng) + 0.5 * in.accel_lsb_g[i] * sym();
+        // One draw a statement: the order of two draws in one expression is unspecified (compilers
+        // differ), and the seed must give the same ensemble whatever built the program.
+        const double accel_noise = gauss(rng), accel_round = sym();
+        f[k][i] += bias[i] + (still ? still_bias[i] : 0.0) + o.accel_noise_g * accel_noise + 0.5 * in.accel_lsb_g[i] * accel_round;
         const double lsb = in.gyro_lsb_deg_s[i] * (in.fast[k][i] ? in.fast_factor : 1.0);
-        w[k][i] += o.gyro_noise_deg_s * gauss(rng) * (in.fast[k][i] ? in.fast_factor : 1.0) + 0.5 * lsb * sym();
+        const double gyro_noise = gauss(rng), gyro_round = sym();
+        w[k][i] += o.gyro_noise_deg_s * gyro_noise * (in.fast[k][i] ? in.fast_factor : 1.0) + 0.5 * lsb * gyro_round;
       }
     gyro_scale = 1.0 + o.gyro_scale_rel_uncertainty * sym();
     lever_scale = 1.0 + in.mounting.lever_arm_rel_uncertainty * sym();

@@ -27,4 +27,15 @@ double stored_finite(const Record& r, const std::string& key) {
   return x;
 }
 
+double stored_in(const Record& r, const std::string& key, double lo, double hi) {
+  const double x = r.number(key);
+  if (!(x >= lo && x <= hi)) {
+    std::ostringstream w;
+    w.precision(17);
+    w << "a number in [" << lo << ", " << hi << "]";
+    refuse(r, key, x, w.str());
+  }
+  return x;
+}
+
 }  // namespace stoneskip

@@ -18,5 +18,7 @@ inline constexpr std::size_t kMostFitPoints = 1'000'000;
 std::size_t stored_count(const Record& r, const std::string& key, std::size_t most);
 // A finite number.
 double stored_finite(const Record& r, const std::string& key);
+// A number in [lo, hi] (NaN is not).
+double stored_in(const Record& r, const std::string& key, double lo, double hi);
 
 }  // namespace stoneskip

@@ -44,6 +44,13 @@ BOOST_AUTO_TEST_CASE(a_count_is_a_whole_number_within_its_bound_and_a_coordinate
     const std::string e = refusal([&] { stored_finite(r, "bad"); });
     BOOST_TEST(e.find("/frames: 'bad' must be a finite number") != std::string::npos, bad << ": " << e);
   }
+  BOOST_TEST(stored_in(r, "x", -0.25, 0) == -0.25);  // both ends allowed
+  BOOST_TEST(stored_in(r, "zero", -0.25, 0) == 0);
+  for (double bad : {nan, inf, -0.5, 1e308}) {
+    r.set("bad", bad);
+    const std::string e = refusal([&] { stored_in(r, "bad", -0.25, 0); });
+    BOOST_TEST(e.find("/frames: 'bad' must be a number in [-0.25, 0]") != std::string::npos, bad << ": " << e);
+  }
   BOOST_TEST(refusal([&] { stored_count(r, "absent", 10); }).find("no number 'absent'") != std::string::npos);
 }
 
