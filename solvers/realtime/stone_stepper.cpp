@@ -788,7 +788,7 @@ ThrowResult run_realtime(const Stone& stone, const Environment& env, const Rigid
     if (o.output_dt_s <= 0 || t >= next_output - 1e-12) {
       record(t, s, wetted);
       // The first output time past t, found at once: stepping it up by output_dt_s hung on an
-      // output_dt_s far below the step (1e-14 s: 1e12 additions a step, or none that move it).
+      // output_dt_s far below the step (1e-14 s: 1e11 additions a 1 ms step; 1e-300 s: none that move it).
       if (o.output_dt_s > 0 && next_output <= t + 1e-12)
         next_output = o.output_dt_s * (std::floor((t + 1e-12) / o.output_dt_s) + 1);
     }
