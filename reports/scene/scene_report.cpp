@@ -458,6 +458,8 @@ Figure still_figure(const std::string& name, const Record& r) {
   p.near_x1_m = at("near_x0_m") + (n - 1) * at("near_dx_m");
   p.near_y0_m = at("near_y0_m");
   p.near_y1_m = at("near_y0_m") + (n - 1) * at("near_dx_m");
+  if (!std::isfinite(p.near_x1_m) || !std::isfinite(p.near_y1_m))  // finite parts, an overflowing window
+    throw RecordError(r.path() + ": 'near_dx_m' × the window's " + std::to_string(n) + " columns is not a finite width");
   // The colour scale from the drawn data (reports/common/colour_scale.hpp), the 3-D box from its window's.
   const RobustScale top = robust_scale(r.table("top").values), near = robust_scale(r.table("near").values);
   p.scale_m = top.scale;

@@ -10,6 +10,9 @@
 #include <regex>
 #include <sstream>
 #include <set>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "tools/cli/hdf5_edit.hpp"
 #include "tools/cli/test_support.hpp"
@@ -467,6 +470,18 @@ BOOST_AUTO_TEST_CASE(scene_quick_report_is_a_function_of_its_data) {
   const auto e = run_stoneskip("report render " + edited.string());
   BOOST_TEST(e.status == 2, e.out);
   BOOST_TEST(e.out.find("scene_fps_1core is 900 but its verdict scene_target was decided on") != std::string::npos, e.out);
+  // A still frame's coordinate edited to NaN, or its cell to 1e308 m, was written into the gnuplot
+  // script as `nan` or `inf` (the figure failed): refused by name instead (stored_values.hpp).
+  for (const auto& [key, value, says] : std::vector<std::tuple<const char*, double, std::string>>{
+           {"stone_y_m", std::nan(""), "'stone_y_m' must be a finite number"},
+           {"near_dx_m", 1e308, "'near_dx_m' × the window's"}}) {
+    const fs::path frame = tmp.path() / (std::string("frame_") + key);
+    fs::copy(dir, frame, fs::copy_options::recursive);
+    set_attribute(frame / "data.h5", "/sections/frames/seed_8ms", key, value);
+    const auto f = run_stoneskip("report render " + frame.string());
+    BOOST_TEST(f.status == 2, f.out);
+    BOOST_TEST(f.out.find(says) != std::string::npos, f.out);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(captures_report_is_a_function_of_its_data) {
