@@ -13,6 +13,10 @@ namespace stoneskip {
 
 namespace {
 
+// The most contacts a stored run may claim when read back (data.h5 may be edited by hand): a
+// throw's runs have tens; the count bounds the "contacts gaining energy" read beside it.
+constexpr std::size_t kMostStoredContacts = 1'000'000;
+
 // "nominal [low, high]" of a stored interval.
 std::string iv(const Record& v, int significant = 3) {
   return fmt(v.number("nominal"), significant) + " [" + fmt(v.number("low"), significant) + ", " +
@@ -348,7 +352,8 @@ void solvers_part(SectionWriter& w, const std::string& key, const Record& c) {
                                  fmt(r.number("distance_m"), 3), r.text("outcome"), fmt(r.number("cpu_s"), 3),
                                  fmt(r.number("wall_s"), 3)};
     if (energy) {
-      gaining = std::max(gaining, static_cast<int>(stored_count(r, "contacts_gaining_energy", stored_count(r, "contacts", 1000000))));  // the runs' most
+      gaining = std::max(gaining, static_cast<int>(stored_count(r, "contacts_gaining_energy",
+                                                                stored_count(r, "contacts", kMostStoredContacts))));
       row.insert(row.begin() + 3, fmt(r.number("contacts_gaining_energy")) + "; " +
                                       (r.number("max_energy_gain_J") > 0 ? fmt(r.number("max_energy_gain_J"), 3) : "none"));
     }

@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 
+#include <cctype>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -194,6 +195,8 @@ RenderSummary render_figures(const fs::path& dir, const std::vector<Figure>& fig
       std::string errors;
       if (!run_gnuplot(fig_dir, script_name(f, kind), image.temporary_path().filename().string(), errors)) {
         summary.failures.push_back(f.name + "." + kind + ": " + errors.substr(0, errors.find('\n', 200)));
+        if (summary.not_drawn.empty() || summary.not_drawn.back().first != f.name)
+          summary.not_drawn.emplace_back(f.name, kind + ": " + errors.substr(0, errors.find('\n', 200)));
         // No picture rather than an older one beside this data (the page says which failed). The
         // name was checked above to be a plain file or absent, and render replaces only its own.
         std::error_code ec;
@@ -211,6 +214,35 @@ std::string figure_markdown(const Figure& fig) {
   std::string data = fig.data_path.empty() ? "" : ", data: `data.h5:" + fig.data_path + "`";
   return "![" + fig.title + "](figures/" + fig.name + ".png)\n\n*Figure: " + fig.title + "* ([SVG to explore](figures/" +
          fig.name + ".svg): coordinates under the pointer, a click on a legend entry hides its series" + data + ")\n\n";
+}
+
+std::string figure_not_drawn_markdown(const Figure& fig, const std::string& why) {
+  // One line of a Markdown paragraph inside a code span: gnuplot's newlines and runs of blanks (its
+  // caret line) as one space, a backquote as a quote.
+  std::string words;
+  for (char c : why) {
+    if (c == '`') c = '\'';
+    if (std::isspace(static_cast<unsigned char>(c))) {
+      if (!words.empty() && words.back() != ' ') words += ' ';
+    } else {
+      words += c;
+    }
+  }
+  if (!words.empty() && words.back() == ' ') words.pop_back();
+  const std::string data = fig.data_path.empty() ? "" : " Its data: `data.h5:" + fig.data_path + "`.";
+  return "**Figure not drawn:** *" + fig.title + "* (`figures/" + fig.name + "`: `" + words + "`)." + data +
+         " Its script: `figures/" + script_name(fig, "png") + "`.\n\n";
+}
+
+std::string mark_figures_not_drawn(std::string markdown, const std::vector<Figure>& figs, const RenderSummary& s) {
+  for (const auto& [name, why] : s.not_drawn)
+    for (const Figure& f : figs) {
+      if (f.name != name) continue;
+      const std::string image = figure_markdown(f);
+      const std::size_t at = markdown.find(image);
+      if (at != std::string::npos) markdown.replace(at, image.size(), figure_not_drawn_markdown(f, why));
+    }
+  return markdown;
 }
 
 }  // namespace stoneskip

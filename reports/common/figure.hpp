@@ -75,7 +75,9 @@ void store_figure(const H5Group& figures_group, const Figure& fig);
 
 struct RenderSummary {
   int rendered = 0;
-  std::vector<std::string> failures;  // "name: gnuplot said ..."
+  std::vector<std::string> failures;  // "name.kind: gnuplot said ..."
+  // Per figure with a file not drawn, in the figures' order: its name and the first failure's words.
+  std::vector<std::pair<std::string, std::string>> not_drawn;
 };
 
 // Writes <dir>/figures/<name>.{gp,png,svg}, the .dat files and, for a figure with sources,
@@ -95,6 +97,15 @@ std::vector<std::filesystem::path> figure_files(const std::vector<Figure>& figs)
 
 // Markdown for a figure: ![title](figures/name.png) with a link to the SVG.
 std::string figure_markdown(const Figure& fig);
+
+// The page's Markdown with each figure of `s.not_drawn` shown as a paragraph that names it and says
+// why it was not drawn, where its data and script are, in place of its image: a link to a picture
+// that is not there reads as a broken page, not as a result. A figure whose Markdown is not in the
+// page is left as it is.
+std::string mark_figures_not_drawn(std::string markdown, const std::vector<Figure>& figs, const RenderSummary& s);
+
+// The paragraph that stands for a figure not drawn, with gnuplot's (or the renderer's) words.
+std::string figure_not_drawn_markdown(const Figure& fig, const std::string& why);
 
 // True if gnuplot can be run.
 bool gnuplot_available();

@@ -105,9 +105,13 @@ RenderSummary write_rendered_report(const std::filesystem::path& dir, const Rend
   if (gnuplot_available()) {
     summary = render_figures(dir, r.figures);
   } else {
-    for (const auto& f : r.figures) summary.failures.push_back(f.name + ": gnuplot not found (apt-get install gnuplot-nox)");
+    for (const auto& f : r.figures) {
+      summary.failures.push_back(f.name + ": gnuplot not found (apt-get install gnuplot-nox)");
+      summary.not_drawn.emplace_back(f.name, "gnuplot not found (apt-get install gnuplot-nox)");
+    }
   }
-  const std::string markdown = with_contents(r.markdown);
+  // A figure not drawn is said so on the page, in its place (no link to a picture that is not there).
+  const std::string markdown = with_contents(mark_figures_not_drawn(r.markdown, r.figures, summary));
   write_text_file(dir / "index.md", markdown);
   write_text_file(dir / "index.html", html_page(markdown));
   return summary;

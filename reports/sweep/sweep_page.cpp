@@ -146,7 +146,7 @@ SweepPageSummary write_sweep_page(const std::filesystem::path& dir, const SweepD
   SweepPageSummary s;
   s.figures = figs.size();
   if (render) s.render = render_figures(dir, figs);
-  const std::string markdown = sweep_markdown(d, figs, source);
+  const std::string markdown = mark_figures_not_drawn(sweep_markdown(d, figs, source), figs, s.render);
   write_text_file(dir / "index.md", markdown);
   write_text_file(dir / "index.html", html_page(markdown));
   return s;
