@@ -93,7 +93,11 @@ void set_default_water_model(Environment& env) {
 
 void set_convention(Environment& env, Convention c) {
   env.convention = c;
-  if (c == Convention::paper) set_default_water_model(env);
+  if (c == Convention::paper) {
+    set_default_water_model(env);
+    env.air_coefficient = 1;           // Eq. 6 as printed has no coefficient
+    env.attitude = Attitude::free;     // the paper's stone turns under its torques (Eq. 3, 5, 7)
+  }
 }
 
 std::string environment_problem(const Environment& env) {
@@ -113,6 +117,18 @@ std::string environment_problem(const Environment& env) {
     return std::string("pressure distribution \"") + to_string(env.pressure_distribution) +
            "\" with the paper convention: Lee & Baek's Eq. 2-3 act at each wetted face's centroid; the "
            "distributions exist in the physical convention only";
+  if (env.convention == Convention::paper && env.air_coefficient != 1)
+    return "air coefficient " + [&] {
+      char b[32];
+      std::snprintf(b, sizeof b, "%.6g", env.air_coefficient);
+      return std::string(b);
+    }() +
+           " with the paper convention: Lee & Baek's Eq. 6 as printed, -rho (v.n)^2 S n, has no coefficient (C_a = 1, "
+           "spec section 1.6); another C_a exists in the physical convention only";
+  if (env.convention == Convention::paper && env.attitude == Attitude::held)
+    return "attitude \"held\" with the paper convention: Lee & Baek's stone turns under its torques (Eq. 3, 5 and 7 "
+           "as printed); the held attitude (torques discarded, Clanet et al.'s high-spin limit) is a reduction of the physical "
+           "convention only";
   // NaN passes on purpose: the solvers meet it in the right-hand side and fail there, saying where.
   if (env.water_density_kg_m3 < 0) return "water density must be >= 0";
   if (env.air_density_kg_m3 < 0) return "air density must be >= 0";

@@ -79,11 +79,12 @@ void set_water_law(Environment& env, WaterLaw law);
 // made on the validation's rows. A bare Environment{} is Lee & Baek's law.
 void set_default_water_model(Environment& env);
 // Sets the convention; the paper convention also takes its printed law (set_default_water_model),
-// which no other law or coefficient may replace.
+// its air law's C_a = 1 and a free attitude, which no other law, coefficient or attitude may replace.
 void set_convention(Environment& env, Convention c);
 
-// Empty when the environment can be used; else what is wrong, in words (a non-newtonian law or a
-// non-uniform pressure distribution in the paper convention, a negative density, coefficient or gravity).
+// Empty when the environment can be used; else what is wrong, in words (in the paper convention a
+// non-newtonian law, C_w or C_a other than 1, a non-uniform pressure distribution or a held
+// attitude: none is printed; a negative density, coefficient or gravity).
 std::string environment_problem(const Environment& env);
 
 }  // namespace stoneskip

@@ -176,6 +176,25 @@ BOOST_AUTO_TEST_CASE(the_paper_convention_keeps_the_printed_law_and_refuses_the_
              environment_problem(weaker));
   weaker.convention = Convention::physical;
   BOOST_TEST(environment_problem(weaker).empty());
+  // Eq. 6 as printed has no coefficient (C_a = 1), and the printed stone turns under its torques
+  // (Eq. 3, 5): C_a = 0.5 or a held attitude in the paper convention is refused, in the physical
+  // one taken; set_convention(paper) takes the printed C_a and a free attitude, as it takes the law.
+  Environment air = paper;
+  air.air_coefficient = 0.5;
+  BOOST_TEST(environment_problem(air).find("air coefficient 0.5 with the paper convention") != std::string::npos,
+             environment_problem(air));
+  Environment held = paper;
+  held.attitude = Attitude::held;
+  BOOST_TEST(environment_problem(held).find("attitude \"held\" with the paper convention") != std::string::npos,
+             environment_problem(held));
+  air.convention = held.convention = Convention::physical;
+  BOOST_TEST(environment_problem(air).empty());
+  BOOST_TEST(environment_problem(held).empty());
+  held.air_coefficient = 0.5;
+  set_convention(held, Convention::paper);
+  BOOST_TEST(environment_problem(held).empty(), environment_problem(held));
+  BOOST_TEST((held.attitude == Attitude::free));
+  BOOST_TEST(held.air_coefficient == 1.0);
   Environment negative;
   negative.water_coefficient = -1;
   BOOST_TEST(!environment_problem(negative).empty());

@@ -112,7 +112,9 @@ Environment read_environment(TomlTable t) {
   }
   const std::string att = t.string_or("attitude", to_string(e.attitude));
   if (!parse_attitude(att, e.attitude)) t.fail("attitude", "must be \"free\" or \"held\" (got \"" + att + "\")");
+  if (e.convention == Convention::paper && e.attitude == Attitude::held) t.fail("attitude", environment_problem(e));
   e.air_coefficient = t.bounded_or("air_coefficient", e.air_coefficient, 0, 100);
+  if (e.convention == Convention::paper && e.air_coefficient != 1) t.fail("air_coefficient", environment_problem(e));
   e.gravity_m_s2 = t.bounded_or("gravity_m_s2", e.gravity_m_s2, 0, 1000);
   t.finish();
   return e;

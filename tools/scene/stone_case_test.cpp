@@ -63,6 +63,15 @@ BOOST_AUTO_TEST_CASE(bad_laws_and_strategies_are_one_line_errors_naming_the_key)
   const std::string paper = error_of({"environment.convention=paper", "environment.water_law=planing"});
   BOOST_TEST(paper.find("environment.water_law") != std::string::npos, paper);
   BOOST_TEST(paper.find("paper convention") != std::string::npos, paper);
+  // Neither Eq. 6's C_a nor a held attitude is printed: refused in the paper convention by key,
+  // taken in the physical one.
+  for (const char* key : {"environment.air_coefficient=0.5", "environment.attitude=held"}) {
+    const std::string e = error_of({"environment.convention=paper", key});
+    BOOST_TEST(e.find(std::string(key).substr(0, std::string(key).find('='))) != std::string::npos, e);
+    BOOST_TEST(e.find("with the paper convention") != std::string::npos, e);
+    BOOST_TEST(e.find('\n') == std::string::npos);
+    BOOST_TEST(error_of({key}).empty(), error_of({key}));
+  }
   BOOST_TEST(error_of({"reference.restart=sometimes"}).find("reference.restart") != std::string::npos);
   BOOST_TEST(error_of({"reference.atol_scaling=scalar"}).find("reference.atol_scaling") != std::string::npos);
   BOOST_TEST(error_of({"reference.locate_switches=true"}).find("reference.locate_switches") != std::string::npos);
