@@ -216,7 +216,7 @@ std::string figure_markdown(const Figure& fig) {
          fig.name + ".svg): coordinates under the pointer, a click on a legend entry hides its series" + data + ")\n\n";
 }
 
-std::string figure_not_drawn_markdown(const Figure& fig, const std::string& why) {
+std::string figure_not_drawn_markdown(const Figure& fig, const std::string& why, bool script_written) {
   // One line of a Markdown paragraph inside a code span: gnuplot's newlines and runs of blanks (its
   // caret line) as one space, a backquote as a quote.
   std::string words;
@@ -230,8 +230,9 @@ std::string figure_not_drawn_markdown(const Figure& fig, const std::string& why)
   }
   if (!words.empty() && words.back() == ' ') words.pop_back();
   const std::string data = fig.data_path.empty() ? "" : " Its data: `data.h5:" + fig.data_path + "`.";
-  return "**Figure not drawn:** *" + fig.title + "* (`figures/" + fig.name + "`: `" + words + "`)." + data +
-         " Its script: `figures/" + script_name(fig, "png") + "`.\n\n";
+  const std::string script = script_written ? " Its script: `figures/" + script_name(fig, "png") + "`." : "";
+  return "**Figure not drawn:** *" + fig.title + "* (`figures/" + fig.name + "`: `" + words + "`)." + data + script +
+         "\n\n";
 }
 
 std::string mark_figures_not_drawn(std::string markdown, const std::vector<Figure>& figs, const RenderSummary& s) {
@@ -240,7 +241,8 @@ std::string mark_figures_not_drawn(std::string markdown, const std::vector<Figur
       if (f.name != name) continue;
       const std::string image = figure_markdown(f);
       const std::size_t at = markdown.find(image);
-      if (at != std::string::npos) markdown.replace(at, image.size(), figure_not_drawn_markdown(f, why));
+      if (at != std::string::npos)
+        markdown.replace(at, image.size(), figure_not_drawn_markdown(f, why, s.scripts_written));
     }
   return markdown;
 }

@@ -78,6 +78,7 @@ struct RenderSummary {
   std::vector<std::string> failures;  // "name.kind: gnuplot said ..."
   // Per figure with a file not drawn, in the figures' order: its name and the first failure's words.
   std::vector<std::pair<std::string, std::string>> not_drawn;
+  bool scripts_written = true;  // false where gnuplot was not found and nothing was written
 };
 
 // Writes <dir>/figures/<name>.{gp,png,svg}, the .dat files and, for a figure with sources,
@@ -104,8 +105,9 @@ std::string figure_markdown(const Figure& fig);
 // page is left as it is.
 std::string mark_figures_not_drawn(std::string markdown, const std::vector<Figure>& figs, const RenderSummary& s);
 
-// The paragraph that stands for a figure not drawn, with gnuplot's (or the renderer's) words.
-std::string figure_not_drawn_markdown(const Figure& fig, const std::string& why);
+// The paragraph that stands for a figure not drawn, with gnuplot's (or the renderer's) words, and
+// where its script is when it was written.
+std::string figure_not_drawn_markdown(const Figure& fig, const std::string& why, bool script_written = true);
 
 // True if gnuplot can be run.
 bool gnuplot_available();

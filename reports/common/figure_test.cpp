@@ -84,6 +84,9 @@ BOOST_AUTO_TEST_CASE(the_page_names_a_figure_not_drawn_in_its_place_and_links_on
   BOOST_TEST(page.find("undefined function") != std::string::npos);  // gnuplot's words, as it said them
   BOOST_TEST(page.find("`data.h5:/sections/somewhere`") != std::string::npos);
   BOOST_TEST(page.find("The end.") != std::string::npos);
+  BOOST_TEST(page.find("Its script: `figures/bad.gp`") != std::string::npos);
+  // Where gnuplot is not found no script is written, and none is named.
+  BOOST_TEST(figure_not_drawn_markdown(bad, "gnuplot not found", false).find("Its script") == std::string::npos);
   fs::remove_all(dir);
 }
 
