@@ -99,7 +99,8 @@ bool is_torn_header(const std::vector<unsigned char>& bytes) {
   unsigned char start[8];
   std::memcpy(start, &kMagic, 4);
   std::memcpy(start + 4, &kHeader, 4);
-  if (std::memcmp(bytes.data(), start, std::min<std::size_t>(bytes.size(), 8)) != 0) return false;
+  // An empty file is the shortest prefix (and memcmp is not given the null data() of an empty vector).
+  if (!bytes.empty() && std::memcmp(bytes.data(), start, std::min<std::size_t>(bytes.size(), 8)) != 0) return false;
   if (bytes.size() < 16) return true;  // the length not yet whole
   std::uint64_t len = 0;
   std::memcpy(&len, &bytes[8], 8);
