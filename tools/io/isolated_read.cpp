@@ -91,6 +91,12 @@ void read_in_child_first(const std::filesystem::path& file, const std::function<
                       "is a damaged HDF5 file: reading it crashed the HDF5 library (signal " + std::to_string(s) +
                           (name ? std::string(", SIG") + name : std::string()) + "); nothing was written");
   }
+  // The child ends with _exit(0) whether its read succeeded or threw: any other status is an exit
+  // from inside the library (a memory checker's report, an exit on a failed assertion), not an end.
+  if (WIFEXITED(status) && WEXITSTATUS(status) != 0)
+    throw_input_error(file.string(), 0, "",
+                      "is a damaged HDF5 file: reading it ended the reading process with exit status " +
+                          std::to_string(WEXITSTATUS(status)) + " (inside the HDF5 library); nothing was written");
 }
 
 }  // namespace stoneskip

@@ -6,7 +6,9 @@
 // child process (fork, no exec: the same code on the same bytes), with stdout and stderr sent to
 // /dev/null and the default action for SIGINT, SIGTERM, SIGHUP and the crash signals (SIGSEGV,
 // SIGBUS, SIGFPE, SIGILL, SIGABRT: no handler of the host's catches them there):
-//   * the child ends by a signal (a crash), or runs past its time: the file is refused in one line
+//   * the child ends by a signal (a crash), exits with a status other than its own 0 (an exit from
+//     inside the library: a memory checker such as ASan reporting a heap overflow in it), or runs
+//     past its time: the file is refused in one line
 //     (InputError: "<file>: is a damaged HDF5 file: …", exit 2) and the caller never reads it;
 //   * the child finishes (the read succeeded or threw): the caller reads the file in-process and
 //     gets the same result, its own error message included.
