@@ -100,17 +100,24 @@ void set_convention(Environment& env, Convention c) {
   }
 }
 
+namespace {
+
+// A coefficient in a message, as %.6g writes it.
+std::string six_digits(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.6g", x);
+  return b;
+}
+
+}  // namespace
+
 std::string environment_problem(const Environment& env) {
   if (env.convention == Convention::paper && env.water_law != WaterLaw::newtonian)
     return std::string("water law \"") + to_string(env.water_law) +
            "\" with the paper convention: the paper convention is Lee & Baek's Eq. 1-3 as printed, whose law is "
            "newtonian; the other laws exist in the physical convention only";
   if (env.convention == Convention::paper && env.water_coefficient != 1)
-    return "water coefficient " + [&] {
-      char b[32];
-      std::snprintf(b, sizeof b, "%.6g", env.water_coefficient);
-      return std::string(b);
-    }() +
+    return "water coefficient " + six_digits(env.water_coefficient) +
            " with the paper convention: Lee & Baek's Eq. 2 as printed has no coefficient (C_w = 1, model/README.md §1.4); "
            "another C_w exists in the physical convention only";
   if (env.convention == Convention::paper && env.pressure_distribution != PressureDistribution::uniform)
@@ -118,11 +125,7 @@ std::string environment_problem(const Environment& env) {
            "\" with the paper convention: Lee & Baek's Eq. 2-3 act at each wetted face's centroid; the "
            "distributions exist in the physical convention only";
   if (env.convention == Convention::paper && env.air_coefficient != 1)
-    return "air coefficient " + [&] {
-      char b[32];
-      std::snprintf(b, sizeof b, "%.6g", env.air_coefficient);
-      return std::string(b);
-    }() +
+    return "air coefficient " + six_digits(env.air_coefficient) +
            " with the paper convention: Lee & Baek's Eq. 6 as printed, -rho (v.n)^2 S n, has no coefficient (C_a = 1, "
            "spec section 1.6); another C_a exists in the physical convention only";
   if (env.convention == Convention::paper && env.attitude == Attitude::held)
