@@ -96,7 +96,7 @@ void set_convention(Environment& env, Convention c) {
   if (c == Convention::paper) {
     set_default_water_model(env);
     env.air_coefficient = 1;           // Eq. 6 as printed has no coefficient
-    env.attitude = Attitude::free;     // the paper's stone turns under its torques (Eq. 3, 5, 7)
+    env.attitude = Attitude::free;     // the paper's stone turns under its torques (Eq. 3, 5)
   }
 }
 
@@ -129,7 +129,7 @@ std::string environment_problem(const Environment& env) {
            " with the paper convention: Lee & Baek's Eq. 6 as printed, -rho (v.n)^2 S n, has no coefficient (C_a = 1, "
            "spec section 1.6); another C_a exists in the physical convention only";
   if (env.convention == Convention::paper && env.attitude == Attitude::held)
-    return "attitude \"held\" with the paper convention: Lee & Baek's stone turns under its torques (Eq. 3, 5 and 7 "
+    return "attitude \"held\" with the paper convention: Lee & Baek's stone turns under its water torques (Eq. 3 and 5 "
            "as printed); the held attitude (torques discarded, Clanet et al.'s high-spin limit) is a reduction of the physical "
            "convention only";
   // NaN passes on purpose: the solvers meet it in the right-hand side and fail there, saying where.

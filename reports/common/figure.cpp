@@ -194,9 +194,9 @@ RenderSummary render_figures(const fs::path& dir, const std::vector<Figure>& fig
       write_text_file(fig_dir / script_name(f, kind), gp.str());
       std::string errors;
       if (!run_gnuplot(fig_dir, script_name(f, kind), image.temporary_path().filename().string(), errors)) {
-        summary.failures.push_back(f.name + "." + kind + ": " + errors.substr(0, errors.find('\n', 200)));
-        if (summary.not_drawn.empty() || summary.not_drawn.back().first != f.name)
-          summary.not_drawn.emplace_back(f.name, kind + ": " + errors.substr(0, errors.find('\n', 200)));
+        const std::string said = kind + ": " + errors.substr(0, errors.find('\n', 200));
+        summary.failures.push_back(f.name + "." + said);
+        if (summary.not_drawn.empty() || summary.not_drawn.back().first != f.name) summary.not_drawn.emplace_back(f.name, said);
         // No picture rather than an older one beside this data (the page says which failed). The
         // name was checked above to be a plain file or absent, and render replaces only its own.
         std::error_code ec;
