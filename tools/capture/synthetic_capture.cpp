@@ -9,6 +9,7 @@
 
 #include "model/stone/throw.hpp"
 #include "tools/capture/wiimote_report.hpp"
+#include "tools/io/portable_random.hpp"
 
 namespace stoneskip {
 
@@ -89,9 +90,8 @@ struct Reading {
 // stamps offset by clock_offset_s; the recording counters go into truth.
 std::vector<Reading> sense(const std::function<SyntheticSample(double)>& at, double end, const SyntheticSensor& s,
                            SyntheticTruth& truth, bool allow_loss, double clock_offset_s = 0) {
-  std::mt19937_64 rng(s.seed);
-  std::normal_distribution<double> gauss(0, 1);
-  std::uniform_real_distribution<double> unit(0, 1);
+  // The same noise for a seed whatever standard library built the program (portable_random.hpp).
+  PortableDraws<std::mt19937_64> rng(s.seed);
   std::vector<Reading> out;
   std::array<bool, 3> fast{false, false, false};
   truth.reports_sent = truth.dropped_reports = truth.repeated_reports = 0;
@@ -104,13 +104,13 @@ std::vector<Reading> sense(const std::function<SyntheticSample(double)>& at, dou
     const SyntheticSample x = at(t);
     Reading r{};
     r.t_s = t;
-    r.stamp_s = 12.5 + clock_offset_s + t + s.latency_s + s.jitter_s * (2 * unit(rng) - 1);
+    r.stamp_s = 12.5 + clock_offset_s + t + s.latency_s + s.jitter_s * (2 * rng.unit() - 1);
     r.button = x.button;
     bool clipped = false;
     for (int i = 0; i < 3; ++i) {
       double a = x.accel_g[i];
       if (std::abs(a) > s.clip_g) clipped = true;
-      a = std::clamp(a, -s.clip_g, s.clip_g) + s.accel_noise_g * gauss(rng);
+      a = std::clamp(a, -s.clip_g, s.clip_g) + s.accel_noise_g * rng.gauss();
       const double counts = s.accel_zero_counts[i] + a * (s.accel_one_g_counts[i] - s.accel_zero_counts[i]);
       r.accel_raw[i] = int(std::clamp(std::lround(counts), 0L, 1023L));
       const double w = x.rate_deg_s[i];
@@ -120,15 +120,15 @@ std::vector<Reading> sense(const std::function<SyntheticSample(double)>& at, dou
       if (fast[i] != was) ++truth.range_switches;
       r.slow[i] = !fast[i];
       const double scale = s.gyro_slow_counts_per_deg_s / (fast[i] ? s.gyro_fast_factor : 1.0);
-      const double g = s.gyro_zero_counts[i] + (w + s.gyro_noise_deg_s * gauss(rng)) * scale;
+      const double g = s.gyro_zero_counts[i] + (w + s.gyro_noise_deg_s * rng.gauss()) * scale;
       r.gyro_raw[i] = int(std::clamp(std::lround(g), 0L, 16383L));
     }
     truth.clipped_samples += clipped;
     ++truth.reports_sent;
     // Loss and repeats are drawn for every report so the same seed gives the same motion noise.
-    const bool drop = unit(rng) < s.drop_probability && allow_loss && n > 0 && n + 1 < reports;  // a lost first or last report leaves no trace
-    const bool repeat = unit(rng) < s.repeat_probability && allow_loss;
-    const double repeat_delay_s = 2e-4 + 8e-4 * unit(rng);
+    const bool drop = rng.unit() < s.drop_probability && allow_loss && n > 0 && n + 1 < reports;  // a lost first or last report leaves no trace
+    const bool repeat = rng.unit() < s.repeat_probability && allow_loss;
+    const double repeat_delay_s = 2e-4 + 8e-4 * rng.unit();
     if (drop) {
       ++truth.dropped_reports;
       continue;

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
 
 #include "model/stone/throw.hpp"
+#include "tools/io/portable_random.hpp"
 #include "verification/captures/virtual_thrower.hpp"
 
 namespace stoneskip {
@@ -133,10 +135,9 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
   ReleaseKinematics r;
   const std::size_t n = in.t_s.size();
   if (n < 2 || in.still_end >= n || in.still_begin > in.still_end) return r;
-  std::mt19937_64 rng(p.seed);
-  std::normal_distribution<double> gauss(0.0, 1.0);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  auto sym = [&] { return 2.0 * unit(rng) - 1.0; };
+  // The same ensemble for a seed whatever standard library built the program (portable_random.hpp).
+  PortableDraws<std::mt19937_64> rng(p.seed);
+  auto sym = [&] { return 2.0 * rng.unit() - 1.0; };
 
   // 1. The samples, perturbed for an ensemble member.
   const std::size_t stop = series ? n - 1 : std::min(n - 1, in.release_sample + 1);
@@ -157,16 +158,16 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
         const bool still = k >= in.still_begin && k <= in.still_end;
         // One draw a statement: the order of two draws in one expression is unspecified (compilers
         // differ), and the seed must give the same ensemble whatever built the program.
-        const double accel_noise = gauss(rng), accel_round = sym();
+        const double accel_noise = rng.gauss(), accel_round = sym();
         f[k][i] += bias[i] + (still ? still_bias[i] : 0.0) + o.accel_noise_g * accel_noise + 0.5 * in.accel_lsb_g[i] * accel_round;
         const double lsb = in.gyro_lsb_deg_s[i] * (in.fast[k][i] ? in.fast_factor : 1.0);
-        const double gyro_noise = gauss(rng), gyro_round = sym();
+        const double gyro_noise = rng.gauss(), gyro_round = sym();
         w[k][i] += o.gyro_noise_deg_s * gyro_noise * (in.fast[k][i] ? in.fast_factor : 1.0) + 0.5 * lsb * gyro_round;
       }
     gyro_scale = 1.0 + o.gyro_scale_rel_uncertainty * sym();
     lever_scale = 1.0 + in.mounting.lever_arm_rel_uncertainty * sym();
     height_offset = o.thrower.height_uncertainty_m * sym();
-    release_t = in.release_t_low_s + unit(rng) * (in.release_t_high_s - in.release_t_low_s);
+    release_t = in.release_t_low_s + rng.unit() * (in.release_t_high_s - in.release_t_low_s);
   }
   // The times: as chosen by the timing analysis; a member redraws each host stamp within the
   // stamps' own noise when they are used as given (kept in order).
@@ -184,7 +185,7 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
   // estimate_throw) draws every other perturbation as the member does.
   const double edge = in.period_s > 0 ? in.period_s : 0.01;
   auto fill_spans = [&](ClipFill fill, const auto& in_span, const std::vector<Vec3>& recorded, double max_value,
-                        std::vector<Vec3>& out, std::mt19937_64& stream) {
+                        std::vector<Vec3>& out, PortableDraws<std::mt19937_64>& stream) {
     for (int i = 0; i < 3; ++i)
       for (std::size_t k = 0; k <= stop;) {
         if (!in_span(k, i)) {
@@ -195,7 +196,7 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
         while (e <= stop && in_span(e, i)) ++e;
         const double ta = k > 0 ? t[k - 1] : t[k] - edge;
         const double tb = e <= stop ? t[e] : t[e - 1] + edge;
-        const double s = fill == ClipFill::at_max ? 1.0 : unit(stream);
+        const double s = fill == ClipFill::at_max ? 1.0 : stream.unit();
         for (std::size_t j = k; j < e; ++j) {
           const double bump = fill == ClipFill::at_max ? 1.0 : std::sin(std::numbers::pi * (t[j] - ta) / (tb - ta));
           const double level = std::abs(recorded[j][i]);
@@ -228,7 +229,7 @@ ReleaseKinematics run_chain(const ChainInput& in, const CaptureOptions& o, const
     }
     // The member's seed mixed with 2^64/φ (SplitMix64's increment): a stream apart from the member's.
     constexpr std::uint64_t kMotionPlusStream = 0x9e3779b97f4a7c15ULL;
-    std::mt19937_64 gyro_stream(p.seed ^ kMotionPlusStream);
+    PortableDraws<std::mt19937_64> gyro_stream(p.seed ^ kMotionPlusStream);
     fill_spans(p.gyro_fill, [&](std::size_t k, int i) { return at_end[k][i]; }, in.rate_deg_s, o.max_rate_deg_s, w,
                gyro_stream);
   }

@@ -7,6 +7,7 @@
 
 #include "model/coupling/draught.hpp"
 #include "model/stone/mesh.hpp"
+#include "tools/io/portable_random.hpp"
 
 namespace stoneskip {
 
@@ -70,9 +71,8 @@ Growth growth(const CoupledStabilityOptions& o, double sigma, bool with_stone, l
         }
   }
   std::vector<double> z = eq;
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(-1e-12, 1e-12);
-  for (auto& v : z) v += u(rng);
+  PortableDraws<std::mt19937> rng(5);  // the same perturbation on every standard library
+  for (auto& v : z) v += rng.uniform(-1e-12, 1e-12);
   field.set_levels(z, z);
   double at10 = 0;
   for (long step = 0; step < steps; ++step) {
