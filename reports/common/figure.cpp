@@ -165,6 +165,15 @@ std::vector<fs::path> figure_files(const std::vector<Figure>& figs) {
   return out;
 }
 
+void remove_figure_files(const fs::path& dir, const std::vector<Figure>& figs) {
+  const std::vector<fs::path> files = figure_files(figs);
+  for (const auto& f : files) check_output_destination(dir / f);
+  for (const auto& f : files) {
+    std::error_code ec;  // absent: nothing to remove
+    fs::remove(dir / f, ec);
+  }
+}
+
 RenderSummary render_figures(const fs::path& dir, const std::vector<Figure>& figs) {
   RenderSummary summary;
   const fs::path fig_dir = dir / "figures";

@@ -96,6 +96,12 @@ RenderSummary render_figures(const std::filesystem::path& dir, const std::vector
 // Every file render_figures writes for figs, relative to dir ("figures/<name>.png", …).
 std::vector<std::filesystem::path> figure_files(const std::vector<Figure>& figs);
 
+// Removes from dir every file render_figures would write for figs, where they are (each checked
+// first, as render_figures checks them: a link, FIFO or device among them is refused with InputError
+// and nothing removed). Where gnuplot cannot be run no picture, script or table of an earlier
+// rendering, drawn from other data, stays beside a page that says no figure was drawn.
+void remove_figure_files(const std::filesystem::path& dir, const std::vector<Figure>& figs);
+
 // Markdown for a figure: ![title](figures/name.png) with a link to the SVG.
 std::string figure_markdown(const Figure& fig);
 

@@ -110,6 +110,7 @@ RenderSummary write_rendered_report(const std::filesystem::path& dir, const Rend
       summary.not_drawn.emplace_back(f.name, "gnuplot not found (apt-get install gnuplot-nox)");
     }
     summary.scripts_written = false;
+    remove_figure_files(dir, r.figures);  // no picture of an earlier rendering beside "not drawn"
   }
   // A figure not drawn is said so on the page, in its place (no link to a picture that is not there).
   const std::string markdown = with_contents(mark_figures_not_drawn(r.markdown, r.figures, summary));

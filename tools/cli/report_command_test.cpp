@@ -410,6 +410,31 @@ BOOST_AUTO_TEST_CASE(waves_quick_report_is_a_function_of_its_data) {
   BOOST_TEST(run_stoneskip("report render " + stale.string()).status == 0);
   BOOST_TEST(!fs::exists(stale / "figures" / "old_study.png"));
   BOOST_TEST(read_file(stale / "figures" / "mine.txt") == "mine\n");
+  // Without gnuplot (a PATH that holds none) every figure is named on the page as not drawn, exit 1,
+  // and no picture, script or table of the earlier rendering stays beside it (the front page shows a
+  // report's picture found on disk); the user's file stays, and with gnuplot back the page is as
+  // before, byte for byte.
+  const fs::path plain = copy("without_gnuplot");
+  { std::ofstream(plain / "figures" / "mine.txt") << "mine\n"; }
+  stoneskip::SubprocessOptions merged;
+  merged.stderr_to = stoneskip::SubprocessOptions::Stderr::merged;
+  const stoneskip::SubprocessResult g =
+      stoneskip::run_program({"/usr/bin/env", "PATH=/nonexistent", STONESKIP_EXE, "report", "render", plain.string()}, merged);
+  BOOST_TEST(g.exit_status == 1, g.out);
+  BOOST_TEST(g.out.find("gnuplot not found") != std::string::npos, g.out);
+  std::string left;
+  for (const auto& e : fs::directory_iterator(plain / "figures")) left += e.path().filename().string() + " ";
+  BOOST_TEST(left == "mine.txt ");
+  const std::string page = read_file(plain / "index.md");
+  BOOST_TEST(page.find("](figures/") == std::string::npos);  // no link to a picture
+  std::size_t named = 0;
+  for (std::size_t at = page.find("**Figure not drawn:**"); at != std::string::npos; at = page.find("**Figure not drawn:**", at + 1))
+    ++named;
+  std::size_t drawn = 0;
+  for (const auto& e : fs::directory_iterator(dir / "figures")) drawn += e.path().extension() == ".png";
+  BOOST_TEST(named == drawn);
+  BOOST_TEST(run_stoneskip("report render " + plain.string()).status == 0);
+  BOOST_TEST(read_file(plain / "index.md") == read_file(dir / "index.md"));
   // Stored numbers edited apart from the verdicts decided on them are refused, not rendered beside
   // them: the section's tolerance (the verdicts' is 0.1), and an error the fit no longer follows.
   const fs::path tolerance = copy("tolerance");
