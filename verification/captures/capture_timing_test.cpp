@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "tools/io/portable_random.hpp"
 #include "verification/captures/capture_timing.hpp"
 
 using namespace stoneskip;
@@ -32,18 +33,17 @@ BOOST_AUTO_TEST_CASE(a_regular_clock_under_host_jitter_is_recovered_and_its_loss
   // its slot.
   for (const double j : {0.003, 0.0045}) {
     BOOST_TEST_CONTEXT("jitter ±" << 1e3 * j << " ms") {
-      std::mt19937_64 rng(5);
-      std::uniform_real_distribution<double> jitter(-j, j), unit(0, 1);
+      PortableDraws<std::mt19937_64> rng(5);  // the same stamps from every standard library
       std::vector<double> stamps, truth;
       std::vector<long> slots;
       long lost = 0;
       for (long n = 0; n < 200; ++n) {
-        if (n > 0 && n < 199 && unit(rng) < 0.06) {
+        if (n > 0 && n < 199 && rng.unit() < 0.06) {
           ++lost;
           continue;
         }
         truth.push_back(2.5 + n / 100.0);
-        stamps.push_back(truth.back() + jitter(rng));
+        stamps.push_back(truth.back() + rng.uniform(-j, j));
         slots.push_back(n);
       }
       const TimedSamples t = analyse_timing(stamped(stamps));
@@ -67,13 +67,12 @@ BOOST_AUTO_TEST_CASE(a_regular_clock_under_host_jitter_is_recovered_and_its_loss
 BOOST_AUTO_TEST_CASE(a_minute_long_capture_keeps_every_slot) {
   // Oracle: as above, for 6000 reports (a minute at 100 Hz) with ±4 ms jitter and 3 % lost: the
   // period found from the first stamps must carry the slot count through to the last report.
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> jitter(-0.004, 0.004), unit(0, 1);
+  PortableDraws<std::mt19937_64> rng(11);
   std::vector<double> stamps;
   std::vector<long> slots;
   for (long n = 0; n < 6000; ++n) {
-    if (n > 0 && n < 5999 && unit(rng) < 0.03) continue;
-    stamps.push_back(100.0 + n * 0.0099 + jitter(rng));  // a remote whose clock runs 1 % fast
+    if (n > 0 && n < 5999 && rng.unit() < 0.03) continue;
+    stamps.push_back(100.0 + n * 0.0099 + rng.uniform(-0.004, 0.004));  // a remote whose clock runs 1 % fast
     slots.push_back(n);
   }
   const TimedSamples t = analyse_timing(stamped(stamps));
