@@ -4,10 +4,10 @@
 
 #include <cmath>
 #include <cstring>
-#include <random>
 
 #include "model/coupling/draught.hpp"
 #include "model/coupling/test_support.hpp"
+#include "model/stone/portable_uniform.hpp"
 #include "model/water/disturbance.hpp"
 
 namespace stoneskip {
@@ -157,13 +157,12 @@ PlateGrowth plate_growth(const std::string& stencil, double sigma, bool with_pla
   const Vec3 at(0.5 + 0.5 * d, 0.5 + 0.5 * d, s + 0.5 * h);
   const double N = n * n, K = 24 * 24, C = with_plate ? -K * s / (2 * N - K) : 0;
   std::vector<double> eq(n * n), z(n * n);
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(-1e-12, 1e-12);
+  PortableUniform rng{5};
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const bool under = with_plate && std::abs(i * d - at.x()) < 12 * d && std::abs(j * d - at.y()) < 12 * d;
       eq[j * n + i] = under ? 0.5 * (C + s) : C;
-      z[j * n + i] = eq[j * n + i] + u(rng);
+      z[j * n + i] = eq[j * n + i] + rng(-1e-12, 1e-12);
     }
   f.set_levels(z, z);
   DraughtPatch p;

@@ -1,8 +1,8 @@
 // Clipping a triangle against the water surface (model/README.md §1.4 step 2): exact areas and centroids.
 #include <boost/test/unit_test.hpp>
 
-#include <random>
 
+#include "model/stone/portable_uniform.hpp"
 #include "model/stone/triangle_clip.hpp"
 
 using namespace stoneskip;
@@ -38,11 +38,17 @@ BOOST_AUTO_TEST_CASE(known_depths_give_the_trapezoid) {
 BOOST_AUTO_TEST_CASE(wet_and_dry_parts_add_up_to_the_whole_triangle) {
   // Oracle: complementarity. Clipping with d and with −d splits the triangle: areas and first
   // moments of the two parts add up to the whole triangle's, for any depths.
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-1, 1);
+  PortableUniform rng{7};
+  auto point = [&] {  // one draw a statement: argument order is unspecified
+    const double x = rng(-1, 1);
+    const double y = rng(-1, 1);
+    const double z = rng(-1, 1);
+    return Vec3(x, y, z);
+  };
   for (int k = 0; k < 2000; ++k) {
-    const Vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng)), c(u(rng), u(rng), u(rng));
-    const double da = u(rng), db = u(rng), dc = u(rng);
+    const Vec3 a = point(), b = point(), c = point();
+    const Vec3 depth = point();
+    const double da = depth.x(), db = depth.y(), dc = depth.z();
     const ClippedArea wet = clip_submerged(a, b, c, da, db, dc);
     const ClippedArea dry = clip_submerged(a, b, c, -da, -db, -dc);
     const double whole = 0.5 * (b - a).cross(c - a).norm();
