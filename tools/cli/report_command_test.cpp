@@ -423,7 +423,7 @@ BOOST_AUTO_TEST_CASE(waves_quick_report_is_a_function_of_its_data) {
   BOOST_TEST(g.exit_status == 1, g.out);
   BOOST_TEST(g.out.find("gnuplot not found") != std::string::npos, g.out);
   std::string left;
-  for (const auto& e : fs::directory_iterator(plain / "figures")) left += e.path().filename().string() + " ";
+  for (const auto& entry : fs::directory_iterator(plain / "figures")) left += entry.path().filename().string() + " ";
   BOOST_TEST(left == "mine.txt ");
   const std::string page = read_file(plain / "index.md");
   BOOST_TEST(page.find("](figures/") == std::string::npos);  // no link to a picture
@@ -431,7 +431,7 @@ BOOST_AUTO_TEST_CASE(waves_quick_report_is_a_function_of_its_data) {
   for (std::size_t at = page.find("**Figure not drawn:**"); at != std::string::npos; at = page.find("**Figure not drawn:**", at + 1))
     ++named;
   std::size_t drawn = 0;
-  for (const auto& e : fs::directory_iterator(dir / "figures")) drawn += e.path().extension() == ".png";
+  for (const auto& entry : fs::directory_iterator(dir / "figures")) drawn += entry.path().extension() == ".png";
   BOOST_TEST(named == drawn);
   BOOST_TEST(run_stoneskip("report render " + plain.string()).status == 0);
   BOOST_TEST(read_file(plain / "index.md") == read_file(dir / "index.md"));
