@@ -11,6 +11,7 @@
 
 #include "stoneskip_version.hpp"
 #include "tools/io/column_units.hpp"
+#include "tools/io/hdf5_strings_apart.hpp"
 #include "tools/io/input_error.hpp"
 
 namespace stoneskip {
@@ -48,13 +49,6 @@ hid_t check_id(hid_t id, const std::string& what) {
   return id;
 }
 
-H5Id string_type() {
-  hid_t t = H5Tcopy(H5T_C_S1);
-  H5Tset_size(t, H5T_VARIABLE);
-  H5Tset_cset(t, H5T_CSET_UTF8);
-  return H5Id(t, H5Tclose);
-}
-
 H5Id scalar_space() { return H5Id(H5Screate(H5S_SCALAR), H5Sclose); }
 
 H5Id open_attr(hid_t obj, const std::string& name) {
@@ -69,7 +63,7 @@ H5Id replace_attr(hid_t obj, const std::string& name, hid_t type, hid_t space) {
 }
 
 void set_string_attr(hid_t obj, const std::string& name, const std::string& value) {
-  H5Id t = string_type();
+  H5Id t = vlen_string_type();
   H5Id s = scalar_space();
   H5Id a = replace_attr(obj, name, t.get(), s.get());
   const char* p = value.c_str();
@@ -78,7 +72,7 @@ void set_string_attr(hid_t obj, const std::string& name, const std::string& valu
 
 // A 1-D array of strings as an attribute (h5py reads it as a list of str).
 void set_strings_attr(hid_t obj, const std::string& name, const std::vector<std::string>& values) {
-  H5Id t = string_type();
+  H5Id t = vlen_string_type();
   const hsize_t n = values.size();
   H5Id s(H5Screate_simple(1, &n, nullptr), H5Sclose);
   H5Id a = replace_attr(obj, name, t.get(), s.get());
@@ -87,12 +81,34 @@ void set_strings_attr(hid_t obj, const std::string& name, const std::vector<std:
   if (n > 0) check([&] { return H5Awrite(a.get(), t.get(), ptrs.data()); }, "write attribute " + name);
 }
 
-std::vector<std::string> get_strings_attr(hid_t obj, const std::string& name) {
+// The number of elements of an attribute's dataspace (a scalar: 1; a null one: 0).
+hssize_t attr_elements(hid_t a) {
+  H5Id space(H5Aget_space(a), H5Sclose);
+  return H5Sget_simple_extent_npoints(space.get());
+}
+
+// An attribute read into one value must hold one: the library writes every element it holds, and
+// a crafted file's array of 1000 where one is read overwrote the stack.
+void require_one(hid_t a, const std::string& name) {
+  const hssize_t n = attr_elements(a);
+  if (n != 1) throw std::runtime_error("HDF5: attribute " + name + " holds " + std::to_string(n) + " values, not one");
+}
+
+// The strings of attribute `name` of obj, one per element (with one_value: exactly one): from the
+// table read apart in a child (hdf5_strings_apart.hpp), or, with none (a writer's groups, or this
+// process is that child), from the library.
+std::vector<std::string> get_strings_attr(hid_t obj, const std::string& name, const Hdf5StringTable* table, bool one_value = false) {
   H5Id a = open_attr(obj, name);
-  H5Id space(H5Aget_space(a.get()), H5Sclose);
-  const hssize_t n = H5Sget_simple_extent_npoints(space.get());
+  if (one_value) require_one(a.get(), name);
+  const hssize_t n = attr_elements(a.get());
+  if (table) {
+    const std::vector<std::string>* v = table->find(obj, Hdf5StringTable::Kind::attribute, name);
+    if (!v || static_cast<hssize_t>(v->size()) != n) throw std::runtime_error("HDF5: read attribute " + name);
+    return *v;
+  }
   std::vector<char*> ptrs(static_cast<std::size_t>(std::max<hssize_t>(n, 0)), nullptr);
-  H5Id t = string_type();
+  const H5Id stored(H5Aget_type(a.get()), H5Tclose);
+  const H5Id t = string_type_for(stored.get());
   if (!ptrs.empty()) check([&] { return H5Aread(a.get(), t.get(), ptrs.data()); }, "read attribute " + name);
   std::vector<std::string> out;
   for (char* p : ptrs) {
@@ -102,18 +118,18 @@ std::vector<std::string> get_strings_attr(hid_t obj, const std::string& name) {
   return out;
 }
 
+std::string get_string_attr(hid_t obj, const std::string& name, const Hdf5StringTable* table) {
+  return get_strings_attr(obj, name, table, true).front();
+}
+
 // A table's column names: a string array (current files) or one comma-separated string (files
 // written before the units).
-std::vector<std::string> get_column_names(hid_t ds) {
+std::vector<std::string> get_column_names(hid_t ds, const Hdf5StringTable* table) {
   H5Id a = open_attr(ds, "columns");
   H5Id space(H5Aget_space(a.get()), H5Sclose);
-  if (H5Sget_simple_extent_type(space.get()) == H5S_SIMPLE) return get_strings_attr(ds, "columns");
+  if (H5Sget_simple_extent_type(space.get()) == H5S_SIMPLE) return get_strings_attr(ds, "columns", table);
   std::vector<std::string> names;
-  H5Id t = string_type();
-  char* p = nullptr;
-  check([&] { return H5Aread(a.get(), t.get(), &p); }, "read attribute columns");
-  const std::string cols = p ? p : "";
-  H5free_memory(p);
+  const std::string cols = get_string_attr(ds, "columns", table);
   std::size_t start = 0;
   while (!cols.empty()) {
     const std::size_t comma = cols.find(',', start);
@@ -122,16 +138,6 @@ std::vector<std::string> get_column_names(hid_t ds) {
     start = comma + 1;
   }
   return names;
-}
-
-std::string get_string_attr(hid_t obj, const std::string& name) {
-  H5Id a = open_attr(obj, name);
-  H5Id t = string_type();
-  char* p = nullptr;
-  check([&] { return H5Aread(a.get(), t.get(), &p); }, "read attribute " + name);
-  std::string s = p ? p : "";
-  H5free_memory(p);
-  return s;
 }
 
 H5Id create_dataset(hid_t loc, const std::string& name, hid_t type, const std::vector<hsize_t>& dims) {
@@ -205,7 +211,7 @@ H5Group H5Group::create_group(const std::string& name) const {
 
 H5Group H5Group::open_group(const std::string& name) const {
   hid_t g = check_id(H5Gopen2(id(), name.c_str(), H5P_DEFAULT), "no group " + path_ + "/" + name);
-  return H5Group(H5Id(g, H5Gclose), path_ + "/" + name);
+  return H5Group(H5Id(g, H5Gclose), path_ + "/" + name, strings_);
 }
 
 bool H5Group::has(const std::string& name) const { return H5Lexists(id(), name.c_str(), H5P_DEFAULT) > 0; }
@@ -273,7 +279,7 @@ void H5Group::write_floats_3d(const std::string& name, const std::vector<float>&
 }
 
 void H5Group::write_strings(const std::string& name, const std::vector<std::string>& v) const {
-  H5Id t = string_type();
+  H5Id t = vlen_string_type();
   H5Id ds = create_dataset(id(), name, t.get(), {static_cast<hsize_t>(v.size())});
   std::vector<const char*> ptrs;
   for (const auto& s : v) ptrs.push_back(s.c_str());
@@ -298,9 +304,9 @@ Table H5Group::read_table(const std::string& name) const {
   H5Id ds(check_id(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), "no dataset " + path_ + "/" + name), H5Dclose);
   auto dims = dataset_dims(ds.get());
   Table t;
-  t.columns = get_column_names(ds.get());
+  t.columns = get_column_names(ds.get(), strings_.get());
   if (H5Aexists(ds.get(), "units") > 0) {
-    t.units = get_strings_attr(ds.get(), "units");
+    t.units = get_strings_attr(ds.get(), "units", strings_.get());
     if (t.units.size() != t.columns.size()) throw std::runtime_error("HDF5: " + name + " has " + std::to_string(t.units.size()) +
                                                                      " units for " + std::to_string(t.columns.size()) + " columns");
   }
@@ -313,8 +319,15 @@ Table H5Group::read_table(const std::string& name) const {
 
 std::vector<std::string> H5Group::read_strings(const std::string& name) const {
   H5Id ds(check_id(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), "no dataset " + path_ + "/" + name), H5Dclose);
-  std::vector<char*> ptrs(element_count(dataset_dims(ds.get())), nullptr);
-  H5Id t = string_type();
+  const std::size_t n = element_count(dataset_dims(ds.get()));
+  if (strings_) {
+    const auto* v = strings_->find(ds.get(), Hdf5StringTable::Kind::dataset, "");
+    if (!v || v->size() != n) throw std::runtime_error("HDF5: read " + name);
+    return *v;
+  }
+  std::vector<char*> ptrs(n, nullptr);
+  const H5Id stored(H5Dget_type(ds.get()), H5Tclose);
+  const H5Id t = string_type_for(stored.get());
   if (!ptrs.empty()) check([&] { return H5Dread(ds.get(), t.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()); }, "read " + name);
   std::vector<std::string> out;
   for (char* p : ptrs) {
@@ -358,10 +371,13 @@ bool H5Group::attr_is_string(const std::string& name) const {
   H5Id t(H5Aget_type(a.get()), H5Tclose);
   return H5Tget_class(t.get()) == H5T_STRING;
 }
-std::string H5Group::attr_string(const std::string& name) const { return get_string_attr(id(), name); }
+std::string H5Group::attr_string(const std::string& name) const {
+  return get_string_attr(id(), name, strings_.get());
+}
 
 double H5Group::attr_double(const std::string& name) const {
   H5Id a = open_attr(id(), name);
+  require_one(a.get(), name);
   double v = 0;
   check([&] { return H5Aread(a.get(), H5T_NATIVE_DOUBLE, &v); }, "read attribute " + name);
   return v;
@@ -369,6 +385,7 @@ double H5Group::attr_double(const std::string& name) const {
 
 long long H5Group::attr_int(const std::string& name) const {
   H5Id a = open_attr(id(), name);
+  require_one(a.get(), name);
   long long v = 0;
   check([&] { return H5Aread(a.get(), H5T_NATIVE_LLONG, &v); }, "read attribute " + name);
   return v;
@@ -425,10 +442,31 @@ void Hdf5Writer::commit() {
 Hdf5Reader::Hdf5Reader(const std::filesystem::path& path) {
   require_regular_file(path);
   if (H5Fis_hdf5(path.c_str()) <= 0) throw_input_error(path.string(), 0, "", "not an HDF5 file");
+  std::optional<Hdf5StringTable> strings = read_strings_apart(path);
   hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (f < 0) throw_input_error(path.string(), 0, "", "cannot open HDF5 file");
   H5Id file(f, H5Fclose);
-  root_ = std::make_unique<H5Group>(H5Id(H5Gopen2(file.get(), "/", H5P_DEFAULT), H5Gclose), "");
+  H5Id root(H5Gopen2(file.get(), "/", H5P_DEFAULT), H5Gclose);
+  std::shared_ptr<const Hdf5StringTable> table;
+  if (strings) {
+    H5O_info_t info;  // HDF5 1.10 (Debian 12)
+    if (H5Oget_info2(root.get(), &info, H5O_INFO_BASIC) < 0) throw_input_error(path.string(), 0, "", "cannot open HDF5 file");
+    strings->fileno = info.fileno;
+    table = std::make_shared<const Hdf5StringTable>(std::move(*strings));
+  }
+  root_ = std::make_unique<H5Group>(std::move(root), "", std::move(table));
+}
+
+H5Id vlen_string_type(H5T_cset_t cset) {
+  hid_t t = H5Tcopy(H5T_C_S1);
+  H5Tset_size(t, H5T_VARIABLE);
+  H5Tset_cset(t, cset);
+  return H5Id(t, H5Tclose);
+}
+
+H5Id string_type_for(hid_t stored) {
+  const H5T_cset_t cset = H5Tget_cset(stored);
+  return vlen_string_type(cset == H5T_CSET_ASCII ? H5T_CSET_ASCII : H5T_CSET_UTF8);
 }
 
 void stamp_provenance(const H5Group& g) {

@@ -53,9 +53,14 @@ struct Table {
   std::string unit(std::size_t c) const;
 };
 
+struct Hdf5StringTable;  // hdf5_strings_apart.hpp
+
 class H5Group {
  public:
-  explicit H5Group(H5Id id, std::string path) : id_(std::move(id)), path_(std::move(path)) {}
+  // strings: where a reader's groups take their variable-length strings from (read apart, in a
+  // child: hdf5_strings_apart.hpp); null for a writer's groups, which read their own.
+  explicit H5Group(H5Id id, std::string path, std::shared_ptr<const Hdf5StringTable> strings = nullptr)
+      : id_(std::move(id)), path_(std::move(path)), strings_(std::move(strings)) {}
   hid_t id() const { return id_.get(); }
   const std::string& path() const { return path_; }
 
@@ -88,6 +93,7 @@ class H5Group {
   bool has_attr(const std::string& name) const;
   std::vector<std::string> attr_names() const;  // in name order
   bool attr_is_string(const std::string& name) const;
+  // A scalar attribute's value; an error where the attribute holds other than one element.
   std::string attr_string(const std::string& name) const;
   double attr_double(const std::string& name) const;
   long long attr_int(const std::string& name) const;
@@ -95,6 +101,7 @@ class H5Group {
  private:
   H5Id id_;
   std::string path_;
+  std::shared_ptr<const Hdf5StringTable> strings_;
 };
 
 // Whether an Hdf5Writer's flush or close has failed in this process, or a writer was given up
@@ -122,7 +129,16 @@ class Hdf5Writer {
   const std::filesystem::path* previous_writing_ = nullptr;
 };
 
-// An existing HDF5 file, read only. Throws InputError naming the file if it cannot be opened.
+// The type every string here is written as: variable-length, UTF-8. A read takes the character
+// set of what it reads (string_type_for): HDF5 1.10 refuses a conversion between the two sets
+// in a fresh process (it finds one only after other string conversions have run there).
+H5Id vlen_string_type(H5T_cset_t cset = H5T_CSET_UTF8);
+// The type to read the strings of an attribute or dataset of type `stored` as.
+H5Id string_type_for(hid_t stored);
+
+// An existing HDF5 file, read only. Throws InputError naming the file if it cannot be opened, or
+// if reading its strings apart refuses it (hdf5_strings_apart.hpp: its strings are never read by
+// this process).
 class Hdf5Reader {
  public:
   explicit Hdf5Reader(const std::filesystem::path& path);

@@ -93,4 +93,42 @@ BOOST_AUTO_TEST_CASE(a_dataset_write_that_does_not_fit_names_the_file) {
   BOOST_TEST(left == 0u);
 }
 
+BOOST_AUTO_TEST_CASE(an_attribute_of_many_values_read_as_one_is_an_error_not_a_stack_overwrite) {
+  // main: attr_double, attr_int and attr_string read the whole attribute into one value, so a crafted
+  // file's array of 1000 (a run file's `bounces`, read by `report front`) was written over the stack.
+  // Oracle: the element count, which the library states; a scalar still reads.
+  ScratchDir dir("stoneskip_hdf5_many");
+  const auto path = dir.dir / "many.h5";
+  {
+    Hdf5Writer w(path);
+    w.root().set_attr("one", 2.5);
+    const hsize_t n = 1000;
+    H5Id space(H5Screate_simple(1, &n, nullptr), H5Sclose);
+    const std::vector<double> d(n, 1.0);
+    const std::vector<long long> k(n, 7);
+    H5Id a(H5Acreate2(w.root().id(), "d", H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    BOOST_REQUIRE(H5Awrite(a.get(), H5T_NATIVE_DOUBLE, d.data()) >= 0);
+    H5Id b(H5Acreate2(w.root().id(), "k", H5T_NATIVE_LLONG, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    BOOST_REQUIRE(H5Awrite(b.get(), H5T_NATIVE_LLONG, k.data()) >= 0);
+    H5Id t = vlen_string_type();
+    H5Id c(H5Acreate2(w.root().id(), "s", t.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    std::vector<const char*> texts(n, "many");
+    BOOST_REQUIRE(H5Awrite(c.get(), t.get(), texts.data()) >= 0);
+    w.commit();
+  }
+  const Hdf5Reader r(path);
+  const auto error_of = [](const auto& read) {
+    try {
+      read();
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  BOOST_TEST(r.root().attr_double("one") == 2.5);
+  BOOST_TEST(error_of([&] { r.root().attr_double("d"); }) == "HDF5: attribute d holds 1000 values, not one");
+  BOOST_TEST(error_of([&] { r.root().attr_int("k"); }) == "HDF5: attribute k holds 1000 values, not one");
+  BOOST_TEST(error_of([&] { r.root().attr_string("s"); }) == "HDF5: attribute s holds 1000 values, not one");
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -15,8 +15,14 @@
 // The child is registered with the signal cleanup (tools/io/signal_cleanup.hpp) while it runs. If
 // fork fails (no memory, no process slots), the file is read in-process, unprotected, as before.
 // Cost: the file is read twice (a report's data.h5 or a sweep table: milliseconds to seconds).
+// A damaged heap can also overflow a buffer without a crash, which this test cannot see: so no
+// Hdf5Reader reads a variable-length string in-process at all (hdf5_strings_apart.hpp, through the
+// output variant below).
+#include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <optional>
+#include <string>
 
 namespace stoneskip {
 
@@ -31,5 +37,18 @@ struct IsolatedReadOptions {
 // must not wait for other threads (the child has only the calling thread).
 void read_in_child_first(const std::filesystem::path& file, const std::function<void()>& read,
                          const IsolatedReadOptions& options = {});
+
+// As read_in_child_first, and what the child writes to the file descriptor it is given (a pipe)
+// comes back: all of it, once the child has finished. Beyond max_output_bytes the child is killed
+// and the file refused (InputError: "<file>: is a damaged HDF5 file: …"). A read that throws ends
+// the child as one that finishes; what it wrote before comes back. nullopt where no child could be
+// made (fork or pipe failed): the caller then reads in-process, unprotected.
+std::optional<std::string> read_in_child_first(const std::filesystem::path& file,
+                                               const std::function<void(int out_fd)>& read,
+                                               std::size_t max_output_bytes,
+                                               const IsolatedReadOptions& options = {});
+
+// Whether this process is the child of one of the reads above (a read there needs no child of its own).
+bool in_isolated_child();
 
 }  // namespace stoneskip

@@ -1,10 +1,14 @@
 // read_in_child_first (isolated_read.hpp). Oracles: the child's fate, made on purpose — a read that
 // crashes (SIGSEGV raised), one that exits, one that never ends (a 0.3 s limit), one that throws,
-// one that succeeds — and the contract that the caller's own state is not touched by the child's read.
+// one that succeeds — and the contract that the caller's own state is not touched by the child's read;
+// the output variant's bytes, bound and time.
 #include "tools/io/isolated_read.hpp"
 
 #include <boost/test/unit_test.hpp>
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <csignal>
 #include <cstdlib>
 #include <stdexcept>
@@ -52,6 +56,41 @@ BOOST_AUTO_TEST_CASE(a_read_that_ends_or_throws_leaves_the_caller_to_read_and_ch
   BOOST_TEST(touched == 0);  // the child's memory, not ours
   BOOST_TEST(refusal([] { throw std::runtime_error("not a sweep result file"); }) == "");
   BOOST_TEST(refusal([] { throw InputError("x"); }) == "");
+}
+
+BOOST_AUTO_TEST_CASE(what_the_child_writes_comes_back_whole_and_within_its_bound) {
+  // Oracle: the bytes written, and the bound's contract (past it, a refusal naming the bound).
+  const auto write_n = [](std::size_t n) {
+    return [n](int fd) {
+      const std::string chunk(1000, 'x');
+      for (std::size_t left = n; left > 0;) {
+        const std::size_t k = std::min(left, chunk.size());
+        if (::write(fd, chunk.data(), k) != static_cast<ssize_t>(k)) std::_Exit(3);
+        left -= k;
+      }
+    };
+  };
+  // 300 000 bytes: more than a pipe holds (64 KiB), so the caller must read while the child writes.
+  const auto got = read_in_child_first("big.h5", write_n(300000), 300000, IsolatedReadOptions{5});
+  BOOST_REQUIRE(got.has_value());
+  BOOST_TEST(*got == std::string(300000, 'x'));
+  try {
+    read_in_child_first("big.h5", write_n(300001), 300000, IsolatedReadOptions{5});
+    BOOST_ERROR("past the bound, not refused");
+  } catch (const InputError& e) {
+    BOOST_TEST(std::string(e.what()) == "big.h5: is a damaged HDF5 file: its strings come to more than 300000 bytes; nothing was written");
+  }
+  // The child knows it is one (a reader there reads for itself, hdf5_strings_apart.hpp); we are not.
+  const auto flag = read_in_child_first("f.h5", [](int fd) { (void)!::write(fd, in_isolated_child() ? "1" : "0", 1); }, 10);
+  BOOST_TEST(flag.value_or("") == "1");
+  BOOST_TEST(!in_isolated_child());
+  // A child that writes for ever is stopped at its time, not read for ever.
+  try {
+    read_in_child_first("loop.h5", [](int fd) { for (;;) (void)!::write(fd, "y", 1); }, std::size_t{1} << 40, IsolatedReadOptions{0.3});
+    BOOST_ERROR("a child writing for ever was not stopped");
+  } catch (const InputError& e) {
+    BOOST_TEST(std::string(e.what()).find("did not end within 0.3 s") != std::string::npos, e.what());
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
