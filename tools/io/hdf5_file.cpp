@@ -81,6 +81,20 @@ void set_strings_attr(hid_t obj, const std::string& name, const std::vector<std:
   if (n > 0) check([&] { return H5Awrite(a.get(), t.get(), ptrs.data()); }, "write attribute " + name);
 }
 
+// A link to another file (an external link) is not followed: stoneskip writes none, and the file
+// it names would be read by the library in this process, unchecked and outside the isolation of
+// this one (isolated_read.hpp, hdf5_strings_apart.hpp).
+void require_in_file(hid_t loc, const std::string& name, const std::string& path) {
+  H5L_info_t link;  // HDF5 1.10 (Debian 12)
+  if (H5Lget_info(loc, name.c_str(), &link, H5P_DEFAULT) >= 0 && link.type == H5L_TYPE_EXTERNAL)
+    throw std::runtime_error("HDF5: " + path + " is a link to another file");
+}
+
+H5Id open_dataset(hid_t loc, const std::string& name, const std::string& path) {
+  require_in_file(loc, name, path);
+  return H5Id(check_id(H5Dopen2(loc, name.c_str(), H5P_DEFAULT), "no dataset " + path), H5Dclose);
+}
+
 // The number of elements of an attribute's dataspace (a scalar: 1; a null one: 0).
 hssize_t attr_elements(hid_t a) {
   H5Id space(H5Aget_space(a), H5Sclose);
@@ -210,6 +224,7 @@ H5Group H5Group::create_group(const std::string& name) const {
 }
 
 H5Group H5Group::open_group(const std::string& name) const {
+  require_in_file(id(), name, path_ + "/" + name);
   hid_t g = check_id(H5Gopen2(id(), name.c_str(), H5P_DEFAULT), "no group " + path_ + "/" + name);
   return H5Group(H5Id(g, H5Gclose), path_ + "/" + name, strings_);
 }
@@ -230,11 +245,12 @@ std::vector<std::string> H5Group::children() const {
 
 H5Group::ChildKind H5Group::child_kind(const std::string& name) const {
   H5O_info_t info;  // HDF5 1.10 (Debian 12)
+  require_in_file(id(), name, path_ + "/" + name);
   if (H5Oget_info_by_name2(id(), name.c_str(), &info, H5O_INFO_BASIC, H5P_DEFAULT) < 0)
     throw std::runtime_error("HDF5: no object " + path_ + "/" + name);
   if (info.type == H5O_TYPE_GROUP) return ChildKind::group;
   if (info.type != H5O_TYPE_DATASET) return ChildKind::other;
-  H5Id ds(check_id(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), "no dataset " + path_ + "/" + name), H5Dclose);
+  H5Id ds = open_dataset(id(), name, path_ + "/" + name);
   H5Id type(H5Dget_type(ds.get()), H5Tclose);
   const auto dims = dataset_dims(ds.get());
   if (H5Tget_class(type.get()) == H5T_STRING) return dims.size() == 1 ? ChildKind::strings : ChildKind::other;
@@ -287,21 +303,21 @@ void H5Group::write_strings(const std::string& name, const std::vector<std::stri
 }
 
 std::vector<double> H5Group::read_vector(const std::string& name) const {
-  H5Id ds(check_id(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), "no dataset " + path_ + "/" + name), H5Dclose);
+  H5Id ds = open_dataset(id(), name, path_ + "/" + name);
   std::vector<double> v(element_count(dataset_dims(ds.get())));
   if (!v.empty()) check([&] { return H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()); }, "read " + name);
   return v;
 }
 
 std::vector<long long> H5Group::read_ints(const std::string& name) const {
-  H5Id ds(check_id(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), "no dataset " + path_ + "/" + name), H5Dclose);
+  H5Id ds = open_dataset(id(), name, path_ + "/" + name);
   std::vector<long long> v(element_count(dataset_dims(ds.get())));
   if (!v.empty()) check([&] { return H5Dread(ds.get(), H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()); }, "read " + name);
   return v;
 }
 
 Table H5Group::read_table(const std::string& name) const {
-  H5Id ds(check_id(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), "no dataset " + path_ + "/" + name), H5Dclose);
+  H5Id ds = open_dataset(id(), name, path_ + "/" + name);
   auto dims = dataset_dims(ds.get());
   Table t;
   t.columns = get_column_names(ds.get(), strings_.get());
@@ -318,7 +334,7 @@ Table H5Group::read_table(const std::string& name) const {
 }
 
 std::vector<std::string> H5Group::read_strings(const std::string& name) const {
-  H5Id ds(check_id(H5Dopen2(id(), name.c_str(), H5P_DEFAULT), "no dataset " + path_ + "/" + name), H5Dclose);
+  H5Id ds = open_dataset(id(), name, path_ + "/" + name);
   const std::size_t n = element_count(dataset_dims(ds.get()));
   if (strings_) {
     const auto* v = strings_->find(ds.get(), Hdf5StringTable::Kind::dataset, "");

@@ -54,37 +54,31 @@ class Out {
   std::string buf_;
 };
 
-// The strings of an attribute (is_attr) or a dataset, read as hdf5_file.cpp reads them; nullopt
-// where the library refuses.
-std::optional<std::vector<std::string>> read_all(hid_t obj, bool is_attr) {
+// The strings of an attribute (is_attr) or a dataset, read as hdf5_file.cpp reads them, written
+// out as one record (each string straight from the library's copy: no second copy of them all);
+// nothing where the library refuses.
+void put_strings(Out& out, hid_t obj, bool is_attr, Hdf5StringTable::Kind kind, haddr_t addr, const std::string& name) {
   const H5Id space(is_attr ? H5Aget_space(obj) : H5Dget_space(obj), H5Sclose);
-  if (!space.valid()) return std::nullopt;
+  if (!space.valid()) return;
   const hssize_t n = H5Sget_simple_extent_npoints(space.get());
-  if (n < 0 || n > kMostElements) return std::nullopt;
+  if (n < 0 || n > kMostElements) return;
   std::vector<char*> ptrs(static_cast<std::size_t>(n), nullptr);
   const H5Id stored(is_attr ? H5Aget_type(obj) : H5Dget_type(obj), H5Tclose);
   const H5Id t = string_type_for(stored.get());
   if (n > 0) {
     const herr_t st = is_attr ? H5Aread(obj, t.get(), ptrs.data())
                               : H5Dread(obj, t.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data());
-    if (st < 0) return std::nullopt;
+    if (st < 0) return;
   }
-  std::vector<std::string> out;
-  out.reserve(ptrs.size());
-  for (char* p : ptrs) {
-    out.emplace_back(p ? p : "");
-    H5free_memory(p);
-  }
-  return out;
-}
-
-void put(Out& out, Hdf5StringTable::Kind kind, haddr_t addr, const std::string& name,
-         const std::vector<std::string>& values) {
   out.u8(static_cast<char>(kind));
   out.u64(addr);
   out.text(name);
-  out.u64(values.size());
-  for (const auto& v : values) out.text(v);
+  out.u64(ptrs.size());
+  for (char*& p : ptrs) {
+    out.text(p ? std::string(p) : std::string());
+    H5free_memory(p);
+    p = nullptr;
+  }
 }
 
 // Every string-typed attribute of obj.
@@ -103,7 +97,7 @@ void walk_attributes(hid_t obj, haddr_t addr, Out& out) {
     if (!a.valid()) continue;
     const H5Id t(H5Aget_type(a.get()), H5Tclose);
     if (!t.valid() || H5Tget_class(t.get()) != H5T_STRING) continue;
-    if (auto v = read_all(a.get(), true)) put(out, Hdf5StringTable::Kind::attribute, addr, name, *v);
+    put_strings(out, a.get(), true, Hdf5StringTable::Kind::attribute, addr, name);
   }
 }
 
@@ -115,7 +109,7 @@ void walk(hid_t obj, std::set<haddr_t>& seen, Out& out) {
   if (info.type == H5O_TYPE_DATASET) {
     const H5Id t(H5Dget_type(obj), H5Tclose);
     if (t.valid() && H5Tget_class(t.get()) == H5T_STRING)
-      if (auto v = read_all(obj, false)) put(out, Hdf5StringTable::Kind::dataset, info.addr, "", *v);
+      put_strings(out, obj, false, Hdf5StringTable::Kind::dataset, info.addr, "");
     return;
   }
   if (info.type != H5O_TYPE_GROUP) return;

@@ -13,10 +13,11 @@
 // which is thrown away.
 //
 // The table is keyed by the object's address in the file, so a group reached by any path (a
-// second hard link, a soft link, a cycle of links) finds its strings. An object in another file
-// (behind an external link) is not in the table, and reading its strings is an error ("HDF5: read
-// attribute …"): stoneskip writes no such links. The child's output is bounded (a crafted file can
-// make many references to one long string); past the bound the file is refused.
+// second hard link, a soft link, a cycle of links) finds its strings. The walk does not follow a
+// link to another file, nor does the reader (hdf5_file.cpp refuses it: stoneskip writes none), and
+// an object in another file is not the table's (its file number differs). The child's output is
+// bounded (a crafted file can make many references to one long string); past the bound the file
+// is refused.
 #include <hdf5.h>
 
 #include <cstdint>
