@@ -384,6 +384,7 @@ void print_scene(const Record& r) {
   const Record& st = r.at("stone");
   const Record& w = r.at("waves");
   std::printf("scene %s: stone %s\n", r.at("settings").text("case_file").c_str(), verdict_line(st.at("agreement")).c_str());
+  if (!st.text("off_pond").empty()) std::printf("scene off the pond: the scene's %s\n", st.text("off_pond").c_str());
   if (!w.flag("compared")) {
     std::printf("waves not compared: %s\n", w.text("not_compared").c_str());
     return;
@@ -409,6 +410,8 @@ nlohmann::json scene_json(const Record& r) {
     s[k] = st.number(k);
   s["verdict"] = st.at("agreement").text("verdict");
   s["reason"] = st.at("agreement").text("reason");
+  s["contacts_off_pond"] = st.number("contacts_off_pond");  // begun off a walled pond: the edge's height, no push taken
+  s["off_pond"] = st.text("off_pond");
   s["ensemble_members"] = st.number("count_ensemble_members");  // the verdict's: stepper against CVODE on still water
   const Table& t = st.table("contacts");
   for (std::size_t i = 0; i < t.rows(); ++i) {

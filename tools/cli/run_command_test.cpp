@@ -333,6 +333,50 @@ BOOST_AUTO_TEST_CASE(the_notes_reach_the_json_and_the_file_and_an_open_contact_i
   BOOST_TEST(full["notes"].empty());
 }
 
+BOOST_AUTO_TEST_CASE(a_contact_begun_off_a_live_pond_is_said_to_be_so) {
+  // `scene` named the contacts off a walled pond; `run` on the same case printed "two_way on a live
+  // height field" and nothing else, though off the pond the stone reads the edge's height and the
+  // water takes none of its push. Oracle: the geometry. A 60 × 60 pond of 2 cm cells from
+  // (−0.1, −0.6) m spans x in [−0.1, 1.08] m, y in [−0.6, 0.58] m; the seed's throw first touches
+  // near x = 0.4 m and sinks near x = 3 m, so each contact's first touch (in the JSON) decides
+  // which the note names. Moved to x = 100 m, every contact is off; a periodic pond wraps and none is.
+  const std::string pond = "run cases/scenes/seed_8ms.toml --set water.nx=60 --set water.ny=60 --set water.origin_y_m=-0.6 ";
+  auto off_note = [](const nlohmann::json& j) {
+    for (const auto& n : j["notes"])
+      if (n.get<std::string>().find("outside the pond") != std::string::npos) return n.get<std::string>();
+    return std::string();
+  };
+  auto expected_off = [](const nlohmann::json& j, double x0) {
+    std::vector<int> off;
+    for (std::size_t k = 0; k < j["contacts"].size(); ++k) {
+      const double x = j["contacts"][k]["first_touch_m"][0], y = j["contacts"][k]["first_touch_m"][1];
+      if (x < x0 || x > x0 + 59 * 0.02 || y < -0.6 || y > -0.6 + 59 * 0.02) off.push_back(static_cast<int>(k) + 1);
+    }
+    return off;
+  };
+  const Run in_place = run(pond + "--set water.origin_x_m=-0.1 --json");
+  BOOST_REQUIRE_MESSAGE(in_place.status == 0, in_place.out);
+  const auto j = nlohmann::json::parse(in_place.out);
+  BOOST_REQUIRE(j["contacts"].size() >= 2u);
+  BOOST_REQUIRE((expected_off(j, -0.1) == std::vector<int>{2}));  // the throw as described above
+  const std::string note = off_note(j);
+  BOOST_TEST(note.find("contact 2 (x = ") == 0u, note);
+  BOOST_TEST(note.find("lies outside the pond, x in [-0.1, 1.08] m, y in [-0.6, 0.58] m") != std::string::npos, note);
+  BOOST_TEST(note.find("the water takes none of the push") != std::string::npos, note);  // two_way
+  BOOST_TEST(run(pond + "--set water.origin_x_m=-0.1").out.find("note      " + note) != std::string::npos);
+
+  const auto moved = nlohmann::json::parse(run(pond + "--set water.origin_x_m=100 --json").out);
+  BOOST_REQUIRE(expected_off(moved, 100).size() == moved["contacts"].size());
+  BOOST_TEST(off_note(moved).find("contacts 1 (x = ") == 0u, off_note(moved));
+  BOOST_TEST(off_note(moved).find("), 2 (x = ") != std::string::npos, off_note(moved));
+  const auto one_way = nlohmann::json::parse(run(pond + "--set water.origin_x_m=100 --set water.coupling=one_way --json").out);
+  BOOST_TEST(off_note(one_way).find("edge's height") != std::string::npos, off_note(one_way));
+  BOOST_TEST(off_note(one_way).find("push") == std::string::npos, off_note(one_way));
+  const auto wraps = nlohmann::json::parse(run(pond + "--set water.origin_x_m=100 --set water.boundary=periodic --json").out);
+  BOOST_TEST(off_note(wraps).empty(), off_note(wraps));
+  BOOST_TEST(off_note(nlohmann::json::parse(run("run cases/paper_8ms_spin.toml --json").out)).empty());  // still water: no pond
+}
+
 BOOST_AUTO_TEST_CASE(control_characters_of_a_title_are_written_escaped_and_a_key_set_twice_takes_its_last_value) {
   // Oracle: printable_text's escapes (\n, \x07, \x1B). A title holding a line break, a bell and an
   // escape split the summary's case line and reached the terminal as they were.

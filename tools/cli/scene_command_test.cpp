@@ -318,7 +318,10 @@ BOOST_AUTO_TEST_CASE(contacts_off_the_pond_are_named_and_the_movie_and_result_ar
   BOOST_TEST(m["contacts_off_pond"].size() == m["throw"]["contacts"].size());
   BOOST_TEST(std::abs(m["water_vertical_impulse_N_s"].get<double>()) <= 1e-12);  // the water took nothing
   const auto text = run_stoneskip("scene " + small_seed(0.2) + " --set water.origin_x_m=100", false);
-  BOOST_TEST(text.out.find("off pond  contact 1 (x = ") != std::string::npos, text.out);
+  BOOST_TEST(text.out.find("note      contact 1 (x = ") != std::string::npos, text.out);
+  BOOST_TEST(text.out.find("lies outside the pond, x in [100, 101.2] m") != std::string::npos, text.out);
+  BOOST_TEST(m["throw"]["notes"].dump().find("outside the pond") != std::string::npos, m.dump());
+  BOOST_TEST(j["throw"]["notes"].dump().find("outside the pond") == std::string::npos, j.dump());
   // --movie and --out naming one file: refused before any work (the result overwrote the movie).
   TempDir d("stoneskip_scene_same_out");
   const std::string f = (d.path() / "m.mp4").string();

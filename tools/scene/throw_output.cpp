@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "solvers/scene/pond_extent.hpp"
 #include "tools/io/printable_text.hpp"
 
 namespace stoneskip {
@@ -48,6 +49,12 @@ std::vector<std::string> run_notes(const StoneCase& c, const ThrowResult& r) {
     notes.push_back("the stone was released touching the water (a vertex at or below the surface at t = 0; "
                     "throw.height_m is its centre's height): contact 1 starts at release and its entry values are the "
                     "release's, not an arrival from the air");
+  // A contact begun beyond a walled pond's rim is not on the live water the case names: the stone
+  // read the edge's height there, and a two-way field took none of its push.
+  if (c.water && c.water->coupling != Coupling::none) {
+    const PondExtent p = pond_extent(c.water->field, c.water->origin_x_m, c.water->origin_y_m, r.contacts);
+    if (!p.off.empty()) notes.push_back(off_pond_sentence(p, r.contacts, c.water->coupling == Coupling::two_way));
+  }
   if (!r.contacts.empty() && contact_open_at_end(r, r.contacts.size() - 1))
     notes.push_back("contact " + std::to_string(r.contacts.size()) + " was still open when the run ended (" +
                     (r.outcome == Outcome::failed ? std::string("the solve failed") : std::string("t_max_s")) +

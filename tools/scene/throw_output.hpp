@@ -59,7 +59,8 @@ nlohmann::json json_summary(const StoneCase& c, const ThrowResult& r);
 // solve): its end and exit values are the state there, not an exit (bounced is false).
 bool contact_open_at_end(const ThrowResult& r, std::size_t i);
 // The notes beside a run's numbers, one sentence each: a stone lighter than water (no buoyancy),
-// a contact still open at the end. Text (note lines), JSON (notes) and the file (each result's notes).
+// a release touching the water, contacts begun off a live pond (solvers/scene/pond_extent.hpp), a
+// contact still open at the end. Text (note lines), JSON (notes) and the file (each result's notes).
 std::vector<std::string> run_notes(const StoneCase& c, const ThrowResult& r);
 Table trajectory_table(const Stone& stone, const ThrowResult& r);
 Table contacts_table(const ThrowResult& r);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "solvers/scene/pond_extent.hpp"
 #include "verification/study/verdict_rules.hpp"
 #include "verification/study/words.hpp"
 
@@ -52,7 +53,7 @@ Record settings(const CaptureSceneOptions& o, const std::string& case_file) {
   return r;
 }
 
-Record stone(const CaptureSceneComparison& c) {
+Record stone(const CaptureSceneComparison& c, const CaptureSceneOptions& o) {
   Record r;
   r.set("scene_bounces", c.scene.stone.bounces);
   r.set("still_bounces", c.still_water.bounces);
@@ -81,6 +82,18 @@ Record stone(const CaptureSceneComparison& c) {
   r.set("scene_cpu_s", c.scene.cpu_s).set("scene_wall_s", c.scene.wall_s);
   r.set("water_steps", c.scene.water_steps);
   r.set("reference_cpu_s", c.reference.stats.cpu_s).set("reference_wall_s", c.reference.stats.wall_s);
+  // Contacts begun off a walled pond (solvers/scene/pond_extent.hpp): there the scene's stone read
+  // the edge's height and a two-way field took none of its push (`capture throw --scene` prints it).
+  std::string off;
+  std::size_t off_count = 0;
+  if (o.scene.water) {
+    const PondExtent p = pond_extent(o.scene.water->field, o.scene.water->placement.origin_x_m,
+                                     o.scene.water->placement.origin_y_m, c.scene.stone.contacts);
+    off = off_pond_sentence(p, c.scene.stone.contacts, o.scene.coupling == Coupling::two_way);
+    off_count = p.off.size();
+  }
+  r.set("contacts_off_pond", off_count);
+  r.set("off_pond", off);
   auto made = [](const ThrowResult& run) {
     return (run.outcome == Outcome::failed ? "fails after " : "makes ") + bounce_words(run.bounces);
   };
@@ -155,7 +168,7 @@ Record waves(const CaptureSceneComparison& c, const CaptureSceneOptions& o) {
 Record capture_scene_findings(const CaptureSceneComparison& c, const CaptureSceneOptions& o, const std::string& case_file) {
   Record r;
   r.add_child("settings", settings(o, case_file));
-  r.add_child("stone", stone(c));
+  r.add_child("stone", stone(c, o));
   r.add_child("waves", waves(c, o));
   return r;
 }

@@ -194,6 +194,26 @@ BOOST_AUTO_TEST_CASE(skipping_capture_through_the_scene_against_both_references)
   BOOST_TEST(largest == c.waves.total_m);
 }
 
+BOOST_AUTO_TEST_CASE(contacts_begun_off_a_walled_pond_are_counted_and_said) {
+  // Oracle: the geometry. The fixture's pond, walled and moved 100 m down the throw, lies under
+  // none of the stone's contacts (its grid points span x in [100, 101.88] m; the throw stays within
+  // a few metres of its release): every contact of the scene is off it, and the stone's record
+  // says so in a sentence. The periodic pond in place tiles the plane: none is.
+  CaptureSceneOptions o = skipping_options(0.3);
+  const Record in_place = capture_scene_findings(compare_capture_scene(o), o, "test");
+  BOOST_TEST(in_place.at("stone").number("contacts_off_pond") == 0);
+  BOOST_TEST(in_place.at("stone").text("off_pond").empty());
+  o.scene.water->field.boundary = Boundary::reflecting;
+  o.scene.water->placement.origin_x_m = 100;
+  const CaptureSceneComparison c = compare_capture_scene(o);
+  BOOST_REQUIRE(!c.scene.stone.contacts.empty());
+  const Record moved = capture_scene_findings(c, o, "test");
+  BOOST_TEST(moved.at("stone").number("contacts_off_pond") == double(c.scene.stone.contacts.size()));
+  const std::string off = moved.at("stone").text("off_pond");
+  BOOST_TEST(off.find("outside the pond, x in [100, 101.9] m") != std::string::npos, off);
+  BOOST_TEST(off.find("the water takes none of the push") != std::string::npos, off);  // two-way
+}
+
 BOOST_AUTO_TEST_CASE(waves_too_costly_to_reference_are_not_compared_and_say_why) {
   // Oracle: the work estimate's definition — 2.5 · intervals · nodes · cells: 0.3 s in 1e-4 s
   // sub-intervals of 4 nodes on 48 × 16 cells is 2.5 · 3000 · 4 · 768 = 2.304e7 cell-transforms.
