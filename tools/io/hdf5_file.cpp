@@ -408,8 +408,15 @@ long long H5Group::attr_int(const std::string& name) const {
 }
 
 Hdf5Writer::Hdf5Writer(const std::filesystem::path& path) : out_(path) {
-  // The temporary exists (AtomicOutput made it, empty): H5F_ACC_TRUNC takes it over.
-  hid_t f = H5Fcreate(out_.temporary_path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  // The temporary exists (AtomicOutput made it, empty): H5F_ACC_TRUNC takes it over. The file is
+  // written in the HDF5 1.8 format (superblock 2, object headers 2), whose metadata carry
+  // checksums that the library verifies on reading: a damaged header is then an error, not a value
+  // read as stored. (The library's default, the earliest format, has none; the global heap of the
+  // variable-length strings has none in any format: those are read apart, hdf5_strings_apart.hpp.)
+  const H5Id access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  if (access.get() < 0 || H5Pset_libver_bounds(access.get(), H5F_LIBVER_V18, H5F_LIBVER_V18) < 0)
+    throw_input_error(path.string(), 0, "", "cannot set the HDF5 file format");
+  hid_t f = H5Fcreate(out_.temporary_path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get());
   if (f < 0) throw_input_error(path.string(), 0, "", "cannot create HDF5 file");
   file_ = f;
   root_ = std::make_unique<H5Group>(H5Id(H5Gopen2(file_, "/", H5P_DEFAULT), H5Gclose), "");

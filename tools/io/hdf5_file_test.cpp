@@ -10,6 +10,8 @@
 #include <cerrno>
 #include <csignal>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <vector>
 #include <stdexcept>
 #include <string>
@@ -129,6 +131,45 @@ BOOST_AUTO_TEST_CASE(an_attribute_of_many_values_read_as_one_is_an_error_not_a_s
   BOOST_TEST(error_of([&] { r.root().attr_double("d"); }) == "HDF5: attribute d holds 1000 values, not one");
   BOOST_TEST(error_of([&] { r.root().attr_int("k"); }) == "HDF5: attribute k holds 1000 values, not one");
   BOOST_TEST(error_of([&] { r.root().attr_string("s"); }) == "HDF5: attribute s holds 1000 values, not one");
+}
+
+BOOST_AUTO_TEST_CASE(a_value_changed_in_a_files_metadata_is_an_error_not_read_as_stored) {
+  // main wrote the library's earliest format, whose object headers carry no checksum: one bit of an
+  // attribute (kept in its object's header) flipped on disk read back as another number. The 1.8
+  // format's object headers end in a checksum the library verifies (HDF5 File Format Specification,
+  // version 2 object header, "Checksum"). Oracle: that checksum; the value's bytes are found by
+  // their pattern (once in the file), and the file as written reads back exactly. (A dataset's
+  // values are raw data, which no HDF5 format checksums.)
+  ScratchDir dir("stoneskip_hdf5_checksum");
+  const auto path = dir.dir / "sums.h5";
+  const double value = 1234.5678901234;
+  {
+    Hdf5Writer w(path);
+    w.root().create_group("g").set_attr("x", value);
+    w.commit();
+  }
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  BOOST_REQUIRE(bytes.size() > 9);
+  BOOST_TEST(static_cast<int>(bytes[8]) == 2);  // the superblock's version: 2, the 1.8 format's (checksummed)
+  const std::string pattern(reinterpret_cast<const char*>(&value), sizeof value);
+  const std::size_t at = bytes.find(pattern);
+  BOOST_REQUIRE(at != std::string::npos);
+  BOOST_REQUIRE(bytes.find(pattern, at + 1) == std::string::npos);
+  BOOST_TEST(Hdf5Reader(path).root().open_group("g").attr_double("x") == value);
+  bytes[at] = static_cast<char>(bytes[at] ^ 0x01);  // the lowest bit of the mantissa: 1234.5678901234002
+  const auto bad = dir.dir / "flipped.h5";
+  std::ofstream(bad, std::ios::binary) << bytes;
+  std::string read = "no error";
+  try {
+    read = std::to_string(Hdf5Reader(bad).root().open_group("g").attr_double("x"));
+  } catch (const std::exception& e) {
+    read = std::string("error: ") + e.what();
+  }
+  BOOST_TEST(read.rfind("error: ", 0) == 0u, read);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
