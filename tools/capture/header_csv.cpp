@@ -12,6 +12,7 @@
 #include "tools/capture/capture_header.hpp"
 #include "tools/capture/capture_text.hpp"
 #include "tools/capture/csv_columns.hpp"
+#include "tools/capture/csv_unit_detection.hpp"
 #include "tools/capture/gyro_range.hpp"
 #include "tools/io/input_error.hpp"
 
@@ -546,8 +547,27 @@ Trace read_header_csv(const std::string& text, const std::string& file, const He
       t.gyro_mode_inferred = true;
     }
   }
-  // 8. The trace.
-  const double accel_scale = columns[col.at(F::ax)].unit == CsvUnit::m_s2 ? 1.0 / kStandardGravity : 1.0;
+  // 8. The trace. A unit the header does not give is read from the data, as the time's is
+  // (csv_unit_detection.hpp), and a note says which and why.
+  auto values_of = [&](F first) {
+    std::vector<std::array<double, 3>> v(kept.size());
+    for (std::size_t i = 0; i < kept.size(); ++i)
+      for (int a = 0; a < 3; ++a) v[i][a] = kept[i]->cells[col.at(F(int(first) + a))];
+    return v;
+  };
+  CsvUnit accel_unit = columns[col.at(F::ax)].unit;
+  if (columns[col.at(F::ax)].rc.unit == CsvUnit::none) {
+    const DetectedCsvUnit d = detect_acceleration_unit(values_of(F::ax));
+    accel_unit = d.unit;
+    t.notes.push_back(std::string("accelerations in ") + to_string(d.unit) + " (" + d.how + ")");
+  }
+  CsvUnit rate_unit = rates ? columns[col.at(F::wx)].unit : speeds ? columns[col.at(F::speed_pitch)].unit : CsvUnit::deg_s;
+  if (!raw && rates && columns[col.at(F::wx)].rc.unit == CsvUnit::none) {
+    const DetectedCsvUnit d = detect_rate_unit(values_of(F::wx));
+    rate_unit = d.unit;
+    t.notes.push_back(std::string("angular rates in ") + to_string(d.unit) + " (" + d.how + ")");
+  }
+  const double accel_scale = accel_unit == CsvUnit::m_s2 ? 1.0 / kStandardGravity : 1.0;
   for (std::size_t i = 0; i < kept.size(); ++i) {
     const Row& r = *kept[i];
     TraceSample x;
@@ -563,7 +583,7 @@ Trace read_header_csv(const std::string& text, const std::string& file, const He
       }
     } else if (rates || speeds) {
       const F first = rates ? F::wx : F::speed_pitch;
-      const double to_deg = columns[col.at(first)].unit == CsvUnit::rad_s ? kRadToDeg : 1.0;
+      const double to_deg = rate_unit == CsvUnit::rad_s ? kRadToDeg : 1.0;
       for (int a = 0; a < 3; ++a) {
         const double w = to_deg * r.cells[col.at(F(int(first) + a))];
         x.rate_deg_s[a] = rates ? w : -w;
