@@ -37,9 +37,14 @@ DetectedCsvUnit detect_acceleration_unit(const std::vector<std::array<double, 3>
     return {CsvUnit::g, "no unit in the header: detected from " + m + ", gravity in g"};
   if (median >= kStandardGravity / kGravityBand && median <= kStandardGravity * kGravityBand)
     return {CsvUnit::m_s2, "no unit in the header: detected from " + m + ", gravity in m/s2"};
+  // Near 0: gravity removed (a phone's "linear acceleration"), which no unit puts back.
+  const std::string removed = median < 1 / kGravityBand
+                                  ? "; near 0 it looks like gravity removed (a \"linear acceleration\"), which the "
+                                    "analysis cannot use: it needs the accelerometer's reading, gravity included"
+                                  : "";
   return {CsvUnit::g, "no unit in the header, and " + m +
                           " is gravity in neither g (about 1) nor m/s2 (about 9.8): read as g; give the unit "
-                          "in the header or with --columns"};
+                          "in the header or with --columns" + removed};
 }
 
 DetectedCsvUnit detect_rate_unit(const std::vector<std::array<double, 3>>& rates) {
