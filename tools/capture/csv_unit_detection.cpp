@@ -7,7 +7,6 @@
 namespace stoneskip {
 
 namespace {
-constexpr double kStandardGravity = 9.80665;  // m/s² in 1 g (CGPM 1901)
 // |a| at rest within a factor of 2 of gravity: a median outside it is no capture at rest in that unit.
 constexpr double kGravityBand = 2.0;
 // The largest rate a MotionPlus reads, 2000 deg/s, is 34.9 rad/s; a rad/s swing stays below 40.

@@ -11,6 +11,8 @@
 
 namespace stoneskip {
 
+inline constexpr double kStandardGravity = 9.80665;  // m/s² in 1 g (CGPM 1901)
+
 struct DetectedCsvUnit {
   CsvUnit unit = CsvUnit::none;
   std::string how;  // for the notes: what decided it

@@ -21,7 +21,6 @@ namespace stoneskip {
 namespace {
 
 using F = CsvField;
-constexpr double kStandardGravity = 9.80665;     // m/s² per g (CGPM 1901)
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 // WiiYourself! (wiimote.cpp, ParseExtension): MotionPlus.Speed = −(raw − 0x1F7F)·scale, with scale
 // 0.05 deg/s per count in slow mode and 0.25 in fast mode.
