@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <vector>
 
 #include "reports/common/plot.hpp"
 
@@ -21,6 +22,26 @@ double nice_step(double x) {
   return 10 * p;
 }
 
+// The pond map's plot box in pixels: gnuplot keeps the pond's aspect (`size ratio -1`) inside its
+// panel less the room for tick and axis labels (about 110 px across, 90 px down).
+struct MapBox {
+  double w_px = 0, h_px = 0;
+};
+MapBox map_box(const FramePlot& p, bool side) {
+  const double panel_w = (side ? 0.44 : 0.5) * p.width_px, panel_h = (side ? 0.94 : 1.0) * p.height_px;
+  const double avail_w = std::max(1.0, panel_w - 110), avail_h = std::max(1.0, panel_h - 90);
+  const double xs = p.pond_x1_m - p.pond_x0_m, ys = p.pond_y1_m - p.pond_y0_m;
+  if (!(xs > 0 && ys > 0)) return {avail_w, avail_h};
+  MapBox b{avail_w, avail_w * ys / xs};
+  if (b.h_px > avail_h) b = {avail_h * xs / ys, avail_h};
+  return b;
+}
+
+// Room for a tick label: 25 px up the y axis and the colour bar (a line of text and a gap), 70 px
+// along the x axis ("-0.15" and a gap). A side shorter than kRoomyTicks labels keeps gnuplot's own
+// ticks; a shorter one (a long narrow pond) gets as many as fit, or one.
+constexpr double kLabelHeightPx = 25, kLabelWidthPx = 70, kRoomyTicks = 4;
+
 }  // namespace
 
 std::string frame_plot_commands(const FramePlot& p) {
@@ -35,16 +56,29 @@ std::string frame_plot_commands(const FramePlot& p) {
     << "set multiplot" << (side ? "" : " layout 1,2") << " title " << gnuplot_quote(p.title) << "\n"
     << "set palette defined (-1 '#08306b', -0.4 '#4292c6', 0 '#f7fbff', 0.4 '#ef6548', 1 '#7f0000')\n"
     << "set cbrange [" << -s << ":" << s << "]\nset cbtics (";
-  for (int k = -2; k <= 2; ++k) {  // ticks labelled in mm
+  // The colour bar is as tall as the map: five labels (mm) where they fit, else ±scale and 0, else 0.
+  const MapBox box = map_box(p, side);
+  const std::vector<int> halves = box.h_px >= 5 * kLabelHeightPx   ? std::vector<int>{-2, -1, 0, 1, 2}
+                                  : box.h_px >= 3 * kLabelHeightPx ? std::vector<int>{-2, 0, 2}
+                                                                   : std::vector<int>{0};
+  for (std::size_t i = 0; i < halves.size(); ++i) {  // at k halves of the scale, labelled in mm
+    const int k = halves[i];
     char label[32];
     std::snprintf(label, sizeof label, "%.2g", k == 0 ? 0.0 : 0.5 * k * 1e3 * s);
-    g << (k > -2 ? ", " : "") << "'" << label << "' " << 0.5 * k * s;
+    g << (i ? ", " : "") << "'" << label << "' " << 0.5 * k * s;
   }
   g << ")\n";
   if (!p.footnote.empty()) g << "set label 4 " << gnuplot_quote(p.footnote) << " at screen 0.01, screen 0.02 left front\n";
   // Left: the pond from above.
   if (side) g << "set origin 0,0\nset size ratio -1 0.44,0.94\n";
   else g << "set size ratio -1\n";
+  // A long narrow pond's map is a strip a few labels high (or wide): as many ticks as fit.
+  auto tics = [&](double span, double box_px, double label_px) {
+    const double fit = std::floor(box_px / label_px);
+    return fit >= kRoomyTicks ? std::string("auto") : std::to_string(nice_step(span / std::max(1.0, fit)));
+  };
+  g << "set xtics " << tics(p.pond_x1_m - p.pond_x0_m, box.w_px, kLabelWidthPx) << "\nset ytics "
+    << tics(p.pond_y1_m - p.pond_y0_m, box.h_px, kLabelHeightPx) << "\n";
   g << "set xrange [" << p.pond_x0_m << ":" << p.pond_x1_m << "]\nset yrange [" << p.pond_y0_m << ":"
     << p.pond_y1_m << "]\nset xlabel 'x (m, along the throw)'\nset ylabel 'y (m)'\n"
     // The colour bar's label beside the 3-D panel's own z label would run into it with three panels
@@ -60,7 +94,7 @@ std::string frame_plot_commands(const FramePlot& p) {
   g << "\n";
   // Right: the water around the stone, oblique, its heights on the window's own scale.
   const double zs = p.near_z_m > 0 ? p.near_z_m : 2 * s;
-  g << "unset object 1\nunset label 1\nunset label 4\nunset colorbox\n";
+  g << "unset object 1\nunset label 1\nunset label 4\nunset colorbox\nset xtics auto\nset ytics auto\n";
   if (side) g << "set origin 0.45,0\nset size noratio 0.32,0.94\n";  // clear of the colour bar's label
   else g << "set size noratio\n";
   g << "set view 52, 28, 1, 1\nset xyplane at " << -zs
