@@ -38,8 +38,8 @@ MapBox map_box(const FramePlot& p, bool side) {
 }
 
 // Room for a tick label: 25 px up the y axis and the colour bar (a line of text and a gap), 70 px
-// along the x axis ("-0.15" and a gap). A side shorter than kRoomyTicks labels keeps gnuplot's own
-// ticks; a shorter one (a long narrow pond) gets as many as fit, or one.
+// along the x axis ("-0.15" and a gap). A side with room for kRoomyTicks labels or more keeps
+// gnuplot's own ticks; a shorter one (a long narrow pond) gets as many as fit, or one.
 constexpr double kLabelHeightPx = 25, kLabelWidthPx = 70, kRoomyTicks = 4;
 
 }  // namespace
@@ -75,7 +75,10 @@ std::string frame_plot_commands(const FramePlot& p) {
   // A long narrow pond's map is a strip a few labels high (or wide): as many ticks as fit.
   auto tics = [&](double span, double box_px, double label_px) {
     const double fit = std::floor(box_px / label_px);
-    return fit >= kRoomyTicks ? std::string("auto") : std::to_string(nice_step(span / std::max(1.0, fit)));
+    if (fit >= kRoomyTicks) return std::string("auto");
+    char step[32];  // %g: a pond of micrometre cells has steps that %f would print as 0
+    std::snprintf(step, sizeof step, "%.9g", nice_step(span / std::max(1.0, fit)));
+    return std::string(step);
   };
   g << "set xtics " << tics(p.pond_x1_m - p.pond_x0_m, box.w_px, kLabelWidthPx) << "\nset ytics "
     << tics(p.pond_y1_m - p.pond_y0_m, box.h_px, kLabelHeightPx) << "\n";

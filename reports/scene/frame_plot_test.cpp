@@ -35,7 +35,7 @@ BOOST_AUTO_TEST_SUITE(frame_plot)
 
 BOOST_AUTO_TEST_CASE(a_long_narrow_pond_gets_the_ticks_its_strip_has_room_for) {
   const std::string thin = frame_plot_commands(pond(8, 0.3));
-  BOOST_TEST(has(thin, "set ytics 0.500000\n"), thin);
+  BOOST_TEST(has(thin, "set ytics 0.5\n"), thin);
   BOOST_TEST(has(thin, "set xtics auto\nset ytics 0.5"), thin);  // 453 px across: room for gnuplot's own
   BOOST_TEST(has(thin, "set cbtics ('0' 0)\n"), thin);
   // The 3-D panel after it takes its own ticks again.
@@ -48,8 +48,11 @@ BOOST_AUTO_TEST_CASE(a_long_narrow_pond_gets_the_ticks_its_strip_has_room_for) {
   // 8 m by 1.6 m: 91 px high, room for three labels (1.6 m / 3 rounded up: a 1 m step) and for the
   // colour bar's three (±12 mm and 0), not its five.
   const std::string strip = frame_plot_commands(pond(8, 1.6));
-  BOOST_TEST(has(strip, "set ytics 1.000000\n"), strip);
+  BOOST_TEST(has(strip, "set ytics 1\n"), strip);
   BOOST_TEST(has(strip, "set cbtics ('-12' -0.012, '0' 0, '12' 0.012)\n"), strip);
+  // A pond of micrometre cells (the smallest cell_m allowed, 1e-6 m): its step is printed, not 0.
+  FramePlot tiny = pond(8e-5, 3e-6);
+  BOOST_TEST(has(frame_plot_commands(tiny), "set ytics 5e-06\n"), frame_plot_commands(tiny));
 }
 
 BOOST_AUTO_TEST_SUITE_END()
