@@ -76,9 +76,11 @@ const std::map<std::string, CsvField>& names() {
     for (int i = 0; i < 3; ++i) {
       const std::string x = axes[i];
       const F acc = F(int(F::ax) + i), rate = F(int(F::wx) + i);
-      for (const char* p : {"acc", "accel", "acceleration", "accelerometer", "a", "linear acceleration"}) {
+      // Not "linear acceleration": a phone's sensor of that name has gravity removed, which the
+      // analysis needs (a specific force); such a column is left unused, beside the accelerometer's.
+      for (const char* p : {"acc", "accel", "acceleration", "accelerometer", "a"}) {
         add(std::string(p) + " " + x, acc);
-        if (std::string(p) != "linear acceleration") add(std::string(p) + x, acc);
+        add(std::string(p) + x, acc);
       }
       for (const char* p : {"gyro", "gyroscope", "gyr", "rate", "angular rate", "angular velocity", "omega", "w",
                             "rot", "rotation rate"}) {

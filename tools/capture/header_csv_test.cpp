@@ -211,6 +211,25 @@ BOOST_AUTO_TEST_CASE(any_csv_can_be_mapped_with_columns_and_units) {
   BOOST_TEST(t.samples[1].buttons == kButtonB);
 }
 
+BOOST_AUTO_TEST_CASE(a_linear_acceleration_beside_the_accelerometer_is_left_unused_and_alone_is_refused) {
+  // main read a phone's "linear acceleration" (gravity removed) as the accelerometer: beside the
+  // accelerometer's own columns the file was refused (two columns for ax), alone it was read as a
+  // specific force it is not. Oracle: the values written; the bad-input rule (one line, the file).
+  const std::string both =
+      "timestamp,accelerometerX,accelerometerY,accelerometerZ,linear acceleration x,linear acceleration y,"
+      "linear acceleration z\n0,0.1,0.2,9.80665,0.1,0.2,0\n10,0.1,0.2,9.80665,0.1,0.2,0\n";
+  const Trace t = parse_capture(both, "phone.csv");
+  BOOST_REQUIRE(t.samples.size() == 2u);
+  BOOST_TEST(std::abs(t.samples[1].accel_g.z() - 1.0) < 1e-12);  // the accelerometer's, in m/s² (detected)
+  BOOST_TEST(std::any_of(t.notes.begin(), t.notes.end(),
+                         [](const std::string& n) { return contains(n, "not recognised") && contains(n, "'linear acceleration x'"); }));
+  const std::string alone =
+      "timestamp,linear acceleration x,linear acceleration y,linear acceleration z,gyroscopeX,gyroscopeY,gyroscopeZ\n"
+      "0,0.1,0.2,0,0.5,0,0\n10,0.1,0.2,0,0.5,0,0\n";
+  const std::string e = error_of(alone);
+  BOOST_TEST(contains(e, "bad.csv:1: no acceleration columns"), e);
+}
+
 BOOST_AUTO_TEST_CASE(time_units_come_from_the_header_or_from_the_median_interval) {
   // Oracle: the documented rule (below 0.5: s; 0.5–500: ms; above: µs) on 10 ms intervals.
   auto second_sample = [](const std::string& time_header, const char* t1) {
