@@ -21,6 +21,7 @@
 #include <thread>
 
 #include "solvers/reference/cvode_stone.hpp"
+#include "solvers/scene/pond_extent.hpp"
 #include "tools/cli/command_registry.hpp"
 #include "tools/cli/limit_options.hpp"
 #include "tools/cli/terminal_progress.hpp"
@@ -133,6 +134,14 @@ ThrowEvaluator make_evaluator(const SweepFile& sweep, const SweepCases& cases, c
       }
     } catch (const std::exception& e) {
       return not_run(rt ? "reference" : "realtime", std::string("the solver threw: ") + e.what());
+    }
+    // A contact begun beyond a walled pond's rim was not on the live water the case names (the
+    // stone read the edge's height; a two-way field took none of its push): `run` says so in its
+    // notes, and so does the table, in the same words (solvers/scene/pond_extent.hpp).
+    if (rt && c.water && c.water->coupling != Coupling::none) {
+      const PondExtent p = pond_extent(c.water->field, c.water->origin_x_m, c.water->origin_y_m, rt->contacts);
+      if (!p.off.empty())
+        out.notes.push_back({i, "realtime", off_pond_sentence(p, rt->contacts, c.water->coupling == Coupling::two_way)});
     }
     out.add_row(record.row(i, point, rt ? &*rt : nullptr, ref ? &*ref : nullptr, cost, shortest_resolved_flight_s(c), out.notes));
   };

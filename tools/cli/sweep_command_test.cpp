@@ -224,6 +224,57 @@ BOOST_AUTO_TEST_CASE(a_case_that_names_no_fixed_scheme_is_swept_with_the_adaptiv
   BOOST_TEST(at(tb, 1, "throw.spin_rev_s") == 20.0);
 }
 
+BOOST_AUTO_TEST_CASE(a_throw_whose_contacts_begin_off_a_walled_pond_has_runs_note_in_the_table) {
+  // Oracle: `stoneskip run --json` on each throw's case (the same overridden scene case, solved
+  // again): its note about contacts begun off the pond, word for word, is the sweep's note for that
+  // throw, and a throw whose run has no such note has none. The seed's scene on a 2 m pond, 1 s,
+  // at 4 and 12 m/s (paper convention, so the stone skips on): the pond at x in [-0.5, 1.48] m
+  // holds the first landings; moved to x in [2, 3.98] m it holds none.
+  const std::string scene = fs::absolute("cases/scenes/seed_8ms.toml").string();
+  const std::string sets = "\"environment.convention=paper\", \"water.nx=100\", \"water.ny=100\", \"water.origin_y_m=-1.0\", "
+                           "\"scene.duration_s=1.0\", \"solver.t_max_s=1.0\"";
+  for (const char* origin_x : {"-0.5", "2.0"}) {
+    const std::string sweep_text = "base = \"" + scene + "\"\nset = [" + sets + ", \"water.origin_x_m=" + origin_x +
+                                   "\"]\nsolvers = [\"realtime\"]\n[design]\nkind = \"grid\"\n[[vary]]\nkey = \"throw.speed_m_s\"\n"
+                                   "from = 4.0\nto = 12.0\ncount = 2\n";
+    const fs::path sweep = setup(std::string("pond") + origin_x, sweep_text), out = work() / (std::string("pond") + origin_x + ".h5");
+    const Outcome s = command("sweep " + sweep.string() + " --out " + out.string() + " --quiet");
+    BOOST_REQUIRE_MESSAGE(s.status == 0, s.err);
+    const stoneskip::Hdf5Reader r(out);
+    const stoneskip::H5Group notes = r.root().open_group("notes");
+    const std::vector<long long> ids = notes.read_ints("throw");
+    const std::vector<std::string> solver = notes.read_strings("solver"), detail = notes.read_strings("detail");
+    std::size_t off_pond_runs = 0;
+    for (const double speed : {4.0, 12.0}) {
+      const std::uint64_t index = speed == 4.0 ? 0 : 1;
+      std::string args = "run " + scene + " --solver realtime --json --set throw.speed_m_s=" + std::to_string(speed);
+      for (const char* k : {"environment.convention=paper", "water.nx=100", "water.ny=100", "water.origin_y_m=-1.0", "solver.t_max_s=1.0"})
+        args += std::string(" --set ") + k;
+      const Outcome run = command(args + " --set water.origin_x_m=" + origin_x);
+      BOOST_REQUIRE_MESSAGE(run.status == 0, run.err);
+      std::vector<std::string> expected;
+      const nlohmann::json j = nlohmann::json::parse(run.out);
+      for (const auto& n : j["notes"])
+        if (n.get<std::string>().find("outside the pond") != std::string::npos) expected.push_back(n.get<std::string>());
+      off_pond_runs += expected.empty() ? 0 : 1;
+      std::vector<std::string> got;
+      for (std::size_t k = 0; k < ids.size(); ++k)
+        if (static_cast<std::uint64_t>(ids[k]) == index) {
+          BOOST_TEST(solver[k] == "realtime");
+          got.push_back(detail[k]);
+        }
+      BOOST_TEST(got == expected, "origin x " << origin_x << ", throw " << index << ": the sweep's notes\n  "
+                                              << (got.empty() ? "(none)" : got[0]) << "\n`run`'s\n  "
+                                              << (expected.empty() ? "(none)" : expected[0]));
+    }
+    // Moved off the landing, both throws' runs name contacts off the pond. Under it, the 12 m/s
+    // throw's one contact (x ≈ 0.44 m) is on the pond and the 4 m/s throw's second (x ≈ 3.8 m,
+    // 2.3 m past the rim) is not: a table with a note on one throw and none on the other.
+    BOOST_TEST(off_pond_runs == (std::string(origin_x) == "2.0" ? 2u : 1u), "origin x " << origin_x);
+    BOOST_TEST((s.out.find("with notes") != std::string::npos) == (off_pond_runs > 0), s.out);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(a_title_with_control_characters_is_printed_escaped) {
   // Oracle: printable_text's escapes. The sweep's configuration lines printed its title as written:
   // a bell and an escape sequence reached the terminal.

@@ -10,8 +10,8 @@
 //                 (verification/sweep/throw_record.hpp lists the columns)
 //   /design       attributes kind, samples, seed, axes; /design/axis_<k>: attributes key, from,
 //                 to, count, scale, and for a grid the dataset `values` (its grid values)
-//   /notes        datasets throw (ints), solver, detail (strings): failed solves and throws whose
-//                 case could not be built
+//   /notes        datasets throw (ints), solver, detail (strings): failed solves, throws whose
+//                 case could not be built, contacts begun off a walled pond
 //   /run          attributes of the run that finished the file (not part of the result proper):
 //                 ranks, master_threads, wall_s, throws_computed, throws_remote (by other
 //                 ranks), throws_recovered (from the journal of an interrupted run),

@@ -80,6 +80,7 @@ std::string SweepSummary::brief() const {
   s << ")";
   if (failed_solves) s << ", " << failed_solves << " failed solves";
   if (not_run) s << ", " << not_run << " throws whose case could not be built";
+  if (noted) s << ", " << noted << (noted == 1 ? " throw" : " throws") << " with notes (sweep-plot lists them)";
   s.precision(3);
   s << "; " << schedule.ranks << (schedule.ranks == 1 ? " rank" : " ranks") << ", " << schedule.master_threads
     << " compute thread" << (schedule.master_threads == 1 ? "" : "s") << " on rank 0, " << schedule.wall_s << " s wall";
@@ -204,8 +205,8 @@ SweepSummary SweepPlan::run(const ThrowEvaluator& evaluate, MpiSession& mpi) {
 
   const auto missing = std::count(have_.begin(), have_.end(), false);
   if (missing) throw std::runtime_error("sweep: " + std::to_string(missing) + " throws missing at the end");
-  // Notes in throw order, whatever order they arrived in.
-  std::sort(data_.notes.begin(), data_.notes.end(), [](const ThrowNote& a, const ThrowNote& b) {
+  // Notes in throw order, whatever order they arrived in (a throw's own notes in the order made).
+  std::stable_sort(data_.notes.begin(), data_.notes.end(), [](const ThrowNote& a, const ThrowNote& b) {
     return a.throw_index != b.throw_index ? a.throw_index < b.throw_index : a.solver < b.solver;
   });
   journal_->sync();
@@ -226,6 +227,8 @@ SweepSummary SweepPlan::run(const ThrowEvaluator& evaluate, MpiSession& mpi) {
     }
     summary.not_run += not_run ? 1 : 0;
   }
+  for (std::size_t k = 0; k < data_.notes.size(); ++k)
+    summary.noted += k == 0 || data_.notes[k].throw_index != data_.notes[k - 1].throw_index ? 1 : 0;
   return summary;
 }
 

@@ -36,6 +36,7 @@ struct SweepSummary {
   std::filesystem::path out;
   std::size_t throws = 0, computed = 0, recovered = 0;
   std::size_t failed_solves = 0, not_run = 0;
+  std::size_t noted = 0;            // throws with a note (a failure, a contact off the pond)
   bool was_complete = false;        // --resume found a finished result file: nothing to do
   std::vector<std::string> warnings;  // one line each, for stderr (a journal damaged mid-file)
   ScheduleStats schedule;

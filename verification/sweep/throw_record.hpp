@@ -62,7 +62,8 @@ struct SweepThrowCost {
   double start_unix_s = 0;  // when the throw started (system clock): a timeline of the run
 };
 
-// A throw that needs words: a failed solve or a case that could not be built.
+// A throw that needs words: a failed solve, a case that could not be built, a contact begun off
+// a walled pond.
 struct ThrowNote {
   std::uint64_t throw_index = 0;
   std::string solver;     // "realtime", "reference" or "case"
