@@ -37,6 +37,23 @@ MapBox map_box(const FramePlot& p, bool side) {
   return b;
 }
 
+// The 3-D panel's ticks on one axis of its window [lo, hi]: "start, step, end" at multiples of a
+// step of about a fifth of the span, none within a tenth of the span of the end `near_corner`
+// names. Seen at `set view 52, 28`, the x axis ends (x = hi) where the y axis starts (y = lo):
+// gnuplot's own ticks put a label of each there, printed into one another ("0.550.15").
+std::string window_tics(double lo, double hi, bool corner_at_hi) {
+  const double span = hi - lo;
+  if (!(span > 0)) return "auto";
+  const double step = nice_step(span / 5);
+  const double from = corner_at_hi ? lo : lo + 0.1 * span, to = corner_at_hi ? hi - 0.1 * span : hi;
+  const double first = std::ceil(from / step - 1e-9) * step, last = std::floor(to / step + 1e-9) * step;
+  if (first > last) return "auto";
+  // The end a quarter step past the last tick: a sum of steps that lands 1 ulp beyond it is kept.
+  char t[96];  // %g: steps of micrometres print as such, not as 0
+  std::snprintf(t, sizeof t, "%.9g, %.9g, %.9g", first == 0 ? 0.0 : first, step, last + 0.25 * step);
+  return t;
+}
+
 // Room for a tick label: 25 px up the y axis and the colour bar (a line of text and a gap), 70 px
 // along the x axis ("-0.15" and a gap). A side with room for kRoomyTicks labels or more keeps
 // gnuplot's own ticks; a shorter one (a long narrow pond) gets as many as fit, or one.
@@ -97,7 +114,8 @@ std::string frame_plot_commands(const FramePlot& p) {
   g << "\n";
   // Right: the water around the stone, oblique, its heights on the window's own scale.
   const double zs = p.near_z_m > 0 ? p.near_z_m : 2 * s;
-  g << "unset object 1\nunset label 1\nunset label 4\nunset colorbox\nset xtics auto\nset ytics auto\n";
+  g << "unset object 1\nunset label 1\nunset label 4\nunset colorbox\nset xtics "
+    << window_tics(p.near_x0_m, p.near_x1_m, true) << "\nset ytics " << window_tics(p.near_y0_m, p.near_y1_m, false) << "\n";
   if (side) g << "set origin 0.45,0\nset size noratio 0.32,0.94\n";  // clear of the colour bar's label
   else g << "set size noratio\n";
   g << "set view 52, 28, 1, 1\nset xyplane at " << -zs
