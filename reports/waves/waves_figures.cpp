@@ -72,6 +72,10 @@ Figure convergence_figure(const Record& c, const std::string& kind) {
   else if (time)
     title << "Time error alone: leapfrog against the stencil's exact semi-discrete solution on a " << c.number("time_grid")
           << " × " << c.number("time_grid") << " grid (RMS)";
+  else if (kind.rfind("walls_", 0) == 0)
+    title << "The square walled in (" << (kind == "walls_reflecting" ? "reflecting walls" : "fixed rims")
+          << "), both refined together at σ = " << c.number("both_sigma") << " to t = " << c.number("walls_t_end_s")
+          << " s: leapfrog against the exact walled solution (RMS)";
   else
     title << "Both refined together at σ = cΔt/d = " << c.number("both_sigma")
           << ": leapfrog against the exact continuum solution (RMS)";

@@ -7,7 +7,7 @@
 namespace stoneskip {
 
 Figure consistency_figure(const Record& consistency);
-Figure convergence_figure(const Record& convergence, const std::string& kind);  // "space", "time", "both"
+Figure convergence_figure(const Record& convergence, const std::string& kind);  // "space", "time", "both", "walls_<boundary>"
 Figure isotropy_polar_figure(const Record& isotropy);
 Figure isotropy_spread_figure(const Record& isotropy);
 Figure isotropy_measured_figure(const Record& isotropy);

@@ -1,5 +1,6 @@
 #include "tools/scene/wave_study_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -164,6 +165,24 @@ WaveStudyFile load_wave_study_file(const std::string& path, const std::vector<st
     };
     refuse_above("time_steps", time_updates, "time sequence (time_grid² × Σ time_steps)");
     refuse_above("both_grids", both_updates, "space–time sequence (N² × t_end c N / (σ L) on each grid)");
+    // The walled squares (the same grids and σ, to walls_t_end_s): reflecting and fixed, or fewer.
+    if (auto walls = c->maybe_strings("walls")) {
+      v.walls.clear();
+      for (const auto& w : *walls) {
+        Boundary b{};
+        if (!parse_boundary(w, b) || b == Boundary::periodic)
+          c->fail("walls", "'" + w + "' is not a walled boundary (reflecting, fixed)");
+        if (std::find(v.walls.begin(), v.walls.end(), b) != v.walls.end()) c->fail("walls", "'" + w + "' is named twice");
+        v.walls.push_back(b);
+      }
+    }
+    v.walls_t_end_s = c->number_or("walls_t_end_s", v.walls_t_end_s);
+    c->require_in("walls_t_end_s", v.walls_t_end_s, 1e-3, 1e3);
+    double walls_updates = 0;
+    for (int n : v.both_grids)
+      walls_updates += static_cast<double>(v.walls.size()) * n * n *
+                       std::ceil(v.walls_t_end_s * o.problem.wave_speed_m_s * (n + 1) / (v.both_sigma * o.problem.length_m));
+    refuse_above("walls_t_end_s", walls_updates, "walled sequences (N² × walls_t_end c N / (σ L) on each grid, each wall kind)");
     v.fit_points = static_cast<int>(count_in(*c, "fit_points", v.fit_points, 0, 100));
     if (v.fit_points == 1) c->fail("fit_points", "a fit needs at least 2 points (0: all)");
     v.judgement.expected_order = c->number_or("expected_order", v.judgement.expected_order);

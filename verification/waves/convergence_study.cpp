@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "solvers/realtime/clocks.hpp"
+#include "solvers/spectral/walled_wave.hpp"
 #include "verification/study/progress.hpp"
 
 namespace stoneskip {
@@ -10,6 +12,63 @@ namespace stoneskip {
 namespace {
 // Index of the GCI point (3/4, 1/2) L on an n × n grid (n divisible by 4).
 double point_value(const std::vector<double>& z, int n) { return z[static_cast<std::size_t>(n / 2) * n + 3 * n / 4]; }
+
+// The walled square's cell: L/n between reflecting walls (points at the cell centres), L/(n + 1)
+// inside fixed rims (the rims one cell beyond the edge points).
+double walled_cell(const WaveProblem& p, Boundary b, int n) { return p.length_m / (b == Boundary::reflecting ? n : n + 1); }
+
+long walled_steps(const ConvergenceStudyOptions& o, Boundary b, int n) {
+  return std::max(1L, std::lround(o.walls_t_end_s * o.problem.wave_speed_m_s / (o.both_sigma * walled_cell(o.problem, b, n))));
+}
+
+// One point of a walled sequence: the leapfrog with the boundary's ghost cells against the walled
+// continuum reference, on the points where those walls stand at 0 and L.
+ConvergencePoint walled_point(const Stencil& stencil, const ConvergenceStudyOptions& o, Boundary b, int n) {
+  const WaveProblem& p = o.problem;
+  const double d = walled_cell(p, b, n);
+  // Point i stands at (i + ½)d or (i + 1)d; sample_disturbance puts it at i·d: shift the centre.
+  Disturbance shifted = p.initial;
+  const double offset = b == Boundary::reflecting ? 0.5 * d : d;
+  shifted.x_m -= offset;
+  shifted.y_m -= offset;
+  std::vector<double> z0, z, zr;
+  sample_disturbance(shifted, n, n, d, z0);
+  HeightFieldOptions h;
+  h.nx = h.ny = n;
+  h.cell_m = d;
+  h.wave_speed_m_s = p.wave_speed_m_s;
+  h.damping_per_s = p.damping_per_s;
+  const long steps = walled_steps(o, b, n);
+  h.dt_s = o.walls_t_end_s / steps;
+  h.stencil = stencil;
+  h.boundary = b;
+  HeightField f(h);
+  f.set_state(z0);
+  CpuTimer timer;
+  f.advance(steps);
+  ConvergencePoint pt;
+  pt.cpu_s = timer.seconds();
+  f.heights(z);
+  WalledWaveOptions w;
+  w.nx = w.ny = n;
+  w.cell_m = d;
+  w.wave_speed_m_s = p.wave_speed_m_s;
+  w.damping_per_s = p.damping_per_s;
+  w.boundary = b;
+  WalledWave ref(w);
+  ref.set_initial(z0);
+  ref.evaluate(f.time_s(), zr);
+  pt.n = n;
+  pt.steps = steps;
+  pt.h = d;
+  pt.sigma = p.wave_speed_m_s * h.dt_s / d;
+  const FieldError e = field_error(z, zr);
+  pt.l2_m = e.l2_m;
+  pt.max_m = e.max_m;
+  pt.point_m = std::numeric_limits<double>::quiet_NaN();  // no GCI on these sequences
+  return pt;
+}
+
 }  // namespace
 
 void fit_sequence(ConvergenceSequence& s, int fit_points, const OrderJudgement& judgement) {
@@ -46,6 +105,8 @@ std::size_t convergence_study_work(const ConvergenceStudyOptions& o) {
     const double steps = o.problem.t_end_s * o.problem.wave_speed_m_s / (o.both_sigma * o.problem.length_m / n);
     w += static_cast<std::size_t>(n) * n * static_cast<std::size_t>(std::ceil(steps));
   }
+  for (const Boundary b : o.walls)
+    for (int n : o.both_grids) w += static_cast<std::size_t>(n) * n * static_cast<std::size_t>(walled_steps(o, b, n));
   return w;
 }
 
@@ -117,6 +178,15 @@ ConvergenceStudy run_convergence_study(const Stencil& stencil, const Convergence
   }
   fit_sequence(study.both, o.fit_points, o.judgement);
   attach_gci(study.both, o.judgement);
+  for (const Boundary b : o.walls) {
+    ConvergenceSequence& s = study.walls.emplace_back();
+    s.kind = std::string("walls_") + to_string(b);
+    for (int n : o.both_grids) {
+      s.points.push_back(walled_point(stencil, o, b, n));
+      tick(static_cast<std::size_t>(n) * n * static_cast<std::size_t>(walled_steps(o, b, n)));
+    }
+    fit_sequence(s, o.fit_points, o.judgement);
+  }
   return study;
 }
 

@@ -4,7 +4,9 @@
 //   space: the exact semi-discrete solution of the stencil vs the exact continuum solution,
 //          on grids n = 32, 64, ... (no time error at all);
 //   time:  the leapfrog vs the exact semi-discrete solution on one grid, Δt halved (no space error);
-//   both:  the leapfrog vs the exact continuum solution, grid and Δt refined together at fixed σ.
+//   both:  the leapfrog vs the exact continuum solution, grid and Δt refined together at fixed σ;
+//   walls: "both" again in the problem's square walled in, reflecting or fixed (solvers/spectral/
+//          walled_wave.hpp), followed until the waves have come back from the walls.
 // Each sequence gets a least-squares order with its 95 % interval (verification/convergence/
 // order_fit.hpp), fitted on its finest points (the asymptotic range), and the "both" sequence a
 // Grid Convergence Index on a point value (verification/convergence/gci.hpp).
@@ -48,6 +50,12 @@ struct ConvergenceStudyOptions {
   std::vector<long> time_steps{64, 128, 256, 512, 1024};  // σ = 0.5 … 0.03 at n = 64
   std::vector<int> both_grids{32, 64, 128, 256};
   double both_sigma = 0.5;
+  // The walled sequences: the square's edges are walls (reflecting: zero slope; fixed: z = 0) at
+  // x, y = 0 and L, the grid's points at the cell centres (i + ½)·L/n (reflecting) or at
+  // (i + 1)·L/(n + 1) (fixed), where the ghost cells put those walls; grids both_grids, σ both_sigma,
+  // to walls_t_end_s (long enough for the waves to reach the walls and come back). Empty: none.
+  std::vector<Boundary> walls{Boundary::reflecting, Boundary::fixed};
+  double walls_t_end_s = 1.25;
   int fit_points = 0;  // fit the finest this many points; 0: every point (no range to choose)
   OrderJudgement judgement;  // expected order 2 ± 0.1
 };
@@ -55,6 +63,7 @@ struct ConvergenceStudyOptions {
 struct ConvergenceStudy {
   std::string stencil;
   ConvergenceSequence space, time, both;
+  std::vector<ConvergenceSequence> walls;  // one per options.walls, kind "walls_<boundary>"
 };
 
 ConvergenceStudy run_convergence_study(const Stencil& stencil, const ConvergenceStudyOptions& options,

@@ -215,6 +215,10 @@ Record wave_convergence_findings(const WaveStudiesOptions& o, const ProgressFact
   r.set_table("time_steps", value_list(to_doubles(co.time_steps)));
   r.set_table("both_grids", value_list(to_doubles(co.both_grids)));
   r.set("both_sigma", co.both_sigma);
+  std::vector<std::string> walls;
+  for (const Boundary b : co.walls) walls.push_back(to_string(b));
+  r.set_strings("walls", walls);
+  r.set("walls_t_end_s", co.walls_t_end_s);
   r.set("fit_points", co.fit_points);
   r.set("expected_order", co.judgement.expected_order);
   r.set("tolerance", co.judgement.tolerance);
@@ -225,6 +229,7 @@ Record wave_convergence_findings(const WaveStudiesOptions& o, const ProgressFact
     const ConvergenceStudy c = run_convergence_study(st, co, ticker.get());
     Record& s = r.child(st.name);
     for (const ConvergenceSequence* seq : {&c.space, &c.time, &c.both}) store_sequence(s, *seq, co.judgement);
+    for (const ConvergenceSequence& seq : c.walls) store_sequence(s, seq, co.judgement);
     // What the split says about where an error comes from (computed from the verdicts above).
     const OrderVerdict vs = judge_order(c.space.fit, co.judgement).verdict, vt = judge_order(c.time.fit, co.judgement).verdict;
     if (vs == OrderVerdict::does_not_converge) {
