@@ -3,8 +3,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "solvers/spectral/damped_mode.hpp"
-#include "solvers/spectral/gauss_legendre.hpp"
 
 namespace stoneskip {
 
@@ -61,22 +59,11 @@ void ForcedSpectralWave::set_initial(const std::vector<double>& z0, const std::v
 
 void ForcedSpectralWave::evaluate(double t_s, std::vector<double>& z) {
   free_.evaluate_spectrum(t_s, spectrum_);
-  const std::vector<double>& lambda = free_.lambdas();
-  const double mu = free_.options().damping_per_s;
-  const GaussLegendreRule rule = gauss_legendre(quadrature_.nodes);
-  const double h = t_s / quadrature_.intervals;
   // Spec §2.5: ∫₀ᵗ G(t − s) (−λ b̂(s)) ds, node by node.
-  for (int k = 0; k < quadrature_.intervals && t_s > 0; ++k)
-    for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
-      const double s = (k + 0.5 * (rule.nodes[q] + 1)) * h, w = 0.5 * h * rule.weights[q];
-      draught_(s, b_);
-      free_.transform(b_, b_hat_);
-      ++transforms_;
-      for (std::size_t m = 0; m < lambda.size(); ++m) {
-        if (lambda[m] == 0) continue;  // the mean is not forced: −λ b̂ = 0
-        spectrum_[m] -= (w * damped_mode(lambda[m], mu, t_s - s).gv * lambda[m]) * b_hat_[m];
-      }
-    }
+  transforms_ += add_duhamel_integral(
+      t_s, free_.lambdas(), free_.options().damping_per_s, quadrature_, draught_,
+      [this](const std::vector<double>& b, std::vector<std::complex<double>>& b_hat) { free_.transform(b, b_hat); }, spectrum_,
+      b_, b_hat_);
   free_.synthesise(spectrum_, z);
 }
 

@@ -14,12 +14,10 @@
 #include <functional>
 #include <vector>
 
+#include "solvers/spectral/duhamel.hpp"
 #include "solvers/spectral/spectral_wave.hpp"
 
 namespace stoneskip {
-
-// Fills b (resized to nx·ny, row-major, x fastest) with the draught at the cell points at time t.
-using DraughtField = std::function<void(double t_s, std::vector<double>& b)>;
 
 // A prescribed draught of model/README.md §2.5: a Gaussian patch b = depth · e(t) · exp(−|x − x_c(t)|²/w²)
 // (summed over the neighbouring periodic images, as model/water/disturbance.hpp does for a bump),
@@ -36,11 +34,6 @@ struct MovingGaussianDraught {
   // b on the cell points x_i = i d, y_j = j d of an nx × ny grid that tiles the plane periodically.
   void sample(double t_s, int nx, int ny, double cell_m, std::vector<double>& b) const;
   DraughtField on_grid(int nx, int ny, double cell_m) const;
-};
-
-struct DuhamelQuadrature {
-  int intervals = 32;  // equal sub-intervals of [0, t]
-  int nodes = 8;       // Gauss–Legendre nodes per sub-interval
 };
 
 class ForcedSpectralWave {

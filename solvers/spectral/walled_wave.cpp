@@ -103,12 +103,18 @@ double WalledWave::upper_half_fraction() const {
   return all > 0 ? std::sqrt(upper / all) : 0.0;
 }
 
-void WalledWave::evaluate(double t_s, std::vector<double>& z) {
-  const std::size_t n = lambda_.size();
-  for (std::size_t k = 0; k < n; ++k) {
+void WalledWave::evaluate_modes(double t_s, std::vector<double>& modes) const {
+  modes.resize(lambda_.size());
+  for (std::size_t k = 0; k < lambda_.size(); ++k) {
     const DampedModeFactors f = damped_mode(lambda_[k], options_.damping_per_s, t_s);
-    plans_->spec[k] = f.gz * z0_hat_[k] + f.gv * v0_hat_[k];
+    modes[k] = f.gz * z0_hat_[k] + f.gv * v0_hat_[k];
   }
+}
+
+void WalledWave::synthesise(const std::vector<double>& modes, std::vector<double>& z) {
+  const std::size_t n = lambda_.size();
+  if (modes.size() != n) throw std::invalid_argument("WalledWave: wrong number of modes");
+  std::memcpy(plans_->spec, modes.data(), n * sizeof(double));
   fftw_execute(plans_->backward);
   // FFTW's transforms are unnormalised: forward then backward multiplies by 2n (REDFT10/01) or
   // 2(n + 1) (RODFT00) along each axis.
@@ -117,6 +123,11 @@ void WalledWave::evaluate(double t_s, std::vector<double>& z) {
   const double scale = 1.0 / (per_axis_x * per_axis_y);
   z.resize(n);
   for (std::size_t k = 0; k < n; ++k) z[k] = plans_->real[k] * scale;
+}
+
+void WalledWave::evaluate(double t_s, std::vector<double>& z) {
+  evaluate_modes(t_s, work_);
+  synthesise(work_, z);
 }
 
 }  // namespace stoneskip

@@ -56,10 +56,17 @@ class WalledWave {
   // λ of mode (i, j), i < nx, j < ny.
   double lambda(int i, int j) const { return lambda_[static_cast<std::size_t>(j) * options_.nx + i]; }
 
- private:
+  // The pieces of evaluate(), for references built on this one (solvers/spectral/forced_walled_wave.hpp).
+  // Modes: index j·nx + i, unnormalised as FFTW's forward transform gives them.
+  const std::vector<double>& lambdas() const { return lambda_; }
+  const WalledWaveOptions& options() const { return options_; }
+  void evaluate_modes(double t_s, std::vector<double>& modes) const;  // the free solution's modes at t
   void transform(const std::vector<double>& field, std::vector<double>& modes);
+  void synthesise(const std::vector<double>& modes, std::vector<double>& field);  // normalised
+
+ private:
   WalledWaveOptions options_;
-  std::vector<double> lambda_, z0_hat_, v0_hat_;
+  std::vector<double> lambda_, z0_hat_, v0_hat_, work_;
   struct Plans;
   std::unique_ptr<Plans> plans_;
 };
