@@ -405,7 +405,8 @@ void scene_part(SectionWriter& w, const std::string& key, const Record& c) {
   std::string water = "no water field";
   if (s.flag("has_water"))
     water = fmt(s.number("nx")) + " × " + fmt(s.number("ny")) + " grid of " + fmt(100 * s.number("cell_m"), 3) + " cm cells (" +
-            s.text("stencil") + ", " + (s.flag("periodic") ? "periodic" : "not periodic") + "), c = " +
+            s.text("stencil") + ", " + (s.has_text("boundary") ? s.text("boundary") : s.flag("periodic") ? "periodic" : "not periodic") +
+            (s.has_text("boundary") && s.text("boundary") != "periodic" ? " walls" : "") + "), c = " +
             fmt(s.number("wave_speed_m_s"), 3) + " m/s, μ = " + fmt(s.number("damping_per_s"), 3) + " /s, Δt = " +
             fmt(1e3 * s.number("dt_s"), 3) + " ms (σ = " + fmt(s.number("courant"), 3) + "), " + head.gathering;
   w.text("The capture's virtual stone thrown into the scene of " + code(s.text("case_file")) + " (" +

@@ -40,8 +40,9 @@
 // The CVODE trajectory and the scene stone's are sampled every reference_output_dt_s; between
 // samples the pose is a cubic Hermite curve in position (from positions and velocities) and a
 // slerp in orientation.
-// The spectral reference is periodic: the waves are compared only on a periodic two-way scene (else
-// `waves_compared` is false and `waves_not_compared` says why).
+// The forced reference is the periodic one on a periodic pond and the walled one on a reflecting or
+// fixed pond (solvers/spectral/forced_walled_wave.hpp); the waves are compared on a two-way scene
+// whose reference is affordable (else `waves_compared` is false and `waves_not_compared` says why).
 #include <optional>
 #include <string>
 #include <vector>

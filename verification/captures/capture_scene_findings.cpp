@@ -48,6 +48,7 @@ Record settings(const CaptureSceneOptions& o, const std::string& case_file) {
     r.set("wave_speed_m_s", f.wave_speed_m_s).set("damping_per_s", f.damping_per_s);
     r.set("dt_s", f.dt_s).set("courant", f.courant());
     r.set("periodic", f.boundary == Boundary::periodic);
+    r.set("boundary", std::string(to_string(f.boundary)));  // since 7 December: a walled pond's waves are compared too
     r.set("origin_x_m", s.water->placement.origin_x_m).set("origin_y_m", s.water->placement.origin_y_m);
   }
   return r;
