@@ -14,6 +14,7 @@
 #include "model/water/draught_patch.hpp"
 #include "model/water/height_field.hpp"
 #include "solvers/spectral/forced_wave.hpp"
+#include "solvers/spectral/walled_extension_test_support.hpp"
 
 namespace stoneskip {
 namespace {
@@ -49,32 +50,8 @@ WalledWaveOptions pond(Boundary b, int nx, int ny, double d) {
   return o;
 }
 
-// The extension of a walled field to the periodic grid it is part of (walled_wave_test.cpp's, for b).
-std::vector<double> extended(Boundary b, const std::vector<double>& f, int nx, int ny, int& px, int& py) {
-  px = b == Boundary::reflecting ? 2 * nx : 2 * (nx + 1);
-  py = b == Boundary::reflecting ? 2 * ny : 2 * (ny + 1);
-  std::vector<double> e(static_cast<std::size_t>(px) * py, 0.0);
-  auto fold = [&](int k, int n, int p, int& i) -> double {
-    if (b == Boundary::reflecting) {
-      i = k < n ? k : p - 1 - k;
-      return 1;
-    }
-    if (k < n) {
-      i = k;
-      return 1;
-    }
-    if (k == n || k == p - 1) return 0;
-    i = p - 2 - k;
-    return -1;
-  };
-  for (int j = 0; j < py; ++j)
-    for (int i = 0; i < px; ++i) {
-      int fi = 0, fj = 0;
-      const double s = fold(i, nx, px, fi) * fold(j, ny, py, fj);
-      if (s != 0) e[static_cast<std::size_t>(j) * px + i] = s * f[static_cast<std::size_t>(fj) * nx + fi];
-    }
-  return e;
-}
+
+using test::extended;
 
 }  // namespace
 

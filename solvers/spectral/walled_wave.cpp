@@ -41,6 +41,19 @@ struct WalledWave::Plans {
   }
 };
 
+WalledWaveOptions walled_wave_options(const HeightFieldOptions& field, SpectralSymbol symbol) {
+  WalledWaveOptions o;
+  o.nx = field.nx;
+  o.ny = field.ny;
+  o.cell_m = field.cell_m;
+  o.wave_speed_m_s = field.wave_speed_m_s;
+  o.damping_per_s = field.damping_per_s;
+  o.boundary = field.boundary;
+  o.symbol = symbol;
+  o.stencil = field.stencil;
+  return o;
+}
+
 WalledWave::WalledWave(const WalledWaveOptions& options) : options_(options) {
   if (options.boundary == Boundary::periodic) throw std::invalid_argument("WalledWave: a periodic grid's reference is SpectralWave");
   if (options.nx < 1 || options.ny < 1) throw std::invalid_argument("WalledWave: the grid needs at least 1 x 1 points");

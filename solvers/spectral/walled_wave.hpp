@@ -34,6 +34,9 @@ struct WalledWaveOptions {
   Stencil stencil;  // used when symbol == stencil
 };
 
+// The reference's options for a height field's grid, wave speed, damping, walls and stencil.
+WalledWaveOptions walled_wave_options(const HeightFieldOptions& field, SpectralSymbol symbol);
+
 class WalledWave {
  public:
   // Throws std::invalid_argument for a periodic boundary or a grid smaller than 1 × 1.

@@ -14,6 +14,7 @@
 
 #include "model/water/height_field.hpp"
 #include "solvers/spectral/spectral_wave.hpp"
+#include "solvers/spectral/walled_extension_test_support.hpp"
 
 namespace stoneskip {
 namespace {
@@ -61,34 +62,8 @@ void fields(int nx, int ny, double d, std::vector<double>& z0, std::vector<doubl
     }
 }
 
-// The field's extension to the periodic grid of which the walled problem is a part: even about
-// the half-cell walls (period 2n), or odd about the rims one cell out (period 2(n + 1), zeros on the rims).
-std::vector<double> extended(Boundary b, const std::vector<double>& f, int nx, int ny, int& px, int& py) {
-  px = b == Boundary::reflecting ? 2 * nx : 2 * (nx + 1);
-  py = b == Boundary::reflecting ? 2 * ny : 2 * (ny + 1);
-  std::vector<double> e(static_cast<std::size_t>(px) * py, 0.0);
-  // Index along the extension → (pond index, sign); index −1 / n of a fixed axis are the rims.
-  auto fold = [&](int k, int n, int p, int& i) -> double {
-    if (b == Boundary::reflecting) {
-      i = k < n ? k : p - 1 - k;
-      return 1;
-    }
-    if (k < n) {
-      i = k;
-      return 1;
-    }
-    if (k == n || k == p - 1) return 0;  // the rims
-    i = p - 2 - k;                      // odd about index n: k = n + 1 + r ↔ n − 1 − r
-    return -1;
-  };
-  for (int j = 0; j < py; ++j)
-    for (int i = 0; i < px; ++i) {
-      int fi = 0, fj = 0;
-      const double s = fold(i, nx, px, fi) * fold(j, ny, py, fj);
-      if (s != 0) e[static_cast<std::size_t>(j) * px + i] = s * f[static_cast<std::size_t>(fj) * nx + fi];
-    }
-  return e;
-}
+
+using test::extended;
 
 }  // namespace
 

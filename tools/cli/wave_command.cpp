@@ -125,16 +125,7 @@ void run_wave(const WaveArgs& a) {
   }
   FieldError err{NAN, NAN};
   if (!periodic && finite) {
-    WalledWaveOptions wo;
-    wo.nx = w.nx;
-    wo.ny = w.ny;
-    wo.cell_m = w.cell_m;
-    wo.wave_speed_m_s = w.wave_speed_m_s;
-    wo.damping_per_s = w.damping_per_s;
-    wo.boundary = w.boundary;
-    wo.symbol = c.reference_semi_discrete ? SpectralSymbol::stencil : SpectralSymbol::continuum;
-    wo.stencil = w.stencil;
-    WalledWave ref(wo);
+    WalledWave ref(walled_wave_options(w, c.reference_semi_discrete ? SpectralSymbol::stencil : SpectralSymbol::continuum));
     ref.set_initial(z0);
     std::vector<double> zr;
     ref.evaluate(field.time_s(), zr);

@@ -223,16 +223,7 @@ std::vector<double> spectral(const HeightFieldOptions& field, SpectralSymbol sym
       initial_m.empty() ? std::vector<double>(static_cast<std::size_t>(field.nx) * field.ny, 0.0) : initial_m;
   std::vector<double> z;
   if (field.boundary != Boundary::periodic) {
-    WalledWaveOptions wo;
-    wo.nx = field.nx;
-    wo.ny = field.ny;
-    wo.cell_m = field.cell_m;
-    wo.wave_speed_m_s = field.wave_speed_m_s;
-    wo.damping_per_s = field.damping_per_s;
-    wo.boundary = field.boundary;
-    wo.symbol = symbol;
-    wo.stencil = field.stencil;
-    ForcedWalledWave w(wo, draught, q);
+    ForcedWalledWave w(walled_wave_options(field, symbol), draught, q);
     w.set_initial(initial);
     w.evaluate(t_s, z);
     transforms += w.draught_transforms();

@@ -49,13 +49,7 @@ ConvergencePoint walled_point(const Stencil& stencil, const ConvergenceStudyOpti
   ConvergencePoint pt;
   pt.cpu_s = timer.seconds();
   f.heights(z);
-  WalledWaveOptions w;
-  w.nx = w.ny = n;
-  w.cell_m = d;
-  w.wave_speed_m_s = p.wave_speed_m_s;
-  w.damping_per_s = p.damping_per_s;
-  w.boundary = b;
-  WalledWave ref(w);
+  WalledWave ref(walled_wave_options(h, SpectralSymbol::continuum));
   ref.set_initial(z0);
   ref.evaluate(f.time_s(), zr);
   pt.n = n;
