@@ -261,6 +261,33 @@ SectionOutput convergence_section(const Record& c) {
   PlotAxes ax{"cell size d (m), Δt = σ d / c", "RMS error at t_end (m)", true, true, ""};
   w.figure(line_figure("forced_convergence", "Forced leapfrog: error against the forced spectral reference, d and Δt refined together", ax,
                        series, "h_m", "error_m"));
+  // The walled squares (reports written before 7 December have none).
+  if (c.has("walls") && !c.strings("walls").empty()) {
+    const auto walls = c.strings("walls");
+    std::string named;
+    for (const auto& b : walls) named += (named.empty() ? "" : ", ") + b;
+    w.lead("Walled squares.",
+           "The scene's pond has walls. So *both* is run again with the square's edges made walls (" + named + "), the draught "
+           "alone (no periodic images), to t = " + fmt(c.number("walls_t_end_s"), 3) + " s, against the forced walled reference "
+           "(model/README.md §2.5: cosine modes between reflecting walls, which the leapfrog's ghost cells put half a cell beyond "
+           "the edge points, or sine modes inside fixed rims one cell beyond them; the draught mirrored across a reflecting wall, "
+           "as the forced step's ghost cells take it). The cell d = L/n is the periodic square's; a reflecting grid has n points, "
+           "a fixed one the n − 1 inside its rims.");
+    MarkdownTable wt({"stencil", "walls", "order (95 % interval)", "verdict"});
+    std::vector<PlotSeries> walled;
+    for (const auto& name : c.strings("stencils"))
+      for (const auto& b : walls) {
+        const Record& q = c.at(name).at("walls_" + b);
+        wt.row({code(name), b, order_interval(q.at("fit")), verdict_of(q.at("fit"))});
+        walled.push_back(table_series(name + ", " + b, q, "points", "h", "l2_error_m"));
+      }
+    w.table(wt);
+    for (const auto& name : c.strings("stencils"))
+      for (const auto& b : walls) w.verdict(code(name) + " " + b, c.at(name).at("walls_" + b).at("fit").at("verdict"));
+    w.end_list();
+    w.figure(line_figure("forced_convergence_walls", "Forced leapfrog in the walled square: error against the forced walled reference, d and Δt refined together",
+                         ax, walled, "h_m", "error_m"));
+  }
   return w.finish();
 }
 

@@ -180,7 +180,7 @@ void walls_subsection(SectionWriter& w, const Record& c) {
              " times the square's side. A reflecting wall is made by ghost cells "
              "that mirror the edge cells, which puts it half a cell beyond the edge points: the grid's points stand at the "
              "cell centres, (i + ½)L/n, so that the walls are at 0 and L on every grid. A fixed rim is made by ghost cells "
-             "that hold 0, one cell beyond the edge points: the points stand at (i + 1)L/(n + 1). The exact solution is a "
+             "that hold 0, one cell beyond the edge points: the n − 1 points stand at (i + 1)L/n. The exact solution is a "
              "cosine series (reflecting) or a sine series (fixed) of the initial surface, each mode advanced exactly in time "
              "as above (FFTW's REDFT10/REDFT01 and RODFT00 transforms). A wall in another place, or a corner treated "
              "otherwise, would leave an error that falls at first order or not at all; the verdicts below are judged as "

@@ -38,6 +38,17 @@ void MovingGaussianDraught::sample(double t_s, int nx, int ny, double cell_m, st
     for (int i = 0; i < nx; ++i) b[static_cast<std::size_t>(j) * nx + i] = a * gx[i] * gy[j];
 }
 
+void MovingGaussianDraught::sample_walled(double t_s, int nx, int ny, double cell_m, double first_x_m, double first_y_m,
+                                          std::vector<double>& b) const {
+  const double xc = x0_m + vx_m_s * t_s, yc = y0_m + vy_m_s * t_s, a = depth_m * envelope(t_s);
+  std::vector<double> gx(static_cast<std::size_t>(nx)), gy(static_cast<std::size_t>(ny));
+  for (int i = 0; i < nx; ++i) gx[i] = std::exp(-std::pow((first_x_m + i * cell_m - xc) / width_m, 2));
+  for (int j = 0; j < ny; ++j) gy[j] = std::exp(-std::pow((first_y_m + j * cell_m - yc) / width_m, 2));
+  b.resize(static_cast<std::size_t>(nx) * ny);
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) b[static_cast<std::size_t>(j) * nx + i] = a * gx[i] * gy[j];
+}
+
 DraughtField MovingGaussianDraught::on_grid(int nx, int ny, double cell_m) const {
   const MovingGaussianDraught copy = *this;
   return [copy, nx, ny, cell_m](double t_s, std::vector<double>& b) { copy.sample(t_s, nx, ny, cell_m, b); };

@@ -33,6 +33,8 @@ struct MovingGaussianDraught {
   double envelope(double t_s) const;
   // b on the cell points x_i = i d, y_j = j d of an nx × ny grid that tiles the plane periodically.
   void sample(double t_s, int nx, int ny, double cell_m, std::vector<double>& b) const;
+  // b on the points x_i = first_x + i d, y_j = first_y + j d of a walled pond: the Gaussian alone, no images.
+  void sample_walled(double t_s, int nx, int ny, double cell_m, double first_x_m, double first_y_m, std::vector<double>& b) const;
   DraughtField on_grid(int nx, int ny, double cell_m) const;
 };
 

@@ -1,5 +1,6 @@
 #include "tools/scene/scene_study_file.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "tools/io/input_error.hpp"
@@ -123,6 +124,17 @@ SceneStudyFile load_scene_study_file(const std::string& path, const std::vector<
     c.time_steps.assign(steps.begin(), steps.end());
     c.both_grids = int_list(*t, "both_grids", c.both_grids, 8, 4096);
     c.both_sigma = positive(*t, "both_sigma", c.both_sigma);
+    if (auto walls = t->maybe_strings("walls")) {  // the walled squares' "both" sequences (forced_convergence.hpp)
+      c.walls.clear();
+      for (const auto& w : *walls) {
+        Boundary b{};
+        if (!parse_boundary(w, b) || b == Boundary::periodic) t->fail("walls", "'" + w + "' is not a walled boundary (reflecting, fixed)");
+        if (std::find(c.walls.begin(), c.walls.end(), b) != c.walls.end()) t->fail("walls", "'" + w + "' is named twice");
+        c.walls.push_back(b);
+      }
+    }
+    c.walls_t_end_s = positive(*t, "walls_t_end_s", c.walls_t_end_s);
+    if (c.walls_t_end_s > 1e3) t->fail("walls_t_end_s", "must be at most 1000 s");
     c.quadrature.intervals = static_cast<int>(count_in(*t, "quadrature_intervals", c.quadrature.intervals, 1, 100000));
     c.quadrature.nodes = static_cast<int>(count_in(*t, "quadrature_nodes", c.quadrature.nodes, 1, 64));
     c.fit_points = static_cast<int>(count_in(*t, "fit_points", c.fit_points, 0, 100));

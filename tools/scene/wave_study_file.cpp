@@ -181,7 +181,7 @@ WaveStudyFile load_wave_study_file(const std::string& path, const std::vector<st
     double walls_updates = 0;
     for (int n : v.both_grids)
       walls_updates += static_cast<double>(v.walls.size()) * n * n *
-                       std::ceil(v.walls_t_end_s * o.problem.wave_speed_m_s * (n + 1) / (v.both_sigma * o.problem.length_m));
+                       std::ceil(v.walls_t_end_s * o.problem.wave_speed_m_s * n / (v.both_sigma * o.problem.length_m));
     refuse_above("walls_t_end_s", walls_updates, "walled sequences (N² × walls_t_end c N / (σ L) on each grid, each wall kind)");
     v.fit_points = static_cast<int>(count_in(*c, "fit_points", v.fit_points, 0, 100));
     if (v.fit_points == 1) c->fail("fit_points", "a fit needs at least 2 points (0: all)");

@@ -116,12 +116,18 @@ Record scene_convergence_findings(const SceneStudiesOptions& o, const ProgressFa
   out.set_table("both_grids", value_list(std::vector<double>(f.both_grids.begin(), f.both_grids.end())));
   out.set("time_grid", f.time_grid);
   out.set("both_sigma", f.both_sigma);
+  std::vector<std::string> walls;
+  for (const Boundary b : f.walls) walls.push_back(to_string(b));
+  out.set_strings("walls", walls);
+  out.set("walls_t_end_s", f.walls_t_end_s);
   out.set_strings("stencils", o.convergence.stencils);
   auto ticker = start_progress(progress, "scene: forced convergence", o.convergence.stencils.size());
   for (const auto& name : o.convergence.stencils) {
     const ForcedConvergenceStudy s = run_forced_convergence(named_stencil(name), f);
     Record& r = out.child(name);
-    for (const ConvergenceSequence* q : {&s.space, &s.time, &s.both}) {
+    std::vector<const ConvergenceSequence*> sequences{&s.space, &s.time, &s.both};
+    for (const ConvergenceSequence& q : s.walls) sequences.push_back(&q);
+    for (const ConvergenceSequence* q : sequences) {
       Record& k = r.child(q->kind);
       Table t = table({"n", "steps", "h", "l2_error_m", "max_error_m"});
       t.units = {"1", "1", q->kind == "time" ? "s" : "m", "m", "m"};  // h: Δt (time) or d (space, both)

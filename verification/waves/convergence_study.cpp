@@ -13,32 +13,28 @@ namespace {
 // Index of the GCI point (3/4, 1/2) L on an n × n grid (n divisible by 4).
 double point_value(const std::vector<double>& z, int n) { return z[static_cast<std::size_t>(n / 2) * n + 3 * n / 4]; }
 
-// The walled square's cell: L/n between reflecting walls (points at the cell centres), L/(n + 1)
-// inside fixed rims (the rims one cell beyond the edge points).
-double walled_cell(const WaveProblem& p, Boundary b, int n) { return p.length_m / (b == Boundary::reflecting ? n : n + 1); }
-
-long walled_steps(const ConvergenceStudyOptions& o, Boundary b, int n) {
-  return std::max(1L, std::lround(o.walls_t_end_s * o.problem.wave_speed_m_s / (o.both_sigma * walled_cell(o.problem, b, n))));
+long walled_steps(const ConvergenceStudyOptions& o, int n) {
+  return std::max(1L, std::lround(o.walls_t_end_s * o.problem.wave_speed_m_s * n / (o.both_sigma * o.problem.length_m)));
 }
 
 // One point of a walled sequence: the leapfrog with the boundary's ghost cells against the walled
 // continuum reference, on the points where those walls stand at 0 and L.
 ConvergencePoint walled_point(const Stencil& stencil, const ConvergenceStudyOptions& o, Boundary b, int n) {
   const WaveProblem& p = o.problem;
-  const double d = walled_cell(p, b, n);
-  // Point i stands at (i + ½)d or (i + 1)d; sample_disturbance puts it at i·d: shift the centre.
+  const WalledSquareGrid g = walled_square_grid(p.length_m, b, n);
+  const double d = g.cell_m;
+  // Point i stands at first + i·d; sample_disturbance puts it at i·d: shift the centre.
   Disturbance shifted = p.initial;
-  const double offset = b == Boundary::reflecting ? 0.5 * d : d;
-  shifted.x_m -= offset;
-  shifted.y_m -= offset;
+  shifted.x_m -= g.first_m;
+  shifted.y_m -= g.first_m;
   std::vector<double> z0, z, zr;
-  sample_disturbance(shifted, n, n, d, z0);
+  sample_disturbance(shifted, g.points, g.points, d, z0);
   HeightFieldOptions h;
-  h.nx = h.ny = n;
+  h.nx = h.ny = g.points;
   h.cell_m = d;
   h.wave_speed_m_s = p.wave_speed_m_s;
   h.damping_per_s = p.damping_per_s;
-  const long steps = walled_steps(o, b, n);
+  const long steps = walled_steps(o, n);
   h.dt_s = o.walls_t_end_s / steps;
   h.stencil = stencil;
   h.boundary = b;
@@ -64,6 +60,11 @@ ConvergencePoint walled_point(const Stencil& stencil, const ConvergenceStudyOpti
 }
 
 }  // namespace
+
+WalledSquareGrid walled_square_grid(double length_m, Boundary b, int n) {
+  const double d = length_m / n;
+  return b == Boundary::reflecting ? WalledSquareGrid{n, d, 0.5 * d} : WalledSquareGrid{n - 1, d, d};
+}
 
 void fit_sequence(ConvergenceSequence& s, int fit_points, const OrderJudgement& judgement) {
   std::vector<double> h, e, em;
@@ -99,8 +100,7 @@ std::size_t convergence_study_work(const ConvergenceStudyOptions& o) {
     const double steps = o.problem.t_end_s * o.problem.wave_speed_m_s / (o.both_sigma * o.problem.length_m / n);
     w += static_cast<std::size_t>(n) * n * static_cast<std::size_t>(std::ceil(steps));
   }
-  for (const Boundary b : o.walls)
-    for (int n : o.both_grids) w += static_cast<std::size_t>(n) * n * static_cast<std::size_t>(walled_steps(o, b, n));
+  for (int n : o.both_grids) w += o.walls.size() * static_cast<std::size_t>(n) * n * static_cast<std::size_t>(walled_steps(o, n));
   return w;
 }
 
@@ -177,7 +177,7 @@ ConvergenceStudy run_convergence_study(const Stencil& stencil, const Convergence
     s.kind = std::string("walls_") + to_string(b);
     for (int n : o.both_grids) {
       s.points.push_back(walled_point(stencil, o, b, n));
-      tick(static_cast<std::size_t>(n) * n * static_cast<std::size_t>(walled_steps(o, b, n)));
+      tick(static_cast<std::size_t>(n) * n * static_cast<std::size_t>(walled_steps(o, n)));
     }
     fit_sequence(s, o.fit_points, o.judgement);
   }

@@ -43,6 +43,17 @@ struct ConvergenceSequence {
   double point_exact_m = 0; // "both" only: the continuum value at the finest grid
 };
 
+// The walled square of side L on the grid of n cells of d = L/n: between reflecting walls, n points
+// at the cell centres (i + ½)d (the ghost cells mirror the edge points, a wall half a cell out); inside
+// fixed rims, the n − 1 points (i + 1)d (the ghost cells hold 0 one cell out: the rims at 0 and L).
+// So d is the periodic square's d, and a fixed grid of n = 2^k cells has a sine transform of 2^(k+1).
+struct WalledSquareGrid {
+  int points = 0;      // along each axis
+  double cell_m = 0;   // d
+  double first_m = 0;  // the first point's coordinate: d/2 or d
+};
+WalledSquareGrid walled_square_grid(double length_m, Boundary b, int n);
+
 struct ConvergenceStudyOptions {
   WaveProblem problem;
   std::vector<int> space_grids{32, 64, 128, 256, 512};
@@ -51,9 +62,9 @@ struct ConvergenceStudyOptions {
   std::vector<int> both_grids{32, 64, 128, 256};
   double both_sigma = 0.5;
   // The walled sequences: the square's edges are walls (reflecting: zero slope; fixed: z = 0) at
-  // x, y = 0 and L, the grid's points at the cell centres (i + ½)·L/n (reflecting) or at
-  // (i + 1)·L/(n + 1) (fixed), where the ghost cells put those walls; grids both_grids, σ both_sigma,
-  // to walls_t_end_s (long enough for the waves to reach the walls and come back). Empty: none.
+  // x, y = 0 and L, on the grid walled_square_grid gives (where the ghost cells put those walls);
+  // grids both_grids, σ both_sigma, to walls_t_end_s (long enough for the waves to reach the walls
+  // and come back). Empty: none.
   std::vector<Boundary> walls{Boundary::reflecting, Boundary::fixed};
   double walls_t_end_s = 1.25;
   int fit_points = 0;  // fit the finest this many points; 0: every point (no range to choose)

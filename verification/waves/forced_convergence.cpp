@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "solvers/realtime/clocks.hpp"
+#include "solvers/spectral/forced_walled_wave.hpp"
 
 namespace stoneskip {
 
@@ -26,6 +27,9 @@ bool ForcedConvergenceOptions::is_valid(std::string* why) const {
     return fail("forced convergence: t_end_s and length_m must be > 0");
   if (quadrature.intervals < 1 || quadrature.nodes < 1) return fail("forced convergence: quadrature needs intervals, nodes >= 1");
   if (fit_points < 2) return fail("forced convergence: fit_points must be >= 2");
+  if (!walls.empty() && !(walls_t_end_s > 0)) return fail("forced convergence: walls_t_end_s must be > 0");
+  for (const Boundary b : walls)
+    if (b == Boundary::periodic) return fail("forced convergence: walls are reflecting or fixed");
   return true;
 }
 
@@ -77,6 +81,55 @@ ConvergencePoint point_of(int n, long steps, double h, double sigma, const std::
   return pt;
 }
 
+// The walled runs' quadrature: the study's sub-interval length over their own span.
+DuhamelQuadrature walled_quadrature(const ForcedConvergenceOptions& o) {
+  DuhamelQuadrature q = o.quadrature;
+  q.intervals = std::max(1, static_cast<int>(std::ceil(q.intervals * o.walls_t_end_s / o.problem.wave.t_end_s - 1e-9)));
+  return q;
+}
+
+// One point of a walled sequence: the forced leapfrog with the boundary's ghost cells against the
+// forced walled reference, the square's walls at 0 and L (convergence_study.cpp's walled points).
+ConvergencePoint forced_walled_point(const ForcedConvergenceOptions& o, const Stencil& stencil, Boundary b, int n, long& transforms) {
+  const WaveProblem& wp = o.problem.wave;
+  const WalledSquareGrid g = walled_square_grid(wp.length_m, b, n);
+  const double d = g.cell_m, offset = g.first_m;  // point 0 stands at x = offset
+  const int m = g.points;
+  const long steps = std::max(1L, std::lround(o.walls_t_end_s * wp.wave_speed_m_s / (o.both_sigma * d)));
+  HeightFieldOptions h = leapfrog_options(wp, stencil, m, steps);
+  h.cell_m = d;
+  h.dt_s = o.walls_t_end_s / steps;
+  h.boundary = b;
+  Disturbance initial = wp.initial;
+  initial.x_m -= offset;
+  initial.y_m -= offset;
+  std::vector<double> z0, z;
+  sample_disturbance(initial, m, m, d, z0);
+  HeightField f(h);
+  f.set_state(z0);
+  const MovingGaussianDraught draught = o.problem.draught;
+  DraughtPatch patch;
+  CpuTimer timer;
+  for (long k = 0; k < steps; ++k) {
+    patch.reset(0, 0, m, m);
+    draught.sample_walled(k * h.dt_s, m, m, d, offset, offset, patch.b_m);  // b at the start of the step
+    f.step(patch);
+  }
+  const double cpu_s = timer.seconds();
+  f.heights(z);
+  ForcedWalledWave ref(walled_wave_options(h, SpectralSymbol::continuum),
+                       [draught, m, d, offset](double t, std::vector<double>& head) { draught.sample_walled(t, m, m, d, offset, offset, head); },
+                       walled_quadrature(o));
+  ref.set_initial(z0);
+  std::vector<double> zr;
+  ref.evaluate(f.time_s(), zr);
+  transforms += ref.draught_transforms();
+  ConvergencePoint pt = point_of(m, steps, d, wp.wave_speed_m_s * h.dt_s / d, z, zr, cpu_s);
+  pt.n = n;                                               // the grid's cells, as in the free study's walled points
+  pt.point_m = std::numeric_limits<double>::quiet_NaN();  // no GCI on these sequences
+  return pt;
+}
+
 }  // namespace
 
 ForcedConvergenceStudy run_forced_convergence(const Stencil& stencil, const ForcedConvergenceOptions& o) {
@@ -120,6 +173,12 @@ ForcedConvergenceStudy run_forced_convergence(const Stencil& stencil, const Forc
   }
   fit_sequence(study.both, o.fit_points, o.judgement);
   attach_gci(study.both, o.judgement);
+  for (const Boundary b : o.walls) {
+    ConvergenceSequence& s = study.walls.emplace_back();
+    s.kind = std::string("walls_") + to_string(b);
+    for (int n : o.both_grids) s.points.push_back(forced_walled_point(o, stencil, b, n, transforms));
+    fit_sequence(s, o.fit_points, o.judgement);
+  }
   // The reference's own error: halve the sub-intervals' length on the finest grid used.
   int finest = o.time_grid;
   for (int n : o.space_grids) finest = std::max(finest, n);
@@ -132,6 +191,8 @@ ForcedConvergenceStudy run_forced_convergence(const Stencil& stencil, const Forc
   study.smallest_error_m = std::numeric_limits<double>::infinity();
   for (const auto* s : {&study.space, &study.time, &study.both})
     for (const auto& pt : s->points) study.smallest_error_m = std::min(study.smallest_error_m, pt.max_m);
+  for (const auto& s : study.walls)
+    for (const auto& pt : s.points) study.smallest_error_m = std::min(study.smallest_error_m, pt.max_m);
   return study;
 }
 

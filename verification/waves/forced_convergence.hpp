@@ -37,6 +37,11 @@ struct ForcedConvergenceOptions {
   std::vector<long> time_steps{64, 128, 256, 512};  // σ = 0.5 … 0.06 at n = 64
   std::vector<int> both_grids{32, 64, 128, 256};
   double both_sigma = 0.5;
+  // "both" again in the square walled in (the walls at 0 and L as in convergence_study.hpp's walled
+  // sequences; the draught sampled without periodic images), to walls_t_end_s, against the forced
+  // walled reference (solvers/spectral/forced_walled_wave.hpp). Empty: none.
+  std::vector<Boundary> walls{Boundary::reflecting, Boundary::fixed};
+  double walls_t_end_s = 1.25;
   DuhamelQuadrature quadrature{32, 8};
   int fit_points = 3;
   OrderJudgement judgement;  // expected order 2 ± 0.1
@@ -46,6 +51,7 @@ struct ForcedConvergenceOptions {
 struct ForcedConvergenceStudy {
   std::string stencil;
   ConvergenceSequence space, time, both;
+  std::vector<ConvergenceSequence> walls;  // one per options.walls, kind "walls_<boundary>"
   double reference_quadrature_m = 0;  // max |reference − reference with half the sub-intervals' length|, finest grid
   double smallest_error_m = 0;        // the smallest error the study measures, for comparison with it
   long reference_transforms = 0;      // FFTs of b taken by the references
