@@ -99,7 +99,7 @@ BOOST_AUTO_TEST_CASE(a_pond_narrower_than_the_pressing_stays_inside_its_storage_
   // (|y| ≤ 3 cm), so the water must receive all of the stone's impulse to round-off: on a walled
   // pond what the smoothing spills past a wall is reflected back onto the grid
   // (fold_onto_walled_grid), on a periodic one wrapped; and the energy identity holds to round-off.
-  for (Boundary b : {Boundary::reflecting, Boundary::periodic})
+  for (Boundary b : {Boundary::reflecting, Boundary::fixed, Boundary::periodic})
     for (int ny : {4, 7, 13}) {
       SceneOptions o = seed_throw_scene(64, ny, -0.1, -0.01 * (ny - 1), 0.3, Coupling::two_way, 0.5);  // cells over |y| ≤ ny cm
       o.environment.air_density_kg_m3 = 0;

@@ -11,7 +11,7 @@ namespace stoneskip {
 WaveEnergy::WaveEnergy(const HeightFieldOptions& o, double rho_g)
     : nx_(o.nx), ny_(o.ny), mx_(o.boundary == Boundary::periodic ? o.nx / 2 + 1 : o.nx), cell_m_(o.cell_m),
       c_(o.wave_speed_m_s), mu_(o.damping_per_s), dt_s_(o.dt_s), rho_g_(rho_g),
-      periodic_(o.boundary == Boundary::periodic), available_(o.boundary != Boundary::fixed && o.wave_speed_m_s > 0) {
+      periodic_(o.boundary == Boundary::periodic), fixed_(o.boundary == Boundary::fixed), available_(o.wave_speed_m_s > 0) {
   if (!available_) return;
   const std::size_t modes = static_cast<std::size_t>(mx_) * ny_;
   inverse_lambda_.assign(modes, 0);
@@ -29,6 +29,13 @@ WaveEnergy::WaveEnergy(const HeightFieldOptions& o, double rho_g)
         b = 2 * pi * std::min(my, ny_ - my) / ny_;
         const bool self = mx == 0 || (nx_ % 2 == 0 && mx == nx_ / 2);
         w = (self ? 1.0 : 2.0) / (static_cast<double>(nx_) * ny_);
+      } else if (fixed_) {
+        // DST-I (FFTW RODFT00, X_m = 2 Σ x_i sin(π (m + 1)(i + 1)/(N + 1))) diagonalises a symmetric
+        // stencil with zero ghosts (solvers/spectral/walled_wave.hpp); Σ x² = Π over axes of
+        // (1/(2(N + 1))) Σ X_m². No mode is neutral: −L is positive definite there.
+        a = pi * (mx + 1) / (nx_ + 1);
+        b = pi * (my + 1) / (ny_ + 1);
+        w = 1.0 / (2.0 * (nx_ + 1)) / (2.0 * (ny_ + 1));
       } else {
         // DCT-II (FFTW REDFT10, X_m = 2 Σ x_i cos(π m (i + ½)/N)) diagonalises a symmetric
         // stencil with mirror ghosts; Σ x² = Π over axes of (1/(2N)) (X_0²/2 + Σ_{m≥1} X_m²).
@@ -38,7 +45,7 @@ WaveEnergy::WaveEnergy(const HeightFieldOptions& o, double rho_g)
       }
       weight_[k] = w;
       const double lambda = -o.stencil.symbol(a, b) / (cell_m_ * cell_m_);  // eigenvalue of −L
-      inverse_lambda_[k] = (mx == 0 && my == 0) || !(lambda > 0) ? 0.0 : 1.0 / lambda;
+      inverse_lambda_[k] = (!fixed_ && mx == 0 && my == 0) || !(lambda > 0) ? 0.0 : 1.0 / lambda;
       grid_scale_[k] = std::hypot(a, b) > pi / 2;
     }
   buffer_.assign(static_cast<std::size_t>(nx_) * ny_, 0);
@@ -48,7 +55,8 @@ WaveEnergy::WaveEnergy(const HeightFieldOptions& o, double rho_g)
     plan_ = fftw_plan_dft_r2c_2d(ny_, nx_, buffer_.data(), out, FFTW_ESTIMATE);
   } else {
     work_.assign(static_cast<std::size_t>(nx_) * ny_, 0);
-    plan_ = fftw_plan_r2r_2d(ny_, nx_, buffer_.data(), work_.data(), FFTW_REDFT10, FFTW_REDFT10, FFTW_ESTIMATE);
+    const fftw_r2r_kind kind = fixed_ ? FFTW_RODFT00 : FFTW_REDFT10;
+    plan_ = fftw_plan_r2r_2d(ny_, nx_, buffer_.data(), work_.data(), kind, kind, FFTW_ESTIMATE);
   }
 }
 

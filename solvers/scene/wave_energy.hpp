@@ -11,8 +11,9 @@
 // the discrete form of the linear shallow-water energy ½ρH|u|² + ½ρ g z² (c² = gH, z_t = −H∇·u).
 // It holds to round-off for any h, so W − D − ΔE measures only round-off and what the pressure
 // work is not (a leak in the coupling). K is diagonal in the cosine basis of the reflecting pond
-// (mirror ghosts: DCT-II) and in the Fourier basis of the periodic one (FFTW); a fixed rim has no
-// such basis and no budget here (available() is false).
+// (mirror ghosts: DCT-II), in the sine basis of the fixed one (zero ghosts: DST-I, where −L has no
+// zero mode; until 7 December this said "no such basis" and a fixed pond had no budget) and in the
+// Fourier basis of the periodic one (FFTW). available() is false only for c = 0.
 // The energy per mode also gives the share of the waves at the grid scale: wavenumbers |k| d above
 // π/2, half the grid's Nyquist (a checkerboard lives at |k| d ≈ π√2).
 #include <vector>
@@ -44,7 +45,7 @@ class WaveEnergy {
   void transform(const std::vector<double>& in, std::vector<double>& re, std::vector<double>& im);
   int nx_, ny_, mx_;   // mx_: stored modes along x
   double cell_m_, c_, mu_, dt_s_, rho_g_;
-  bool periodic_, available_;
+  bool periodic_, fixed_, available_;
   std::vector<double> inverse_lambda_;  // 1/λ_m (m²), 0 for the mean mode
   std::vector<double> weight_;          // Parseval weight of each stored mode
   std::vector<char> grid_scale_;        // |k| d > π/2
