@@ -218,7 +218,7 @@ BOOST_AUTO_TEST_CASE(a_scene_initial_surface_too_wide_or_too_large_for_its_perio
 }
 
 BOOST_AUTO_TEST_CASE(estimates_count_what_the_run_will_hold) {
-  // Oracle: arithmetic. A periodic wave case holds 10.5 arrays of nx·ny doubles: 16384² cells are
+  // Oracle: arithmetic. A periodic wave case holds 10.5 arrays of nx·ny doubles (a walled one 11.5): 16384² cells are
   // 22.5 GB, above the 8 GB default; its work is cells × ⌈t_end/Δt⌉. A throw of t_max / contact_dt
   // = 1e8 steps recording every one (output_dt_s = 0) holds 1e8 samples.
   const std::string wave = R"([water]
@@ -239,6 +239,10 @@ y_m = 0.5
   const ResourceEstimate we = estimate_wave(w);
   BOOST_TEST(we.memory_bytes == 10.5 * 8 * 16384.0 * 16384.0);
   BOOST_TEST(we.work.at(0).count == 2 * 16384.0 * 16384.0);
+  // Walled, the reference is the cosine (sine) one: 11.5 arrays (walled_wave.hpp's, with the run's).
+  WaveCase walled = w;
+  walled.water.boundary = Boundary::reflecting;
+  BOOST_TEST(estimate_wave(walled).memory_bytes == 11.5 * 8 * 16384.0 * 16384.0);
   BOOST_CHECK_THROW(enforce_limits(we, ResourceLimits{}, "w.toml"), InputError);
   BOOST_CHECK_NO_THROW(enforce_limits(we, ResourceLimits{23e9, false}, "w.toml"));
 
