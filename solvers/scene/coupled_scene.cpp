@@ -237,6 +237,12 @@ class SceneLoop {
       out_.energy.end_J = e.total_J;
       out_.energy.grid_scale_fraction = e.grid_scale_fraction();
     }
+    // Pressure: what the stone gave the water in its last pieces, held in the windows of water steps
+    // the scene ended before taking (their hats reach past its end).
+    if (two_way_ && pressure_) {
+      const double cell = o_.water->field.cell_m;
+      out_.water_impulse_pending_N_s = dt_s_ * rho_g_ * cell * cell * (window_->sum() + next_window_->sum());
+    }
     if (field_) {
       out_.volume_end_m3 = field_->volume_m3();
       out_.tiles = field_->tile_summary();

@@ -210,6 +210,10 @@ struct SceneSummary {
   // unfinished water step; displacement: ρ_w g times the draught's impulse, a different quantity).
   double stone_vertical_impulse_N_s = 0;
   double water_vertical_impulse_N_s = 0;
+  // Pressure: the impulse the stone gave in its last pieces that the water steps taken had not yet
+  // received when the scene ended (their hats reach past the end): the contacts' water impulses
+  // sum to water_vertical_impulse_N_s plus this.
+  double water_impulse_pending_N_s = 0;
   // Pressure: the stone steps whose head at the start could not carry the step's impulse within a
   // factor 0.1–10 (pushes that nearly cancel, a force changing sign): that impulse went on |h|.
   long heads_on_footprint = 0;

@@ -44,6 +44,13 @@ double DraughtWindow::kept_sum(const DraughtPatch& p) const {
   return sum;
 }
 
+double DraughtWindow::sum() const {
+  double s = 0;
+  for (int j = j_lo_; j <= j_hi_; ++j)
+    for (int i = i_lo_; i <= i_hi_; ++i) s += sum_[static_cast<std::size_t>(j) * nx_ + i];
+  return s;
+}
+
 void DraughtWindow::take(DraughtPatch& out) {
   if (empty()) {
     out.clear();

@@ -28,6 +28,8 @@ class DraughtWindow {
   // grid elsewhere): what the field receives of it, by the same rule.
   double kept_sum(const DraughtPatch& sample) const;
   bool empty() const { return i_lo_ > i_hi_; }
+  // Σ b̄ over the window as it stands (what the next take() would hand over).
+  double sum() const;
   // The window's b̄ over the touched box, into `out` (empty when nothing was added); the window
   // is cleared for the next step.
   void take(DraughtPatch& out);

@@ -214,7 +214,12 @@ nlohmann::json json_of(const StoneCase& c, const SceneOptions& o, const SceneSum
     j["forcing"] = to_string(o.forcing);
     j["stone_vertical_impulse_N_s"] = s.stone_vertical_impulse_N_s;
     j["water_vertical_impulse_N_s"] = s.water_vertical_impulse_N_s;
-    if (o.forcing == Forcing::pressure) j["heads_on_footprint"] = s.heads_on_footprint;
+    if (o.forcing == Forcing::pressure) {
+      j["heads_on_footprint"] = s.heads_on_footprint;
+      // Held for the water steps the scene ended before taking: the contacts' water impulses sum
+      // to water_vertical_impulse_N_s plus this.
+      j["water_impulse_pending_N_s"] = s.water_impulse_pending_N_s;
+    }
     nlohmann::json contacts = nlohmann::json::array();
     for (const ContactImpulse& ci : s.contact_impulses)
       contacts.push_back({{"start_s", ci.start_s}, {"end_s", ci.end_s}, {"stone_N_s", ci.stone_N_s}, {"water_N_s", ci.water_N_s}});
