@@ -180,6 +180,12 @@ SectionOutput coupling_section(const Record& c) {
                 fmt(k.number("energy_budget_residual"), 2), pct(k.number("grid_scale_energy_fraction"))});
       }
       w.table(ft);
+      // A scene that ends inside a pressing leaves its last pieces' impulse in the windows of water
+      // steps past the end (stored since 7 December).
+      if (const Record& pr = fr.at("pressure"); pr.has_number("water_impulse_pending_N_s") && pr.number("water_impulse_pending_N_s") != 0)
+        w.text("Under pressure forcing the scene ended inside a pressing: " + fmt(pr.number("water_impulse_pending_N_s"), 3) +
+               " N s of the stone's impulse was held for water steps past its end, not in the water's column above (the "
+               "pressings' water impulses below sum to the two).");
       const Table& ci = fr.at("pressure").table("contact_impulses");
       MarkdownTable ct({"pressing", "start … end (s)", "stone (N s)", "water (N s)", "water / stone − 1"});
       for (std::size_t k = 0; k < ci.rows() && k < 20; ++k) {

@@ -32,6 +32,7 @@ Table contacts_table(const ThrowResult& r) {
 void store_forcing(Record& k, const SceneSummary& s) {
   k.set("stone_vertical_impulse_N_s", s.stone_vertical_impulse_N_s);
   k.set("water_vertical_impulse_N_s", s.water_vertical_impulse_N_s);
+  k.set("water_impulse_pending_N_s", s.water_impulse_pending_N_s);  // pressure: held for steps past the end
   k.set("impulse_ratio", s.stone_vertical_impulse_N_s != 0 ? s.water_vertical_impulse_N_s / s.stone_vertical_impulse_N_s : kNaN);
   k.set("energy_measured", s.energy.measured);
   k.set("wave_energy_start_J", s.energy.start_J);
