@@ -141,7 +141,7 @@ void run_wave(const WaveArgs& a) {
       std::snprintf(b, sizeof b,
                     "%.3g %% of the initial surface's RMS is in the upper half of the %s pond's modes (waves under "
                     "four cells): it meets a wall with a %s, or the grid does not resolve it, and the error includes "
-                    "those waves'",
+                    "what the scheme does to those waves",
                     100 * upper, to_string(w.boundary), w.boundary == Boundary::reflecting ? "kink" : "step");
       seam = b;
     }
