@@ -42,6 +42,14 @@ std::string findings_summary(const Record& secs) {
       const Record& s = conv.at(name);
       m << "; space order " << order_interval(s.at("space").at("fit")) << " (" << s.at("space").at("fit").at("verdict").text("verdict")
         << "), time order " << order_interval(s.at("time").at("fit")) << " (" << s.at("time").at("fit").at("verdict").text("verdict") << ")";
+      // The walled squares' space–time orders (stored since 7 December).
+      if (conv.has("walls") && !conv.strings("walls").empty()) {
+        m << "; in the walled square";
+        for (const auto& b : conv.strings("walls")) {
+          const Record& f = s.at("walls_" + b).at("fit");
+          m << ", " << b << " " << order_interval(f) << " (" << f.at("verdict").text("verdict") << ")";
+        }
+      }
     }
     if (iso.has_child(name))
       m << "; phase-speed spread over direction at kd = " << pi_fraction(iso.number("table_kd")) << ": "
