@@ -31,6 +31,18 @@ struct SpectralWave::Plans {
   }
 };
 
+SpectralWaveOptions spectral_wave_options(const HeightFieldOptions& field, SpectralSymbol symbol) {
+  SpectralWaveOptions o;
+  o.nx = field.nx;
+  o.ny = field.ny;
+  o.cell_m = field.cell_m;
+  o.wave_speed_m_s = field.wave_speed_m_s;
+  o.damping_per_s = field.damping_per_s;
+  o.symbol = symbol;
+  o.stencil = field.stencil;
+  return o;
+}
+
 SpectralWave::SpectralWave(const SpectralWaveOptions& options)
     : options_(options), nxc_(options.nx / 2 + 1), plans_(std::make_unique<Plans>(options.nx, options.ny)) {
   const int nx = options.nx, ny = options.ny;

@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "model/water/height_field.hpp"
 #include "model/water/stencil.hpp"
 
 namespace stoneskip {
@@ -23,6 +24,10 @@ struct SpectralWaveOptions {
   SpectralSymbol symbol = SpectralSymbol::continuum;
   Stencil stencil;  // used when symbol == stencil
 };
+
+// The reference's options for a height field's grid, wave speed, damping and stencil (its
+// boundary is the caller's to check: this reference is the periodic one).
+SpectralWaveOptions spectral_wave_options(const HeightFieldOptions& field, SpectralSymbol symbol);
 
 class SpectralWave {
  public:

@@ -147,15 +147,7 @@ void run_wave(const WaveArgs& a) {
     }
   }
   if (periodic && finite) {
-    SpectralWaveOptions so;
-    so.nx = w.nx;
-    so.ny = w.ny;
-    so.cell_m = w.cell_m;
-    so.wave_speed_m_s = w.wave_speed_m_s;
-    so.damping_per_s = w.damping_per_s;
-    so.symbol = c.reference_semi_discrete ? SpectralSymbol::stencil : SpectralSymbol::continuum;
-    so.stencil = w.stencil;
-    SpectralWave ref(so);
+    SpectralWave ref(spectral_wave_options(w, c.reference_semi_discrete ? SpectralSymbol::stencil : SpectralSymbol::continuum));
     ref.set_initial(z0);
     std::vector<double> zr;
     ref.evaluate(field.time_s(), zr);

@@ -229,15 +229,7 @@ std::vector<double> spectral(const HeightFieldOptions& field, SpectralSymbol sym
     transforms += w.draught_transforms();
     return z;
   }
-  SpectralWaveOptions so;
-  so.nx = field.nx;
-  so.ny = field.ny;
-  so.cell_m = field.cell_m;
-  so.wave_speed_m_s = field.wave_speed_m_s;
-  so.damping_per_s = field.damping_per_s;
-  so.symbol = symbol;
-  so.stencil = field.stencil;
-  ForcedSpectralWave w(so, draught, q);
+  ForcedSpectralWave w(spectral_wave_options(field, symbol), draught, q);
   w.set_initial(initial);
   w.evaluate(t_s, z);
   transforms += w.draught_transforms();
