@@ -58,8 +58,16 @@ std::string findings(const Record& secs) {
       << ");";
   }
   m << "\n* The rings: " << verdict_markdown(secs.at("rings").at("verdict")) << ".\n";
-  if (secs.has_child("grid"))
-    m << "* The coupled scene as the grid is refined: " << verdict_markdown(secs.at("grid").at("verdict")) << ".\n";
+  if (secs.has_child("grid")) {
+    const Record& g = secs.at("grid");
+    m << "* The coupled scene as the grid is refined: " << verdict_markdown(g.at("verdict"));
+    if (g.has_child("fixed_width"))
+      for (const auto& key : g.at("fixed_width").child_names()) {
+        const Record& fw = g.at("fixed_width").at(key);
+        m << "; with the head " << fmt(100 * fw.number("head_width_m"), 3) << " cm wide: " << verdict_markdown(fw.at("verdict"));
+      }
+    m << ".\n";
+  }
   const Record& sp = secs.at("speed");
   for (const char* k : {"scene_target", "bandwidth_target", "per_cell_target", "sweep_target"})
     m << "* Speed: " << verdict_markdown(sp.at(k)) << ".\n";
@@ -368,31 +376,88 @@ SectionOutput shortcuts_section(const Record& s) {
 
 // ---- 6. grid ----------------------------------------------------------------------------------
 
+// A sequence's table (verification/scene/scene_grid_findings.cpp).
+MarkdownTable grid_table_markdown(const Record& seq) {
+  const Table t = seq.table("grids");
+  MarkdownTable m({"cell (cm)", "grid", "water step (ms)", "cells across the stone", "smoothing passes", "pressure work W (J)",
+                   "first contact (ms)", "its exit speed (m/s)", "contacts", "wall (s)"});
+  for (std::size_t i = 0; i < t.rows(); ++i) {
+    auto v = [&](const char* k) { return t.column(k)[i]; };
+    m.row({fmt(100 * v("cell_m"), 3), fmt(v("n")) + "²", fmt(1e3 * v("water_dt_s"), 3), fmt(v("cells_across_stone"), 3),
+           t.has_column("smoothing_passes") ? fmt(v("smoothing_passes")) : std::string("–"), fmt(v("pressure_work_J"), 4),
+           fmt(1e3 * v("first_duration_s"), 5), fmt(v("first_exit_m_s"), 4), fmt(v("contacts")), fmt(v("wall_s"), 2)});
+  }
+  // The finest grid again with the water step halved (stored since 7 December).
+  if (seq.has_table("half_step") && seq.table("half_step").rows() > 0) {
+    const Table h = seq.table("half_step");
+    auto v = [&](const char* k) { return h.column(k)[0]; };
+    m.row({fmt(100 * v("cell_m"), 3) + ", step ½", fmt(v("n")) + "²", fmt(1e3 * v("water_dt_s"), 3), fmt(v("cells_across_stone"), 3),
+           fmt(v("smoothing_passes")), fmt(v("pressure_work_J"), 4), fmt(1e3 * v("first_duration_s"), 5), fmt(v("first_exit_m_s"), 4),
+           fmt(v("contacts")), fmt(v("wall_s"), 2)});
+  }
+  return m;
+}
+
+std::string grid_left_out(const Record& seq, double max_width_cells) {
+  if (!(seq.number("left_out") > 0)) return "";
+  if (!seq.has_number("left_out_too_wide")) return fmt(seq.number("left_out")) + " finer grid(s) left out: more than 2048² cells.";
+  std::string s;
+  if (seq.number("left_out_too_large") > 0) s += fmt(seq.number("left_out_too_large")) + " finer grid(s) left out: more than 2048² cells. ";
+  if (seq.number("left_out_too_wide") > 0)
+    s += fmt(seq.number("left_out_too_wide")) + " finer grid(s) left out: the head would be more than " + fmt(max_width_cells) + " cells wide (its smoothing "
+         "passes grow as (width/cell)²).";
+  return s;
+}
+
+// What forces the water in section 6's own sequence, and how it is spread on the grid.
+std::string grid_head_words(const std::string& forcing, double own_width_m) {
+  if (forcing != "pressure")
+    return "The stone forces the water with its draught b, sampled at the grid points (model/README.md §2.4).";
+  const std::string head = "The head h the stone presses with is its wetted faces' pressure rastered on the cells (model/README.md §2.4), ";
+  if (own_width_m > 0)
+    return head + "smoothed to a width of " + fmt(100 * own_width_m, 3) +
+           " cm (the case's `head_width_m`: 2 (width/cell)² binomial passes, at least 3).";
+  return head + "smoothed over a fixed number of cells (3 binomial passes), so a finer grid resolves a narrower, stronger patch: where "
+                "the changes do not shrink, the scene's water response (and through it the stone's contacts) is a property of the "
+                "grid, not of the stone.";
+}
+
 SectionOutput grid_section(const Record& g) {
   SectionWriter w(g, "6. Does the coupled scene converge as the grid is refined?");
-  const Table t = g.table("grids");
+  const double own_width = g.has_number("head_width_m") ? g.number("head_width_m") : 0.0;
   w.text("Scene " + code(g.text("case")) + " (" + g.text("forcing") + " forcing) on its own cell of " + fmt(100 * g.number("base_cell_m"), 3) +
          " cm and on finer ones, the water step scaled with the cell (σ fixed), on a " + fmt(g.number("pond_m"), 3) + " m × " +
          fmt(g.number("pond_m"), 3) + " m pond around the first touch, until " +
          (g.has_number("end_s") ? fmt(g.number("end_s"), 3) + " s" : std::string("the scene's end (the stone never touched: nothing was run)")) +
          ". There is no exact solution of the coupled scene: what can be asked is whether its answers settle as the cells "
-         "shrink — whether every change is smaller than the one before. The stone is " + fmt(100 * g.number("stone_diameter_m"), 3) +
-         " cm across. The head h the stone presses with is its wetted faces' pressure rastered on the cells (model/README.md §2.4), "
-         "smoothed over a fixed number of cells, so a finer grid resolves a narrower, stronger patch: where the changes do not "
-         "shrink, the scene's water response (and through it the stone's contacts) is a property of the grid, not of the stone.");
-  MarkdownTable m({"cell (cm)", "grid", "water step (ms)", "cells across the stone", "pressure work W (J)", "first contact (ms)",
-                   "its exit speed (m/s)", "contacts", "wall (s)"});
-  for (std::size_t i = 0; i < t.rows(); ++i) {
-    auto v = [&](const char* k) { return t.column(k)[i]; };
-    m.row({fmt(100 * v("cell_m"), 3), fmt(v("n")) + "²", fmt(1e3 * v("water_dt_s"), 3), fmt(v("cells_across_stone"), 3),
-           fmt(v("pressure_work_J"), 3), fmt(1e3 * v("first_duration_s"), 3), fmt(v("first_exit_m_s"), 3), fmt(v("contacts")),
-           fmt(v("wall_s"), 2)});
-  }
-  w.table(m);
-  if (g.number("left_out") > 0)
-    w.text(fmt(g.number("left_out")) + " finer grid(s) left out: more than 2048² cells.");
+         "shrink — whether every change is smaller than the one before. A table's last row (\"step ½\") is its finest grid again "
+         "with the water step halved: the stone sees the surface held over each water step, so an event time carries a "
+         "first-order error of that step, which this sequence (σ fixed) does not separate from the cell's; a quantity whose "
+         "changes do not shrink but whose last change is no larger than what halving the step moves it is *not decided*. "
+         "The stone is " + fmt(100 * g.number("stone_diameter_m"), 3) +
+         " cm across. " + grid_head_words(g.text("forcing"), own_width));
+  w.table(grid_table_markdown(g));
+  const double max_cells = g.has_number("max_width_cells") ? g.number("max_width_cells") : 8.0;
+  const std::string lo = grid_left_out(g, max_cells);
+  if (!lo.empty()) w.text(lo);
   w.verdict("The coupled scene under refinement", g.at("verdict"));
   w.end_list();
+  if (g.has_child("fixed_width") && !g.at("fixed_width").child_names().empty()) {
+    w.text("**A head of fixed width.** The same grids again with the head smoothed to a fixed width in metres (`head_width_m` in a "
+           "scene's `[water]`, model/README.md §2.4): 2 (width/cell)² binomial passes, each spreading a point by a variance of ½ cell², "
+           "so the head's standard deviation is the width on every grid fine enough (at least 3 passes, as the scene's own; at most " +
+           fmt(g.number("max_width_cells")) + " cells wide). If the changes shrink here, what did not settle above is the head's "
+           "width in cells; a change that still does not shrink, by more than the water step moves it, has another cause.");
+    for (const auto& key : g.at("fixed_width").child_names()) {
+      const Record& seq = g.at("fixed_width").at(key);
+      w.text("*Head " + fmt(100 * seq.number("head_width_m"), 3) + " cm wide:*");
+      w.table(grid_table_markdown(seq));
+      const std::string l = grid_left_out(seq, max_cells);
+      if (!l.empty()) w.text(l);
+      w.verdict("The coupled scene under refinement, head " + fmt(100 * seq.number("head_width_m"), 3) + " cm wide", seq.at("verdict"));
+      w.end_list();
+    }
+  }
   return w.finish();
 }
 

@@ -92,6 +92,13 @@ long SceneOptions::frames() const {
 
 double SceneOptions::end_s() const { return frame_rate_hz > 0 ? static_cast<double>(frames()) / frame_rate_hz : 0; }
 
+int pressure_smoothing_passes(double head_width_m, double cell_m) {
+  if (!(head_width_m > 0)) return kPressureSmoothingPasses;
+  const double ratio = head_width_m / cell_m;
+  if (!(ratio <= kMaxHeadWidthCells)) return 0;
+  return std::max(kPressureSmoothingPasses, static_cast<int>(std::lround(2 * ratio * ratio)));
+}
+
 bool SceneOptions::valid(std::string* why) const {
   auto fail = [&](const std::string& w) {
     if (why) *why = w;
@@ -109,6 +116,15 @@ bool SceneOptions::valid(std::string* why) const {
   if (!water->initial_m.empty() && water->initial_m.size() != cells) return fail("initial heights: need nx·ny values");
   if (coupling == Coupling::two_way) {
     if (draught_samples < 1 || draught_samples > 4096) return fail("draught_samples must be in [1, 4096]");
+    if (!(head_width_m >= 0) || !std::isfinite(head_width_m)) return fail("head_width_m must be >= 0");
+    if (forcing == Forcing::pressure && pressure_smoothing_passes(head_width_m, water->field.cell_m) == 0) {
+      std::ostringstream m;
+      m.precision(4);
+      m << "head_width_m = " << head_width_m << " m is " << head_width_m / water->field.cell_m << " cells of "
+        << water->field.cell_m << " m: at most " << kMaxHeadWidthCells << " cells (the head takes 2 (w/d)² binomial passes, at most "
+        << kMaxPressureSmoothingPasses << ")";
+      return fail(m.str());
+    }
     const double sigma = water->field.courant(), limit = coupled_courant_limit(water->field.stencil);
     if (sigma > limit) {
       std::ostringstream m;
@@ -163,6 +179,7 @@ class SceneLoop {
       if (!pressure_) draught_ = std::make_unique<StoneDraught>(o.stone.body_mesh);
       window_ = std::make_unique<DraughtWindow>(o.water->field.nx, o.water->field.ny, periodic);
       if (pressure_) next_window_ = std::make_unique<DraughtWindow>(o.water->field.nx, o.water->field.ny, periodic);
+      if (pressure_) smoothing_passes_ = pressure_smoothing_passes(o.head_width_m, o.water->field.cell_m);
       if (o.energy_budget) {
         energy_ = std::make_unique<WaveEnergy>(o.water->field, rho_g_);
         out_.energy.measured = energy_->available();
@@ -498,7 +515,7 @@ class SceneLoop {
         std::swap(window_, next_window_);  // step n+1's rising half is in
         // The binomial passes are linear: smoothing the step's sum once is smoothing every stone
         // step's head (to round-off), at the cost of one patch per water step.
-        smooth_conservatively(step_patch_, kPressureSmoothingPasses, smooth_scratch_);
+        smooth_conservatively(step_patch_, smoothing_passes_, smooth_scratch_);
         // The window kept only the grid's points; what the smoothing spilt past a wall goes back
         // onto the grid by reflection, so the water still receives the whole head.
         if (o_.water->field.boundary != Boundary::periodic)
@@ -636,6 +653,7 @@ class SceneLoop {
   DraughtPatch sample_patch_, step_patch_, head_;
   std::vector<FacePush> pushes_;
   std::vector<double> smooth_scratch_;
+  int smoothing_passes_ = kPressureSmoothingPasses;  // pressure_smoothing_passes of the scene's width
   double pending_t_ = 0, pending_force_N_ = 0, pending_rastered_N_ = 0;
   bool pending_wet_ = false, in_contact_ = false;
   // The stone step that ends at the next call of stone_step_impulse: its start, v_z and air force.

@@ -78,6 +78,18 @@ bool parse_forcing(const std::string& s, Forcing& out);
 // seed_8ms, 88 / – / 8.4 / 2.5 % on seed_8ms_paper; three keep both under 5 %.
 constexpr int kPressureSmoothingPasses = 3;
 
+// A head of fixed width in metres (SceneOptions::head_width_m, model/README.md §2.4, "A head of
+// fixed width"): m passes of the binomial filter spread a point by a variance of m/2 cells² per
+// axis (each [1 2 1]/4 has variance ½), so a standard deviation w takes m = 2 (w/d)² passes,
+// rounded to the nearest, and never fewer than kPressureSmoothingPasses (which keep the forcing
+// off the grid's scale). w = 0: kPressureSmoothingPasses on every grid, a width of √1.5 cells.
+// Returns 0 where the passes would exceed kMaxPressureSmoothingPasses (w/d > 8): each pass costs
+// the patch's box, which grows by a point a side per pass (at 128 passes a 3 cm stone on 2.5 mm
+// cells smooths a 150² box 128 times a water step).
+constexpr int kMaxHeadWidthCells = 8;
+constexpr int kMaxPressureSmoothingPasses = 2 * kMaxHeadWidthCells * kMaxHeadWidthCells;  // 128
+int pressure_smoothing_passes(double head_width_m, double cell_m);
+
 // How the field takes the steps that nothing forces (no head or draught waiting, no per-step
 // damping loss measured): above all the ring phase after the throw. In flight the stone reads the
 // surface at each of its steps (1 ms in the seed, inside one water step), so free steps come
@@ -115,6 +127,9 @@ struct SceneOptions {
   std::optional<SceneWater> water; // required unless coupling is none (then ignored)
   Forcing forcing = Forcing::pressure;  // two_way
   int draught_samples = 8;         // K per water step (two_way, displacement)
+  // two_way, pressure: the head's standard deviation in metres (pressure_smoothing_passes); 0: a
+  // fixed number of cells (the scene as the paper's real-time model would run it).
+  double head_width_m = 0;
   // Measure the waves' energy budget (solvers/scene/wave_energy.hpp): two transforms of the grid per
   // water step, so off where speed is measured.
   bool energy_budget = false;

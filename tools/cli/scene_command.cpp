@@ -216,6 +216,9 @@ nlohmann::json json_of(const StoneCase& c, const SceneOptions& o, const SceneSum
     j["water_vertical_impulse_N_s"] = s.water_vertical_impulse_N_s;
     if (o.forcing == Forcing::pressure) {
       j["heads_on_footprint"] = s.heads_on_footprint;
+      // The head's smoothing (solvers/scene/coupled_scene.hpp, pressure_smoothing_passes).
+      j["head_width_m"] = o.head_width_m;
+      j["head_smoothing_passes"] = pressure_smoothing_passes(o.head_width_m, o.water->field.cell_m);
       // Held for the water steps the scene ended before taking: the contacts' water impulses sum
       // to water_vertical_impulse_N_s plus this.
       j["water_impulse_pending_N_s"] = s.water_impulse_pending_N_s;
@@ -283,8 +286,12 @@ std::string text_of(const StoneCase& c, const SceneOptions& o, const SceneSummar
     m << "water     " << s.water_steps << " steps";
     if (o.coupling == Coupling::two_way)
       m << ", " << s.draught_samples << (o.forcing == Forcing::pressure ? " pressure heads (largest " : " draught samples (largest ")
-        << general(1e6 * s.max_draught_volume_m3, 3) << " cm³), volume change "
-        << general(s.volume_end_m3 - s.volume_start_m3, 2) << " m³";
+        << general(1e6 * s.max_draught_volume_m3, 3) << " cm³"
+        << (o.forcing == Forcing::pressure && o.head_width_m > 0
+                ? ", smoothed to " + general(100 * o.head_width_m, 3) + " cm: " +
+                      std::to_string(pressure_smoothing_passes(o.head_width_m, o.water->field.cell_m)) + " passes"
+                : std::string())
+        << "), volume change " << general(s.volume_end_m3 - s.volume_start_m3, 2) << " m³";
     if (o.water->field.mode == StepMode::active_tiles) m << "; active tiles: " << s.tiles.brief();
     m << "\n";
   }

@@ -74,6 +74,17 @@ BOOST_AUTO_TEST_CASE(json_reports_frames_speed_and_parts) {
   BOOST_TEST(std::abs(j["frames_per_s_wall_without_energy_budget"].get<double>() - 18 / (wall - budget)) <= 1e-9 * (18 / (wall - budget)));
   BOOST_TEST(j["slowest_frame"]["wall_s"].get<double>() <= wall);
   BOOST_TEST(j["water_steps"].get<long>() == 18);  // one water step per frame (Δt = 1/90 s)
+  // The head's smoothing: 3 passes by default; a head 5 cm wide on 2 cm cells takes 2 (5/2)² = 12.5
+  // passes, rounded to 13 (solvers/scene/coupled_scene.hpp), and the water still receives the
+  // stone's vertical impulse (smoothing keeps the head's sum: model/README.md §2.4).
+  BOOST_TEST(j["head_width_m"].get<double>() == 0.0);
+  BOOST_TEST(j["head_smoothing_passes"].get<int>() == 3);
+  const auto wide = run_stoneskip("scene " + small_seed(0.2) + " --set water.head_width_m=0.05 --json", false);
+  BOOST_REQUIRE_MESSAGE(wide.status == 0, wide.out);
+  const auto w = nlohmann::json::parse(wide.out);
+  BOOST_TEST(w["head_smoothing_passes"].get<int>() == 13);
+  const double received = w["water_vertical_impulse_N_s"].get<double>() + w["water_impulse_pending_N_s"].get<double>();
+  BOOST_TEST(std::abs(received - w["stone_vertical_impulse_N_s"].get<double>()) <= 1e-9 * w["stone_vertical_impulse_N_s"].get<double>());
   // The coupled limit of model/README.md §2.2: the free limit 2/√(−min symbol) over √2, √6/4 for
   // the seed's isotropic stencil (to round-off); a stencil of zero weights couples no cell, has no
   // limit, and says so (JSON has no infinity).

@@ -30,6 +30,12 @@ WaterScene read_water(TomlTable w, TomlTable& top) {
     w.fail("draught_samples", "is used only with forcing = \"displacement\" (the pressure forcing applies the head of every "
                               "stone step, no draught samples)");
   scene.draught_samples = static_cast<int>(samples);
+  // A head of fixed width in metres (solvers/scene/coupled_scene.hpp, pressure_smoothing_passes).
+  scene.head_width_m = w.bounded_or("head_width_m", scene.head_width_m, 0.0, 1.0);
+  const bool width_given = w.has("head_width_m");
+  if (width_given && (scene.coupling != Coupling::two_way || scene.forcing != Forcing::pressure))
+    w.fail("head_width_m", "is used only with coupling = \"two_way\" and forcing = \"pressure\" (it widens the head the "
+                           "stone presses on the water with)");
   // How the field is computed (model/water/height_field.hpp); read before read_height_field,
   // which finishes the table (the keys read here count as known there).
   HeightFieldOptions how;
@@ -49,6 +55,16 @@ WaterScene read_water(TomlTable w, TomlTable& top) {
     const std::string why = disturbance_image_problem(*scene.initial, scene.field.nx * scene.field.cell_m,
                                                       scene.field.ny * scene.field.cell_m, kMaxAmplitude_m);
     if (!why.empty()) initial_table->fail(scene.initial->kind == DisturbanceKind::ring ? "radius_m" : "width_m", why);
+  }
+  if (width_given && scene.coupling == Coupling::two_way && scene.forcing == Forcing::pressure &&
+      pressure_smoothing_passes(scene.head_width_m, scene.field.cell_m) == 0) {
+    std::ostringstream m;
+    m.precision(6);
+    m << scene.head_width_m << " m is " << scene.head_width_m / scene.field.cell_m << " cells of " << scene.field.cell_m
+      << " m; at most " << kMaxHeadWidthCells << " cells (the head takes 2 (w/d)^2 binomial passes a water step, at most "
+      << kMaxPressureSmoothingPasses << "): take head_width_m <= " << at_most(kMaxHeadWidthCells * scene.field.cell_m, 6)
+      << " or a larger cell_m";
+    checked.fail("head_width_m", m.str());
   }
   scene.field.precision = how.precision;
   scene.field.threads = static_cast<int>(threads);
@@ -121,8 +137,9 @@ std::string scene_settings_toml(const std::optional<WaterScene>& water, const Sc
   if (water) {
     const HeightFieldOptions& f = water->field;
     s << "\n[water]\ncoupling = \"" << to_string(water->coupling) << "\"\nforcing = \"" << to_string(water->forcing)
-      << "\"\ndraught_samples = " << water->draught_samples
-      << "\nstencil = \"" << f.stencil.name << "\"  # weights × 1/d²: " << f.stencil.centre << ", " << f.stencil.orth << ", "
+      << "\"\ndraught_samples = " << water->draught_samples;
+    if (water->head_width_m > 0) s << "\nhead_width_m = " << water->head_width_m;
+    s << "\nstencil = \"" << f.stencil.name << "\"  # weights × 1/d²: " << f.stencil.centre << ", " << f.stencil.orth << ", "
       << f.stencil.diag << "\nnx = " << f.nx << "\nny = " << f.ny << "\ncell_m = " << f.cell_m
       << "\nwave_speed_m_s = " << f.wave_speed_m_s << "\ndamping_per_s = " << f.damping_per_s << "\nboundary = \""
       << to_string(f.boundary) << "\"\ndt_s = " << f.dt_s << "  # σ = " << f.courant() << "\nprecision = \""

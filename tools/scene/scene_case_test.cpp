@@ -131,4 +131,30 @@ BOOST_AUTO_TEST_CASE(draught_samples_under_the_pressure_forcing_are_refused) {
   BOOST_TEST(pond({"water.forcing=displacement", "water.draught_samples=4"}).water->draught_samples == 4);
 }
 
+BOOST_AUTO_TEST_CASE(a_head_width_is_read_where_there_is_a_head_and_refused_where_not_or_too_wide) {
+  // Oracle: solvers/scene/coupled_scene.hpp, pressure_smoothing_passes: a width up to 8 cells is
+  // taken (0 by default: a fixed number of cells) and reaches the scene's options; above 8 cells
+  // it is refused at its key with the widest it takes (8 × 2 cm = 0.16 m); without a head (one-way
+  // or displacement forcing) it is refused rather than taken and ignored.
+  BOOST_TEST(pond({}).water->head_width_m == 0.0);
+  const StoneCase c = pond({"water.head_width_m=0.05"});
+  BOOST_TEST(c.water->head_width_m == 0.05);
+  BOOST_TEST(scene_options(c, SceneEnd::at_duration).head_width_m == 0.05);
+  BOOST_TEST(pond({"water.head_width_m=0.16"}).water->head_width_m == 0.16);
+  auto refused = [](const std::vector<std::string>& sets, const std::string& words) {
+    try {
+      pond(sets);
+      BOOST_ERROR("no error for " << sets.back());
+    } catch (const InputError& e) {
+      const std::string m = e.what();
+      BOOST_TEST(m.find("water.head_width_m") != std::string::npos, m);
+      BOOST_TEST(m.find(words) != std::string::npos, m);
+    }
+  };
+  refused({"water.head_width_m=0.17"}, "take head_width_m <= 0.16");
+  refused({"water.head_width_m=-0.01"}, "water.head_width_m");
+  refused({"water.coupling=one_way", "water.head_width_m=0.05"}, "only with coupling = \"two_way\"");
+  refused({"water.forcing=displacement", "water.head_width_m=0.05"}, "forcing = \"pressure\"");
+}
+
 BOOST_AUTO_TEST_SUITE_END()

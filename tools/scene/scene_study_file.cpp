@@ -178,6 +178,11 @@ SceneStudyFile load_scene_study_file(const std::string& path, const std::vector<
     t->require_in("pond_m", g.pond_m, 0.01, 1000.0);
     g.after_s = t->number_or("after_s", g.after_s);
     t->require_in("after_s", g.after_s, 0.0, 100.0);
+    if (auto widths = t->maybe_numbers("head_widths_m")) {
+      g.head_widths_m = *widths;
+      for (double w : g.head_widths_m)
+        if (!(w > 0 && w <= 1)) t->fail("head_widths_m", "each a width in (0, 1] m (the head's standard deviation)");
+    }
     t->finish();
   }
   {

@@ -38,6 +38,7 @@ BOOST_AUTO_TEST_CASE(the_quick_preset_resolves_as_written) {
   BOOST_TEST(o.shortcuts.epsilons_m.size() == 1u);
   BOOST_TEST((o.grid.cell_fractions == std::vector<double>{1.0, 0.5, 0.25}));  // [grid]
   BOOST_TEST(o.grid.pond_m == 2.0);
+  BOOST_TEST((o.grid.head_widths_m == std::vector<double>{0.02}));
 }
 
 BOOST_AUTO_TEST_CASE(bad_values_are_one_line_errors_naming_the_key) {
@@ -60,6 +61,8 @@ BOOST_AUTO_TEST_CASE(bad_values_are_one_line_errors_naming_the_key) {
   names(error_of({"grid.cell_fractions=[1.0, 1.0, 0.5]"}), "grid.cell_fractions");  // not decreasing
   names(error_of({"grid.cell_fractions=[1.0, 0.5]"}), "grid.cell_fractions");       // fewer than three
   names(error_of({"grid.case=\"nowhere\""}), "grid.case");
+  names(error_of({"grid.head_widths_m=[0.02, 0.0]"}), "grid.head_widths_m");  // a width is > 0
+  names(error_of({"grid.head_widths_m=[2.0]"}), "grid.head_widths_m");        // at most 1 m
 }
 
 BOOST_AUTO_TEST_SUITE_END()

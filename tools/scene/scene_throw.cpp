@@ -22,6 +22,7 @@ SceneOptions scene_options(const StoneCase& c, SceneEnd end) {
     o.water = std::move(sw);
     o.draught_samples = w.draught_samples;
     o.forcing = w.forcing;
+    o.head_width_m = w.head_width_m;
   }
   return o;
 }

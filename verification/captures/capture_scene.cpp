@@ -358,7 +358,7 @@ CaptureSceneComparison compare_capture_scene(const CaptureSceneOptions& o) {
   const bool pressure = so.forcing == Forcing::pressure;
   auto prescribed = [&](const TrajectoryPose& p) {
     return pressure ? trajectory_pressure_head(so.stone, so.environment, field, so.water->placement, p,
-                                               kPressureSmoothingPasses)
+                                               pressure_smoothing_passes(so.head_width_m, field.cell_m))
                     : trajectory_draught(so.stone.body_mesh, field, so.water->placement, p);
   };
   auto leapfrog = [&](const DraughtField& h) {

@@ -20,15 +20,122 @@ constexpr int kMaxGridSide = 2048;
 struct GridQuantity {
   const char* key;    // the table's column and the verdict input's suffix
   const char* words;  // as the report names it
+  double scale;       // to the unit it is said in
+  const char* unit;
 };
-constexpr GridQuantity kQuantities[] = {{"pressure_work_J", "the pressure work put into the waves"},
-                                        {"first_duration_s", "the first contact's duration"},
-                                        {"first_exit_m_s", "the first contact's exit speed"}};
+constexpr GridQuantity kQuantities[] = {{"pressure_work_J", "the pressure work put into the waves", 1, "J"},
+                                        {"first_duration_s", "the first contact's duration", 1e3, "ms"},
+                                        {"first_exit_m_s", "the first contact's exit speed", 1, "m/s"}};
 
 std::string joined(const std::vector<std::string>& v) {
   std::string s;
   for (std::size_t i = 0; i < v.size(); ++i) s += (i ? "; " : "") + v[i];
   return s;
+}
+
+Table grid_table() {
+  Table t = table({"cell_fraction", "cell_m", "n", "water_dt_s", "cells_across_stone", "smoothing_passes", "pressure_work_J",
+                   "first_start_s", "first_duration_s", "first_exit_m_s", "contacts", "wall_s"});
+  t.units = {"1", "m", "1", "s", "1", "1", "J", "s", "s", "m/s", "1", "s"};
+  return t;
+}
+
+// One sequence of grids with the head smoothed as `head_width_m` says (0: a fixed number of
+// cells), into `out`: the table "grids", "left_out", the verdict.
+void grid_sequence(const SceneOptions& base, const ContactRecord& k, double end_s, const SceneGridOptions& g,
+                   double head_width_m, const ProgressFactory& progress, const std::string& label, Record& out) {
+  out.set("head_width_m", head_width_m);
+  Record in;
+  std::string reason;
+  Table t = grid_table();
+  // The grids that fit, known before any run: fewer than three decide nothing, so none is run.
+  std::vector<double> fractions;
+  int too_large = 0, too_wide = 0;
+  const bool pressure = base.forcing == Forcing::pressure;  // the displacement forcing smooths nothing
+  for (double f : g.cell_fractions) {
+    const double cell = base.water->field.cell_m * f;
+    if (static_cast<int>(std::ceil(g.pond_m / cell)) + 1 > kMaxGridSide)
+      ++too_large;
+    else if (pressure && pressure_smoothing_passes(head_width_m, cell) == 0)
+      ++too_wide;
+    else
+      fractions.push_back(f);
+  }
+  const int left_out = too_large + too_wide;
+  if (fractions.size() < 3) fractions.clear();
+  // The grid of `f` of the case's cell, its water step `dt_scale` × the case's scaled alike (σ × dt_scale).
+  auto run_grid = [&](double f, double dt_scale) {
+    SceneOptions s = base;
+    s.duration_s = end_s;
+    s.energy_budget = true;  // the pressure work W (solvers/scene/wave_energy.hpp)
+    s.head_width_m = head_width_m;
+    HeightFieldOptions& w = s.water->field;
+    w.cell_m = base.water->field.cell_m * f;
+    w.dt_s = base.water->field.dt_s * f * dt_scale;
+    w.nx = w.ny = static_cast<int>(std::ceil(g.pond_m / w.cell_m)) + 1;
+    s.water->placement.origin_x_m = k.first_touch_m.x() - 0.25 * g.pond_m;
+    s.water->placement.origin_y_m = k.first_touch_m.y() - 0.5 * g.pond_m;
+    const SceneSummary r = run_scene(s);
+    const bool touched = !r.stone.contacts.empty();
+    const ContactRecord* c1 = touched ? &r.stone.contacts.front() : nullptr;
+    return std::vector<double>{f, w.cell_m, double(w.nx), w.dt_s, 2 * base.stone.disk_radius_m / w.cell_m,
+                               pressure ? double(pressure_smoothing_passes(head_width_m, w.cell_m)) : 0.0, r.energy.pressure_work_J,
+                               c1 ? c1->start_s : kNaN, c1 ? c1->duration_s() : kNaN, c1 ? c1->exit_speed_m_s : kNaN,
+                               double(r.stone.contacts.size()), r.wall_s};
+  };
+  // One more run on the finest grid with the water step halved (σ halved): how far the water's
+  // step alone moves each quantity there (the stone sees level n held over [t_n, t_n+1), so an
+  // event time carries a first-order error of the step; model/README.md §2.4).
+  auto ticker = start_progress(progress, label, fractions.empty() ? 0 : fractions.size() + 1);
+  for (double f : fractions) {
+    t.add_row(run_grid(f, 1.0));
+    ticker->tick();
+  }
+  Table half_step = grid_table();
+  if (!fractions.empty()) {
+    half_step.add_row(run_grid(fractions.back(), 0.5));
+    ticker->tick();
+  }
+  const std::size_t n = t.rows();
+  in.set("grids", double(n));
+  if (n < 3) {
+    reason = std::to_string(g.cell_fractions.size() - left_out) + " grids fit under " + std::to_string(kMaxGridSide) +
+             "² cells" + (too_wide ? " and a head " + std::to_string(kMaxHeadWidthCells) + " cells wide" : std::string()) +
+             ", fewer than the three a change against the one before needs: none was run";
+  } else {
+    // Each change of each quantity against the one before as the cells get finer: the largest
+    // such ratio must be < 1 (every change shrinking). A change after none is NaN (not < 1).
+    std::vector<std::string> growing, shrinking;
+    for (const GridQuantity& q : kQuantities) {
+      const auto v = t.column(q.key);
+      double ratio = 0;
+      for (std::size_t j = 2; j < n; ++j) {
+        const double d_prev = std::abs(v[j - 1] - v[j - 2]), d = std::abs(v[j] - v[j - 1]);
+        const double r = d_prev > 0 ? d / d_prev : (d > 0 ? kNaN : 0.0);
+        ratio = std::isnan(ratio) || std::isnan(r) ? kNaN : std::max(ratio, r);
+      }
+      in.set(std::string("ratio_") + q.key, ratio);
+      // The last change's size beside its ratio, and beside what halving the water step alone
+      // moves the quantity on the finest grid: a change no larger than that is the water step's,
+      // which the grid sequence (σ fixed) does not separate from the cell's.
+      const double last = std::abs(v[n - 1] - v[n - 2]);
+      const double by_step = std::abs(half_step.column(q.key)[0] - v[n - 1]);
+      in.set(std::string("last_change_") + q.key, last);
+      in.set(std::string("time_change_") + q.key, by_step);
+      const std::string sizes = "the last " + num(q.scale * last, 3) + " " + q.unit + ", halving the water step " +
+                                num(q.scale * by_step, 3) + " " + q.unit;
+      (ratio < 1 ? shrinking : growing)
+          .push_back(std::string(q.words) + " (a change " + num(ratio, 3) + "× the one before; " + sizes + ")");
+    }
+    reason = growing.empty() ? "each quantity's change shrinks with the finer grid: " + joined(shrinking)
+                             : "changes that do not shrink as the cells get finer: " + joined(growing);
+  }
+  out.set_table("grids", t);
+  out.set_table("half_step", half_step);
+  out.set("left_out", left_out);
+  out.set("left_out_too_large", too_large);
+  out.set("left_out_too_wide", too_wide);
+  decide_verdict(out, "verdict", "grid_differences", in, reason);
 }
 
 }  // namespace
@@ -48,77 +155,35 @@ Record scene_grid_findings(const SceneStudiesOptions& o, const ProgressFactory& 
   out.set("base_water_dt_s", base.water->field.dt_s);
   out.set("stone_diameter_m", 2 * base.stone.disk_radius_m);
   out.set("forcing", std::string(to_string(base.forcing)));
+  out.set("max_width_cells", double(kMaxHeadWidthCells));
   // Where and when the stone first meets still water: the pond is put around it.
   SceneOptions still = base;
   still.coupling = Coupling::none;
   const SceneSummary first = run_scene(still);
-  Record in;
-  std::string reason;
-  Table t = table({"cell_fraction", "cell_m", "n", "water_dt_s", "cells_across_stone", "pressure_work_J", "first_start_s",
-                   "first_duration_s", "first_exit_m_s", "contacts", "wall_s"});
-  t.units = {"1", "m", "1", "s", "1", "J", "s", "s", "m/s", "1", "s"};
-  int left_out = 0;
   if (first.stone.contacts.empty()) {
+    Record in;
     in.set("grids", 0.0);
-    reason = "the stone never touches still water in " + c.name + "'s " + duration(base.duration_s);
-  } else {
-    const ContactRecord& k = first.stone.contacts.front();
-    const double end_s = std::min(base.duration_s, k.start_s + 5 * k.duration_s() + g.after_s);
-    out.set("end_s", end_s);
-    out.set("still_first_start_s", k.start_s);
-    out.set("still_first_duration_s", k.duration_s());
-    // The grids that fit, known before any run: fewer than three decide nothing, so none is run.
-    std::vector<double> fractions;
-    for (double f : g.cell_fractions)
-      if (static_cast<int>(std::ceil(g.pond_m / (base.water->field.cell_m * f))) + 1 <= kMaxGridSide) fractions.push_back(f);
-    left_out = static_cast<int>(g.cell_fractions.size() - fractions.size());
-    if (fractions.size() < 3) fractions.clear();
-    auto ticker = start_progress(progress, "scene: grids", fractions.size());
-    for (double f : fractions) {
-      SceneOptions s = base;
-      s.duration_s = end_s;
-      s.energy_budget = true;  // the pressure work W (solvers/scene/wave_energy.hpp)
-      HeightFieldOptions& w = s.water->field;
-      w.cell_m = base.water->field.cell_m * f;
-      w.dt_s = base.water->field.dt_s * f;  // σ fixed
-      w.nx = w.ny = static_cast<int>(std::ceil(g.pond_m / w.cell_m)) + 1;
-      s.water->placement.origin_x_m = k.first_touch_m.x() - 0.25 * g.pond_m;
-      s.water->placement.origin_y_m = k.first_touch_m.y() - 0.5 * g.pond_m;
-      const SceneSummary r = run_scene(s);
-      const bool touched = !r.stone.contacts.empty();
-      const ContactRecord* c1 = touched ? &r.stone.contacts.front() : nullptr;
-      t.add_row({f, w.cell_m, double(w.nx), w.dt_s, 2 * base.stone.disk_radius_m / w.cell_m, r.energy.pressure_work_J,
-                 c1 ? c1->start_s : kNaN, c1 ? c1->duration_s() : kNaN, c1 ? c1->exit_speed_m_s : kNaN,
-                 double(r.stone.contacts.size()), r.wall_s});
-      ticker->tick();
-    }
-    const std::size_t n = t.rows();
-    in.set("grids", double(n));
-    if (n < 3) {
-      reason = std::to_string(g.cell_fractions.size() - left_out) + " grids fit under " + std::to_string(kMaxGridSide) +
-               "² cells, fewer than the three a change against the one before needs: none was run";
-    } else {
-      // Each change of each quantity against the one before as the cells get finer: the largest
-      // such ratio must be < 1 (every change shrinking). A change after none is NaN (not < 1).
-      std::vector<std::string> growing, shrinking;
-      for (const GridQuantity& q : kQuantities) {
-        const auto v = t.column(q.key);
-        double ratio = 0;
-        for (std::size_t j = 2; j < n; ++j) {
-          const double d_prev = std::abs(v[j - 1] - v[j - 2]), d = std::abs(v[j] - v[j - 1]);
-          const double r = d_prev > 0 ? d / d_prev : (d > 0 ? kNaN : 0.0);
-          ratio = std::isnan(ratio) || std::isnan(r) ? kNaN : std::max(ratio, r);
-        }
-        in.set(std::string("ratio_") + q.key, ratio);
-        (ratio < 1 ? shrinking : growing).push_back(std::string(q.words) + " (a change " + num(ratio, 3) + "× the one before)");
-      }
-      reason = growing.empty() ? "each quantity's change shrinks with the finer grid: " + joined(shrinking)
-                               : "changes that do not shrink as the cells get finer: " + joined(growing);
-    }
+    out.set("head_width_m", base.head_width_m);
+    out.set_table("grids", grid_table());
+    out.set("left_out", 0);
+    decide_verdict(out, "verdict", "grid_differences", in,
+                   "the stone never touches still water in " + c.name + "'s " + duration(base.duration_s));
+    return out;
   }
-  out.set_table("grids", t);
-  out.set("left_out", left_out);
-  decide_verdict(out, "verdict", "grid_differences", in, reason);
+  const ContactRecord& k = first.stone.contacts.front();
+  const double end_s = std::min(base.duration_s, k.start_s + 5 * k.duration_s() + g.after_s);
+  out.set("end_s", end_s);
+  out.set("still_first_start_s", k.start_s);
+  out.set("still_first_duration_s", k.duration_s());
+  // The scene as the case has it (its own head width, 0 for the shipped scenes).
+  grid_sequence(base, k, end_s, g, base.head_width_m, progress, "scene: grids", out);
+  // A head of fixed width in metres: only the pressure forcing has a head to widen.
+  if (base.forcing == Forcing::pressure) {
+    Record& widths = out.child("fixed_width");
+    for (std::size_t i = 0; i < g.head_widths_m.size(); ++i)
+      grid_sequence(base, k, end_s, g, g.head_widths_m[i], progress, "scene: grids, head " + num(100 * g.head_widths_m[i], 3) + " cm",
+                    widths.child(std::to_string(i)));
+  }
   return out;
 }
 

@@ -49,6 +49,8 @@ bool SceneStudiesOptions::valid(std::string* why) const {
     if (!(grid.cell_fractions[i] > 0 && grid.cell_fractions[i] <= 1) || (i > 0 && !(grid.cell_fractions[i] < grid.cell_fractions[i - 1])))
       return fail("grid: cell fractions must lie in (0, 1] and decrease strictly (coarse to fine)");
   if (!(grid.pond_m > 0) || !(grid.after_s >= 0)) return fail("grid: pond_m > 0 and after_s >= 0");
+  for (double width : grid.head_widths_m)
+    if (!(width > 0 && width <= 1)) return fail("grid: head widths must lie in (0, 1] m");
   return true;
 }
 

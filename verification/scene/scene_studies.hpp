@@ -66,12 +66,15 @@ struct SceneShortcutOptions {
 // an eighth of its cell (the water step scaled alike, σ fixed), on a pond of pond_m × pond_m around
 // the first touch (found on still water), until the first contact has ended and `after_s` more: the
 // pressure work put into the waves and the first contact's duration and exit speed, whose
-// successive differences must shrink as the cells halve.
+// successive differences must shrink as the cells halve. Then the same grids again with the head
+// smoothed to each of `head_widths_m` in metres (SceneOptions::head_width_m), not over a fixed
+// number of cells: does a head of fixed width make the scene converge?
 struct SceneGridOptions {
   std::string case_name;                           // which scene (default: the first)
   std::vector<double> cell_fractions{1, 0.5, 0.25, 0.125};  // of the case's cell, coarse to fine (≥ 3)
   double pond_m = 2;
   double after_s = 0.05;
+  std::vector<double> head_widths_m{0.02};         // each > 0 (may be empty: pressure forcing only)
 };
 
 struct SceneSpeedOptions {

@@ -92,6 +92,15 @@ BOOST_AUTO_TEST_CASE(the_scene_converges_under_refinement_only_where_every_chang
              "does not converge: first_duration_s change no less as the cells get finer");
   in.set("ratio_first_duration_s", 0.5).set("ratio_pressure_work_J", kNaN);
   BOOST_TEST(decide("grid_differences", in).find("does not converge: pressure_work_J") == 0u);
+  // A change that does not shrink but is no larger than halving the water step moves the quantity
+  // is the step's: not decided; one larger than that does not converge.
+  in.set("ratio_pressure_work_J", 0.5).set("ratio_first_duration_s", 1.5);
+  in.set("last_change_first_duration_s", 6e-5).set("time_change_first_duration_s", 1.2e-4);
+  BOOST_TEST(decide("grid_differences", in) ==
+             "not decided: first_duration_s change no more than halving the water step moves them");
+  in.set("time_change_first_duration_s", 3e-5);
+  BOOST_TEST(decide("grid_differences", in) ==
+             "does not converge: first_duration_s change no less as the cells get finer");
   in.set("grids", 2.0);
   BOOST_TEST(decide("grid_differences", in) == "not decided: fewer than three grids");
 }

@@ -345,12 +345,21 @@ const std::map<std::string, Rule>& rules() {
          // verification/scene/scene_grid_findings.cpp: each quantity's largest change over the one
          // before as the cells get finer (ratio < 1: every change shrinking); fewer than 3 grids
          // decide nothing.
+         // A quantity whose changes do not shrink, but whose last change is no larger than halving
+         // the water step alone moves it on the finest grid (time_change_*, where stored), is
+         // within the water step's error: the sequence cannot say whether it converges.
          if (in.number("grids") < 3) return std::string("not decided: fewer than three grids");
-         std::vector<std::string> growing;
-         for (const char* q : {"pressure_work_J", "first_duration_s", "first_exit_m_s"})
-           if (!(in.number(std::string("ratio_") + q) < 1)) growing.emplace_back(q);
-         return growing.empty() ? std::string("the changes shrink as the cells halve")
-                                : "does not converge: " + joined(growing) + " change no less as the cells get finer";
+         std::vector<std::string> growing, within_step;
+         for (const char* q : {"pressure_work_J", "first_duration_s", "first_exit_m_s"}) {
+           if (in.number(std::string("ratio_") + q) < 1) continue;
+           const std::string t = std::string("time_change_") + q, l = std::string("last_change_") + q;
+           const bool in_step = in.has_number(t) && in.has_number(l) && in.number(t) >= in.number(l);
+           (in_step ? within_step : growing).emplace_back(q);
+         }
+         if (!growing.empty()) return "does not converge: " + joined(growing) + " change no less as the cells get finer";
+         if (!within_step.empty())
+           return "not decided: " + joined(within_step) + " change no more than halving the water step moves them";
+         return std::string("the changes shrink as the cells halve");
        }},
       {"error_split",
        [](const Record& in) {
