@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "reports/common/colour_scale.hpp"
@@ -457,6 +458,53 @@ SectionOutput grid_section(const Record& g) {
       w.verdict("The coupled scene under refinement, head " + fmt(100 * seq.number("head_width_m"), 3) + " cm wide", seq.at("verdict"));
       w.end_list();
     }
+  }
+  // The pressure work and the exit speed against the cell, one line a sequence, the finest grid
+  // with the water step halved as a lone point (reports before 7 December: the scene's own only).
+  if (g.table("grids").rows() > 0) {
+    std::vector<const Record*> seqs{&g};
+    std::vector<std::string> titles{own_width > 0 ? "head " + fmt(100 * own_width, 3) + " cm (the case's)"
+                                                  : std::string("head 3 passes (the scene's)")};
+    if (g.has_child("fixed_width"))
+      for (const auto& key : g.at("fixed_width").child_names()) {
+        seqs.push_back(&g.at("fixed_width").at(key));
+        titles.push_back("head " + fmt(100 * seqs.back()->number("head_width_m"), 3) + " cm");
+      }
+    auto figure = [&](const std::string& name, const std::string& title, const std::string& column, const std::string& label,
+                      const std::string& y_column) {
+      std::vector<PlotSeries> series;
+      double smallest = std::numeric_limits<double>::infinity(), largest = 0;
+      for (std::size_t i = 0; i < seqs.size(); ++i) {
+        if (seqs[i]->table("grids").rows() == 0) continue;
+        series.push_back(table_series(titles[i], *seqs[i], "grids", "cell_m", column));
+        for (double c : seqs[i]->table("grids").column("cell_m")) {
+          smallest = std::min(smallest, c);
+          largest = std::max(largest, c);
+        }
+        // The lone point in its line's colour (gnuplot's line type k is the k-th series').
+        const std::string line_type = std::to_string(series.size());
+        if (seqs[i]->has_table("half_step") && seqs[i]->table("half_step").rows() > 0)
+          series.push_back(table_series(titles[i] + ", step ½", *seqs[i], "half_step", "cell_m", column,
+                                        "points pt 6 ps 1.5 lt " + line_type));
+      }
+      // The cells' own span on the log axis (gnuplot would widen it to whole decades), where finite.
+      // A tick at each cell of the own sequence (finite, stored values only), and room above and
+      // below the points.
+      std::string span = "set offsets 0, 0, graph 0.05, graph 0.05";
+      if (std::isfinite(smallest) && std::isfinite(largest) && smallest > 0 && largest >= smallest) {
+        span += "\nset xrange [" + fmt(smallest / 1.4, 4) + ":" + fmt(largest * 1.4, 4) + "]\nset format x \"%g\"\nset xtics (";
+        std::string tics;
+        for (double c : g.table("grids").column("cell_m"))
+          if (std::isfinite(c) && c > 0) tics += (tics.empty() ? "" : ", ") + fmt(c, 4);
+        span += tics + ")";
+      }
+      PlotAxes ax{"cell (m), water step ∝ cell", label, true, false, span};
+      w.figure(line_figure(name, title, ax, series, "cell_m", y_column));
+    };
+    figure("grid_pressure_work", "The waves' pressure work in the first contact, as the cells shrink", "pressure_work_J",
+           "pressure work W (J)", "pressure_work_J");
+    figure("grid_exit_speed", "The first contact's exit speed, as the cells shrink", "first_exit_m_s", "exit speed (m/s)",
+           "exit_speed_m_s");
   }
   return w.finish();
 }
