@@ -405,7 +405,7 @@ std::string grid_left_out(const Record& seq, double max_width_cells) {
   std::string s;
   if (seq.number("left_out_too_large") > 0) s += fmt(seq.number("left_out_too_large")) + " finer grid(s) left out: more than 2048² cells. ";
   if (seq.number("left_out_too_wide") > 0)
-    s += fmt(seq.number("left_out_too_wide")) + " finer grid(s) left out: the head would be more than " + fmt(max_width_cells) + " cells wide (its smoothing "
+    s += fmt(seq.number("left_out_too_wide")) + " grid(s) left out: the head would be more than " + fmt(max_width_cells) + " cells wide (its smoothing "
          "passes grow as (width/cell)²).";
   return s;
 }
@@ -452,7 +452,7 @@ SectionOutput grid_section(const Record& g) {
     for (const auto& key : g.at("fixed_width").child_names()) {
       const Record& seq = g.at("fixed_width").at(key);
       w.text("*Head " + fmt(100 * seq.number("head_width_m"), 3) + " cm wide:*");
-      w.table(grid_table_markdown(seq));
+      if (seq.table("grids").rows() > 0) w.table(grid_table_markdown(seq));
       const std::string l = grid_left_out(seq, max_cells);
       if (!l.empty()) w.text(l);
       w.verdict("The coupled scene under refinement, head " + fmt(100 * seq.number("head_width_m"), 3) + " cm wide", seq.at("verdict"));
