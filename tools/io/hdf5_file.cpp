@@ -44,6 +44,12 @@ void check(Call&& call, const std::string& what) {
   throw std::runtime_error("HDF5: " + what);
 }
 
+// A dataset's values that would not read: with the Fletcher-32 checksum (checksummed_layout) a
+// value changed on disk fails here.
+std::string read_failed(const std::string& path) {
+  return "cannot read " + path + " (values damaged on disk fail their checksum; or not numbers)";
+}
+
 hid_t check_id(hid_t id, const std::string& what) {
   if (id < 0) throw std::runtime_error("HDF5: " + what);
   return id;
@@ -154,9 +160,32 @@ std::vector<std::string> get_column_names(hid_t ds, const Hdf5StringTable* table
   return names;
 }
 
+// A dataset's values are raw data, which no HDF5 format checksums; the Fletcher-32 filter (HDF5
+// User's Guide, "Filters") stores a checksum with each chunk and the library verifies it on
+// reading, so a value changed on disk is an error, not a number read as stored. Filters need a
+// chunked layout: one chunk of the whole dataset, or of as many leading slices as fit in 64 MiB.
+// An empty dataset (no values) and variable-length strings (whose values live in the global heap,
+// which the filter would not cover: read apart, hdf5_strings_apart.hpp) stay contiguous.
+H5Id checksummed_layout(hid_t type, const std::vector<hsize_t>& dims) {
+  H5Id plist(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  if (plist.get() < 0) throw std::runtime_error("HDF5: cannot create a dataset property list");
+  const bool empty = dims.empty() || std::any_of(dims.begin(), dims.end(), [](hsize_t d) { return d == 0; });
+  if (empty || H5Tis_variable_str(type) > 0) return plist;
+  std::vector<hsize_t> chunk = dims;
+  const hsize_t element = H5Tget_size(type);
+  hsize_t slice = element;  // bytes of one leading slice
+  for (std::size_t i = 1; i < dims.size(); ++i) slice *= dims[i];
+  constexpr hsize_t kMaxChunkBytes = hsize_t(64) << 20;
+  chunk[0] = std::max<hsize_t>(1, std::min<hsize_t>(dims[0], kMaxChunkBytes / std::max<hsize_t>(slice, 1)));
+  if (H5Pset_chunk(plist.get(), static_cast<int>(chunk.size()), chunk.data()) < 0 || H5Pset_fletcher32(plist.get()) < 0)
+    throw std::runtime_error("HDF5: cannot set a checksummed layout");
+  return plist;
+}
+
 H5Id create_dataset(hid_t loc, const std::string& name, hid_t type, const std::vector<hsize_t>& dims) {
   H5Id space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
-  return H5Id(check_id(H5Dcreate2(loc, name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+  const H5Id layout = checksummed_layout(type, dims);
+  return H5Id(check_id(H5Dcreate2(loc, name.c_str(), type, space.get(), H5P_DEFAULT, layout.get(), H5P_DEFAULT),
                        "cannot create dataset " + name),
               H5Dclose);
 }
@@ -305,14 +334,14 @@ void H5Group::write_strings(const std::string& name, const std::vector<std::stri
 std::vector<double> H5Group::read_vector(const std::string& name) const {
   H5Id ds = open_dataset(id(), name, path_ + "/" + name);
   std::vector<double> v(element_count(dataset_dims(ds.get())));
-  if (!v.empty()) check([&] { return H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()); }, "read " + name);
+  if (!v.empty()) check([&] { return H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()); }, read_failed(path_ + "/" + name));
   return v;
 }
 
 std::vector<long long> H5Group::read_ints(const std::string& name) const {
   H5Id ds = open_dataset(id(), name, path_ + "/" + name);
   std::vector<long long> v(element_count(dataset_dims(ds.get())));
-  if (!v.empty()) check([&] { return H5Dread(ds.get(), H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()); }, "read " + name);
+  if (!v.empty()) check([&] { return H5Dread(ds.get(), H5T_NATIVE_LLONG, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()); }, read_failed(path_ + "/" + name));
   return v;
 }
 
@@ -329,7 +358,7 @@ Table H5Group::read_table(const std::string& name) const {
   t.values.resize(element_count(dims));
   if (dims.size() != 2 || dims[1] != t.columns.size()) throw std::runtime_error("HDF5: " + name + " is not a table");
   if (!t.values.empty())
-    check([&] { return H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, t.values.data()); }, "read " + name);
+    check([&] { return H5Dread(ds.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, t.values.data()); }, read_failed(path_ + "/" + name));
   return t;
 }
 

@@ -139,7 +139,7 @@ BOOST_AUTO_TEST_CASE(a_value_changed_in_a_files_metadata_is_an_error_not_read_as
   // format's object headers end in a checksum the library verifies (HDF5 File Format Specification,
   // version 2 object header, "Checksum"). Oracle: that checksum; the value's bytes are found by
   // their pattern (once in the file), and the file as written reads back exactly. (A dataset's
-  // values are raw data, which no HDF5 format checksums.)
+  // values are raw data, which no HDF5 format checksums: the Fletcher-32 filter does, below.)
   ScratchDir dir("stoneskip_hdf5_checksum");
   const auto path = dir.dir / "sums.h5";
   const double value = 1234.5678901234;
@@ -170,6 +170,73 @@ BOOST_AUTO_TEST_CASE(a_value_changed_in_a_files_metadata_is_an_error_not_read_as
     read = std::string("error: ") + e.what();
   }
   BOOST_TEST(read.rfind("error: ", 0) == 0u, read);
+}
+
+BOOST_AUTO_TEST_CASE(a_value_changed_in_a_datasets_raw_data_is_an_error_not_read_as_stored) {
+  // A table's, a vector's, an integer list's and a 3-D array's values are raw data. main wrote
+  // them contiguous and unchecked: one bit flipped on disk read back as another number. Each is now
+  // written in chunks with the Fletcher-32 checksum, which the library verifies on reading (HDF5
+  // User's Guide, "Filters"). Oracle: that checksum; each value's bytes are found by their pattern
+  // (once in the file), and the file as written reads back exactly.
+  ScratchDir dir("stoneskip_hdf5_raw_checksum");
+  const auto path = dir.dir / "raw.h5";
+  const double in_table = 2345.6789012345, in_vector = 3456.7890123456;
+  const long long in_ints = 0x0123456789abcdefLL;
+  const float in_floats = 4567.891f;
+  {
+    Hdf5Writer w(path);
+    H5Group g = w.root().create_group("g");
+    Table t;
+    t.columns = {"a_m", "b_s"};
+    t.add_row({1.0, in_table});
+    t.add_row({3.0, 4.0});
+    g.write_table("t", t);
+    g.write_vector("v", {5.0, in_vector, 6.0});
+    g.write_ints("i", {7, in_ints});
+    g.write_floats_3d("f", {1.0f, 2.0f, in_floats, 3.0f}, {1, 2, 2}, "m");
+    g.write_table("empty", Table{{"x_m"}, {}});  // no values: no chunk, nothing to check, still read
+    w.commit();
+  }
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  {
+    const Hdf5Reader r(path);
+    const H5Group g = r.root().open_group("g");
+    BOOST_TEST(g.read_table("t").column("b_s")[0] == in_table);
+    BOOST_TEST(g.read_vector("v")[1] == in_vector);
+    BOOST_TEST(g.read_ints("i")[1] == in_ints);
+    BOOST_TEST(g.read_vector("f")[2] == double(in_floats));
+    BOOST_TEST(g.read_table("empty").rows() == 0u);
+  }
+  auto pattern_of = [](const void* p, std::size_t n) { return std::string(static_cast<const char*>(p), n); };
+  const std::vector<std::pair<std::string, std::string>> cases = {{"t", pattern_of(&in_table, sizeof in_table)},
+                                                                   {"v", pattern_of(&in_vector, sizeof in_vector)},
+                                                                   {"i", pattern_of(&in_ints, sizeof in_ints)},
+                                                                   {"f", pattern_of(&in_floats, sizeof in_floats)}};
+  for (const auto& [name, pattern] : cases) {
+    const std::size_t at = bytes.find(pattern);
+    BOOST_REQUIRE_MESSAGE(at != std::string::npos, name);
+    BOOST_REQUIRE_MESSAGE(bytes.find(pattern, at + 1) == std::string::npos, name);
+    std::string flipped = bytes;
+    flipped[at] = static_cast<char>(flipped[at] ^ 0x01);  // the value's lowest bit
+    const auto bad = dir.dir / ("flipped_" + name + ".h5");
+    std::ofstream(bad, std::ios::binary) << flipped;
+    std::string read = "no error";
+    try {
+      const Hdf5Reader r(bad);
+      const H5Group g = r.root().open_group("g");
+      if (name == "t") read = std::to_string(g.read_table("t").column("b_s")[0]);
+      if (name == "v") read = std::to_string(g.read_vector("v")[1]);
+      if (name == "i") read = std::to_string(g.read_ints("i")[1]);
+      if (name == "f") read = std::to_string(g.read_vector("f")[2]);  // all four, converted to double
+    } catch (const std::exception& e) {
+      read = std::string("error: ") + e.what();
+    }
+    BOOST_TEST(read.rfind("error: ", 0) == 0u, name << ": " << read);
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
