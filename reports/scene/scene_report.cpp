@@ -411,14 +411,14 @@ std::string grid_left_out(const Record& seq, double max_width_cells) {
 }
 
 // What forces the water in section 6's own sequence, and how it is spread on the grid.
-std::string grid_head_words(const std::string& forcing, double own_width_m) {
+std::string grid_head_words(const std::string& forcing, double own_width_m, const std::string& passes) {
   if (forcing != "pressure")
     return "The stone forces the water with its draught b, sampled at the grid points (model/README.md §2.4).";
   const std::string head = "The head h the stone presses with is its wetted faces' pressure rastered on the cells (model/README.md §2.4), ";
   if (own_width_m > 0)
     return head + "smoothed to a width of " + fmt(100 * own_width_m, 3) +
-           " cm (the case's `head_width_m`: 2 (width/cell)² binomial passes, at least 3).";
-  return head + "smoothed over a fixed number of cells (3 binomial passes), so a finer grid resolves a narrower, stronger patch: where "
+           " cm (the case's `head_width_m`: 2 (width/cell)² binomial passes, at least " + passes + ").";
+  return head + "smoothed over a fixed number of cells (" + passes + " binomial passes), so a finer grid resolves a narrower, stronger patch: where "
                 "the changes do not shrink, the scene's water response (and through it the stone's contacts) is a property of the "
                 "grid, not of the stone.";
 }
@@ -426,6 +426,7 @@ std::string grid_head_words(const std::string& forcing, double own_width_m) {
 SectionOutput grid_section(const Record& g) {
   SectionWriter w(g, "6. Does the coupled scene converge as the grid is refined?");
   const double own_width = g.has_number("head_width_m") ? g.number("head_width_m") : 0.0;
+  const std::string passes = g.has_number("default_passes") ? fmt(g.number("default_passes")) : std::string("3");  // before 7 December: 3
   w.text("Scene " + code(g.text("case")) + " (" + g.text("forcing") + " forcing) on its own cell of " + fmt(100 * g.number("base_cell_m"), 3) +
          " cm and on finer ones, the water step scaled with the cell (σ fixed), on a " + fmt(g.number("pond_m"), 3) + " m × " +
          fmt(g.number("pond_m"), 3) + " m pond around the first touch, until " +
@@ -436,7 +437,7 @@ SectionOutput grid_section(const Record& g) {
          "first-order error of that step, which this sequence (σ fixed) does not separate from the cell's; a quantity whose "
          "changes do not shrink but whose last change is no larger than what halving the step moves it is *not decided*. "
          "The stone is " + fmt(100 * g.number("stone_diameter_m"), 3) +
-         " cm across. " + grid_head_words(g.text("forcing"), own_width));
+         " cm across. " + grid_head_words(g.text("forcing"), own_width, passes));
   w.table(grid_table_markdown(g));
   const double max_cells = g.has_number("max_width_cells") ? g.number("max_width_cells") : 8.0;
   const std::string lo = grid_left_out(g, max_cells);
@@ -446,7 +447,7 @@ SectionOutput grid_section(const Record& g) {
   if (g.has_child("fixed_width") && !g.at("fixed_width").child_names().empty()) {
     w.text("**A head of fixed width.** The same grids again with the head smoothed to a fixed width in metres (`head_width_m` in a "
            "scene's `[water]`, model/README.md §2.4): 2 (width/cell)² binomial passes, each spreading a point by a variance of ½ cell², "
-           "so the head's standard deviation is the width on every grid fine enough (at least 3 passes, as the scene's own; at most " +
+           "so the head's standard deviation is the width on every grid fine enough (at least " + passes + " passes, as the scene's own; at most " +
            fmt(g.number("max_width_cells")) + " cells wide). If the changes shrink here, what did not settle above is the head's "
            "width in cells; a change that still does not shrink, by more than the water step moves it, has another cause.");
     for (const auto& key : g.at("fixed_width").child_names()) {
@@ -464,7 +465,7 @@ SectionOutput grid_section(const Record& g) {
   if (g.table("grids").rows() > 0) {
     std::vector<const Record*> seqs{&g};
     std::vector<std::string> titles{own_width > 0 ? "head " + fmt(100 * own_width, 3) + " cm (the case's)"
-                                                  : std::string("head 3 passes (the scene's)")};
+                                                  : "head " + passes + " passes (the scene's)"};
     if (g.has_child("fixed_width"))
       for (const auto& key : g.at("fixed_width").child_names()) {
         seqs.push_back(&g.at("fixed_width").at(key));

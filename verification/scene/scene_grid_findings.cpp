@@ -156,6 +156,7 @@ Record scene_grid_findings(const SceneStudiesOptions& o, const ProgressFactory& 
   out.set("stone_diameter_m", 2 * base.stone.disk_radius_m);
   out.set("forcing", std::string(to_string(base.forcing)));
   out.set("max_width_cells", double(kMaxHeadWidthCells));
+  out.set("default_passes", double(kPressureSmoothingPasses));
   // Where and when the stone first meets still water: the pond is put around it.
   SceneOptions still = base;
   still.coupling = Coupling::none;
