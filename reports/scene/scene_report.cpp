@@ -423,6 +423,37 @@ std::string grid_head_words(const std::string& forcing, double own_width_m, cons
                 "grid, not of the stone.";
 }
 
+// One quantity of section 6 against the cell: a line for each sequence (seqs[0] the scene's own,
+// whose cells get the ticks) and its finest grid with the water step halved as a point in the
+// line's colour (gnuplot's line type k is the k-th series').
+Figure grid_figure(const std::string& name, const std::string& title, const std::vector<const Record*>& seqs,
+                   const std::vector<std::string>& titles, const std::string& column, const std::string& label) {
+  std::vector<PlotSeries> series;
+  double smallest = std::numeric_limits<double>::infinity(), largest = 0;
+  for (std::size_t i = 0; i < seqs.size(); ++i) {
+    if (seqs[i]->table("grids").rows() == 0) continue;
+    series.push_back(table_series(titles[i], *seqs[i], "grids", "cell_m", column));
+    for (double c : seqs[i]->table("grids").column("cell_m")) {
+      smallest = std::min(smallest, c);
+      largest = std::max(largest, c);
+    }
+    const std::string line_type = std::to_string(series.size());
+    if (seqs[i]->has_table("half_step") && seqs[i]->table("half_step").rows() > 0)
+      series.push_back(table_series(titles[i] + ", step ½", *seqs[i], "half_step", "cell_m", column, "points pt 6 ps 1.5 lt " + line_type));
+  }
+  // Room above and below the points; on the log axis the cells' own span (gnuplot would widen it
+  // to whole decades) with a tick at each, from finite stored values only.
+  std::string extra = "set offsets 0, 0, graph 0.05, graph 0.05";
+  if (std::isfinite(smallest) && std::isfinite(largest) && smallest > 0) {
+    std::string tics;
+    for (double c : seqs[0]->table("grids").column("cell_m"))
+      if (std::isfinite(c) && c > 0) tics += (tics.empty() ? "" : ", ") + fmt(c, 4);
+    extra += "\nset xrange [" + fmt(smallest / 1.4, 4) + ":" + fmt(largest * 1.4, 4) + "]\nset format x \"%g\"\nset xtics (" + tics + ")";
+  }
+  const PlotAxes ax{"cell (m), water step ∝ cell", label, true, false, extra};
+  return line_figure(name, title, ax, series, "cell_m", column);
+}
+
 SectionOutput grid_section(const Record& g) {
   SectionWriter w(g, "6. Does the coupled scene converge as the grid is refined?");
   const double own_width = g.has_number("head_width_m") ? g.number("head_width_m") : 0.0;
@@ -471,41 +502,10 @@ SectionOutput grid_section(const Record& g) {
         seqs.push_back(&g.at("fixed_width").at(key));
         titles.push_back("head " + fmt(100 * seqs.back()->number("head_width_m"), 3) + " cm");
       }
-    auto figure = [&](const std::string& name, const std::string& title, const std::string& column, const std::string& label,
-                      const std::string& y_column) {
-      std::vector<PlotSeries> series;
-      double smallest = std::numeric_limits<double>::infinity(), largest = 0;
-      for (std::size_t i = 0; i < seqs.size(); ++i) {
-        if (seqs[i]->table("grids").rows() == 0) continue;
-        series.push_back(table_series(titles[i], *seqs[i], "grids", "cell_m", column));
-        for (double c : seqs[i]->table("grids").column("cell_m")) {
-          smallest = std::min(smallest, c);
-          largest = std::max(largest, c);
-        }
-        // The lone point in its line's colour (gnuplot's line type k is the k-th series').
-        const std::string line_type = std::to_string(series.size());
-        if (seqs[i]->has_table("half_step") && seqs[i]->table("half_step").rows() > 0)
-          series.push_back(table_series(titles[i] + ", step ½", *seqs[i], "half_step", "cell_m", column,
-                                        "points pt 6 ps 1.5 lt " + line_type));
-      }
-      // The cells' own span on the log axis (gnuplot would widen it to whole decades), where finite.
-      // A tick at each cell of the own sequence (finite, stored values only), and room above and
-      // below the points.
-      std::string span = "set offsets 0, 0, graph 0.05, graph 0.05";
-      if (std::isfinite(smallest) && std::isfinite(largest) && smallest > 0 && largest >= smallest) {
-        span += "\nset xrange [" + fmt(smallest / 1.4, 4) + ":" + fmt(largest * 1.4, 4) + "]\nset format x \"%g\"\nset xtics (";
-        std::string tics;
-        for (double c : g.table("grids").column("cell_m"))
-          if (std::isfinite(c) && c > 0) tics += (tics.empty() ? "" : ", ") + fmt(c, 4);
-        span += tics + ")";
-      }
-      PlotAxes ax{"cell (m), water step ∝ cell", label, true, false, span};
-      w.figure(line_figure(name, title, ax, series, "cell_m", y_column));
-    };
-    figure("grid_pressure_work", "The waves' pressure work in the first contact, as the cells shrink", "pressure_work_J",
-           "pressure work W (J)", "pressure_work_J");
-    figure("grid_exit_speed", "The first contact's exit speed, as the cells shrink", "first_exit_m_s", "exit speed (m/s)",
-           "exit_speed_m_s");
+    w.figure(grid_figure("grid_pressure_work", "The waves' pressure work in the first contact, as the cells shrink", seqs, titles,
+                         "pressure_work_J", "pressure work W (J)"));
+    w.figure(grid_figure("grid_exit_speed", "The first contact's exit speed, as the cells shrink", seqs, titles, "first_exit_m_s",
+                         "exit speed (m/s)"));
   }
   return w.finish();
 }
