@@ -41,7 +41,8 @@ Table grid_table() {
 }
 
 // One sequence of grids with the head smoothed as `head_width_m` says (0: a fixed number of
-// cells), into `out`: the table "grids", "left_out", the verdict.
+// cells), into `out`: the tables "grids" and "half_step" (its finest grid with the water step
+// halved), what was left out and why, the verdict.
 void grid_sequence(const SceneOptions& base, const ContactRecord& k, double end_s, const SceneGridOptions& g,
                    double head_width_m, const ProgressFactory& progress, const std::string& label, Record& out) {
   out.set("head_width_m", head_width_m);
