@@ -634,7 +634,8 @@ double HeightField::volume_m3() const {
   return s * options_.cell_m * options_.cell_m;
 }
 
-double HeightField::interpolate(double x_m, double y_m) const {
+template <class Level>
+double HeightField::bilinear(double x_m, double y_m, Level level) const {
   const int nx = options_.nx, ny = options_.ny;
   double gx = x_m / options_.cell_m, gy = y_m / options_.cell_m;
   const bool wrap_xy = options_.boundary == Boundary::periodic;
@@ -655,8 +656,16 @@ double HeightField::interpolate(double x_m, double y_m) const {
     i1 = std::min(i1, nx - 1);
     j1 = std::min(j1, ny - 1);
   }
-  return (1 - fx) * (1 - fy) * height(i0, j0) + fx * (1 - fy) * height(i1, j0) + (1 - fx) * fy * height(i0, j1) +
-         fx * fy * height(i1, j1);
+  return (1 - fx) * (1 - fy) * level(i0, j0) + fx * (1 - fy) * level(i1, j0) + (1 - fx) * fy * level(i0, j1) +
+         fx * fy * level(i1, j1);
+}
+
+double HeightField::interpolate(double x_m, double y_m) const {
+  return bilinear(x_m, y_m, [this](int i, int j) { return height(i, j); });
+}
+
+double HeightField::interpolate_previous(double x_m, double y_m) const {
+  return bilinear(x_m, y_m, [this](int i, int j) { return previous_height(i, j); });
 }
 
 }  // namespace stoneskip

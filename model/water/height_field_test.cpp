@@ -185,6 +185,49 @@ BOOST_AUTO_TEST_CASE(surface_adapter_interpolates_bilinear_fields_exactly) {
   BOOST_TEST(std::abs(surface.height_m(x + 10.0 + 1.0, y - 2.0 - 3.0) - g(x, y)) <= 1e-13);
 }
 
+// The largest error of the level a stone reads between water steps (HeightFieldSurface at
+// θ = 0.1 … 0.9 of each step over one wave period), against the exact mode's smooth continuation
+// cos(θ t/Δt) z0 (the recurrence above, z_n = cos(nθ) z0, read between its steps).
+double level_between_steps_error(LevelInTime in_time, double sigma) {
+  const int n = 16;
+  HeightField f(options_for("five_point", Boundary::periodic, n, sigma));
+  std::vector<double> z0(n * n);
+  const double a = 2 * M_PI / n;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) z0[j * n + i] = std::cos(a * i);
+  f.set_state(z0);
+  const double theta = std::acos(1 + sigma * sigma * named_stencil("five_point").symbol(a, 0) / 2);
+  const double dt = f.options().dt_s;
+  HeightFieldSurface surface(f, 0, 0, in_time);
+  double worst = 0;
+  const long steps = std::lround(2 * M_PI / theta);  // one period of the mode
+  for (long k = 0; k < steps; ++k, f.step())
+    for (double phi : {0.1, 0.3, 0.5, 0.7, 0.9}) {
+      surface.set_time((k + phi) * dt);
+      worst = std::max(worst, std::abs(surface.height_m(0, 0) - std::cos((k + phi) * theta)));  // at cell (0, 0): z0 = 1
+    }
+  return worst;
+}
+
+BOOST_AUTO_TEST_CASE(level_between_steps_is_first_order_held_and_second_order_extrapolated) {
+  // Oracle: the exact mode above. Held over a step, the level is off by up to ω Δt (first order);
+  // the line through the last two levels by θ(1 + θ) (ω Δt)²/2 (second order: model/water/
+  // height_field_surface.hpp). Observed orders from Δt and Δt/2 (σ = 0.2, 0.1: ω Δt = 0.078 and
+  // 0.039); tolerance 0.15 on the order: the next term of each error's expansion is O(ω Δt), under
+  // 10 % of the leading one here, which moves a log2 ratio by less than 0.15.
+  const double held = std::log2(level_between_steps_error(LevelInTime::held, 0.2) / level_between_steps_error(LevelInTime::held, 0.1));
+  const double extrapolated = std::log2(level_between_steps_error(LevelInTime::extrapolated, 0.2) /
+                                        level_between_steps_error(LevelInTime::extrapolated, 0.1));
+  BOOST_TEST_MESSAGE("observed orders: held " << held << ", extrapolated " << extrapolated);
+  BOOST_TEST(std::abs(held - 1) <= 0.15);
+  BOOST_TEST(std::abs(extrapolated - 2) <= 0.15);
+  // And the size: at ω Δt = 0.039 the held level is off by about 0.9 ω Δt, the extrapolated one
+  // by about 0.9 · 1.9 (ω Δt)²/2 (within 10 %, the next term).
+  const double w_dt = std::acos(1 + 0.01 * named_stencil("five_point").symbol(2 * M_PI / 16, 0) / 2);
+  BOOST_TEST(std::abs(level_between_steps_error(LevelInTime::held, 0.1) / (0.9 * w_dt) - 1) <= 0.1);
+  BOOST_TEST(std::abs(level_between_steps_error(LevelInTime::extrapolated, 0.1) / (0.9 * 1.9 * w_dt * w_dt / 2) - 1) <= 0.1);
+}
+
 BOOST_AUTO_TEST_CASE(gaussian_disturbance_peaks_at_its_centre_with_its_amplitude) {
   // Oracle: A exp(0) at the centre cell; the periodic images add A·exp(−(L/w)²) ≈ 1e-43, nothing.
   Disturbance d;

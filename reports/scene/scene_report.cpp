@@ -9,6 +9,7 @@
 #include "reports/common/markdown.hpp"
 #include "reports/common/plot.hpp"
 #include "reports/scene/frame_plot.hpp"
+#include "reports/scene/water_step_part.hpp"
 #include "verification/study/stored_values.hpp"
 
 namespace stoneskip {
@@ -464,8 +465,13 @@ SectionOutput grid_section(const Record& g) {
          (g.has_number("end_s") ? fmt(g.number("end_s"), 3) + " s" : std::string("the scene's end (the stone never touched: nothing was run)")) +
          ". There is no exact solution of the coupled scene: what can be asked is whether its answers settle as the cells "
          "shrink — whether every change is smaller than the one before. A table's last row (\"step ½\") is its finest grid again "
-         "with the water step halved: the stone sees the surface held over each water step, so an event time carries a "
-         "first-order error of that step, which this sequence (σ fixed) does not separate from the cell's; a quantity whose "
+         "with the water step halved: " +
+         (g.has_text("level_in_time") && g.text("level_in_time") == "extrapolated"
+              ? std::string("the stone reads the surface extrapolated from the last two water steps, so an event time carries a "
+                            "second-order error of that step")
+              : std::string("the stone sees the surface held over each water step, so an event time carries a first-order error of "
+                            "that step")) +
+         ", which this sequence (σ fixed) does not separate from the cell's; a quantity whose "
          "changes do not shrink but whose last change is no larger than what halving the step moves it is *not decided*. "
          "The stone is " + fmt(100 * g.number("stone_diameter_m"), 3) +
          " cm across. " + grid_head_words(g.text("forcing"), own_width, passes));
@@ -507,6 +513,8 @@ SectionOutput grid_section(const Record& g) {
     w.figure(grid_figure("grid_exit_speed", "The first contact's exit speed, as the cells shrink", seqs, titles, "first_exit_m_s",
                          "exit speed (m/s)"));
   }
+  // The water step alone at the scene's cell (stored since 7 December, with level_in_time).
+  if (g.has_child("water_step")) water_step_part(w, g.at("water_step"));
   return w.finish();
 }
 

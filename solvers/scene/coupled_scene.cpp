@@ -70,6 +70,17 @@ bool parse_free_water(const std::string& s, FreeWater& out) {
   return false;
 }
 
+const char* to_string(LevelInTime l) { return l == LevelInTime::held ? "held" : "extrapolated"; }
+
+bool parse_level_in_time(const std::string& s, LevelInTime& out) {
+  for (LevelInTime l : {LevelInTime::held, LevelInTime::extrapolated})
+    if (s == to_string(l)) {
+      out = l;
+      return true;
+    }
+  return false;
+}
+
 double EnergyBudget::residual() const {
   const double gained = end_J - start_J;
   const double scale = std::max({std::abs(pressure_work_J), std::abs(gained), damping_loss_J});
@@ -168,7 +179,8 @@ class SceneLoop {
     if (o.coupling != Coupling::none) {
       field_ = std::make_unique<HeightField>(o.water->field);
       if (!o.water->initial_m.empty()) field_->set_state(o.water->initial_m);
-      surface_ = std::make_unique<HeightFieldSurface>(*field_, o.water->placement.origin_x_m, o.water->placement.origin_y_m);
+      surface_ = std::make_unique<HeightFieldSurface>(*field_, o.water->placement.origin_x_m, o.water->placement.origin_y_m,
+                                                      o.level_in_time);
       out_.volume_start_m3 = field_->volume_m3();
       dt_s_ = o.water->field.dt_s;
       stays_flat_ = (o.coupling == Coupling::one_way || o.water->field.wave_speed_m_s == 0) &&
@@ -218,7 +230,8 @@ class SceneLoop {
       catch_up(t_s, &s);
       if (two_way_) track_stone_force(impulse_N_s);
     }
-    take_deferred();  // the stone's next step reads the surface
+    take_deferred();  // the stone's next step reads the surface, at its start (HeightFieldSurface)
+    if (surface_) surface_->set_time(t_s);
     while (closed_ < frames_ && frame_time(closed_ + 1) <= t_s) close_frame(StoneStatus::in_play, s);
   }
 
@@ -291,6 +304,7 @@ class SceneLoop {
         }
         if (due > 0 && s) {
           take_deferred();  // the sample reads the surface
+          surface_->set_time(t_s);
           last_sample_s_ = t_s;
           sample(*s, due);
         } else if (due > 0) {

@@ -24,7 +24,8 @@
 //                 (the exact weights of a second difference: z(t+Δt) − 2z(t) + z(t−Δt) =
 //                 ∫ hat z_tt), so the forced step stays second order in Δt under a footprint that
 //                 jumps between grid cells. The field's level n is the surface the stone sees during
-//                 [t_n, t_n+1): step n needs h up to t_n+1.
+//                 [t_n, t_n+1) (held, or extrapolated from levels n − 1 and n: SceneOptions::
+//                 level_in_time): step n needs h up to t_n+1.
 //   displacement  h = b, the stone's draught (model/coupling/draught.hpp; the first model, kept
 //                 for comparison: model/README.md §2.4). The field's level n is the surface the
 //                 stone sees during [t_n − Δt/2, t_n + Δt/2); when the stone's clock passes
@@ -59,6 +60,7 @@
 
 #include "model/coupling/draught.hpp"
 #include "model/water/height_field.hpp"
+#include "model/water/height_field_surface.hpp"
 #include "solvers/realtime/stone_stepper.hpp"
 
 namespace stoneskip {
@@ -106,6 +108,8 @@ int pressure_smoothing_passes(double head_width_m, double cell_m);
 //                      to_the_next_frame.
 enum class FreeWater { one_at_a_time, to_the_next_frame, to_the_next_look };
 const char* to_string(FreeWater f);
+const char* to_string(LevelInTime l);
+bool parse_level_in_time(const std::string& s, LevelInTime& out);
 bool parse_free_water(const std::string& s, FreeWater& out);
 
 // How far a scene runs: to its duration whatever the stone does (watching it), or only as long as
@@ -130,6 +134,9 @@ struct SceneOptions {
   // two_way, pressure: the head's standard deviation in metres (pressure_smoothing_passes); 0: a
   // fixed number of cells (the scene as the paper's real-time model would run it).
   double head_width_m = 0;
+  // The level the stone reads between water steps (model/water/height_field_surface.hpp): the last
+  // one held, or the line through the last two extrapolated to the stone step's start.
+  LevelInTime level_in_time = LevelInTime::held;
   // Measure the waves' energy budget (solvers/scene/wave_energy.hpp): two transforms of the grid per
   // water step, so off where speed is measured.
   bool energy_budget = false;

@@ -208,6 +208,8 @@ nlohmann::json json_of(const StoneCase& c, const SceneOptions& o, const SceneSum
   j["max_draught_volume_m3"] = s.max_draught_volume_m3;
   j["draught_impulse_m3_s"] = s.draught_impulse_m3_s;
   j["water_volume_change_m3"] = s.volume_end_m3 - s.volume_start_m3;
+  // The level the stone reads between water steps (model/water/height_field_surface.hpp).
+  if (o.water) j["level_in_time"] = to_string(o.level_in_time);
   if (o.coupling == Coupling::two_way) {
     // model/README.md §2.4: what the water received against what the stone received, and the
     // waves' energy budget (solvers/scene/wave_energy.hpp).
@@ -293,6 +295,7 @@ std::string text_of(const StoneCase& c, const SceneOptions& o, const SceneSummar
                 : std::string())
         << "), volume change " << general(s.volume_end_m3 - s.volume_start_m3, 2) << " m³";
     if (o.water->field.mode == StepMode::active_tiles) m << "; active tiles: " << s.tiles.brief();
+    m << "; the stone reads the level " << (o.level_in_time == LevelInTime::held ? "held over each step" : "extrapolated between steps");
     m << "\n";
   }
   return m.str();

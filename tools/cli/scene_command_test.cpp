@@ -79,6 +79,7 @@ BOOST_AUTO_TEST_CASE(json_reports_frames_speed_and_parts) {
   // stone's vertical impulse (smoothing keeps the head's sum: model/README.md §2.4).
   BOOST_TEST(j["head_width_m"].get<double>() == 0.0);
   BOOST_TEST(j["head_smoothing_passes"].get<int>() == 3);
+  BOOST_TEST(j["level_in_time"].get<std::string>() == "held");  // the default (model/water/height_field_surface.hpp)
   const auto wide = run_stoneskip("scene " + small_seed(0.2) + " --set water.head_width_m=0.05 --json", false);
   BOOST_REQUIRE_MESSAGE(wide.status == 0, wide.out);
   const auto w = nlohmann::json::parse(wide.out);

@@ -36,6 +36,12 @@ WaterScene read_water(TomlTable w, TomlTable& top) {
   if (width_given && (scene.coupling != Coupling::two_way || scene.forcing != Forcing::pressure))
     w.fail("head_width_m", "is used only with coupling = \"two_way\" and forcing = \"pressure\" (it widens the head the "
                            "stone presses on the water with)");
+  // The level the stone reads between water steps (model/water/height_field_surface.hpp).
+  const std::string in_time = w.string_or("level_in_time", to_string(scene.level_in_time));
+  if (!parse_level_in_time(in_time, scene.level_in_time))
+    w.fail("level_in_time", "'" + in_time + "' is not one of held, extrapolated");
+  if (w.has("level_in_time") && scene.coupling == Coupling::none)
+    w.fail("level_in_time", "is used only with coupling = \"one_way\" or \"two_way\" (with none the stone reads still water)");
   // How the field is computed (model/water/height_field.hpp); read before read_height_field,
   // which finishes the table (the keys read here count as known there).
   HeightFieldOptions how;
@@ -139,6 +145,7 @@ std::string scene_settings_toml(const std::optional<WaterScene>& water, const Sc
     s << "\n[water]\ncoupling = \"" << to_string(water->coupling) << "\"\nforcing = \"" << to_string(water->forcing)
       << "\"\ndraught_samples = " << water->draught_samples;
     if (water->head_width_m > 0) s << "\nhead_width_m = " << water->head_width_m;
+    s << "\nlevel_in_time = \"" << to_string(water->level_in_time) << "\"";
     s << "\nstencil = \"" << f.stencil.name << "\"  # weights × 1/d²: " << f.stencil.centre << ", " << f.stencil.orth << ", "
       << f.stencil.diag << "\nnx = " << f.nx << "\nny = " << f.ny << "\ncell_m = " << f.cell_m
       << "\nwave_speed_m_s = " << f.wave_speed_m_s << "\ndamping_per_s = " << f.damping_per_s << "\nboundary = \""

@@ -34,6 +34,7 @@ struct WaterScene {
   Forcing forcing = Forcing::pressure;
   int draught_samples = 8;             // K samples of b per water step (two_way, displacement)
   double head_width_m = 0;             // two_way, pressure: SceneOptions::head_width_m (0: a fixed number of cells)
+  LevelInTime level_in_time = LevelInTime::held;  // SceneOptions::level_in_time
 };
 
 // [scene]: the frames. Without a duration the scene lasts the stone's t_max_s.

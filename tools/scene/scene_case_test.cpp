@@ -42,6 +42,18 @@ StoneCase pond(const std::vector<std::string>& sets, const std::string& extra = 
   return stone_case_from_document(parse_toml_text(std::string(kPond) + extra, "pond.toml", sets));
 }
 
+// A pond case with these overrides must be refused in one error naming `key` and saying `words`.
+void refused_at(const std::string& key, const std::vector<std::string>& sets, const std::string& words) {
+  try {
+    pond(sets);
+    BOOST_ERROR("no error for " << sets.back());
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    BOOST_TEST(m.find(key) != std::string::npos, m);
+    BOOST_TEST(m.find(words) != std::string::npos, m);
+  }
+}
+
 bool names(const InputError& e, const std::string& key) { return std::string(e.what()).find(key) != std::string::npos; }
 
 }  // namespace
@@ -141,20 +153,25 @@ BOOST_AUTO_TEST_CASE(a_head_width_is_read_where_there_is_a_head_and_refused_wher
   BOOST_TEST(c.water->head_width_m == 0.05);
   BOOST_TEST(scene_options(c, SceneEnd::at_duration).head_width_m == 0.05);
   BOOST_TEST(pond({"water.head_width_m=0.16"}).water->head_width_m == 0.16);
-  auto refused = [](const std::vector<std::string>& sets, const std::string& words) {
-    try {
-      pond(sets);
-      BOOST_ERROR("no error for " << sets.back());
-    } catch (const InputError& e) {
-      const std::string m = e.what();
-      BOOST_TEST(m.find("water.head_width_m") != std::string::npos, m);
-      BOOST_TEST(m.find(words) != std::string::npos, m);
-    }
-  };
+  auto refused = [](const std::vector<std::string>& sets, const std::string& words) { refused_at("water.head_width_m", sets, words); };
   refused({"water.head_width_m=0.17"}, "take head_width_m <= 0.16");
   refused({"water.head_width_m=-0.01"}, "water.head_width_m");
   refused({"water.coupling=one_way", "water.head_width_m=0.05"}, "only with coupling = \"two_way\"");
   refused({"water.forcing=displacement", "water.head_width_m=0.05"}, "forcing = \"pressure\"");
+}
+
+BOOST_AUTO_TEST_CASE(the_level_in_time_is_read_where_there_is_water_and_refused_where_not_or_misspelt) {
+  // Oracle: model/water/height_field_surface.hpp: held by default (the real-time loop's reading),
+  // extrapolated when asked, and that reaches the scene's options; a value that is neither, or the
+  // key on a case whose stone reads still water (coupling none), is refused at its key.
+  BOOST_TEST((pond({}).water->level_in_time == LevelInTime::held));
+  const StoneCase c = pond({"water.level_in_time=extrapolated"});
+  BOOST_TEST((c.water->level_in_time == LevelInTime::extrapolated));
+  BOOST_TEST((scene_options(c, SceneEnd::at_duration).level_in_time == LevelInTime::extrapolated));
+  BOOST_TEST((pond({"water.coupling=one_way", "water.level_in_time=extrapolated"}).water->level_in_time == LevelInTime::extrapolated));
+  auto refused = [](const std::vector<std::string>& sets, const std::string& words) { refused_at("water.level_in_time", sets, words); };
+  refused({"water.level_in_time=extrapolate"}, "'extrapolate' is not one of held, extrapolated");
+  refused({"water.coupling=none", "water.level_in_time=held"}, "with none the stone reads still water");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -169,11 +169,7 @@ SceneStudyFile load_scene_study_file(const std::string& path, const std::vector<
   if (auto t = top.maybe_table("grid")) {
     SceneGridOptions& g = o.grid;
     known_case(*t, "case", g.case_name);
-    g.cell_fractions = positive_list(*t, "cell_fractions", g.cell_fractions);
-    if (g.cell_fractions.size() < 3) t->fail("cell_fractions", "needs at least three (a change against the one before)");
-    for (std::size_t i = 0; i < g.cell_fractions.size(); ++i)
-      if (g.cell_fractions[i] > 1 || (i > 0 && !(g.cell_fractions[i] < g.cell_fractions[i - 1])))
-        t->fail("cell_fractions", "fractions of the case's cell in (0, 1], decreasing strictly (coarse to fine)");
+    g.cell_fractions = refining_fractions(*t, "cell_fractions", g.cell_fractions, 3, "the case's cell");
     g.pond_m = positive(*t, "pond_m", g.pond_m);
     t->require_in("pond_m", g.pond_m, 0.01, 1000.0);
     g.after_s = t->number_or("after_s", g.after_s);
@@ -183,7 +179,15 @@ SceneStudyFile load_scene_study_file(const std::string& path, const std::vector<
       for (double w : g.head_widths_m)
         if (!(w > 0 && w <= 1)) t->fail("head_widths_m", "each a width in (0, 1] m (the head's standard deviation)");
     }
+    const std::string problem = grid_case_problem(o);
+    if (!problem.empty()) t->fail("case", problem);
+    g.step_fractions = refining_fractions(*t, "step_fractions", g.step_fractions, 2, "the case's water step");
+    g.reference_step_fraction = positive(*t, "reference_step_fraction", g.reference_step_fraction);
+    if (!(g.reference_step_fraction < g.step_fractions.back()))
+      t->fail("reference_step_fraction", "must be below the finest of step_fractions (" + std::to_string(g.step_fractions.back()) + ")");
     t->finish();
+  } else if (const std::string problem = grid_case_problem(o); !problem.empty()) {
+    top.fail("grid", problem + " (without [grid] the section takes the first case)");
   }
   {
     HeadlineSpeedOptions& h = o.speed.headline;

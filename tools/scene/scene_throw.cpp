@@ -23,6 +23,7 @@ SceneOptions scene_options(const StoneCase& c, SceneEnd end) {
     o.draught_samples = w.draught_samples;
     o.forcing = w.forcing;
     o.head_width_m = w.head_width_m;
+    o.level_in_time = w.level_in_time;
   }
   return o;
 }

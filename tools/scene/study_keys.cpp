@@ -18,6 +18,16 @@ std::vector<double> any_list(TomlTable& t, const std::string& key, const std::ve
   return *v;
 }
 
+std::vector<double> refining_fractions(TomlTable& t, const std::string& key, const std::vector<double>& fallback, std::size_t least,
+                                       const std::string& of_what) {
+  std::vector<double> v = positive_list(t, key, fallback);
+  if (v.size() < least) t.fail(key, "needs at least " + std::to_string(least) + " (each compared with the one before)");
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (v[i] > 1 || (i > 0 && !(v[i] < v[i - 1])))
+      t.fail(key, "fractions of " + of_what + " in (0, 1], decreasing strictly (coarse to fine)");
+  return v;
+}
+
 double positive(TomlTable& t, const std::string& key, double fallback) {
   const double v = t.number_or(key, fallback);
   t.require_positive(key, v);

@@ -11,6 +11,10 @@ namespace stoneskip {
 // A non-empty array of numbers, each > 0 (or any finite number for any_list); `fallback` if absent.
 std::vector<double> positive_list(TomlTable& t, const std::string& key, const std::vector<double>& fallback);
 std::vector<double> any_list(TomlTable& t, const std::string& key, const std::vector<double>& fallback);
+// Fractions in (0, 1], at least `least` of them, decreasing strictly (coarse to fine), each a
+// fraction of `of_what` (as the error says); `fallback` if absent.
+std::vector<double> refining_fractions(TomlTable& t, const std::string& key, const std::vector<double>& fallback, std::size_t least,
+                                       const std::string& of_what);
 // A number > 0; `fallback` if absent.
 double positive(TomlTable& t, const std::string& key, double fallback);
 // A whole number in [lo, hi]; `fallback` if absent.

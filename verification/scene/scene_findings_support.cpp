@@ -61,4 +61,19 @@ void store_scene_settings(Record& r, const SceneStudyCase& c, const SceneOptions
   }
 }
 
+void place_on_pond(SceneOptions& s, const Vec3& first_touch_m, double pond_m, double cell_m, double dt_s) {
+  HeightFieldOptions& w = s.water->field;
+  w.cell_m = cell_m;
+  w.dt_s = dt_s;
+  w.nx = w.ny = static_cast<int>(std::ceil(pond_m / cell_m)) + 1;
+  s.water->placement.origin_x_m = first_touch_m.x() - 0.25 * pond_m;
+  s.water->placement.origin_y_m = first_touch_m.y() - 0.5 * pond_m;
+}
+
+std::string joined(const std::vector<std::string>& items, const std::string& separator) {
+  std::string s;
+  for (std::size_t i = 0; i < items.size(); ++i) s += (i ? separator : "") + items[i];
+  return s;
+}
+
 }  // namespace stoneskip::scene_findings

@@ -13,6 +13,13 @@ namespace stoneskip::scene_findings {
 inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 Table table(std::vector<std::string> columns);
+// A quantity a section's tables and reasons carry.
+struct SectionQuantity {
+  const char* key;    // its column in the section's tables (and the suffix of its verdict inputs)
+  const char* words;  // as the reasons name it
+  double scale;       // to the unit it is said in
+  const char* unit;
+};
 // The scene as the study runs it: cut to the preset's duration cap.
 SceneOptions capped(const SceneStudiesOptions& o, SceneOptions s);
 // The case named (the first if the name is empty); throws std::invalid_argument if none is.
@@ -23,8 +30,13 @@ std::string mm(double m);
 // A time or a length in the unit that reads best (a contact moved by 0.97 s, not 9.7e5 µs).
 std::string duration(double s);
 std::string length(double m);
+// The items joined by `separator`.
+std::string joined(const std::vector<std::string>& items, const std::string& separator);
 // "1 contact", "2 contacts".
 std::string counted(long n, const std::string& noun);
+// The scene on a pond of pond_m × pond_m around a first touch (a quarter of the pond behind it, in
+// the middle across), cells of cell_m, the water step dt_s: what the grid section runs.
+void place_on_pond(SceneOptions& s, const Vec3& first_touch_m, double pond_m, double cell_m, double dt_s);
 // The case's settings as the report states them (title, convention, coupling, frames, grid, σ …).
 void store_scene_settings(Record& r, const SceneStudyCase& c, const SceneOptions& s);
 

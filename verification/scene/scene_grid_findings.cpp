@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "verification/scene/scene_findings_support.hpp"
+#include "verification/scene/scene_step_findings.hpp"
 #include "verification/scene/scene_studies.hpp"
 #include "verification/study/verdict_rules.hpp"
 #include "verification/study/words.hpp"
@@ -17,21 +18,9 @@ namespace {
 // The largest grid side run: a finer grid is left out (said), not run for minutes.
 constexpr int kMaxGridSide = 2048;
 
-struct GridQuantity {
-  const char* key;    // the table's column and the verdict input's suffix
-  const char* words;  // as the report names it
-  double scale;       // to the unit it is said in
-  const char* unit;
-};
-constexpr GridQuantity kQuantities[] = {{"pressure_work_J", "the pressure work put into the waves", 1, "J"},
+constexpr SectionQuantity kQuantities[] = {{"pressure_work_J", "the pressure work put into the waves", 1, "J"},
                                         {"first_duration_s", "the first contact's duration", 1e3, "ms"},
                                         {"first_exit_m_s", "the first contact's exit speed", 1, "m/s"}};
-
-std::string joined(const std::vector<std::string>& v) {
-  std::string s;
-  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? "; " : "") + v[i];
-  return s;
-}
 
 Table grid_table() {
   Table t = table({"cell_fraction", "cell_m", "n", "water_dt_s", "cells_across_stone", "smoothing_passes", "pressure_work_J",
@@ -70,12 +59,8 @@ void grid_sequence(const SceneOptions& base, const ContactRecord& k, double end_
     s.duration_s = end_s;
     s.energy_budget = true;  // the pressure work W (solvers/scene/wave_energy.hpp)
     s.head_width_m = head_width_m;
-    HeightFieldOptions& w = s.water->field;
-    w.cell_m = base.water->field.cell_m * f;
-    w.dt_s = base.water->field.dt_s * f * dt_scale;
-    w.nx = w.ny = static_cast<int>(std::ceil(g.pond_m / w.cell_m)) + 1;
-    s.water->placement.origin_x_m = k.first_touch_m.x() - 0.25 * g.pond_m;
-    s.water->placement.origin_y_m = k.first_touch_m.y() - 0.5 * g.pond_m;
+    place_on_pond(s, k.first_touch_m, g.pond_m, base.water->field.cell_m * f, base.water->field.dt_s * f * dt_scale);
+    const HeightFieldOptions& w = s.water->field;
     const SceneSummary r = run_scene(s);
     const bool touched = !r.stone.contacts.empty();
     const ContactRecord* c1 = touched ? &r.stone.contacts.front() : nullptr;
@@ -107,7 +92,7 @@ void grid_sequence(const SceneOptions& base, const ContactRecord& k, double end_
     // Each change of each quantity against the one before as the cells get finer: the largest
     // such ratio must be < 1 (every change shrinking). A change after none is NaN (not < 1).
     std::vector<std::string> growing, shrinking;
-    for (const GridQuantity& q : kQuantities) {
+    for (const SectionQuantity& q : kQuantities) {
       const auto v = t.column(q.key);
       double ratio = 0;
       for (std::size_t j = 2; j < n; ++j) {
@@ -128,8 +113,8 @@ void grid_sequence(const SceneOptions& base, const ContactRecord& k, double end_
       (ratio < 1 ? shrinking : growing)
           .push_back(std::string(q.words) + " (a change " + num(ratio, 3) + "× the one before; " + sizes + ")");
     }
-    reason = growing.empty() ? "each quantity's change shrinks with the finer grid: " + joined(shrinking)
-                             : "changes that do not shrink as the cells get finer: " + joined(growing);
+    reason = growing.empty() ? "each quantity's change shrinks with the finer grid: " + joined(shrinking, "; ")
+                             : "changes that do not shrink as the cells get finer: " + joined(growing, "; ");
   }
   out.set_table("grids", t);
   out.set_table("half_step", half_step);
@@ -156,6 +141,7 @@ Record scene_grid_findings(const SceneStudiesOptions& o, const ProgressFactory& 
   out.set("base_water_dt_s", base.water->field.dt_s);
   out.set("stone_diameter_m", 2 * base.stone.disk_radius_m);
   out.set("forcing", std::string(to_string(base.forcing)));
+  out.set("level_in_time", std::string(to_string(base.level_in_time)));
   out.set("max_width_cells", double(kMaxHeadWidthCells));
   out.set("default_passes", double(kPressureSmoothingPasses));
   // Where and when the stone first meets still water: the pond is put around it.
@@ -186,6 +172,8 @@ Record scene_grid_findings(const SceneStudiesOptions& o, const ProgressFactory& 
       grid_sequence(base, k, end_s, g, g.head_widths_m[i], progress, "scene: grids, head " + num(100 * g.head_widths_m[i], 3) + " cm",
                     widths.child(std::to_string(i)));
   }
+  // The water step alone, at the case's cell: the level held against extrapolated.
+  water_step_study(base, k, end_s, g, progress, out.child("water_step"));
   return out;
 }
 

@@ -16,6 +16,16 @@ namespace stoneskip {
 
 using namespace scene_findings;
 
+std::string grid_case_problem(const SceneStudiesOptions& o) {
+  const SceneStudyCase* c = &o.cases.front();
+  for (const auto& k : o.cases)
+    if (k.name == o.grid.case_name) c = &k;
+  const auto& z = c->scene.water ? c->scene.water->initial_m : std::vector<double>{};
+  if (std::all_of(z.begin(), z.end(), [](double v) { return v == 0; })) return "";
+  return "'" + c->name + "' starts from a disturbed surface ([water.initial]): the grid section moves the pond around the first "
+         "touch and changes its cells, and does not resample an initial surface; name a case on still water";
+}
+
 bool SceneStudiesOptions::valid(std::string* why) const {
   auto fail = [&](const std::string& w) {
     if (why) *why = w;
@@ -44,6 +54,10 @@ bool SceneStudiesOptions::valid(std::string* why) const {
     if (!(e > 0)) return fail("shortcuts: epsilons must be > 0 (ε = 0 is always run)");
   if (!(duration_cap_s >= 0)) return fail("duration_cap_s must be >= 0");
   if (!known(grid.case_name)) return fail("grid: no case named '" + grid.case_name + "'");
+  {
+    const std::string problem = grid_case_problem(*this);
+    if (!problem.empty()) return fail("grid: " + problem);
+  }
   if (grid.cell_fractions.size() < 3) return fail("grid: at least three cell fractions (the differences of three grids)");
   for (std::size_t i = 0; i < grid.cell_fractions.size(); ++i)
     if (!(grid.cell_fractions[i] > 0 && grid.cell_fractions[i] <= 1) || (i > 0 && !(grid.cell_fractions[i] < grid.cell_fractions[i - 1])))
@@ -51,6 +65,12 @@ bool SceneStudiesOptions::valid(std::string* why) const {
   if (!(grid.pond_m > 0) || !(grid.after_s >= 0)) return fail("grid: pond_m > 0 and after_s >= 0");
   for (double width : grid.head_widths_m)
     if (!(width > 0 && width <= 1)) return fail("grid: head widths must lie in (0, 1] m");
+  if (grid.step_fractions.size() < 2) return fail("grid: at least two step fractions");
+  for (std::size_t i = 0; i < grid.step_fractions.size(); ++i)
+    if (!(grid.step_fractions[i] > 0 && grid.step_fractions[i] <= 1) || (i > 0 && !(grid.step_fractions[i] < grid.step_fractions[i - 1])))
+      return fail("grid: step fractions must lie in (0, 1] and decrease strictly (coarse to fine)");
+  if (!(grid.reference_step_fraction > 0 && grid.reference_step_fraction < grid.step_fractions.back()))
+    return fail("grid: the reference step fraction must be > 0 and below the finest step fraction");
   return true;
 }
 

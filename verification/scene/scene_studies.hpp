@@ -68,14 +68,25 @@ struct SceneShortcutOptions {
 // pressure work put into the waves and the first contact's duration and exit speed, whose
 // successive differences must shrink as the cells halve. Then the same grids again with the head
 // smoothed to each of `head_widths_m` in metres (SceneOptions::head_width_m), not over a fixed
-// number of cells: does a head of fixed width make the scene converge?
+// number of cells: does a head of fixed width make the scene converge? And at the case's own cell,
+// the water step alone refined, with the level the stone reads held and extrapolated.
 struct SceneGridOptions {
   std::string case_name;                           // which scene (default: the first)
   std::vector<double> cell_fractions{1, 0.5, 0.25, 0.125};  // of the case's cell, coarse to fine (≥ 3)
   double pond_m = 2;
   double after_s = 0.05;
   std::vector<double> head_widths_m{0.02};         // each > 0 (may be empty: pressure forcing only)
+  // The level between water steps (scene_step_findings.hpp): at the case's own cell, water steps of
+  // these fractions of its own (≥ 2, coarse to fine), the stone reading the level held and
+  // extrapolated, against a step of reference_step_fraction (below the finest).
+  std::vector<double> step_fractions{1, 0.5, 0.25, 0.125};
+  double reference_step_fraction = 1.0 / 64;
 };
+
+struct SceneStudiesOptions;
+// Why the grid section cannot run its case ("" if it can): a case starting from a disturbed
+// surface, whose initial heights belong to its own grid (the section's ponds are other grids).
+std::string grid_case_problem(const SceneStudiesOptions& o);
 
 struct SceneSpeedOptions {
   HeadlineSpeedOptions headline;                  // its scene is the first case's unless set

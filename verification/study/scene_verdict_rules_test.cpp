@@ -105,6 +105,28 @@ BOOST_AUTO_TEST_CASE(the_scene_converges_under_refinement_only_where_every_chang
   BOOST_TEST(decide("grid_differences", in) == "not decided: fewer than three grids");
 }
 
+BOOST_AUTO_TEST_CASE(a_level_reading_is_closer_only_where_every_resolved_comparison_says_so) {
+  // Oracle: the rule's definition (verification/scene/scene_step_findings.cpp): the counts of
+  // resolved comparisons each reading wins; none resolved, or a run without contact, decides nothing.
+  Record in;
+  in.set("closer", 9.0).set("farther", 0.0).set("unresolved", 3.0).set("missing", 0.0);
+  BOOST_TEST(decide("level_in_time", in) == "the extrapolated level is closer to the reference wherever the difference is resolved");
+  in.set("farther", 1.0);
+  BOOST_TEST(decide("level_in_time", in) == "neither level is closer at every step");
+  in.set("finest_closer", 3.0).set("finest_farther", 0.0);  // the held level won only on coarser steps
+  BOOST_TEST(decide("level_in_time", in) == "the extrapolated level is closer at the finest step, not at every step");
+  in.set("finest_closer", 0.0).set("finest_farther", 1.0);
+  BOOST_TEST(decide("level_in_time", in) == "the held level is closer at the finest step, not at every step");
+  in.set("finest_closer", 2.0);
+  BOOST_TEST(decide("level_in_time", in) == "neither level is closer at every step");
+  in.set("closer", 0.0);
+  BOOST_TEST(decide("level_in_time", in) == "the held level is closer to the reference wherever the difference is resolved");
+  in.set("farther", 0.0);
+  BOOST_TEST(decide("level_in_time", in) == "not decided: the reference does not resolve the difference");
+  in.set("closer", 5.0).set("missing", 1.0);
+  BOOST_TEST(decide("level_in_time", in) == "not decided: a run made no contact");
+}
+
 BOOST_AUTO_TEST_SUITE_END()
 
 }  // namespace

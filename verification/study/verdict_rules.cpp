@@ -361,6 +361,24 @@ const std::map<std::string, Rule>& rules() {
            return "not decided: " + joined(within_step) + " change no more than halving the water step moves them";
          return std::string("the changes shrink as the cells halve");
        }},
+      {"level_in_time",
+       [](const Record& in) {
+         // verification/scene/scene_step_findings.cpp: at each step and quantity, which reading's
+         // error against the fine-step reference is smaller, where the two differ by more than
+         // twice the reference's own gap (closer: the extrapolated level's; farther: the held one's).
+         if (in.number("missing") > 0) return std::string("not decided: a run made no contact");
+         const double closer = in.number("closer"), farther = in.number("farther");
+         if (closer + farther == 0) return std::string("not decided: the reference does not resolve the difference");
+         if (farther == 0) return std::string("the extrapolated level is closer to the reference wherever the difference is resolved");
+         if (closer == 0) return std::string("the held level is closer to the reference wherever the difference is resolved");
+         // Both win somewhere: which one wins every resolved comparison at the finest step (records
+         // before these inputs: not asked).
+         const auto at_finest = [&](const char* k) { return in.has_number(k) ? in.number(k) : 0.0; };
+         const double fc = at_finest("finest_closer"), ff = at_finest("finest_farther");
+         if (fc > 0 && ff == 0) return std::string("the extrapolated level is closer at the finest step, not at every step");
+         if (ff > 0 && fc == 0) return std::string("the held level is closer at the finest step, not at every step");
+         return std::string("neither level is closer at every step");
+       }},
       {"error_split",
        [](const Record& in) {
          if (in.flag("space_converges")) return std::string("converges in space");
