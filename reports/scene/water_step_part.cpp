@@ -13,13 +13,9 @@ namespace {
 struct Quantity {
   const char* key;    // the stored column; its error is error_<key>
   const char* words;  // as the page names it
-  double scale;
-  const char* unit;
-  int digits;         // significant figures of the value
+  double scale;       // to the unit its figure's axis is in
 };
-constexpr Quantity kQuantities[] = {{"first_start_s", "first touch", 1e3, "ms", 7},
-                                    {"first_duration_s", "first contact", 1e3, "ms", 5},
-                                    {"first_exit_m_s", "exit speed", 1, "m/s", 5}};
+constexpr Quantity kQuantities[] = {{"first_start_s", "first touch", 1e3}, {"first_duration_s", "first contact", 1e3}, {"first_exit_m_s", "exit speed", 1}};
 
 // "p = 1.9 [1.2, 2.6] (4 points)", or why there is none.
 std::string order_words(const Record& ws, const std::string& reading, const char* key) {

@@ -54,7 +54,7 @@ void water_step_study(const SceneOptions& base, const ContactRecord& touch, doub
   const auto ref_of = [&](const char* key, std::size_t row) { return reference.column(key)[row]; };
   Record in;
   double closer = 0, farther = 0, unresolved = 0, missing = 0, finest_closer = 0, finest_farther = 0;
-  std::vector<std::string> orders, resolved_words;
+  std::vector<std::string> resolved_words;
   std::vector<Table> tables;
   for (LevelInTime reading : {LevelInTime::held, LevelInTime::extrapolated}) {
     Table t = step_table();
@@ -139,8 +139,7 @@ void water_step_study(const SceneOptions& base, const ContactRecord& touch, doub
     for (double c : tables[k].column("contacts")) same += c == ref_of("contacts", 0);
     out.set(std::string(k == 0 ? "held" : "extrapolated") + ".contacts_as_reference", same);
   }
-  std::string reason;
-  for (const auto& w : resolved_words) reason += (reason.empty() ? "" : "; ") + w;
+  std::string reason = joined(resolved_words, "; ");
   if (missing > 0) reason = std::to_string(int(missing)) + " comparison(s) with a run that made no contact; " + reason;
   decide_verdict(out, "verdict", "level_in_time", in, reason);
 }
