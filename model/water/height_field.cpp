@@ -634,8 +634,7 @@ double HeightField::volume_m3() const {
   return s * options_.cell_m * options_.cell_m;
 }
 
-template <class Level>
-double HeightField::bilinear(double x_m, double y_m, Level level) const {
+HeightField::Bilinear HeightField::bilinear(double x_m, double y_m) const {
   const int nx = options_.nx, ny = options_.ny;
   double gx = x_m / options_.cell_m, gy = y_m / options_.cell_m;
   const bool wrap_xy = options_.boundary == Boundary::periodic;
@@ -656,16 +655,20 @@ double HeightField::bilinear(double x_m, double y_m, Level level) const {
     i1 = std::min(i1, nx - 1);
     j1 = std::min(j1, ny - 1);
   }
-  return (1 - fx) * (1 - fy) * level(i0, j0) + fx * (1 - fy) * level(i1, j0) + (1 - fx) * fy * level(i0, j1) +
-         fx * fy * level(i1, j1);
+  return {i0, i1, j0, j1, (1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
 }
 
 double HeightField::interpolate(double x_m, double y_m) const {
-  return bilinear(x_m, y_m, [this](int i, int j) { return height(i, j); });
+  const Bilinear b = bilinear(x_m, y_m);
+  return b.w00 * height(b.i0, b.j0) + b.w10 * height(b.i1, b.j0) + b.w01 * height(b.i0, b.j1) + b.w11 * height(b.i1, b.j1);
 }
 
-double HeightField::interpolate_previous(double x_m, double y_m) const {
-  return bilinear(x_m, y_m, [this](int i, int j) { return previous_height(i, j); });
+std::pair<double, double> HeightField::interpolate_both_levels(double x_m, double y_m) const {
+  const Bilinear b = bilinear(x_m, y_m);
+  auto at = [&](auto level) {
+    return b.w00 * level(b.i0, b.j0) + b.w10 * level(b.i1, b.j0) + b.w01 * level(b.i0, b.j1) + b.w11 * level(b.i1, b.j1);
+  };
+  return {at([this](int i, int j) { return height(i, j); }), at([this](int i, int j) { return previous_height(i, j); })};
 }
 
 }  // namespace stoneskip

@@ -29,6 +29,7 @@
 #include <new>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "model/water/draught_patch.hpp"
@@ -195,8 +196,8 @@ class HeightField {
   // Height at a point x = i d, y = j d in grid units (bilinear between cells); outside the grid,
   // periodic fields wrap, others take the nearest edge value.
   double interpolate(double x_m, double y_m) const;
-  // The same at the previous time level (z at time_s() − Δt).
-  double interpolate_previous(double x_m, double y_m) const;
+  // The same at both time levels at once, {z(t), z(t − Δt)}: one set of weights for the two.
+  std::pair<double, double> interpolate_both_levels(double x_m, double y_m) const;
 
  private:
   // Padded layout: row j (−G ≤ j < ny + G) starts at (j + G)·stride, G = ghost_rows_ (1, or the
@@ -214,8 +215,12 @@ class HeightField {
   int tile_of(int i, int j) const { return (j / options_.tiles.tile_cells) * tiles_x_ + i / options_.tiles.tile_cells; }
   void restart();  // after set_state/set_levels: time 0, every tile's activity measured
   void note_activity(int i, int j);  // raises cell (i, j)'s tile activity to its |z|, |z − z⁻|
-  template <class Level>
-  double bilinear(double x_m, double y_m, Level level) const;  // level(i, j): one time level's z
+  // The four cells around a point and their bilinear weights (interpolate's rule).
+  struct Bilinear {
+    int i0, i1, j0, j1;
+    double w00, w10, w01, w11;  // w_ab: the weight of cell (i_a, j_b)
+  };
+  Bilinear bilinear(double x_m, double y_m) const;
 
   HeightFieldOptions options_;
   bool f64_ = true;

@@ -26,10 +26,10 @@ class HeightFieldSurface : public WaterSurface {
   void set_time(double t_s) { t_s_ = t_s; }
   double height_m(double x_m, double y_m) const override {
     const double x = x_m - origin_x_m_, y = y_m - origin_y_m_;
-    const double z = field_.interpolate(x, y);
-    if (in_time_ == LevelInTime::held) return z;
+    if (in_time_ == LevelInTime::held) return field_.interpolate(x, y);
+    const auto [z, z_previous] = field_.interpolate_both_levels(x, y);
     const double theta = (t_s_ - field_.time_s()) / field_.options().dt_s;
-    return z + theta * (z - field_.interpolate_previous(x, y));
+    return z + theta * (z - z_previous);
   }
 
  private:
