@@ -105,6 +105,12 @@ void water_step_study(const SceneOptions& base, const ContactRecord& touch, doub
     closer += q_closer;
     farther += q_farther;
     unresolved += q_unresolved;
+    const bool same_everywhere = gap == 0 && std::all_of(held.begin(), held.end(), [](double e) { return e == 0; }) &&
+                                 std::all_of(ex.begin(), ex.end(), [](double e) { return e == 0; });
+    if (same_everywhere) {  // e.g. the first touch on water that is still until the stone reaches it
+      resolved_words.push_back(std::string(sq.words) + ": the same in every run, the reference's included");
+      continue;  // no order to fit
+    }
     resolved_words.push_back(std::string(sq.words) + ": extrapolated closer at " + std::to_string(q_closer) + ", held at " +
                              std::to_string(q_farther) + ", within the reference's gap (" + num(sq.scale * gap, 2) + " " + sq.unit +
                              ") at " + std::to_string(q_unresolved) +
