@@ -98,12 +98,12 @@ void water_step_part(SectionWriter& w, const Record& ws) {
          " Contacts as many as the reference's " + fmt(r("contacts", 0)) + ": held at " + fmt(ws.number("held.contacts_as_reference")) +
          " of " + fmt(double(held.rows())) + " steps, extrapolated at " + fmt(ws.number("extrapolated.contacts_as_reference")) + " (a surface "
          "rising under a leaving stone can touch it again: each such touch is a contact, model/README.md §1.8).");
-  std::string orders = "Observed orders over all the steps (least squares on log–log, 95 % interval; errors within twice the reference's "
-                       "gap left out): ";
+  std::string orders;
   for (std::size_t q = touch_moves ? 0 : 1; q < 3; ++q)
-    orders += std::string(q > (touch_moves ? 0u : 1u) ? "; " : "") + kQuantities[q].words + ": held " + order_words(ws, "held", kQuantities[q].key) +
+    orders += std::string(orders.empty() ? "" : "; ") + kQuantities[q].words + ": held " + order_words(ws, "held", kQuantities[q].key) +
               ", extrapolated " + order_words(ws, "extrapolated", kQuantities[q].key);
-  w.text(orders + ".");
+  w.text("Observed orders over all the steps (least squares on log–log, 95 % interval; errors within twice the reference's gap left "
+         "out): " + orders + ".");
   w.verdict("The level between water steps", ws.at("verdict"));
   w.end_list();
   if (touch_moves)
