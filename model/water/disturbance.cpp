@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 namespace stoneskip {
 
@@ -98,23 +99,41 @@ std::string disturbance_image_problem(const Disturbance& d, double lx_m, double 
   return b;
 }
 
+std::string resample_problem(const Disturbance& d) {
+  if (d.kind == DisturbanceKind::impulse)
+    return "an impulse is one cell's height, not a surface that another grid can sample: give a gaussian, a ring or a plane_wave";
+  return "";
+}
+
 void sample_disturbance(const Disturbance& d, int nx, int ny, double cell_m, std::vector<double>& z) {
+  if (d.kind == DisturbanceKind::impulse) {
+    z.assign(static_cast<std::size_t>(nx) * ny, 0.0);
+    int i = static_cast<int>(std::lround(d.x_m / cell_m)), j = static_cast<int>(std::lround(d.y_m / cell_m));
+    i = ((i % nx) + nx) % nx;
+    j = ((j % ny) + ny) % ny;
+    z[static_cast<std::size_t>(j) * nx + i] = d.amplitude_m;
+    return;
+  }
+  sample_disturbance_at(d, nx * cell_m, ny * cell_m, 0.0, 0.0, nx, ny, cell_m, z);
+}
+
+void sample_disturbance_at(const Disturbance& d, double lx, double ly, double x0, double y0, int nx, int ny, double cell_m,
+                           std::vector<double>& z) {
+  if (const std::string why = resample_problem(d); !why.empty()) throw std::invalid_argument(why);
   z.assign(static_cast<std::size_t>(nx) * ny, 0.0);
-  const double lx = nx * cell_m, ly = ny * cell_m;
   auto at = [&](int i, int j) -> double& { return z[static_cast<std::size_t>(j) * nx + i]; };
+  // The points in the own grid's frame, wrapped into it: with x0 = 0 and i cell_m < lx, exactly i cell_m.
+  auto px = [&](int i) { return wrapped(x0 + i * cell_m, lx); };
+  auto py = [&](int j) { return wrapped(y0 + j * cell_m, ly); };
   switch (d.kind) {
-    case DisturbanceKind::impulse: {
-      int i = static_cast<int>(std::lround(d.x_m / cell_m)), j = static_cast<int>(std::lround(d.y_m / cell_m));
-      i = ((i % nx) + nx) % nx;
-      j = ((j % ny) + ny) % ny;
-      at(i, j) = d.amplitude_m;
-      return;
-    }
+    case DisturbanceKind::impulse: return;  // refused above
     case DisturbanceKind::plane_wave: {
+      // z = A cos(k·x) at the point itself (not wrapped: the cosine need not fit the own grid's period).
       const double k = 2 * M_PI / d.wavelength_m, th = d.angle_deg * M_PI / 180;
       const double kx = k * std::cos(th), ky = k * std::sin(th);
+      const double phase = kx * x0 + ky * y0;  // 0 on the own grid: the sum below is then unchanged
       for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i) at(i, j) = d.amplitude_m * std::cos(kx * i * cell_m + ky * j * cell_m);
+        for (int i = 0; i < nx; ++i) at(i, j) = d.amplitude_m * std::cos(kx * i * cell_m + ky * j * cell_m + phase);
       return;
     }
     case DisturbanceKind::gaussian: {
@@ -122,8 +141,8 @@ void sample_disturbance(const Disturbance& d, int nx, int ny, double cell_m, std
       // periodic 1-D sums. The centre is wrapped into the grid, so that the images are counted from it.
       const double xc = wrapped(d.x_m, lx), yc = wrapped(d.y_m, ly);
       std::vector<double> gx(static_cast<std::size_t>(nx)), gy(static_cast<std::size_t>(ny));
-      for (int i = 0; i < nx; ++i) gx[static_cast<std::size_t>(i)] = periodic_gaussian(i * cell_m - xc, d.width_m, lx);
-      for (int j = 0; j < ny; ++j) gy[static_cast<std::size_t>(j)] = periodic_gaussian(j * cell_m - yc, d.width_m, ly);
+      for (int i = 0; i < nx; ++i) gx[static_cast<std::size_t>(i)] = periodic_gaussian(px(i) - xc, d.width_m, lx);
+      for (int j = 0; j < ny; ++j) gy[static_cast<std::size_t>(j)] = periodic_gaussian(py(j) - yc, d.width_m, ly);
       for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) at(i, j) = d.amplitude_m * gx[static_cast<std::size_t>(i)] * gy[static_cast<std::size_t>(j)];
       return;
@@ -136,9 +155,9 @@ void sample_disturbance(const Disturbance& d, int nx, int ny, double cell_m, std
       for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) {
           double sum = 0;
-          for (int py = -ny_images; py <= ny_images; ++py)
-            for (int px = -nx_images; px <= nx_images; ++px) {
-              const double dx = i * cell_m - xc + px * lx, dy = j * cell_m - yc + py * ly;
+          for (int qy = -ny_images; qy <= ny_images; ++qy)
+            for (int qx = -nx_images; qx <= nx_images; ++qx) {
+              const double dx = px(i) - xc + qx * lx, dy = py(j) - yc + qy * ly;
               const double u = (std::sqrt(dx * dx + dy * dy) - d.radius_m) / d.width_m;
               sum += std::exp(-u * u);
             }

@@ -30,6 +30,20 @@ struct Disturbance {
 // every kind is zero (a plane wave therefore starts as a standing wave).
 void sample_disturbance(const Disturbance& d, int nx, int ny, double cell_m, std::vector<double>& z);
 
+// The same surface on another grid: the surface `d` makes on its own grid (period lx_m × ly_m, the
+// shape's coordinates measured from that grid's first cell point), sampled at the cell points
+// x0_m + i cell_m, y0_m + j cell_m (i < nx, j < ny) of another grid, x0_m and y0_m measured from the
+// first grid's first point. A Gaussian or a ring is the own grid's periodic function (its images
+// summed with that period), read at each point wrapped into the own grid; a plane wave is its
+// cosine at the point. With x0_m = y0_m = 0, cell_m = lx_m / nx and the own grid's size, this is
+// sample_disturbance bit for bit. An impulse is one cell's value, not a function of position:
+// refused (std::invalid_argument); resample_problem says so before.
+void sample_disturbance_at(const Disturbance& d, double lx_m, double ly_m, double x0_m, double y0_m, int nx, int ny, double cell_m,
+                           std::vector<double>& z);
+
+// "" or why `d` cannot be resampled onto another grid (an impulse).
+std::string resample_problem(const Disturbance& d);
+
 // A ring is summed over images up to this many periods from the grid on each side.
 constexpr int kMostRingImages = 4;
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "model/water/disturbance.hpp"
@@ -96,6 +97,77 @@ BOOST_AUTO_TEST_CASE(a_ring_reaching_past_its_image_limit_is_named) {
   d.amplitude_m = 1e3;
   d.width_m = 0.2;
   BOOST_TEST(disturbance_image_problem(d, 1.0, 1.0, 1e3) == "");
+}
+
+BOOST_AUTO_TEST_CASE(another_grid_samples_the_same_surface_at_its_own_points) {
+  // Oracle: the same brute-force image sum (61 × 61 images, the own grid's period) read at the
+  // other grid's points, x0 + i d′: a finer grid, shifted by a non-whole number of cells and
+  // reaching past the own grid's edge (there the surface is the own grid's periodic function); for
+  // a plane wave, A cos(k·x) at the point. Tolerance 1e-13 of the peak, as above.
+  const double lx = 20 * 0.05, ly = 15 * 0.05, x0 = -0.137, y0 = 0.2113, cell = 0.0173;
+  const int nx = 71, ny = 40;  // reaches x ∈ [−0.137, 1.074], past the own grid's 1 m
+  Disturbance g;
+  g.kind = DisturbanceKind::gaussian;
+  g.amplitude_m = 0.01;
+  g.width_m = 0.12;
+  g.x_m = 0.93;  // near the own grid's edge: its image across the edge is on the other grid
+  g.y_m = 0.4;
+  Disturbance r = g;
+  r.kind = DisturbanceKind::ring;
+  r.radius_m = 0.3;
+  r.width_m = 0.05;
+  for (const Disturbance& d : {g, r}) {
+    std::vector<double> z;
+    sample_disturbance_at(d, lx, ly, x0, y0, nx, ny, cell, z);
+    double gap = 0, peak = 0;
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const double b = brute(d, x0 + i * cell, y0 + j * cell, lx, ly);
+        gap = std::max(gap, std::abs(z[static_cast<std::size_t>(j) * nx + i] - b));
+        peak = std::max(peak, std::abs(b));
+      }
+    BOOST_TEST(gap / peak < 1e-13, to_string(d.kind));
+  }
+  Disturbance w;
+  w.kind = DisturbanceKind::plane_wave;
+  w.amplitude_m = 0.02;
+  w.wavelength_m = 0.37;
+  w.angle_deg = 23;
+  std::vector<double> z;
+  sample_disturbance_at(w, lx, ly, x0, y0, nx, ny, cell, z);
+  const double k = 2 * M_PI / w.wavelength_m, th = w.angle_deg * M_PI / 180;
+  double gap = 0;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const double x = x0 + i * cell, y = y0 + j * cell;
+      gap = std::max(gap, std::abs(z[static_cast<std::size_t>(j) * nx + i] - w.amplitude_m * std::cos(k * (x * std::cos(th) + y * std::sin(th)))));
+    }
+  BOOST_TEST(gap / w.amplitude_m < 1e-13);
+}
+
+BOOST_AUTO_TEST_CASE(on_its_own_grid_the_resampled_surface_is_the_sampled_one_bit_for_bit) {
+  // Oracle: sample_disturbance, which every scene and wave case uses: a scene's initial surface
+  // must not move when the grid section learns to resample it.
+  Disturbance d;
+  d.amplitude_m = 0.013;
+  d.x_m = 0.71;
+  d.y_m = 0.05;
+  d.width_m = 0.09;
+  d.radius_m = 0.25;
+  d.wavelength_m = 0.31;
+  d.angle_deg = 17;
+  for (auto kind : {DisturbanceKind::gaussian, DisturbanceKind::ring, DisturbanceKind::plane_wave}) {
+    d.kind = kind;
+    std::vector<double> a, b;
+    sample_disturbance(d, 37, 29, 0.031, a);
+    sample_disturbance_at(d, 37 * 0.031, 29 * 0.031, 0.0, 0.0, 37, 29, 0.031, b);
+    BOOST_TEST((a == b), to_string(kind));
+  }
+  // An impulse is one cell's height: refused, by name.
+  d.kind = DisturbanceKind::impulse;
+  BOOST_TEST(resample_problem(d).find("impulse") != std::string::npos);
+  std::vector<double> z;
+  BOOST_CHECK_THROW(sample_disturbance_at(d, 1.0, 1.0, 0.0, 0.0, 10, 10, 0.1, z), std::invalid_argument);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -475,6 +475,17 @@ SectionOutput grid_section(const Record& g) {
          "changes do not shrink but whose last change is no larger than what halving the step moves it is *not decided*. "
          "The stone is " + fmt(100 * g.number("stone_diameter_m"), 3) +
          " cm across. " + grid_head_words(g.text("forcing"), own_width, passes));
+  if (g.has_text("initial_surface")) {
+    // A case on a disturbed surface (stored since 7 December): sampled afresh on each grid.
+    const bool clear = g.number("pond_inside_case") > 0 && g.number("walls_reach_s") > (g.has_number("end_s") ? g.number("end_s") : 0.0);
+    w.text("The case starts from " + g.text("initial_surface") + " (`[water.initial]`): each grid samples it afresh at its own cell "
+           "points, in the case's frame (model/water/disturbance.hpp). The pond's walls are not the case's, and from the start they "
+           "send waves into that surface; at c = " + fmt(g.number("wave_speed_m_s"), 3) + " m/s from " +
+           fmt(100 * std::max(0.0, g.number("wall_distance_m")), 3) + " cm away they reach the first contact's track (on still "
+           "water) after " + fmt(1e3 * g.number("walls_reach_s"), 4) + " ms" +
+           (clear ? std::string(", after the section's end: until then the pond's answers are the case's.")
+                  : std::string(": see the verdict below.")));
+  }
   w.table(grid_table_markdown(g));
   const double max_cells = g.has_number("max_width_cells") ? g.number("max_width_cells") : 8.0;
   const std::string lo = grid_left_out(g, max_cells);

@@ -71,6 +71,7 @@ SceneStudyFile load_scene_study_file(const std::string& path, const std::vector<
       sc.title = c.title;
       sc.file = file;
       sc.scene = scene_options(c, SceneEnd::at_duration);
+      sc.initial = c.water->initial;
       for (const auto& other : o.cases)
         if (other.name == sc.name) s.fail("cases", "two cases named '" + sc.name + "'");
       o.cases.push_back(std::move(sc));

@@ -61,13 +61,63 @@ void store_scene_settings(Record& r, const SceneStudyCase& c, const SceneOptions
   }
 }
 
-void place_on_pond(SceneOptions& s, const Vec3& first_touch_m, double pond_m, double cell_m, double dt_s) {
+void place_on_pond(SceneOptions& s, const SceneStudyCase& c, const Vec3& first_touch_m, double pond_m, double cell_m, double dt_s) {
   HeightFieldOptions& w = s.water->field;
   w.cell_m = cell_m;
   w.dt_s = dt_s;
   w.nx = w.ny = static_cast<int>(std::ceil(pond_m / cell_m)) + 1;
   s.water->placement.origin_x_m = first_touch_m.x() - 0.25 * pond_m;
   s.water->placement.origin_y_m = first_touch_m.y() - 0.5 * pond_m;
+  // The case's initial surface at the pond's own points: the shape's frame is the case's grid.
+  const SceneWater& own = *c.scene.water;
+  if (c.initial) {
+    sample_disturbance_at(*c.initial, own.field.nx * own.field.cell_m, own.field.ny * own.field.cell_m,
+                          s.water->placement.origin_x_m - own.placement.origin_x_m,
+                          s.water->placement.origin_y_m - own.placement.origin_y_m, w.nx, w.ny, w.cell_m, s.water->initial_m);
+  } else {
+    if (!std::all_of(own.initial_m.begin(), own.initial_m.end(), [](double z) { return z == 0; }))
+      throw std::logic_error("place_on_pond: a disturbed surface without a shape (grid_case_problem refuses it)");
+    s.water->initial_m.clear();  // still water (heights all 0 on the case's grid: none on this one)
+  }
+}
+
+bool starts_disturbed(const SceneStudyCase& c) {
+  const auto& z = c.scene.water->initial_m;
+  return c.initial && std::any_of(z.begin(), z.end(), [](double v) { return v != 0; });
+}
+
+std::string initial_surface_words(const Disturbance& d) {
+  const std::string high = length(std::abs(d.amplitude_m)) + (d.amplitude_m < 0 ? " deep" : " high");
+  const std::string at = " centred at (" + num(d.x_m, 4) + ", " + num(d.y_m, 4) + ") m of the case's grid";
+  switch (d.kind) {
+    case DisturbanceKind::plane_wave:
+      return "a standing plane wave " + high + " and " + length(d.wavelength_m) + " long, its wave vector " + num(d.angle_deg, 4) +
+             "° from x";
+    case DisturbanceKind::gaussian: return "a Gaussian hump " + high + " and " + length(d.width_m) + " wide (e-folding)" + at;
+    case DisturbanceKind::ring:
+      return "a ring " + high + ", " + length(d.radius_m) + " in radius and " + length(d.width_m) + " wide" + at;
+    case DisturbanceKind::impulse: return "an impulse of " + length(d.amplitude_m) + at;
+  }
+  return "?";
+}
+
+PondWalls pond_walls(const SceneStudyCase& c, const ContactRecord& first, double pond_m, double cell_m) {
+  const SceneWater& own = *c.scene.water;
+  const int n = static_cast<int>(std::ceil(pond_m / cell_m)) + 1;
+  const double x0 = first.first_touch_m.x() - 0.25 * pond_m, y0 = first.first_touch_m.y() - 0.5 * pond_m;
+  const double x1 = x0 + (n - 1) * cell_m, y1 = y0 + (n - 1) * cell_m;
+  // The track: the centre of mass from entry to exit, its extent in x and y.
+  const double tx0 = std::min(first.entry_position_m.x(), first.exit_position_m.x());
+  const double tx1 = std::max(first.entry_position_m.x(), first.exit_position_m.x());
+  const double ty0 = std::min(first.entry_position_m.y(), first.exit_position_m.y());
+  const double ty1 = std::max(first.entry_position_m.y(), first.exit_position_m.y());
+  PondWalls p;
+  p.nearest_m = std::min({tx0 - x0, x1 - tx1, ty0 - y0, y1 - ty1}) - c.scene.stone.disk_radius_m;
+  p.reach_s = std::max(0.0, p.nearest_m) / own.field.wave_speed_m_s;
+  const double ox = own.placement.origin_x_m, oy = own.placement.origin_y_m;
+  const double ex = ox + (own.field.nx - 1) * own.field.cell_m, ey = oy + (own.field.ny - 1) * own.field.cell_m;
+  p.inside_case = own.field.boundary == Boundary::periodic || (x0 >= ox && y0 >= oy && x1 <= ex && y1 <= ey);
+  return p;
 }
 
 std::string joined(const std::vector<std::string>& items, const std::string& separator) {

@@ -35,8 +35,24 @@ std::string joined(const std::vector<std::string>& items, const std::string& sep
 // "1 contact", "2 contacts".
 std::string counted(long n, const std::string& noun);
 // The scene on a pond of pond_m × pond_m around a first touch (a quarter of the pond behind it, in
-// the middle across), cells of cell_m, the water step dt_s: what the grid section runs.
-void place_on_pond(SceneOptions& s, const Vec3& first_touch_m, double pond_m, double cell_m, double dt_s);
+// the middle across), cells of cell_m, the water step dt_s: what the grid section runs. A case
+// starting from a disturbed surface has it sampled afresh at the pond's cell points
+// (sample_disturbance_at, the case's own grid as the shape's frame); grid_case_problem has
+// refused a surface that cannot be.
+void place_on_pond(SceneOptions& s, const SceneStudyCase& c, const Vec3& first_touch_m, double pond_m, double cell_m, double dt_s);
+// Where the walls of that pond stand against a case's first contact (its track on still water, the
+// stone's disk around it): the nearest wall's distance and when a wave from it, at c, first
+// reaches the track.
+struct PondWalls {
+  double nearest_m = 0;     // the nearest wall to the track, less the disk's radius
+  double reach_s = 0;       // nearest_m / c
+  bool inside_case = true;  // the pond lies within the case's own field (or the case's is periodic)
+};
+// The case starts from a disturbed surface with a shape (some initial height is not 0).
+bool starts_disturbed(const SceneStudyCase& c);
+// A shape in words: "a plane wave 2 cm high and 1 m long, its crests across x" …
+std::string initial_surface_words(const Disturbance& d);
+PondWalls pond_walls(const SceneStudyCase& c, const ContactRecord& first, double pond_m, double cell_m);
 // The case's settings as the report states them (title, convention, coupling, frames, grid, σ …).
 void store_scene_settings(Record& r, const SceneStudyCase& c, const SceneOptions& s);
 

@@ -32,7 +32,7 @@ Table grid_table() {
 // One sequence of grids with the head smoothed as `head_width_m` says (0: a fixed number of
 // cells), into `out`: the tables "grids" and "half_step" (its finest grid with the water step
 // halved), what was left out and why, the verdict.
-void grid_sequence(const SceneOptions& base, const ContactRecord& k, double end_s, const SceneGridOptions& g,
+void grid_sequence(const SceneOptions& base, const SceneStudyCase& c, const ContactRecord& k, double end_s, const SceneGridOptions& g,
                    double head_width_m, const ProgressFactory& progress, const std::string& label, Record& out) {
   out.set("head_width_m", head_width_m);
   Record in;
@@ -59,7 +59,7 @@ void grid_sequence(const SceneOptions& base, const ContactRecord& k, double end_
     s.duration_s = end_s;
     s.energy_budget = true;  // the pressure work W (solvers/scene/wave_energy.hpp)
     s.head_width_m = head_width_m;
-    place_on_pond(s, k.first_touch_m, g.pond_m, base.water->field.cell_m * f, base.water->field.dt_s * f * dt_scale);
+    place_on_pond(s, c, k.first_touch_m, g.pond_m, base.water->field.cell_m * f, base.water->field.dt_s * f * dt_scale);
     const HeightFieldOptions& w = s.water->field;
     const SceneSummary r = run_scene(s);
     const bool touched = !r.stone.contacts.empty();
@@ -163,17 +163,52 @@ Record scene_grid_findings(const SceneStudiesOptions& o, const ProgressFactory& 
   out.set("end_s", end_s);
   out.set("still_first_start_s", k.start_s);
   out.set("still_first_duration_s", k.duration_s());
+  // On any case, the first contact's track must lie on the pond: a two-way pond takes none of the
+  // stone's push outside it (model/README.md §2.4). A case starting from a disturbed surface: each
+  // pond samples it afresh, but the pond's walls are its own, not the case's, and from t = 0 they
+  // send waves into the surface (a still pond sends none until the stone's waves reach them). The
+  // answers are the case's only while those waves, at c, have not reached the first contact's
+  // track by the section's end.
+  const PondWalls walls = pond_walls(c, k, g.pond_m, base.water->field.cell_m);
+  out.set("wall_distance_m", walls.nearest_m);
+  out.set("walls_reach_s", walls.reach_s);
+  out.set("wave_speed_m_s", base.water->field.wave_speed_m_s);
+  std::string why;
+  if (walls.nearest_m <= 0)
+    why = "the first contact's track on still water, with the stone's disk around it, reaches " + length(-walls.nearest_m) +
+          " past the walls of the " + num(g.pond_m, 3) + " m pond around the first touch: widen grid.pond_m";
+  if (why.empty() && starts_disturbed(c)) {
+    out.set("initial_surface", initial_surface_words(*c.initial));
+    out.set("pond_inside_case", walls.inside_case ? 1.0 : 0.0);
+    if (!walls.inside_case)
+      why = "the " + num(g.pond_m, 3) + " m pond around the first touch reaches past " + c.name +
+            "'s own walled field, where its initial surface is not defined: a smaller grid.pond_m, or a first touch farther inside";
+    else if (walls.reach_s <= end_s)
+      why = "the " + num(g.pond_m, 3) + " m pond's walls are not " + c.name + "'s: the waves they send from its initial surface, at c = " +
+            num(base.water->field.wave_speed_m_s, 3) + " m/s from " + length(walls.nearest_m) +
+            " away, reach the first contact's track after " + duration(walls.reach_s) + ", before the section's end at " +
+            duration(end_s) + ": its answers would be the pond's, not the case's; widen grid.pond_m";
+  }
+  if (!why.empty()) {
+    Record in;
+    in.set("grids", 0.0);
+    out.set("head_width_m", base.head_width_m);
+    out.set_table("grids", grid_table());
+    out.set("left_out", 0);
+    decide_verdict(out, "verdict", "grid_differences", in, why);
+    return out;
+  }
   // The scene as the case has it (its own head width, 0 for the shipped scenes).
-  grid_sequence(base, k, end_s, g, base.head_width_m, progress, "scene: grids", out);
+  grid_sequence(base, c, k, end_s, g, base.head_width_m, progress, "scene: grids", out);
   // A head of fixed width in metres: only the pressure forcing has a head to widen.
   if (base.forcing == Forcing::pressure) {
     Record& widths = out.child("fixed_width");
     for (std::size_t i = 0; i < g.head_widths_m.size(); ++i)
-      grid_sequence(base, k, end_s, g, g.head_widths_m[i], progress, "scene: grids, head " + num(100 * g.head_widths_m[i], 3) + " cm",
+      grid_sequence(base, c, k, end_s, g, g.head_widths_m[i], progress, "scene: grids, head " + num(100 * g.head_widths_m[i], 3) + " cm",
                     widths.child(std::to_string(i)));
   }
   // The water step alone, at the case's cell: the level held against extrapolated.
-  water_step_study(base, k, end_s, g, progress, out.child("water_step"));
+  water_step_study(base, c, k, end_s, g, progress, out.child("water_step"));
   return out;
 }
 

@@ -29,8 +29,8 @@ Table step_table() {
 
 }  // namespace
 
-void water_step_study(const SceneOptions& base, const ContactRecord& touch, double end_s, const SceneGridOptions& g,
-                      const ProgressFactory& progress, Record& out) {
+void water_step_study(const SceneOptions& base, const SceneStudyCase& c, const ContactRecord& touch, double end_s,
+                      const SceneGridOptions& g, const ProgressFactory& progress, Record& out) {
   out.set("reference_step_fraction", g.reference_step_fraction);
   const double cell = base.water->field.cell_m, dt = base.water->field.dt_s;
   // One run: the first contact's start, duration and exit speed, and the contacts until end_s.
@@ -38,11 +38,11 @@ void water_step_study(const SceneOptions& base, const ContactRecord& touch, doub
     SceneOptions s = base;
     s.duration_s = end_s;
     s.level_in_time = reading;
-    place_on_pond(s, touch.first_touch_m, g.pond_m, cell, dt * fraction);
+    place_on_pond(s, c, touch.first_touch_m, g.pond_m, cell, dt * fraction);
     const SceneSummary r = run_scene(s);
-    const ContactRecord* c = r.stone.contacts.empty() ? nullptr : &r.stone.contacts.front();
+    const ContactRecord* first = r.stone.contacts.empty() ? nullptr : &r.stone.contacts.front();
     return std::vector<double>{double(reading == LevelInTime::extrapolated), fraction, dt * fraction,
-                               c ? c->start_s : kNaN, c ? c->duration_s() : kNaN, c ? c->exit_speed_m_s : kNaN,
+                               first ? first->start_s : kNaN, first ? first->duration_s() : kNaN, first ? first->exit_speed_m_s : kNaN,
                                double(r.stone.contacts.size()), kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, r.wall_s};
   };
   auto ticker = start_progress(progress, "scene: water steps", 2 * g.step_fractions.size() + 2);
@@ -142,7 +142,7 @@ void water_step_study(const SceneOptions& base, const ContactRecord& touch, doub
   // leaving stone again: a bounce, model/README.md §1.8).
   for (std::size_t k = 0; k < 2; ++k) {
     double same = 0;
-    for (double c : tables[k].column("contacts")) same += c == ref_of("contacts", 0);
+    for (double n : tables[k].column("contacts")) same += n == ref_of("contacts", 0);
     out.set(std::string(k == 0 ? "held" : "extrapolated") + ".contacts_as_reference", same);
   }
   std::string reason = joined(resolved_words, "; ");

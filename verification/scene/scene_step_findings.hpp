@@ -9,9 +9,10 @@
 
 namespace stoneskip::scene_findings {
 
-// `base`: the grid section's scene (two-way, full steps, one thread); `touch`: its first contact on
-// still water, around which the pond is put; `end_s`: when the runs stop.
-void water_step_study(const SceneOptions& base, const ContactRecord& touch, double end_s, const SceneGridOptions& g,
-                      const ProgressFactory& progress, Record& out);
+// `base`: the grid section's scene (two-way, full steps, one thread) of case `c` (whose initial
+// surface, if any, each pond samples afresh); `touch`: its first contact on still water, around
+// which the pond is put; `end_s`: when the runs stop.
+void water_step_study(const SceneOptions& base, const SceneStudyCase& c, const ContactRecord& touch, double end_s,
+                      const SceneGridOptions& g, const ProgressFactory& progress, Record& out);
 
 }  // namespace stoneskip::scene_findings

@@ -21,9 +21,15 @@ std::string grid_case_problem(const SceneStudiesOptions& o) {
   for (const auto& k : o.cases)
     if (k.name == o.grid.case_name) c = &k;
   const auto& z = c->scene.water ? c->scene.water->initial_m : std::vector<double>{};
-  if (std::all_of(z.begin(), z.end(), [](double v) { return v == 0; })) return "";
-  return "'" + c->name + "' starts from a disturbed surface ([water.initial]): the grid section moves the pond around the first "
-         "touch and changes its cells, and does not resample an initial surface; name a case on still water";
+  const bool still = std::all_of(z.begin(), z.end(), [](double v) { return v == 0; });
+  if (c->initial) {
+    const std::string why = resample_problem(*c->initial);
+    if (why.empty() || still) return "";
+    return "'" + c->name + "' starts from a disturbed surface the grid section's ponds cannot sample afresh ([water.initial]): " + why;
+  }
+  if (still) return "";
+  return "'" + c->name + "' starts from a disturbed surface given as heights on its own grid, without a shape ([water.initial]) "
+         "that the grid section's ponds could sample afresh; name a case on still water or one with [water.initial]";
 }
 
 bool SceneStudiesOptions::valid(std::string* why) const {

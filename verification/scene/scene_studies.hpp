@@ -19,9 +19,11 @@
 // Files: settings, stability, convergence and rings here (scene_studies.cpp); coupling, shortcuts,
 // speed and frames in scene_{coupling,shortcut,speed,frame}_findings.cpp; what they share in
 // scene_findings_support.hpp.
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "model/water/disturbance.hpp"
 #include "solvers/scene/coupled_scene.hpp"
 #include "verification/scene/coupled_stability.hpp"
 #include "verification/scene/headline_speed.hpp"
@@ -37,6 +39,10 @@ struct SceneStudyCase {
   std::string title;
   std::string file;   // where it came from (for the report's words)
   SceneOptions scene; // as the case says (two-way for the shipped scenes)
+  // The case's initial surface as a shape ([water.initial]; scene.water->initial_m holds its samples
+  // on the case's own grid): the grid section samples it afresh on its own grids. Empty: still
+  // water, or heights given without a shape (which the grid section cannot resample).
+  std::optional<Disturbance> initial;
 };
 
 struct SceneCouplingOptions {
@@ -85,7 +91,8 @@ struct SceneGridOptions {
 
 struct SceneStudiesOptions;
 // Why the grid section cannot run its case ("" if it can): a case starting from a disturbed
-// surface, whose initial heights belong to its own grid (the section's ponds are other grids).
+// surface the section's ponds (other grids) cannot sample afresh: heights without a shape, or an
+// impulse (one cell's height).
 std::string grid_case_problem(const SceneStudiesOptions& o);
 
 struct SceneSpeedOptions {
