@@ -479,7 +479,10 @@ SectionOutput grid_section(const Record& g) {
     // A case on a disturbed surface (stored since 7 December): sampled afresh on each grid.
     const bool clear = g.number("pond_inside_case") > 0 && g.number("walls_reach_s") > (g.has_number("end_s") ? g.number("end_s") : 0.0);
     w.text("The case starts from " + g.text("initial_surface") + " (`[water.initial]`): each grid samples it afresh at its own cell "
-           "points, in the case's frame (model/water/disturbance.hpp). The pond's walls are not the case's, and from the start they "
+           "points, in the case's frame (model/water/disturbance.hpp). " +
+           (g.has_text("boundary") && g.text("boundary") == "periodic"
+                ? std::string("The pond's edges are not the case's (its periodic seams fall elsewhere), and from the start they ")
+                : std::string("The pond's walls are not the case's, and from the start they ")) +
            "send waves into that surface; at c = " + fmt(g.number("wave_speed_m_s"), 3) + " m/s from " +
            fmt(100 * std::max(0.0, g.number("wall_distance_m")), 3) + " cm away they reach the first contact's track (on still "
            "water) after " + fmt(1e3 * g.number("walls_reach_s"), 4) + " ms" +

@@ -173,6 +173,7 @@ Record scene_grid_findings(const SceneStudiesOptions& o, const ProgressFactory& 
   out.set("wall_distance_m", walls.nearest_m);
   out.set("walls_reach_s", walls.reach_s);
   out.set("wave_speed_m_s", base.water->field.wave_speed_m_s);
+  out.set("boundary", std::string(to_string(base.water->field.boundary)));
   std::string why;
   if (walls.nearest_m <= 0)
     why = "the first contact's track on still water, with the stone's disk around it, reaches " + length(-walls.nearest_m) +
@@ -184,7 +185,9 @@ Record scene_grid_findings(const SceneStudiesOptions& o, const ProgressFactory& 
       why = "the " + num(g.pond_m, 3) + " m pond around the first touch reaches past " + c.name +
             "'s own walled field, where its initial surface is not defined: a smaller grid.pond_m, or a first touch farther inside";
     else if (walls.reach_s <= end_s)
-      why = "the " + num(g.pond_m, 3) + " m pond's walls are not " + c.name + "'s: the waves they send from its initial surface, at c = " +
+      why = "the " + num(g.pond_m, 3) + " m pond's " +
+            (base.water->field.boundary == Boundary::periodic ? "edges (its periodic seams)" : "walls") + " are not " + c.name +
+            "'s: the waves they send from its initial surface, at c = " +
             num(base.water->field.wave_speed_m_s, 3) + " m/s from " + length(walls.nearest_m) +
             " away, reach the first contact's track after " + duration(walls.reach_s) + ", before the section's end at " +
             duration(end_s) + ": its answers would be the pond's, not the case's; widen grid.pond_m";
