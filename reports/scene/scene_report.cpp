@@ -402,9 +402,9 @@ MarkdownTable grid_table_markdown(const Record& seq) {
 
 std::string grid_left_out(const Record& seq, double max_width_cells) {
   if (!(seq.number("left_out") > 0)) return "";
-  if (!seq.has_number("left_out_too_wide")) return fmt(seq.number("left_out")) + " finer grid(s) left out: more than 2048² cells.";
+  if (!seq.has_number("left_out_too_wide")) return fmt(seq.number("left_out")) + " grid(s) left out: more than 2048² cells.";
   std::string s;
-  if (seq.number("left_out_too_large") > 0) s += fmt(seq.number("left_out_too_large")) + " finer grid(s) left out: more than 2048² cells. ";
+  if (seq.number("left_out_too_large") > 0) s += fmt(seq.number("left_out_too_large")) + " grid(s) left out: more than 2048² cells. ";
   if (seq.number("left_out_too_wide") > 0)
     s += fmt(seq.number("left_out_too_wide")) + " grid(s) left out: the head would be more than " + fmt(max_width_cells) + " cells wide (its smoothing "
          "passes grow as (width/cell)²).";
@@ -529,6 +529,7 @@ SectionOutput grid_section(const Record& g) {
   }
   // The water step alone at the scene's cell (stored since 7 December, with level_in_time).
   if (g.has_child("water_step")) water_step_part(w, g.at("water_step"));
+  if (g.has_text("water_step_left_out")) w.text("**The level between water steps.** Not run: " + g.text("water_step_left_out") + ".");
   return w.finish();
 }
 

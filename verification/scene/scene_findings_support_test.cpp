@@ -159,4 +159,22 @@ BOOST_AUTO_TEST_CASE(a_pond_whose_walls_reach_the_contact_in_time_is_not_run) {
   BOOST_TEST(pond_walls(c, k, 4.0, 0.02).reach_s == (1.0 - 0.03) / 0.5, boost::test_tools::tolerance(1e-12));
 }
 
+BOOST_AUTO_TEST_CASE(a_pond_too_large_for_the_section_runs_nothing_and_says_so) {
+  // Oracle: the section's size bound (2048² cells). A 50 m pond of the seed's 2 cm cells is 2501²:
+  // every grid of the sequence and the water-step part are left out, by name, instead of running
+  // for minutes a run (a 100 m pond's water-step part took 217 s a run, 14 runs, 7 December).
+  SceneStudiesOptions o;
+  SceneStudyCase c;
+  c.name = "seed";
+  c.scene = seed_throw_scene(150, 150, -1.1, -1.5, 0.6);
+  o.cases.push_back(c);
+  o.grid.pond_m = 50;
+  o.grid.head_widths_m.clear();
+  const Record r = scene_grid_findings(o, {});
+  BOOST_TEST(r.table("grids").rows() == 0u);
+  BOOST_TEST(r.number("left_out") == double(o.grid.cell_fractions.size()));
+  BOOST_TEST(!r.has_child("water_step"));
+  BOOST_TEST(r.text("water_step_left_out").find("2501² cells") != std::string::npos, r.text("water_step_left_out"));
+}
+
 BOOST_AUTO_TEST_SUITE_END()
