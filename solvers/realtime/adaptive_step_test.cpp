@@ -91,6 +91,46 @@ BOOST_AUTO_TEST_CASE(each_pair_s_solution_converges_at_its_order) {
   }
 }
 
+BOOST_AUTO_TEST_CASE(in_a_steady_spin_the_attitude_converges_at_the_scheme_s_steady_spin_order) {
+  // Oracle: the closed form of a steady spin, q(t) = exp(½ ω t) q₀ (ω along the body's largest
+  // principal axis, no torque: the disk's air model exerts none, model/README.md §1.5), and the
+  // orders steady_spin_order derives (stone_stepper.hpp): midpoint 2, rk4 4, bs32 4, dp54 6. The
+  // series is fixed before looking, as above: from 16 steps doubling, each point kept while its
+  // angle error is above kFloor_rad, at least three points; every pairwise order at least
+  // order − kOrderSlack, the finest within kOrderSlack of it. For bs32 and dp54 the finest order
+  // must also lie 0.5 or more above the formal one, so that the check can tell p from p + 1 (a
+  // step without the renormalisation, or one that renormalised inside the stages, shows p).
+  constexpr double kOrderSlack = 0.3;
+  constexpr double kFloor_rad = 1e-11;
+  const Stone stone = squashed_stone();
+  Environment env;
+  env.air_density_kg_m3 = 0;
+  RigidState s0 = high_throw(stone);
+  s0.orientation = Quat(Eigen::AngleAxisd(0.4, Vec3(1, 1, 0).normalized()));
+  const Vec3 omega_body(0, 0, 60.0);
+  set_body_angular_velocity(stone, s0, omega_body);
+  const Vec3 omega_world = s0.orientation * omega_body;
+  const double t = 0.1;
+  const Quat truth = Quat(Eigen::AngleAxisd(omega_world.norm() * t, omega_world.normalized())) * s0.orientation;
+  for (const Scheme scheme : {Scheme::midpoint, Scheme::rk4, Scheme::bs32, Scheme::dp54}) {
+    const double order = steady_spin_order(scheme);
+    std::vector<double> errors;
+    for (int n = 16; n <= 4096; n *= 2) {
+      const double e = stepped(stone, env, s0, t, n, scheme).orientation.angularDistance(truth);
+      if (e < kFloor_rad) break;
+      errors.push_back(e);
+    }
+    BOOST_REQUIRE_MESSAGE(errors.size() >= 3, to_string(scheme) << ": " << errors.size() << " points above the floor");
+    for (std::size_t i = 0; i + 1 < errors.size(); ++i) {
+      const double p = std::log2(errors[i] / errors[i + 1]);
+      const bool finest = i + 2 == errors.size();
+      BOOST_TEST((p >= order - kOrderSlack && (!finest || p <= order + kOrderSlack)),
+                 to_string(scheme) << ": errors " << errors[i] << ", " << errors[i + 1] << " rad, order " << p << ", expected " << order);
+      if (finest && formal_order(scheme) % 2 == 1) BOOST_TEST(p >= formal_order(scheme) + 0.5, to_string(scheme) << ": order " << p);
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(dp54_s_dense_output_is_a_fifth_order_local_interpolant) {
   // Oracle: rk4 in 4000 steps to θ h inside one dp54 step of size h. Dormand–Prince's continuous
   // extension (the cubic Hermite plus θ²(1 − θ)² q) errs by O(h⁵) inside the step (halving h

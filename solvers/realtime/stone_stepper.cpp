@@ -49,6 +49,12 @@ int formal_order(Scheme s) {
   return 0;
 }
 
+int steady_spin_order(Scheme s) {
+  if (s == Scheme::semi_implicit_euler) return formal_order(s);  // exact rotation (stone_stepper.hpp)
+  const int p = formal_order(s);
+  return p % 2 == 1 ? p + 1 : p;
+}
+
 bool is_adaptive(Scheme s) { return s == Scheme::bs32 || s == Scheme::dp54; }
 
 const char* to_string(KinkSteps k) {

@@ -53,6 +53,20 @@ enum class Scheme { semi_implicit_euler, midpoint, rk4, bs32, dp54 };
 const char* to_string(Scheme s);
 bool parse_scheme(const std::string& s, Scheme& out);
 int formal_order(Scheme s);
+// The order at which the scheme's orientation converges in a steady spin (ω along a principal
+// axis, no torque: q(t) = exp(½ ω t) q₀), the quaternion renormalised after every step. A
+// Runge–Kutta step multiplies q by its stability polynomial R(z), z = ½ ω h a pure quaternion
+// (z² = −x², x = |ω| h / 2), so R(z) = a(x) + b(x) ẑ with ẑ = z/x: a scaled rotation, whose angle is
+// atan(b/a) and whose scale the renormalisation removes. For a scheme of order p,
+// R(z) = e^z + C z^(p+1) + …: with p + 1 even, z^(p+1) is real, a change of scale, and moves the
+// angle only at x^(p+2); with p + 1 odd it moves the angle at x^(p+1). So the angle's global order
+// is p + 1 for odd p and p for even p: midpoint 2 (its angle error x³/6 a step), rk4 4 (−x⁵/120),
+// bs32 4 (its third-order solution R = the cubic Taylor polynomial: x⁵/30), dp54 6 (R = the
+// quintic Taylor polynomial + z⁶/600: x⁷ terms). The semi-implicit Euler step rotates exactly
+// through |ω| h: exact in a steady spin (returned: its formal order, the errors then below any
+// reference's). Tested on the stepper (stone_stepper_test.cpp); the stones report's flight
+// interval expects it (verification/stones/realtime_convergence.cpp).
+int steady_spin_order(Scheme s);
 bool is_adaptive(Scheme s);  // steps from a tolerance (bs32, dp54), not from dt_s / contact_dt_s
 
 // The adaptive scheme's tolerance (rtol = atol_m) where a case names none: the one the stones
