@@ -381,21 +381,28 @@ SectionOutput shortcuts_section(const Record& s) {
 // A sequence's table (verification/scene/scene_grid_findings.cpp).
 MarkdownTable grid_table_markdown(const Record& seq) {
   const Table t = seq.table("grids");
+  // How the first contact ends (stored since 7 December): "bounce", or "under" (it sank, or the run ended in it).
+  auto ends = [](const Table& x, std::size_t i) -> std::string {
+    if (!x.has_column("first_bounced")) return "";
+    const double b = x.column("first_bounced")[i];
+    return std::isnan(b) ? "" : b > 0 ? ", bounce" : ", under";
+  };
   MarkdownTable m({"cell (cm)", "grid", "water step (ms)", "cells across the stone", "smoothing passes", "pressure work W (J)",
-                   "first contact (ms)", "its exit speed (m/s)", "contacts", "wall (s)"});
+                   t.has_column("first_bounced") ? "first contact (ms), how it ends" : "first contact (ms)", "its exit speed (m/s)",
+                   "contacts", "wall (s)"});
   for (std::size_t i = 0; i < t.rows(); ++i) {
     auto v = [&](const char* k) { return t.column(k)[i]; };
     m.row({fmt(100 * v("cell_m"), 3), fmt(v("n")) + "²", fmt(1e3 * v("water_dt_s"), 3), fmt(v("cells_across_stone"), 3),
            t.has_column("smoothing_passes") ? fmt(v("smoothing_passes")) : std::string("–"), fmt(v("pressure_work_J"), 4),
-           fmt(1e3 * v("first_duration_s"), 5), fmt(v("first_exit_m_s"), 4), fmt(v("contacts")), fmt(v("wall_s"), 2)});
+           fmt(1e3 * v("first_duration_s"), 5) + ends(t, i), fmt(v("first_exit_m_s"), 4), fmt(v("contacts")), fmt(v("wall_s"), 2)});
   }
   // The finest grid again with the water step halved (stored since 7 December).
   if (seq.has_table("half_step") && seq.table("half_step").rows() > 0) {
     const Table h = seq.table("half_step");
     auto v = [&](const char* k) { return h.column(k)[0]; };
     m.row({fmt(100 * v("cell_m"), 3) + ", step ½", fmt(v("n")) + "²", fmt(1e3 * v("water_dt_s"), 3), fmt(v("cells_across_stone"), 3),
-           fmt(v("smoothing_passes")), fmt(v("pressure_work_J"), 4), fmt(1e3 * v("first_duration_s"), 5), fmt(v("first_exit_m_s"), 4),
-           fmt(v("contacts")), fmt(v("wall_s"), 2)});
+           fmt(v("smoothing_passes")), fmt(v("pressure_work_J"), 4), fmt(1e3 * v("first_duration_s"), 5) + ends(h, 0),
+           fmt(v("first_exit_m_s"), 4), fmt(v("contacts")), fmt(v("wall_s"), 2)});
   }
   return m;
 }

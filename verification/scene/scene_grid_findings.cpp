@@ -23,9 +23,11 @@ constexpr SectionQuantity kQuantities[] = {{"pressure_work_J", "the pressure wor
                                         {"first_exit_m_s", "the first contact's exit speed", 1, "m/s"}};
 
 Table grid_table() {
+  // first_bounced: 1 where the first contact ends with the stone leaving the water, 0 where it does
+  // not (it sinks, or the run ends in it), NaN without a contact (stored since 7 December).
   Table t = table({"cell_fraction", "cell_m", "n", "water_dt_s", "cells_across_stone", "smoothing_passes", "pressure_work_J",
-                   "first_start_s", "first_duration_s", "first_exit_m_s", "contacts", "wall_s"});
-  t.units = {"1", "m", "1", "s", "1", "1", "J", "s", "s", "m/s", "1", "s"};
+                   "first_start_s", "first_duration_s", "first_exit_m_s", "contacts", "wall_s", "first_bounced"});
+  t.units = {"1", "m", "1", "s", "1", "1", "J", "s", "s", "m/s", "1", "s", "1"};
   return t;
 }
 
@@ -67,7 +69,7 @@ void grid_sequence(const SceneOptions& base, const SceneStudyCase& c, const Cont
     return std::vector<double>{f, w.cell_m, double(w.nx), w.dt_s, 2 * base.stone.disk_radius_m / w.cell_m,
                                pressure ? double(pressure_smoothing_passes(head_width_m, w.cell_m)) : 0.0, r.energy.pressure_work_J,
                                c1 ? c1->start_s : kNaN, c1 ? c1->duration_s() : kNaN, c1 ? c1->exit_speed_m_s : kNaN,
-                               double(r.stone.contacts.size()), r.wall_s};
+                               double(r.stone.contacts.size()), r.wall_s, c1 ? double(c1->bounced) : kNaN};
   };
   // One more run on the finest grid with the water step halved (σ halved): how far the water's
   // step alone moves each quantity there (the stone sees level n held over [t_n, t_n+1), so an
@@ -89,6 +91,17 @@ void grid_sequence(const SceneOptions& base, const SceneStudyCase& c, const Cont
              "² cells" + (too_wide ? " and a head " + std::to_string(kMaxHeadWidthCells) + " cells wide" : std::string()) +
              ", fewer than the three a change against the one before needs: none was run";
   } else {
+    // A first contact that ends in a bounce on one grid and not on the next is not the same
+    // contact refined: its duration and exit speed then compare different endings.
+    const auto bounced = t.column("first_bounced");
+    std::vector<std::string> endings;
+    double outcome_changes = 0;
+    for (std::size_t j = 0; j < n; ++j) {
+      endings.push_back(num(100 * t.column("cell_m")[j], 3) + " cm: " +
+                        (std::isnan(bounced[j]) ? "no contact" : bounced[j] > 0 ? "a bounce" : "no bounce"));
+      if (j > 0 && !(bounced[j] == bounced[j - 1])) ++outcome_changes;
+    }
+    in.set("outcome_changes", outcome_changes);
     // Each change of each quantity against the one before as the cells get finer: the largest
     // such ratio must be < 1 (every change shrinking). A change after none is NaN (not < 1).
     std::vector<std::string> growing, shrinking;
@@ -115,6 +128,8 @@ void grid_sequence(const SceneOptions& base, const SceneStudyCase& c, const Cont
     }
     reason = growing.empty() ? "each quantity's change shrinks with the finer grid: " + joined(shrinking, "; ")
                              : "changes that do not shrink as the cells get finer: " + joined(growing, "; ");
+    if (outcome_changes > 0)
+      reason = "the first contact ends differently as the cells get finer (" + joined(endings, ", ") + "); " + reason;
   }
   out.set_table("grids", t);
   out.set_table("half_step", half_step);

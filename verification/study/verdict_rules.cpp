@@ -349,6 +349,10 @@ const std::map<std::string, Rule>& rules() {
          // the water step alone moves it on the finest grid (time_change_*, where stored), is
          // within the water step's error: the sequence cannot say whether it converges.
          if (in.number("grids") < 3) return std::string("not decided: fewer than three grids");
+         // The first contact ending in a bounce on one grid and not on the next (outcome_changes,
+         // stored since 7 December): not one contact refined, whatever its numbers do.
+         if (in.has_number("outcome_changes") && in.number("outcome_changes") > 0)
+           return std::string("does not converge: the first contact bounces on some grids and not on others");
          std::vector<std::string> growing, within_step;
          for (const char* q : {"pressure_work_J", "first_duration_s", "first_exit_m_s"}) {
            if (in.number(std::string("ratio_") + q) < 1) continue;
