@@ -163,16 +163,18 @@ Record scene_grid_findings(const SceneStudiesOptions& o, const ProgressFactory& 
   SceneOptions still = base;
   still.coupling = Coupling::none;
   const SceneSummary first = run_scene(still);
-  if (first.stone.contacts.empty()) {
+  // The section not run, and why: no grid, the verdict's reason.
+  auto not_run = [&](const std::string& why) {
     Record in;
     in.set("grids", 0.0);
     out.set("head_width_m", base.head_width_m);
     out.set_table("grids", grid_table());
     out.set("left_out", 0);
-    decide_verdict(out, "verdict", "grid_differences", in,
-                   "the stone never touches still water in " + c.name + "'s " + duration(base.duration_s));
+    decide_verdict(out, "verdict", "grid_differences", in, why);
     return out;
-  }
+  };
+  if (first.stone.contacts.empty())
+    return not_run("the stone never touches still water in " + c.name + "'s " + duration(base.duration_s));
   const ContactRecord& k = first.stone.contacts.front();
   const double end_s = std::min(base.duration_s, k.start_s + 5 * k.duration_s() + g.after_s);
   out.set("end_s", end_s);
@@ -207,15 +209,7 @@ Record scene_grid_findings(const SceneStudiesOptions& o, const ProgressFactory& 
             " away, reach the first contact's track after " + duration(walls.reach_s) + ", before the section's end at " +
             duration(end_s) + ": its answers would be the pond's, not the case's; widen grid.pond_m";
   }
-  if (!why.empty()) {
-    Record in;
-    in.set("grids", 0.0);
-    out.set("head_width_m", base.head_width_m);
-    out.set_table("grids", grid_table());
-    out.set("left_out", 0);
-    decide_verdict(out, "verdict", "grid_differences", in, why);
-    return out;
-  }
+  if (!why.empty()) return not_run(why);
   // The scene as the case has it (its own head width, 0 for the shipped scenes).
   grid_sequence(base, c, k, end_s, g, base.head_width_m, progress, "scene: grids", out);
   // A head of fixed width in metres: only the pressure forcing has a head to widen.
