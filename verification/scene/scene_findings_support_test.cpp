@@ -115,14 +115,14 @@ BOOST_AUTO_TEST_CASE(the_walls_stand_where_the_pond_puts_them) {
 }
 
 BOOST_AUTO_TEST_CASE(a_pond_whose_walls_reach_the_contact_in_time_is_not_run) {
-  // Oracle: the domain of dependence. The seed's throw onto a 1 m swell, c = 0.5 m/s: on still
-  // water its first contact starts at about 55 ms and lasts about 24 ms, the centre running from
-  // about 2 cm ahead of the touching corner to about 13 cm ahead; the section runs to 5 contact
-  // durations and 0.05 s past the contact's start (0.175 s). On a 0.3 m pond the wall behind the
-  // touch stands 7.5 cm back, 6.5 cm from the track less the disk's 3 cm: its waves reach the
-  // track at about 0.13 s, before the end: no grid is run, and the reason names the key to widen.
-  // On a 0.2 m pond the wall ahead stands 15 cm from the touch, inside the track and its disk:
-  // refused for that, on any case. (On 0.4 m: 0.196 s, after the end: the grids run.)
+  // Oracle: the domain of dependence, with pond_walls' distances (checked by hand above). The seed's
+  // throw onto a 1 m swell, c = 0.5 m/s; the section ends 5 contact durations and 0.05 s after the
+  // first contact's start on still water (end_s, above 0.15 s: that start is about 55 ms and a
+  // contact of this throw lasts over 10 ms). A 0.3 m pond's wall behind the touch stands 7.5 cm
+  // from the touching corner; the centre lies at
+  // most R = 3 cm ahead of it, and the disk reaches R back from the centre: that wall is at most
+  // 7.5 cm from the track, 0.15 s at c, before the end. No grid is run, and the reason names the
+  // key to widen. On a 0.2 m pond the track itself leaves the pond: refused for that, on any case.
   SceneStudiesOptions o;
   SceneStudyCase c;
   c.name = "swell";
@@ -139,8 +139,9 @@ BOOST_AUTO_TEST_CASE(a_pond_whose_walls_reach_the_contact_in_time_is_not_run) {
   BOOST_TEST_REQUIRE(o.valid(&why), why);
   const Record r = scene_grid_findings(o, {});
   BOOST_TEST(r.table("grids").rows() == 0u);
-  BOOST_TEST(r.number("wall_distance_m") == 0.065, boost::test_tools::tolerance(0.15));  // the track's ends read by eye: ±15 %
-  BOOST_TEST(r.number("walls_reach_s") < r.number("end_s"));
+  BOOST_TEST(r.number("wall_distance_m") > 0);  // the track lies on the pond
+  BOOST_TEST(r.number("walls_reach_s") <= 0.075 / 0.5 + 1e-12);
+  BOOST_TEST(r.number("end_s") > 0.15);
   std::string reason = r.at("verdict").text("reason");
   BOOST_TEST(reason.find("waves they send") != std::string::npos, reason);
   BOOST_TEST(reason.find("widen grid.pond_m") != std::string::npos, reason);
