@@ -119,10 +119,10 @@ BOOST_AUTO_TEST_CASE(a_pond_whose_walls_reach_the_contact_in_time_is_not_run) {
   // throw onto a 1 m swell, c = 0.5 m/s; the section ends 5 contact durations and 0.05 s after the
   // first contact's start on still water (end_s, above 0.15 s: that start is about 55 ms and a
   // contact of this throw lasts over 10 ms). A 0.3 m pond's wall behind the touch stands 7.5 cm
-  // from the touching corner; the centre lies at
-  // most R = 3 cm ahead of it, and the disk reaches R back from the centre: that wall is at most
-  // 7.5 cm from the track, 0.15 s at c, before the end. No grid is run, and the reason names the
-  // key to widen. On a 0.2 m pond the track itself leaves the pond: refused for that, on any case.
+  // from the touching corner; the centre lies at most R = 3 cm ahead of it, and the disk reaches R
+  // back from the centre: that wall is at most 7.5 cm from the track, 0.15 s at c, before the end.
+  // No grid is run, and the reason names the key to widen. On a 0.2 m pond the track itself
+  // leaves the pond: refused for that, on any case.
   SceneStudiesOptions o;
   SceneStudyCase c;
   c.name = "swell";
