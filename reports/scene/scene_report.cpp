@@ -466,7 +466,12 @@ SectionOutput grid_section(const Record& g) {
   SectionWriter w(g, "6. Does the coupled scene converge as the grid is refined?");
   const double own_width = g.has_number("head_width_m") ? g.number("head_width_m") : 0.0;
   const std::string passes = g.has_number("default_passes") ? fmt(g.number("default_passes")) : std::string("3");  // before 7 December: 3
-  w.text("Scene " + code(g.text("case")) + " (" + g.text("forcing") + " forcing) on its own cell of " + fmt(100 * g.number("base_cell_m"), 3) +
+  // The case's own coupling where it is not the section's two-way (stored since 7 December).
+  const std::string coupled = g.has_text("case_coupling") && g.text("case_coupling") != "two_way"
+                                  ? "; run two-way, where the case is " + code(g.text("case_coupling")) +
+                                        ": the section refines the waves the stone makes"
+                                  : std::string();
+  w.text("Scene " + code(g.text("case")) + " (" + g.text("forcing") + " forcing" + coupled + ") on its own cell of " + fmt(100 * g.number("base_cell_m"), 3) +
          " cm and on finer ones, the water step scaled with the cell (σ fixed), on a " + fmt(g.number("pond_m"), 3) + " m × " +
          fmt(g.number("pond_m"), 3) + " m pond around the first touch, until " +
          (g.has_number("end_s") ? fmt(g.number("end_s"), 3) + " s" : std::string("the scene's end (the stone never touched: nothing was run)")) +

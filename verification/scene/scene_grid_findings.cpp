@@ -149,6 +149,7 @@ Record scene_grid_findings(const SceneStudiesOptions& o, const ProgressFactory& 
   base.water->field.mode = StepMode::full;
   base.water->field.threads = 1;
   Record out;
+  out.set("case_coupling", std::string(to_string(c.scene.coupling)));  // the section runs two-way whatever the case says
   out.set("case", c.name);
   out.set("title", c.title);
   out.set("pond_m", g.pond_m);
