@@ -122,9 +122,11 @@ void sample_disturbance_at(const Disturbance& d, double lx, double ly, double x0
   if (const std::string why = resample_problem(d); !why.empty()) throw std::invalid_argument(why);
   z.assign(static_cast<std::size_t>(nx) * ny, 0.0);
   auto at = [&](int i, int j) -> double& { return z[static_cast<std::size_t>(j) * nx + i]; };
-  // The points in the own grid's frame, wrapped into it: with x0 = 0 and i cell_m < lx, exactly i cell_m.
-  auto px = [&](int i) { return wrapped(x0 + i * cell_m, lx); };
-  auto py = [&](int j) { return wrapped(y0 + j * cell_m, ly); };
+  // The points in the own grid's frame, wrapped into it (once each, not per image): with x0 = 0 and
+  // i cell_m < lx, exactly i cell_m.
+  std::vector<double> px(static_cast<std::size_t>(nx)), py(static_cast<std::size_t>(ny));
+  for (int i = 0; i < nx; ++i) px[static_cast<std::size_t>(i)] = wrapped(x0 + i * cell_m, lx);
+  for (int j = 0; j < ny; ++j) py[static_cast<std::size_t>(j)] = wrapped(y0 + j * cell_m, ly);
   switch (d.kind) {
     case DisturbanceKind::impulse: return;  // refused above
     case DisturbanceKind::plane_wave: {
@@ -141,8 +143,8 @@ void sample_disturbance_at(const Disturbance& d, double lx, double ly, double x0
       // periodic 1-D sums. The centre is wrapped into the grid, so that the images are counted from it.
       const double xc = wrapped(d.x_m, lx), yc = wrapped(d.y_m, ly);
       std::vector<double> gx(static_cast<std::size_t>(nx)), gy(static_cast<std::size_t>(ny));
-      for (int i = 0; i < nx; ++i) gx[static_cast<std::size_t>(i)] = periodic_gaussian(px(i) - xc, d.width_m, lx);
-      for (int j = 0; j < ny; ++j) gy[static_cast<std::size_t>(j)] = periodic_gaussian(py(j) - yc, d.width_m, ly);
+      for (int i = 0; i < nx; ++i) gx[static_cast<std::size_t>(i)] = periodic_gaussian(px[static_cast<std::size_t>(i)] - xc, d.width_m, lx);
+      for (int j = 0; j < ny; ++j) gy[static_cast<std::size_t>(j)] = periodic_gaussian(py[static_cast<std::size_t>(j)] - yc, d.width_m, ly);
       for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) at(i, j) = d.amplitude_m * gx[static_cast<std::size_t>(i)] * gy[static_cast<std::size_t>(j)];
       return;
@@ -157,7 +159,7 @@ void sample_disturbance_at(const Disturbance& d, double lx, double ly, double x0
           double sum = 0;
           for (int qy = -ny_images; qy <= ny_images; ++qy)
             for (int qx = -nx_images; qx <= nx_images; ++qx) {
-              const double dx = px(i) - xc + qx * lx, dy = py(j) - yc + qy * ly;
+              const double dx = px[static_cast<std::size_t>(i)] - xc + qx * lx, dy = py[static_cast<std::size_t>(j)] - yc + qy * ly;
               const double u = (std::sqrt(dx * dx + dy * dy) - d.radius_m) / d.width_m;
               sum += std::exp(-u * u);
             }
