@@ -11,9 +11,9 @@ GyroRangeInference infer_gyro_range(const std::vector<std::array<double, 3>>& co
   const std::size_t n = counts.size();
   out.fast.assign(n, {false, false, false});
   if (n == 0) return out;
-  // Per step: 1 / (step in typical steps), squared; 1 for a regular rate. A zero step (equal
-  // stamps) counts as a typical one.
-  std::vector<double> weight(n, 1.0);
+  // Per step: 1 / (step in typical steps); 1 for a regular rate. A zero step (equal stamps)
+  // counts as a typical one.
+  std::vector<double> step_scale(n, 1.0);
   if (t_s.size() == n && n > 2) {
     std::vector<double> dt;
     for (std::size_t k = 1; k < n; ++k)
@@ -23,39 +23,50 @@ GyroRangeInference infer_gyro_range(const std::vector<std::array<double, 3>>& co
       const double typical = dt[dt.size() / 2];
       for (std::size_t k = 1; k < n; ++k) {
         const double steps = t_s[k] > t_s[k - 1] ? (t_s[k] - t_s[k - 1]) / typical : 1.0;
-        weight[k] = 1.0 / (steps * steps);
+        step_scale[k] = 1.0 / steps;
       }
     }
   }
-  std::vector<std::uint8_t> back(2 * n);
+  // The rate's slope into sample k in state pair (p at k−1, s at k), slow-mode counts per typical step.
+  auto slope = [&](std::size_t k, int axis, int p, int s) {
+    const double w = counts[k][axis] * (s ? fast_factor : 1.0), wp = counts[k - 1][axis] * (p ? fast_factor : 1.0);
+    return (w - wp) * step_scale[k];
+  };
+  if (n == 1) return out;
+  // State (p, s): the modes at k−1 and k, index 2p + s. back[4k + state] is the mode at k−2.
+  std::vector<std::uint8_t> back(4 * n);
   for (int axis = 0; axis < 3; ++axis) {
-    // cost[s] of the best path ending in state s (0 slow, 1 fast); start in slow mode.
-    double cost[2] = {0.0, switch_cost};
-    for (std::size_t k = 1; k < n; ++k) {
-      double next[2];
+    // k = 1: the first step's slope anchors the start, which is in slow mode (a fast start costs a switch).
+    double cost[4];
+    for (int p = 0; p < 2; ++p)
       for (int s = 0; s < 2; ++s) {
-        const double w = counts[k][axis] * (s ? fast_factor : 1.0);
-        double best = 0;
-        int from = 0;
-        for (int p = 0; p < 2; ++p) {
-          const double wp = counts[k - 1][axis] * (p ? fast_factor : 1.0);
-          const double c = cost[p] + weight[k] * (w - wp) * (w - wp) + (p != s ? switch_cost : 0.0);
-          if (p == 0 || c < best) best = c, from = p;
+        const double d = slope(1, axis, p, s);
+        cost[2 * p + s] = d * d + switch_cost * (p + (p != s ? 1 : 0));
+      }
+    for (std::size_t k = 2; k < n; ++k) {
+      double next[4];
+      for (int p = 0; p < 2; ++p)
+        for (int s = 0; s < 2; ++s) {
+          const double in = slope(k, axis, p, s);
+          double best = 0;
+          int from = 0;
+          for (int a = 0; a < 2; ++a) {
+            const double change = in - slope(k - 1, axis, a, p);
+            const double c = cost[2 * a + p] + change * change + (p != s ? switch_cost : 0.0);
+            if (a == 0 || c < best) best = c, from = a;
+          }
+          next[2 * p + s] = best;
+          back[4 * k + 2 * p + s] = std::uint8_t(from);
         }
-        next[s] = best;
-        back[2 * k + s] = std::uint8_t(from);
-      }
-      cost[0] = next[0];
-      cost[1] = next[1];
+      std::copy(next, next + 4, cost);
     }
-    int s = cost[1] < cost[0] ? 1 : 0;
-    for (std::size_t k = n; k-- > 0;) {
+    int state = int(std::min_element(cost, cost + 4) - cost);
+    for (std::size_t k = n - 1; k >= 1; --k) {
+      const int p = state / 2, s = state % 2;
       out.fast[k][axis] = s == 1;
-      if (k > 0) {
-        const int p = back[2 * k + s];
-        if (p != s) ++out.switches;
-        s = p;
-      }
+      out.fast[k - 1][axis] = p == 1;
+      if (p != s) ++out.switches;
+      if (k >= 2) state = 2 * back[4 * k + state] + p;
     }
   }
   return out;

@@ -185,6 +185,7 @@ Vec3 synthetic_stone_position(const SyntheticThrow& th, double t) {
 
 SyntheticThrow skipping_throw(const SkippingThrowSpec& spec) {
   SyntheticThrow th;
+  th.mounting = spec.mounting;
   th.attack_angle_deg = spec.attack_angle_deg;
   th.path_angle_deg = spec.path_angle_deg;
   th.release_height_m = spec.release_height_m;

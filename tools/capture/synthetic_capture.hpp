@@ -58,6 +58,7 @@ struct SkippingThrowSpec {
   double release_height_m = 0.3;
   double pivot_share = 0.15;
   double swing_duration_s = 0.2;
+  Mounting mounting;  // how the remote is strapped (its lever arm sets the swing rate for the speed)
 };
 SyntheticThrow skipping_throw(const SkippingThrowSpec& spec);
 

@@ -188,9 +188,15 @@ std::string reason_for(const std::string& c, const CaptureAnalysis& a, const Rec
     return format("%.0f MotionPlus range switches inferred (no range flags in the file)", in.number("inferred_range_switches"));
   if (c == "nominal_calibration") return "no device calibration in the file: the nominal accelerometer calibration was used";
   if (c == "accel_lever_disagree")
-    return format("the accelerometer (%.3g m/s) and the lever arm (%.3g m/s) disagree by more than %.3g %%: "
-                  "check the mounting's lever arm",
-                  a.nominal.accel_speed_m_s, a.nominal.lever_speed_m_s, 100 * in.number("accel_lever_disagreement"));
+    // The lever arm sees the arm's turn only: a thrower whose trunk steps or turns into the throw
+    // gives the stone speed it cannot see (synthetic_capture.hpp: the pivot's speed), so a lever
+    // arm below the accelerometer has two causes, one above it only the mounting.
+    return format("the accelerometer (%.3g m/s) and the lever arm (%.3g m/s) disagree by more than %.3g %%: ",
+                  a.nominal.accel_speed_m_s, a.nominal.lever_speed_m_s, 100 * in.number("accel_lever_disagreement")) +
+           (a.nominal.lever_speed_m_s < a.nominal.accel_speed_m_s
+                ? "the lever arm sees the arm's turn only, not the trunk stepping or turning into the throw; "
+                  "or check the mounting's lever arm"
+                : "check the mounting's lever arm");
   if (c == "release_speed_implausible")
     return format("the release speed %.3g m/s is outside a human throw's %.3g-%.3g m/s: not a hand's throw",
                   in.number("release_speed_m_s"), in.number("min_release_speed_m_s"), in.number("max_release_speed_m_s"));
