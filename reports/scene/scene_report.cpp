@@ -489,7 +489,8 @@ SectionOutput grid_section(const Record& g) {
          " cm across. " + grid_head_words(g.text("forcing"), own_width, passes));
   if (g.has_text("initial_surface")) {
     // A case on a disturbed surface (stored since 7 December): sampled afresh on each grid.
-    const bool clear = g.number("pond_inside_case") > 0 && g.number("walls_reach_s") > (g.has_number("end_s") ? g.number("end_s") : 0.0);
+    const double end_s = g.has_number("end_s") ? g.number("end_s") : 0.0;
+    const bool clear = g.number("pond_inside_case") > 0 && g.number("walls_reach_s") > end_s;
     w.text("The case starts from " + g.text("initial_surface") + " (`[water.initial]`): each grid samples it afresh at its own cell "
            "points, in the case's frame (model/water/disturbance.hpp). " +
            (g.has_text("boundary") && g.text("boundary") == "periodic"
@@ -498,8 +499,18 @@ SectionOutput grid_section(const Record& g) {
            "send waves into that surface; at c = " + fmt(g.number("wave_speed_m_s"), 3) + " m/s from " +
            fmt(100 * std::max(0.0, g.number("wall_distance_m")), 3) + " cm away they reach the first contact's track (on still "
            "water) after " + fmt(1e3 * g.number("walls_reach_s"), 4) + " ms" +
-           (clear ? std::string(", after the section's end: until then the pond's answers are the case's.")
-                  : std::string(": see the verdict below.")));
+           (!clear ? std::string(": see the verdict below.")
+            : 2 * end_s <= g.number("walls_reach_s")
+                ? ", after twice the section's end at " + fmt(1e3 * end_s, 4) +
+                      " ms: until then the pond's answers are the case's. (The bound at c is a soft one: the leapfrog's front "
+                      "is dispersed ahead of c. Measured on the shipped scenes' water, a wall's waves stay below a millionth of the "
+                      "surface's height until half their arrival at c and reach percents of it at that arrival: "
+                      "model/README.md §2.4.)"
+                : ", after the section's end at " + fmt(1e3 * end_s, 4) + " ms but before twice it. The bound at c is a "
+                      "soft one: the leapfrog's front is dispersed ahead of c, and measured on the shipped scenes' water a wall's waves "
+                      "stay below a millionth of the surface's height until half their arrival at c but reach percents of it "
+                      "at that arrival (model/README.md §2.4); some of them may reach the track by the end. A wider "
+                      "grid.pond_m, with the walls' arrival at least twice the end, keeps them out."));
   }
   w.table(grid_table_markdown(g));
   const double max_cells = g.has_number("max_width_cells") ? g.number("max_width_cells") : 8.0;

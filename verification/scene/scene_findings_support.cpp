@@ -102,9 +102,13 @@ std::string initial_surface_words(const Disturbance& d) {
 }
 
 PondWalls pond_walls(const SceneStudyCase& c, const ContactRecord& first, double pond_m, double cell_m) {
+  return pond_walls(c, first.first_touch_m, first, pond_m, cell_m);
+}
+
+PondWalls pond_walls(const SceneStudyCase& c, const Vec3& touch, const ContactRecord& first, double pond_m, double cell_m) {
   const SceneWater& own = *c.scene.water;
   const int n = static_cast<int>(std::ceil(pond_m / cell_m)) + 1;
-  const double x0 = first.first_touch_m.x() - 0.25 * pond_m, y0 = first.first_touch_m.y() - 0.5 * pond_m;
+  const double x0 = touch.x() - 0.25 * pond_m, y0 = touch.y() - 0.5 * pond_m;
   const double x1 = x0 + (n - 1) * cell_m, y1 = y0 + (n - 1) * cell_m;
   // The track: the centre of mass from entry to exit, its extent in x and y.
   const double tx0 = std::min(first.entry_position_m.x(), first.exit_position_m.x());

@@ -53,6 +53,10 @@ bool starts_disturbed(const SceneStudyCase& c);
 // A shape in words: "a plane wave 2 cm high and 1 m long, its crests across x" …
 std::string initial_surface_words(const Disturbance& d);
 PondWalls pond_walls(const SceneStudyCase& c, const ContactRecord& first, double pond_m, double cell_m);
+// The same pond, placed around `touch` (the first touch on still water, as place_on_pond places
+// it), against another contact's track: a grid's own first contact, which on live water may run
+// longer and elsewhere than on still water.
+PondWalls pond_walls(const SceneStudyCase& c, const Vec3& touch, const ContactRecord& track, double pond_m, double cell_m);
 // The case's settings as the report states them (title, convention, coupling, frames, grid, σ …).
 void store_scene_settings(Record& r, const SceneStudyCase& c, const SceneOptions& s);
 

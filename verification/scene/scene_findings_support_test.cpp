@@ -112,6 +112,17 @@ BOOST_AUTO_TEST_CASE(the_walls_stand_where_the_pond_puts_them) {
   // A touch near the case's far corner: the pond reaches past its walls.
   k.first_touch_m = Vec3(8.5, 4.0, 0.0);
   BOOST_TEST(!pond_walls(c, k, 2.0, 0.02).inside_case);
+  // A grid's own first contact on the pond placed at the still-water touch (1, 0.5) m: planing on
+  // to (2.2, 0.6) m, it comes within 2.5 − 2.2 − 0.03 = 0.27 m of the wall ahead, 0.216 s at c; past
+  // x = 2.53 m its disk leaves the pond.
+  ContactRecord own;
+  own.entry_position_m = Vec3(0.97, 0.5, 0.01);
+  own.exit_position_m = Vec3(2.2, 0.6, 0.01);
+  const PondWalls ahead = pond_walls(c, Vec3(1.0, 0.5, 0.0), own, 2.0, 0.02);
+  BOOST_TEST(ahead.nearest_m == 0.27, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(ahead.reach_s == 0.216, boost::test_tools::tolerance(1e-12));
+  own.exit_position_m = Vec3(2.6, 0.6, 0.01);
+  BOOST_TEST(pond_walls(c, Vec3(1.0, 0.5, 0.0), own, 2.0, 0.02).nearest_m < 0);
 }
 
 BOOST_AUTO_TEST_CASE(a_pond_whose_walls_reach_the_contact_in_time_is_not_run) {

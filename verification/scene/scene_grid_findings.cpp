@@ -55,6 +55,20 @@ void grid_sequence(const SceneOptions& base, const SceneStudyCase& c, const Cont
   }
   const int left_out = too_large + too_wide;
   if (fractions.size() < 3) fractions.clear();
+  // Each grid's own first contact against the pond: the section checked the contact's track on
+  // still water, and on live water the contact may run longer and elsewhere (on swell_8ms, 140–158
+  // ms on the finer grids against 27 ms on still water). Its own track must stay on the pond and,
+  // on a disturbed surface, out of the walls' reach at c until the contact ends.
+  std::vector<std::string> walls_reach;
+  const bool disturbed = starts_disturbed(c);
+  auto check_track = [&](const ContactRecord& own, double cell_m, const std::string& grid) {
+    const PondWalls w = pond_walls(c, k.first_touch_m, own, g.pond_m, cell_m);
+    if (w.nearest_m <= 0)
+      walls_reach.push_back(grid + ": its first contact's track leaves the pond");
+    else if (disturbed && w.reach_s <= own.end_s)
+      walls_reach.push_back(grid + ": the walls' waves reach its first contact's track after " + duration(w.reach_s) +
+                            ", before that contact ends at " + duration(own.end_s));
+  };
   // The grid of `f` of the case's cell, its water step `dt_scale` × the case's scaled alike (σ × dt_scale).
   auto run_grid = [&](double f, double dt_scale) {
     SceneOptions s = base;
@@ -66,6 +80,7 @@ void grid_sequence(const SceneOptions& base, const SceneStudyCase& c, const Cont
     const SceneSummary r = run_scene(s);
     const bool touched = !r.stone.contacts.empty();
     const ContactRecord* c1 = touched ? &r.stone.contacts.front() : nullptr;
+    if (c1) check_track(*c1, w.cell_m, num(100 * w.cell_m, 3) + " cm" + (dt_scale != 1.0 ? ", step ½" : ""));
     return std::vector<double>{f, w.cell_m, double(w.nx), w.dt_s, 2 * base.stone.disk_radius_m / w.cell_m,
                                pressure ? double(pressure_smoothing_passes(head_width_m, w.cell_m)) : 0.0, r.energy.pressure_work_J,
                                c1 ? c1->start_s : kNaN, c1 ? c1->duration_s() : kNaN, c1 ? c1->exit_speed_m_s : kNaN,
@@ -130,7 +145,12 @@ void grid_sequence(const SceneOptions& base, const SceneStudyCase& c, const Cont
                              : "changes that do not shrink as the cells get finer: " + joined(growing, "; ");
     if (outcome_changes > 0)
       reason = "the first contact ends differently as the cells get finer (" + joined(endings, ", ") + "); " + reason;
+    in.set("walls_reach_track", double(walls_reach.size()));
+    if (!walls_reach.empty())
+      reason = "on some grid the pond's walls are not clear of the stone's own first contact (" + joined(walls_reach, "; ") +
+               "): those answers are partly the pond's; widen grid.pond_m; " + reason;
   }
+  out.set("walls_reach_track", double(walls_reach.size()));
   out.set_table("grids", t);
   out.set_table("half_step", half_step);
   out.set("left_out", left_out);

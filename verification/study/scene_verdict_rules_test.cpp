@@ -108,6 +108,12 @@ BOOST_AUTO_TEST_CASE(the_scene_converges_under_refinement_only_where_every_chang
   BOOST_TEST(decide("grid_differences", in) == "the changes shrink as the cells halve");
   in.set("outcome_changes", 1.0);
   BOOST_TEST(decide("grid_differences", in) == "does not converge: the first contact bounces on some grids and not on others");
+  // A grid whose own first contact the pond's walls reach (or which leaves the pond) is partly the
+  // pond's: nothing is decided, whatever the changes or the endings do.
+  in.set("walls_reach_track", 0.0);
+  BOOST_TEST(decide("grid_differences", in) == "does not converge: the first contact bounces on some grids and not on others");
+  in.set("walls_reach_track", 1.0);
+  BOOST_TEST(decide("grid_differences", in) == "not decided: on some grid the pond's walls are not clear of the first contact");
   in.set("grids", 2.0);
   BOOST_TEST(decide("grid_differences", in) == "not decided: fewer than three grids");
 }

@@ -349,6 +349,11 @@ const std::map<std::string, Rule>& rules() {
          // the water step alone moves it on the finest grid (time_change_*, where stored), is
          // within the water step's error: the sequence cannot say whether it converges.
          if (in.number("grids") < 3) return std::string("not decided: fewer than three grids");
+         // A grid whose own first contact leaves the pond, or (on a disturbed surface) lies within
+         // the reach of the pond's walls at c before it ends (walls_reach_track, stored since 8
+         // December): its answers are partly the pond's, not the case's.
+         if (in.has_number("walls_reach_track") && in.number("walls_reach_track") > 0)
+           return std::string("not decided: on some grid the pond's walls are not clear of the first contact");
          // The first contact ending in a bounce on one grid and not on the next (outcome_changes,
          // stored since 7 December): not one contact refined, whatever its numbers do.
          if (in.has_number("outcome_changes") && in.number("outcome_changes") > 0)
