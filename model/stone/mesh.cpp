@@ -237,4 +237,42 @@ MeshCheck check_mesh(const Mesh& mesh) {
   return c;
 }
 
+int merge_repeated_vertices(Mesh& mesh, std::vector<long>* vertex_lines) {
+  const int n = static_cast<int>(mesh.vertices.size());
+  // The vertices in coordinate order: equal positions are adjacent; each maps to its first (lowest
+  // index) copy, so that a mesh without repeats keeps its numbering.
+  std::vector<int> order(n);
+  for (int i = 0; i < n; ++i) order[i] = i;
+  auto less = [&](int a, int b) {
+    const Vec3 &u = mesh.vertices[a], &v = mesh.vertices[b];
+    if (u.x() != v.x()) return u.x() < v.x();
+    if (u.y() != v.y()) return u.y() < v.y();
+    if (u.z() != v.z()) return u.z() < v.z();
+    return a < b;
+  };
+  std::sort(order.begin(), order.end(), less);
+  std::vector<int> first(n);
+  for (int k = 0; k < n; ++k) {
+    const int i = order[k];
+    first[i] = k > 0 && mesh.vertices[order[k - 1]] == mesh.vertices[i] ? first[order[k - 1]] : i;
+  }
+  std::vector<int> renumber(n, -1);
+  std::vector<Vec3> kept;
+  std::vector<long> kept_lines;
+  for (int i = 0; i < n; ++i) {
+    if (first[i] != i) continue;
+    renumber[i] = static_cast<int>(kept.size());
+    kept.push_back(mesh.vertices[i]);
+    if (vertex_lines && i < static_cast<int>(vertex_lines->size())) kept_lines.push_back((*vertex_lines)[i]);
+  }
+  const int merged = n - static_cast<int>(kept.size());
+  if (merged == 0) return 0;
+  for (auto& t : mesh.triangles)
+    for (int& v : t)
+      if (v >= 0 && v < n) v = renumber[first[v]];
+  mesh.vertices = std::move(kept);
+  if (vertex_lines) *vertex_lines = std::move(kept_lines);
+  return merged;
+}
+
 }  // namespace stoneskip

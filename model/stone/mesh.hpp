@@ -61,4 +61,11 @@ struct MeshCheck {
 
 MeshCheck check_mesh(const Mesh& mesh);
 
+// Merges vertices at exactly the same position (every coordinate equal) into the first of them and
+// renumbers the triangles: a mesh exported unwelded (a triangle soup, as from STL, each face with
+// its own copies of its corners) becomes the closed mesh it describes. Nothing moves: the solid and
+// its mass properties are unchanged. vertex_lines (one entry per vertex, or null) is kept in step.
+// Returns how many vertices were merged away.
+int merge_repeated_vertices(Mesh& mesh, std::vector<long>* vertex_lines = nullptr);
+
 }  // namespace stoneskip

@@ -176,6 +176,26 @@ BOOST_AUTO_TEST_CASE(open_flipped_and_inward_meshes_are_rejected) {
                              " vertices repeat another's position: merge duplicate vertices") != std::string::npos,
              sc.problem);
 
+  // Merged, the soup is the prism again: its 24 positions, its triangles' corners at the same
+  // points (exactly: nothing moves) and a closed, outward mesh of the same volume.
+  Mesh welded = soup;
+  std::vector<long> lines(soup.vertices.size());
+  for (std::size_t i = 0; i < lines.size(); ++i) lines[i] = static_cast<long>(i) + 1;
+  BOOST_TEST(merge_repeated_vertices(welded, &lines) == static_cast<int>(3 * prism.triangles.size() - prism.vertices.size()));
+  BOOST_TEST(welded.vertices.size() == prism.vertices.size());
+  BOOST_TEST(lines.size() == welded.vertices.size());
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t)
+    for (int e = 0; e < 3; ++e) BOOST_TEST(welded.vertices[welded.triangles[t][e]] == soup.vertices[soup.triangles[t][e]]);
+  for (std::size_t v = 0; v < welded.vertices.size(); ++v)  // each kept vertex keeps its own line
+    BOOST_TEST(soup.vertices[lines[v] - 1] == welded.vertices[v]);
+  const MeshCheck wc = check_mesh(welded);
+  BOOST_TEST(wc.ok, wc.problem);
+  BOOST_TEST(wc.signed_volume_m3 == check_mesh(prism).signed_volume_m3, boost::test_tools::tolerance(1e-12));
+  // A mesh without repeats is left as it is, numbering included.
+  Mesh same = prism;
+  BOOST_TEST(merge_repeated_vertices(same) == 0);
+  BOOST_TEST(same.triangles == prism.triangles);
+
   Mesh flipped = make_prism(0.03, 0.008, 11);
   std::swap(flipped.triangles[0][1], flipped.triangles[0][2]);
   BOOST_TEST(!check_mesh(flipped).ok);

@@ -284,6 +284,9 @@ Stone build_stone(const StoneSpec& spec, const std::string& file) {
     case StoneShape::mesh_file: {
       std::vector<long> lines, vertex_lines;  // each triangle's and each vertex's line in the OBJ file
       mesh = read_obj(spec.mesh_file, &lines, &vertex_lines);
+      // An unwelded export (each face with its own copies of its corners) describes the same solid
+      // as a welded one: copies at exactly one position are one vertex (model/stone/mesh.hpp).
+      const int merged = merge_repeated_vertices(mesh, &vertex_lines);
       // A problem names the OBJ file's line of the first triangle at fault (and of the second, for
       // two that cross), or of the vertex at fault: a triangle's number alone is no help where
       // polygons were fanned.
@@ -303,6 +306,7 @@ Stone build_stone(const StoneSpec& spec, const std::string& file) {
       const SolidCheck solid = check_solid(mesh);
       if (!solid.ok) refuse(solid.problem, solid.at_fault, solid.other_at_fault);
       d << "mesh " << spec.mesh_file;
+      if (merged > 0) d << ", " << merged << " repeated vertices merged";
       break;
     }
   }
