@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "model/water/height_field.hpp"
@@ -46,7 +47,8 @@ std::vector<double> swell(int nx, int first_cell) {
   std::vector<double> z(static_cast<std::size_t>(nx) * kRows);
   for (int j = 0; j < kRows; ++j)
     for (int i = 0; i < nx; ++i)
-      z[static_cast<std::size_t>(j) * nx + i] = kAmplitude_m * std::cos(2 * std::numbers::pi * (first_cell + i) * kCell_m / kWavelength_m);
+      z[static_cast<std::size_t>(j) * nx + i] =
+          kAmplitude_m * std::cos(2 * std::numbers::pi * (first_cell + i) * kCell_m / kWavelength_m);
   return z;
 }
 }  // namespace
@@ -75,8 +77,9 @@ BOOST_AUTO_TEST_CASE(a_walls_waves_are_below_a_millionth_at_half_the_cone_and_ab
         }
       }
       for (std::size_t p = 0; p < points.size(); ++p) {
-        BOOST_TEST_MESSAGE(water.name << ", " << points[p] << " cells from the wall: the walls' waves reach " << before_half[p]
-                                      << " of the swell's height by half the cone's time, " << by_cone[p] << " by the cone's");
+        BOOST_TEST_MESSAGE(water.name << ", " << points[p] << " cells from the wall: the walls' waves reach "
+                                      << before_half[p] << " of the swell's height by half the cone's time, " << by_cone[p]
+                                      << " by the cone's");
         // Below a millionth of the surface's height: the scene section's bound at c leaves nothing there.
         BOOST_TEST(before_half[p] <= 1e-6);
         // A thousandth or more by the time c itself arrives: the front runs ahead of the cone, so the

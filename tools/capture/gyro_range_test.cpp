@@ -5,6 +5,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "tools/capture/gyro_range.hpp"

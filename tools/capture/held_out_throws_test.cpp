@@ -6,6 +6,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <sstream>
 
@@ -133,17 +134,19 @@ int check_unclipped_draws(std::uint64_t seed, Kind kind) {
     if (kind == Kind::skipping_wide_range) o.saturation_g = 15.9;
     o.mounting = d.th.mounting;
     const CaptureAnalysis a = analyse_capture(parse_capture(text, name(d.format)), o);
-    BOOST_TEST_INFO(d.describe);
-    BOOST_TEST_MESSAGE(d.describe << " | verdict " << to_string(a.verdict) << (a.reasons.empty() ? "" : ": " + a.reasons.front())
-                       << " | clipped " << truth.clipped_samples << " | speed " << a.nominal.speed_m_s << " ("
-                       << truth.speed_m_s << ") attack " << a.nominal.attack_angle_deg << " ("
-                       << truth.attack_angle_deg << ") path " << a.nominal.path_angle_deg << " ("
-                       << truth.path_angle_deg << ") spin " << a.measured_spin_rev_s.nominal << " ("
-                       << truth.spin_rev_s << ")");
-    check_inferred_modes(d, text, truth);
-    if (truth.clipped_samples > 0) continue;
-    ++checked;
-    check_recovered(a, truth);
+    BOOST_TEST_CONTEXT(d.describe) {
+      BOOST_TEST_MESSAGE(d.describe << " | verdict " << to_string(a.verdict)
+                         << (a.reasons.empty() ? "" : ": " + a.reasons.front())
+                         << " | clipped " << truth.clipped_samples << " | speed " << a.nominal.speed_m_s << " ("
+                         << truth.speed_m_s << ") attack " << a.nominal.attack_angle_deg << " ("
+                         << truth.attack_angle_deg << ") path " << a.nominal.path_angle_deg << " ("
+                         << truth.path_angle_deg << ") spin " << a.measured_spin_rev_s.nominal << " ("
+                         << truth.spin_rev_s << ")");
+      check_inferred_modes(d, text, truth);
+      if (truth.clipped_samples > 0) continue;
+      ++checked;
+      check_recovered(a, truth);
+    }
   }
   return checked;
 }
@@ -170,21 +173,23 @@ BOOST_AUTO_TEST_CASE(clipped_throws_drawn_over_the_envelope_have_intervals_that_
     o.members = 16;
     o.mounting = d.th.mounting;
     const CaptureAnalysis a = analyse_capture(parse_capture(text, name(d.format)), o);
-    BOOST_TEST_INFO(d.describe);
-    BOOST_TEST_MESSAGE(d.describe << " | verdict " << to_string(a.verdict) << (a.reasons.empty() ? "" : ": " + a.reasons.front())
-                       << " | clipped " << truth.clipped_samples << " | speed " << a.speed_m_s.nominal << " ["
-                       << a.speed_m_s.low << ", " << a.speed_m_s.high << "] (" << truth.speed_m_s << ") attack "
-                       << a.attack_angle_deg.nominal << " [" << a.attack_angle_deg.low << ", "
-                       << a.attack_angle_deg.high << "] (" << truth.attack_angle_deg << ") path "
-                       << a.path_angle_deg.nominal << " [" << a.path_angle_deg.low << ", " << a.path_angle_deg.high
-                       << "] (" << truth.path_angle_deg << ")");
-    check_inferred_modes(d, text, truth);
-    BOOST_TEST(a.can_throw());
-    if (!a.can_throw()) continue;
-    BOOST_TEST(a.clipped == (truth.clipped_samples > 0));
-    BOOST_TEST(a.speed_m_s.contains(truth.speed_m_s));
-    BOOST_TEST(a.attack_angle_deg.contains(truth.attack_angle_deg));
-    BOOST_TEST(a.path_angle_deg.contains(truth.path_angle_deg));
+    BOOST_TEST_CONTEXT(d.describe) {
+      BOOST_TEST_MESSAGE(d.describe << " | verdict " << to_string(a.verdict)
+                         << (a.reasons.empty() ? "" : ": " + a.reasons.front())
+                         << " | clipped " << truth.clipped_samples << " | speed " << a.speed_m_s.nominal << " ["
+                         << a.speed_m_s.low << ", " << a.speed_m_s.high << "] (" << truth.speed_m_s << ") attack "
+                         << a.attack_angle_deg.nominal << " [" << a.attack_angle_deg.low << ", "
+                         << a.attack_angle_deg.high << "] (" << truth.attack_angle_deg << ") path "
+                         << a.path_angle_deg.nominal << " [" << a.path_angle_deg.low << ", " << a.path_angle_deg.high
+                         << "] (" << truth.path_angle_deg << ")");
+      check_inferred_modes(d, text, truth);
+      BOOST_TEST(a.can_throw());
+      if (!a.can_throw()) continue;
+      BOOST_TEST(a.clipped == (truth.clipped_samples > 0));
+      BOOST_TEST(a.speed_m_s.contains(truth.speed_m_s));
+      BOOST_TEST(a.attack_angle_deg.contains(truth.attack_angle_deg));
+      BOOST_TEST(a.path_angle_deg.contains(truth.path_angle_deg));
+    }
   }
 }
 
