@@ -101,6 +101,17 @@ const char* name(int format) {
   return format == 1 ? "held.evemu" : format == 2 ? "held.txt" : format == 3 ? "held.csv" : "held.log";
 }
 
+// The draw written in its format (into text, with its truth) and analysed as a user would, giving
+// the mounting the remote was strapped with.
+CaptureAnalysis recorded_and_analysed(const Draw& d, Kind kind, SyntheticTruth& truth, std::string& text) {
+  text = record(d, truth);
+  CaptureOptions o;
+  o.members = 16;  // enough for the intervals these checks read; keeps a draw well under a second
+  if (kind == Kind::skipping_wide_range) o.saturation_g = 15.9;  // that accelerometer clips at 16 g
+  o.mounting = d.th.mounting;
+  return analyse_capture(parse_capture(text, name(d.format)), o);
+}
+
 // A gesture file has no range flags: the modes inferred from the raw counts (gyro_range.hpp) must
 // be the ones the generator's MotionPlus used, sample for sample.
 void check_inferred_modes(const Draw& d, const std::string& text, const SyntheticTruth& truth) {
@@ -128,12 +139,8 @@ int check_unclipped_draws(std::uint64_t seed, Kind kind) {
   for (int i = 0; i < kDraws; ++i) {
     const Draw d = draw(g, kind);
     SyntheticTruth truth;
-    const std::string text = record(d, truth);
-    CaptureOptions o;
-    o.members = 16;
-    if (kind == Kind::skipping_wide_range) o.saturation_g = 15.9;
-    o.mounting = d.th.mounting;
-    const CaptureAnalysis a = analyse_capture(parse_capture(text, name(d.format)), o);
+    std::string text;
+    const CaptureAnalysis a = recorded_and_analysed(d, kind, truth, text);
     BOOST_TEST_CONTEXT(d.describe) {
       BOOST_TEST_MESSAGE(d.describe << " | verdict " << to_string(a.verdict)
                          << (a.reasons.empty() ? "" : ": " + a.reasons.front())
@@ -168,11 +175,8 @@ BOOST_AUTO_TEST_CASE(clipped_throws_drawn_over_the_envelope_have_intervals_that_
   for (int i = 0; i < kDraws; ++i) {
     const Draw d = draw(g, Kind::skipping);
     SyntheticTruth truth;
-    const std::string text = record(d, truth);
-    CaptureOptions o;
-    o.members = 16;
-    o.mounting = d.th.mounting;
-    const CaptureAnalysis a = analyse_capture(parse_capture(text, name(d.format)), o);
+    std::string text;
+    const CaptureAnalysis a = recorded_and_analysed(d, Kind::skipping, truth, text);
     BOOST_TEST_CONTEXT(d.describe) {
       BOOST_TEST_MESSAGE(d.describe << " | verdict " << to_string(a.verdict)
                          << (a.reasons.empty() ? "" : ": " + a.reasons.front())
