@@ -1,8 +1,8 @@
 // The capture path on throws no shipped capture records: skipping throws drawn over the published
 // envelope (synthetic_capture.hpp, SkippingThrowSpec), recorded by remotes strapped at drawn angles,
 // with drawn report rates, jitter, losses and formats. Each is checked against the generator's
-// analytic truth by the tolerances fixed before any draw was run: the 5 % on the speed and
-// 3° on the angles where nothing clipped, and the intervals where something did.
+// analytic truth: the capture issue's 5 % on the speed and 3° on the angles where nothing clipped,
+// and the intervals where something did.
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
